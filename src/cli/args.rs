@@ -1,0 +1,132 @@
+//! Flags shared by subcommands, and their merge over a TOML parameter file.
+
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
+
+use crate::config::Config;
+use crate::error::Result;
+
+/// Scene flags: each overrides the same key of `--config FILE` (or of the defaults).
+#[derive(Debug, Clone, Default, Args)]
+pub struct SceneArgs {
+    /// TOML parameter file (e.g. config/paper.toml); flags override it.
+    ///
+    /// Sections and keys as in config/paper.toml; unknown keys are refused. Without it the
+    /// defaults (the paper's parameters) apply.
+    #[arg(long, value_name = "FILE")]
+    pub config: Option<PathBuf>,
+    /// Friction coefficient at both contacts (sets --mu-ground and --mu-palm).
+    ///
+    /// The paper's single mu; --mu-ground or --mu-palm given as well take precedence for their
+    /// contact. Dimensionless, >= 0 [default: 0.4]
+    #[arg(long, value_name = "MU")]
+    pub mu: Option<f64>,
+    /// Friction coefficient at the ground contact A [default: 0.4].
+    #[arg(long, value_name = "MU")]
+    pub mu_ground: Option<f64>,
+    /// Friction coefficient at the palm contact B [default: 0.4].
+    #[arg(long, value_name = "MU")]
+    pub mu_palm: Option<f64>,
+    /// Disc radius r in mm [default: 10].
+    #[arg(long, value_name = "MM")]
+    pub radius: Option<f64>,
+    /// Palm push F in N [default: 200].
+    ///
+    /// The magnitude of the palm's force on the disc while it slides; F -> infinity is a palm
+    /// driven by prescribed motion.
+    #[arg(long, value_name = "N")]
+    pub force: Option<f64>,
+    /// Disc mass m in kg [default: 1].
+    #[arg(long, value_name = "KG")]
+    pub mass: Option<f64>,
+    /// Gravitational acceleration g in m/s^2 [default: 9.806].
+    #[arg(long, value_name = "M/S^2")]
+    pub gravity: Option<f64>,
+    /// Palm angle where the push starts, in deg, in (0, 180) [default: 90].
+    #[arg(long, value_name = "DEG")]
+    pub start_angle: Option<f64>,
+    /// Palm length in mm; a jam beyond its end is never reached [default: 150].
+    #[arg(long, value_name = "MM")]
+    pub palm_length: Option<f64>,
+}
+
+impl SceneArgs {
+    /// Defaults, then the file, then the flags; validated before anything is computed.
+    pub fn resolve(&self) -> Result<Config> {
+        let mut config = match &self.config {
+            Some(path) => Config::load(path)?,
+            None => Config::default(),
+        };
+        let s = &mut config.scene;
+        if let Some(mu) = self.mu {
+            s.mu_ground = mu;
+            s.mu_palm = mu;
+        }
+        let overrides = [
+            (self.mu_ground, &mut s.mu_ground),
+            (self.mu_palm, &mut s.mu_palm),
+            (self.radius, &mut s.radius_mm),
+            (self.force, &mut s.force_n),
+            (self.mass, &mut s.mass_kg),
+            (self.gravity, &mut s.gravity_m_s2),
+            (self.start_angle, &mut s.start_angle_deg),
+            (self.palm_length, &mut s.palm_length_mm),
+        ];
+        for (flag, field) in overrides {
+            if let Some(v) = flag {
+                *field = v;
+            }
+        }
+        config.validate()?;
+        Ok(config)
+    }
+}
+
+/// The flag that sets a TOML key, for error messages.
+pub fn flag_for_key(key: &str) -> Option<&'static str> {
+    Some(match key {
+        "mu_ground" => "--mu-ground",
+        "mu_palm" => "--mu-palm",
+        "radius_mm" => "--radius",
+        "force_n" => "--force",
+        "mass_kg" => "--mass",
+        "gravity_m_s2" => "--gravity",
+        "start_angle_deg" => "--start-angle",
+        "palm_length_mm" => "--palm-length",
+        _ => return None,
+    })
+}
+
+/// Which model answers `solve`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ModelChoice {
+    /// Closed-form statics (corrected Eq. 1-2).
+    Statics,
+    /// Minimum-norm contact forces (convex program).
+    MinNorm,
+    /// Dynamic simulation of the Adams model.
+    Dynamics,
+    /// Every model that is built.
+    All,
+}
+
+/// Output of `solve`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum OutputFormat {
+    /// A short human summary with units.
+    Text,
+    /// One JSON object: {"inputs": {...}, "results": [...]}.
+    Json,
+}
+
+/// Output of `table`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TableFormat {
+    /// A Markdown table.
+    Text,
+    /// Comma-separated values with a header row.
+    Csv,
+    /// A JSON array of rows.
+    Json,
+}

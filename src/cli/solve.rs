@@ -1,0 +1,164 @@
+//! `jamchart solve`: the read-off of theta_jam and x_jam.
+
+use std::fmt::Write;
+use std::time::Instant;
+
+use clap::Args;
+use serde::Serialize;
+use serde_json::{Map, Value, json};
+
+use super::args::{ModelChoice, OutputFormat, SceneArgs};
+use crate::config::Config;
+use crate::error::{Error, Result};
+use crate::model::JamStatus;
+use crate::statics;
+
+/// Flags of `solve`.
+#[derive(Debug, Clone, Args)]
+pub struct SolveArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Model to use.
+    #[arg(long, value_enum, default_value_t = ModelChoice::Statics)]
+    pub model: ModelChoice,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
+    pub format: OutputFormat,
+}
+
+/// One model's answer as `solve` prints it; `details` holds the model's own extra keys.
+#[derive(Debug, Clone, Serialize)]
+pub struct ModelRecord {
+    pub model: &'static str,
+    pub status: JamStatus,
+    pub theta_jam_deg: Option<f64>,
+    pub x_jam_mm: Option<f64>,
+    pub elapsed_s: f64,
+    #[serde(flatten)]
+    pub details: Map<String, Value>,
+}
+
+pub fn run(a: &SolveArgs) -> Result<String> {
+    let config = a.scene.resolve()?;
+    let models: &[ModelChoice] = match a.model {
+        ModelChoice::All => &[ModelChoice::Statics],
+        ModelChoice::MinNorm => {
+            return Err(Error::Unsupported(
+                "the min-norm model is not built yet; use --model statics".into(),
+            ));
+        }
+        ModelChoice::Dynamics => {
+            return Err(Error::Unsupported(
+                "the dynamics model is not built yet; use --model statics".into(),
+            ));
+        }
+        ref m => std::slice::from_ref(m),
+    };
+    let results: Vec<ModelRecord> = models.iter().map(|m| solve_one(*m, &config)).collect();
+    Ok(match a.format {
+        OutputFormat::Json => {
+            let doc = json!({ "inputs": config.scene, "results": results });
+            serde_json::to_string_pretty(&doc).expect("plain structs serialise") + "\n"
+        }
+        OutputFormat::Text => render_text(&config, &results),
+    })
+}
+
+fn solve_one(model: ModelChoice, config: &Config) -> ModelRecord {
+    match model {
+        ModelChoice::Statics => {
+            let t0 = Instant::now();
+            let s = statics::solve(&config.scene);
+            let elapsed_s = t0.elapsed().as_secs_f64();
+            let mut details = Map::new();
+            details.insert("theta_rigid_deg".into(), json!(s.theta_rigid_deg));
+            details.insert("x_rigid_mm".into(), json!(s.x_rigid_mm));
+            details.insert("lift_off_above_deg".into(), json!(s.lift_off_above_deg));
+            details.insert("lifts_off".into(), json!(s.lifts_off));
+            ModelRecord {
+                model: "statics",
+                status: s.status,
+                theta_jam_deg: s.theta_jam_deg,
+                x_jam_mm: s.x_jam_mm,
+                elapsed_s,
+                details,
+            }
+        }
+        other => unreachable!("model {other:?} is refused before solving"),
+    }
+}
+
+fn render_text(config: &Config, results: &[ModelRecord]) -> String {
+    let p = &config.scene;
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "scene: mu_ground = {}, mu_palm = {}, r = {} mm, m = {} kg, F = {} N, g = {} m/s^2, \
+         start at {} deg, palm {} mm",
+        p.mu_ground,
+        p.mu_palm,
+        p.radius_mm,
+        p.mass_kg,
+        p.force_n,
+        p.gravity_m_s2,
+        p.start_angle_deg,
+        p.palm_length_mm
+    );
+    for r in results {
+        let _ = writeln!(s, "\n{}: {}", r.model, r.status);
+        match (r.status, r.theta_jam_deg, r.x_jam_mm) {
+            (JamStatus::Jams, Some(t), Some(x)) => {
+                let _ = writeln!(
+                    s,
+                    "  theta_jam = {t:.3} deg   palm angle at which the disc stops sliding and jams"
+                );
+                let _ = writeln!(
+                    s,
+                    "  x_jam     = {x:.3} mm    disc position at the jam (hinge to ground contact)"
+                );
+            }
+            (JamStatus::JammedAtStart, Some(t), x) => {
+                let at = x.map_or(String::new(), |x| format!(" (x = {x:.3} mm)"));
+                let _ = writeln!(
+                    s,
+                    "  the disc does not move: it is held already at the start angle {t:.3} deg{at}"
+                );
+            }
+            (JamStatus::NeverJams, ..) => {
+                let _ = writeln!(
+                    s,
+                    "  the disc never jams: without friction it slides for as long as the palm pushes"
+                );
+            }
+            (JamStatus::BeyondReach, ..) => {
+                let _ = writeln!(
+                    s,
+                    "  the jam point lies beyond the palm's end ({} mm): the disc leaves the palm first",
+                    p.palm_length_mm
+                );
+            }
+            _ => {}
+        }
+        let d = &r.details;
+        if let (Some(t), Some(x)) = (
+            d.get("theta_rigid_deg").and_then(Value::as_f64),
+            d.get("x_rigid_mm").and_then(Value::as_f64),
+        ) {
+            let _ = writeln!(
+                s,
+                "  unlimited push (F -> inf, a motion-driven palm): theta = {t:.3} deg, x = {x:.3} mm"
+            );
+        }
+        if d.get("lifts_off").and_then(Value::as_bool) == Some(true) {
+            let above = d.get("lift_off_above_deg").and_then(Value::as_f64);
+            let _ = writeln!(
+                s,
+                "  warning: above {:.3} deg the palm lifts the disc off the ground (R_n < 0); \
+                 the statics do not hold there",
+                above.unwrap_or(f64::NAN)
+            );
+        }
+        let _ = writeln!(s, "  took {:.1} us", r.elapsed_s * 1e6);
+    }
+    s
+}

@@ -1,0 +1,187 @@
+//! Model 1: closed-form statics (the corrected Eq. 1-2).
+//!
+//! The palm slides on the disc, so its push lies on the edge of the palm's friction cone,
+//! tilted by alpha_p = atan(mu_palm) towards the hinge. On the disc it is
+//! `F (sin(theta - alpha_p), -cos(theta - alpha_p))`, and equilibrium with the ground reaction at A
+//! (R_t against the motion, R_n up) gives (Eq. 1 corrected)
+//!
+//! ```text
+//! R_t = F sin(theta - alpha_p)
+//! R_n = m g + F cos(theta - alpha_p)
+//! ```
+//!
+//! The ground holds the disc (it jams) while R_t <= mu_g R_n. Dividing by cos alpha_g turns this into
+//! `sin(theta - alpha_p - alpha_g) <= m g sin(alpha_g) / F`, so the first angle reached from above
+//! where the disc stops is
+//!
+//! ```text
+//! theta_jam = alpha_g + alpha_p + asin(m g sin(alpha_g) / F),   x_jam = r cot(theta_jam / 2).
+//! ```
+
+use serde::Serialize;
+
+use crate::model::{JamStatus, SceneParams, disc_position_mm};
+
+/// Ground reaction at contact A for a palm angle, from the corrected Eq. 1.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct GroundReaction {
+    /// Tangential reaction R_t in N, positive against the disc's motion (towards the hinge).
+    pub r_t_n: f64,
+    /// Normal reaction R_n in N, positive up.
+    pub r_n_n: f64,
+    /// Jam margin mu_g R_n - R_t in N: positive where the ground holds the disc (jammed),
+    /// negative where the disc slides.
+    pub margin_n: f64,
+    /// R_n < 0: the palm would lift the disc off the ground, and the model does not apply.
+    pub lifts_off: bool,
+}
+
+/// Ground reaction and jam margin at palm angle `theta` (rad), with the palm sliding.
+pub fn ground_reaction(p: &SceneParams, theta: f64) -> GroundReaction {
+    let phi = theta - p.alpha_palm();
+    let r_t = p.force_n * phi.sin();
+    let r_n = p.weight_n() + p.force_n * phi.cos();
+    GroundReaction {
+        r_t_n: r_t,
+        r_n_n: r_n,
+        margin_n: p.mu_ground * r_n - r_t,
+        lifts_off: r_n < 0.0,
+    }
+}
+
+/// The jam margin mu_g R_n - R_t in N at palm angle `theta` (rad); see [`ground_reaction`].
+pub fn margin_n(p: &SceneParams, theta: f64) -> f64 {
+    ground_reaction(p, theta).margin_n
+}
+
+/// The closed-form answer for one push.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct StaticsSolution {
+    /// Outcome, decided in the order never_jams, jammed_at_start, beyond_reach, jams.
+    pub status: JamStatus,
+    /// Palm angle at the jam in degrees (the start angle if jammed at start; None if it never jams
+    /// or the jam is beyond reach).
+    pub theta_jam_deg: Option<f64>,
+    /// Disc position at the jam in mm, r cot(theta_jam/2) (None as for `theta_jam_deg`).
+    pub x_jam_mm: Option<f64>,
+    /// The F -> infinity limit of theta_jam in degrees, alpha_g + alpha_p: what a palm driven by
+    /// prescribed motion reaches (the classic self-locking wedge).
+    pub theta_rigid_deg: f64,
+    /// The F -> infinity limit of x_jam in mm, r cot((alpha_g + alpha_p)/2); r/mu for equal frictions.
+    pub x_rigid_mm: Option<f64>,
+    /// Palm angle in degrees above which R_n < 0 (the palm lifts the disc), None if it never does.
+    pub lift_off_above_deg: Option<f64>,
+    /// The push passes through the lift-off region between the start angle and the jam.
+    pub lifts_off: bool,
+}
+
+/// Solves the scene in closed form. `p` must have passed [`SceneParams::validate`].
+pub fn solve(p: &SceneParams) -> StaticsSolution {
+    let start = p.start_angle_deg.to_radians();
+    let wedge = p.alpha_ground() + p.alpha_palm();
+    // m g sin(alpha_g) / F, written so that mu -> infinity stays finite.
+    let load_ratio = p.weight_n() * p.alpha_ground().sin() / p.force_n;
+    let lift_off_above = lift_off_angle(p);
+    let lifts_off = lift_off_above.is_some_and(|t| t < start);
+
+    let x_rigid = finite_or_none(disc_position_mm(p.radius_mm, wedge)).filter(|_| wedge > 0.0);
+    let mut out = StaticsSolution {
+        status: JamStatus::Jams,
+        theta_jam_deg: None,
+        x_jam_mm: None,
+        theta_rigid_deg: wedge.to_degrees(),
+        x_rigid_mm: x_rigid,
+        lift_off_above_deg: lift_off_above.map(f64::to_degrees),
+        lifts_off,
+    };
+
+    let theta_jam = if load_ratio < 1.0 {
+        wedge + load_ratio.asin()
+    } else {
+        f64::INFINITY
+    };
+    if theta_jam <= 0.0 {
+        out.status = JamStatus::NeverJams;
+        return out;
+    }
+    // The margin is checked at the start as well: with a heavy disc and a start near 180 deg the
+    // ground may hold beyond the second root of the margin, above theta_jam.
+    if theta_jam >= start || margin_n(p, start) >= 0.0 {
+        out.status = JamStatus::JammedAtStart;
+        out.theta_jam_deg = Some(p.start_angle_deg);
+        out.x_jam_mm = finite_or_none(disc_position_mm(p.radius_mm, start));
+        return out;
+    }
+    let x_jam = disc_position_mm(p.radius_mm, theta_jam);
+    // x_jam may overflow to +inf for a vanishing wedge angle; that is beyond any palm.
+    if !(x_jam <= p.palm_length_mm) {
+        out.status = JamStatus::BeyondReach;
+        return out;
+    }
+    out.theta_jam_deg = Some(theta_jam.to_degrees());
+    out.x_jam_mm = Some(x_jam);
+    out
+}
+
+/// Palm angle (rad) above which R_n = m g + F cos(theta - alpha_p) < 0, if below 180 deg.
+fn lift_off_angle(p: &SceneParams) -> Option<f64> {
+    let k = p.weight_n() / p.force_n;
+    if k >= 1.0 {
+        return None;
+    }
+    let t = p.alpha_palm() + (-k).acos();
+    (t < std::f64::consts::PI).then_some(t)
+}
+
+fn finite_or_none(v: f64) -> Option<f64> {
+    v.is_finite().then_some(v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errata_worked_example() {
+        // ERRATA.md: m = 1 kg, g = 9.806, r = 10 mm, F = 200 N, mu = 0.4.
+        let s = solve(&SceneParams::default());
+        assert_eq!(s.status, JamStatus::Jams);
+        assert!((s.theta_jam_deg.unwrap() - 44.646).abs() < 5e-4);
+        assert!((s.x_jam_mm.unwrap() - 24.355).abs() < 5e-4);
+        // The F -> infinity threshold of Fig. 7b: r / mu = 25 mm, 2 atan(0.4) = 43.6 deg.
+        assert!((s.x_rigid_mm.unwrap() - 25.0).abs() < 1e-12);
+        assert!((s.theta_rigid_deg - 43.602818972).abs() < 1e-8);
+        assert!(!s.lifts_off);
+    }
+
+    #[test]
+    fn corrected_eq1_reactions_by_hand() {
+        // theta = 90 deg, alpha = 45 deg (mu = 1), m g = 0: the push is F (cos45, -sin45)...
+        let p = SceneParams {
+            mu_ground: 0.0,
+            mu_palm: 1.0,
+            mass_kg: 0.0,
+            force_n: 2.0_f64.sqrt(),
+            ..Default::default()
+        };
+        let g = ground_reaction(&p, 90_f64.to_radians());
+        // ... so R_t = F sin 45 = 1 N and R_n = F cos 45 = 1 N (the palm presses down).
+        assert!((g.r_t_n - 1.0).abs() < 1e-12 && (g.r_n_n - 1.0).abs() < 1e-12);
+        assert!((g.margin_n + 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn frictionless_never_jams_and_heavy_disc_never_moves() {
+        let s = solve(&SceneParams::default().with_mu(0.0));
+        assert_eq!(s.status, JamStatus::NeverJams);
+        assert_eq!(s.theta_jam_deg, None);
+        let heavy = SceneParams {
+            mass_kg: 100.0,
+            ..Default::default()
+        };
+        let s = solve(&heavy);
+        assert_eq!(s.status, JamStatus::JammedAtStart);
+        assert_eq!(s.theta_jam_deg, Some(90.0));
+        assert!((s.x_jam_mm.unwrap() - 10.0).abs() < 1e-12);
+    }
+}
