@@ -51,6 +51,7 @@
 pub mod cli;
 pub mod config;
 pub mod error;
+pub mod grid;
 pub mod model;
 pub mod paper;
 pub mod statics;
