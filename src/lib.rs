@@ -48,6 +48,7 @@
 //!
 //! Outcomes are data ([`model::JamStatus`]); [`error::Error`] is only for misuse.
 
+pub mod charts;
 pub mod cli;
 pub mod config;
 pub mod error;

@@ -49,6 +49,21 @@ impl GridParam {
         }
     }
 
+    /// The value of this parameter in `p` (mu reads mu_ground); None for [`GridParam::ThetaDeg`].
+    pub fn get(self, p: &SceneParams) -> Option<f64> {
+        Some(match self {
+            GridParam::Mu | GridParam::MuGround => p.mu_ground,
+            GridParam::MuPalm => p.mu_palm,
+            GridParam::RadiusMm => p.radius_mm,
+            GridParam::MassKg => p.mass_kg,
+            GridParam::ForceN => p.force_n,
+            GridParam::GravityMS2 => p.gravity_m_s2,
+            GridParam::StartAngleDeg => p.start_angle_deg,
+            GridParam::PalmLengthMm => p.palm_length_mm,
+            GridParam::ThetaDeg => return None,
+        })
+    }
+
     /// `p` with this parameter set to `v`; [`GridParam::ThetaDeg`] leaves `p` unchanged.
     pub fn apply(self, mut p: SceneParams, v: f64) -> SceneParams {
         match self {

@@ -35,6 +35,9 @@ pub enum Quantity {
     ThetaJamDeg,
     /// The model's x_jam in mm.
     XJamMm,
+    /// The statics F -> infinity limit of x_jam in mm, r cot((alpha_g + alpha_p)/2) (r/mu for
+    /// equal frictions): what x_jam tends to as the push grows.
+    XRigidMm,
 }
 
 /// What a model says about one push: the part of its solution a grid or chart needs.
@@ -105,6 +108,8 @@ pub struct GridResult {
     pub theta_jam_deg: Option<Vec<Option<f64>>>,
     /// x_jam in mm, if requested (None where the model gives none).
     pub x_jam_mm: Option<Vec<Option<f64>>>,
+    /// Statics F -> infinity limit of x_jam in mm, if requested.
+    pub x_rigid_mm: Option<Vec<Option<f64>>>,
 }
 
 impl GridResult {
@@ -189,6 +194,15 @@ pub fn evaluate(req: &GridRequest, model: &dyn PointModel) -> Result<GridResult>
             .map(|i| model.jam_point(&req.cell_params(x_values[i % nx], y_values[i / nx])))
             .collect()
     });
+    let x_rigid_mm = wants(Quantity::XRigidMm).then(|| {
+        let nx = x_values.len();
+        (0..nx * y_values.len())
+            .into_par_iter()
+            .map(|i| {
+                statics::solve(&req.cell_params(x_values[i % nx], y_values[i / nx])).x_rigid_mm
+            })
+            .collect()
+    });
     let pick = |q: Quantity| points.as_ref().filter(|_| wants(q));
     Ok(GridResult {
         margin_n,
@@ -196,6 +210,7 @@ pub fn evaluate(req: &GridRequest, model: &dyn PointModel) -> Result<GridResult>
         theta_jam_deg: pick(Quantity::ThetaJamDeg)
             .map(|v| v.iter().map(|p| p.theta_jam_deg).collect()),
         x_jam_mm: pick(Quantity::XJamMm).map(|v| v.iter().map(|p| p.x_jam_mm).collect()),
+        x_rigid_mm,
         x_values,
         y_values,
     })
