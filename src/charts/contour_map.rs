@@ -19,7 +19,9 @@ use super::spec::Scene;
 use super::style::{self, INK, LineKind};
 use super::{DataFile, axis_label, grid_lines, grid_polygons, scene_subtitle};
 use crate::error::{Error, Result};
-use crate::grid::{self, GridAxis, GridParam, GridRequest, GridResult, PointModel, Quantity};
+use crate::grid::{
+    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, PointModel, Quantity,
+};
 use crate::model::SceneParams;
 
 /// `[chart]` keys of `kind = "contour_map"`.
@@ -233,69 +235,8 @@ impl ContourMap {
                 )?;
             }
         }
-        if let Some(tj) = &self.grid.theta_jam_deg {
-            let levels = &self.spec.theta_jam_levels_deg;
-            for (i, (level, ml)) in self.lines(&dense(tj), levels).into_iter().enumerate() {
-                let paths = self.to_plot(&ml);
-                for p in &paths {
-                    style::draw_line(area, p, LineKind::Dotted, INK)?;
-                }
-                // Staggered down from the top so that labels of close lines do not collide.
-                let frac = 0.95 - 0.06 * (levels.len() - 1 - i) as f64;
-                let label_v =
-                    y.plot_range().start + frac * (y.plot_range().end - y.plot_range().start);
-                let flipped: Vec<Vec<(f64, f64)>> = paths
-                    .iter()
-                    .map(|p| p.iter().map(|&(a, b)| (b, a)).collect())
-                    .collect();
-                if let Some(&(v, u)) = nearest_point(&flipped, label_v) {
-                    let at = chart.backend_coord(&(u, v));
-                    let s = format!("θ_jam = {}°", level_text(level));
-                    axes::boxed_text(
-                        root,
-                        &s,
-                        (at.0 + 5, at.1),
-                        Pos::new(HPos::Left, VPos::Center),
-                        style::TICK_PX,
-                    )?;
-                }
-            }
-        }
-        if let (Some(gap), Some(pct)) = (&self.gap_pct, self.spec.settle_pct) {
-            for (_, ml) in self.lines(gap, &[pct]) {
-                let paths = self.to_plot(&ml);
-                for p in &paths {
-                    style::draw_line(area, p, LineKind::Dashed, INK)?;
-                }
-                let label_v =
-                    y.plot_range().start + 0.06 * (y.plot_range().end - y.plot_range().start);
-                let flipped: Vec<Vec<(f64, f64)>> = paths
-                    .iter()
-                    .map(|p| p.iter().map(|&(a, b)| (b, a)).collect())
-                    .collect();
-                if let Some(&(v, u)) = nearest_point(&flipped, label_v) {
-                    let at = chart.backend_coord(&(u, v));
-                    let f = if xa.scale == crate::grid::AxisScale::Log {
-                        u.exp()
-                    } else {
-                        u
-                    };
-                    let s = format!(
-                        "{} ≈ {} {}: x_jam within {pct} % of r/μ →",
-                        short(xa.param),
-                        style::fmt_num(f, 0),
-                        unit(xa.param)
-                    );
-                    axes::boxed_text(
-                        root,
-                        &s,
-                        (at.0 + 6, at.1),
-                        Pos::new(HPos::Left, VPos::Center),
-                        style::TICK_PX,
-                    )?;
-                }
-            }
-        }
+        self.draw_theta_lines(root, &chart, &y)?;
+        self.draw_settle_line(root, &chart, &y)?;
         axes::draw_frame(root, &chart, &x, &y)?;
         axes::draw_title(root, &self.title)?;
         let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
@@ -305,6 +246,74 @@ impl ContourMap {
             sub,
         ))?;
         legend::draw_legend(root, &entries, 60, py.end + 62, w as i32 - 120)
+    }
+
+    /// Dotted theta_jam iso-lines, labelled near the top, staggered so close lines stay legible.
+    fn draw_theta_lines<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &axes::Chart<DB>,
+        y: &PlotAxis,
+    ) -> DrawResult<DB> {
+        let Some(tj) = &self.grid.theta_jam_deg else {
+            return Ok(());
+        };
+        let levels = &self.spec.theta_jam_levels_deg;
+        for (i, (level, ml)) in self.lines(&dense(tj), levels).into_iter().enumerate() {
+            let paths = self.to_plot(&ml);
+            for p in &paths {
+                style::draw_line(chart.plotting_area(), p, LineKind::Dotted, INK)?;
+            }
+            let frac = 0.95 - 0.06 * (levels.len() - 1 - i) as f64;
+            if let Some((_, at)) = at_height(&paths, chart, y, frac) {
+                let s = format!("θ_jam = {}°", level_text(level));
+                let pos = Pos::new(HPos::Left, VPos::Center);
+                axes::boxed_text(root, &s, (at.0 + 5, at.1), pos, style::TICK_PX)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The dashed line where x_jam comes within `settle_pct` % of r/mu, labelled with its value
+    /// of the x-axis parameter (read off the contour near the bottom of the plot).
+    fn draw_settle_line<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &axes::Chart<DB>,
+        y: &PlotAxis,
+    ) -> DrawResult<DB> {
+        let (Some(gap), Some(pct)) = (&self.gap_pct, self.spec.settle_pct) else {
+            return Ok(());
+        };
+        let xa = &self.spec.x_axis;
+        for (_, ml) in self.lines(gap, &[pct]) {
+            let paths = self.to_plot(&ml);
+            for p in &paths {
+                style::draw_line(chart.plotting_area(), p, LineKind::Dashed, INK)?;
+            }
+            let Some(((u, _), at)) = at_height(&paths, chart, y, 0.06) else {
+                continue;
+            };
+            let value = if xa.scale == AxisScale::Log {
+                u.exp()
+            } else {
+                u
+            };
+            let s = format!(
+                "{} ≈ {} {}: x_jam within {pct} % of r/μ →",
+                short(xa.param),
+                style::fmt_num(value, 0),
+                unit(xa.param)
+            );
+            axes::boxed_text(
+                root,
+                &s,
+                (at.0 + 6, at.1),
+                Pos::new(HPos::Left, VPos::Center),
+                style::TICK_PX,
+            )?;
+        }
+        Ok(())
     }
 
     fn legend(&self) -> Vec<LegendEntry> {
@@ -338,6 +347,22 @@ fn nearest_x<DB: DrawingBackend>(
     let p = nearest_point(paths, u)?;
     let at = chart.backend_coord(p);
     (px.contains(&at.0) && py.start + 8 < at.1 && at.1 < py.end - 8).then_some(at)
+}
+
+/// The plot-space point and backend pixel of the path point nearest the height `frac` (0 bottom, 1 top) of the plot.
+fn at_height<DB: DrawingBackend>(
+    paths: &[Vec<(f64, f64)>],
+    chart: &axes::Chart<DB>,
+    y: &PlotAxis,
+    frac: f64,
+) -> Option<((f64, f64), (i32, i32))> {
+    let yr = y.plot_range();
+    let v = yr.start + frac * (yr.end - yr.start);
+    let p = paths
+        .iter()
+        .flatten()
+        .min_by(|a, b| (a.1 - v).abs().total_cmp(&(b.1 - v).abs()))?;
+    Some((*p, chart.backend_coord(p)))
 }
 
 /// The point of `paths` whose first coordinate is nearest `u` (first found wins ties).

@@ -225,7 +225,7 @@ impl JamMap {
             .filter_map(|(v, p)| p.theta_jam_deg.map(|t| (x.to_plot(*v), y.to_plot(t))))
             .collect();
         style::draw_line(area, &curve, LineKind::Solid, INK)?;
-        self.draw_region_labels(root, &chart, &x, &y)?;
+        self.draw_region_labels(root, &chart)?;
         axes::draw_frame(root, &chart, &x, &y)?;
         if self.spec.has(JamMapLayer::PositionScale) {
             self.draw_position_scale(root, &chart, &x, &y)?;
@@ -264,12 +264,12 @@ impl JamMap {
         Ok(())
     }
 
+    /// "SLIDE" top left and "JAM" bottom right: where each region lies for every map whose
+    /// theta_jam grows with the x parameter (all friction maps).
     fn draw_region_labels<DB: DrawingBackend>(
         &self,
         root: &DrawingArea<DB, Shift>,
         c: &Chart<DB>,
-        x: &PlotAxis,
-        y: &PlotAxis,
     ) -> DrawResult<DB> {
         if !self.spec.has(JamMapLayer::Regions) {
             return Ok(());
@@ -280,7 +280,6 @@ impl JamMap {
             let v = py.start as f64 + fy * (py.end - py.start) as f64;
             (u as i32, v as i32)
         };
-        let _ = (x, y);
         let pos = Pos::new(HPos::Center, VPos::Center);
         axes::boxed_text(root, "SLIDE", at(0.2, 0.12), pos, style::LABEL_PX)?;
         axes::boxed_text(root, "JAM", at(0.8, 0.88), pos, style::LABEL_PX)

@@ -269,3 +269,6 @@ pub fn grid_lines(ml: &MultiLineString<f64>, xa: &GridAxis, ya: &GridAxis) -> Ve
     }
     out
 }
+
+#[cfg(test)]
+mod tests;

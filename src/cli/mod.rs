@@ -43,9 +43,9 @@ pub enum Command {
     Table(table::TableArgs),
     /// Draw the design charts (scenes in charts/) as SVG, PNG and data.
     ///
-    /// Each scene charts/<name>.toml names its chart kind, parameters, axes and layers; render
-    /// writes <DIR>/<name>.svg, <name>.png and the data behind the chart (<name>.csv or .json),
-    /// each atomically. The bytes are the same on every machine and for any thread count.
+    /// Each scene charts/NAME.toml names its chart kind, parameters, axes and layers; render
+    /// writes DIR/NAME.svg, NAME.png and the data behind the chart (NAME.csv or .json), each
+    /// atomically (temporary file, then rename). The bytes are the same on every machine and for any thread count.
     Render(render::RenderArgs),
 }
 

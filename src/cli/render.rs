@@ -26,7 +26,7 @@ pub struct RenderArgs {
     /// Pictures to write; the data file (.csv or .json) is always written.
     #[arg(long, value_enum, default_value_t = RenderFormat::Both)]
     pub format: RenderFormat,
-    /// Directory of the scene files <name>.toml [default: charts].
+    /// Directory of the scene files NAME.toml [default: charts].
     #[arg(long, value_name = "DIR", default_value = "charts")]
     pub scenes_dir: PathBuf,
 }

@@ -6,7 +6,7 @@
 //! it and whatever the chunking, so the result is bit-identical for any thread count (a test says
 //! so): no reductions across cells, no fused multiply-adds chosen by the compiler.
 //!
-//! The statics margin has a fast kernel ([`margin`]); the jam point (status, theta_jam, x_jam)
+//! The statics margin has a fast kernel (see [`MarginCoeffs`]); the jam point (status, theta_jam, x_jam)
 //! comes from any [`PointModel`], so the min-norm and dynamics models plug in by implementing it.
 
 mod axis;
