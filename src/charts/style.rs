@@ -9,8 +9,9 @@ use plotters::coord::CoordTranslate;
 use plotters::prelude::*;
 use plotters::style::FontStyle;
 
-/// The font family every chart uses; [`init_fonts`] binds it to the embedded DejaVu Sans.
-pub const FONT: &str = "sans-serif";
+/// The font family every chart uses; [`init_fonts`] binds it to the embedded DejaVu Sans, and
+/// SVG viewers that have DejaVu Sans show the text exactly as laid out.
+pub const FONT: &str = "DejaVu Sans";
 
 /// DejaVu Sans 2.37 (Debian fonts-dejavu-core), licence in `assets/fonts/LICENSE-DejaVu.txt`.
 /// Embedded so that no system font is ever looked up and the pixels are the same everywhere.
