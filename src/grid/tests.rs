@@ -146,3 +146,26 @@ proptest! {
         prop_assert!(at(tj + 1e-6) < 0.0, "above: {}", at(tj + 1e-6));
     }
 }
+
+proptest! {
+    /// Any valid grid gives finite numbers in every requested cell (no NaN/inf reaches a chart).
+    #[test]
+    fn every_cell_is_finite(
+        mu_lo in 0.0f64..1.0, mu_span in 0.01f64..2.0,
+        t_lo in 0.0f64..170.0, t_span in 0.1f64..10.0,
+        mass in 0.0f64..50.0, force in 0.5f64..1e5,
+    ) {
+        let base = SceneParams { mass_kg: mass, force_n: force, ..SceneParams::default() };
+        let req = GridRequest {
+            base,
+            x: GridAxis::linear(GridParam::Mu, mu_lo, mu_lo + mu_span, 7),
+            y: GridAxis::linear(GridParam::ThetaDeg, t_lo, t_lo + t_span, 5),
+            quantities: vec![Quantity::MarginN, Quantity::Status, Quantity::ThetaJamDeg, Quantity::XJamMm, Quantity::XRigidMm],
+        };
+        let g = evaluate(&req, &Statics).unwrap();
+        prop_assert!(g.margin_n.unwrap().iter().all(|v| v.is_finite()));
+        for v in [g.theta_jam_deg.unwrap(), g.x_jam_mm.unwrap(), g.x_rigid_mm.unwrap()] {
+            prop_assert!(v.iter().flatten().all(|v| v.is_finite()));
+        }
+    }
+}
