@@ -20,7 +20,7 @@ use super::style::{self, INK, LineKind};
 use super::{DataFile, axis_label, grid_lines, grid_polygons, scene_subtitle};
 use crate::error::{Error, Result};
 use crate::grid::{
-    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, PointModel, Quantity,
+    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, ModelName, PointModel, Quantity,
 };
 use crate::model::SceneParams;
 
@@ -41,6 +41,10 @@ pub struct ContourMapSpec {
     /// (default: none; the paper's Fig. 7b discussion suggests 1).
     #[serde(default)]
     pub settle_pct: Option<f64>,
+    /// The model whose jam points are drawn (default: statics; the margin of a jam map's
+    /// regions is always the statics').
+    #[serde(default)]
+    pub model: ModelName,
 }
 
 impl ContourMapSpec {

@@ -20,7 +20,8 @@ use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
 use super::{DataFile, axis_label, grid_polygons, scene_subtitle};
 use crate::error::{Error, Result};
 use crate::grid::{
-    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, PointModel, Quantity,
+    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, ModelName, PointModel,
+    Quantity,
 };
 use crate::model::{SceneParams, disc_position_mm, palm_angle_at};
 
@@ -49,6 +50,10 @@ pub struct JamMapSpec {
     /// The layers to draw (default: all).
     #[serde(default = "all_layers")]
     pub layers: Vec<JamMapLayer>,
+    /// The model whose jam points are drawn (default: statics; the margin of a jam map's
+    /// regions is always the statics').
+    #[serde(default)]
+    pub model: ModelName,
 }
 
 fn all_layers() -> Vec<JamMapLayer> {

@@ -9,6 +9,20 @@
 //!
 //! Chart kinds, one module each: [`jam_map`] (Fig. 3), [`sweep`] (Figs. 6, 7a, 7b),
 //! [`contour_map`] (Fig. 7c).
+//!
+//! ## Where the other models plug in
+//!
+//! - Points of a model on a sweep (Fig. 6: min-norm points, simulation points with motion and
+//!   force drive): one [`sweep_layers::SweepLayer`] variant and its arm in
+//!   [`sweep_layers::series`], returning [`sweep::Series`] of markers; legend, panels, data file
+//!   and hashes follow.
+//! - A model over a map (jam map boundary and read-off, contour map): implement
+//!   [`crate::grid::PointModel`] and add a [`crate::grid::ModelName`] variant; scenes then say
+//!   `model = "min_norm"`.
+//! - A new chart kind (Fig. 4, the min-norm convergence trace; Fig. 5, the simulated velocity
+//!   and position against time): a module with a spec struct, `compute`, `data` and a
+//!   backend-generic `draw` (as [`sweep`]), a [`ChartSpec`] variant and a [`Chart`] variant.
+//!   Those scenes (`charts/fig4.toml`, `charts/fig5.toml`) come with their models.
 
 pub mod axes;
 pub mod contour_map;
@@ -25,7 +39,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use crate::error::{Error, Result};
-use crate::grid::{GridAxis, GridParam, Statics};
+use crate::grid::{GridAxis, GridParam};
 use crate::model::SceneParams;
 use axes::DrawResult;
 pub use spec::{ChartSpec, Scene, load_scene, scene_names};
@@ -100,14 +114,18 @@ pub enum Chart {
 }
 
 impl Chart {
-    /// Computes what `scene`'s chart draws (with the closed-form statics as the point model).
+    /// Computes what `scene`'s chart draws, with the model the scene names.
     pub fn compute(scene: &Scene) -> Result<Chart> {
         Ok(match &scene.chart {
-            ChartSpec::JamMap(s) => Chart::JamMap(jam_map::JamMap::compute(scene, s, &Statics)?),
-            ChartSpec::Sweep(s) => Chart::Sweep(sweep::Sweep::compute(scene, s)?),
-            ChartSpec::ContourMap(s) => {
-                Chart::ContourMap(contour_map::ContourMap::compute(scene, s, &Statics)?)
+            ChartSpec::JamMap(s) => {
+                Chart::JamMap(jam_map::JamMap::compute(scene, s, s.model.point_model())?)
             }
+            ChartSpec::Sweep(s) => Chart::Sweep(sweep::Sweep::compute(scene, s)?),
+            ChartSpec::ContourMap(s) => Chart::ContourMap(contour_map::ContourMap::compute(
+                scene,
+                s,
+                s.model.point_model(),
+            )?),
         })
     }
 

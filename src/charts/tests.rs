@@ -2,6 +2,7 @@ use std::path::{Path, PathBuf};
 
 use super::jam_map::JamMapLayer;
 use super::*;
+use crate::grid::Statics;
 
 fn charts_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("charts")

@@ -80,6 +80,26 @@ impl PointModel for Statics {
     }
 }
 
+/// A model a scene can name for its jam points (`model = "statics"`).
+///
+/// The min-norm and dynamics models join as variants once they implement [`PointModel`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ModelName {
+    /// The closed-form statics.
+    #[default]
+    Statics,
+}
+
+impl ModelName {
+    /// The model itself.
+    pub fn point_model(self) -> &'static dyn PointModel {
+        match self {
+            ModelName::Statics => &Statics,
+        }
+    }
+}
+
 /// What to evaluate: the base scene, the two axes and the quantities.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GridRequest {
