@@ -45,7 +45,8 @@ pub enum Command {
     ///
     /// Each scene charts/NAME.toml names its chart kind, parameters, axes and layers; render
     /// writes DIR/NAME.svg, NAME.png and the data behind the chart (NAME.csv or .json), each
-    /// atomically (temporary file, then rename). The bytes are the same on every machine and for any thread count.
+    /// atomically (temporary file, then rename). The pictures are byte-identical for any thread
+    /// count: the font is embedded and the PNG carries no metadata.
     Render(render::RenderArgs),
 }
 

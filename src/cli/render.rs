@@ -20,13 +20,13 @@ pub struct RenderArgs {
     /// Names are the file stems of the scene files, e.g. fig3 for charts/fig3.toml.
     #[arg(value_name = "SCENE")]
     pub scenes: Vec<String>,
-    /// Output directory (created if missing) [default: out].
+    /// Output directory (created if missing).
     #[arg(long, value_name = "DIR", default_value = "out")]
     pub out: PathBuf,
     /// Pictures to write; the data file (.csv or .json) is always written.
     #[arg(long, value_enum, default_value_t = RenderFormat::Both)]
     pub format: RenderFormat,
-    /// Directory of the scene files NAME.toml [default: charts].
+    /// Directory of the scene files NAME.toml.
     #[arg(long, value_name = "DIR", default_value = "charts")]
     pub scenes_dir: PathBuf,
 }
