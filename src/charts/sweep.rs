@@ -288,13 +288,20 @@ impl Sweep {
                 };
                 let px = axes::pixel(chart, x, y, a1, v1);
                 let text = format!("{name} = {}{unit}", style::fmt_num(v1, 2));
-                axes::boxed_text(
-                    root,
-                    &text,
-                    (px.0 - 10, px.1 - 6),
-                    Pos::new(HPos::Right, VPos::Bottom),
-                    style::NOTE_PX,
-                )?;
+                // On the side of the line where fewer other points lie, so the box hides none.
+                let (mut above, mut below) = (0, 0);
+                for other in self.series.iter().filter(|o| !std::ptr::eq(*o, s)) {
+                    for v in other.points.iter().filter_map(|p| panel.value(p)) {
+                        if v > v1 { above += 1 } else { below += 1 }
+                    }
+                }
+                let (dy, vpos) = if above > below {
+                    (6, VPos::Top)
+                } else {
+                    (-6, VPos::Bottom)
+                };
+                let pos = Pos::new(HPos::Right, vpos);
+                axes::boxed_text(root, &text, (px.0 - 10, px.1 + dy), pos, style::NOTE_PX)?;
             }
         }
         if let (Some(note), Some(&(a, v))) = (&s.callout, vals.first()) {
