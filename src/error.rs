@@ -33,6 +33,10 @@ pub enum Error {
         source: std::io::Error,
     },
 
+    /// A chart could not be drawn or encoded (a plotters or PNG encoder failure).
+    #[error("drawing scene {scene}: {message}")]
+    Draw { scene: String, message: String },
+
     /// A request the tool cannot serve (yet), e.g. a model that is not built.
     #[error("{0}")]
     Unsupported(String),

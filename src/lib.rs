@@ -47,10 +47,18 @@
 //! they must agree.
 //!
 //! Outcomes are data ([`model::JamStatus`]); [`error::Error`] is only for misuse.
+//!
+//! ## Grids and charts
+//!
+//! [`grid`] evaluates a model over any two scene parameters in parallel, bit-identical for any
+//! thread count; [`charts`] turns scene files (`charts/<name>.toml`) into byte-identical SVG and
+//! PNG design charts with the data behind them (`jamchart render`).
 
+pub mod charts;
 pub mod cli;
 pub mod config;
 pub mod error;
+pub mod grid;
 pub mod model;
 pub mod paper;
 pub mod statics;

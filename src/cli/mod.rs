@@ -2,6 +2,7 @@
 //! per subcommand. Nothing here computes physics.
 
 mod args;
+pub mod render;
 mod solve;
 mod table;
 
@@ -40,6 +41,13 @@ pub enum Command {
     /// mu = 0.45 ... 0.15, with the relative difference to the printed values and the known
     /// erratum of the mu = 0.30 row marked.
     Table(table::TableArgs),
+    /// Draw the design charts (scenes in charts/) as SVG, PNG and data.
+    ///
+    /// Each scene charts/NAME.toml names its chart kind, parameters, axes and layers; render
+    /// writes DIR/NAME.svg, NAME.png and the data behind the chart (NAME.csv or .json), each
+    /// atomically (temporary file, then rename). The pictures are byte-identical for any thread
+    /// count: the font is embedded and the PNG carries no metadata.
+    Render(render::RenderArgs),
 }
 
 /// Runs the command line and returns the process exit code: 0 success, 2 bad input or failure.
@@ -51,6 +59,7 @@ pub fn main() -> i32 {
     let result = match &cli.command {
         Command::Solve(a) => solve::run(a),
         Command::Table(a) => table::run(a),
+        Command::Render(a) => render::run(a),
     };
     match result {
         Ok(text) => {

@@ -1,0 +1,52 @@
+//! Whole-process render time: `jamchart render fig3` and `jamchart render` (all scenes).
+//!
+//! `cargo bench --bench render`; runs the release binary 11 times each in a temporary directory
+//! and prints the medians. Goals (issue 5): fig3 at least 20x faster than the 2.7 s numpy +
+//! matplotlib script (< 135 ms), all scenes within about 2 s.
+
+use std::path::Path;
+use std::process::Command;
+use std::time::Instant;
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn time_render(scenes: &[&str], runs: usize) -> f64 {
+    let out = tempfile::tempdir().expect("temp dir");
+    let charts = Path::new(env!("CARGO_MANIFEST_DIR")).join("charts");
+    let times = (0..runs)
+        .map(|_| {
+            let t0 = Instant::now();
+            let status = Command::new(env!("CARGO_BIN_EXE_jamchart"))
+                .arg("render")
+                .args(scenes)
+                .arg("--out")
+                .arg(out.path())
+                .arg("--scenes-dir")
+                .arg(&charts)
+                .output()
+                .expect("the binary runs")
+                .status;
+            assert!(status.success(), "render failed");
+            t0.elapsed().as_secs_f64()
+        })
+        .collect();
+    median(times)
+}
+
+fn main() {
+    let fig3 = time_render(&["fig3"], 11);
+    let all = time_render(&[], 11);
+    println!("whole-process render, median of 11 runs:");
+    println!(
+        "  render fig3: {:.1} ms ({:.0}x faster than the 2.7 s numpy + matplotlib reference; goal < 135 ms)",
+        fig3 * 1e3,
+        2.7 / fig3
+    );
+    println!(
+        "  render (all scenes): {:.1} ms (goal about 2 s)",
+        all * 1e3
+    );
+}

@@ -1,0 +1,405 @@
+//! Chart kind `contour_map` (Fig. 7c): iso-lines of x_jam and theta_jam over two parameters.
+//!
+//! The grid evaluator computes x_jam (and theta_jam, and the F -> infinity limit r/mu when the
+//! "settle" line is drawn) on every cell; the `contour` crate turns them into filled bands and
+//! iso-lines. The settle line is where x_jam comes within `settle_pct` % of its limit: beyond
+//! it the push force no longer matters.
+
+use contour::ContourBuilder;
+use geo_types::MultiLineString;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use serde::{Deserialize, Serialize};
+use serde_json::json;
+
+use super::axes::{self, DrawResult, Margins, PlotAxis};
+use super::legend::{self, LegendEntry, Swatch};
+use super::spec::Scene;
+use super::style::{self, INK, LineKind};
+use super::{DataFile, axis_label, grid_lines, grid_polygons, scene_subtitle};
+use crate::error::{Error, Result};
+use crate::grid::{
+    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, ModelName, PointModel, Quantity,
+};
+use crate::model::SceneParams;
+
+/// `[chart]` keys of `kind = "contour_map"`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ContourMapSpec {
+    /// Horizontal axis (a scene parameter).
+    pub x_axis: GridAxis,
+    /// Vertical axis (a scene parameter).
+    pub y_axis: GridAxis,
+    /// x_jam iso-line levels in mm, increasing; the bands between them are shaded.
+    pub x_jam_levels_mm: Vec<f64>,
+    /// theta_jam iso-line levels in deg (default: none).
+    #[serde(default)]
+    pub theta_jam_levels_deg: Vec<f64>,
+    /// Draw where x_jam comes within this many percent of its F -> infinity limit
+    /// (default: none; the paper's Fig. 7b discussion suggests 1).
+    #[serde(default)]
+    pub settle_pct: Option<f64>,
+    /// The model whose jam points are drawn (default: statics; the margin of a jam map's
+    /// regions is always the statics').
+    #[serde(default)]
+    pub model: ModelName,
+}
+
+impl ContourMapSpec {
+    /// Checks the axes and levels.
+    pub fn validate(&self, base: &SceneParams) -> Result<()> {
+        if [self.x_axis.param, self.y_axis.param].contains(&GridParam::ThetaDeg) {
+            return Err(Error::invalid(
+                "chart.x_axis/y_axis",
+                "theta_deg",
+                "a contour map varies scene parameters",
+            ));
+        }
+        let increasing =
+            |v: &[f64]| v.windows(2).all(|w| w[0] < w[1]) && v.iter().all(|x| x.is_finite());
+        if self.x_jam_levels_mm.is_empty() || !increasing(&self.x_jam_levels_mm) {
+            return Err(Error::invalid(
+                "chart.x_jam_levels_mm",
+                format!("{:?}", self.x_jam_levels_mm),
+                "give finite, increasing levels",
+            ));
+        }
+        if !increasing(&self.theta_jam_levels_deg) {
+            return Err(Error::invalid(
+                "chart.theta_jam_levels_deg",
+                format!("{:?}", self.theta_jam_levels_deg),
+                "levels must increase",
+            ));
+        }
+        if let Some(s) = self.settle_pct
+            && !(s.is_finite() && s > 0.0 && s < 100.0)
+        {
+            return Err(Error::invalid(
+                "chart.settle_pct",
+                s,
+                "must lie in (0, 100) %",
+            ));
+        }
+        self.request(base).validate()
+    }
+
+    fn request(&self, base: &SceneParams) -> GridRequest {
+        let mut quantities = vec![Quantity::XJamMm];
+        if !self.theta_jam_levels_deg.is_empty() {
+            quantities.push(Quantity::ThetaJamDeg);
+        }
+        if self.settle_pct.is_some() {
+            quantities.push(Quantity::XRigidMm);
+        }
+        GridRequest {
+            base: *base,
+            x: self.x_axis,
+            y: self.y_axis,
+            quantities,
+        }
+    }
+}
+
+/// The computed contour map.
+#[derive(Debug, Clone)]
+pub struct ContourMap {
+    spec: ContourMapSpec,
+    params: SceneParams,
+    title: String,
+    grid: GridResult,
+    /// Percent gap (x_rigid - x_jam) / x_rigid per cell, when the settle line is drawn.
+    gap_pct: Option<Vec<f64>>,
+}
+
+/// A value for cells where a model gives no jam: below every level, so they stay unshaded.
+const NO_JAM: f64 = -1.0;
+
+fn dense(v: &[Option<f64>]) -> Vec<f64> {
+    v.iter().map(|x| x.unwrap_or(NO_JAM)).collect()
+}
+
+impl ContourMap {
+    /// Evaluates the grid quantities the layers need.
+    pub fn compute(scene: &Scene, spec: &ContourMapSpec, model: &dyn PointModel) -> Result<Self> {
+        let grid = grid::evaluate(&spec.request(&scene.params), model)?;
+        let gap_pct = match (&grid.x_jam_mm, &grid.x_rigid_mm) {
+            (Some(x), Some(r)) => Some(
+                x.iter()
+                    .zip(r)
+                    .map(|(x, r)| match (x, r) {
+                        (Some(x), Some(r)) => 100.0 * (r - x) / r,
+                        // No jam or no limit: far from settled.
+                        _ => 100.0,
+                    })
+                    .collect(),
+            ),
+            _ => None,
+        };
+        Ok(ContourMap {
+            spec: spec.clone(),
+            params: scene.params,
+            title: scene.title.clone(),
+            grid,
+            gap_pct,
+        })
+    }
+
+    /// The data behind the chart as JSON (grids in index order iy * nx + ix).
+    pub fn data(&self, scene: &Scene) -> DataFile {
+        let g = &self.grid;
+        DataFile::json(&json!({
+            "scene": scene.name, "title": self.title, "params": self.params,
+            "x_axis": self.spec.x_axis, "y_axis": self.spec.y_axis,
+            "index": "iy * nx + ix (x fastest)", "nx": g.nx(), "ny": g.ny(),
+            "x_jam_levels_mm": self.spec.x_jam_levels_mm,
+            "theta_jam_levels_deg": self.spec.theta_jam_levels_deg,
+            "settle_pct": self.spec.settle_pct,
+            "x_jam_mm": g.x_jam_mm, "theta_jam_deg": g.theta_jam_deg,
+            "x_gap_to_rigid_limit_pct": self.gap_pct,
+        }))
+    }
+
+    fn lines(&self, values: &[f64], levels: &[f64]) -> Vec<(f64, MultiLineString<f64>)> {
+        let b = ContourBuilder::new(self.grid.nx(), self.grid.ny(), true);
+        // Finite values and levels cannot fail; nothing is drawn if they ever did.
+        b.lines(values, levels)
+            .unwrap_or_default()
+            .into_iter()
+            .map(|l| {
+                let t = l.threshold();
+                (t, l.into_inner().0)
+            })
+            .collect()
+    }
+
+    fn to_plot(&self, ml: &MultiLineString<f64>) -> Vec<Vec<(f64, f64)>> {
+        grid_lines(ml, &self.spec.x_axis, &self.spec.y_axis)
+    }
+
+    /// Draws the map on `root`.
+    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+        let (w, _) = root.dim_in_pixel();
+        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
+        let x = PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param));
+        let y = PlotAxis::new(ya.min, ya.max, ya.scale, axis_label(ya.param));
+        let entries = self.legend();
+        let rows = legend::rows_needed(root, &entries, w as i32 - 120)?;
+        let m = Margins {
+            top: 70,
+            bottom: 75 + (rows * legend::ROW_PX) as u32,
+            left: 95,
+            right: 40,
+        };
+        let chart = axes::build_chart(root, &x, &y, m)?;
+        let area = chart.plotting_area();
+        let xj = dense(self.grid.x_jam_mm.as_deref().unwrap_or_default());
+        let levels = &self.spec.x_jam_levels_mm;
+        // Bands: below the first level, between levels, above the last.
+        let mut edges = vec![f64::MIN];
+        edges.extend(levels);
+        edges.push(f64::MAX);
+        let greys = style::band_greys(edges.len() - 1);
+        let b = ContourBuilder::new(self.grid.nx(), self.grid.ny(), true);
+        for (band, grey) in b
+            .isobands(&xj, &edges)
+            .unwrap_or_default()
+            .iter()
+            .zip(&greys)
+        {
+            for ring in grid_polygons(band.geometry(), xa, ya) {
+                area.draw(&Polygon::new(ring, grey.filled()))?;
+            }
+        }
+        axes::draw_grid(&chart, &x, &y)?;
+        let (px, py) = area.get_pixel_range();
+        let xr = x.plot_range();
+        let (label_u, mid_u, left_u) = [0.86, 0.5, 0.1]
+            .map(|f| xr.start + f * (xr.end - xr.start))
+            .into();
+        for (level, ml) in self.lines(&xj, levels) {
+            let paths = self.to_plot(&ml);
+            for p in &paths {
+                style::draw_line(area, p, LineKind::Solid, INK)?;
+            }
+            // Right of the plot where lines are flat; further left for lines that leave the
+            // plot there (near an edge).
+            let at = [label_u, mid_u, left_u]
+                .into_iter()
+                .find_map(|u| nearest_x(&paths, u, &chart, (&px, &py)));
+            if let Some(at) = at {
+                let s = format!("{} mm", level_text(level));
+                axes::boxed_text(
+                    root,
+                    &s,
+                    at,
+                    Pos::new(HPos::Center, VPos::Center),
+                    style::TICK_PX,
+                )?;
+            }
+        }
+        self.draw_theta_lines(root, &chart, &y)?;
+        self.draw_settle_line(root, &chart, &y)?;
+        axes::draw_frame(root, &chart, &x, &y)?;
+        axes::draw_title(root, &self.title)?;
+        let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
+        root.draw(&Text::new(
+            scene_subtitle(&self.params, &[xa.param, ya.param]),
+            (w as i32 / 2, 40),
+            sub,
+        ))?;
+        legend::draw_legend(root, &entries, 60, py.end + 62, w as i32 - 120)
+    }
+
+    /// Dotted theta_jam iso-lines, labelled near the top, staggered so close lines stay legible.
+    fn draw_theta_lines<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &axes::Chart<DB>,
+        y: &PlotAxis,
+    ) -> DrawResult<DB> {
+        let Some(tj) = &self.grid.theta_jam_deg else {
+            return Ok(());
+        };
+        let levels = &self.spec.theta_jam_levels_deg;
+        for (i, (level, ml)) in self.lines(&dense(tj), levels).into_iter().enumerate() {
+            let paths = self.to_plot(&ml);
+            for p in &paths {
+                style::draw_line(chart.plotting_area(), p, LineKind::Dotted, INK)?;
+            }
+            let frac = 0.95 - 0.06 * (levels.len() - 1 - i) as f64;
+            if let Some((_, at)) = at_height(&paths, chart, y, frac) {
+                let s = format!("θ_jam = {}°", level_text(level));
+                let pos = Pos::new(HPos::Left, VPos::Center);
+                axes::boxed_text(root, &s, (at.0 + 5, at.1), pos, style::TICK_PX)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The dashed line where x_jam comes within `settle_pct` % of r/mu, labelled with its value
+    /// of the x-axis parameter (read off the contour near the bottom of the plot).
+    fn draw_settle_line<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &axes::Chart<DB>,
+        y: &PlotAxis,
+    ) -> DrawResult<DB> {
+        let (Some(gap), Some(pct)) = (&self.gap_pct, self.spec.settle_pct) else {
+            return Ok(());
+        };
+        let xa = &self.spec.x_axis;
+        for (_, ml) in self.lines(gap, &[pct]) {
+            let paths = self.to_plot(&ml);
+            for p in &paths {
+                style::draw_line(chart.plotting_area(), p, LineKind::Dashed, INK)?;
+            }
+            let Some(((u, _), at)) = at_height(&paths, chart, y, 0.06) else {
+                continue;
+            };
+            let value = if xa.scale == AxisScale::Log {
+                u.exp()
+            } else {
+                u
+            };
+            let s = format!(
+                "{} ≈ {} {}: x_jam within {pct} % of r/μ →",
+                short(xa.param),
+                style::fmt_num(value, 0),
+                unit(xa.param)
+            );
+            axes::boxed_text(
+                root,
+                &s,
+                (at.0 + 6, at.1),
+                Pos::new(HPos::Left, VPos::Center),
+                style::TICK_PX,
+            )?;
+        }
+        Ok(())
+    }
+
+    fn legend(&self) -> Vec<LegendEntry> {
+        let mut e = vec![LegendEntry::new(
+            Swatch::Line(LineKind::Solid),
+            "x_jam iso-lines (mm), darker = larger x_jam",
+        )];
+        if !self.spec.theta_jam_levels_deg.is_empty() {
+            e.push(LegendEntry::new(
+                Swatch::Line(LineKind::Dotted),
+                "θ_jam iso-lines (deg)",
+            ));
+        }
+        if let Some(p) = self.spec.settle_pct {
+            let s = format!(
+                "x_jam within {p} % of its F → ∞ limit r/μ to the right: F no longer matters"
+            );
+            e.push(LegendEntry::new(Swatch::Line(LineKind::Dashed), s));
+        }
+        e
+    }
+}
+
+/// The backend pixel of the path point whose plot-x is nearest `u`, if inside the plot.
+fn nearest_x<DB: DrawingBackend>(
+    paths: &[Vec<(f64, f64)>],
+    u: f64,
+    chart: &axes::Chart<DB>,
+    (px, py): (&std::ops::Range<i32>, &std::ops::Range<i32>),
+) -> Option<(i32, i32)> {
+    let p = nearest_point(paths, u)?;
+    let at = chart.backend_coord(p);
+    (px.contains(&at.0) && py.start + 8 < at.1 && at.1 < py.end - 8).then_some(at)
+}
+
+/// The plot-space point and backend pixel of the path point nearest the height `frac` (0 bottom, 1 top) of the plot.
+fn at_height<DB: DrawingBackend>(
+    paths: &[Vec<(f64, f64)>],
+    chart: &axes::Chart<DB>,
+    y: &PlotAxis,
+    frac: f64,
+) -> Option<((f64, f64), (i32, i32))> {
+    let yr = y.plot_range();
+    let v = yr.start + frac * (yr.end - yr.start);
+    let p = paths
+        .iter()
+        .flatten()
+        .min_by(|a, b| (a.1 - v).abs().total_cmp(&(b.1 - v).abs()))?;
+    Some((*p, chart.backend_coord(p)))
+}
+
+/// The point of `paths` whose first coordinate is nearest `u` (first found wins ties).
+fn nearest_point(paths: &[Vec<(f64, f64)>], u: f64) -> Option<&(f64, f64)> {
+    paths
+        .iter()
+        .flatten()
+        .min_by(|a, b| (a.0 - u).abs().total_cmp(&(b.0 - u).abs()))
+}
+
+/// A level as a label: whole numbers without decimals.
+fn level_text(v: f64) -> String {
+    style::fmt_num(v, if v.fract() == 0.0 { 0 } else { 1 })
+}
+
+/// A parameter's symbol.
+fn short(p: GridParam) -> &'static str {
+    match p {
+        GridParam::ForceN => "F",
+        GridParam::RadiusMm => "r",
+        GridParam::MassKg => "m",
+        other => other.as_str(),
+    }
+}
+
+/// A parameter's unit.
+fn unit(p: GridParam) -> &'static str {
+    match p {
+        GridParam::ForceN => "N",
+        GridParam::RadiusMm | GridParam::PalmLengthMm => "mm",
+        GridParam::MassKg => "kg",
+        GridParam::GravityMS2 => "m/s²",
+        GridParam::StartAngleDeg | GridParam::ThetaDeg => "deg",
+        _ => "",
+    }
+}

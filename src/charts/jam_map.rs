@@ -1,0 +1,411 @@
+//! Chart kind `jam_map` (Fig. 3): where the disc jams over a parameter and the palm angle.
+//!
+//! The statics margin mu_g R_n - R_t is evaluated on the grid (x: the scene parameter, y: the
+//! palm angle theta on a log scale, so that 1 % of theta is the same height everywhere); the
+//! `contour` crate turns its sign into the jam region. The boundary is the closed-form
+//! theta_jam at every column, the right-hand scale is the disc position x = r cot(theta/2), and
+//! the paper's read-off construction (lines 1, 2, 3) is drawn for the scene's own value.
+
+use contour::ContourBuilder;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use serde::{Deserialize, Serialize};
+use serde_json::json;
+
+use super::axes::{self, Chart, DrawResult, Margins, PlotAxis};
+use super::legend::{self, LegendEntry, Swatch};
+use super::spec::Scene;
+use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
+use super::{DataFile, axis_label, grid_polygons, scene_subtitle};
+use crate::error::{Error, Result};
+use crate::grid::{
+    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, ModelName, PointModel,
+    Quantity,
+};
+use crate::model::{SceneParams, disc_position_mm, palm_angle_at};
+
+/// What a jam map draws (`layers`, default all).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum JamMapLayer {
+    /// The jam and slide regions from the sign of the margin grid.
+    Regions,
+    /// The closed-form boundary theta_jam(parameter).
+    Boundary,
+    /// The disc position x = r cot(theta/2) as a right-hand scale.
+    PositionScale,
+    /// The read-off construction, lines 1-3, at the scene's value of the x parameter.
+    ReadOff,
+}
+
+/// `[chart]` keys of `kind = "jam_map"`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct JamMapSpec {
+    /// The horizontal axis: any scene parameter but the radius (the position scale needs one r).
+    pub x_axis: GridAxis,
+    /// The vertical axis: `param = "theta_deg"`, the palm angle in deg.
+    pub y_axis: GridAxis,
+    /// The layers to draw (default: all).
+    #[serde(default = "all_layers")]
+    pub layers: Vec<JamMapLayer>,
+    /// The model whose jam points are drawn (default: statics; the margin of a jam map's
+    /// regions is always the statics').
+    #[serde(default)]
+    pub model: ModelName,
+}
+
+fn all_layers() -> Vec<JamMapLayer> {
+    use JamMapLayer::*;
+    vec![Regions, Boundary, PositionScale, ReadOff]
+}
+
+impl JamMapSpec {
+    /// Checks the axes against the scene.
+    pub fn validate(&self, base: &SceneParams) -> Result<()> {
+        if self.y_axis.param != GridParam::ThetaDeg {
+            return Err(Error::invalid(
+                "chart.y_axis.param",
+                self.y_axis.param.as_str(),
+                "a jam map's y axis is theta_deg",
+            ));
+        }
+        if matches!(self.x_axis.param, GridParam::ThetaDeg | GridParam::RadiusMm) {
+            return Err(Error::invalid(
+                "chart.x_axis.param",
+                self.x_axis.param.as_str(),
+                "a jam map's x axis is a scene parameter other than radius_mm",
+            ));
+        }
+        self.request(base).validate()
+    }
+
+    fn request(&self, base: &SceneParams) -> GridRequest {
+        GridRequest {
+            base: *base,
+            x: self.x_axis,
+            y: self.y_axis,
+            quantities: vec![Quantity::MarginN],
+        }
+    }
+
+    fn has(&self, l: JamMapLayer) -> bool {
+        self.layers.contains(&l)
+    }
+}
+
+/// The computed jam map.
+#[derive(Debug, Clone)]
+pub struct JamMap {
+    spec: JamMapSpec,
+    params: SceneParams,
+    title: String,
+    /// The margin grid (present only with the regions layer).
+    grid: Option<GridResult>,
+    /// The closed-form jam point at each x sample, (value, point).
+    boundary: Vec<(f64, JamPoint)>,
+    /// The read-off at the scene's own x value.
+    read_off: Option<(f64, JamPoint)>,
+}
+
+impl JamMap {
+    /// Computes what the layers of `spec` need, and nothing else.
+    pub fn compute(scene: &Scene, spec: &JamMapSpec, model: &dyn PointModel) -> Result<Self> {
+        let p = scene.params;
+        let grid = match spec.has(JamMapLayer::Regions) {
+            true => Some(grid::evaluate(&spec.request(&p), model)?),
+            false => None,
+        };
+        let param = spec.x_axis.param;
+        let boundary = match spec.has(JamMapLayer::Boundary) {
+            true => spec
+                .x_axis
+                .values()
+                .into_iter()
+                .map(|v| (v, model.jam_point(&param.apply(p, v))))
+                .collect(),
+            false => Vec::new(),
+        };
+        let read_off = spec
+            .has(JamMapLayer::ReadOff)
+            .then(|| param.get(&p).map(|v| (v, model.jam_point(&p))))
+            .flatten();
+        Ok(JamMap {
+            spec: spec.clone(),
+            params: p,
+            title: scene.title.clone(),
+            grid,
+            boundary,
+            read_off,
+        })
+    }
+
+    /// The data behind the chart as JSON.
+    pub fn data(&self, scene: &Scene) -> DataFile {
+        let point = |(v, p): &(f64, JamPoint)| {
+            json!({ self.spec.x_axis.param.as_str(): v, "status": p.status,
+                    "theta_jam_deg": p.theta_jam_deg, "x_jam_mm": p.x_jam_mm })
+        };
+        let doc = json!({
+            "scene": scene.name,
+            "title": self.title,
+            "params": self.params,
+            "x_axis": self.spec.x_axis,
+            "y_axis": self.spec.y_axis,
+            "read_off": self.read_off.as_ref().map(point),
+            "boundary": self.boundary.iter().map(point).collect::<Vec<_>>(),
+            "margin_n": self.grid.as_ref().map(|g| json!({
+                "index": "iy * nx + ix (x fastest)",
+                "nx": g.nx(), "ny": g.ny(),
+                "values": g.margin_n,
+            })),
+        });
+        DataFile::json(&doc)
+    }
+
+    fn axes(&self) -> (PlotAxis, PlotAxis) {
+        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
+        (
+            PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param)),
+            PlotAxis::new(ya.min, ya.max, ya.scale, "palm angle θ (deg)"),
+        )
+    }
+
+    fn legend(&self) -> Vec<LegendEntry> {
+        let mut e = Vec::new();
+        if self.spec.has(JamMapLayer::Regions) {
+            e.push(LegendEntry::new(
+                Swatch::Patch(JAM_FILL),
+                "jam: ground holds the disc (μR_n ≥ R_t)",
+            ));
+            e.push(LegendEntry::new(
+                Swatch::Patch(SLIDE_FILL),
+                "slide: the palm moves the disc",
+            ));
+        }
+        if self.spec.has(JamMapLayer::Boundary) {
+            e.push(LegendEntry::new(
+                Swatch::Line(LineKind::Solid),
+                "boundary θ_jam (closed form)",
+            ));
+        }
+        if let Some((v, _)) = self.read_off {
+            let s = format!(
+                "read-off lines 1-2-3 at {} = {}",
+                short_name(self.spec.x_axis.param),
+                style::fmt_num(v, 2)
+            );
+            e.push(LegendEntry::new(Swatch::Line(LineKind::Dashed), s));
+        }
+        e
+    }
+
+    /// Draws the map on `root`.
+    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+        let (x, y) = self.axes();
+        let (w, _) = root.dim_in_pixel();
+        let entries = self.legend();
+        let rows = legend::rows_needed(root, &entries, w as i32 - 120)?;
+        let right = if self.spec.has(JamMapLayer::PositionScale) {
+            110
+        } else {
+            30
+        };
+        let margins = Margins {
+            top: 70,
+            bottom: 75 + rows as u32 * legend::ROW_PX as u32,
+            left: 95,
+            right,
+        };
+        let chart = axes::build_chart(root, &x, &y, margins)?;
+        if let Some(g) = &self.grid {
+            self.draw_regions(&chart, g)?;
+        }
+        axes::draw_grid(&chart, &x, &y)?;
+        let area = chart.plotting_area();
+        let curve: Vec<(f64, f64)> = self
+            .boundary
+            .iter()
+            .filter_map(|(v, p)| p.theta_jam_deg.map(|t| (x.to_plot(*v), y.to_plot(t))))
+            .collect();
+        style::draw_line(area, &curve, LineKind::Solid, INK)?;
+        self.draw_region_labels(root, &chart)?;
+        axes::draw_frame(root, &chart, &x, &y)?;
+        if self.spec.has(JamMapLayer::PositionScale) {
+            self.draw_position_scale(root, &chart, &x, &y)?;
+        }
+        self.draw_read_off(root, &chart, &x, &y)?;
+        axes::draw_title(root, &self.title)?;
+        let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
+        root.draw(&Text::new(
+            scene_subtitle(&self.params, &[self.spec.x_axis.param]),
+            (w as i32 / 2, 40),
+            sub,
+        ))?;
+        let (_, py) = chart.plotting_area().get_pixel_range();
+        legend::draw_legend(root, &entries, 60, py.end + 62, w as i32 - 120)
+    }
+
+    fn draw_regions<DB: DrawingBackend>(
+        &self,
+        chart: &Chart<DB>,
+        g: &GridResult,
+    ) -> DrawResult<DB> {
+        let Some(margin) = &g.margin_n else {
+            return Ok(());
+        };
+        let builder = ContourBuilder::new(g.nx(), g.ny(), true);
+        // A single threshold on a finite grid cannot fail; no polygon is drawn if it ever did.
+        let jam = builder.contours(margin, &[0.0]).unwrap_or_default();
+        let (xr, yr) = (&self.spec.x_axis, &self.spec.y_axis);
+        for c in &jam {
+            for ring in grid_polygons(c.geometry(), xr, yr) {
+                chart
+                    .plotting_area()
+                    .draw(&Polygon::new(ring, JAM_FILL.filled()))?;
+            }
+        }
+        Ok(())
+    }
+
+    /// "SLIDE" top left and "JAM" bottom right: where each region lies for every map whose
+    /// theta_jam grows with the x parameter (all friction maps).
+    fn draw_region_labels<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        c: &Chart<DB>,
+    ) -> DrawResult<DB> {
+        if !self.spec.has(JamMapLayer::Regions) {
+            return Ok(());
+        }
+        let (px, py) = c.plotting_area().get_pixel_range();
+        let at = |fx: f64, fy: f64| {
+            let u = px.start as f64 + fx * (px.end - px.start) as f64;
+            let v = py.start as f64 + fy * (py.end - py.start) as f64;
+            (u as i32, v as i32)
+        };
+        let pos = Pos::new(HPos::Center, VPos::Center);
+        axes::boxed_text(root, "SLIDE", at(0.2, 0.12), pos, style::LABEL_PX)?;
+        axes::boxed_text(root, "JAM", at(0.8, 0.88), pos, style::LABEL_PX)
+    }
+
+    fn draw_position_scale<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        c: &Chart<DB>,
+        x: &PlotAxis,
+        y: &PlotAxis,
+    ) -> DrawResult<DB> {
+        let r = self.params.radius_mm;
+        let (lo, hi) = (
+            disc_position_mm(r, y.max.to_radians()),
+            disc_position_mm(r, y.min.to_radians()),
+        );
+        let (px, py) = c.plotting_area().get_pixel_range();
+        // Pixels per mm of x at position x, from d theta/dx = -2r/(x^2 + r^2) (rad/mm) with
+        // theta = 2 atan(r/x), and the theta axis' pixels per rad (log: per ln unit / theta).
+        let len = py.len() as f64;
+        let density = |xmm: f64| {
+            let dtheta = 2.0 * r / (xmm * xmm + r * r);
+            match y.scale {
+                AxisScale::Log => len / (y.max / y.min).ln() * dtheta / (2.0 * (r / xmm).atan()),
+                AxisScale::Linear => len / (y.max - y.min) * dtheta.to_degrees(),
+            }
+        };
+        let ticks = axes::adaptive_ticks(lo, hi, density, 5.0, 24.0);
+        let right = px.end - 1;
+        let row = |xmm: f64| axes::pixel(c, x, y, x.min, palm_angle_at(r, xmm).to_degrees()).1;
+        for v in ticks.minor {
+            root.draw(&PathElement::new(
+                vec![(right, row(v)), (right + 4, row(v))],
+                INK,
+            ))?;
+        }
+        let font = style::text(style::TICK_PX).pos(Pos::new(HPos::Left, VPos::Center));
+        for (v, s) in ticks.major {
+            let w = row(v);
+            root.draw(&PathElement::new(vec![(right, w), (right + 8, w)], INK))?;
+            root.draw(&Text::new(s, (right + 11, w), font.clone()))?;
+        }
+        let label = format!(
+            "disc position x = r·cot(θ/2) (mm), r = {} mm",
+            style::fmt_num(r, 1)
+        );
+        axes::draw_vertical_label(root, &label, px.end + 62, (py.start + py.end) / 2)
+    }
+
+    fn draw_read_off<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        c: &Chart<DB>,
+        x: &PlotAxis,
+        y: &PlotAxis,
+    ) -> DrawResult<DB> {
+        let Some((v, p)) = self.read_off else {
+            return Ok(());
+        };
+        let (Some(t), Some(xj)) = (p.theta_jam_deg, p.x_jam_mm) else {
+            return Ok(());
+        };
+        if !(x.min..=x.max).contains(&v) || !(y.min..=y.max).contains(&t) {
+            return Ok(());
+        }
+        let at = |a: f64, b: f64| axes::pixel(c, x, y, a, b);
+        let (corner, bottom, left, right) = (at(v, t), at(v, y.min), at(x.min, t), at(x.max, t));
+        for line in [[bottom, corner], [corner, left], [corner, right]] {
+            style::draw_line(root, &line, LineKind::Dashed, INK)?;
+        }
+        root.draw(&Circle::new(corner, 5, INK.filled()))?;
+        let num = |s: &str, p: (i32, i32)| {
+            axes::boxed_text(
+                root,
+                s,
+                p,
+                Pos::new(HPos::Center, VPos::Center),
+                style::TICK_PX,
+            )
+        };
+        num(
+            "1",
+            ((bottom.0 + corner.0) / 2 + 12, (bottom.1 + corner.1) / 2),
+        )?;
+        num("2", ((left.0 + corner.0) / 2, corner.1 - 14))?;
+        num("3", ((right.0 + corner.0) / 2, corner.1 - 14))?;
+        let name = short_name(self.spec.x_axis.param);
+        let big = style::NOTE_PX;
+        axes::boxed_text(
+            root,
+            &format!("{name} = {}", style::fmt_num(v, 2)),
+            (bottom.0 + 8, bottom.1 - 22),
+            Pos::new(HPos::Left, VPos::Bottom),
+            big,
+        )?;
+        axes::boxed_text(
+            root,
+            &format!("θ_jam = {}°", style::fmt_num(t, 3)),
+            (left.0 + 8, left.1 + 10),
+            Pos::new(HPos::Left, VPos::Top),
+            big,
+        )?;
+        axes::boxed_text(
+            root,
+            &format!("x_jam = {} mm", style::fmt_num(xj, 3)),
+            (right.0 - 8, right.1 + 10),
+            Pos::new(HPos::Right, VPos::Top),
+            big,
+        )
+    }
+}
+
+/// The symbol of a parameter for labels.
+fn short_name(p: GridParam) -> &'static str {
+    match p {
+        GridParam::Mu => "μ",
+        GridParam::MuGround => "μ_ground",
+        GridParam::MuPalm => "μ_palm",
+        GridParam::ForceN => "F",
+        GridParam::MassKg => "m",
+        other => other.as_str(),
+    }
+}

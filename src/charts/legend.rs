@@ -1,0 +1,99 @@
+//! Legends, always drawn in a strip outside the plotting area so they never cover data.
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+use super::axes::DrawResult;
+use super::style::{self, INK, LineKind, Marker};
+
+/// What a legend entry shows beside its text.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Swatch {
+    /// A line sample.
+    Line(LineKind),
+    /// A marker.
+    Marker(Marker),
+    /// A filled patch of a region colour.
+    Patch(RGBColor),
+}
+
+/// One legend entry.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LegendEntry {
+    pub swatch: Swatch,
+    pub label: String,
+}
+
+impl LegendEntry {
+    /// A new entry.
+    pub fn new(swatch: Swatch, label: impl Into<String>) -> Self {
+        LegendEntry {
+            swatch,
+            label: label.into(),
+        }
+    }
+}
+
+/// Height in px of one legend row.
+pub const ROW_PX: i32 = 24;
+
+/// Number of rows `entries` take when wrapped into `width` px (for reserving space).
+pub fn rows_needed<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    entries: &[LegendEntry],
+    width: i32,
+) -> Result<i32, DrawingAreaErrorKind<DB::ErrorType>> {
+    Ok(layout(root, entries, 0, width)?
+        .last()
+        .map_or(0, |p| p.1 + 1))
+}
+
+/// Entry positions (x, row) wrapped within [left, left + width).
+fn layout<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    entries: &[LegendEntry],
+    left: i32,
+    width: i32,
+) -> Result<Vec<(i32, i32)>, DrawingAreaErrorKind<DB::ErrorType>> {
+    let font = style::text(style::TICK_PX);
+    let (mut x, mut row) = (left, 0);
+    let mut out = Vec::with_capacity(entries.len());
+    for e in entries {
+        let w = 40 + root.estimate_text_size(&e.label, &font)?.0 as i32 + 24;
+        if x > left && x + w > left + width {
+            x = left;
+            row += 1;
+        }
+        out.push((x, row));
+        x += w;
+    }
+    Ok(out)
+}
+
+/// Draws `entries` wrapped in rows starting at (left, top), within `width` px.
+pub fn draw_legend<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    entries: &[LegendEntry],
+    left: i32,
+    top: i32,
+    width: i32,
+) -> DrawResult<DB> {
+    let font = style::text(style::TICK_PX).pos(Pos::new(HPos::Left, VPos::Center));
+    for (e, (x, row)) in entries.iter().zip(layout(root, entries, left, width)?) {
+        let y = top + row * ROW_PX + ROW_PX / 2;
+        match e.swatch {
+            Swatch::Line(kind) => style::draw_line(root, &[(x, y), (x + 32, y)], kind, INK)?,
+            Swatch::Marker(m) => style::draw_marker(root, m, (x + 16, y))?,
+            Swatch::Patch(c) => {
+                root.draw(&Rectangle::new([(x, y - 8), (x + 32, y + 8)], c.filled()))?;
+                root.draw(&Rectangle::new(
+                    [(x, y - 8), (x + 32, y + 8)],
+                    INK.stroke_width(1),
+                ))?;
+            }
+        }
+        root.draw(&Text::new(e.label.clone(), (x + 40, y), font.clone()))?;
+    }
+    Ok(())
+}

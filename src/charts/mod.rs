@@ -1,0 +1,292 @@
+//! Design charts: scenes (`charts/<name>.toml`) computed from the grid and models, drawn with
+//! plotters to byte-identical SVG and PNG, with the data behind each chart.
+//!
+//! A scene is loaded ([`spec::load_scene`]), its chart computes only what its layers draw
+//! ([`Chart::compute`]), then one backend-generic `draw` produces both the SVG and the PNG.
+//! Bytes depend only on the scene: the font is embedded ([`style::init_fonts`]), the PNG has no
+//! metadata ([`output::encode_png`]), nothing is random and every number that feeds a pixel is
+//! computed the same way for any thread count.
+//!
+//! Chart kinds, one module each: [`jam_map`] (Fig. 3), [`sweep`] (Figs. 6, 7a, 7b),
+//! [`contour_map`] (Fig. 7c).
+//!
+//! ## Where the other models plug in
+//!
+//! - Points of a model on a sweep (Fig. 6: min-norm points, simulation points with motion and
+//!   force drive): one [`sweep_layers::SweepLayer`] variant and its arm in
+//!   [`sweep_layers::series`], returning [`sweep::Series`] of markers; legend, panels, data file
+//!   and hashes follow.
+//! - A model over a map (jam map boundary and read-off, contour map): implement
+//!   [`crate::grid::PointModel`] and add a [`crate::grid::ModelName`] variant; scenes then say
+//!   `model = "min_norm"`.
+//! - A new chart kind (Fig. 4, the min-norm convergence trace; Fig. 5, the simulated velocity
+//!   and position against time): a module with a spec struct, `compute`, `data` and a
+//!   backend-generic `draw` (as [`sweep`]), a [`ChartSpec`] variant and a [`Chart`] variant.
+//!   Those scenes (`charts/fig4.toml`, `charts/fig5.toml`) come with their models.
+
+pub mod axes;
+pub mod contour_map;
+pub mod jam_map;
+pub mod legend;
+pub mod output;
+pub mod spec;
+pub mod style;
+pub mod sweep;
+pub mod sweep_layers;
+
+use geo_types::{MultiLineString, MultiPolygon};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use crate::error::{Error, Result};
+use crate::grid::{GridAxis, GridParam};
+use crate::model::SceneParams;
+use axes::DrawResult;
+pub use spec::{ChartSpec, Scene, load_scene, scene_names};
+
+/// Which pictures to produce.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Formats {
+    /// SVG only.
+    Svg,
+    /// PNG only.
+    Png,
+    /// SVG and PNG.
+    Both,
+}
+
+impl Formats {
+    fn svg(self) -> bool {
+        self != Formats::Png
+    }
+    fn png(self) -> bool {
+        self != Formats::Svg
+    }
+}
+
+/// The data behind a chart: file extension and bytes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DataFile {
+    /// `csv` or `json`.
+    pub extension: &'static str,
+    /// The file content.
+    pub bytes: Vec<u8>,
+}
+
+impl DataFile {
+    /// Compact JSON of `doc` with a trailing newline.
+    pub fn json(doc: &serde_json::Value) -> Self {
+        let mut bytes = serde_json::to_vec(doc).expect("JSON values serialise");
+        bytes.push(b'\n');
+        DataFile {
+            extension: "json",
+            bytes,
+        }
+    }
+
+    /// CSV text.
+    pub fn csv(text: String) -> Self {
+        DataFile {
+            extension: "csv",
+            bytes: text.into_bytes(),
+        }
+    }
+}
+
+/// One rendered scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rendered {
+    /// Scene name.
+    pub name: String,
+    /// SVG bytes, if requested.
+    pub svg: Option<Vec<u8>>,
+    /// PNG bytes, if requested.
+    pub png: Option<Vec<u8>>,
+    /// The data behind the chart.
+    pub data: DataFile,
+}
+
+/// A computed chart of any kind.
+pub enum Chart {
+    JamMap(jam_map::JamMap),
+    Sweep(sweep::Sweep),
+    ContourMap(contour_map::ContourMap),
+}
+
+impl Chart {
+    /// Computes what `scene`'s chart draws, with the model the scene names.
+    pub fn compute(scene: &Scene) -> Result<Chart> {
+        Ok(match &scene.chart {
+            ChartSpec::JamMap(s) => {
+                Chart::JamMap(jam_map::JamMap::compute(scene, s, s.model.point_model())?)
+            }
+            ChartSpec::Sweep(s) => Chart::Sweep(sweep::Sweep::compute(scene, s)?),
+            ChartSpec::ContourMap(s) => Chart::ContourMap(contour_map::ContourMap::compute(
+                scene,
+                s,
+                s.model.point_model(),
+            )?),
+        })
+    }
+
+    /// Draws on any plotters backend.
+    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+        root.fill(&WHITE)?;
+        match self {
+            Chart::JamMap(c) => c.draw(root),
+            Chart::Sweep(c) => c.draw(root),
+            Chart::ContourMap(c) => c.draw(root),
+        }
+    }
+
+    /// The data behind the chart.
+    pub fn data(&self, scene: &Scene) -> DataFile {
+        match self {
+            Chart::JamMap(c) => c.data(scene),
+            Chart::Sweep(c) => c.data(scene),
+            Chart::ContourMap(c) => c.data(scene),
+        }
+    }
+}
+
+/// Computes and draws `scene` into the requested formats.
+pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
+    style::init_fonts();
+    let chart = Chart::compute(scene)?;
+    let (w, h) = (scene.size.width_px, scene.size.height_px);
+    let draw_err = |m: String| Error::Draw {
+        scene: scene.name.clone(),
+        message: m,
+    };
+    let (svg, png) = rayon::join(
+        || -> Result<Option<Vec<u8>>> {
+            if !formats.svg() {
+                return Ok(None);
+            }
+            let mut s = String::new();
+            {
+                let root = SVGBackend::with_string(&mut s, (w, h)).into_drawing_area();
+                chart.draw(&root).map_err(|e| draw_err(e.to_string()))?;
+                root.present().map_err(|e| draw_err(e.to_string()))?;
+            }
+            Ok(Some(s.into_bytes()))
+        },
+        || -> Result<Option<Vec<u8>>> {
+            if !formats.png() {
+                return Ok(None);
+            }
+            let mut rgb = vec![0u8; w as usize * h as usize * 3];
+            {
+                let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+                chart.draw(&root).map_err(|e| draw_err(e.to_string()))?;
+                root.present().map_err(|e| draw_err(e.to_string()))?;
+            }
+            output::encode_png(&rgb, w, h).map(Some).map_err(draw_err)
+        },
+    );
+    Ok(Rendered {
+        name: scene.name.clone(),
+        svg: svg?,
+        png: png?,
+        data: chart.data(scene),
+    })
+}
+
+/// Axis label (quantity and unit) of a scene parameter.
+pub fn axis_label(p: GridParam) -> &'static str {
+    match p {
+        GridParam::Mu => "friction coefficient μ = μ_ground = μ_palm (-)",
+        GridParam::MuGround => "ground friction coefficient μ_ground (-)",
+        GridParam::MuPalm => "palm friction coefficient μ_palm (-)",
+        GridParam::RadiusMm => "disc radius r (mm)",
+        GridParam::MassKg => "disc mass m (kg)",
+        GridParam::ForceN => "palm push F (N)",
+        GridParam::GravityMS2 => "gravity g (m/s²)",
+        GridParam::StartAngleDeg => "start angle of the palm (deg)",
+        GridParam::PalmLengthMm => "palm length (mm)",
+        GridParam::ThetaDeg => "palm angle θ (deg)",
+    }
+}
+
+/// One line naming the scene's parameters for under the title, without the `swept` ones (they
+/// are on an axis).
+pub fn scene_subtitle(p: &SceneParams, swept: &[GridParam]) -> String {
+    let mu = if p.mu_ground == p.mu_palm {
+        format!("μ = {}", p.mu_ground)
+    } else {
+        format!("μ_ground = {}, μ_palm = {}", p.mu_ground, p.mu_palm)
+    };
+    let parts = [
+        (GridParam::Mu, mu),
+        (GridParam::MassKg, format!("m = {} kg", p.mass_kg)),
+        (GridParam::RadiusMm, format!("r = {} mm", p.radius_mm)),
+        (GridParam::ForceN, format!("F = {} N", p.force_n)),
+        (
+            GridParam::GravityMS2,
+            format!("g = {} m/s²", p.gravity_m_s2),
+        ),
+    ];
+    let kept: Vec<String> = parts
+        .into_iter()
+        .filter(|(k, _)| !swept.contains(k))
+        .map(|(_, s)| s)
+        .collect();
+    format!("closed-form statics (corrected Eq. 1): {}", kept.join(", "))
+}
+
+/// The exterior rings of contour polygons, mapped from the contour crate's grid coordinates to
+/// plot space (ln for log axes). The crate puts sample i at the centre of cell [i, i + 1].
+pub fn grid_polygons(mp: &MultiPolygon<f64>, xa: &GridAxis, ya: &GridAxis) -> Vec<Vec<(f64, f64)>> {
+    mp.0.iter()
+        .map(|poly| {
+            poly.exterior()
+                .0
+                .iter()
+                .map(|c| (grid_to_plot(c.x, xa), grid_to_plot(c.y, ya)))
+                .collect()
+        })
+        .collect()
+}
+
+/// Plot-space coordinate of contour-crate grid coordinate `g` on axis `a`.
+pub fn grid_to_plot(g: f64, a: &GridAxis) -> f64 {
+    let (lo, hi) = match a.scale {
+        crate::grid::AxisScale::Linear => (a.min, a.max),
+        crate::grid::AxisScale::Log => (a.min.ln(), a.max.ln()),
+    };
+    lo + (hi - lo) * (g - 0.5) / (a.count - 1) as f64
+}
+
+/// Contour-crate polylines mapped to plot space, split where they run along the grid's border.
+///
+/// The crate closes every ring around the edge of the grid; those pieces are not iso-lines and
+/// would be drawn on the frame.
+pub fn grid_lines(ml: &MultiLineString<f64>, xa: &GridAxis, ya: &GridAxis) -> Vec<Vec<(f64, f64)>> {
+    let (nx, ny) = (xa.count as f64, ya.count as f64);
+    let on_border =
+        |c: &geo_types::Coord<f64>| c.x <= 0.5 || c.x >= nx - 0.5 || c.y <= 0.5 || c.y >= ny - 0.5;
+    let mut out = Vec::new();
+    for ls in &ml.0 {
+        let mut cur: Vec<(f64, f64)> = Vec::new();
+        for w in ls.0.windows(2) {
+            if on_border(&w[0]) && on_border(&w[1]) {
+                if cur.len() > 1 {
+                    out.push(std::mem::take(&mut cur));
+                }
+                cur.clear();
+                continue;
+            }
+            if cur.is_empty() {
+                cur.push((grid_to_plot(w[0].x, xa), grid_to_plot(w[0].y, ya)));
+            }
+            cur.push((grid_to_plot(w[1].x, xa), grid_to_plot(w[1].y, ya)));
+        }
+        if cur.len() > 1 {
+            out.push(cur);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests;

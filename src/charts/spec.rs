@@ -1,0 +1,201 @@
+//! Scene files `charts/<name>.toml`: what a chart shows and from which parameters.
+//!
+//! ```toml
+//! title = "Fig. 3: ..."            # the chart's title
+//! base = "../config/paper.toml"    # parameter set, relative to this file (default shown)
+//! [scene]                          # overrides of the base's [scene] keys
+//! force_n = 200.0
+//! [size]                           # picture size in px (default 1000 x 800)
+//! width_px = 1000
+//! height_px = 900
+//! [chart]                          # the chart kind and its own keys
+//! kind = "jam_map"                 # jam_map | sweep | contour_map
+//! ```
+//!
+//! The `[chart]` keys of each kind are documented on [`JamMapSpec`], [`SweepSpec`] and
+//! [`ContourMapSpec`]. Unknown keys are refused everywhere.
+
+use std::path::{Path, PathBuf};
+
+use serde::{Deserialize, Serialize};
+
+use super::contour_map::ContourMapSpec;
+use super::jam_map::JamMapSpec;
+use super::sweep::SweepSpec;
+use crate::config::{Config, parse_toml};
+use crate::error::{Error, Result};
+use crate::model::SceneParams;
+
+/// Picture size in px.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Size {
+    /// Width in px, 400..=4000 (default: 1000).
+    pub width_px: u32,
+    /// Height in px, 300..=4000 (default: 800).
+    pub height_px: u32,
+}
+
+impl Default for Size {
+    fn default() -> Self {
+        Size {
+            width_px: 1000,
+            height_px: 800,
+        }
+    }
+}
+
+impl Size {
+    fn validate(&self) -> Result<()> {
+        // Below these the margins, labels and legends no longer fit.
+        if !(400..=4000).contains(&self.width_px) {
+            return Err(Error::invalid(
+                "size.width_px",
+                self.width_px,
+                "must be 400..=4000 px",
+            ));
+        }
+        if !(300..=4000).contains(&self.height_px) {
+            return Err(Error::invalid(
+                "size.height_px",
+                self.height_px,
+                "must be 300..=4000 px",
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The chart kind and its settings (`[chart]`, tagged by `kind`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum ChartSpec {
+    /// A jam/slide map over a parameter and the palm angle (Fig. 3).
+    JamMap(JamMapSpec),
+    /// theta_jam and x_jam against one parameter (Figs. 6, 7a, 7b).
+    Sweep(SweepSpec),
+    /// Iso-lines of x_jam and theta_jam over two parameters (Fig. 7c).
+    ContourMap(ContourMapSpec),
+}
+
+/// A scene file as written.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    title: String,
+    base: Option<PathBuf>,
+    #[serde(default)]
+    scene: toml::Table,
+    #[serde(default)]
+    size: Size,
+    chart: ChartSpec,
+}
+
+/// A loaded, validated scene: everything needed to compute and draw it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    /// The scene's name (file stem), e.g. `fig3`.
+    pub name: String,
+    /// The chart title.
+    pub title: String,
+    /// The base parameter set with the scene's overrides applied.
+    pub params: SceneParams,
+    /// Picture size.
+    pub size: Size,
+    /// Chart kind and settings.
+    pub chart: ChartSpec,
+}
+
+/// The default base parameter set, relative to the scene file's directory.
+pub const DEFAULT_BASE: &str = "../config/paper.toml";
+
+/// The scene names in `dir` (the stems of its `*.toml` files), sorted.
+pub fn scene_names(dir: &Path) -> Result<Vec<String>> {
+    let entries = std::fs::read_dir(dir).map_err(|e| Error::io("read", dir, e))?;
+    let mut names = Vec::new();
+    for entry in entries {
+        let path = entry.map_err(|e| Error::io("read", dir, e))?.path();
+        if path.extension().is_some_and(|e| e == "toml")
+            && let Some(stem) = path.file_stem().and_then(|s| s.to_str())
+        {
+            names.push(stem.to_string());
+        }
+    }
+    names.sort();
+    Ok(names)
+}
+
+/// Loads and validates scene `name` from `dir/<name>.toml`.
+pub fn load_scene(dir: &Path, name: &str) -> Result<Scene> {
+    let path = dir.join(format!("{name}.toml"));
+    let text = std::fs::read_to_string(&path).map_err(|e| Error::io("read", &path, e))?;
+    let file: SceneFile = parse_toml(&text, &path)?;
+    let base_path = dir.join(file.base.as_deref().unwrap_or(Path::new(DEFAULT_BASE)));
+    let base = Config::load(&base_path)?;
+    let params = apply_overrides(base.scene, &file.scene)?;
+    params.validate()?;
+    file.size.validate()?;
+    let scene = Scene {
+        name: name.to_string(),
+        title: file.title,
+        params,
+        size: file.size,
+        chart: file.chart,
+    };
+    match &scene.chart {
+        ChartSpec::JamMap(s) => s.validate(&scene.params)?,
+        ChartSpec::Sweep(s) => s.validate(&scene.params)?,
+        ChartSpec::ContourMap(s) => s.validate(&scene.params)?,
+    }
+    Ok(scene)
+}
+
+/// `base` with the keys of a `[scene]` override table replaced; unknown keys are refused.
+fn apply_overrides(base: SceneParams, overrides: &toml::Table) -> Result<SceneParams> {
+    let mut table = toml::Table::try_from(base).expect("SceneParams serialises to a table");
+    for (key, value) in overrides {
+        if !table.contains_key(key) {
+            return Err(Error::invalid(
+                &format!("scene.{key}"),
+                value,
+                "unknown key; the keys are those of [scene] in config/paper.toml",
+            ));
+        }
+        table.insert(key.clone(), value.clone());
+    }
+    SceneParams::deserialize(toml::Value::Table(table)).map_err(|e| {
+        Error::invalid(
+            "scene",
+            e.message().trim(),
+            "a [scene] override has the wrong type",
+        )
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn overrides_replace_only_their_keys_and_refuse_typos() {
+        let mut t = toml::Table::new();
+        t.insert("force_n".into(), toml::Value::Float(50.0));
+        let p = apply_overrides(SceneParams::default(), &t).unwrap();
+        assert_eq!(p.force_n, 50.0);
+        assert_eq!(p.radius_mm, 10.0);
+        t.insert("radus_mm".into(), toml::Value::Float(5.0));
+        let msg = apply_overrides(SceneParams::default(), &t)
+            .unwrap_err()
+            .to_string();
+        assert!(msg.contains("scene.radus_mm"), "{msg}");
+    }
+
+    #[test]
+    fn unknown_chart_key_is_refused_with_its_line() {
+        let text = "title = \"t\"\n[chart]\nkind = \"sweep\"\npanls = []\n";
+        let msg = parse_toml::<SceneFile>(text, Path::new("s.toml"))
+            .unwrap_err()
+            .to_string();
+        assert!(msg.contains("panls"), "{msg}");
+    }
+}

@@ -1,0 +1,172 @@
+//! The one visual style of every chart: embedded font, greys, line kinds and markers.
+//!
+//! Everything reads in greyscale print: regions are light greys, curves are black and told apart
+//! by dash pattern and width, point sets by marker shape and fill.
+
+use std::sync::Once;
+
+use plotters::coord::CoordTranslate;
+use plotters::prelude::*;
+use plotters::style::FontStyle;
+
+/// The font family every chart uses; [`init_fonts`] binds it to the embedded DejaVu Sans, and
+/// SVG viewers that have DejaVu Sans show the text exactly as laid out.
+pub const FONT: &str = "DejaVu Sans";
+
+/// DejaVu Sans 2.37 (Debian fonts-dejavu-core), licence in `assets/fonts/LICENSE-DejaVu.txt`.
+/// Embedded so that no system font is ever looked up and the pixels are the same everywhere.
+static DEJAVU_SANS: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+
+/// Registers the embedded font with plotters (once per process; later calls do nothing).
+pub fn init_fonts() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        // The bytes are a valid TTF shipped in the repository; a failure here is a build defect
+        // that the chart hash test catches at once.
+        let _ = plotters::style::register_font(FONT, FontStyle::Normal, DEJAVU_SANS);
+    });
+}
+
+/// Title text size in px.
+pub const TITLE_PX: f64 = 22.0;
+/// Axis label text size in px.
+pub const LABEL_PX: f64 = 17.0;
+/// Tick label and legend text size in px.
+pub const TICK_PX: f64 = 15.0;
+/// Annotation text size in px.
+pub const NOTE_PX: f64 = 15.0;
+
+/// Ink for curves, text and frames.
+pub const INK: RGBColor = RGBColor(0, 0, 0);
+/// Major grid lines.
+pub const GRID_MAJOR: RGBColor = RGBColor(190, 190, 190);
+/// Minor grid lines.
+pub const GRID_MINOR: RGBColor = RGBColor(228, 228, 228);
+/// The jammed region of a map.
+pub const JAM_FILL: RGBColor = RGBColor(178, 178, 178);
+/// The sliding region of a map.
+pub const SLIDE_FILL: RGBColor = RGBColor(255, 255, 255);
+/// Background of labels drawn over data.
+pub const PAPER: RGBColor = RGBColor(255, 255, 255);
+
+/// A text style of the chart font.
+pub fn text(size_px: f64) -> TextStyle<'static> {
+    (FONT, size_px).into_font().color(&INK)
+}
+
+/// `n` greys from light to dark for filled bands (greyscale-safe sequential scale).
+pub fn band_greys(n: usize) -> Vec<RGBColor> {
+    (0..n)
+        .map(|i| {
+            let t = if n > 1 {
+                i as f64 / (n - 1) as f64
+            } else {
+                0.0
+            };
+            // 250 (near white) to 120: dark enough to separate, light enough for black lines on top.
+            let g = (250.0 - 130.0 * t).round() as u8;
+            RGBColor(g, g, g)
+        })
+        .collect()
+}
+
+/// How a curve is stroked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LineKind {
+    /// Solid, 2 px: the model's main curve.
+    Solid,
+    /// Long dashes, 2 px: limits and thresholds.
+    Dashed,
+    /// Short dashes, 1 px: construction lines.
+    Dotted,
+}
+
+impl LineKind {
+    /// The stroke width in px.
+    pub fn width(self) -> u32 {
+        match self {
+            LineKind::Solid | LineKind::Dashed => 2,
+            LineKind::Dotted => 1,
+        }
+    }
+
+    /// (dash, gap) in px, None for solid.
+    pub fn dashes(self) -> Option<(u32, u32)> {
+        match self {
+            LineKind::Solid => None,
+            LineKind::Dashed => Some((10, 6)),
+            LineKind::Dotted => Some((4, 4)),
+        }
+    }
+}
+
+/// Draws a polyline in `area`'s coordinates with the given line kind.
+pub fn draw_line<DB, CT>(
+    area: &DrawingArea<DB, CT>,
+    points: &[CT::From],
+    kind: LineKind,
+    color: RGBColor,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>>
+where
+    DB: DrawingBackend,
+    CT: CoordTranslate,
+    CT::From: Clone,
+{
+    let style = color.stroke_width(kind.width());
+    match kind.dashes() {
+        None => area.draw(&PathElement::new(points.to_vec(), style)),
+        Some((dash, gap)) => {
+            for e in DashedLineSeries::new(points.iter().cloned(), dash, gap, style) {
+                area.draw(&e)?;
+            }
+            Ok(())
+        }
+    }
+}
+
+/// Marker shapes for point sets; open and filled variants tell sources apart in greyscale.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Marker {
+    /// Open circle.
+    Circle,
+    /// Filled circle.
+    Dot,
+    /// Small filled triangle (fits inside an open circle at the same point).
+    Triangle,
+    /// Filled square.
+    Square,
+    /// Diagonal cross.
+    Cross,
+}
+
+/// Draws one marker at `at` in `area`'s coordinates.
+pub fn draw_marker<DB, CT>(
+    area: &DrawingArea<DB, CT>,
+    marker: Marker,
+    at: CT::From,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>>
+where
+    DB: DrawingBackend,
+    CT: CoordTranslate,
+{
+    let open = INK.stroke_width(2);
+    let fill = INK.filled();
+    let anchor = EmptyElement::at(at);
+    match marker {
+        Marker::Circle => area.draw(&(anchor + Circle::new((0, 0), 8, open))),
+        Marker::Dot => area.draw(&(anchor + Circle::new((0, 0), 4, fill))),
+        Marker::Triangle => area.draw(&(anchor + TriangleMarker::new((0, 0), 5, fill))),
+        Marker::Square => area.draw(&(anchor + Rectangle::new([(-5, -5), (5, 5)], fill))),
+        Marker::Cross => area.draw(&(anchor + Cross::new((0, 0), 7, INK.stroke_width(3)))),
+    }
+}
+
+/// Formats `v` with `decimals` digits after the point, never printing "-0".
+pub fn fmt_num(v: f64, decimals: usize) -> String {
+    let s = format!("{v:.decimals$}");
+    if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
+        s[1..].to_string()
+    } else {
+        s
+    }
+}

@@ -1,0 +1,319 @@
+//! Chart kind `sweep` (Figs. 6, 7a, 7b): x_jam and theta_jam against one scene parameter.
+//!
+//! Each layer contributes [`Series`] (a curve or a point set); each panel plots one quantity of
+//! every series. The layers live in [`super::sweep_layers`]: a new model's points (min-norm,
+//! simulation) are one more [`SweepLayer`] variant and one function there.
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use serde::{Deserialize, Serialize};
+
+use super::axes::{self, DrawResult, Margins, PlotAxis};
+use super::legend::{self, LegendEntry, Swatch};
+use super::spec::Scene;
+use super::style::{self, INK, LineKind, Marker};
+use super::sweep_layers;
+use super::{DataFile, axis_label, scene_subtitle};
+use crate::error::{Error, Result};
+use crate::grid::{AxisScale, GridAxis, GridParam};
+use crate::model::SceneParams;
+
+pub use super::sweep_layers::SweepLayer;
+
+/// A quantity plotted in one panel of a sweep.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SweepPanel {
+    /// x_jam in mm.
+    XJamMm,
+    /// theta_jam in deg.
+    ThetaJamDeg,
+}
+
+impl SweepPanel {
+    fn label(self) -> &'static str {
+        match self {
+            SweepPanel::XJamMm => "disc position at the jam x_jam (mm)",
+            SweepPanel::ThetaJamDeg => "palm angle at the jam θ_jam (deg)",
+        }
+    }
+
+    fn value(self, p: &SeriesPoint) -> Option<f64> {
+        match self {
+            SweepPanel::XJamMm => p.x_jam_mm,
+            SweepPanel::ThetaJamDeg => p.theta_jam_deg,
+        }
+    }
+}
+
+/// `[chart]` keys of `kind = "sweep"`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepSpec {
+    /// The swept parameter, its range, sample count (curves) and scale.
+    pub axis: GridAxis,
+    /// The panels, top to bottom (default: x_jam_mm then theta_jam_deg).
+    #[serde(default = "both_panels")]
+    pub panels: Vec<SweepPanel>,
+    /// The layers to draw (default: statics).
+    #[serde(default = "statics_only")]
+    pub layers: Vec<SweepLayer>,
+}
+
+fn both_panels() -> Vec<SweepPanel> {
+    vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg]
+}
+
+fn statics_only() -> Vec<SweepLayer> {
+    vec![SweepLayer::Statics]
+}
+
+impl SweepSpec {
+    /// Checks the axis, panels and layers against the scene.
+    pub fn validate(&self, base: &SceneParams) -> Result<()> {
+        self.axis.validate("chart.axis")?;
+        if self.axis.param == GridParam::ThetaDeg {
+            return Err(Error::invalid(
+                "chart.axis.param",
+                "theta_deg",
+                "a sweep varies a scene parameter",
+            ));
+        }
+        for v in [self.axis.min, self.axis.max] {
+            self.axis.param.apply(*base, v).validate()?;
+        }
+        if self.panels.is_empty() || self.panels.len() > 3 {
+            return Err(Error::invalid(
+                "chart.panels",
+                self.panels.len(),
+                "a sweep has 1 to 3 panels",
+            ));
+        }
+        for l in &self.layers {
+            sweep_layers::validate(*l, self)?;
+        }
+        Ok(())
+    }
+}
+
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SeriesStyle {
+    /// A curve through the points.
+    Line(LineKind),
+    /// A marker at each point.
+    Points(Marker),
+}
+
+/// One point of a series: the swept value and the quantities (None where not given).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SeriesPoint {
+    /// The swept parameter's value.
+    pub at: f64,
+    /// x_jam in mm.
+    pub x_jam_mm: Option<f64>,
+    /// theta_jam in deg.
+    pub theta_jam_deg: Option<f64>,
+}
+
+/// A curve or point set of one layer.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// The layer's name in the data file, e.g. `statics`.
+    pub layer: &'static str,
+    /// Legend text.
+    pub label: String,
+    /// Line or marker.
+    pub style: SeriesStyle,
+    /// The points, in order of the swept value.
+    pub points: Vec<SeriesPoint>,
+    /// Names of a curve's value in the x_jam and theta_jam panels, written with the value at
+    /// the curve's right end where the curve is flat in that panel (thresholds, constants).
+    pub flat_names: Option<[&'static str; 2]>,
+    /// A note drawn beside the first point of a point set (e.g. what is wrong with it).
+    pub callout: Option<String>,
+}
+
+/// The computed sweep.
+#[derive(Debug, Clone)]
+pub struct Sweep {
+    spec: SweepSpec,
+    params: SceneParams,
+    title: String,
+    series: Vec<Series>,
+}
+
+impl Sweep {
+    /// Computes the series of every layer.
+    pub fn compute(scene: &Scene, spec: &SweepSpec) -> Result<Self> {
+        let mut series = Vec::new();
+        for l in &spec.layers {
+            series.extend(sweep_layers::series(*l, spec, &scene.params));
+        }
+        Ok(Sweep {
+            spec: spec.clone(),
+            params: scene.params,
+            title: scene.title.clone(),
+            series,
+        })
+    }
+
+    /// The data behind the chart: one CSV row per point of every series.
+    pub fn data(&self, _scene: &Scene) -> DataFile {
+        let opt = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
+        let mut s = format!(
+            "layer,{},x_jam_mm,theta_jam_deg\n",
+            self.spec.axis.param.as_str()
+        );
+        for ser in &self.series {
+            for p in &ser.points {
+                s.push_str(&format!(
+                    "{},{},{},{}\n",
+                    ser.layer,
+                    p.at,
+                    opt(p.x_jam_mm),
+                    opt(p.theta_jam_deg)
+                ));
+            }
+        }
+        DataFile::csv(s)
+    }
+
+    fn legend(&self) -> Vec<LegendEntry> {
+        self.series
+            .iter()
+            .map(|s| {
+                let sw = match s.style {
+                    SeriesStyle::Line(k) => Swatch::Line(k),
+                    SeriesStyle::Points(m) => Swatch::Marker(m),
+                };
+                LegendEntry::new(sw, s.label.clone())
+            })
+            .collect()
+    }
+
+    fn panel_axis(&self, panel: SweepPanel) -> PlotAxis {
+        let vals: Vec<f64> = self
+            .series
+            .iter()
+            .flat_map(|s| s.points.iter().filter_map(|p| panel.value(p)))
+            .collect();
+        let lo = vals.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = vals.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let (lo, hi) = if lo.is_finite() && hi.is_finite() {
+            (lo, hi)
+        } else {
+            (0.0, 1.0)
+        };
+        // 8 % headroom, and at least +-1 unit so that a constant quantity still gets an axis.
+        let pad = (0.08 * (hi - lo)).max(1.0);
+        PlotAxis::new(lo - pad, hi + pad, AxisScale::Linear, panel.label())
+    }
+
+    /// Draws the panels on `root`.
+    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+        let (w, h) = root.dim_in_pixel();
+        let (w, h) = (w as i32, h as i32);
+        let entries = self.legend();
+        let legend_top = h - 12 - legend::rows_needed(root, &entries, w - 120)? * legend::ROW_PX;
+        let a = &self.spec.axis;
+        let x = PlotAxis::new(a.min, a.max, a.scale, axis_label(a.param));
+        let (top, gap, n) = (72, 78, self.spec.panels.len() as i32);
+        let panel_h = (legend_top - 70 - top - gap * (n - 1)) / n;
+        for (i, panel) in self.spec.panels.iter().enumerate() {
+            let y = self.panel_axis(*panel);
+            let t = top + i as i32 * (panel_h + gap);
+            let m = Margins {
+                top: t as u32,
+                bottom: (h - t - panel_h) as u32,
+                left: 95,
+                right: 40,
+            };
+            let chart = axes::build_chart(root, &x, &y, m)?;
+            axes::draw_grid(&chart, &x, &y)?;
+            let area = chart.plotting_area();
+            for s in &self.series {
+                let pts: Vec<(f64, f64)> = s
+                    .points
+                    .iter()
+                    .filter_map(|p| panel.value(p).map(|v| (x.to_plot(p.at), y.to_plot(v))))
+                    .collect();
+                match s.style {
+                    SeriesStyle::Line(k) => style::draw_line(area, &pts, k, INK)?,
+                    SeriesStyle::Points(mk) => {
+                        for p in pts {
+                            style::draw_marker(area, mk, p)?;
+                        }
+                    }
+                }
+                self.annotate(root, &chart, (&x, &y), *panel, s)?;
+            }
+            axes::draw_frame(root, &chart, &x, &y)?;
+        }
+        axes::draw_title(root, &self.title)?;
+        let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
+        root.draw(&Text::new(
+            scene_subtitle(&self.params, &[a.param]),
+            (w / 2, 40),
+            sub,
+        ))?;
+        legend::draw_legend(root, &entries, 60, legend_top, w - 120)
+    }
+}
+
+impl Sweep {
+    /// The flat-curve label and the callout of series `s` in `panel`.
+    fn annotate<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &axes::Chart<DB>,
+        (x, y): (&PlotAxis, &PlotAxis),
+        panel: SweepPanel,
+        s: &Series,
+    ) -> DrawResult<DB> {
+        let vals: Vec<(f64, f64)> = s
+            .points
+            .iter()
+            .filter_map(|p| panel.value(p).map(|v| (p.at, v)))
+            .collect();
+        if let (Some(names), Some(&(a0, v0)), Some(&(a1, v1))) =
+            (s.flat_names, vals.first(), vals.last())
+        {
+            // Flat to 1e-9 relative: the curve is a constant, worth its number.
+            if a0 != a1 && (v1 - v0).abs() <= 1e-9 * v0.abs() {
+                let (name, unit) = match panel {
+                    SweepPanel::XJamMm => (names[0], " mm"),
+                    SweepPanel::ThetaJamDeg => (names[1], "°"),
+                };
+                let px = axes::pixel(chart, x, y, a1, v1);
+                let text = format!("{name} = {}{unit}", style::fmt_num(v1, 2));
+                // On the side of the line where fewer other points lie, so the box hides none.
+                let (mut above, mut below) = (0, 0);
+                for other in self.series.iter().filter(|o| !std::ptr::eq(*o, s)) {
+                    for v in other.points.iter().filter_map(|p| panel.value(p)) {
+                        if v > v1 { above += 1 } else { below += 1 }
+                    }
+                }
+                let (dy, vpos) = if above > below {
+                    (6, VPos::Top)
+                } else {
+                    (-6, VPos::Bottom)
+                };
+                let pos = Pos::new(HPos::Right, vpos);
+                axes::boxed_text(root, &text, (px.0 - 10, px.1 + dy), pos, style::NOTE_PX)?;
+            }
+        }
+        if let (Some(note), Some(&(a, v))) = (&s.callout, vals.first()) {
+            let px = axes::pixel(chart, x, y, a, v);
+            axes::boxed_text(
+                root,
+                note,
+                (px.0 + 14, px.1 - 4),
+                Pos::new(HPos::Left, VPos::Bottom),
+                style::TICK_PX,
+            )?;
+        }
+        Ok(())
+    }
+}

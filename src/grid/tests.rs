@@ -1,0 +1,171 @@
+use proptest::prelude::*;
+
+use super::*;
+use crate::statics;
+
+fn mu_theta(nx: usize, ny: usize) -> GridRequest {
+    GridRequest {
+        base: SceneParams::default(),
+        x: GridAxis::linear(GridParam::Mu, 0.1, 0.5, nx),
+        y: GridAxis::log(GridParam::ThetaDeg, 10.0, 70.0, ny),
+        quantities: vec![Quantity::MarginN],
+    }
+}
+
+fn in_pool<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a rayon pool")
+        .install(f)
+}
+
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+fn opt_bits(v: &[Option<f64>]) -> Vec<Option<u64>> {
+    v.iter().map(|x| x.map(f64::to_bits)).collect()
+}
+
+/// The grid's results must not depend on how rayon splits the work.
+#[test]
+fn bit_identical_for_any_thread_count() {
+    let margin_req = mu_theta(257, 131);
+    let rf_req = GridRequest {
+        base: SceneParams::default(),
+        x: GridAxis::log(GridParam::ForceN, 50.0, 10_000.0, 97),
+        y: GridAxis::linear(GridParam::RadiusMm, 10.0, 30.0, 61),
+        quantities: vec![Quantity::Status, Quantity::ThetaJamDeg, Quantity::XJamMm],
+    };
+    let run = |threads| {
+        in_pool(threads, || {
+            (
+                evaluate(&margin_req, &Statics).unwrap(),
+                evaluate(&rf_req, &Statics).unwrap(),
+            )
+        })
+    };
+    let (m1, r1) = run(1);
+    for threads in [2, 3, 7] {
+        let (m, r) = run(threads);
+        assert_eq!(
+            bits(m1.margin_n.as_ref().unwrap()),
+            bits(m.margin_n.as_ref().unwrap()),
+            "margin differs between 1 and {threads} threads"
+        );
+        assert_eq!(r1.status, r.status, "status, 1 vs {threads} threads");
+        assert_eq!(
+            opt_bits(r1.x_jam_mm.as_ref().unwrap()),
+            opt_bits(r.x_jam_mm.as_ref().unwrap())
+        );
+        assert_eq!(
+            opt_bits(r1.theta_jam_deg.as_ref().unwrap()),
+            opt_bits(r.theta_jam_deg.as_ref().unwrap())
+        );
+    }
+}
+
+#[test]
+fn only_requested_quantities_and_index_order() {
+    let req = GridRequest {
+        quantities: vec![Quantity::XJamMm],
+        x: GridAxis::linear(GridParam::Mu, 0.2, 0.4, 3),
+        y: GridAxis::linear(GridParam::RadiusMm, 10.0, 20.0, 2),
+        base: SceneParams::default(),
+    };
+    let g = evaluate(&req, &Statics).unwrap();
+    assert!(g.margin_n.is_none() && g.status.is_none() && g.theta_jam_deg.is_none());
+    let x = g.x_jam_mm.as_ref().unwrap();
+    assert_eq!(x.len(), 6);
+    // Cell (ix = 1, iy = 1) is mu = 0.3, r = 20 mm.
+    let want = statics::solve(&SceneParams {
+        radius_mm: 20.0,
+        ..SceneParams::default().with_mu(0.3)
+    })
+    .x_jam_mm
+    .unwrap();
+    let got = x[g.index(1, 1)].unwrap();
+    assert!((got - want).abs() <= 1e-12 * want, "{got} vs {want}");
+}
+
+#[test]
+fn margin_without_theta_axis_is_refused() {
+    let req = GridRequest {
+        y: GridAxis::linear(GridParam::ForceN, 50.0, 100.0, 2),
+        ..mu_theta(2, 2)
+    };
+    let msg = evaluate(&req, &Statics).unwrap_err().to_string();
+    assert!(msg.contains("theta_deg"), "{msg}");
+    let req = GridRequest {
+        x: GridAxis::linear(GridParam::Mu, -0.1, 0.5, 2),
+        ..mu_theta(2, 2)
+    };
+    let msg = evaluate(&req, &Statics).unwrap_err().to_string();
+    assert!(msg.contains("mu_ground = -0.1"), "{msg}");
+}
+
+/// The hoisted kernel against `statics::margin_n`: |diff| <= 1e-12 (|F| + m g), worst case reported.
+#[test]
+fn hoisted_margin_matches_statics() {
+    let req = mu_theta(101, 89);
+    let g = evaluate(&req, &Statics).unwrap();
+    let m = g.margin_n.as_ref().unwrap();
+    let mut worst = (0.0_f64, 0.0, 0.0);
+    for (iy, &t) in g.y_values.iter().enumerate() {
+        for (ix, &mu) in g.x_values.iter().enumerate() {
+            let p = req.base.with_mu(mu);
+            let d = (m[g.index(ix, iy)] - statics::margin_n(&p, t.to_radians())).abs();
+            if d > worst.0 {
+                worst = (d, mu, t);
+            }
+        }
+    }
+    let tol = 1e-12 * (req.base.force_n + req.base.weight_n());
+    assert!(
+        worst.0 <= tol,
+        "worst |diff| {} N at mu {}, theta {} deg",
+        worst.0,
+        worst.1,
+        worst.2
+    );
+}
+
+proptest! {
+    /// The margin changes sign at the closed-form theta_jam: >= 0 just below, <= 0 just above.
+    #[test]
+    fn margin_changes_sign_at_theta_jam(mu in 0.05f64..1.0, force in 20.0f64..5000.0) {
+        let p = SceneParams { force_n: force, ..SceneParams::default().with_mu(mu) };
+        let s = statics::solve(&p);
+        prop_assume!(s.status == JamStatus::Jams);
+        let tj = s.theta_jam_deg.unwrap();
+        let k = MarginCoeffs::new(&p);
+        let at = |deg: f64| { let (sn, c) = deg.to_radians().sin_cos(); k.at(c, sn) };
+        // 1e-6 deg either side: far beyond rounding, far below any chart's resolution.
+        prop_assert!(at(tj - 1e-6) > 0.0, "below: {}", at(tj - 1e-6));
+        prop_assert!(at(tj + 1e-6) < 0.0, "above: {}", at(tj + 1e-6));
+    }
+}
+
+proptest! {
+    /// Any valid grid gives finite numbers in every requested cell (no NaN/inf reaches a chart).
+    #[test]
+    fn every_cell_is_finite(
+        mu_lo in 0.0f64..1.0, mu_span in 0.01f64..2.0,
+        t_lo in 0.0f64..170.0, t_span in 0.1f64..10.0,
+        mass in 0.0f64..50.0, force in 0.5f64..1e5,
+    ) {
+        let base = SceneParams { mass_kg: mass, force_n: force, ..SceneParams::default() };
+        let req = GridRequest {
+            base,
+            x: GridAxis::linear(GridParam::Mu, mu_lo, mu_lo + mu_span, 7),
+            y: GridAxis::linear(GridParam::ThetaDeg, t_lo, t_lo + t_span, 5),
+            quantities: vec![Quantity::MarginN, Quantity::Status, Quantity::ThetaJamDeg, Quantity::XJamMm, Quantity::XRigidMm],
+        };
+        let g = evaluate(&req, &Statics).unwrap();
+        prop_assert!(g.margin_n.unwrap().iter().all(|v| v.is_finite()));
+        for v in [g.theta_jam_deg.unwrap(), g.x_jam_mm.unwrap(), g.x_rigid_mm.unwrap()] {
+            prop_assert!(v.iter().flatten().all(|v| v.is_finite()));
+        }
+    }
+}

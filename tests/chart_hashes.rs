@@ -1,0 +1,102 @@
+//! The image-hash regression: every scene's SVG and PNG must have the SHA-256 recorded in
+//! `charts/SHA256SUMS` (sha256sum format, so `cd out && sha256sum -c ../charts/SHA256SUMS`
+//! checks a render by hand), and the same bytes whatever the rayon thread count.
+//!
+//! When a chart changes on purpose, look at the new PNGs, then re-bless the manifest:
+//!
+//! ```text
+//! JAMCHART_BLESS=1 cargo test --release --test chart_hashes
+//! ```
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use jamchart::charts::{self, Formats, Rendered};
+use sha2::{Digest, Sha256};
+
+fn charts_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("charts")
+}
+
+fn render_all(threads: usize) -> Vec<Rendered> {
+    let dir = charts_dir();
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a rayon pool");
+    pool.install(|| {
+        charts::scene_names(&dir)
+            .expect("charts/ lists")
+            .iter()
+            .map(|n| {
+                let scene = charts::load_scene(&dir, n).expect("scene loads");
+                charts::render(&scene, Formats::Both).expect("scene renders")
+            })
+            .collect()
+    })
+}
+
+fn hex(bytes: &[u8]) -> String {
+    Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
+}
+
+/// file name -> hash of every rendered picture.
+fn hashes(rendered: &[Rendered]) -> BTreeMap<String, String> {
+    let mut out = BTreeMap::new();
+    for r in rendered {
+        let svg = r.svg.as_deref().expect("svg requested");
+        let png = r.png.as_deref().expect("png requested");
+        out.insert(format!("{}.svg", r.name), hex(svg));
+        out.insert(format!("{}.png", r.name), hex(png));
+    }
+    out
+}
+
+fn read_manifest(path: &Path) -> BTreeMap<String, String> {
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    text.lines()
+        .filter_map(|l| l.split_once("  "))
+        .map(|(h, f)| (f.trim().to_string(), h.trim().to_string()))
+        .collect()
+}
+
+#[test]
+fn chart_bytes_match_the_manifest_for_any_thread_count() {
+    let one = render_all(1);
+    let two = render_all(2);
+    for (a, b) in one.iter().zip(&two) {
+        assert!(
+            a == b,
+            "scene {}: bytes differ between 1 and 2 rayon threads",
+            a.name
+        );
+    }
+    let now = hashes(&one);
+    let manifest = charts_dir().join("SHA256SUMS");
+    if std::env::var_os("JAMCHART_BLESS").is_some() {
+        let text: String = now.iter().map(|(f, h)| format!("{h}  {f}\n")).collect();
+        std::fs::write(&manifest, text).expect("manifest writes");
+        return;
+    }
+    let recorded = read_manifest(&manifest);
+    let mut problems = Vec::new();
+    for (file, h) in &now {
+        match recorded.get(file) {
+            Some(r) if r == h => {}
+            Some(r) => problems.push(format!("{file}: manifest {r}, now {h}")),
+            None => problems.push(format!("{file}: not in the manifest, now {h}")),
+        }
+    }
+    for file in recorded.keys().filter(|f| !now.contains_key(*f)) {
+        problems.push(format!("{file}: in the manifest but no scene renders it"));
+    }
+    assert!(
+        problems.is_empty(),
+        "chart bytes changed:\n  {}\nlook at the PNGs (jamchart render), then re-bless with \
+         JAMCHART_BLESS=1 cargo test --release --test chart_hashes",
+        problems.join("\n  ")
+    );
+}

@@ -1,0 +1,135 @@
+//! `jamchart render` run as a process in a temporary directory.
+
+use std::path::Path;
+use std::process::Command;
+
+fn jamchart(args: &[&str], cwd: &Path) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_jamchart"))
+        .args(args)
+        .current_dir(cwd)
+        .env_remove("RAYON_NUM_THREADS")
+        .output()
+        .expect("the binary runs")
+}
+
+fn scenes_dir() -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("charts")
+        .display()
+        .to_string()
+}
+
+#[test]
+fn render_one_scene_writes_picture_and_data_and_nothing_else() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = jamchart(
+        &[
+            "render",
+            "fig7b",
+            "--out",
+            "o",
+            "--scenes-dir",
+            &scenes_dir(),
+        ],
+        dir.path(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let mut files: Vec<String> = std::fs::read_dir(dir.path().join("o"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().to_string())
+        .collect();
+    files.sort();
+    // No temporary file is left behind, and no other scene is rendered.
+    assert_eq!(files, ["fig7b.csv", "fig7b.png", "fig7b.svg"]);
+    let csv = std::fs::read_to_string(dir.path().join("o/fig7b.csv")).unwrap();
+    assert!(
+        csv.starts_with("layer,force_n,x_jam_mm,theta_jam_deg\n"),
+        "{csv:.80}"
+    );
+    let png = std::fs::read(dir.path().join("o/fig7b.png")).unwrap();
+    assert_eq!(&png[1..4], b"PNG");
+    // Not a terminal: no progress bar on stderr.
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn svg_format_writes_no_png() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = [
+        "render",
+        "fig3",
+        "--format",
+        "svg",
+        "--out",
+        "o",
+        "--scenes-dir",
+        &scenes_dir(),
+    ];
+    let out = jamchart(&args, dir.path());
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(dir.path().join("o/fig3.svg").exists() && dir.path().join("o/fig3.json").exists());
+    assert!(!dir.path().join("o/fig3.png").exists());
+}
+
+#[test]
+fn unknown_scene_exits_2_and_lists_the_known_ones() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = jamchart(
+        &[
+            "render",
+            "fig9",
+            "--out",
+            "o",
+            "--scenes-dir",
+            &scenes_dir(),
+        ],
+        dir.path(),
+    );
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.starts_with("jamchart: ") && err.contains("fig9"),
+        "{err}"
+    );
+    assert!(err.contains("fig3, fig6, fig7a, fig7b, fig7c"), "{err}");
+    assert!(
+        !dir.path().join("o").exists(),
+        "nothing is written for a bad request"
+    );
+}
+
+#[test]
+fn bad_scene_file_names_file_line_and_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let charts = dir.path().join("charts");
+    std::fs::create_dir(&charts).unwrap();
+    std::fs::write(
+        charts.join("bad.toml"),
+        "title = \"t\"\nbase = \"none.toml\"\n[chart]\nkind = \"sweep\"\naxis = { param = \"mu\", min = 0.1, max = 0.5, count = 5 }\n",
+    )
+    .unwrap();
+    let out = jamchart(&["render", "--scenes-dir", "charts"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("none.toml"), "{err}");
+    std::fs::write(
+        charts.join("bad.toml"),
+        "title = \"t\"\nbase = \"none.toml\"\n[chart]\nkind = \"sweep\"\naxs = 1\n",
+    )
+    .unwrap();
+    let out = jamchart(&["render", "--scenes-dir", "charts"], dir.path());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("bad.toml:") && err.contains("axs"), "{err}");
+}
