@@ -50,6 +50,7 @@
 
 pub mod cli;
 pub mod config;
+pub mod dynamics;
 pub mod error;
 pub mod model;
 pub mod paper;
