@@ -8,7 +8,7 @@
 //! delta     = r + h + r cos theta - x sin theta         penetration (mm)
 //! s_B       = x cos theta + r sin theta                 contact distance from the hinge (mm)
 //! delta_dot = -(v sin theta + s_B theta_dot)            (mm/s)
-//! u_B       = v cos theta - theta_dot (h - delta)       slip of the disc on the palm along t (mm/s)
+//! u_B       = v cos theta - theta_dot h                 slip of the disc on the palm's face along t (mm/s)
 //! N         = IMPACT(delta, delta_dot)                  palm normal force on the disc (N)
 //! mu_B      = mu_palm(u_B),   mu_A = mu_ground(v)       Adams friction laws (signed)
 //! P_x       = N (sin theta - mu_B cos theta)            palm force on the disc along X (N)
@@ -17,7 +17,11 @@
 //! ```
 //!
 //! With delta = 0 these are the paper's Eq. 2 (x = r cot(theta/2) for h = 0) and, at constant
-//! speed with the palm sliding, the corrected Eq. 1. The drive sets theta_dot:
+//! speed with the palm sliding, the corrected Eq. 1. The slip u_B is measured at the palm's face
+//! (the foot of the perpendicular from the disc centre), where the palm's material moves along t
+//! at theta_dot h; measured at the disc's surface, a millimetre-deep penetration after the jam
+//! would drag the palm's material past the disc at omega delta and keep the palm contact from
+//! sticking. The drive sets theta_dot:
 //!
 //! * motion: theta_dot = -omega;
 //! * force: theta_dot = -omega (1 - STEP(N_el, (1 - b) N_max, 0, N_max, 1)) with the elastic push
@@ -28,6 +32,7 @@
 //!   part of the force only (the damping part would make theta_dot depend on itself).
 
 use super::contact::{FrictionLaw, ImpactLaw, step};
+use super::integrators::OdeSystem;
 use super::params::{Drive, DynamicsParams};
 use crate::model::SceneParams;
 
@@ -118,10 +123,17 @@ impl Scene {
     }
 
     /// The speed (mm/s) at which the disc must move to stay in touch with the palm turning at
-    /// omega: d/dt of [`Scene::touching_x`], r omega / (2 sin^2(theta/2)) for h = 0.
+    /// omega: -omega d/dtheta of [`Scene::touching_x`] = omega (r + (r + h) cos theta) / sin^2 theta,
+    /// which is r omega / (2 sin^2(theta/2)) for h = 0.
     pub fn geometric_speed(&self, theta: f64) -> f64 {
         let (s, c) = theta.sin_cos();
-        self.omega * (self.radius + self.offset * c) / (s * s)
+        self.omega * (self.radius + (self.radius + self.offset) * c) / (s * s)
+    }
+
+    /// Contact distance s_B from the hinge along the palm, in mm, for state `y`.
+    pub fn contact_distance(&self, y: &[f64]) -> f64 {
+        let (s, c) = y[0].sin_cos();
+        y[1] * c + self.radius * s
     }
 
     /// Forces at state `y`, and, if `jac` is given, the Jacobian d f / d y (row-major 3x3).
@@ -131,7 +143,7 @@ impl Scene {
         let (r, h) = (self.radius, self.offset);
         let delta = r + h + r * c - x * s;
         let g_delta: Grad = [-(x * c + r * s), -s, 0.0];
-        let s_b = x * c + r * s;
+        let s_b = self.contact_distance(y);
         let g_sb: Grad = [r * c - x * s, c, 0.0];
 
         let (theta_dot, g_td) = match self.drive {
@@ -157,8 +169,8 @@ impl Scene {
         let n = imp.normal;
         let g_n = axpy(imp.d_delta, &g_delta, &scale(imp.d_rate, &g_rate));
 
-        let u_b = v * c - theta_dot * (h - delta);
-        let mut g_ub = axpy(-(h - delta), &g_td, &scale(theta_dot, &g_delta));
+        let u_b = v * c - theta_dot * h;
+        let mut g_ub = scale(-h, &g_td);
         g_ub[0] -= v * s;
         g_ub[2] += c;
         let (mu_b, dmu_b) = self.palm_friction.coefficient(u_b);
@@ -210,6 +222,18 @@ impl Scene {
     }
 }
 
+impl OdeSystem for Scene {
+    fn dim(&self) -> usize {
+        3
+    }
+    fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+        Scene::rhs(self, y, dy);
+    }
+    fn jacobian(&self, _t: f64, y: &[f64], jac: &mut [f64]) {
+        self.evaluate(y, Some(jac));
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -255,6 +279,28 @@ mod tests {
                 }
             }
             eprintln!("{drive:?}: worst relative Jacobian error {worst:.2e}");
+        }
+    }
+
+    #[test]
+    fn geometric_speed_is_the_rate_of_the_touching_position() {
+        for h in [0.0, 0.5] {
+            let d = DynamicsParams {
+                palm_offset_mm: h,
+                ..Default::default()
+            };
+            let sys = Scene::new(&SceneParams::default(), &d);
+            for deg in [30.0_f64, 45.0, 80.0] {
+                let th = deg.to_radians();
+                let e = 1e-6;
+                let fd = -sys.omega * (sys.touching_x(th + e) - sys.touching_x(th - e)) / (2.0 * e);
+                let v = sys.geometric_speed(th);
+                assert!((v - fd).abs() < 1e-6 * v, "h = {h}, {deg} deg: {v} vs {fd}");
+                if h == 0.0 {
+                    let paper = sys.radius * sys.omega / (2.0 * (0.5 * th).sin().powi(2));
+                    assert!((v - paper).abs() < 1e-12 * v);
+                }
+            }
         }
     }
 
