@@ -10,8 +10,9 @@
 //!
 //! after the disc has once reached `arm_speed_ratio` (0.9) of it (so the start from rest does not
 //! count). A candidate is confirmed when, for a window of 0.25 deg of palm turn (or 1.5 times the
-//! longest flight of a bounce, 2 v_geo / (mu_g g), if longer), the disc has not recovered to the
-//! arming ratio; a disc that recovers was only slowed (it bounced off a stiff, lightly damped
+//! longest flight of a bounce, 2 v_geo / (mu_g g), if longer) during which the palm touches the
+//! disc throughout, the disc has not recovered to the arming ratio (a disc standing free ahead
+//! of the palm is waiting for it, not jammed); a disc that recovers was only slowed (it bounced off a stiff, lightly damped
 //! contact and stopped by friction before the palm caught up, or a transient was poorly
 //! resolved), and the search goes on. The simulation stops at the confirmation, or
 //! `after_jam_s` after the jam.
@@ -99,6 +100,10 @@ pub struct JamDetector<'a> {
     pub discarded: u32,
     /// Largest elastic palm push (N) since the candidate jam.
     pub push_after_jam: f64,
+    /// Palm angle (rad) and elastic push (N) when the jam was confirmed.
+    pub at_confirmation: Option<(f64, f64)>,
+    /// Since when (s) the palm has touched the disc without a break, seen at step ends.
+    touching_since: Option<f64>,
     pub series: Vec<SeriesRow>,
     next_sample: f64,
     y: Vec<f64>,
@@ -116,6 +121,8 @@ impl<'a> JamDetector<'a> {
             beyond_reach: None,
             discarded: 0,
             push_after_jam: 0.0,
+            at_confirmation: None,
+            touching_since: None,
             series: Vec::new(),
             next_sample: t0,
             y: vec![0.0; 3],
@@ -216,6 +223,9 @@ impl Observer for JamDetector<'_> {
         };
         let sys = self.sys;
         let rule = self.rule;
+        if self.jam.is_none() {
+            self.touching_since = None;
+        }
         let jam_ratio = rule.jam_ratio;
         // The contact passes the palm's end before any jam: the disc is lost.
         if self.jam.is_none() && sys.contact_distance(&y) > rule.palm_length {
@@ -255,8 +265,17 @@ impl Observer for JamDetector<'_> {
             let t = first_root(step, a, t1, |y| y[2] - rule.v_stiction);
             self.stiction = Some(instant(t));
         }
-        if !self.confirmed && t1 >= jam.t + self.confirm_time(jam.theta) {
+        let penetration = sys.evaluate(&y, None).penetration;
+        if penetration <= 0.0 {
+            self.touching_since = None;
+        } else if self.touching_since.is_none() {
+            self.touching_since = Some(t1);
+        }
+        let since = self.touching_since.map(|t| t.max(jam.t));
+        if !self.confirmed && since.is_some_and(|t| t1 >= t + self.confirm_time(jam.theta)) {
             self.confirmed = true;
+            let (el, _) = sys.impact.elastic(penetration);
+            self.at_confirmation = Some((y[0], el));
         }
         if self.confirmed && t1 >= jam.t + rule.after_jam {
             Control::Stop(t1)
