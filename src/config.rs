@@ -7,6 +7,7 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
+use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
 use crate::model::SceneParams;
 
@@ -16,12 +17,15 @@ use crate::model::SceneParams;
 pub struct Config {
     /// The scene: frictions, disc, push, palm (section `[scene]`).
     pub scene: SceneParams,
+    /// The dynamic simulation: drive, contact, friction, integrator (section `[dynamics]`).
+    pub dynamics: DynamicsParams,
 }
 
 impl Config {
     /// Checks every section; runs before any computation.
     pub fn validate(&self) -> Result<()> {
-        self.scene.validate()
+        self.scene.validate()?;
+        self.dynamics.validate()
     }
 
     /// Reads and parses a TOML file (it is not validated here: flags may still override it).

@@ -1,7 +1,10 @@
 //! The command line: flags (clap derive) merged over a TOML file, validated, then one function
 //! per subcommand. Nothing here computes physics.
 
+mod accuracy;
 mod args;
+mod dynamics_args;
+mod series;
 mod solve;
 mod table;
 
@@ -40,6 +43,12 @@ pub enum Command {
     /// mu = 0.45 ... 0.15, with the relative difference to the printed values and the known
     /// erratum of the mu = 0.30 row marked.
     Table(table::TableArgs),
+    /// Error against run time of the dynamics' integrators (work-precision study).
+    ///
+    /// For each integrator and tolerance: the error of x_jam against a reference computed by the
+    /// other integrator at a tight tolerance, the median wall time of --runs runs, steps,
+    /// right-hand-side and Jacobian evaluations; failures are listed with their reason.
+    Accuracy(accuracy::AccuracyArgs),
 }
 
 /// Runs the command line and returns the process exit code: 0 success, 2 bad input or failure.
@@ -51,6 +60,7 @@ pub fn main() -> i32 {
     let result = match &cli.command {
         Command::Solve(a) => solve::run(a),
         Command::Table(a) => table::run(a),
+        Command::Accuracy(a) => accuracy::run(a),
     };
     match result {
         Ok(text) => {

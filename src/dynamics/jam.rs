@@ -148,7 +148,9 @@ impl<'a> JamDetector<'a> {
     }
 
     fn record(&mut self, step: &dyn DenseStep, upto: f64) {
-        let Some(dt) = self.rule.series_dt else { return };
+        let Some(dt) = self.rule.series_dt else {
+            return;
+        };
         while self.next_sample <= upto {
             step.eval(self.next_sample, &mut self.y);
             let f = self.sys.evaluate(&self.y, None);

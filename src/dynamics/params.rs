@@ -90,6 +90,12 @@ pub struct DynamicsParams {
     /// Absolute tolerance per step in the state's units (rad, mm, mm/s), in (0, 1) (default: the
     /// value of rtol).
     pub atol: Option<f64>,
+    /// Run a second time at a tenth of rtol and atol to estimate the error of x_jam (default:
+    /// true).
+    pub verify: bool,
+    /// Largest estimated relative error of x_jam before the answer is called inaccurate, in
+    /// (0, 1) (default: 1e-3, 25 um at the default jam).
+    pub max_jam_error: f64,
     /// Jam when the disc's speed falls below this fraction of the geometric speed
     /// r omega / (2 sin^2(theta/2)), in (0, arm_ratio) (default: 0.5).
     pub jam_speed_ratio: f64,
@@ -121,6 +127,8 @@ impl Default for DynamicsParams {
             method: Method::Radau5,
             rtol: 1e-6,
             atol: None,
+            verify: true,
+            max_jam_error: 1e-3,
             // Half the geometric speed: the collapse is steep, so the reading barely depends on it.
             jam_speed_ratio: 0.5,
             arm_speed_ratio: 0.9,
@@ -190,6 +198,7 @@ impl DynamicsParams {
         if let Some(atol) = self.atol {
             open_unit("atol", atol)?;
         }
+        open_unit("max_jam_error", self.max_jam_error)?;
         open_unit("arm_speed_ratio", self.arm_speed_ratio).or_else(|e| {
             if self.arm_speed_ratio == 1.0 {
                 Ok(())
