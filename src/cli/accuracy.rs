@@ -14,6 +14,7 @@ use crate::error::{Error, Result};
 
 /// Flags of `accuracy`.
 #[derive(Debug, Clone, Args)]
+#[command(allow_negative_numbers = true)]
 pub struct AccuracyArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
