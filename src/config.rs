@@ -79,3 +79,17 @@ mod tests {
         assert_eq!(c.scene.radius_mm, SceneParams::default().radius_mm);
     }
 }
+
+#[cfg(test)]
+mod paper_toml {
+    use super::*;
+
+    /// config/paper.toml promises to equal the defaults; this keeps the promise.
+    #[test]
+    fn paper_toml_equals_the_defaults() {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("config/paper.toml");
+        let c = Config::load(&path).unwrap();
+        assert_eq!(c, Config::default());
+        c.validate().unwrap();
+    }
+}

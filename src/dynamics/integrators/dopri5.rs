@@ -104,7 +104,8 @@ impl Dopri5 {
                 return (Outcome::Failed { t, reason }, st);
             }
             h = h.min(t_end - t);
-            if !(h > 1e-14 * t.abs().max(1.0)) {
+            // Also true for a NaN step.
+            if h.is_nan() || h <= 1e-14 * t.abs().max(1.0) {
                 let reason = format!("step size {h:.3e} too small");
                 return (Outcome::Failed { t, reason }, st);
             }

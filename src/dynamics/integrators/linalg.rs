@@ -26,7 +26,7 @@ impl Lu {
                     best = v;
                 }
             }
-            if !(best > 0.0) || !best.is_finite() {
+            if best.is_nan() || best <= 0.0 || !best.is_finite() {
                 return false;
             }
             if p != k {

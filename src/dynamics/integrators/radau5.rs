@@ -167,7 +167,8 @@ impl Radau5 {
                 return fail(t, format!("step limit of {} reached", tol.max_steps), st);
             }
             h = h.min(t_end - t);
-            if !(h > 1e-14 * t.abs().max(1.0)) {
+            // Also true for a NaN step.
+            if h.is_nan() || h <= 1e-14 * t.abs().max(1.0) {
                 return fail(t, format!("step size {h:.3e} too small"), st);
             }
             if need_jac {
@@ -213,9 +214,7 @@ impl Radau5 {
             } else {
                 z.fill(0.0);
             }
-            for i in 0..n {
-                scal_y[i] = y0[i];
-            }
+            scal_y.copy_from_slice(y0);
             // Simplified Newton iteration.
             let mut converged = false;
             let mut newt = 0usize;
