@@ -14,7 +14,6 @@ use crate::error::{Error, Result};
 
 /// Flags of `accuracy`.
 #[derive(Debug, Clone, Args)]
-#[command(allow_negative_numbers = true)]
 pub struct AccuracyArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
@@ -74,7 +73,7 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
     let csv = csv(&study);
     let json = serde_json::to_string_pretty(&study).expect("plain structs serialise") + "\n";
     if let Some(dir) = &a.out_dir {
-        std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+        std::fs::create_dir_all(dir).map_err(|e| Error::io("create", dir, e))?;
         write_atomic(&dir.join("accuracy.md"), &md)?;
         write_atomic(&dir.join("accuracy.csv"), &csv)?;
         write_atomic(&dir.join("accuracy.json"), &json)?;

@@ -13,53 +13,123 @@ pub struct DynamicsArgs {
     /// motion: prescribed omega, pushes as hard as needed (the paper's Adams model; jams near
     /// r/mu). force: turns at omega until its push reaches --force, then stalls (jams near the
     /// closed form at that force).
-    #[arg(long, value_name = "DRIVE", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "DRIVE",
+        help_heading = "Dynamics"
+    )]
     pub drive: Option<Drive>,
     /// Palm closing speed omega in deg/s [default: 30].
-    #[arg(long, value_name = "DEG/S", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "DEG/S",
+        help_heading = "Dynamics"
+    )]
     pub omega: Option<f64>,
     /// IMPACT contact stiffness k in N/mm^e [default: 1e5].
     ///
     /// The penetration at a force P is (P/k)^(1/e): about 60 um at 200 N with the defaults.
-    #[arg(long, value_name = "N/MM^E", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "N/MM^E",
+        help_heading = "Dynamics"
+    )]
     pub stiffness: Option<f64>,
     /// IMPACT force exponent e, >= 1 [default: 2.2].
-    #[arg(long, value_name = "E", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "E",
+        help_heading = "Dynamics"
+    )]
     pub exponent: Option<f64>,
     /// IMPACT maximum damping c_max in N s/mm [default: 10].
-    #[arg(long, value_name = "N*S/MM", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "N*S/MM",
+        help_heading = "Dynamics"
+    )]
     pub damping: Option<f64>,
     /// Penetration in mm at which the damping reaches c_max [default: 0.01].
-    #[arg(long, value_name = "MM", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "MM",
+        help_heading = "Dynamics"
+    )]
     pub damping_depth: Option<f64>,
     /// Static friction coefficient at both contacts [default: the dynamic mu].
-    #[arg(long, value_name = "MU", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "MU",
+        help_heading = "Dynamics"
+    )]
     pub mu_static: Option<f64>,
     /// Stiction transition velocity V_s in mm/s [default: 0.1].
-    #[arg(long, value_name = "MM/S", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "MM/S",
+        help_heading = "Dynamics"
+    )]
     pub stiction_velocity: Option<f64>,
     /// Friction transition velocity V_d in mm/s, > V_s [default: 0.2].
-    #[arg(long, value_name = "MM/S", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "MM/S",
+        help_heading = "Dynamics"
+    )]
     pub friction_velocity: Option<f64>,
     /// Offset of the palm's face from the hinge line in mm (half the bar's thickness) [default: 0].
-    #[arg(long, value_name = "MM", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "MM",
+        help_heading = "Dynamics"
+    )]
     pub palm_offset: Option<f64>,
     /// Integrator: radau5 (implicit) or dopri5 (explicit) [default: radau5].
-    #[arg(long, value_name = "METHOD", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "METHOD",
+        help_heading = "Dynamics"
+    )]
     pub method: Option<Method>,
     /// Relative tolerance per step, in (0, 1) [default: 1e-6].
     ///
     /// Looser than 1e-2 is always reported inaccurate.
-    #[arg(long, value_name = "RTOL", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "RTOL",
+        help_heading = "Dynamics"
+    )]
     pub rtol: Option<f64>,
     /// Absolute tolerance per step in rad, mm, mm/s, in (0, 1) [default: rtol].
-    #[arg(long, value_name = "ATOL", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "ATOL",
+        help_heading = "Dynamics"
+    )]
     pub atol: Option<f64>,
     /// Skip the second run at a tenth of the tolerances that estimates the error of x_jam.
     #[arg(long, help_heading = "Dynamics")]
     pub no_verify: bool,
     /// Simulated time after the jam in s, for --series [default: 0].
-    #[arg(long, value_name = "S", help_heading = "Dynamics")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "S",
+        help_heading = "Dynamics"
+    )]
     pub after_jam: Option<f64>,
 }
 

@@ -19,10 +19,10 @@ pub fn write_atomic(path: &Path, text: &str) -> Result<()> {
         name.unwrap_or_else(|| "out".into()),
         std::process::id()
     ));
-    std::fs::write(&tmp, text).map_err(|e| Error::io(&tmp, e))?;
+    std::fs::write(&tmp, text).map_err(|e| Error::io("write", &tmp, e))?;
     std::fs::rename(&tmp, path).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
-        Error::io(path, e)
+        Error::io("rename a temporary file to", path, e)
     })
 }
 

@@ -23,7 +23,6 @@ const SERIES_DT_S: f64 = 2e-4;
 
 /// Flags of `solve`.
 #[derive(Debug, Clone, Args)]
-#[command(allow_negative_numbers = true)]
 pub struct SolveArgs {
     #[command(flatten)]
     pub scene: SceneArgs,

@@ -55,8 +55,10 @@ impl OdeSystem for VanDerPol {
 /// period T, a classic non-stiff test for explicit methods.
 struct Arenstorf;
 const MU: f64 = 0.012277471;
-const ARENSTORF_T: f64 = 17.065_216_560_157_962_558_891_720_624_9;
-const ARENSTORF_Y0: [f64; 4] = [0.994, 0.0, 0.0, -2.001_585_106_379_082_522_405_378_622_24];
+// Published as T = 17.0652165601579625588917206249 and y2'(0) = -2.00158510637908252240537862224,
+// rounded here to f64.
+const ARENSTORF_T: f64 = 17.065_216_560_157_96;
+const ARENSTORF_Y0: [f64; 4] = [0.994, 0.0, 0.0, -2.001_585_106_379_082_4];
 impl OdeSystem for Arenstorf {
     fn dim(&self) -> usize {
         4
