@@ -38,7 +38,18 @@
 //! * for the force drive, a disc that stops while the drive's push stays below its limit is
 //!   `inaccurate`.
 //!
-//! RADAU5 also tightens the tolerance it is given (rtol' = 0.1 rtol^(2/3)), as Hairer's code does. A method
+//! * with `verify` (the default) the simulation runs a second time at a tenth of rtol and atol;
+//!   the difference of the two x_jam is reported as the error estimate `x_jam_error_mm`, and an
+//!   estimate above `max_jam_error` (relative, default 1e-3) or a different status makes the
+//!   answer `inaccurate`;
+//! * rtol looser than 1e-2 is always `inaccurate`: at 0.05-0.5 both methods returned jams 40-500 %
+//!   off that passed the other checks.
+//!
+//! Over 240 runs (mu 0.15-0.6, contacts of 59, 10 and 1 um at 200 N, both drives, m 0.2-5 kg,
+//! omega 10-90 deg/s, rtol 1e-3 and 1e-4) the worst answer that still said `jams` was 0.45 % off a
+//! reference at rtol 1e-9: the estimate from one tenth of the tolerance can understate the error
+//! a few times over at loose tolerances. RADAU5 also tightens the tolerance it is given
+//! (rtol' = 0.1 rtol^(2/3)), as Hairer's code does. A method
 //! that gives up reports `integrator_failed` with the time and the reason.
 
 pub mod accuracy;
