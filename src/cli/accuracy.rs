@@ -110,19 +110,21 @@ fn markdown(study: &Study, runs: usize) -> String {
     }
     let _ = writeln!(
         s,
-        "\nEach row is compared with the other method's reference; times are medians of {runs} runs.\n\n\
-         | method | rtol | status | x_jam [mm] | error [mm] | rel. error | time [ms] | steps | rejected | rhs evals | Jacobian evals |\n\
-         |---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+        "\nEach row is compared with the other method's reference where that one jams (column \
+         'reference'); times are medians of {runs} runs.\n\n\
+         | method | rtol | status | x_jam [mm] | reference | error [mm] | rel. error | time [ms] | steps | rejected | rhs evals | Jacobian evals |\n\
+         |---|---:|---|---:|---|---:|---:|---:|---:|---:|---:|---:|"
     );
     let mut failures = Vec::new();
     for r in &study.rows {
         let _ = writeln!(
             s,
-            "| {} | {:.0e} | {} | {} | {} | {} | {:.3} | {} | {} | {} | {} |",
+            "| {} | {:.0e} | {} | {} | {} | {} | {} | {:.3} | {} | {} | {} | {} |",
             r.method.as_str(),
             r.rtol,
             r.status,
             r.x_jam_mm.map_or("-".into(), |x| format!("{x:.6}")),
+            r.reference.map_or("-", |m| m.as_str()),
             opt(r.error_mm, 2),
             opt(r.rel_error, 2),
             r.median_time_s * 1e3,

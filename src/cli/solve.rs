@@ -211,7 +211,11 @@ fn render_text(config: &Config, results: &[ModelRecord]) -> String {
                 above.unwrap_or(f64::NAN)
             );
         }
-        let _ = writeln!(s, "  took {:.1} us", r.elapsed_s * 1e6);
+        if r.elapsed_s < 1e-3 {
+            let _ = writeln!(s, "  took {:.1} us", r.elapsed_s * 1e6);
+        } else {
+            let _ = writeln!(s, "  took {:.1} ms", r.elapsed_s * 1e3);
+        }
     }
     s
 }
