@@ -125,6 +125,8 @@ fn solve_one(
             if let Some(path) = series {
                 details.insert("series".into(), json!(path.display().to_string()));
             }
+            // The [dynamics] settings in force, so that the answer can be reproduced.
+            details.insert("settings".into(), json!(config.dynamics));
             Ok(ModelRecord {
                 model: "dynamics",
                 status: s.status,
