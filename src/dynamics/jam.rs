@@ -11,22 +11,22 @@
 //! after the disc has once reached `arm_speed_ratio` (0.9) of it (so the start from rest does not
 //! count). A candidate is confirmed when, for a window of 0.25 deg of palm turn (or 1.5 times the
 //! longest flight of a bounce, 2 v_geo / (mu_g g), if longer) during which the palm touches the
-//! disc throughout, the disc has not recovered to the arming ratio (a disc standing free ahead
-//! of the palm is waiting for it, not jammed); a disc that recovers was only slowed (it bounced off a stiff, lightly damped
-//! contact and stopped by friction before the palm caught up, or a transient was poorly
-//! resolved), and the search goes on. The simulation stops at the confirmation, or
-//! `after_jam_s` after the jam.
+//! disc throughout, the disc has not recovered to the arming ratio. A disc standing free ahead of
+//! the palm is waiting for it, not jammed; a disc that recovers was only slowed (it bounced off
+//! a stiff, lightly damped contact and friction stopped it before the palm caught up, or a
+//! transient was poorly resolved), and the search goes on. The simulation stops at the
+//! confirmation, or `after_jam_s` after the jam if that is later.
 //!
-//! A second reading is reported beside it when the run lasts long enough (`after_jam_s`): the
-//! first instant after the jam at which the ground slip falls below the stiction transition
-//! velocity V_s, i.e. the ground contact enters Adams' stiction band. Both readings measure the same collapse; the stiction reading comes
-//! later (the disc must slow from about v_geo, ~19 mm/s at the default jam, to V_s = 0.1 mm/s)
-//! and lies a little further out, by the distance the disc creeps while it stops (micrometres
-//! for a stiff contact; at the defaults the disc creeps at 0.12-0.13 mm/s, just above V_s, for
-//! about 60 ms after the collapse and the stiction reading lies 0.03 mm further out). We pick the speed ratio because it needs no creep threshold: Adams'
-//! friction has no true stiction, so a held disc creeps at a speed set by V_s and the load,
-//! and the stiction reading drifts with V_s; the ratio is dimensionless and scale-free, and its
-//! value barely matters because the collapse is steep.
+//! A second reading is reported beside it when the run lasts long enough: the first instant
+//! after the jam at which the ground slip falls below the stiction transition velocity V_s, i.e.
+//! the ground contact enters Adams' stiction band. Both readings measure the same collapse. The
+//! stiction reading comes later (the disc must slow from about v_geo, ~19 mm/s at the default jam,
+//! to V_s = 0.1 mm/s) and lies further out by the distance the disc creeps meanwhile: at the
+//! defaults the disc creeps at 0.12-0.13 mm/s, just above V_s, for about 60 ms after the collapse
+//! and the stiction reading lies 0.03 mm further out (so it needs `after_jam_s` >= 0.07). We pick
+//! the speed ratio because it needs no creep threshold: Adams' friction has no true stiction, so
+//! a held disc creeps at a speed set by V_s and the load, and the stiction reading drifts with
+//! V_s; the ratio is dimensionless, and its value barely matters because the collapse is steep.
 //!
 //! Both drives use the commanded omega in v_geo: a force drive stalls at its limit, so the
 //! collapse of v / v_geo measures the stall and the disc's stop together.
