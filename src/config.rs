@@ -7,6 +7,7 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
+use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
 use crate::model::SceneParams;
 
@@ -16,12 +17,15 @@ use crate::model::SceneParams;
 pub struct Config {
     /// The scene: frictions, disc, push, palm (section `[scene]`).
     pub scene: SceneParams,
+    /// The dynamic simulation: drive, contact, friction, integrator (section `[dynamics]`).
+    pub dynamics: DynamicsParams,
 }
 
 impl Config {
     /// Checks every section; runs before any computation.
     pub fn validate(&self) -> Result<()> {
-        self.scene.validate()
+        self.scene.validate()?;
+        self.dynamics.validate()
     }
 
     /// Reads and parses a TOML file (it is not validated here: flags may still override it).
@@ -73,5 +77,19 @@ mod tests {
         let c: Config = parse_toml("[scene]\nforce_n = 50.0\n", Path::new("p.toml")).unwrap();
         assert_eq!(c.scene.force_n, 50.0);
         assert_eq!(c.scene.radius_mm, SceneParams::default().radius_mm);
+    }
+}
+
+#[cfg(test)]
+mod paper_toml {
+    use super::*;
+
+    /// config/paper.toml promises to equal the defaults; this keeps the promise.
+    #[test]
+    fn paper_toml_equals_the_defaults() {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("config/paper.toml");
+        let c = Config::load(&path).unwrap();
+        assert_eq!(c, Config::default());
+        c.validate().unwrap();
     }
 }

@@ -40,8 +40,10 @@
 //!    x_jam -> r / mu for equal frictions: the self-locking wedge tan(theta/2) <= mu.
 //! 2. Minimum norm (Section 3.2): the contact forces of least norm that satisfy equilibrium and the
 //!    friction cones, solved as a convex program; the disc is held exactly where they exist.
-//! 3. Dynamics (Section 4): a simulation of the paper's Adams model with compliant contact and
-//!    regularised friction, integrated by stiff solvers.
+//! 3. [`dynamics`] (Section 4): a simulation of the paper's Adams model with an IMPACT contact and
+//!    Adams' regularised friction, integrated by RADAU5 or DOPRI5 with the jam read off the
+//!    disc's speed; a palm driven by motion jams near r/mu, a force-limited palm near the closed
+//!    form at its force.
 //!
 //! The closed form is the oracle: the other two models are tested against it where physics says
 //! they must agree.
@@ -57,6 +59,7 @@
 pub mod charts;
 pub mod cli;
 pub mod config;
+pub mod dynamics;
 pub mod error;
 pub mod grid;
 pub mod model;

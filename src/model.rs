@@ -166,6 +166,11 @@ pub enum JamStatus {
     BeyondReach,
     /// The disc slides, then jams at theta_jam.
     Jams,
+    /// A simulation's answer failed its cross-check against the quasi-static limit or its error
+    /// estimate (too loose a tolerance); its numbers are reported but must not be trusted.
+    Inaccurate,
+    /// A simulation's integrator gave up before the jam (the time and reason are reported).
+    IntegratorFailed,
 }
 
 impl JamStatus {
@@ -176,6 +181,8 @@ impl JamStatus {
             JamStatus::JammedAtStart => "jammed_at_start",
             JamStatus::BeyondReach => "beyond_reach",
             JamStatus::Jams => "jams",
+            JamStatus::Inaccurate => "inaccurate",
+            JamStatus::IntegratorFailed => "integrator_failed",
         }
     }
 }

@@ -54,6 +54,11 @@ pub struct SceneArgs {
 impl SceneArgs {
     /// Defaults, then the file, then the flags; validated before anything is computed.
     pub fn resolve(&self) -> Result<Config> {
+        self.resolve_with(|_| {})
+    }
+
+    /// As [`SceneArgs::resolve`], with more overrides (`more`) applied before validation.
+    pub fn resolve_with(&self, more: impl FnOnce(&mut Config)) -> Result<Config> {
         let mut config = match &self.config {
             Some(path) => Config::load(path)?,
             None => Config::default(),
@@ -78,6 +83,7 @@ impl SceneArgs {
                 *field = v;
             }
         }
+        more(&mut config);
         config.validate()?;
         Ok(config)
     }
@@ -94,7 +100,7 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
         "gravity_m_s2" => "--gravity",
         "start_angle_deg" => "--start-angle",
         "palm_length_mm" => "--palm-length",
-        _ => return None,
+        key => return super::dynamics_args::flag_for_key(key),
     })
 }
 

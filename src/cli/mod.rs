@@ -1,8 +1,11 @@
 //! The command line: flags (clap derive) merged over a TOML file, validated, then one function
 //! per subcommand. Nothing here computes physics.
 
+mod accuracy;
 mod args;
+mod dynamics_args;
 pub mod render;
+mod series;
 mod solve;
 mod table;
 
@@ -48,6 +51,12 @@ pub enum Command {
     /// atomically (temporary file, then rename). The pictures are byte-identical for any thread
     /// count: the font is embedded and the PNG carries no metadata.
     Render(render::RenderArgs),
+    /// Error against run time of the dynamics' integrators (work-precision study).
+    ///
+    /// For each integrator and tolerance: the error of x_jam against a reference computed by the
+    /// other integrator at a tight tolerance, the median wall time of --runs runs, steps,
+    /// right-hand-side and Jacobian evaluations; failures are listed with their reason.
+    Accuracy(accuracy::AccuracyArgs),
 }
 
 /// Runs the command line and returns the process exit code: 0 success, 2 bad input or failure.
@@ -60,6 +69,7 @@ pub fn main() -> i32 {
         Command::Solve(a) => solve::run(a),
         Command::Table(a) => table::run(a),
         Command::Render(a) => render::run(a),
+        Command::Accuracy(a) => accuracy::run(a),
     };
     match result {
         Ok(text) => {

@@ -88,7 +88,8 @@ pub fn write_rendered(out: &Path, r: &Rendered) -> Result<Vec<PathBuf>> {
 
 pub fn run(a: &RenderArgs) -> Result<String> {
     let scenes = load_scenes(&a.scenes_dir, &a.scenes)?;
-    std::fs::create_dir_all(&a.out).map_err(|e| Error::io("create the output directory", &a.out, e))?;
+    std::fs::create_dir_all(&a.out)
+        .map_err(|e| Error::io("create the output directory", &a.out, e))?;
     // A bar only for a person watching: not in CI logs, not into pipes.
     let show = std::io::stderr().is_terminal() && std::env::var_os("CI").is_none();
     let bar = if show {

@@ -3,21 +3,36 @@
 use std::fmt::Write;
 use std::time::Instant;
 
+use std::path::PathBuf;
+
 use clap::Args;
 use serde::Serialize;
 use serde_json::{Map, Value, json};
 
 use super::args::{ModelChoice, OutputFormat, SceneArgs};
+use super::dynamics_args::DynamicsArgs;
+use super::series::{series_csv, write_atomic};
 use crate::config::Config;
+use crate::dynamics;
 use crate::error::{Error, Result};
 use crate::model::JamStatus;
 use crate::statics;
+
+/// Sampling interval of `--series` in s: 0.2 ms resolves the collapse at the jam (a few ms).
+const SERIES_DT_S: f64 = 2e-4;
 
 /// Flags of `solve`.
 #[derive(Debug, Clone, Args)]
 pub struct SolveArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
+    #[command(flatten)]
+    pub dynamics: DynamicsArgs,
+    /// Write the dynamics time series to this CSV file (t, theta, x, x_dot, forces, penetration).
+    ///
+    /// Sampled every 0.2 ms: the data of the paper's Fig. 5. Use --after-jam to see the disc stop.
+    #[arg(long, value_name = "FILE.csv", help_heading = "Dynamics")]
+    pub series: Option<PathBuf>,
     /// Model to use.
     #[arg(long, value_enum, default_value_t = ModelChoice::Statics)]
     pub model: ModelChoice,
@@ -39,22 +54,26 @@ pub struct ModelRecord {
 }
 
 pub fn run(a: &SolveArgs) -> Result<String> {
-    let config = a.scene.resolve()?;
+    let config = a.scene.resolve_with(|c| a.dynamics.apply(c))?;
     let models: &[ModelChoice] = match a.model {
-        ModelChoice::All => &[ModelChoice::Statics],
+        // Every model built on this branch.
+        ModelChoice::All => &[ModelChoice::Statics, ModelChoice::Dynamics],
         ModelChoice::MinNorm => {
             return Err(Error::Unsupported(
                 "the min-norm model is not built yet; use --model statics".into(),
             ));
         }
-        ModelChoice::Dynamics => {
-            return Err(Error::Unsupported(
-                "the dynamics model is not built yet; use --model statics".into(),
-            ));
-        }
         ref m => std::slice::from_ref(m),
     };
-    let results: Vec<ModelRecord> = models.iter().map(|m| solve_one(*m, &config)).collect();
+    if a.series.is_some() && !models.contains(&ModelChoice::Dynamics) {
+        return Err(Error::Unsupported(
+            "--series needs the dynamics: add --model dynamics".into(),
+        ));
+    }
+    let mut results = Vec::new();
+    for m in models {
+        results.push(solve_one(*m, &config, a.series.as_deref())?);
+    }
     Ok(match a.format {
         OutputFormat::Json => {
             let doc = json!({ "inputs": config.scene, "results": results });
@@ -64,7 +83,11 @@ pub fn run(a: &SolveArgs) -> Result<String> {
     })
 }
 
-fn solve_one(model: ModelChoice, config: &Config) -> ModelRecord {
+fn solve_one(
+    model: ModelChoice,
+    config: &Config,
+    series: Option<&std::path::Path>,
+) -> Result<ModelRecord> {
     match model {
         ModelChoice::Statics => {
             let t0 = Instant::now();
@@ -75,16 +98,47 @@ fn solve_one(model: ModelChoice, config: &Config) -> ModelRecord {
             details.insert("x_rigid_mm".into(), json!(s.x_rigid_mm));
             details.insert("lift_off_above_deg".into(), json!(s.lift_off_above_deg));
             details.insert("lifts_off".into(), json!(s.lifts_off));
-            ModelRecord {
+            Ok(ModelRecord {
                 model: "statics",
                 status: s.status,
                 theta_jam_deg: s.theta_jam_deg,
                 x_jam_mm: s.x_jam_mm,
                 elapsed_s,
                 details,
-            }
+            })
         }
-        other => unreachable!("model {other:?} is refused before solving"),
+        ModelChoice::Dynamics => {
+            let t0 = Instant::now();
+            let dt = series.map(|_| SERIES_DT_S);
+            let s = dynamics::simulate(&config.scene, &config.dynamics, dt)?;
+            let elapsed_s = t0.elapsed().as_secs_f64();
+            if let Some(path) = series {
+                write_atomic(path, &series_csv(&s.series))?;
+            }
+            let mut details = match serde_json::to_value(&s) {
+                Ok(Value::Object(m)) => m,
+                _ => Map::new(),
+            };
+            for k in ["status", "theta_jam_deg", "x_jam_mm"] {
+                details.shift_remove(k);
+            }
+            if let Some(path) = series {
+                details.insert("series".into(), json!(path.display().to_string()));
+            }
+            // The [dynamics] settings in force, so that the answer can be reproduced.
+            details.insert("settings".into(), json!(config.dynamics));
+            Ok(ModelRecord {
+                model: "dynamics",
+                status: s.status,
+                theta_jam_deg: s.theta_jam_deg,
+                x_jam_mm: s.x_jam_mm,
+                elapsed_s,
+                details,
+            })
+        }
+        other => Err(Error::Unsupported(format!(
+            "model {other:?} is not built yet"
+        ))),
     }
 }
 
@@ -140,6 +194,7 @@ fn render_text(config: &Config, results: &[ModelRecord]) -> String {
             _ => {}
         }
         let d = &r.details;
+        render_dynamics(&mut s, r);
         if let (Some(t), Some(x)) = (
             d.get("theta_rigid_deg").and_then(Value::as_f64),
             d.get("x_rigid_mm").and_then(Value::as_f64),
@@ -158,7 +213,62 @@ fn render_text(config: &Config, results: &[ModelRecord]) -> String {
                 above.unwrap_or(f64::NAN)
             );
         }
-        let _ = writeln!(s, "  took {:.1} us", r.elapsed_s * 1e6);
+        if r.elapsed_s < 1e-3 {
+            let _ = writeln!(s, "  took {:.1} us", r.elapsed_s * 1e6);
+        } else {
+            let _ = writeln!(s, "  took {:.1} ms", r.elapsed_s * 1e3);
+        }
     }
     s
+}
+
+/// The dynamics' own lines: jam time, trust, work.
+fn render_dynamics(s: &mut String, r: &ModelRecord) {
+    if r.model != "dynamics" {
+        return;
+    }
+    let d = &r.details;
+    let num = |k: &str| d.get(k).and_then(Value::as_f64);
+    let text = |k: &str| d.get(k).and_then(Value::as_str).unwrap_or("?").to_string();
+    if r.status == JamStatus::Inaccurate
+        && let (Some(t), Some(x)) = (r.theta_jam_deg, r.x_jam_mm)
+    {
+        let _ = writeln!(s, "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm");
+    }
+    if let Some(t) = num("t_jam_s") {
+        let _ = writeln!(
+            s,
+            "  t_jam     = {t:.4} s     time of the jam from the start of the push"
+        );
+    }
+    if let Some(e) = num("x_jam_error_mm") {
+        let _ = writeln!(
+            s,
+            "  x_jam error estimate {e:.2e} mm (second run at a tenth of the tolerances)"
+        );
+    }
+    if let Some(x) = num("x_stiction_mm") {
+        let _ = writeln!(
+            s,
+            "  ground contact enters stiction (slip < V_s) at x = {x:.3} mm"
+        );
+    }
+    if let Some(c) = d.get("cross_check").and_then(Value::as_str) {
+        let _ = writeln!(s, "  inaccurate: {c}");
+    }
+    if let Some(f) = d.get("failure").filter(|f| !f.is_null()) {
+        let t = f.get("t_s").and_then(Value::as_f64).unwrap_or(f64::NAN);
+        let why = f.get("reason").and_then(Value::as_str).unwrap_or("?");
+        let _ = writeln!(s, "  the integrator gave up at t = {t:.4} s: {why}");
+    }
+    let _ = writeln!(
+        s,
+        "  {} drive, {}: {} steps ({} rejected), {} rhs and {} Jacobian evaluations",
+        text("drive"),
+        text("method"),
+        num("steps").unwrap_or(0.0),
+        num("rejected_steps").unwrap_or(0.0),
+        num("rhs_evals").unwrap_or(0.0),
+        num("jacobian_evals").unwrap_or(0.0)
+    );
 }

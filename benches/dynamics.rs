@@ -1,0 +1,120 @@
+//! Speed of a full simulation to the jam at 1e-4 relative error in x_jam (issue 4's goal:
+//! < 5 ms at the defaults, < 50 ms with a contact that penetrates 1 um at 200 N), on one core.
+//!
+//! For each method the loosest tolerance of a ladder whose x_jam is within 1e-4 of a reference
+//! (and stays so at the two next tighter rungs) is timed: the median of 21 runs, without and
+//! with the verification run that `solve` does by default. Run: `cargo bench --bench dynamics`.
+
+use std::time::Instant;
+
+use jamchart::JamStatus;
+use jamchart::dynamics::{DynamicsParams, Method, simulate};
+use jamchart::model::SceneParams;
+
+const TARGET: f64 = 1e-4;
+const RUNS: usize = 21;
+const LADDER: [f64; 9] = [1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8];
+
+fn x_jam(scene: &SceneParams, p: &DynamicsParams) -> Option<f64> {
+    let s = simulate(scene, p, None).ok()?;
+    (s.status == JamStatus::Jams)
+        .then_some(s.x_jam_mm)
+        .flatten()
+}
+
+fn median_ms(scene: &SceneParams, p: &DynamicsParams) -> f64 {
+    let mut t: Vec<f64> = (0..RUNS)
+        .map(|_| {
+            let t0 = Instant::now();
+            std::hint::black_box(simulate(scene, p, None).ok());
+            t0.elapsed().as_secs_f64() * 1e3
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[RUNS / 2]
+}
+
+fn main() {
+    let scene = SceneParams::default();
+    let scenarios = [
+        ("defaults (k = 1e5 N/mm^2.2, ~59 um at 200 N)", 1e5),
+        (
+            "stiff (1 um at 200 N, k = 7.96e8 N/mm^2.2)",
+            200.0 / 1e-3_f64.powf(2.2),
+        ),
+    ];
+    println!(
+        "| scenario | method | rtol | x_jam [mm] | reference | rel. error | median [ms] | with verify [ms] |"
+    );
+    println!("|---|---|---:|---:|---|---:|---:|---:|");
+    for (name, k) in scenarios {
+        let base = DynamicsParams {
+            stiffness_n_per_mm_e: k,
+            verify: false,
+            ..Default::default()
+        };
+        let reference = |m: Method| {
+            x_jam(
+                &scene,
+                &DynamicsParams {
+                    method: m,
+                    rtol: 1e-10,
+                    ..base
+                },
+            )
+        };
+        let (rr, rd) = (reference(Method::Radau5), reference(Method::Dopri5));
+        for method in [Method::Radau5, Method::Dopri5] {
+            // The other method's reference where it exists (DOPRI5 gives up on the stiff contact).
+            let other = if method == Method::Radau5 {
+                rd.map(|x| (Method::Dopri5, x))
+                    .or(rr.map(|x| (Method::Radau5, x)))
+            } else {
+                rr.map(|x| (Method::Radau5, x))
+            };
+            let Some((ref_method, xr)) = other else {
+                println!("| {name} | {} | - | no reference | | | |", method.as_str());
+                continue;
+            };
+            let errs: Vec<Option<f64>> = LADDER
+                .iter()
+                .map(|&rtol| {
+                    x_jam(
+                        &scene,
+                        &DynamicsParams {
+                            method,
+                            rtol,
+                            ..base
+                        },
+                    )
+                    .map(|x| (x - xr).abs() / xr)
+                })
+                .collect();
+            let ok = |i: usize| errs.get(i).copied().flatten().is_some_and(|e| e <= TARGET);
+            let Some(i) =
+                (0..LADDER.len()).find(|&i| ok(i) && (i + 1..(i + 3).min(LADDER.len())).all(ok))
+            else {
+                println!(
+                    "| {name} | {} | none reaches {TARGET:e} | | | | |",
+                    method.as_str()
+                );
+                continue;
+            };
+            let p = DynamicsParams {
+                method,
+                rtol: LADDER[i],
+                ..base
+            };
+            let t = median_ms(&scene, &p);
+            let tv = median_ms(&scene, &DynamicsParams { verify: true, ..p });
+            let x = x_jam(&scene, &p).unwrap_or(f64::NAN);
+            println!(
+                "| {name} | {} | {:e} | {x:.6} | {} at 1e-10 | {:.1e} | {t:.3} | {tv:.3} |",
+                method.as_str(),
+                LADDER[i],
+                ref_method.as_str(),
+                errs[i].unwrap_or(f64::NAN)
+            );
+        }
+    }
+}

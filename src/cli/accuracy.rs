@@ -1,0 +1,184 @@
+//! `jamchart accuracy`: the work-precision report of the dynamics' integrators.
+
+use std::fmt::Write as _;
+use std::io::IsTerminal;
+use std::path::PathBuf;
+
+use clap::Args;
+
+use super::args::{SceneArgs, TableFormat};
+use super::dynamics_args::DynamicsArgs;
+use super::series::write_atomic;
+use crate::dynamics::accuracy::{Study, StudySettings, run_study};
+use crate::error::{Error, Result};
+
+/// Flags of `accuracy`.
+#[derive(Debug, Clone, Args)]
+pub struct AccuracyArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    #[command(flatten)]
+    pub dynamics: DynamicsArgs,
+    /// Relative tolerances to try, comma-separated [default: 1e-2,1e-3,...,1e-9].
+    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    pub tolerances: Option<Vec<f64>>,
+    /// Timed runs per point; the median is reported [default: 5].
+    #[arg(long, value_name = "N", default_value_t = 5)]
+    pub runs: usize,
+    /// Tolerance of the reference solutions [default: 1e-11].
+    #[arg(long, value_name = "RTOL", default_value_t = 1e-11)]
+    pub reference_rtol: f64,
+    /// Output format on stdout.
+    #[arg(long, value_enum, default_value_t = TableFormat::Text)]
+    pub format: TableFormat,
+    /// Also write accuracy.md, accuracy.csv (the log-log chart's data) and accuracy.json here.
+    #[arg(long, value_name = "DIR")]
+    pub out_dir: Option<PathBuf>,
+}
+
+pub fn run(a: &AccuracyArgs) -> Result<String> {
+    let config = a.scene.resolve_with(|c| a.dynamics.apply(c))?;
+    let settings = StudySettings {
+        tolerances: a
+            .tolerances
+            .clone()
+            .unwrap_or_else(|| StudySettings::default().tolerances),
+        runs: a.runs,
+        reference_rtol: a.reference_rtol,
+    };
+    let bar = std::io::stderr().is_terminal().then(|| {
+        let n = 2 * (settings.tolerances.len() + 1);
+        let b = indicatif::ProgressBar::new(n as u64);
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "accuracy {bar:30} {pos}/{len} points, {elapsed}",
+        ) {
+            b.set_style(style);
+        }
+        b
+    });
+    let study = run_study(
+        &config.scene,
+        &config.dynamics,
+        &settings,
+        &mut |done, _| {
+            if let Some(b) = &bar {
+                b.set_position(done as u64);
+            }
+        },
+    )?;
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let md = markdown(&study, a.runs);
+    let csv = csv(&study);
+    let json = serde_json::to_string_pretty(&study).expect("plain structs serialise") + "\n";
+    if let Some(dir) = &a.out_dir {
+        std::fs::create_dir_all(dir).map_err(|e| Error::io("create", dir, e))?;
+        write_atomic(&dir.join("accuracy.md"), &md)?;
+        write_atomic(&dir.join("accuracy.csv"), &csv)?;
+        write_atomic(&dir.join("accuracy.json"), &json)?;
+    }
+    Ok(match a.format {
+        TableFormat::Text => md,
+        TableFormat::Csv => csv,
+        TableFormat::Json => json,
+    })
+}
+
+fn opt(v: Option<f64>, prec: usize) -> String {
+    v.map_or("-".into(), |v| format!("{v:.prec$e}"))
+}
+
+fn markdown(study: &Study, runs: usize) -> String {
+    let mut s = String::from("Work-precision of the dynamics' integrators (error of x_jam)\n\n");
+    for r in &study.references {
+        let _ = writeln!(
+            s,
+            "- reference {} at rtol {:e}: {} x_jam = {} mm ({} steps){}",
+            r.method.as_str(),
+            r.rtol,
+            r.status,
+            r.x_jam_mm.map_or("-".into(), |x| format!("{x:.9}")),
+            r.steps,
+            r.reason
+                .as_ref()
+                .map_or(String::new(), |why| format!(": {why}"))
+        );
+    }
+    if let Some(d) = study.references_rel_diff {
+        let _ = writeln!(s, "- the two references differ by {d:.2e} (relative)");
+    }
+    let _ = writeln!(
+        s,
+        "\nEach row is compared with the other method's reference where that one jams (column \
+         'reference'); times are medians of {runs} runs.\n\n\
+         | method | rtol | status | x_jam [mm] | reference | error [mm] | rel. error | time [ms] | steps | rejected | rhs evals | Jacobian evals |\n\
+         |---|---:|---|---:|---|---:|---:|---:|---:|---:|---:|---:|"
+    );
+    let mut failures = Vec::new();
+    for r in &study.rows {
+        let _ = writeln!(
+            s,
+            "| {} | {:.0e} | {} | {} | {} | {} | {} | {:.3} | {} | {} | {} | {} |",
+            r.method.as_str(),
+            r.rtol,
+            r.status,
+            r.x_jam_mm.map_or("-".into(), |x| format!("{x:.6}")),
+            r.reference.map_or("-", |m| m.as_str()),
+            opt(r.error_mm, 2),
+            opt(r.rel_error, 2),
+            r.median_time_s * 1e3,
+            r.steps,
+            r.rejected_steps,
+            r.rhs_evals,
+            r.jacobian_evals
+        );
+        if let Some(why) = r.reason.as_ref().filter(|_| r.error_mm.is_none()) {
+            failures.push(format!(
+                "- {} at rtol {:e}: {why}",
+                r.method.as_str(),
+                r.rtol
+            ));
+        }
+    }
+    if !failures.is_empty() {
+        s.push_str("\nFailures:\n");
+        for f in failures {
+            s.push_str(&f);
+            s.push('\n');
+        }
+    }
+    s
+}
+
+/// One row per point: the data of the log-log chart (rel_error against median_time_s).
+fn csv(study: &Study) -> String {
+    let mut s = String::from(
+        "method,rtol,status,x_jam_mm,error_mm,rel_error,reference,median_time_s,runs,steps,\
+         rejected_steps,rhs_evals,jacobian_evals,reason\n",
+    );
+    let f = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
+    for r in &study.rows {
+        let _ = writeln!(
+            s,
+            "{},{:e},{},{},{},{},{},{:e},{},{},{},{},{},{}",
+            r.method.as_str(),
+            r.rtol,
+            r.status,
+            r.x_jam_mm.map_or(String::new(), |x| format!("{x:.9}")),
+            f(r.error_mm),
+            f(r.rel_error),
+            r.reference.map_or("", |m| m.as_str()),
+            r.median_time_s,
+            r.runs,
+            r.steps,
+            r.rejected_steps,
+            r.rhs_evals,
+            r.jacobian_evals,
+            r.reason
+                .as_ref()
+                .map_or(String::new(), |w| format!("\"{}\"", w.replace('"', "'")))
+        );
+    }
+    s
+}

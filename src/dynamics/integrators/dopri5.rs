@@ -1,0 +1,195 @@
+//! Dormand-Prince 5(4) with FSAL, a PI step-size controller and 4th-order dense output
+//! (Hairer, Norsett & Wanner, Solving ODEs I, Section II.5; code DOPRI5).
+
+use super::{
+    Control, DenseStep, Observer, OdeSystem, Outcome, Stats, Tolerances, initial_step, scaled_norm,
+};
+
+const C2: f64 = 1.0 / 5.0;
+const C3: f64 = 3.0 / 10.0;
+const C4: f64 = 4.0 / 5.0;
+const C5: f64 = 8.0 / 9.0;
+const A21: f64 = 1.0 / 5.0;
+const A31: f64 = 3.0 / 40.0;
+const A32: f64 = 9.0 / 40.0;
+const A41: f64 = 44.0 / 45.0;
+const A42: f64 = -56.0 / 15.0;
+const A43: f64 = 32.0 / 9.0;
+const A51: f64 = 19372.0 / 6561.0;
+const A52: f64 = -25360.0 / 2187.0;
+const A53: f64 = 64448.0 / 6561.0;
+const A54: f64 = -212.0 / 729.0;
+const A61: f64 = 9017.0 / 3168.0;
+const A62: f64 = -355.0 / 33.0;
+const A63: f64 = 46732.0 / 5247.0;
+const A64: f64 = 49.0 / 176.0;
+const A65: f64 = -5103.0 / 18656.0;
+const A71: f64 = 35.0 / 384.0;
+const A73: f64 = 500.0 / 1113.0;
+const A74: f64 = 125.0 / 192.0;
+const A75: f64 = -2187.0 / 6784.0;
+const A76: f64 = 11.0 / 84.0;
+const E1: f64 = 71.0 / 57600.0;
+const E3: f64 = -71.0 / 16695.0;
+const E4: f64 = 71.0 / 1920.0;
+const E5: f64 = -17253.0 / 339200.0;
+const E6: f64 = 22.0 / 525.0;
+const E7: f64 = -1.0 / 40.0;
+const D1: f64 = -12715105075.0 / 11282082432.0;
+const D3: f64 = 87487479700.0 / 32700410799.0;
+const D4: f64 = -10690763975.0 / 1880347072.0;
+const D5: f64 = 701980252875.0 / 199316789632.0;
+const D6: f64 = -1453857185.0 / 822651844.0;
+const D7: f64 = 69997945.0 / 29380423.0;
+
+/// The explicit Dormand-Prince 5(4) method.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Dopri5;
+
+struct Dense<'a> {
+    t0: f64,
+    h: f64,
+    r: &'a [Vec<f64>; 5],
+}
+
+impl DenseStep for Dense<'_> {
+    fn t_start(&self) -> f64 {
+        self.t0
+    }
+    fn t_end(&self) -> f64 {
+        self.t0 + self.h
+    }
+    fn eval(&self, t: f64, out: &mut [f64]) {
+        let s = (t - self.t0) / self.h;
+        let s1 = 1.0 - s;
+        let r = self.r;
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = r[0][i] + s * (r[1][i] + s1 * (r[2][i] + s * (r[3][i] + s1 * r[4][i])));
+        }
+    }
+}
+
+impl Dopri5 {
+    /// Integrates from (t0, y0) to t_end; `y0` holds the last accepted state on return.
+    pub fn integrate<S: OdeSystem + ?Sized>(
+        &self,
+        sys: &S,
+        t0: f64,
+        y0: &mut [f64],
+        t_end: f64,
+        tol: &Tolerances,
+        obs: &mut dyn Observer,
+    ) -> (Outcome, Stats) {
+        let n = sys.dim();
+        let mut st = Stats::default();
+        let mut k: [Vec<f64>; 7] = std::array::from_fn(|_| vec![0.0; n]);
+        let mut r: [Vec<f64>; 5] = std::array::from_fn(|_| vec![0.0; n]);
+        let mut ys = vec![0.0; n];
+        let mut y1 = vec![0.0; n];
+        let mut err = vec![0.0; n];
+        let mut t = t0;
+        sys.rhs(t, y0, &mut k[0]);
+        st.rhs_evals += 1;
+        let mut h = initial_step(sys, t, y0, &k[0], 5.0, tol, &mut st.rhs_evals);
+        let (safe, beta, fac_min, fac_max) = (0.9, 0.04, 0.2, 10.0);
+        let expo1 = 0.2 - beta * 0.75;
+        let mut facold: f64 = 1e-4;
+        let mut last_rejected = false;
+        loop {
+            if t >= t_end {
+                return (Outcome::Finished, st);
+            }
+            if st.steps + st.rejected >= tol.max_steps {
+                let reason = format!("step limit of {} reached", tol.max_steps);
+                return (Outcome::Failed { t, reason }, st);
+            }
+            h = h.min(t_end - t);
+            // Also true for a NaN step.
+            if h.is_nan() || h <= 1e-14 * t.abs().max(1.0) {
+                let reason = format!("step size {h:.3e} too small");
+                return (Outcome::Failed { t, reason }, st);
+            }
+            let stage = |ys: &mut [f64], k: &[Vec<f64>; 7], coef: &[(usize, f64)]| {
+                for i in 0..n {
+                    ys[i] = y0[i] + h * coef.iter().map(|&(j, a)| a * k[j][i]).sum::<f64>();
+                }
+            };
+            stage(&mut ys, &k, &[(0, A21)]);
+            sys.rhs(t + C2 * h, &ys, &mut k[1]);
+            stage(&mut ys, &k, &[(0, A31), (1, A32)]);
+            sys.rhs(t + C3 * h, &ys, &mut k[2]);
+            stage(&mut ys, &k, &[(0, A41), (1, A42), (2, A43)]);
+            sys.rhs(t + C4 * h, &ys, &mut k[3]);
+            stage(&mut ys, &k, &[(0, A51), (1, A52), (2, A53), (3, A54)]);
+            sys.rhs(t + C5 * h, &ys, &mut k[4]);
+            stage(
+                &mut ys,
+                &k,
+                &[(0, A61), (1, A62), (2, A63), (3, A64), (4, A65)],
+            );
+            sys.rhs(t + h, &ys, &mut k[5]);
+            stage(
+                &mut y1,
+                &k,
+                &[(0, A71), (2, A73), (3, A74), (4, A75), (5, A76)],
+            );
+            let (head, tail) = k.split_at_mut(6);
+            sys.rhs(t + h, &y1, &mut tail[0]);
+            st.rhs_evals += 6;
+            for i in 0..n {
+                err[i] = h
+                    * (E1 * head[0][i]
+                        + E3 * head[2][i]
+                        + E4 * head[3][i]
+                        + E5 * head[4][i]
+                        + E6 * head[5][i]
+                        + E7 * tail[0][i]);
+            }
+            let e = scaled_norm(&err, y0, &y1, tol);
+            if !e.is_finite() {
+                st.rejected += 1;
+                h *= 0.1;
+                last_rejected = true;
+                continue;
+            }
+            let fac11 = e.powf(expo1);
+            if e <= 1.0 {
+                let fac = (fac11 / facold.powf(beta) / safe).clamp(1.0 / fac_max, 1.0 / fac_min);
+                let mut hnew = h / fac;
+                facold = e.max(1e-4);
+                if last_rejected {
+                    hnew = hnew.min(h);
+                }
+                last_rejected = false;
+                for i in 0..n {
+                    let dy = y1[i] - y0[i];
+                    let bspl = h * k[0][i] - dy;
+                    r[0][i] = y0[i];
+                    r[1][i] = dy;
+                    r[2][i] = bspl;
+                    r[3][i] = dy - h * k[6][i] - bspl;
+                    r[4][i] = h
+                        * (D1 * k[0][i]
+                            + D3 * k[2][i]
+                            + D4 * k[3][i]
+                            + D5 * k[4][i]
+                            + D6 * k[5][i]
+                            + D7 * k[6][i]);
+                }
+                st.steps += 1;
+                let control = obs.on_step(&Dense { t0: t, h, r: &r });
+                t += h;
+                y0.copy_from_slice(&y1);
+                k.swap(0, 6);
+                if let Control::Stop(ts) = control {
+                    return (Outcome::Stopped { t: ts }, st);
+                }
+                h = hnew.min(tol.max_step);
+            } else {
+                st.rejected += 1;
+                last_rejected = true;
+                h /= (fac11 / safe).min(1.0 / fac_min);
+            }
+        }
+    }
+}

@@ -1,0 +1,353 @@
+//! Radau IIA of order 5 with simplified Newton iterations, an embedded error estimate and
+//! Gustafsson's predictive step control (Hairer & Wanner, Solving ODEs II, Section IV.8; code
+//! RADAU5).
+//!
+//! The stage increments Z = (z_1, z_2, z_3), z_i = Y_i - y_0, solve
+//! `Z = h (A (x) I) F(Z)`. The simplified Newton iteration uses the Jacobian J at the step start:
+//! `(I - h A (x) J) dZ = -Z + h (A (x) I) F(Z)`, a dense 3n x 3n system (RADAU5 diagonalises A
+//! into one real and one complex n x n system; at n <= 3 the direct LU is as cheap and simpler).
+//! The error estimate is RADAU5's
+//! `err = (I - h g0 J)^-1 [g0 h f(y_0) + g0 (e_1 z_1 + e_2 z_2 + e_3 z_3)]`, refined once with
+//! f(y_0 + err) after a rejection. As in RADAU5 the user's tolerances are mapped to
+//! rtol' = 0.1 rtol^(2/3), atol' = rtol' atol / rtol, because the estimate is of lower order.
+
+use super::linalg::Lu;
+use super::{
+    Control, DenseStep, Observer, OdeSystem, Outcome, Stats, Tolerances, initial_step, scaled_norm,
+};
+
+const SQ6: f64 = 2.449_489_742_783_178;
+
+/// The implicit Radau IIA method of order 5.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Radau5;
+
+struct Coeffs {
+    c: [f64; 3],
+    a: [[f64; 3]; 3],
+    /// RADAU5's dd_i (the error estimate's weights, before the factor g0).
+    dd: [f64; 3],
+    /// 1 / g0, the real eigenvalue of A^-1.
+    u1: f64,
+}
+
+fn coeffs() -> Coeffs {
+    let u1 = {
+        let g0 = (6.0 + 81f64.cbrt() - 9f64.cbrt()) / 30.0;
+        1.0 / g0
+    };
+    Coeffs {
+        c: [(4.0 - SQ6) / 10.0, (4.0 + SQ6) / 10.0, 1.0],
+        a: [
+            [
+                (88.0 - 7.0 * SQ6) / 360.0,
+                (296.0 - 169.0 * SQ6) / 1800.0,
+                (-2.0 + 3.0 * SQ6) / 225.0,
+            ],
+            [
+                (296.0 + 169.0 * SQ6) / 1800.0,
+                (88.0 + 7.0 * SQ6) / 360.0,
+                (-2.0 - 3.0 * SQ6) / 225.0,
+            ],
+            [(16.0 - SQ6) / 36.0, (16.0 + SQ6) / 36.0, 1.0 / 9.0],
+        ],
+        dd: [
+            -(13.0 + 7.0 * SQ6) / 3.0,
+            (-13.0 + 7.0 * SQ6) / 3.0,
+            -1.0 / 3.0,
+        ],
+        u1,
+    }
+}
+
+/// The collocation polynomial of one step: y(t0 + s h) = y0 + P(s), P(0) = 0, P(c_i) = z_i.
+struct Collocation<'a> {
+    t0: f64,
+    h: f64,
+    y0: &'a [f64],
+    /// Newton divided differences on the nodes 0, c1, c2, 1, per component: [d1, d2, d3].
+    dd: &'a [[f64; 3]],
+    c: [f64; 3],
+}
+
+impl Collocation<'_> {
+    fn increment(&self, s: f64, i: usize) -> f64 {
+        let [c1, c2, _] = self.c;
+        let d = self.dd[i];
+        s * (d[0] + (s - c1) * (d[1] + (s - c2) * d[2]))
+    }
+}
+
+impl DenseStep for Collocation<'_> {
+    fn t_start(&self) -> f64 {
+        self.t0
+    }
+    fn t_end(&self) -> f64 {
+        self.t0 + self.h
+    }
+    fn eval(&self, t: f64, out: &mut [f64]) {
+        let s = (t - self.t0) / self.h;
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = self.y0[i] + self.increment(s, i);
+        }
+    }
+}
+
+/// Divided differences of (0, 0), (c1, z1), (c2, z2), (1, z3) for each component.
+fn divided_differences(c: [f64; 3], z: &[f64], n: usize, out: &mut [[f64; 3]]) {
+    let [c1, c2, c3] = c;
+    for i in 0..n {
+        let (z1, z2, z3) = (z[i], z[n + i], z[2 * n + i]);
+        let f01 = z1 / c1;
+        let f12 = (z2 - z1) / (c2 - c1);
+        let f23 = (z3 - z2) / (c3 - c2);
+        let f012 = (f12 - f01) / c2;
+        let f123 = (f23 - f12) / (c3 - c1);
+        out[i] = [f01, f012, (f123 - f012) / c3];
+    }
+}
+
+impl Radau5 {
+    /// Integrates from (t0, y0) to t_end; `y0` holds the last accepted state on return.
+    pub fn integrate<S: OdeSystem + ?Sized>(
+        &self,
+        sys: &S,
+        t0: f64,
+        y0: &mut [f64],
+        t_end: f64,
+        user: &Tolerances,
+        obs: &mut dyn Observer,
+    ) -> (Outcome, Stats) {
+        let n = sys.dim();
+        let m = 3 * n;
+        let cf = coeffs();
+        let rtol = 0.1 * user.rtol.powf(2.0 / 3.0);
+        let tol = Tolerances {
+            rtol,
+            atol: rtol * user.atol / user.rtol,
+            ..*user
+        };
+        let uround = f64::EPSILON;
+        let fnewt = (10.0 * uround / rtol).max(0.03f64.min(rtol.sqrt()));
+        let (safe, nit, fac_grow, fac_shrink): (f64, usize, f64, f64) = (0.9, 7, 8.0, 5.0);
+
+        let mut st = Stats::default();
+        let mut f0 = vec![0.0; n];
+        let mut jac = vec![0.0; n * n];
+        let mut big = vec![0.0; m * m];
+        let mut small = vec![0.0; n * n];
+        let (mut lu_big, mut lu_small, mut work) = (Lu::default(), Lu::default(), Vec::new());
+        let mut z = vec![0.0; m];
+        let mut dz = vec![0.0; m];
+        let mut fz = vec![0.0; m];
+        let mut ys = vec![0.0; n];
+        let mut y1 = vec![0.0; n];
+        let mut cont = vec![0.0; n];
+        let mut f2 = vec![0.0; n];
+        let mut ddiff = vec![[0.0; 3]; n];
+        let mut have_poly = false;
+        let mut scal_y = vec![0.0; n];
+
+        let mut t = t0;
+        sys.rhs(t, y0, &mut f0);
+        st.rhs_evals += 1;
+        let mut h = initial_step(sys, t, y0, &f0, 5.0, &tol, &mut st.rhs_evals);
+        let mut need_jac = true;
+        let mut first = true;
+        let mut last_rejected = false;
+        let mut faccon: f64 = 1.0;
+        let (mut h_acc, mut err_acc) = (h, 1e-2);
+        let fail = |t: f64, reason: String, st: Stats| (Outcome::Failed { t, reason }, st);
+
+        loop {
+            if t >= t_end {
+                return (Outcome::Finished, st);
+            }
+            if st.steps + st.rejected >= tol.max_steps {
+                return fail(t, format!("step limit of {} reached", tol.max_steps), st);
+            }
+            h = h.min(t_end - t);
+            // Also true for a NaN step.
+            if h.is_nan() || h <= 1e-14 * t.abs().max(1.0) {
+                return fail(t, format!("step size {h:.3e} too small"), st);
+            }
+            if need_jac {
+                sys.jacobian(t, y0, &mut jac);
+                st.jacobian_evals += 1;
+                need_jac = false;
+            }
+            // I - h (A (x) J) and u1/h I - J.
+            for bi in 0..3 {
+                for bj in 0..3 {
+                    let ha = h * cf.a[bi][bj];
+                    for i in 0..n {
+                        for j in 0..n {
+                            let id = if bi == bj && i == j { 1.0 } else { 0.0 };
+                            big[(bi * n + i) * m + bj * n + j] = id - ha * jac[i * n + j];
+                        }
+                    }
+                }
+            }
+            for i in 0..n {
+                for j in 0..n {
+                    let id = if i == j { cf.u1 / h } else { 0.0 };
+                    small[i * n + j] = id - jac[i * n + j];
+                }
+            }
+            st.decompositions += 2;
+            if !lu_big.factor(m, &big) || !lu_small.factor(n, &small) {
+                st.rejected += 1;
+                h *= 0.5;
+                last_rejected = true;
+                continue;
+            }
+            // Starting values: the previous collocation polynomial extrapolated, or zero.
+            if have_poly && !first {
+                for i in 0..n {
+                    let d = ddiff[i];
+                    let p = |s: f64| s * (d[0] + (s - cf.c[0]) * (d[1] + (s - cf.c[1]) * d[2]));
+                    let p1 = p(1.0);
+                    for k in 0..3 {
+                        z[k * n + i] = p(1.0 + cf.c[k] * h / h_acc) - p1;
+                    }
+                }
+            } else {
+                z.fill(0.0);
+            }
+            scal_y.copy_from_slice(y0);
+            // Simplified Newton iteration.
+            let mut converged = false;
+            let mut newt = 0usize;
+            let (mut dynold, mut thqold): (f64, f64) = (0.0, 0.0);
+            faccon = faccon.max(uround).powf(0.8);
+            let mut newton_fail: Option<f64> = None;
+            while newt < nit {
+                for k in 0..3 {
+                    for i in 0..n {
+                        ys[i] = y0[i] + z[k * n + i];
+                    }
+                    sys.rhs(t + cf.c[k] * h, &ys, &mut fz[k * n..(k + 1) * n]);
+                }
+                st.rhs_evals += 3;
+                for k in 0..3 {
+                    for i in 0..n {
+                        let s: f64 = (0..3).map(|j| cf.a[k][j] * fz[j * n + i]).sum();
+                        dz[k * n + i] = -z[k * n + i] + h * s;
+                    }
+                }
+                lu_big.solve(&mut dz, &mut work);
+                let dyno = (0..3)
+                    .map(|k| scaled_norm(&dz[k * n..(k + 1) * n], &scal_y, &scal_y, &tol).powi(2))
+                    .sum::<f64>();
+                let dyno = (dyno / 3.0).sqrt();
+                if !dyno.is_finite() {
+                    newton_fail = Some(0.5);
+                    break;
+                }
+                if newt >= 1 {
+                    let thq = dyno / dynold;
+                    let theta = if newt == 1 {
+                        thq
+                    } else {
+                        (thq * thqold).sqrt()
+                    };
+                    thqold = thq;
+                    if theta < 0.99 {
+                        faccon = theta / (1.0 - theta);
+                        let rest = (nit - 1 - newt) as f64;
+                        let dyth = faccon * dyno * theta.powf(rest) / fnewt;
+                        if dyth >= 1.0 {
+                            let qnewt = dyth.clamp(1e-4, 20.0);
+                            newton_fail = Some(0.8 * qnewt.powf(-1.0 / (4.0 + rest)));
+                            break;
+                        }
+                    } else {
+                        newton_fail = Some(0.5);
+                        break;
+                    }
+                }
+                dynold = dyno.max(uround);
+                for (zi, d) in z.iter_mut().zip(&dz) {
+                    *zi += d;
+                }
+                newt += 1;
+                if faccon * dyno <= fnewt {
+                    converged = true;
+                    break;
+                }
+            }
+            if !converged {
+                st.rejected += 1;
+                h *= newton_fail.unwrap_or(0.5);
+                last_rejected = true;
+                continue;
+            }
+            // Error estimate.
+            for i in 0..n {
+                f2[i] = (cf.dd[0] * z[i] + cf.dd[1] * z[n + i] + cf.dd[2] * z[2 * n + i]) / h;
+                cont[i] = f0[i] + f2[i];
+                y1[i] = y0[i] + z[2 * n + i];
+            }
+            lu_small.solve(&mut cont, &mut work);
+            let mut err = scaled_norm(&cont, y0, &y1, &tol);
+            if err >= 1.0 && (first || last_rejected) {
+                for i in 0..n {
+                    ys[i] = y0[i] + cont[i];
+                }
+                sys.rhs(t, &ys, &mut cont);
+                st.rhs_evals += 1;
+                for i in 0..n {
+                    cont[i] += f2[i];
+                }
+                lu_small.solve(&mut cont, &mut work);
+                err = scaled_norm(&cont, y0, &y1, &tol);
+            }
+            if !err.is_finite() {
+                st.rejected += 1;
+                h *= 0.2;
+                last_rejected = true;
+                continue;
+            }
+            let err = err.max(1e-10);
+            let fac = safe.min(safe * (1.0 + 2.0 * nit as f64) / (newt as f64 + 2.0 * nit as f64));
+            let mut quot = (err.powf(0.25) / fac).clamp(1.0 / fac_grow, fac_shrink);
+            if err < 1.0 {
+                if !first {
+                    let facgus = (h_acc / h) * (err * err / err_acc).powf(0.25) / safe;
+                    quot = quot.max(facgus.clamp(1.0 / fac_grow, fac_shrink));
+                }
+                h_acc = h;
+                err_acc = err.max(1e-2);
+                let mut hnew = (h / quot).min(tol.max_step);
+                if last_rejected {
+                    hnew = hnew.min(h);
+                }
+                divided_differences(cf.c, &z, n, &mut ddiff);
+                have_poly = true;
+                st.steps += 1;
+                let control = obs.on_step(&Collocation {
+                    t0: t,
+                    h,
+                    y0,
+                    dd: &ddiff,
+                    c: cf.c,
+                });
+                t += h;
+                y0.copy_from_slice(&y1);
+                if let Control::Stop(ts) = control {
+                    return (Outcome::Stopped { t: ts }, st);
+                }
+                sys.rhs(t, y0, &mut f0);
+                st.rhs_evals += 1;
+                need_jac = true;
+                first = false;
+                last_rejected = false;
+                h = hnew;
+            } else {
+                st.rejected += 1;
+                h = if first { 0.1 * h } else { h / quot };
+                last_rejected = true;
+            }
+        }
+    }
+}

@@ -1,0 +1,268 @@
+//! The integrators on published test problems, against their reference solutions.
+//!
+//! References: E. Hairer, G. Wanner, Solving ODEs II (1996), Section IV.10, and the Bari test
+//! set for IVP solvers (F. Mazzia et al.), problems ROBER and VDPOL.
+
+use super::*;
+
+struct Robertson;
+impl OdeSystem for Robertson {
+    fn dim(&self) -> usize {
+        3
+    }
+    fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+        dy[0] = -0.04 * y[0] + 1e4 * y[1] * y[2];
+        dy[2] = 3e7 * y[1] * y[1];
+        dy[1] = -dy[0] - dy[2];
+    }
+    fn jacobian(&self, _t: f64, y: &[f64], j: &mut [f64]) {
+        j.copy_from_slice(&[
+            -0.04,
+            1e4 * y[2],
+            1e4 * y[1],
+            0.04,
+            -1e4 * y[2] - 6e7 * y[1],
+            -1e4 * y[1],
+            0.0,
+            6e7 * y[1],
+            0.0,
+        ]);
+    }
+}
+
+/// Van der Pol in Hairer's scaling, eps = 1/mu^2 = 1e-6 (mu = 1e3).
+struct VanDerPol;
+const EPS: f64 = 1e-6;
+impl OdeSystem for VanDerPol {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+        dy[0] = y[1];
+        dy[1] = ((1.0 - y[0] * y[0]) * y[1] - y[0]) / EPS;
+    }
+    fn jacobian(&self, _t: f64, y: &[f64], j: &mut [f64]) {
+        j.copy_from_slice(&[
+            0.0,
+            1.0,
+            (-2.0 * y[0] * y[1] - 1.0) / EPS,
+            (1.0 - y[0] * y[0]) / EPS,
+        ]);
+    }
+}
+
+/// The restricted three-body Arenstorf orbit (Solving ODEs I, Section II.0): periodic with
+/// period T, a classic non-stiff test for explicit methods.
+struct Arenstorf;
+const MU: f64 = 0.012277471;
+// Published as T = 17.0652165601579625588917206249 and y2'(0) = -2.00158510637908252240537862224,
+// rounded here to f64.
+const ARENSTORF_T: f64 = 17.065_216_560_157_96;
+const ARENSTORF_Y0: [f64; 4] = [0.994, 0.0, 0.0, -2.001_585_106_379_082_4];
+impl OdeSystem for Arenstorf {
+    fn dim(&self) -> usize {
+        4
+    }
+    fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+        let mp = 1.0 - MU;
+        let d1 = ((y[0] + MU).powi(2) + y[1] * y[1]).powf(1.5);
+        let d2 = ((y[0] - mp).powi(2) + y[1] * y[1]).powf(1.5);
+        dy[0] = y[2];
+        dy[1] = y[3];
+        dy[2] = y[0] + 2.0 * y[3] - mp * (y[0] + MU) / d1 - MU * (y[0] - mp) / d2;
+        dy[3] = y[1] - 2.0 * y[2] - mp * y[1] / d1 - MU * y[1] / d2;
+    }
+    fn jacobian(&self, _t: f64, _y: &[f64], _j: &mut [f64]) {
+        unreachable!("explicit methods never ask for the Jacobian")
+    }
+}
+
+struct Nothing;
+impl Observer for Nothing {
+    fn on_step(&mut self, _: &dyn DenseStep) -> Control {
+        Control::Continue
+    }
+}
+
+fn tol(rtol: f64, atol: f64) -> Tolerances {
+    Tolerances {
+        rtol,
+        atol,
+        max_step: f64::INFINITY,
+        max_steps: 1_000_000,
+    }
+}
+
+fn assert_close(name: &str, got: &[f64], want: &[f64], rel: f64, abs: f64) {
+    let mut worst: f64 = 0.0;
+    for (g, w) in got.iter().zip(want) {
+        let e = (g - w).abs() / (abs + rel * w.abs());
+        worst = worst.max(e);
+    }
+    assert!(
+        worst <= 1.0,
+        "{name}: got {got:?}, want {want:?}, worst scaled error {worst:.3}"
+    );
+}
+
+#[test]
+fn radau5_robertson_at_40_and_1e11() {
+    // Solving ODEs II, Section IV.10 (t = 40) and the Bari test set ROBER (t = 1e11).
+    let mut y = vec![1.0, 0.0, 0.0];
+    let (out, st) = Radau5.integrate(
+        &Robertson,
+        0.0,
+        &mut y,
+        40.0,
+        &tol(1e-9, 1e-14),
+        &mut Nothing,
+    );
+    assert_eq!(out, Outcome::Finished);
+    let want = [
+        0.715_827_068_719_326_7,
+        9.185_534_764_529_44e-6,
+        0.284_163_745_745_883_7,
+    ];
+    assert_close("robertson(40)", &y, &want, 1e-7, 1e-14);
+    eprintln!("robertson to 40: {st:?}");
+    let mut y = vec![1.0, 0.0, 0.0];
+    let (out, st) = Radau5.integrate(
+        &Robertson,
+        0.0,
+        &mut y,
+        1e11,
+        &tol(1e-9, 1e-18),
+        &mut Nothing,
+    );
+    assert_eq!(out, Outcome::Finished);
+    let want = [
+        0.208_334_014_970_125_5e-7,
+        0.833_336_077_033_471_3e-13,
+        0.999_999_979_166_505,
+    ];
+    assert_close("robertson(1e11)", &y, &want, 1e-6, 1e-20);
+    eprintln!("robertson to 1e11: {st:?}");
+}
+
+#[test]
+fn radau5_van_der_pol_mu_1e3() {
+    // Bari test set VDPOL (eps = 1e-6), y(2).
+    let mut y = vec![2.0, -0.66];
+    let (out, st) = Radau5.integrate(&VanDerPol, 0.0, &mut y, 2.0, &tol(1e-9, 1e-9), &mut Nothing);
+    assert_eq!(out, Outcome::Finished);
+    let want = [1.706_167_732_170_483, -0.892_809_701_024_797_5];
+    assert_close("vdpol(2)", &y, &want, 1e-6, 1e-9);
+    eprintln!("van der pol: {st:?}");
+    assert!(
+        st.steps < 5_000,
+        "a stiff method should need few steps: {st:?}"
+    );
+}
+
+#[test]
+fn dopri5_arenstorf_orbit_closes() {
+    let mut y = ARENSTORF_Y0.to_vec();
+    let (out, st) = Dopri5.integrate(
+        &Arenstorf,
+        0.0,
+        &mut y,
+        ARENSTORF_T,
+        &tol(1e-11, 1e-11),
+        &mut Nothing,
+    );
+    assert_eq!(out, Outcome::Finished);
+    assert_close("arenstorf(T)", &y, &ARENSTORF_Y0, 0.0, 1e-6);
+    eprintln!("arenstorf: {st:?}");
+}
+
+#[test]
+fn dopri5_robertson_at_0_4_within_the_step_limit() {
+    // Stiff for an explicit method, but short: reference from Radau5 at tight tolerance.
+    let mut y = vec![1.0, 0.0, 0.0];
+    let (out, _) = Dopri5.integrate(
+        &Robertson,
+        0.0,
+        &mut y,
+        0.4,
+        &tol(1e-8, 1e-14),
+        &mut Nothing,
+    );
+    assert_eq!(out, Outcome::Finished);
+    let mut r = vec![1.0, 0.0, 0.0];
+    Radau5.integrate(
+        &Robertson,
+        0.0,
+        &mut r,
+        0.4,
+        &tol(1e-11, 1e-16),
+        &mut Nothing,
+    );
+    assert_close("robertson(0.4)", &y, &r, 1e-6, 1e-14);
+}
+
+/// Records the dense output of y' = -y, y(0) = 1 at midpoints of the steps.
+struct Midpoints(Vec<(f64, f64)>);
+impl Observer for Midpoints {
+    fn on_step(&mut self, s: &dyn DenseStep) -> Control {
+        let t = 0.5 * (s.t_start() + s.t_end());
+        let mut y = [0.0];
+        s.eval(t, &mut y);
+        self.0.push((t, y[0]));
+        Control::Continue
+    }
+}
+
+struct Decay;
+impl OdeSystem for Decay {
+    fn dim(&self) -> usize {
+        1
+    }
+    fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+        dy[0] = -y[0];
+    }
+    fn jacobian(&self, _t: f64, _y: &[f64], j: &mut [f64]) {
+        j[0] = -1.0;
+    }
+}
+
+#[test]
+fn dense_output_between_steps() {
+    for radau in [false, true] {
+        let mut obs = Midpoints(Vec::new());
+        let mut y = vec![1.0];
+        let t = tol(1e-8, 1e-12);
+        if radau {
+            Radau5.integrate(&Decay, 0.0, &mut y, 5.0, &t, &mut obs);
+        } else {
+            Dopri5.integrate(&Decay, 0.0, &mut y, 5.0, &t, &mut obs);
+        }
+        let worst = obs
+            .0
+            .iter()
+            .map(|(t, y)| (y - (-t).exp()).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            worst < 1e-7,
+            "radau = {radau}: dense output off by {worst:.2e}"
+        );
+    }
+}
+
+#[test]
+fn step_limit_is_an_outcome_not_a_panic() {
+    let mut y = vec![2.0, -0.66];
+    let t = Tolerances {
+        max_steps: 100,
+        ..tol(1e-6, 1e-6)
+    };
+    let (out, st) = Dopri5.integrate(&VanDerPol, 0.0, &mut y, 2.0, &t, &mut Nothing);
+    match out {
+        Outcome::Failed { t, reason } => {
+            assert!(
+                t > 0.0 && t < 2.0 && reason.contains("step limit"),
+                "{t} {reason}"
+            );
+        }
+        other => panic!("expected a failure, got {other:?} after {st:?}"),
+    }
+}

@@ -1,0 +1,288 @@
+//! Reading the jam off the motion.
+//!
+//! The paper reads the jam as "an instability of the velocity" (Fig. 5a). We read it as the
+//! instant the disc's speed v collapses below a fraction beta (`jam_speed_ratio`, default 0.5) of
+//! the geometric speed the turning palm would impose on a rigid disc,
+//!
+//! ```text
+//! v_geo(theta) = omega (r + (r + h) cos theta) / sin^2 theta  =  r omega / (2 sin^2(theta/2))  (h = 0),
+//! ```
+//!
+//! after the disc has once reached `arm_speed_ratio` (0.9) of it (so the start from rest does not
+//! count). A candidate is confirmed when, for a window of 0.25 deg of palm turn (or 1.5 times the
+//! longest flight of a bounce, 2 v_geo / (mu_g g), if longer) during which the palm touches the
+//! disc throughout, the disc has not recovered to the arming ratio. A disc standing free ahead of
+//! the palm is waiting for it, not jammed; a disc that recovers was only slowed (it bounced off
+//! a stiff, lightly damped contact and friction stopped it before the palm caught up, or a
+//! transient was poorly resolved), and the search goes on. The simulation stops at the
+//! confirmation, or `after_jam_s` after the jam if that is later.
+//!
+//! A second reading is reported beside it when the run lasts long enough: the first instant
+//! after the jam at which the ground slip falls below the stiction transition velocity V_s, i.e.
+//! the ground contact enters Adams' stiction band. Both readings measure the same collapse. The
+//! stiction reading comes later (the disc must slow from about v_geo, ~19 mm/s at the default jam,
+//! to V_s = 0.1 mm/s) and lies further out by the distance the disc creeps meanwhile: at the
+//! defaults the disc creeps at 0.12-0.13 mm/s, just above V_s, for about 60 ms after the collapse
+//! and the stiction reading lies 0.03 mm further out (so it needs `after_jam_s` >= 0.07). We pick
+//! the speed ratio because it needs no creep threshold: Adams' friction has no true stiction, so
+//! a held disc creeps at a speed set by V_s and the load, and the stiction reading drifts with
+//! V_s; the ratio is dimensionless, and its value barely matters because the collapse is steep.
+//!
+//! Both drives use the commanded omega in v_geo: a force drive stalls at its limit, so the
+//! collapse of v / v_geo measures the stall and the disc's stop together.
+
+use super::integrators::{Control, DenseStep, Observer};
+use super::scene::Scene;
+
+/// The palm turn (deg) after a candidate jam within which the disc must not recover.
+pub const CONFIRM_DEG: f64 = 0.25;
+
+/// Safety factor on the flight time of a bounce in the confirmation window.
+const BOUNCE_FACTOR: f64 = 1.5;
+
+/// One instant of the motion.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Instant {
+    /// Time in s.
+    pub t: f64,
+    /// Palm angle in rad.
+    pub theta: f64,
+    /// Disc position in mm.
+    pub x: f64,
+}
+
+/// One row of the time series (the data of the paper's Fig. 5).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SeriesRow {
+    pub t_s: f64,
+    pub theta_deg: f64,
+    pub x_mm: f64,
+    pub x_dot_mm_s: f64,
+    pub penetration_mm: f64,
+    pub normal_n: f64,
+    pub palm_friction_n: f64,
+    pub ground_normal_n: f64,
+    pub ground_friction_n: f64,
+}
+
+/// Settings of the reading.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JamRule {
+    pub jam_ratio: f64,
+    pub arm_ratio: f64,
+    /// V_s in mm/s (stiction reading).
+    pub v_stiction: f64,
+    /// Palm length in mm: beyond it the disc is lost.
+    pub palm_length: f64,
+    /// Simulated time after the confirmed jam, in s.
+    pub after_jam: f64,
+    /// Friction deceleration of a free disc, mu_g g, in mm/s^2.
+    pub ground_decel: f64,
+    /// Time step of the recorded series in s (None: no series).
+    pub series_dt: Option<f64>,
+}
+
+/// The observer that reads the jam during the integration.
+#[derive(Debug, Clone)]
+pub struct JamDetector<'a> {
+    sys: &'a Scene,
+    rule: JamRule,
+    /// The disc has reached the arming speed once.
+    pub armed: bool,
+    /// Candidate (or confirmed) jam.
+    pub jam: Option<Instant>,
+    pub confirmed: bool,
+    /// First instant after the jam with ground slip below V_s.
+    pub stiction: Option<Instant>,
+    /// The contact left the palm's end at this instant.
+    pub beyond_reach: Option<Instant>,
+    /// Candidates the disc recovered from.
+    pub discarded: u32,
+    /// Largest elastic palm push (N) since the candidate jam.
+    pub push_after_jam: f64,
+    /// Palm angle (rad) and elastic push (N) when the jam was confirmed.
+    pub at_confirmation: Option<(f64, f64)>,
+    /// Since when (s) the palm has touched the disc without a break, seen at step ends.
+    touching_since: Option<f64>,
+    pub series: Vec<SeriesRow>,
+    next_sample: f64,
+    y: Vec<f64>,
+}
+
+impl<'a> JamDetector<'a> {
+    pub fn new(sys: &'a Scene, rule: JamRule, t0: f64) -> Self {
+        JamDetector {
+            sys,
+            rule,
+            armed: false,
+            jam: None,
+            confirmed: false,
+            stiction: None,
+            beyond_reach: None,
+            discarded: 0,
+            push_after_jam: 0.0,
+            at_confirmation: None,
+            touching_since: None,
+            series: Vec::new(),
+            next_sample: t0,
+            y: vec![0.0; 3],
+        }
+    }
+
+    fn ratio_margin(&self, y: &[f64], ratio: f64) -> f64 {
+        y[2] - ratio * self.sys.geometric_speed(y[0])
+    }
+
+    /// The confirmation window after a candidate at palm angle `theta`: 0.25 deg of palm turn,
+    /// or longer than the flight of a bounce: a disc knocked ahead of the palm at up to twice the
+    /// palm's speed is caught again after 2 v_geo / (mu_g g) at most (friction decelerates it).
+    fn confirm_time(&self, theta: f64) -> f64 {
+        let turn = CONFIRM_DEG.to_radians() / self.sys.omega;
+        let decel = self.rule.ground_decel;
+        let flight = if decel > 0.0 {
+            2.0 * self.sys.geometric_speed(theta) / decel
+        } else {
+            0.0
+        };
+        turn.max(BOUNCE_FACTOR * flight)
+    }
+
+    fn record(&mut self, step: &dyn DenseStep, upto: f64) {
+        let Some(dt) = self.rule.series_dt else {
+            return;
+        };
+        while self.next_sample <= upto {
+            step.eval(self.next_sample, &mut self.y);
+            let f = self.sys.evaluate(&self.y, None);
+            self.series.push(SeriesRow {
+                t_s: self.next_sample,
+                theta_deg: self.y[0].to_degrees(),
+                x_mm: self.y[1],
+                x_dot_mm_s: self.y[2],
+                penetration_mm: f.penetration,
+                normal_n: f.normal,
+                palm_friction_n: f.palm_friction,
+                ground_normal_n: f.ground_normal,
+                ground_friction_n: f.ground_friction,
+            });
+            self.next_sample += dt;
+        }
+    }
+}
+
+/// The first root of g in [a, b] given g(a) >= 0 > g(b), by Illinois false position.
+fn first_root(step: &dyn DenseStep, a: f64, b: f64, g: impl Fn(&[f64]) -> f64) -> f64 {
+    let mut y = [0.0; 3];
+    let mut at = |t: f64| {
+        step.eval(t, &mut y);
+        g(&y)
+    };
+    let (mut a, mut b) = (a, b);
+    let (mut ga, mut gb) = (at(a), at(b));
+    let mut side = 0;
+    for _ in 0..100 {
+        if (b - a) <= 1e-13 * b.abs().max(1.0) {
+            break;
+        }
+        let mut t = (a * gb - b * ga) / (gb - ga);
+        if !(t > a && t < b) {
+            t = 0.5 * (a + b);
+        }
+        let gt = at(t);
+        if gt >= 0.0 {
+            a = t;
+            ga = gt;
+            if side == 1 {
+                gb *= 0.5;
+            }
+            side = 1;
+        } else {
+            b = t;
+            gb = gt;
+            if side == -1 {
+                ga *= 0.5;
+            }
+            side = -1;
+        }
+    }
+    b
+}
+
+impl Observer for JamDetector<'_> {
+    fn on_step(&mut self, step: &dyn DenseStep) -> Control {
+        let (t0, t1) = (step.t_start(), step.t_end());
+        self.record(step, t1);
+        let mut y = [0.0; 3];
+        step.eval(t1, &mut y);
+        let instant = |t: f64| {
+            let mut y = [0.0; 3];
+            step.eval(t, &mut y);
+            Instant {
+                t,
+                theta: y[0],
+                x: y[1],
+            }
+        };
+        let sys = self.sys;
+        let rule = self.rule;
+        if self.jam.is_none() {
+            self.touching_since = None;
+        }
+        let jam_ratio = rule.jam_ratio;
+        // The contact passes the palm's end before any jam: the disc is lost.
+        if self.jam.is_none() && sys.contact_distance(&y) > rule.palm_length {
+            let t = first_root(step, t0, t1, |y| rule.palm_length - sys.contact_distance(y));
+            self.beyond_reach = Some(instant(t));
+            return Control::Stop(t);
+        }
+        if !self.armed {
+            self.armed = self.ratio_margin(&y, rule.arm_ratio) >= 0.0;
+            return Control::Continue;
+        }
+        if self.jam.is_none() {
+            if self.ratio_margin(&y, jam_ratio) < 0.0 {
+                let t = first_root(step, t0, t1, |y| {
+                    y[2] - jam_ratio * sys.geometric_speed(y[0])
+                });
+                self.jam = Some(instant(t));
+                self.push_after_jam = 0.0;
+                self.stiction = None;
+            } else {
+                return Control::Continue;
+            }
+        }
+        let jam = self.jam.expect("set above");
+        if !self.confirmed {
+            if self.ratio_margin(&y, rule.arm_ratio) >= 0.0 {
+                // The disc recovered: it was slowed, not jammed.
+                self.jam = None;
+                self.discarded += 1;
+                return Control::Continue;
+            }
+            let (el, _) = sys.impact.elastic(sys.evaluate(&y, None).penetration);
+            self.push_after_jam = self.push_after_jam.max(el);
+        }
+        if self.stiction.is_none() && y[2] < rule.v_stiction {
+            let a = t0.max(jam.t);
+            let t = first_root(step, a, t1, |y| y[2] - rule.v_stiction);
+            self.stiction = Some(instant(t));
+        }
+        let penetration = sys.evaluate(&y, None).penetration;
+        if penetration <= 0.0 {
+            self.touching_since = None;
+        } else if self.touching_since.is_none() {
+            self.touching_since = Some(t1);
+        }
+        let since = self.touching_since.map(|t| t.max(jam.t));
+        if !self.confirmed && since.is_some_and(|t| t1 >= t + self.confirm_time(jam.theta)) {
+            self.confirmed = true;
+            let (el, _) = sys.impact.elastic(penetration);
+            self.at_confirmation = Some((y[0], el));
+        }
+        if self.confirmed && t1 >= jam.t + rule.after_jam {
+            Control::Stop(t1)
+        } else {
+            Control::Continue
+        }
+    }
+}

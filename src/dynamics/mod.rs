@@ -1,0 +1,194 @@
+//! Model 3: dynamic simulation of the paper's Adams model (Section 4).
+//!
+//! # The model
+//!
+//! The disc (radius r, mass m) slides on a translational joint along X: its centre is (x, r), it
+//! neither rotates nor leaves the ground, and the joint's vertical reaction R_n is the ground's
+//! normal force. The palm, hinged at the origin, closes from the start angle at omega. Between
+//! the palm's face (offset h from the hinge line; 0 in the paper's theory) and the disc acts
+//! Adams' IMPACT force; at the palm and at the joint acts Adams' regularised Coulomb friction
+//! ([`contact`]). The state is (theta, x, v) and the equations of motion are derived in
+//! [`scene`]: in the limit of a rigid contact at constant speed they reduce to the corrected
+//! Eq. 1-2, so the closed form ([`crate::statics`]) is their quasi-static limit.
+//!
+//! # Drives
+//!
+//! * `motion` (the paper's): theta = theta_0 - omega t whatever the load. It pushes as hard as
+//!   needed, so the jam tends to the F -> infinity limit x = r/mu, a little short of it because
+//!   of the contact's compliance (the disc lags the palm by the penetration: 24.75 mm at the
+//!   defaults, 24.94 mm with 10 um of penetration at 200 N, 25.00 mm with 1 um).
+//! * `force`: a speed drive with a force limit. The palm turns at omega until its elastic push
+//!   reaches N_max = F cos(atan mu_palm) (a total push F while the palm slides), then stalls and
+//!   holds. The disc jams where the closed form at finite F says, and Fig. 7b's force
+//!   dependence can be simulated.
+//!
+//! # Integration and its trust
+//!
+//! Two integrators ([`integrators`]): RADAU5 (implicit, analytic Jacobian) and DOPRI5
+//! (explicit). The problem is stiff: the friction slope at zero slip, 1.5 mu_s/V_s, gives
+//! time constants of about a microsecond under a 200 N load. The jam is read by
+//! [`jam::JamDetector`] from the dense output. Step error control does not bound the error of
+//! x_jam, so every result is checked against the quasi-static limit and an error estimate:
+//!
+//! * no push can slide a disc past the self-locking wedge (theta = atan mu_g + atan mu_p); only
+//!   its inertia can carry it a little further, so a jam more than 5 % beyond the wedge's
+//!   position is `inaccurate`;
+//! * a disc that stands still at the end of the confirmation window while the palm pushes with
+//!   more than twice the force that slides it at that angle (the corrected Eq. 1 with static
+//!   frictions) is `inaccurate`: the regularised friction cannot hold it;
+//! * for the force drive, a disc that stops while the drive's push stays below its limit is
+//!   `inaccurate`;
+//! * with `verify` (the default) the simulation runs a second time at a tenth of rtol and atol;
+//!   the difference of the two x_jam is reported as the error estimate `x_jam_error_mm`, and an
+//!   estimate above `max_jam_error` (relative, default 1e-3) or a different status makes the
+//!   answer `inaccurate`;
+//! * rtol looser than 1e-2 is always `inaccurate`: at 0.05-0.5 both methods returned jams
+//!   30-540 % off that passed the other checks.
+//!
+//! Over 240 runs (mu 0.15-0.6, contacts of 59, 10 and 1 um at 200 N, both drives, m 0.2-5 kg,
+//! omega 10-90 deg/s, rtol 1e-3 and 1e-4) the worst answer that still said `jams` was 0.45 % off a
+//! reference at rtol 1e-9: the estimate from one tenth of the tolerance can understate the error
+//! a few times over at loose tolerances. RADAU5 also tightens the tolerance it is given
+//! (rtol' = 0.1 rtol^(2/3)), as Hairer's code does. A method that gives up reports
+//! `integrator_failed` with the time and the reason.
+
+pub mod accuracy;
+pub mod contact;
+pub mod integrators;
+pub mod jam;
+pub mod params;
+mod run;
+pub mod scene;
+
+use serde::Serialize;
+
+pub use params::{Drive, DynamicsParams, Method};
+
+use crate::error::Result;
+use crate::model::{JamStatus, SceneParams};
+use jam::SeriesRow;
+
+/// How far past the self-locking wedge a jam may lie before it is called inaccurate: a fast disc
+/// coasts past the wedge on its inertia (0.7 % at mu = 0.15 with the defaults).
+pub(crate) const WEDGE_MARGIN: f64 = 0.05;
+
+/// Largest step: 1 deg of commanded palm turn, so that arming and a jam never share a step.
+pub(crate) const MAX_STEP_DEG: f64 = 1.0;
+
+/// Tolerances looser than this are never trusted: at rtol = 0.05-0.5 both methods returned
+/// answers off by 40-500 % that passed every other check (see the accuracy study).
+pub(crate) const LOOSEST_RTOL: f64 = 1e-2;
+
+/// An integration that gave up.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Failure {
+    /// Simulated time in s where it stopped.
+    pub t_s: f64,
+    /// Why, e.g. "step limit of 2000000 reached".
+    pub reason: String,
+}
+
+/// The result of one simulation.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DynamicsSolution {
+    /// Outcome: jams, jammed_at_start, never_jams, beyond_reach, inaccurate or integrator_failed.
+    pub status: JamStatus,
+    /// Palm angle at the jam (speed-ratio reading) in deg.
+    pub theta_jam_deg: Option<f64>,
+    /// Disc position at the jam in mm.
+    pub x_jam_mm: Option<f64>,
+    /// Time of the jam in s.
+    pub t_jam_s: Option<f64>,
+    /// The stiction reading: disc position (mm) when the ground slip first falls below V_s.
+    pub x_stiction_mm: Option<f64>,
+    /// Time of the stiction reading in s.
+    pub t_stiction_s: Option<f64>,
+    /// The self-locking limit in mm: the touching position at theta = atan mu_g + atan mu_p.
+    pub x_wedge_mm: Option<f64>,
+    pub method: Method,
+    pub drive: Drive,
+    /// Accepted steps (of both runs when verified).
+    pub steps: u64,
+    /// Rejected steps (both runs).
+    pub rejected_steps: u64,
+    /// Right-hand-side evaluations (both runs).
+    pub rhs_evals: u64,
+    /// Jacobian evaluations (both runs).
+    pub jacobian_evals: u64,
+    /// Estimated error of x_jam in mm: the difference to a second run at a tenth of the
+    /// tolerances (None unless `verify`).
+    pub x_jam_error_mm: Option<f64>,
+    /// Jam candidates the disc recovered from.
+    pub discarded_candidates: u32,
+    /// Why the result is `inaccurate`, if it is.
+    pub cross_check: Option<String>,
+    /// Set when the integrator gave up (also after a confirmed jam, during the run-on).
+    pub failure: Option<Failure>,
+    /// Simulated time in s.
+    pub simulated_s: f64,
+    /// The time series (empty unless asked for).
+    #[serde(skip)]
+    pub series: Vec<SeriesRow>,
+}
+
+/// Simulates one push until the jam is read (plus `after_jam_s`), and, with `verify`, once more
+/// at a tenth of the tolerances to estimate the error of x_jam. `series_dt_s` asks for the time
+/// series at that interval. Errors only for invalid parameters.
+pub fn simulate(
+    scene: &SceneParams,
+    params: &DynamicsParams,
+    series_dt_s: Option<f64>,
+) -> Result<DynamicsSolution> {
+    scene.validate()?;
+    params.validate()?;
+    params.validate_scene(scene)?;
+    let mut out = run::run_once(scene, params, series_dt_s);
+    if params.rtol > LOOSEST_RTOL {
+        out.cross_check = Some(format!(
+            "rtol = {} is looser than {LOOSEST_RTOL}: no check can vouch for the answer; \
+             tighten --rtol",
+            params.rtol
+        ));
+        out.status = JamStatus::Inaccurate;
+        return Ok(out);
+    }
+    if !params.verify || out.status == JamStatus::IntegratorFailed {
+        return Ok(out);
+    }
+    let fine = DynamicsParams {
+        rtol: params.rtol / 10.0,
+        atol: Some(params.atol() / 10.0),
+        ..*params
+    };
+    let check = run::run_once(scene, &fine, None);
+    out.steps += check.steps;
+    out.rejected_steps += check.rejected_steps;
+    out.rhs_evals += check.rhs_evals;
+    out.jacobian_evals += check.jacobian_evals;
+    if out.cross_check.is_some() {
+        return Ok(out);
+    }
+    let reason = match (out.x_jam_mm, check.x_jam_mm) {
+        _ if check.status != out.status => Some(format!(
+            "a second run at rtol = {:e} says {} instead of {}: tighten --rtol",
+            fine.rtol, check.status, out.status
+        )),
+        (Some(a), Some(b)) => {
+            let e = (a - b).abs();
+            out.x_jam_error_mm = Some(e);
+            (e > params.max_jam_error * b.abs()).then(|| {
+                format!(
+                    "x_jam moves by {e:.3e} mm (more than {:e} of it) when the tolerances are \
+                     divided by 10: tighten --rtol",
+                    params.max_jam_error
+                )
+            })
+        }
+        _ => None,
+    };
+    if let Some(r) = reason {
+        out.cross_check = Some(r);
+        out.status = JamStatus::Inaccurate;
+    }
+    Ok(out)
+}

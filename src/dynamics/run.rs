@@ -1,0 +1,163 @@
+//! One integration of the scene to the jam, and its reading and quasi-static cross-checks.
+
+use super::integrators::{Dopri5, Outcome, Radau5, Stats, Tolerances};
+use super::jam::{JamDetector, JamRule};
+use super::scene::Scene;
+use super::{Drive, DynamicsParams, DynamicsSolution, Failure, MAX_STEP_DEG, Method, WEDGE_MARGIN};
+use crate::model::{JamStatus, SceneParams};
+
+/// One run at the given tolerances, without the verification run. Parameters must be valid.
+pub(super) fn run_once(
+    scene: &SceneParams,
+    params: &DynamicsParams,
+    series_dt_s: Option<f64>,
+) -> DynamicsSolution {
+    let sys = Scene::new(scene, params);
+    let theta0 = scene.start_angle_deg.to_radians();
+    let mut y = vec![theta0, sys.touching_x(theta0), 0.0];
+    let t_end = theta0 / sys.omega;
+    let tol = Tolerances {
+        rtol: params.rtol,
+        atol: params.atol(),
+        max_step: MAX_STEP_DEG.to_radians() / sys.omega,
+        max_steps: params.max_steps,
+    };
+    let rule = JamRule {
+        jam_ratio: params.jam_speed_ratio,
+        arm_ratio: params.arm_speed_ratio,
+        v_stiction: params.stiction_velocity_mm_s,
+        palm_length: scene.palm_length_mm,
+        after_jam: params.after_jam_s,
+        ground_decel: scene.mu_ground * scene.gravity_m_s2 * 1000.0,
+        series_dt: series_dt_s.filter(|dt| *dt > 0.0 && dt.is_finite()),
+    };
+    let mut det = JamDetector::new(&sys, rule, 0.0);
+    let (outcome, stats) = match params.method {
+        Method::Radau5 => Radau5.integrate(&sys, 0.0, &mut y, t_end, &tol, &mut det),
+        Method::Dopri5 => Dopri5.integrate(&sys, 0.0, &mut y, t_end, &tol, &mut det),
+    };
+    conclude(scene, params, &sys, det, outcome, stats)
+}
+
+fn conclude(
+    scene: &SceneParams,
+    params: &DynamicsParams,
+    sys: &Scene,
+    det: JamDetector,
+    outcome: Outcome,
+    stats: Stats,
+) -> DynamicsSolution {
+    let wedge = scene.alpha_ground() + scene.alpha_palm();
+    let x_wedge = (wedge > 0.0)
+        .then(|| sys.touching_x(wedge))
+        .filter(|x| x.is_finite());
+    let (failure, simulated) = match &outcome {
+        Outcome::Failed { t, reason } => (
+            Some(Failure {
+                t_s: *t,
+                reason: reason.clone(),
+            }),
+            *t,
+        ),
+        Outcome::Stopped { t } => (None, *t),
+        Outcome::Finished => (None, sys_end(scene, sys)),
+    };
+    let mut out = DynamicsSolution {
+        status: JamStatus::Jams,
+        theta_jam_deg: None,
+        x_jam_mm: None,
+        t_jam_s: None,
+        x_stiction_mm: det.stiction.map(|s| s.x),
+        t_stiction_s: det.stiction.map(|s| s.t),
+        x_wedge_mm: x_wedge,
+        method: params.method,
+        drive: params.drive,
+        steps: stats.steps,
+        rejected_steps: stats.rejected,
+        rhs_evals: stats.rhs_evals,
+        jacobian_evals: stats.jacobian_evals,
+        discarded_candidates: det.discarded,
+        cross_check: None,
+        x_jam_error_mm: None,
+        failure,
+        simulated_s: simulated,
+        series: det.series,
+    };
+    if det.beyond_reach.is_some() {
+        out.status = JamStatus::BeyondReach;
+        return out;
+    }
+    // A candidate still waiting for confirmation when the run ends normally is taken as is.
+    let jam = det.jam.filter(|_| det.confirmed || out.failure.is_none());
+    let Some(jam) = jam else {
+        out.status = if out.failure.is_some() {
+            JamStatus::IntegratorFailed
+        } else if !det.armed {
+            // The disc never reached the palm's speed: the push could not get it going.
+            out.theta_jam_deg = Some(scene.start_angle_deg);
+            out.x_jam_mm = Some(sys.touching_x(scene.start_angle_deg.to_radians()));
+            out.t_jam_s = Some(0.0);
+            JamStatus::JammedAtStart
+        } else {
+            JamStatus::NeverJams
+        };
+        return out;
+    };
+    out.theta_jam_deg = Some(jam.theta.to_degrees());
+    out.x_jam_mm = Some(jam.x);
+    out.t_jam_s = Some(jam.t);
+    if let Some(xw) = x_wedge
+        && jam.x > xw * (1.0 + WEDGE_MARGIN)
+    {
+        out.cross_check = Some(format!(
+            "x_jam = {:.4} mm lies beyond the self-locking limit {xw:.4} mm that no push can \
+             pass: the integration is not accurate enough; tighten --rtol",
+            jam.x
+        ));
+    }
+    let stalled = det.push_after_jam >= (1.0 - 2.0 * params.force_band) * sys.normal_limit;
+    if params.drive == Drive::Force && jam.theta > wedge + 0.1_f64.to_radians() && !stalled {
+        out.cross_check = Some(format!(
+            "the disc stopped at {:.3} deg while the drive's push stayed at {:.2} N, below its \
+             limit {:.2} N: the integration is not accurate enough; tighten --rtol",
+            jam.theta.to_degrees(),
+            det.push_after_jam,
+            sys.normal_limit
+        ));
+    }
+    if let Some((theta, push)) = det.at_confirmation {
+        let needed = sliding_push_n(scene, params, theta);
+        if push > 2.0 * needed {
+            out.cross_check = Some(format!(
+                "the disc stood still at {:.4} mm while the palm pushed with {push:.2} N at \
+                 {:.3} deg, more than twice the {needed:.2} N that slides it: the integration is \
+                 not accurate enough; tighten --rtol",
+                jam.x,
+                theta.to_degrees()
+            ));
+        }
+    }
+    if out.cross_check.is_some() {
+        out.status = JamStatus::Inaccurate;
+    }
+    out
+}
+
+/// The palm's normal push (N) that slides the disc at palm angle `theta` against the static
+/// frictions at both contacts (the corrected Eq. 1 solved for the push), infinite at and below
+/// the self-locking wedge.
+fn sliding_push_n(scene: &SceneParams, params: &DynamicsParams, theta: f64) -> f64 {
+    let mg = params.mu_static_ground.unwrap_or(scene.mu_ground);
+    let mp = params.mu_static_palm.unwrap_or(scene.mu_palm);
+    let (s, c) = theta.sin_cos();
+    let denom = s * (1.0 - mg * mp) - c * (mg + mp);
+    if denom > 0.0 {
+        mg * scene.weight_n() / denom
+    } else {
+        f64::INFINITY
+    }
+}
+
+fn sys_end(scene: &SceneParams, sys: &Scene) -> f64 {
+    scene.start_angle_deg.to_radians() / sys.omega
+}

@@ -1,0 +1,338 @@
+//! Equations of motion of the palm and the disc, right-hand side and analytic Jacobian.
+//!
+//! State y = (theta, x, v): palm angle (rad), disc centre abscissa (mm), disc speed (mm/s).
+//! With t = (cos theta, sin theta) along the palm and n = (sin theta, -cos theta) its normal
+//! towards the disc, the palm's contact face is the line {p : p . n = h} (h the offset):
+//!
+//! ```text
+//! delta     = r + h + r cos theta - x sin theta         penetration (mm)
+//! s_B       = x cos theta + r sin theta                 contact distance from the hinge (mm)
+//! delta_dot = -(v sin theta + s_B theta_dot)            (mm/s)
+//! u_B       = v cos theta - theta_dot h                 slip of the disc on the palm's face along t (mm/s)
+//! N         = IMPACT(delta, delta_dot)                  palm normal force on the disc (N)
+//! mu_B      = mu_palm(u_B),   mu_A = mu_ground(v)       Adams friction laws (signed)
+//! P_x       = N (sin theta - mu_B cos theta)            palm force on the disc along X (N)
+//! R_n       = m g + N (cos theta + mu_B sin theta)      joint reaction (N), Eq. 1 corrected
+//! m v_dot   = P_x - mu_A |R_n|                          (v_dot in mm/s^2 = 1000 N/kg)
+//! ```
+//!
+//! With delta = 0 these are the paper's Eq. 2 (x = r cot(theta/2) for h = 0) and, at constant
+//! speed with the palm sliding, the corrected Eq. 1. The slip u_B is measured at the palm's face
+//! (the foot of the perpendicular from the disc centre), where the palm's material moves along t
+//! at theta_dot h; measured at the disc's surface, a millimetre-deep penetration after the jam
+//! would drag the palm's material past the disc at omega delta and keep the palm contact from
+//! sticking. The drive sets theta_dot:
+//!
+//! * motion: theta_dot = -omega;
+//! * force: theta_dot = -omega (1 - STEP(N_el, (1 - b) N_max, 0, N_max, 1)) with the elastic push
+//!   N_el = k delta^e and N_max = F cos(atan mu_palm). This is a massless palm on a self-locking
+//!   speed drive with a force limit: it turns at omega until the push reaches the limit, then
+//!   stalls without backing off. The limit is on the normal force, so the palm's total push
+//!   N / cos(alpha_p) saturates at F while it slides, as in the closed form. It senses the elastic
+//!   part of the force only (the damping part would make theta_dot depend on itself).
+
+use super::contact::{FrictionLaw, ImpactLaw, step};
+use super::integrators::OdeSystem;
+use super::params::{Drive, DynamicsParams};
+use crate::model::SceneParams;
+
+/// The system in the units of the state; built once per simulation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scene {
+    /// r in mm.
+    pub radius: f64,
+    /// h in mm.
+    pub offset: f64,
+    /// m in kg.
+    pub mass: f64,
+    /// m g in N.
+    pub weight: f64,
+    /// omega in rad/s.
+    pub omega: f64,
+    pub drive: Drive,
+    /// N_max = F cos(atan mu_palm) in N (force drive).
+    pub normal_limit: f64,
+    /// b, the width of the force limit band as a fraction of N_max.
+    pub band: f64,
+    pub impact: ImpactLaw,
+    pub palm_friction: FrictionLaw,
+    pub ground_friction: FrictionLaw,
+}
+
+/// Forces and kinematics at one state, for the series and for the Jacobian.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Forces {
+    /// theta_dot in rad/s.
+    pub theta_dot: f64,
+    /// delta in mm.
+    pub penetration: f64,
+    /// N in N.
+    pub normal: f64,
+    /// Palm friction on the disc along -t, mu_B N, in N.
+    pub palm_friction: f64,
+    /// R_n in N.
+    pub ground_normal: f64,
+    /// Ground friction on the disc along X, -mu_A |R_n|, in N.
+    pub ground_friction: f64,
+    /// v_dot in mm/s^2.
+    pub accel: f64,
+}
+
+type Grad = [f64; 3];
+
+fn axpy(a: f64, x: &Grad, y: &Grad) -> Grad {
+    [a * x[0] + y[0], a * x[1] + y[1], a * x[2] + y[2]]
+}
+
+fn scale(a: f64, x: &Grad) -> Grad {
+    [a * x[0], a * x[1], a * x[2]]
+}
+
+impl Scene {
+    /// Builds the system from validated parameters.
+    pub fn new(scene: &SceneParams, d: &DynamicsParams) -> Scene {
+        let law = |mu_d: f64, mu_s: Option<f64>| FrictionLaw {
+            mu_static: mu_s.unwrap_or(mu_d),
+            mu_dynamic: mu_d,
+            v_static: d.stiction_velocity_mm_s,
+            v_dynamic: d.friction_velocity_mm_s,
+        };
+        Scene {
+            radius: scene.radius_mm,
+            offset: d.palm_offset_mm,
+            mass: scene.mass_kg,
+            weight: scene.weight_n(),
+            omega: d.omega_deg_s.to_radians(),
+            drive: d.drive,
+            normal_limit: scene.force_n * scene.alpha_palm().cos(),
+            band: d.force_band,
+            impact: ImpactLaw {
+                stiffness: d.stiffness_n_per_mm_e,
+                exponent: d.exponent,
+                damping: d.damping_n_s_per_mm,
+                depth: d.damping_depth_mm,
+            },
+            palm_friction: law(scene.mu_palm, d.mu_static_palm),
+            ground_friction: law(scene.mu_ground, d.mu_static_ground),
+        }
+    }
+
+    /// Disc position (mm) where the palm at `theta` (rad) just touches it: delta = 0.
+    pub fn touching_x(&self, theta: f64) -> f64 {
+        (self.radius * (1.0 + theta.cos()) + self.offset) / theta.sin()
+    }
+
+    /// The speed (mm/s) at which the disc must move to stay in touch with the palm turning at
+    /// omega: -omega d/dtheta of [`Scene::touching_x`] = omega (r + (r + h) cos theta) / sin^2 theta,
+    /// which is r omega / (2 sin^2(theta/2)) for h = 0.
+    pub fn geometric_speed(&self, theta: f64) -> f64 {
+        let (s, c) = theta.sin_cos();
+        self.omega * (self.radius + (self.radius + self.offset) * c) / (s * s)
+    }
+
+    /// Contact distance s_B from the hinge along the palm, in mm, for state `y`.
+    pub fn contact_distance(&self, y: &[f64]) -> f64 {
+        let (s, c) = y[0].sin_cos();
+        y[1] * c + self.radius * s
+    }
+
+    /// Forces at state `y`, and, if `jac` is given, the Jacobian d f / d y (row-major 3x3).
+    pub fn evaluate(&self, y: &[f64], jac: Option<&mut [f64]>) -> Forces {
+        let (theta, x, v) = (y[0], y[1], y[2]);
+        let (s, c) = theta.sin_cos();
+        let (r, h) = (self.radius, self.offset);
+        let delta = r + h + r * c - x * s;
+        let g_delta: Grad = [-(x * c + r * s), -s, 0.0];
+        let s_b = self.contact_distance(y);
+        let g_sb: Grad = [r * c - x * s, c, 0.0];
+
+        let (theta_dot, g_td) = match self.drive {
+            Drive::Motion => (-self.omega, [0.0; 3]),
+            Drive::Force => {
+                let (el, d_el) = self.impact.elastic(delta);
+                let lim = self.normal_limit;
+                let (w, dw) = step(el, (1.0 - self.band) * lim, 0.0, lim, 1.0);
+                (
+                    -self.omega * (1.0 - w),
+                    scale(self.omega * dw * d_el, &g_delta),
+                )
+            }
+        };
+        let rate = -(v * s + s_b * theta_dot);
+        // d rate = -(v c dtheta + s dv + theta_dot d s_B + s_B d theta_dot)
+        let mut g_rate = axpy(theta_dot, &g_sb, &scale(s_b, &g_td));
+        g_rate[0] += v * c;
+        g_rate[2] += s;
+        let g_rate = scale(-1.0, &g_rate);
+
+        let imp = self.impact.force(delta, rate);
+        let n = imp.normal;
+        let g_n = axpy(imp.d_delta, &g_delta, &scale(imp.d_rate, &g_rate));
+
+        let u_b = v * c - theta_dot * h;
+        let mut g_ub = scale(-h, &g_td);
+        g_ub[0] -= v * s;
+        g_ub[2] += c;
+        let (mu_b, dmu_b) = self.palm_friction.coefficient(u_b);
+        let g_mub = scale(dmu_b, &g_ub);
+
+        let px_k = s - mu_b * c;
+        let mut g_pxk = scale(-c, &g_mub);
+        g_pxk[0] += c + mu_b * s;
+        let p_x = n * px_k;
+        let g_px = axpy(px_k, &g_n, &scale(n, &g_pxk));
+
+        let py_k = c + mu_b * s;
+        let mut g_pyk = scale(s, &g_mub);
+        g_pyk[0] += -s + mu_b * c;
+        let r_n = self.weight + n * py_k;
+        let g_rn = axpy(py_k, &g_n, &scale(n, &g_pyk));
+
+        let (mu_a, dmu_a) = self.ground_friction.coefficient(v);
+        let f_a = -mu_a * r_n.abs();
+        let mut g_fa = scale(-mu_a * r_n.signum(), &g_rn);
+        g_fa[2] -= dmu_a * r_n.abs();
+
+        // 1000: N/kg = m/s^2 = 1000 mm/s^2.
+        let k = 1000.0 / self.mass;
+        let accel = k * (p_x + f_a);
+        if let Some(j) = jac {
+            j[..3].copy_from_slice(&g_td);
+            j[3..6].copy_from_slice(&[0.0, 0.0, 1.0]);
+            let g_acc = scale(k, &axpy(1.0, &g_px, &g_fa));
+            j[6..9].copy_from_slice(&g_acc);
+        }
+        Forces {
+            theta_dot,
+            penetration: delta,
+            normal: n,
+            palm_friction: mu_b * n,
+            ground_normal: r_n,
+            ground_friction: f_a,
+            accel,
+        }
+    }
+
+    /// The right-hand side f(y) = (theta_dot, v, v_dot).
+    pub fn rhs(&self, y: &[f64], dy: &mut [f64]) {
+        let f = self.evaluate(y, None);
+        dy[0] = f.theta_dot;
+        dy[1] = y[2];
+        dy[2] = f.accel;
+    }
+}
+
+impl OdeSystem for Scene {
+    fn dim(&self) -> usize {
+        3
+    }
+    fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+        Scene::rhs(self, y, dy);
+    }
+    fn jacobian(&self, _t: f64, y: &[f64], jac: &mut [f64]) {
+        self.evaluate(y, Some(jac));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn jacobian_matches_finite_differences() {
+        let scene = SceneParams::default();
+        for drive in [Drive::Motion, Drive::Force] {
+            let d = DynamicsParams {
+                drive,
+                ..Default::default()
+            };
+            let sys = Scene::new(&scene, &d);
+            // In contact and sliding; in contact near the force limit; in the stiction band.
+            let th: f64 = 50_f64.to_radians();
+            let states = [
+                [th, sys.touching_x(th) - 0.05, 15.0],
+                [th, sys.touching_x(th) - 0.0585, 0.15],
+                [th, sys.touching_x(th) - 0.03, 0.05],
+            ];
+            let mut worst: f64 = 0.0;
+            for y in states {
+                let mut j = [0.0; 9];
+                sys.evaluate(&y, Some(&mut j));
+                for col in 0..3 {
+                    let hstep = 1e-7 * y[col].abs().max(1e-3);
+                    let (mut yp, mut ym) = (y, y);
+                    yp[col] += hstep;
+                    ym[col] -= hstep;
+                    let (mut fp, mut fm) = ([0.0; 3], [0.0; 3]);
+                    sys.rhs(&yp, &mut fp);
+                    sys.rhs(&ym, &mut fm);
+                    for row in 0..3 {
+                        let fd = (fp[row] - fm[row]) / (2.0 * hstep);
+                        let err = (j[3 * row + col] - fd).abs() / fd.abs().max(1.0);
+                        worst = worst.max(err);
+                        assert!(
+                            err < 1e-4,
+                            "{drive:?} {y:?} J[{row}][{col}] = {} vs {fd}",
+                            j[3 * row + col]
+                        );
+                    }
+                }
+            }
+            eprintln!("{drive:?}: worst relative Jacobian error {worst:.2e}");
+        }
+    }
+
+    #[test]
+    fn geometric_speed_is_the_rate_of_the_touching_position() {
+        for h in [0.0, 0.5] {
+            let d = DynamicsParams {
+                palm_offset_mm: h,
+                ..Default::default()
+            };
+            let sys = Scene::new(&SceneParams::default(), &d);
+            for deg in [30.0_f64, 45.0, 80.0] {
+                let th = deg.to_radians();
+                let e = 1e-6;
+                let fd = -sys.omega * (sys.touching_x(th + e) - sys.touching_x(th - e)) / (2.0 * e);
+                let v = sys.geometric_speed(th);
+                assert!((v - fd).abs() < 1e-6 * v, "h = {h}, {deg} deg: {v} vs {fd}");
+                if h == 0.0 {
+                    let paper = sys.radius * sys.omega / (2.0 * (0.5 * th).sin().powi(2));
+                    assert!((v - paper).abs() < 1e-12 * v);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn at_rest_in_light_contact_the_forces_are_corrected_eq1() {
+        // Palm sliding (u_B >> V_d), no damping: the ground reaction is the corrected Eq. 1.
+        let scene = SceneParams::default();
+        let d = DynamicsParams {
+            damping_n_s_per_mm: 0.0,
+            ..Default::default()
+        };
+        let sys = Scene::new(&scene, &d);
+        let th = 60_f64.to_radians();
+        let y = [th, sys.touching_x(th) - 0.05, 10.0];
+        let f = sys.evaluate(&y, None);
+        let push = f.normal / scene.alpha_palm().cos();
+        let p = SceneParams {
+            force_n: push,
+            ..scene
+        };
+        let g = crate::statics::ground_reaction(&p, th);
+        assert!(
+            (f.ground_normal - g.r_n_n).abs() < 1e-9 * g.r_n_n,
+            "{} vs {}",
+            f.ground_normal,
+            g.r_n_n
+        );
+        let p_x = f.accel * scene.mass_kg / 1000.0 - f.ground_friction;
+        assert!(
+            (p_x - g.r_t_n).abs() < 1e-9 * g.r_t_n.abs(),
+            "{p_x} vs {}",
+            g.r_t_n
+        );
+    }
+}

@@ -1,0 +1,212 @@
+//! The `solve --model dynamics` and `accuracy` commands, run as the real binary in a temp dir.
+
+use std::process::{Command, Output};
+
+use serde_json::Value;
+
+fn jamchart(dir: &std::path::Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_jamchart"))
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+#[test]
+fn solve_dynamics_json_has_the_statics_keys_and_its_own() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &[
+            "solve", "--model", "dynamics", "--mu", "0.4", "--format", "json",
+        ],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let doc: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let r = &doc["results"][0];
+    assert_eq!(r["model"], "dynamics");
+    assert_eq!(r["status"], "jams");
+    let x = r["x_jam_mm"].as_f64().unwrap();
+    assert!((x - 25.0).abs() <= 0.015 * 25.0, "{x}");
+    for key in [
+        "theta_jam_deg",
+        "elapsed_s",
+        "t_jam_s",
+        "steps",
+        "rhs_evals",
+        "jacobian_evals",
+    ] {
+        assert!(r[key].as_f64().is_some_and(f64::is_finite), "{key}: {r}");
+    }
+    assert_eq!(r["method"], "radau5");
+    assert_eq!(r["drive"], "motion");
+}
+
+#[test]
+fn solve_all_runs_statics_and_dynamics_and_text_says_how_long() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(dir.path(), &["solve", "--model", "all", "--drive", "force"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    assert!(
+        text.contains("statics: jams") && text.contains("dynamics: jams"),
+        "{text}"
+    );
+    assert!(text.contains("t_jam") && text.contains("took"), "{text}");
+}
+
+#[test]
+fn series_is_written_whole_with_units_in_the_header() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &[
+            "solve",
+            "--model",
+            "dynamics",
+            "--series",
+            "fig5.csv",
+            "--after-jam",
+            "0.01",
+        ],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let csv = std::fs::read_to_string(dir.path().join("fig5.csv")).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "t_s,theta_deg,x_mm,x_dot_mm_s,penetration_mm,normal_n,palm_friction_n,ground_normal_n,ground_friction_n"
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert!(rows.len() > 7000, "{}", rows.len());
+    assert!(
+        rows.iter()
+            .all(|r| r.len() == 9 && r.iter().all(|v| v.is_finite()))
+    );
+    // Nothing but the file is left behind (the temp file was renamed).
+    let names: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names.len(), 1, "{names:?}");
+}
+
+#[test]
+fn bad_dynamics_settings_exit_2_naming_key_and_flag() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases: &[(&[&str], &str, &str)] = &[
+        (&["--stiffness", "0"], "stiffness_n_per_mm_e", "--stiffness"),
+        (&["--exponent", "-1"], "exponent", "--exponent"),
+        (
+            &["--stiction-velocity", "0"],
+            "stiction_velocity_mm_s",
+            "--stiction-velocity",
+        ),
+        (
+            &["--friction-velocity", "0.05"],
+            "friction_velocity_mm_s",
+            "--friction-velocity",
+        ),
+        (&["--omega", "0"], "omega_deg_s", "--omega"),
+        (&["--omega", "-30"], "omega_deg_s", "--omega"),
+        (&["--rtol", "1"], "rtol", "--rtol"),
+        (&["--rtol", "0"], "rtol", "--rtol"),
+        (&["--atol", "2"], "atol", "--atol"),
+        (&["--mass", "0"], "mass_kg", "--mass"),
+    ];
+    for (flags, key, flag) in cases {
+        let mut args = vec!["solve", "--model", "dynamics"];
+        args.extend_from_slice(flags);
+        let o = jamchart(dir.path(), &args);
+        assert_eq!(o.status.code(), Some(2), "{flags:?}: {}", stdout(&o));
+        let err = stderr(&o);
+        assert!(
+            err.starts_with("jamchart: ") && err.contains(key) && err.contains(flag),
+            "{flags:?}: {err}"
+        );
+    }
+    let o = jamchart(
+        dir.path(),
+        &["solve", "--model", "dynamics", "--drive", "torque"],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("motion or force"), "{}", stderr(&o));
+}
+
+#[test]
+fn a_loose_tolerance_is_reported_inaccurate() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &[
+            "solve", "--model", "dynamics", "--rtol", "0.1", "--format", "json",
+        ],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let doc: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(doc["results"][0]["status"], "inaccurate");
+    assert!(
+        doc["results"][0]["cross_check"]
+            .as_str()
+            .unwrap()
+            .contains("rtol")
+    );
+}
+
+#[test]
+fn accuracy_writes_table_and_chart_data() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &[
+            "accuracy",
+            "--drive",
+            "force",
+            "--tolerances",
+            "1e-3,1e-5",
+            "--runs",
+            "1",
+            "--reference-rtol",
+            "1e-9",
+            "--format",
+            "csv",
+            "--out-dir",
+            "acc",
+        ],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let csv = stdout(&o);
+    assert!(
+        csv.starts_with("method,rtol,status,x_jam_mm,error_mm,rel_error,"),
+        "{csv}"
+    );
+    assert_eq!(csv.lines().count(), 5, "{csv}");
+    for name in ["accuracy.md", "accuracy.csv", "accuracy.json"] {
+        assert!(dir.path().join("acc").join(name).is_file(), "{name}");
+    }
+    let json: Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.path().join("acc/accuracy.json")).unwrap(),
+    )
+    .unwrap();
+    let rows = json["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 4);
+    for r in rows {
+        assert!(r["median_time_s"].as_f64().unwrap() > 0.0);
+        assert!(r["rel_error"].as_f64().unwrap() < 1e-2, "{r}");
+    }
+    let md = std::fs::read_to_string(dir.path().join("acc/accuracy.md")).unwrap();
+    assert!(
+        md.contains("| radau5 |") && md.contains("| dopri5 |"),
+        "{md}"
+    );
+}
