@@ -8,6 +8,7 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
+use crate::minnorm::MinNormSettings;
 use crate::model::SceneParams;
 
 /// A whole parameter file. Each model's issue adds its own section.
@@ -16,12 +17,16 @@ use crate::model::SceneParams;
 pub struct Config {
     /// The scene: frictions, disc, push, palm (section `[scene]`).
     pub scene: SceneParams,
+    /// The minimum-norm model: formulation, bisection tolerance, program settings (sections
+    /// `[min_norm]` and `[min_norm.qp]`).
+    pub min_norm: MinNormSettings,
 }
 
 impl Config {
     /// Checks every section; runs before any computation.
     pub fn validate(&self) -> Result<()> {
-        self.scene.validate()
+        self.scene.validate()?;
+        self.min_norm.validate()
     }
 
     /// Reads and parses a TOML file (it is not validated here: flags may still override it).

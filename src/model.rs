@@ -52,9 +52,23 @@ impl Default for SceneParams {
 impl SceneParams {
     /// Checks every field; the error names the TOML key and the offending value.
     pub fn validate(&self) -> Result<()> {
-        finite_at_least("mu_ground", self.mu_ground, 0.0, "friction coefficients are >= 0")?;
-        finite_at_least("mu_palm", self.mu_palm, 0.0, "friction coefficients are >= 0")?;
-        finite_positive("radius_mm", self.radius_mm, "the disc radius must be > 0 mm")?;
+        finite_at_least(
+            "mu_ground",
+            self.mu_ground,
+            0.0,
+            "friction coefficients are >= 0",
+        )?;
+        finite_at_least(
+            "mu_palm",
+            self.mu_palm,
+            0.0,
+            "friction coefficients are >= 0",
+        )?;
+        finite_positive(
+            "radius_mm",
+            self.radius_mm,
+            "the disc radius must be > 0 mm",
+        )?;
         finite_at_least("mass_kg", self.mass_kg, 0.0, "the mass must be >= 0 kg")?;
         finite_positive("force_n", self.force_n, "the palm's push must be > 0 N")?;
         finite_at_least(
@@ -175,7 +189,10 @@ mod tests {
             let r = 10.0;
             let eq2 = r * (1.0 + t.cos()) / t.tan() + r * t.sin();
             let x = disc_position_mm(r, t);
-            assert!((eq2 - x).abs() < 1e-12 * x.abs().max(1.0), "{deg}: {eq2} vs {x}");
+            assert!(
+                (eq2 - x).abs() < 1e-12 * x.abs().max(1.0),
+                "{deg}: {eq2} vs {x}"
+            );
             assert!((palm_angle_at(r, x) - t).abs() < 1e-14);
         }
     }
@@ -192,12 +209,22 @@ mod tests {
             start_angle_deg: 180.0,
             ..Default::default()
         };
-        assert!(p.validate().unwrap_err().to_string().contains("start_angle_deg"));
+        assert!(
+            p.validate()
+                .unwrap_err()
+                .to_string()
+                .contains("start_angle_deg")
+        );
         let p = SceneParams {
             mu_palm: f64::NAN,
             ..Default::default()
         };
-        assert!(p.validate().unwrap_err().to_string().contains("mu_palm = NaN"));
+        assert!(
+            p.validate()
+                .unwrap_err()
+                .to_string()
+                .contains("mu_palm = NaN")
+        );
         assert!(SceneParams::default().validate().is_ok());
     }
 }
