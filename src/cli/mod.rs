@@ -2,6 +2,7 @@
 //! per subcommand. Nothing here computes physics.
 
 mod args;
+mod min_norm;
 mod solve;
 mod table;
 

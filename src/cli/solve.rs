@@ -8,6 +8,7 @@ use serde::Serialize;
 use serde_json::{Map, Value, json};
 
 use super::args::{ModelChoice, OutputFormat, SceneArgs};
+use super::min_norm;
 use crate::config::Config;
 use crate::error::{Error, Result};
 use crate::model::JamStatus;
@@ -24,6 +25,19 @@ pub struct SolveArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
     pub format: OutputFormat,
+    /// Min-norm formulation: how the disc's moment is carried.
+    ///
+    /// translational (the paper's): the disc rides a translational joint that carries the
+    /// moment; rolling: the disc may rotate and friction at the ground and the palm carries it.
+    /// Overrides [min_norm] formulation of --config [default: translational]
+    #[arg(long, value_enum, value_name = "FORMULATION")]
+    pub formulation: Option<min_norm::FormulationArg>,
+    /// Print the min-norm solver's convergence trace at theta_jam (the paper's Fig. 4).
+    ///
+    /// clarabel's objective phi^2 (N^2) and relative primal and dual residuals per
+    /// interior-point iteration; in JSON the array `trace`.
+    #[arg(long)]
+    pub trace: bool,
 }
 
 /// One model's answer as `solve` prints it; `details` holds the model's own extra keys.
@@ -39,14 +53,12 @@ pub struct ModelRecord {
 }
 
 pub fn run(a: &SolveArgs) -> Result<String> {
-    let config = a.scene.resolve()?;
+    let mut config = a.scene.resolve()?;
+    if let Some(f) = a.formulation {
+        config.min_norm.formulation = f.into();
+    }
     let models: &[ModelChoice] = match a.model {
-        ModelChoice::All => &[ModelChoice::Statics],
-        ModelChoice::MinNorm => {
-            return Err(Error::Unsupported(
-                "the min-norm model is not built yet; use --model statics".into(),
-            ));
-        }
+        ModelChoice::All => &[ModelChoice::Statics, ModelChoice::MinNorm],
         ModelChoice::Dynamics => {
             return Err(Error::Unsupported(
                 "the dynamics model is not built yet; use --model statics".into(),
@@ -54,7 +66,10 @@ pub fn run(a: &SolveArgs) -> Result<String> {
         }
         ref m => std::slice::from_ref(m),
     };
-    let results: Vec<ModelRecord> = models.iter().map(|m| solve_one(*m, &config)).collect();
+    let results = models
+        .iter()
+        .map(|m| solve_one(*m, &config, a.trace))
+        .collect::<Result<Vec<ModelRecord>>>()?;
     Ok(match a.format {
         OutputFormat::Json => {
             let doc = json!({ "inputs": config.scene, "results": results });
@@ -64,8 +79,9 @@ pub fn run(a: &SolveArgs) -> Result<String> {
     })
 }
 
-fn solve_one(model: ModelChoice, config: &Config) -> ModelRecord {
-    match model {
+fn solve_one(model: ModelChoice, config: &Config, trace: bool) -> Result<ModelRecord> {
+    Ok(match model {
+        ModelChoice::MinNorm => min_norm::record(config, trace)?,
         ModelChoice::Statics => {
             let t0 = Instant::now();
             let s = statics::solve(&config.scene);
@@ -85,7 +101,7 @@ fn solve_one(model: ModelChoice, config: &Config) -> ModelRecord {
             }
         }
         other => unreachable!("model {other:?} is refused before solving"),
-    }
+    })
 }
 
 fn render_text(config: &Config, results: &[ModelRecord]) -> String {
@@ -140,6 +156,9 @@ fn render_text(config: &Config, results: &[ModelRecord]) -> String {
             _ => {}
         }
         let d = &r.details;
+        if r.model == "min-norm" {
+            min_norm::render_details(&mut s, d);
+        }
         if let (Some(t), Some(x)) = (
             d.get("theta_rigid_deg").and_then(Value::as_f64),
             d.get("x_rigid_mm").and_then(Value::as_f64),

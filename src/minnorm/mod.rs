@@ -95,7 +95,7 @@
 //! interval [0, theta_jam] in both formulations (above), so if the disc is held at the palm's
 //! reach (x = palm length) the boundary lies between the reach and the start and is bisected to
 //! `bisection_tol_rad`; theta_jam is the held end of the last bracket. If not, halving the
-//! angle tells "beyond reach" (some held angle further out) from "never jams".
+//! angle down to 1e-6 rad tells "beyond reach" (some held angle further out) from "never jams".
 
 mod contact;
 mod exact;

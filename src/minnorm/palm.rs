@@ -5,7 +5,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::contact::{Contact, ContactProblem, Joint, Space, Wrench};
-use super::qp::{self, ContactSolution, HoldStatus, QpSettings};
+use super::qp::{self, Backend, ContactSolution, HoldStatus, QpSettings};
 use crate::error::{Error, Result};
 use crate::model::{JamStatus, SceneParams, disc_position_mm, palm_angle_at};
 
@@ -138,15 +138,18 @@ pub struct PalmSolution {
     pub iterations: u32,
     /// Solves that ended undetermined (counted as not held by the bisection).
     pub undetermined_solves: u32,
+    /// The solver that answered the last solve (the exact path unless it is switched off).
+    pub backend: Backend,
     /// The held solution at theta_jam (the contact forces at the jam), if the disc jams or is
     /// jammed at start.
     pub at_jam: Option<ContactSolution>,
 }
 
-/// At most this many halvings of the palm angle below the palm's reach decide between
-/// "beyond reach" and "never jams": a jam below 2^-40 of the reach angle would lie 1e12 times
-/// farther than the palm's end.
-const HALVINGS: u32 = 40;
+/// The smallest palm angle searched, in rad. Below it (x > 2e6 r) a jam cannot be told from
+/// the solvers' tolerance: the push's tangential part, F sin(theta), is within 1e-6 F of zero,
+/// and clarabel's feasibility tolerance is 1e-8 of the load. A jam so far out is reported as
+/// never_jams (the statics call it beyond_reach; only mu below about 5e-7 gets there).
+pub const THETA_FLOOR_RAD: f64 = 1e-6;
 
 struct Search<'a> {
     p: &'a SceneParams,
@@ -159,6 +162,7 @@ impl Search<'_> {
         let sol = qp::solve(&palm_problem(self.p, theta, self.s.formulation), &self.s.qp)?;
         self.out.solves += 1;
         self.out.iterations += sol.iterations;
+        self.out.backend = sol.backend;
         match sol.status {
             HoldStatus::Held => Ok(Some(sol)),
             HoldStatus::NotHeld => Ok(None),
@@ -181,7 +185,8 @@ impl Search<'_> {
 
 /// Solves the palm scene by the minimum-norm model: held at the start angle -> jammed at start;
 /// else bracket the boundary between the palm's reach (x = palm length) and the start and bisect
-/// it to `bisection_tol_rad`; else halve the angle to tell "beyond reach" from "never jams".
+/// it to `bisection_tol_rad`; else halve the angle down to [`THETA_FLOOR_RAD`] to tell "beyond
+/// reach" from "never jams".
 ///
 /// Assumes (proved in the module docs for both formulations) that below the start angle the
 /// held angles form one interval reaching down to 0. `p` and `s` are validated here.
@@ -199,6 +204,7 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
             solves: 0,
             iterations: 0,
             undetermined_solves: 0,
+            backend: Backend::Clarabel,
             at_jam: None,
         },
     };
@@ -224,8 +230,8 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
         }
     }
     let mut theta = reach.min(start);
-    for _ in 0..HALVINGS {
-        theta *= 0.5;
+    while theta > THETA_FLOOR_RAD {
+        theta = (0.5 * theta).max(THETA_FLOOR_RAD);
         if search.eval(theta)?.is_some() {
             search.out.status = JamStatus::BeyondReach;
             return Ok(search.out);
