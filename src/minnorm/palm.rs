@@ -213,21 +213,21 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
         return Ok(search.jam_at(JamStatus::JammedAtStart, start, sol));
     }
     let reach = palm_angle_at(p.radius_mm, p.palm_length_mm);
-    if reach < start {
-        if let Some(mut held) = search.eval(reach)? {
-            let (mut lo, mut hi) = (reach, start);
-            while hi - lo > s.bisection_tol_rad {
-                let mid = 0.5 * (lo + hi);
-                match search.eval(mid)? {
-                    Some(sol) => {
-                        lo = mid;
-                        held = sol;
-                    }
-                    None => hi = mid,
+    if reach < start
+        && let Some(mut held) = search.eval(reach)?
+    {
+        let (mut lo, mut hi) = (reach, start);
+        while hi - lo > s.bisection_tol_rad {
+            let mid = 0.5 * (lo + hi);
+            match search.eval(mid)? {
+                Some(sol) => {
+                    lo = mid;
+                    held = sol;
                 }
+                None => hi = mid,
             }
-            return Ok(search.jam_at(JamStatus::Jams, lo, held));
         }
+        return Ok(search.jam_at(JamStatus::Jams, lo, held));
     }
     let mut theta = reach.min(start);
     while theta > THETA_FLOOR_RAD {

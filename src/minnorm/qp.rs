@@ -233,7 +233,7 @@ fn solve_lowered(low: &Lowered, settings: &QpSettings) -> ContactSolution {
     let sol = &solver.solution;
     let trace: Vec<TracePoint> = trace
         .lock()
-        .map(|t| t.iter().copied().filter(|p| finite_point(p)).collect())
+        .map(|t| t.iter().copied().filter(finite_point).collect())
         .unwrap_or_default();
     let status = match sol.status {
         SolverStatus::Solved | SolverStatus::AlmostSolved => HoldStatus::Held,
