@@ -31,7 +31,7 @@ impl Config {
 
     /// Reads and parses a TOML file (it is not validated here: flags may still override it).
     pub fn load(path: &Path) -> Result<Config> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+        let text = std::fs::read_to_string(path).map_err(|e| Error::io("read", path, e))?;
         parse_toml(&text, path)
     }
 }

@@ -56,26 +56,35 @@ impl SceneParams {
             "mu_ground",
             self.mu_ground,
             0.0,
-            "friction coefficients are >= 0",
+            "a friction coefficient must be a finite number >= 0",
         )?;
         finite_at_least(
             "mu_palm",
             self.mu_palm,
             0.0,
-            "friction coefficients are >= 0",
+            "a friction coefficient must be a finite number >= 0",
         )?;
         finite_positive(
             "radius_mm",
             self.radius_mm,
-            "the disc radius must be > 0 mm",
+            "the disc radius must be a finite number > 0 mm",
         )?;
-        finite_at_least("mass_kg", self.mass_kg, 0.0, "the mass must be >= 0 kg")?;
-        finite_positive("force_n", self.force_n, "the palm's push must be > 0 N")?;
+        finite_at_least(
+            "mass_kg",
+            self.mass_kg,
+            0.0,
+            "the mass must be a finite number >= 0 kg",
+        )?;
+        finite_positive(
+            "force_n",
+            self.force_n,
+            "the palm's push must be a finite number > 0 N",
+        )?;
         finite_at_least(
             "gravity_m_s2",
             self.gravity_m_s2,
             0.0,
-            "gravity must be >= 0 m/s^2",
+            "gravity must be a finite number >= 0 m/s^2",
         )?;
         let s = self.start_angle_deg;
         if !(s.is_finite() && s > 0.0 && s < 180.0) {
@@ -88,7 +97,7 @@ impl SceneParams {
         finite_positive(
             "palm_length_mm",
             self.palm_length_mm,
-            "the palm length must be > 0 mm",
+            "the palm length must be a finite number > 0 mm",
         )
     }
 

@@ -114,7 +114,7 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
     }
     let x_jam = disc_position_mm(p.radius_mm, theta_jam);
     // x_jam may overflow to +inf for a vanishing wedge angle; that is beyond any palm.
-    if !(x_jam <= p.palm_length_mm) {
+    if x_jam.is_nan() || x_jam > p.palm_length_mm {
         out.status = JamStatus::BeyondReach;
         return out;
     }

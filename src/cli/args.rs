@@ -20,34 +20,34 @@ pub struct SceneArgs {
     ///
     /// The paper's single mu; --mu-ground or --mu-palm given as well take precedence for their
     /// contact. Dimensionless, >= 0 [default: 0.4]
-    #[arg(long, value_name = "MU")]
+    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
     pub mu: Option<f64>,
     /// Friction coefficient at the ground contact A [default: 0.4].
-    #[arg(long, value_name = "MU")]
+    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
     pub mu_ground: Option<f64>,
     /// Friction coefficient at the palm contact B [default: 0.4].
-    #[arg(long, value_name = "MU")]
+    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
     pub mu_palm: Option<f64>,
     /// Disc radius r in mm [default: 10].
-    #[arg(long, value_name = "MM")]
+    #[arg(long, value_name = "MM", allow_negative_numbers = true)]
     pub radius: Option<f64>,
     /// Palm push F in N [default: 200].
     ///
     /// The magnitude of the palm's force on the disc while it slides; F -> infinity is a palm
     /// driven by prescribed motion.
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub force: Option<f64>,
     /// Disc mass m in kg [default: 1].
-    #[arg(long, value_name = "KG")]
+    #[arg(long, value_name = "KG", allow_negative_numbers = true)]
     pub mass: Option<f64>,
     /// Gravitational acceleration g in m/s^2 [default: 9.806].
-    #[arg(long, value_name = "M/S^2")]
+    #[arg(long, value_name = "M/S^2", allow_negative_numbers = true)]
     pub gravity: Option<f64>,
     /// Palm angle where the push starts, in deg, in (0, 180) [default: 90].
-    #[arg(long, value_name = "DEG")]
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true)]
     pub start_angle: Option<f64>,
     /// Palm length in mm; a jam beyond its end is never reached [default: 150].
-    #[arg(long, value_name = "MM")]
+    #[arg(long, value_name = "MM", allow_negative_numbers = true)]
     pub palm_length: Option<f64>,
 }
 
@@ -86,8 +86,8 @@ impl SceneArgs {
 /// The flag that sets a TOML key, for error messages.
 pub fn flag_for_key(key: &str) -> Option<&'static str> {
     Some(match key {
-        "mu_ground" => "--mu-ground",
-        "mu_palm" => "--mu-palm",
+        "mu_ground" => "--mu-ground or --mu",
+        "mu_palm" => "--mu-palm or --mu",
         "radius_mm" => "--radius",
         "force_n" => "--force",
         "mass_kg" => "--mass",

@@ -75,6 +75,11 @@ fn clap_exit(e: clap::Error) -> i32 {
             let _ = e.print();
             0
         }
+        // `jamchart` alone: the help is the answer, but it is still a usage error.
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            eprint!("{}", e.render());
+            2
+        }
         _ => {
             let rendered = e.render().to_string();
             let first = rendered.lines().next().unwrap_or("invalid arguments");
