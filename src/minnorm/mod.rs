@@ -95,7 +95,9 @@
 //! interval [0, theta_jam] in both formulations (above), so if the disc is held at the palm's
 //! reach (x = palm length) the boundary lies between the reach and the start and is bisected to
 //! `bisection_tol_rad`; theta_jam is the held end of the last bracket. If not, halving the
-//! angle down to 1e-6 rad tells "beyond reach" (some held angle further out) from "never jams".
+//! angle tells "beyond reach" (some held angle further out) from "never jams", down to the
+//! angle where the push's sideways part F sin(theta) is 1e-7 of the largest load (below it
+//! "held" is a decision at the solvers' tolerance, [`palm::FLOOR_PUSH_FRACTION`]).
 
 mod contact;
 mod exact;

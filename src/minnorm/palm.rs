@@ -145,11 +145,20 @@ pub struct PalmSolution {
     pub at_jam: Option<ContactSolution>,
 }
 
-/// The smallest palm angle searched, in rad. Below it (x > 2e6 r) a jam cannot be told from
-/// the solvers' tolerance: the push's tangential part, F sin(theta), is within 1e-6 F of zero,
-/// and clarabel's feasibility tolerance is 1e-8 of the load. A jam so far out is reported as
-/// never_jams (the statics call it beyond_reach; only mu below about 5e-7 gets there).
-pub const THETA_FLOOR_RAD: f64 = 1e-6;
+/// The sideways part of the push, F sin(theta), as a fraction of the largest load (F or m g)
+/// below which the search for a held angle stops: there a jam cannot be told from the solvers'
+/// tolerance (1e-8 of the largest load for clarabel, 1e-10 for the exact path; ten times
+/// clarabel's). The smallest angle searched is asin(1e-7 max(F, m g) / F) >= 1e-7 rad
+/// (x > 2e7 r); a jam further out is reported as never_jams (the statics call it beyond_reach;
+/// only mu below about 1e-7 max(1, m g / F) gets there).
+pub const FLOOR_PUSH_FRACTION: f64 = 1e-7;
+
+/// The smallest palm angle searched, in rad; see [`FLOOR_PUSH_FRACTION`].
+pub fn theta_floor_rad(p: &SceneParams) -> f64 {
+    (FLOOR_PUSH_FRACTION * p.force_n.max(p.weight_n()) / p.force_n)
+        .min(1.0)
+        .asin()
+}
 
 struct Search<'a> {
     p: &'a SceneParams,
@@ -185,7 +194,7 @@ impl Search<'_> {
 
 /// Solves the palm scene by the minimum-norm model: held at the start angle -> jammed at start;
 /// else bracket the boundary between the palm's reach (x = palm length) and the start and bisect
-/// it to `bisection_tol_rad`; else halve the angle down to [`THETA_FLOOR_RAD`] to tell "beyond
+/// it to `bisection_tol_rad`; else halve the angle down to [`theta_floor_rad`] to tell "beyond
 /// reach" from "never jams".
 ///
 /// Assumes (proved in the module docs for both formulations) that below the start angle the
@@ -229,9 +238,10 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
         }
         return Ok(search.jam_at(JamStatus::Jams, lo, held));
     }
+    let floor = theta_floor_rad(p);
     let mut theta = reach.min(start);
-    while theta > THETA_FLOOR_RAD {
-        theta = (0.5 * theta).max(THETA_FLOOR_RAD);
+    while theta > floor {
+        theta = (0.5 * theta).max(floor);
         if search.eval(theta)?.is_some() {
             search.out.status = JamStatus::BeyondReach;
             return Ok(search.out);
