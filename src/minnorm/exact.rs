@@ -24,9 +24,12 @@ use super::qp::{Backend, ContactSolution, HoldStatus, assemble};
 
 /// At most this many cone rows (four frictional planar contacts): 2^8 active sets.
 const MAX_CONE_ROWS: usize = 8;
-/// Feasibility and KKT tolerance in the scaled problem, where forces and lever arms are of
-/// order one; far below clarabel's 1e-8 so the fast path is never the less accurate one.
+/// Feasibility tolerance in the scaled problem, where loads and lever arms are of order one,
+/// relative to the largest force found; far below clarabel's 1e-8 so the fast path is never
+/// the less accurate one.
 const TOL: f64 = 1e-10;
+/// Accepted residual of a KKT solve, relative to the solution: 1e4 machine epsilons.
+const ROUNDOFF: f64 = 1e-12;
 
 /// Whether the exact path handles this problem (planar, linear cones, small).
 pub(crate) fn applies(low: &Lowered) -> bool {
@@ -72,11 +75,12 @@ fn determined(low: &Lowered) -> Option<DVector<f64>> {
 }
 
 fn equalities_hold(low: &Lowered, z: &DVector<f64>) -> bool {
-    z.iter().all(|v| v.is_finite()) && (&low.eq * z - &low.eq_rhs).amax() <= TOL
+    z.iter().all(|v| v.is_finite()) && (&low.eq * z - &low.eq_rhs).amax() <= TOL * (1.0 + z.amax())
 }
 
 fn cones_hold(low: &Lowered, z: &DVector<f64>) -> bool {
-    (&low.cone_rows * z).iter().all(|&g| g >= -TOL)
+    let tol = TOL * (1.0 + z.amax());
+    (&low.cone_rows * z).iter().all(|&g| g >= -tol)
 }
 
 /// The KKT point for active set `mask`, if it is feasible with non-negative multipliers.
@@ -108,9 +112,13 @@ fn kkt_point(low: &Lowered, mask: u32) -> Option<DVector<f64>> {
     let mut rhs = DVector::zeros(k);
     rhs.rows_mut(n, m_e).copy_from(&low.eq_rhs);
 
-    // The right-hand side is of order one in the scaled problem: an absolute test.
-    let consistent =
-        |sol: &DVector<f64>| sol.iter().all(|v| v.is_finite()) && (&kkt * sol - &rhs).amax() <= TOL;
+    // Roundoff grows with the solution (a wedged body's forces and multipliers may be orders
+    // above the load): a test relative to it. A solution of a singular system that is merely
+    // close is caught by the checks of z below.
+    let consistent = |sol: &DVector<f64>| {
+        sol.iter().all(|v| v.is_finite())
+            && (&kkt * sol - &rhs).amax() <= ROUNDOFF * (1.0 + sol.amax())
+    };
     let sol = match kkt.clone().lu().solve(&rhs) {
         Some(s) if consistent(&s) => s,
         _ => {
@@ -122,6 +130,6 @@ fn kkt_point(low: &Lowered, mask: u32) -> Option<DVector<f64>> {
         }
     };
     let z = sol.rows(0, n).into_owned();
-    let multipliers_ok = (0..active.len()).all(|a| -sol[n + m_e + a] >= -TOL);
+    let multipliers_ok = (0..active.len()).all(|a| -sol[n + m_e + a] >= -TOL * (1.0 + sol.amax()));
     (multipliers_ok && cones_hold(low, &z) && equalities_hold(low, &z)).then_some(z)
 }
