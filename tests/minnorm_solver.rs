@@ -284,8 +284,9 @@ proptest! {
         }
         // The forces are unique. clarabel stops within a relative gap of 1e-8 on phi^2, and
         // phi^2 grows quadratically away from the minimum, so its forces may be off by up to
-        // sqrt(1e-8) = 1e-4 of phi; the exact minimum is never above clarabel's beyond the gap.
+        // sqrt(1e-8) = 1e-4 of phi. The exact minimum is not above clarabel's beyond what
+        // clarabel's own 1e-8 infeasibility can buy (worst seen on 20,000 problems: 6.3e-8).
         prop_assert!(c.force_diff_rel <= 1e-4, "forces differ by {:e}: {:?}", c.force_diff_rel, c);
-        prop_assert!(c.objective_excess_rel <= 1e-8, "exact phi^2 above clarabel's: {:?}", c);
+        prop_assert!(c.objective_excess_rel <= 1e-6, "exact phi^2 above clarabel's: {:?}", c);
     }
 }
