@@ -260,7 +260,7 @@ fn check_held(p: &ContactProblem, sol: &ContactSolution, rel: f64) -> Result<(),
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(300))]
+    #![proptest_config(ProptestConfig::with_cases(2000))]
 
     #[test]
     fn exact_path_agrees_with_clarabel(p in planar_problem()) {

@@ -108,7 +108,7 @@ pub struct ContactForce {
     /// The force in the problem's frame, in N.
     pub world_n: [f64; 3],
     /// Friction utilisation |f_t| / (mu f_n): 0 free of friction, 1 at the point of slipping
-    /// (0 where f_n = 0 or mu = 0).
+    /// (0 where mu = 0 or f_n is below 1e-12 of the largest load).
     pub utilisation: f64,
 }
 
@@ -296,7 +296,9 @@ pub(crate) fn assemble(
             }
             let world = c.normal * f_n + c.tangent[0] * f_t[0] + c.tangent[1] * f_t[1];
             let tangential = f_t[0].hypot(f_t[1]);
-            let utilisation = if c.mu > 0.0 && f_n > 0.0 {
+            // A contact carrying next to nothing (roundoff of the largest load) is not slipping;
+            // dividing its roundoff by its roundoff would report noise, or overflow.
+            let utilisation = if c.mu > 0.0 && f_n > 1e-12 * fs {
                 tangential / (c.mu * f_n)
             } else {
                 0.0
