@@ -161,6 +161,21 @@ fn infeasible_is_a_status_and_zero_load_needs_no_force() {
         assert_eq!(sol.status, HoldStatus::NotHeld, "{:?}", sol.backend);
         assert!(sol.forces.is_empty());
     }
+    // A bilateral force joint along x (a guide) takes the push; it is not in the objective, so
+    // the contact carries only the weight.
+    let guided = ContactProblem {
+        joints: vec![Joint::Force {
+            position_mm: [0.0, 5.0, 0.0],
+            direction: [2.0, 0.0, 0.0],
+        }],
+        load: Wrench::force_at([0.0, 5.0, 0.0], [1.0, -10.0, 0.0]),
+        ..p.clone()
+    };
+    for sol in both(&guided) {
+        assert_eq!(sol.status, HoldStatus::Held, "{:?}", sol.backend);
+        assert!((sol.joint_reactions[0] + 1.0).abs() < 1e-6, "{sol:?}");
+        assert!((sol.forces[0].normal_n - 10.0).abs() < 1e-6, "{sol:?}");
+    }
     let free = ContactProblem {
         load: Wrench::default(),
         ..p
