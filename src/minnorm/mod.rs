@@ -59,10 +59,18 @@
 //! what the two frictions leave of the moment, lambda = r (R_t - F sin alpha_p). Feasibility is
 //! R_n >= 0 and |R_t| <= mu_g R_n: the Eq. 1 test, with the lower edge R_t >= -mu_g R_n added
 //! (the palm's friction dragging the disc back to the hinge). For mu_p <= mu_g that edge never
-//! binds: for theta < alpha_p, |R_t| / (mu_g R_n) <= tan(alpha_p - theta) / tan(alpha_g) < 1.
-//! So theta_jam is the closed form's, and the held angles below the start are [0, theta_jam].
-//! With mu_g = 0 < mu_p the two differ: the statics call theta <= alpha_p jammed (R_t <= 0),
-//! the min-norm model holds the disc only where R_t = 0 exactly, so it never jams.
+//! binds: for theta < alpha_p, |R_t| / (mu_g R_n) <= tan(alpha_p - theta) / mu_g <= 1. Then the
+//! held angles below the start are [0, theta_jam] with the closed form's theta_jam. For
+//! mu_p > mu_g the lower edge binds below theta_low (= alpha_p - alpha_g for m = 0), and the
+//! held angles are the band [theta_low, theta_jam], at least 2 alpha_g wide: the disc still
+//! jams at the closed form's theta_jam, reached first while the palm closes. A start below
+//! theta_low differs: the statics call it jammed at start (their test is one-sided), the
+//! min-norm model does not hold the disc there (the sliding palm's friction would drag it back
+//! into the wedge, outside the premise of a sliding palm) and, finding no held angle further
+//! down, reports never_jams. With
+//! mu_g = 0 < mu_p the band is empty and the two differ: the statics call theta <= alpha_p
+//! jammed (R_t <= 0), the min-norm model holds the disc only where R_t = 0 exactly, so it never
+//! jams.
 //!
 //! ## (b) Rolling (beyond the paper)
 //!
@@ -99,13 +107,15 @@
 //!
 //! ## theta_jam
 //!
-//! Held at the start angle: jammed at start. Otherwise the held angles below the start are an
-//! interval [0, theta_jam] in both formulations (above), so if the disc is held at the palm's
-//! reach (x = palm length) the boundary lies between the reach and the start and is bisected to
-//! `bisection_tol_rad`; theta_jam is the held end of the last bracket. If not, halving the
-//! angle tells "beyond reach" (some held angle further out) from "never jams", down to the
-//! angle where the push's sideways part F sin(theta) is 1e-7 of the largest load (below it
-//! "held" is a decision at the solvers' tolerance, [`palm::FLOOR_PUSH_FRACTION`]).
+//! Held at the start angle: jammed at start. Otherwise the held angles below the start are
+//! one interval, [0, theta_jam] or a band [theta_low, theta_jam] (above). If the disc is held at
+//! the palm's reach (x = palm length) the boundary lies between the reach and the start;
+//! otherwise a downward scan from the start in `scan_step_deg` steps (0.5 deg) brackets the
+//! band's top. The bracket is bisected to `bisection_tol_rad`; theta_jam is its held end. With
+//! no held angle within reach, the scan goes on below the reach (halving its last step) to tell
+//! "beyond reach" (some held angle further out) from "never jams", down to the angle where the
+//! push's sideways part F sin(theta) is 1e-7 of the largest load (below it "held" is a decision
+//! at the solvers' tolerance, [`palm::FLOOR_PUSH_FRACTION`]).
 
 mod contact;
 mod exact;

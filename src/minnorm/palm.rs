@@ -49,6 +49,10 @@ pub struct MinNormSettings {
     /// Width in rad at which the bisection on the held / not-held boundary stops
     /// (default: 1e-9).
     pub bisection_tol_rad: f64,
+    /// Step in degrees of the downward scan from the start angle, used when the disc is not held
+    /// at the palm's reach (the held angles then form a band, e.g. mu_palm > mu_ground; a band
+    /// narrower than the step may be missed) (default: 0.5).
+    pub scan_step_deg: f64,
     /// The program's settings (section `[min_norm.qp]`).
     pub qp: QpSettings,
 }
@@ -58,6 +62,9 @@ impl Default for MinNormSettings {
         MinNormSettings {
             formulation: Formulation::Translational,
             bisection_tol_rad: 1e-9,
+            // The band of (a) is at least 2 atan(mu_ground) wide: 0.5 deg finds it for
+            // mu_ground >= 0.005.
+            scan_step_deg: 0.5,
             qp: QpSettings::default(),
         }
     }
@@ -73,6 +80,14 @@ impl MinNormSettings {
                 "min_norm.bisection_tol_rad",
                 t,
                 "the bisection tolerance lies in [1e-15, 0.1] rad, e.g. 1e-9",
+            ));
+        }
+        let st = self.scan_step_deg;
+        if !(st.is_finite() && st > 0.0 && st <= 10.0) {
+            return Err(Error::invalid(
+                "min_norm.scan_step_deg",
+                st,
+                "the scan step lies in (0, 10] deg, e.g. 0.5",
             ));
         }
         self.qp.validate()
@@ -193,12 +208,14 @@ impl Search<'_> {
 }
 
 /// Solves the palm scene by the minimum-norm model: held at the start angle -> jammed at start;
-/// else bracket the boundary between the palm's reach (x = palm length) and the start and bisect
-/// it to `bisection_tol_rad`; else halve the angle down to [`theta_floor_rad`] to tell "beyond
-/// reach" from "never jams".
+/// else bracket the first held angle below the start within the palm's reach (x <= palm
+/// length): the reach itself if held there, else a downward scan in `scan_step_deg` steps; and
+/// bisect the boundary to `bisection_tol_rad`. With no held angle within reach, scan on (halving
+/// the last step) down to [`theta_floor_rad`] to tell "beyond reach" from "never jams".
 ///
-/// Assumes (proved in the module docs for both formulations) that below the start angle the
-/// held angles form one interval reaching down to 0. `p` and `s` are validated here.
+/// The held angles below the start are one interval, [0, theta_jam] or a band
+/// [theta_low, theta_jam] (module docs), so each bracket holds one boundary. `p` and `s` are
+/// validated here.
 pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
     p.validate()?;
     s.validate()?;
@@ -222,26 +239,51 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
         return Ok(search.jam_at(JamStatus::JammedAtStart, start, sol));
     }
     let reach = palm_angle_at(p.radius_mm, p.palm_length_mm);
-    if reach < start
-        && let Some(mut held) = search.eval(reach)?
-    {
-        let (mut lo, mut hi) = (reach, start);
-        while hi - lo > s.bisection_tol_rad {
-            let mid = 0.5 * (lo + hi);
-            match search.eval(mid)? {
-                Some(sol) => {
-                    lo = mid;
-                    held = sol;
+    if reach < start {
+        // Held at the reach: the held angles reach down past it, one boundary above.
+        // Otherwise scan down for a band of held angles within the palm's reach.
+        let bracket = if let Some(held) = search.eval(reach)? {
+            Some((reach, start, held))
+        } else {
+            let step = s.scan_step_deg.to_radians();
+            let mut found = None;
+            let mut above = start;
+            while above - step > reach {
+                let theta = above - step;
+                if let Some(held) = search.eval(theta)? {
+                    found = Some((theta, above, held));
+                    break;
                 }
-                None => hi = mid,
+                above = theta;
             }
+            found
+        };
+        if let Some((mut lo, mut hi, mut held)) = bracket {
+            while hi - lo > s.bisection_tol_rad {
+                let mid = 0.5 * (lo + hi);
+                match search.eval(mid)? {
+                    Some(sol) => {
+                        lo = mid;
+                        held = sol;
+                    }
+                    None => hi = mid,
+                }
+            }
+            return Ok(search.jam_at(JamStatus::Jams, lo, held));
         }
-        return Ok(search.jam_at(JamStatus::Jams, lo, held));
     }
+    // Below the reach only the status is wanted: "beyond reach" if any angle is held. Scan on
+    // in steps, then halve the last step down to the floor.
     let floor = theta_floor_rad(p);
+    let step = s.scan_step_deg.to_radians();
     let mut theta = reach.min(start);
     while theta > floor {
-        theta = (0.5 * theta).max(floor);
+        let next = if theta > 2.0 * step {
+            theta - step
+        } else {
+            0.5 * theta
+        };
+        theta = next.max(floor);
         if search.eval(theta)?.is_some() {
             search.out.status = JamStatus::BeyondReach;
             return Ok(search.out);
