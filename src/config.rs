@@ -9,6 +9,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
+use crate::minnorm::MinNormSettings;
 use crate::model::SceneParams;
 
 /// A whole parameter file. Each model's issue adds its own section.
@@ -17,6 +18,9 @@ use crate::model::SceneParams;
 pub struct Config {
     /// The scene: frictions, disc, push, palm (section `[scene]`).
     pub scene: SceneParams,
+    /// The minimum-norm model: formulation, bisection tolerance, program settings (sections
+    /// `[min_norm]` and `[min_norm.qp]`).
+    pub min_norm: MinNormSettings,
     /// The dynamic simulation: drive, contact, friction, integrator (section `[dynamics]`).
     pub dynamics: DynamicsParams,
 }
@@ -25,6 +29,7 @@ impl Config {
     /// Checks every section; runs before any computation.
     pub fn validate(&self) -> Result<()> {
         self.scene.validate()?;
+        self.min_norm.validate()?;
         self.dynamics.validate()
     }
 

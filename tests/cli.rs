@@ -227,3 +227,167 @@ fn help_answers_with_units_and_defaults() {
         assert!(h.contains(needle), "--help lacks {needle}: {h}");
     }
 }
+
+#[test]
+fn solve_min_norm_gives_the_papers_jam() {
+    let o = jamchart(repo(), &["solve", "--model", "min-norm", "--mu", "0.4"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains("min-norm: jams"), "{out}");
+    assert!(out.contains("theta_jam = 44.646 deg"), "{out}");
+    assert!(out.contains("x_jam     = 24.355 mm"), "{out}");
+    assert!(out.contains("formulation translational"), "{out}");
+}
+
+#[test]
+fn solve_all_gives_every_model_with_the_agreed_keys() {
+    let v = json(&jamchart(
+        repo(),
+        &["solve", "--model", "all", "--trace", "--format", "json"],
+    ));
+    let r = v["results"].as_array().unwrap();
+    let models: Vec<_> = r.iter().map(|m| m["model"].as_str().unwrap()).collect();
+    assert_eq!(models, ["statics", "min-norm", "dynamics"]);
+    let m = &r[1];
+    assert_eq!(m["model"], "min-norm");
+    assert_eq!(m["status"], "jams");
+    assert_eq!(m["formulation"], "translational");
+    for key in ["elapsed_s", "iterations", "solves"] {
+        assert!(m[key].as_f64().is_some_and(|v| v >= 0.0), "{key}: {m}");
+    }
+    // The two models agree to the 1e-5 deg.
+    let d = m["theta_jam_deg"].as_f64().unwrap() - r[0]["theta_jam_deg"].as_f64().unwrap();
+    assert!(d.abs() < 1e-5, "{d:e} deg");
+    let trace = m["trace"].as_array().unwrap();
+    assert!(trace.len() >= 3, "{trace:?}");
+    for p in trace {
+        for key in ["iteration", "objective_n2", "res_primal", "res_dual"] {
+            assert!(p[key].is_number(), "{key}: {p}");
+        }
+    }
+    // Without --trace there is no trace key.
+    let v = json(&jamchart(
+        repo(),
+        &["solve", "--model", "min-norm", "--format", "json"],
+    ));
+    assert!(v["results"][0].get("trace").is_none());
+}
+
+#[test]
+fn trace_prints_as_text() {
+    let o = jamchart(repo(), &["solve", "--model", "min-norm", "--trace"]);
+    let out = stdout(&o);
+    assert!(out.contains("clarabel trace at theta = 44.646"), "{out}");
+    assert!(
+        out.contains("phi^2 [N^2]") && out.contains("res_primal"),
+        "{out}"
+    );
+}
+
+#[test]
+fn rolling_formulation_from_flag_or_file_jams_at_r_over_mu() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("rolling.toml"),
+        "[min_norm]\nformulation = \"rolling\"\n",
+    )
+    .unwrap();
+    for args in [
+        &["--formulation", "rolling"][..],
+        &["--config", "rolling.toml"][..],
+    ] {
+        let mut all = vec!["solve", "--model", "min-norm", "--format", "json"];
+        all.extend_from_slice(args);
+        let v = json(&jamchart(dir.path(), &all));
+        let m = &v["results"][0];
+        assert_eq!(m["formulation"], "rolling", "{args:?}");
+        // The self-locking wedge: x_jam = r / mu = 25 mm.
+        let x = m["x_jam_mm"].as_f64().unwrap();
+        assert!((x - 25.0).abs() < 1e-6, "{args:?}: {x}");
+    }
+    // The flag overrides the file.
+    let v = json(&jamchart(
+        dir.path(),
+        &[
+            "solve",
+            "--model",
+            "min-norm",
+            "--format",
+            "json",
+            "--config",
+            "rolling.toml",
+            "--formulation",
+            "translational",
+        ],
+    ));
+    assert_eq!(v["results"][0]["formulation"], "translational");
+}
+
+#[test]
+fn bad_min_norm_settings_are_refused_naming_the_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let files = [
+        (
+            "tol.toml",
+            "[min_norm]\nbisection_tol_rad = 0.0\n",
+            "min_norm.bisection_tol_rad",
+        ),
+        (
+            "iter.toml",
+            "[min_norm.qp]\nmax_iter = 0\n",
+            "min_norm.qp.max_iter",
+        ),
+        (
+            "scan.toml",
+            "[min_norm]\nscan_step_deg = 0.0\n",
+            "min_norm.scan_step_deg",
+        ),
+        (
+            "gap.toml",
+            "[min_norm.qp]\ntol_gap = -1.0\n",
+            "min_norm.qp.tol_gap",
+        ),
+        ("typo.toml", "[min_norm.qp]\ntol = 1e-8\n", "tol"),
+        (
+            "form.toml",
+            "[min_norm]\nformulation = \"sideways\"\n",
+            "sideways",
+        ),
+    ];
+    for (name, text, needle) in files {
+        std::fs::write(dir.path().join(name), text).unwrap();
+        let o = jamchart(
+            dir.path(),
+            &["solve", "--model", "min-norm", "--config", name],
+        );
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{name}: {err}");
+        assert!(
+            err.starts_with("jamchart: ") && err.contains(needle),
+            "{name}: {err}"
+        );
+    }
+    let o = jamchart(
+        repo(),
+        &["solve", "--model", "min-norm", "--formulation", "sideways"],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("sideways"), "{}", stderr(&o));
+}
+
+#[test]
+fn table_has_min_norm_columns_agreeing_with_the_closed_form() {
+    let csv = stdout(&jamchart(repo(), &["table", "--format", "csv"]));
+    let header = csv.lines().next().unwrap();
+    assert!(
+        header.ends_with("min_norm_theta_jam_deg,min_norm_x_jam_mm,min_norm_theta_diff_deg"),
+        "{header}"
+    );
+    let rows = json(&jamchart(repo(), &["table", "--format", "json"]));
+    for r in rows.as_array().unwrap() {
+        let d = r["min_norm_theta_diff_deg"].as_f64().unwrap();
+        assert!(d.abs() < 1e-5, "mu = {}: {d:e} deg", r["mu"]);
+    }
+    let md = stdout(&jamchart(repo(), &["table"]));
+    assert!(md.contains("| 44.646192 | 24.3546 |"), "{md}");
+}

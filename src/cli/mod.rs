@@ -4,6 +4,7 @@
 mod accuracy;
 mod args;
 mod dynamics_args;
+mod min_norm;
 pub mod render;
 mod series;
 mod solve;

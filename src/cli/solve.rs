@@ -11,6 +11,7 @@ use serde_json::{Map, Value, json};
 
 use super::args::{ModelChoice, OutputFormat, SceneArgs};
 use super::dynamics_args::DynamicsArgs;
+use super::min_norm;
 use super::series::{series_csv, write_atomic};
 use crate::config::Config;
 use crate::dynamics;
@@ -39,6 +40,19 @@ pub struct SolveArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
     pub format: OutputFormat,
+    /// Min-norm formulation: how the disc's moment is carried.
+    ///
+    /// translational (the paper's): the disc rides a translational joint that carries the
+    /// moment; rolling: the disc may rotate and friction at the ground and the palm carries it.
+    /// Overrides [min_norm] formulation of --config [default: translational]
+    #[arg(long, value_enum, value_name = "FORMULATION")]
+    pub formulation: Option<min_norm::FormulationArg>,
+    /// Print the min-norm solver's convergence trace at theta_jam (the paper's Fig. 4).
+    ///
+    /// clarabel's objective phi^2 (N^2) and relative primal and dual residuals per
+    /// interior-point iteration; in JSON the array `trace`.
+    #[arg(long)]
+    pub trace: bool,
 }
 
 /// One model's answer as `solve` prints it; `details` holds the model's own extra keys.
@@ -54,15 +68,16 @@ pub struct ModelRecord {
 }
 
 pub fn run(a: &SolveArgs) -> Result<String> {
-    let config = a.scene.resolve_with(|c| a.dynamics.apply(c))?;
+    let mut config = a.scene.resolve_with(|c| a.dynamics.apply(c))?;
+    if let Some(f) = a.formulation {
+        config.min_norm.formulation = f.into();
+    }
     let models: &[ModelChoice] = match a.model {
-        // Every model built on this branch.
-        ModelChoice::All => &[ModelChoice::Statics, ModelChoice::Dynamics],
-        ModelChoice::MinNorm => {
-            return Err(Error::Unsupported(
-                "the min-norm model is not built yet; use --model statics".into(),
-            ));
-        }
+        ModelChoice::All => &[
+            ModelChoice::Statics,
+            ModelChoice::MinNorm,
+            ModelChoice::Dynamics,
+        ],
         ref m => std::slice::from_ref(m),
     };
     if a.series.is_some() && !models.contains(&ModelChoice::Dynamics) {
@@ -70,10 +85,10 @@ pub fn run(a: &SolveArgs) -> Result<String> {
             "--series needs the dynamics: add --model dynamics".into(),
         ));
     }
-    let mut results = Vec::new();
-    for m in models {
-        results.push(solve_one(*m, &config, a.series.as_deref())?);
-    }
+    let results = models
+        .iter()
+        .map(|m| solve_one(*m, &config, a))
+        .collect::<Result<Vec<ModelRecord>>>()?;
     Ok(match a.format {
         OutputFormat::Json => {
             let doc = json!({ "inputs": config.scene, "results": results });
@@ -83,12 +98,10 @@ pub fn run(a: &SolveArgs) -> Result<String> {
     })
 }
 
-fn solve_one(
-    model: ModelChoice,
-    config: &Config,
-    series: Option<&std::path::Path>,
-) -> Result<ModelRecord> {
+fn solve_one(model: ModelChoice, config: &Config, a: &SolveArgs) -> Result<ModelRecord> {
+    let series = a.series.as_deref();
     match model {
+        ModelChoice::MinNorm => min_norm::record(config, a.trace),
         ModelChoice::Statics => {
             let t0 = Instant::now();
             let s = statics::solve(&config.scene);
@@ -136,9 +149,9 @@ fn solve_one(
                 details,
             })
         }
-        other => Err(Error::Unsupported(format!(
-            "model {other:?} is not built yet"
-        ))),
+        ModelChoice::All => Err(Error::Unsupported(
+            "--model all is expanded into the models before solving".into(),
+        )),
     }
 }
 
@@ -195,6 +208,9 @@ fn render_text(config: &Config, results: &[ModelRecord]) -> String {
         }
         let d = &r.details;
         render_dynamics(&mut s, r);
+        if r.model == "min-norm" {
+            min_norm::render_details(&mut s, d);
+        }
         if let (Some(t), Some(x)) = (
             d.get("theta_rigid_deg").and_then(Value::as_f64),
             d.get("x_rigid_mm").and_then(Value::as_f64),

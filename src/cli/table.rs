@@ -7,6 +7,7 @@ use serde::Serialize;
 
 use super::args::TableFormat;
 use crate::error::Result;
+use crate::minnorm::{self, MinNormSettings};
 use crate::model::{SceneParams, disc_position_mm};
 use crate::paper::TABLE1;
 use crate::statics;
@@ -41,6 +42,12 @@ pub struct TableRow {
     pub paper_min_norm_theta_jam_deg: f64,
     /// Known erratum of the printed row.
     pub erratum: Option<&'static str>,
+    /// Our min-norm theta_jam in deg (translational formulation, default settings).
+    pub min_norm_theta_jam_deg: Option<f64>,
+    /// Our min-norm x_jam in mm.
+    pub min_norm_x_jam_mm: Option<f64>,
+    /// Our min-norm theta_jam minus the closed form's, in deg.
+    pub min_norm_theta_diff_deg: Option<f64>,
 }
 
 /// Table 1 recomputed with the paper's parameters (the defaults) for each printed mu.
@@ -53,6 +60,9 @@ pub fn rows() -> Vec<TableRow> {
             // The paper's parameters always jam on the palm (checked by the golden test).
             let theta = s.theta_jam_deg.unwrap_or(f64::NAN);
             let x = s.x_jam_mm.unwrap_or(f64::NAN);
+            // Valid parameters and default settings: the min-norm model cannot refuse them.
+            let mn = minnorm::palm::solve(&p, &MinNormSettings::default()).ok();
+            let mn_theta = mn.as_ref().and_then(|m| m.theta_jam_deg);
             TableRow {
                 mu: row.mu,
                 theta_jam_deg: theta,
@@ -67,6 +77,9 @@ pub fn rows() -> Vec<TableRow> {
                 paper_min_norm_x_jam_mm: row.min_norm_x_jam_mm,
                 paper_min_norm_theta_jam_deg: row.min_norm_theta_jam_deg,
                 erratum: row.erratum,
+                min_norm_theta_jam_deg: mn_theta,
+                min_norm_x_jam_mm: mn.as_ref().and_then(|m| m.x_jam_mm),
+                min_norm_theta_diff_deg: mn_theta.zip(s.theta_jam_deg).map(|(a, b)| a - b),
             }
         })
         .collect()
@@ -81,12 +94,13 @@ pub fn run(a: &TableArgs) -> Result<String> {
         TableFormat::Csv => {
             let mut s = String::from(
                 "mu,theta_jam_deg,x_jam_mm,paper_theta_jam_deg,paper_x_jam_mm,x_rel_diff_pct,\
-                 x_of_paper_theta_mm,paper_min_norm_theta_jam_deg,paper_min_norm_x_jam_mm,erratum\n",
+                 x_of_paper_theta_mm,paper_min_norm_theta_jam_deg,paper_min_norm_x_jam_mm,erratum,\
+                 min_norm_theta_jam_deg,min_norm_x_jam_mm,min_norm_theta_diff_deg\n",
             );
             for r in &rows {
                 let _ = writeln!(
                     s,
-                    "{},{:.6},{:.6},{},{},{:.4},{:.4},{},{},{}",
+                    "{},{:.6},{:.6},{},{},{:.4},{:.4},{},{},{},{},{},{}",
                     r.mu,
                     r.theta_jam_deg,
                     r.x_jam_mm,
@@ -96,7 +110,10 @@ pub fn run(a: &TableArgs) -> Result<String> {
                     r.x_of_paper_theta_mm,
                     r.paper_min_norm_theta_jam_deg,
                     r.paper_min_norm_x_jam_mm,
-                    r.erratum.map_or(String::new(), |e| format!("\"{e}\""))
+                    r.erratum.map_or(String::new(), |e| format!("\"{e}\"")),
+                    opt(r.min_norm_theta_jam_deg),
+                    opt(r.min_norm_x_jam_mm),
+                    opt(r.min_norm_theta_diff_deg),
                 );
             }
             s
@@ -109,15 +126,16 @@ fn markdown(rows: &[TableRow]) -> String {
     let mut s = String::from(
         "Table 1 (m = 1 kg, r = 10 mm, F = 200 N, g = 9.806 m/s^2): closed form against the paper\n\n\
          | mu | theta_jam [deg] | paper theta [deg] | x_jam [mm] | paper x [mm] | x diff [%] | \
-         r cot(paper theta/2) [mm] | paper min-norm theta [deg] | paper min-norm x [mm] |\n\
-         |---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+         r cot(paper theta/2) [mm] | paper min-norm theta [deg] | paper min-norm x [mm] | \
+         min-norm theta [deg] | min-norm x [mm] | min-norm - closed theta [deg] |\n\
+         |---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
     );
     let mut notes = Vec::new();
     for r in rows {
         let mark = if r.erratum.is_some() { " (*)" } else { "" };
         let _ = writeln!(
             s,
-            "| {:.2} | {:.3} | {:.1} | {:.3} | {:.2}{mark} | {:+.2} | {:.2} | {:.1} | {:.2} |",
+            "| {:.2} | {:.3} | {:.1} | {:.3} | {:.2}{mark} | {:+.2} | {:.2} | {:.1} | {:.2} | {} | {} | {} |",
             r.mu,
             r.theta_jam_deg,
             r.paper_theta_jam_deg,
@@ -127,6 +145,12 @@ fn markdown(rows: &[TableRow]) -> String {
             r.x_of_paper_theta_mm,
             r.paper_min_norm_theta_jam_deg,
             r.paper_min_norm_x_jam_mm,
+            r.min_norm_theta_jam_deg
+                .map_or("-".into(), |v| format!("{v:.6}")),
+            r.min_norm_x_jam_mm
+                .map_or("-".into(), |v| format!("{v:.4}")),
+            r.min_norm_theta_diff_deg
+                .map_or("-".into(), |v| format!("{v:+.1e}")),
         );
         if let Some(e) = r.erratum {
             notes.push(format!("(*) mu = {:.2}: erratum: {e}", r.mu));
@@ -141,4 +165,9 @@ fn markdown(rows: &[TableRow]) -> String {
         s.push('\n');
     }
     s
+}
+
+/// A CSV cell: the value in full precision, or empty.
+fn opt(v: Option<f64>) -> String {
+    v.map_or(String::new(), |v| v.to_string())
 }

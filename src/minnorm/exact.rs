@@ -1,0 +1,135 @@
+//! The exact fast path: small planar problems solved by enumerating active sets.
+//!
+//! The planar program is a strictly convex QP in the contact forces with linear constraints,
+//! `min 1/2 |f|^2` s.t. `E z = e`, `G z >= 0` (z = contact forces and joint reactions). A point
+//! is optimal iff, for some set S of active rows, it solves the KKT system
+//!
+//! ```text
+//! [ P   E'  G_S' ] [ z  ]   [ 0 ]
+//! [ E   0   0    ] [ y' ] = [ e ]        (P = I on contact forces, 0 on joints)
+//! [ G_S 0   0    ] [ w' ]   [ 0 ]
+//! ```
+//!
+//! with `G z >= 0` and multipliers `w = -w' >= 0`. With at most 8 cone rows there are at most
+//! 256 sets; they are tried by increasing size, so a held problem whose optimum is strictly
+//! inside its cones (the palm scene away from the jam) costs one small solve. No set passing
+//! the test means the program is infeasible. The KKT matrix may be singular (dependent rows,
+//! a joint that duplicates another); it is then solved in the least-squares sense by SVD and
+//! accepted only if the residual vanishes. clarabel is the reference: the tests compare both.
+
+use nalgebra::{DMatrix, DVector};
+
+use super::contact::{ConeKind, Lowered, Space};
+use super::qp::{Backend, ContactSolution, HoldStatus, assemble};
+
+/// At most this many cone rows (four frictional planar contacts): 2^8 active sets.
+const MAX_CONE_ROWS: usize = 8;
+/// Feasibility tolerance in the scaled problem, where loads and lever arms are of order one,
+/// relative to the largest force found; far below clarabel's 1e-8 so the fast path is never
+/// the less accurate one.
+const TOL: f64 = 1e-10;
+/// Accepted residual of a KKT solve, relative to the solution: 1e4 machine epsilons.
+const ROUNDOFF: f64 = 1e-12;
+
+/// Whether the exact path handles this problem (planar, linear cones, small).
+pub(crate) fn applies(low: &Lowered) -> bool {
+    low.space == Space::Planar
+        && low.cone_rows.nrows() <= MAX_CONE_ROWS
+        && low.cones.iter().all(|&(k, _)| k == ConeKind::Nonneg)
+}
+
+/// Solves a problem for which [`applies`] holds.
+pub(crate) fn solve_lowered(low: &Lowered) -> ContactSolution {
+    if let Some(z) = determined(low) {
+        // The equalities fix every variable: no freedom is left to minimise over.
+        return if cones_hold(low, &z) {
+            assemble(low, &z, Backend::Exact, 1)
+        } else {
+            ContactSolution::not_held(HoldStatus::NotHeld, Backend::Exact, 1)
+        };
+    }
+    let m_g = low.cone_rows.nrows();
+    let mut tried = 0u32;
+    for size in 0..=m_g {
+        for mask in 0u32..(1 << m_g) {
+            if mask.count_ones() as usize != size {
+                continue;
+            }
+            tried += 1;
+            if let Some(z) = kkt_point(low, mask) {
+                return assemble(low, &z, Backend::Exact, tried);
+            }
+        }
+    }
+    ContactSolution::not_held(HoldStatus::NotHeld, Backend::Exact, tried)
+}
+
+/// The unique solution of the equalities when they are square and regular (both palm
+/// formulations: the minimum is trivial, ERRATA.md).
+fn determined(low: &Lowered) -> Option<DVector<f64>> {
+    if low.eq.nrows() != low.eq.ncols() {
+        return None;
+    }
+    let z = low.eq.clone().lu().solve(&low.eq_rhs)?;
+    equalities_hold(low, &z).then_some(z)
+}
+
+fn equalities_hold(low: &Lowered, z: &DVector<f64>) -> bool {
+    z.iter().all(|v| v.is_finite()) && (&low.eq * z - &low.eq_rhs).amax() <= TOL * (1.0 + z.amax())
+}
+
+fn cones_hold(low: &Lowered, z: &DVector<f64>) -> bool {
+    let tol = TOL * (1.0 + z.amax());
+    (&low.cone_rows * z).iter().all(|&g| g >= -tol)
+}
+
+/// The KKT point for active set `mask`, if it is feasible with non-negative multipliers.
+fn kkt_point(low: &Lowered, mask: u32) -> Option<DVector<f64>> {
+    let n = low.eq.ncols();
+    let m_e = low.eq.nrows();
+    let active: Vec<usize> = (0..low.cone_rows.nrows())
+        .filter(|r| mask & (1 << r) != 0)
+        .collect();
+    let k = n + m_e + active.len();
+    let mut kkt = DMatrix::zeros(k, k);
+    for i in 0..low.n_contact_vars {
+        kkt[(i, i)] = 1.0;
+    }
+    for r in 0..m_e {
+        for c in 0..n {
+            let v = low.eq[(r, c)];
+            kkt[(n + r, c)] = v;
+            kkt[(c, n + r)] = v;
+        }
+    }
+    for (a, &r) in active.iter().enumerate() {
+        for c in 0..n {
+            let v = low.cone_rows[(r, c)];
+            kkt[(n + m_e + a, c)] = v;
+            kkt[(c, n + m_e + a)] = v;
+        }
+    }
+    let mut rhs = DVector::zeros(k);
+    rhs.rows_mut(n, m_e).copy_from(&low.eq_rhs);
+
+    // Roundoff grows with the solution (a wedged body's forces and multipliers may be orders
+    // above the load): a test relative to it. A solution of a singular system that is merely
+    // close is caught by the checks of z below.
+    let consistent = |sol: &DVector<f64>| {
+        sol.iter().all(|v| v.is_finite())
+            && (&kkt * sol - &rhs).amax() <= ROUNDOFF * (1.0 + sol.amax())
+    };
+    let sol = match kkt.clone().lu().solve(&rhs) {
+        Some(s) if consistent(&s) => s,
+        _ => {
+            let s = kkt.clone().svd(true, true).solve(&rhs, 1e-13).ok()?;
+            if !consistent(&s) {
+                return None;
+            }
+            s
+        }
+    };
+    let z = sol.rows(0, n).into_owned();
+    let multipliers_ok = (0..active.len()).all(|a| -sol[n + m_e + a] >= -TOL * (1.0 + sol.amax()));
+    (multipliers_ok && cones_hold(low, &z) && equalities_hold(low, &z)).then_some(z)
+}
