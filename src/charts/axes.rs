@@ -72,6 +72,8 @@ impl PlotAxis {
     pub fn ticks(&self, len_px: f64, vertical: bool) -> Ticks {
         match self.scale {
             AxisScale::Linear => linear_ticks(self.min, self.max),
+            // Beyond three decades plain numbers get long: powers of ten instead.
+            AxisScale::Log if self.max / self.min > 1e3 => decade_ticks(self.min, self.max, len_px),
             AxisScale::Log if vertical => {
                 let per_ln = len_px / (self.max / self.min).ln();
                 adaptive_ticks(self.min, self.max, |v| per_ln / v, 6.0, 26.0)
@@ -197,6 +199,43 @@ fn log_ticks(lo: f64, hi: f64) -> Ticks {
         }
     }
     t
+}
+
+/// Log ticks over many decades: powers of ten labelled 10ⁿ (every k-th decade when they would
+/// be closer than 40 px), minors at 2..9 times each power when a decade is at least 60 px.
+fn decade_ticks(lo: f64, hi: f64, len_px: f64) -> Ticks {
+    let (k0, k1) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+    let per_decade = len_px / (hi / lo).log10();
+    let every = (40.0 / per_decade).ceil().max(1.0) as i32;
+    let mut t = Ticks::default();
+    for k in k0..=k1 {
+        let p = 10f64.powi(k);
+        if inside(p, lo, hi) {
+            if k.rem_euclid(every) == 0 {
+                t.major.push((p, power_of_ten(k)));
+            } else {
+                t.minor.push(p);
+            }
+        }
+        if per_decade >= 60.0 {
+            t.minor
+                .extend((2..10).map(|m| m as f64 * p).filter(|v| inside(*v, lo, hi)));
+        }
+    }
+    t
+}
+
+/// "10" with `k` as a superscript, e.g. 10⁻⁸.
+pub fn power_of_ten(k: i32) -> String {
+    const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let mut s = String::from("10");
+    if k < 0 {
+        s.push('⁻');
+    }
+    for d in k.unsigned_abs().to_string().bytes() {
+        s.push(SUP[(d - b'0') as usize]);
+    }
+    s
 }
 
 /// Space around a chart's plotting area, in px.
@@ -395,6 +434,14 @@ mod tests {
             labels.contains(&"45") && labels.contains(&"70"),
             "{labels:?}"
         );
+    }
+
+    #[test]
+    fn decade_ticks_label_powers_of_ten() {
+        let t = decade_ticks(1e-10, 1.0, 600.0);
+        let labels: Vec<&str> = t.major.iter().map(|(_, s)| s.as_str()).collect();
+        assert_eq!(labels, ["10⁻¹⁰", "10⁻⁸", "10⁻⁶", "10⁻⁴", "10⁻²", "10⁰"]);
+        assert_eq!(power_of_ten(5), "10⁵");
     }
 
     #[test]

@@ -8,7 +8,10 @@
 //! computed the same way for any thread count.
 //!
 //! Chart kinds, one module each: [`jam_map`] (Fig. 3), [`sweep`] (Figs. 6, 7a, 7b),
-//! [`contour_map`] (Fig. 7c).
+//! [`contour_map`] (Fig. 7c), [`convergence`] (Fig. 4), [`time_series`] (Fig. 5),
+//! [`work_precision`] (the accuracy study). The last three draw through [`xy`], stacked x-y
+//! panels. Min-norm programs and simulations are called through [`models::Models`], so a test
+//! can count them: a scene computes only what it draws.
 //!
 //! ## Where the other models plug in
 //!
@@ -26,13 +29,18 @@
 
 pub mod axes;
 pub mod contour_map;
+pub mod convergence;
 pub mod jam_map;
 pub mod legend;
+pub mod models;
 pub mod output;
 pub mod spec;
 pub mod style;
 pub mod sweep;
 pub mod sweep_layers;
+pub mod time_series;
+pub mod work_precision;
+pub mod xy;
 
 use geo_types::{MultiLineString, MultiPolygon};
 use plotters::coord::Shift;
@@ -111,21 +119,38 @@ pub enum Chart {
     JamMap(jam_map::JamMap),
     Sweep(sweep::Sweep),
     ContourMap(contour_map::ContourMap),
+    Convergence(convergence::Convergence),
+    TimeSeries(time_series::TimeSeries),
+    WorkPrecision(work_precision::WorkPrecision),
 }
 
 impl Chart {
     /// Computes what `scene`'s chart draws, with the model the scene names.
     pub fn compute(scene: &Scene) -> Result<Chart> {
+        Self::compute_with(scene, &models::Live)
+    }
+
+    /// [`Chart::compute`] with the min-norm and dynamics calls going through `models`.
+    pub fn compute_with(scene: &Scene, models: &dyn models::Models) -> Result<Chart> {
         Ok(match &scene.chart {
             ChartSpec::JamMap(s) => {
                 Chart::JamMap(jam_map::JamMap::compute(scene, s, s.model.point_model())?)
             }
-            ChartSpec::Sweep(s) => Chart::Sweep(sweep::Sweep::compute(scene, s)?),
+            ChartSpec::Sweep(s) => Chart::Sweep(sweep::Sweep::compute(scene, s, models)?),
             ChartSpec::ContourMap(s) => Chart::ContourMap(contour_map::ContourMap::compute(
                 scene,
                 s,
                 s.model.point_model(),
             )?),
+            ChartSpec::Convergence(s) => {
+                Chart::Convergence(convergence::Convergence::compute(scene, s, models)?)
+            }
+            ChartSpec::TimeSeries(s) => {
+                Chart::TimeSeries(time_series::TimeSeries::compute(scene, s, models)?)
+            }
+            ChartSpec::WorkPrecision(s) => {
+                Chart::WorkPrecision(work_precision::WorkPrecision::compute(scene, s, models)?)
+            }
         })
     }
 
@@ -136,6 +161,9 @@ impl Chart {
             Chart::JamMap(c) => c.draw(root),
             Chart::Sweep(c) => c.draw(root),
             Chart::ContourMap(c) => c.draw(root),
+            Chart::Convergence(c) => c.draw(root),
+            Chart::TimeSeries(c) => c.draw(root),
+            Chart::WorkPrecision(c) => c.draw(root),
         }
     }
 
@@ -145,6 +173,9 @@ impl Chart {
             Chart::JamMap(c) => c.data(scene),
             Chart::Sweep(c) => c.data(scene),
             Chart::ContourMap(c) => c.data(scene),
+            Chart::Convergence(c) => c.data(scene),
+            Chart::TimeSeries(c) => c.data(scene),
+            Chart::WorkPrecision(c) => c.data(scene),
         }
     }
 }
@@ -211,6 +242,11 @@ pub fn axis_label(p: GridParam) -> &'static str {
 /// One line naming the scene's parameters for under the title, without the `swept` ones (they
 /// are on an axis).
 pub fn scene_subtitle(p: &SceneParams, swept: &[GridParam]) -> String {
+    scene_subtitle_with("closed-form statics (corrected Eq. 1)", p, swept)
+}
+
+/// [`scene_subtitle`] naming another source than the closed form, e.g. "simulation, ...".
+pub fn scene_subtitle_with(source: &str, p: &SceneParams, swept: &[GridParam]) -> String {
     let mu = if p.mu_ground == p.mu_palm {
         format!("μ = {}", p.mu_ground)
     } else {
@@ -231,7 +267,7 @@ pub fn scene_subtitle(p: &SceneParams, swept: &[GridParam]) -> String {
         .filter(|(k, _)| !swept.contains(k))
         .map(|(_, s)| s)
         .collect();
-    format!("closed-form statics (corrected Eq. 1): {}", kept.join(", "))
+    format!("{source}: {}", kept.join(", "))
 }
 
 /// The exterior rings of contour polygons, mapped from the contour crate's grid coordinates to

@@ -5,6 +5,9 @@
 //! base = "../config/paper.toml"    # parameter set, relative to this file (default shown)
 //! [scene]                          # overrides of the base's [scene] keys
 //! force_n = 200.0
+//! [dynamics]                       # overrides of the base's [dynamics] keys (scenes that simulate)
+//! after_jam_s = 0.3
+//! [min_norm]                       # overrides of the base's [min_norm] keys (scenes that solve QPs)
 //! [size]                           # picture size in px (default 1000 x 800)
 //! width_px = 1000
 //! height_px = 900
@@ -12,18 +15,24 @@
 //! kind = "jam_map"                 # jam_map | sweep | contour_map
 //! ```
 //!
-//! The `[chart]` keys of each kind are documented on [`JamMapSpec`], [`SweepSpec`] and
-//! [`ContourMapSpec`]. Unknown keys are refused everywhere.
+//! The `[chart]` keys of each kind are documented on [`JamMapSpec`], [`SweepSpec`],
+//! [`ContourMapSpec`], [`ConvergenceSpec`], [`TimeSeriesSpec`] and [`WorkPrecisionSpec`].
+//! Unknown keys are refused everywhere.
 
 use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
 use super::contour_map::ContourMapSpec;
+use super::convergence::ConvergenceSpec;
 use super::jam_map::JamMapSpec;
 use super::sweep::SweepSpec;
+use super::time_series::TimeSeriesSpec;
+use super::work_precision::WorkPrecisionSpec;
 use crate::config::{Config, parse_toml};
+use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
+use crate::minnorm::MinNormSettings;
 use crate::model::SceneParams;
 
 /// Picture size in px.
@@ -76,6 +85,13 @@ pub enum ChartSpec {
     Sweep(SweepSpec),
     /// Iso-lines of x_jam and theta_jam over two parameters (Fig. 7c).
     ContourMap(ContourMapSpec),
+    /// The min-norm program's convergence trace at theta_jam (Fig. 4).
+    Convergence(ConvergenceSpec),
+    /// The simulated disc speed and position against time (Fig. 5).
+    TimeSeries(TimeSeriesSpec),
+    /// Error of x_jam against cost per integrator, and the min-norm tolerance against its
+    /// error (the accuracy study).
+    WorkPrecision(WorkPrecisionSpec),
 }
 
 /// A scene file as written.
@@ -86,6 +102,10 @@ struct SceneFile {
     base: Option<PathBuf>,
     #[serde(default)]
     scene: toml::Table,
+    #[serde(default)]
+    dynamics: toml::Table,
+    #[serde(default)]
+    min_norm: toml::Table,
     #[serde(default)]
     size: Size,
     chart: ChartSpec,
@@ -100,6 +120,12 @@ pub struct Scene {
     pub title: String,
     /// The base parameter set with the scene's overrides applied.
     pub params: SceneParams,
+    /// The base `[min_norm]` settings with the scene's overrides (used only by charts that
+    /// draw min-norm solutions).
+    pub min_norm: MinNormSettings,
+    /// The base `[dynamics]` settings with the scene's overrides (used only by charts that
+    /// simulate).
+    pub dynamics: DynamicsParams,
     /// Picture size.
     pub size: Size,
     /// Chart kind and settings.
@@ -132,13 +158,19 @@ pub fn load_scene(dir: &Path, name: &str) -> Result<Scene> {
     let file: SceneFile = parse_toml(&text, &path)?;
     let base_path = dir.join(file.base.as_deref().unwrap_or(Path::new(DEFAULT_BASE)));
     let base = Config::load(&base_path)?;
-    let params = apply_overrides(base.scene, &file.scene)?;
+    let params: SceneParams = apply_overrides(base.scene, &file.scene, "scene")?;
     params.validate()?;
+    let min_norm: MinNormSettings = apply_overrides(base.min_norm, &file.min_norm, "min_norm")?;
+    min_norm.validate()?;
+    let dynamics: DynamicsParams = apply_overrides(base.dynamics, &file.dynamics, "dynamics")?;
+    dynamics.validate()?;
     file.size.validate()?;
     let scene = Scene {
         name: name.to_string(),
         title: file.title,
         params,
+        min_norm,
+        dynamics,
         size: file.size,
         chart: file.chart,
     };
@@ -146,28 +178,33 @@ pub fn load_scene(dir: &Path, name: &str) -> Result<Scene> {
         ChartSpec::JamMap(s) => s.validate(&scene.params)?,
         ChartSpec::Sweep(s) => s.validate(&scene.params)?,
         ChartSpec::ContourMap(s) => s.validate(&scene.params)?,
+        ChartSpec::Convergence(s) => s.validate()?,
+        ChartSpec::TimeSeries(s) => s.validate()?,
+        ChartSpec::WorkPrecision(s) => s.validate()?,
     }
     Ok(scene)
 }
 
-/// `base` with the keys of a `[scene]` override table replaced; unknown keys are refused.
-fn apply_overrides(base: SceneParams, overrides: &toml::Table) -> Result<SceneParams> {
-    let mut table = toml::Table::try_from(base).expect("SceneParams serialises to a table");
+/// `base` with the keys of the override table of `[section]` replaced; unknown keys are refused.
+///
+/// Keys the base leaves out (optional settings such as `dynamics.atol`) are known by the
+/// section's struct, which refuses typos when the merged table is read back.
+fn apply_overrides<T>(base: T, overrides: &toml::Table, section: &str) -> Result<T>
+where
+    T: Serialize + serde::de::DeserializeOwned,
+{
+    let mut table = toml::Table::try_from(base).expect("settings serialise to a table");
     for (key, value) in overrides {
-        if !table.contains_key(key) {
-            return Err(Error::invalid(
-                &format!("scene.{key}"),
-                value,
-                "unknown key; the keys are those of [scene] in config/paper.toml",
-            ));
-        }
         table.insert(key.clone(), value.clone());
     }
-    SceneParams::deserialize(toml::Value::Table(table)).map_err(|e| {
+    T::deserialize(toml::Value::Table(table)).map_err(|e| {
         Error::invalid(
-            "scene",
+            section,
             e.message().trim(),
-            "a [scene] override has the wrong type",
+            format!(
+                "a [{section}] override is unknown or has the wrong type; the keys are those of \
+                 [{section}] in config/paper.toml"
+            ),
         )
     })
 }
@@ -180,14 +217,14 @@ mod tests {
     fn overrides_replace_only_their_keys_and_refuse_typos() {
         let mut t = toml::Table::new();
         t.insert("force_n".into(), toml::Value::Float(50.0));
-        let p = apply_overrides(SceneParams::default(), &t).unwrap();
+        let p = apply_overrides(SceneParams::default(), &t, "scene").unwrap();
         assert_eq!(p.force_n, 50.0);
         assert_eq!(p.radius_mm, 10.0);
         t.insert("radus_mm".into(), toml::Value::Float(5.0));
-        let msg = apply_overrides(SceneParams::default(), &t)
+        let msg = apply_overrides(SceneParams::default(), &t, "scene")
             .unwrap_err()
             .to_string();
-        assert!(msg.contains("scene.radus_mm"), "{msg}");
+        assert!(msg.contains("scene") && msg.contains("radus_mm"), "{msg}");
     }
 
     #[test]

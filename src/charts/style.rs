@@ -137,6 +137,14 @@ pub enum Marker {
     Square,
     /// Diagonal cross.
     Cross,
+    /// Large open square (drawn around the smaller markers at the same point).
+    OpenSquare,
+    /// Upright cross (+).
+    Plus,
+    /// Filled diamond.
+    Diamond,
+    /// Large open diamond (drawn around a filled diamond at the same point).
+    OpenDiamond,
 }
 
 /// Draws one marker at `at` in `area`'s coordinates.
@@ -158,6 +166,22 @@ where
         Marker::Triangle => area.draw(&(anchor + TriangleMarker::new((0, 0), 5, fill))),
         Marker::Square => area.draw(&(anchor + Rectangle::new([(-5, -5), (5, 5)], fill))),
         Marker::Cross => area.draw(&(anchor + Cross::new((0, 0), 7, INK.stroke_width(3)))),
+        Marker::OpenSquare => area.draw(&(anchor + Rectangle::new([(-11, -11), (11, 11)], open))),
+        // One path over both bars (back over the centre).
+        Marker::Plus => area.draw(
+            &(anchor
+                + PathElement::new(
+                    vec![(-7, 0), (7, 0), (0, 0), (0, -7), (0, 7)],
+                    INK.stroke_width(2),
+                )),
+        ),
+        Marker::Diamond => {
+            area.draw(&(anchor + Polygon::new(vec![(0, -6), (6, 0), (0, 6), (-6, 0)], fill)))
+        }
+        Marker::OpenDiamond => area.draw(
+            &(anchor
+                + PathElement::new(vec![(0, -11), (11, 0), (0, 11), (-11, 0), (0, -11)], open)),
+        ),
     }
 }
 

@@ -11,6 +11,7 @@ use serde::{Deserialize, Serialize};
 
 use super::axes::{self, DrawResult, Margins, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
+use super::models::Models;
 use super::spec::Scene;
 use super::style::{self, INK, LineKind, Marker};
 use super::sweep_layers;
@@ -146,10 +147,10 @@ pub struct Sweep {
 
 impl Sweep {
     /// Computes the series of every layer.
-    pub fn compute(scene: &Scene, spec: &SweepSpec) -> Result<Self> {
+    pub fn compute(scene: &Scene, spec: &SweepSpec, models: &dyn Models) -> Result<Self> {
         let mut series = Vec::new();
         for l in &spec.layers {
-            series.extend(sweep_layers::series(*l, spec, &scene.params));
+            series.extend(sweep_layers::series(*l, spec, scene, models)?);
         }
         Ok(Sweep {
             spec: spec.clone(),

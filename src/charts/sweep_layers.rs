@@ -1,20 +1,31 @@
 //! The layers a sweep can draw, each turned into [`Series`].
 //!
-//! To add a model's points (the min-norm solutions, the simulation's jams with motion or force
-//! drive): add a variant to [`SweepLayer`], say in [`validate`] which swept parameters it
-//! supports, and return its series from [`series`] by calling the model at the points it should
-//! be drawn (e.g. the Table 1 mu values). Nothing else changes: panels, legend, data file and
-//! hashes follow.
+//! To add a model's points: add a variant to [`SweepLayer`], say in [`validate`] which swept
+//! parameters it supports, and return its series from [`series`] by calling the model (through
+//! [`Models`]) at the points it should be drawn. Nothing else changes: panels, legend, data file
+//! and hashes follow.
+//!
+//! The min-norm points sit at the Table 1 mu values, beside the paper's; the simulation points
+//! sit halfway between them ([`SIMULATION_MU`]), so that no marker hides another (at
+//! mu = 0.4 the paper's two values, ours and a simulation's would lie within 3 px).
 
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+use super::models::Models;
+use super::spec::Scene;
 use super::style::{LineKind, Marker};
 use super::sweep::{Series, SeriesPoint, SeriesStyle, SweepSpec};
+use crate::dynamics::{Drive, DynamicsParams};
 use crate::error::{Error, Result};
 use crate::grid::{GridParam, PointModel, Statics};
-use crate::model::{SceneParams, disc_position_mm};
+use crate::minnorm::{Formulation, MinNormSettings};
+use crate::model::{JamStatus, disc_position_mm};
 use crate::paper::{ADAMS_X_JAM_MM_MU_0_4, TABLE1};
 use crate::statics;
+
+/// The mu values of the simulation points: halfway between Table 1's 0.15, 0.20, ..., 0.45.
+pub const SIMULATION_MU: [f64; 6] = [0.175, 0.225, 0.275, 0.325, 0.375, 0.425];
 
 /// A layer of a sweep (`layers` in `[chart]`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -29,26 +40,43 @@ pub enum SweepLayer {
     PaperTable1,
     /// The paper's Adams result x_jam = 25.58 mm at mu = 0.4 (mu sweeps).
     PaperAdams,
+    /// Min-norm jam points, translational formulation (the paper's), at the Table 1 mu values
+    /// (mu sweeps).
+    MinNorm,
+    /// Min-norm jam points, rolling formulation, at the Table 1 mu values (mu sweeps); for equal
+    /// frictions they lie on the F -> infinity limit.
+    MinNormRolling,
+    /// Simulated jams, motion drive, at [`SIMULATION_MU`] (mu sweeps).
+    SimulationMotion,
+    /// Simulated jams, force drive saturating at the scene's F, at [`SIMULATION_MU`] (mu sweeps).
+    SimulationForce,
 }
 
 /// Checks that `layer` can be drawn on `spec`'s sweep.
 pub fn validate(layer: SweepLayer, spec: &SweepSpec) -> Result<()> {
-    let paper = matches!(layer, SweepLayer::PaperTable1 | SweepLayer::PaperAdams);
-    if paper && spec.axis.param != GridParam::Mu {
+    let at_mu = !matches!(layer, SweepLayer::Statics | SweepLayer::RigidLimit);
+    if at_mu && spec.axis.param != GridParam::Mu {
         return Err(Error::invalid(
             "chart.layers",
             format!("{layer:?}"),
-            "the paper's points are printed against mu: use them on a sweep of param = \"mu\"",
+            "the paper's points and the model points sit at the paper's mu values: use them on \
+             a sweep of param = \"mu\"",
         ));
     }
     Ok(())
 }
 
-/// The series of `layer` over `spec`'s axis with base scene `p`.
-pub fn series(layer: SweepLayer, spec: &SweepSpec, p: &SceneParams) -> Vec<Series> {
+/// The series of `layer` over `spec`'s axis for `scene`, its model points computed by `models`.
+pub fn series(
+    layer: SweepLayer,
+    spec: &SweepSpec,
+    scene: &Scene,
+    models: &dyn Models,
+) -> Result<Vec<Series>> {
+    let p = &scene.params;
     let param = spec.axis.param;
     let at = |v: f64| param.apply(*p, v);
-    match layer {
+    Ok(match layer {
         SweepLayer::Statics => vec![Series {
             layer: "statics",
             label: "closed-form statics (corrected Eq. 1)".into(),
@@ -96,7 +124,92 @@ pub fn series(layer: SweepLayer, spec: &SweepSpec, p: &SceneParams) -> Vec<Serie
             flat_names: None,
             callout: Some(format!("Adams {ADAMS_X_JAM_MM_MU_0_4} mm")),
         }],
-    }
+        SweepLayer::MinNorm => vec![min_norm(scene, models, Formulation::Translational)?],
+        SweepLayer::MinNormRolling => vec![min_norm(scene, models, Formulation::Rolling)?],
+        SweepLayer::SimulationMotion => vec![simulation(scene, models, Drive::Motion)?],
+        SweepLayer::SimulationForce => vec![simulation(scene, models, Drive::Force)?],
+    })
+}
+
+/// The Table 1 mu values, ascending.
+fn table1_mu() -> Vec<f64> {
+    let mut mu: Vec<f64> = TABLE1.iter().map(|r| r.mu).collect();
+    mu.sort_by(f64::total_cmp);
+    mu
+}
+
+/// A jam point when the model says `jams`, an empty one otherwise (the data file shows it).
+fn jam_point(mu: f64, status: JamStatus, x: Option<f64>, theta: Option<f64>) -> SeriesPoint {
+    let jams = status == JamStatus::Jams;
+    point(mu, x.filter(|_| jams), theta.filter(|_| jams))
+}
+
+/// Min-norm points at the Table 1 mu values, solved in parallel (each point is independent, so
+/// the result does not depend on the thread count).
+fn min_norm(scene: &Scene, models: &dyn Models, formulation: Formulation) -> Result<Series> {
+    let s = MinNormSettings {
+        formulation,
+        ..scene.min_norm
+    };
+    let points = table1_mu()
+        .par_iter()
+        .map(|&mu| {
+            let sol = models.min_norm(&scene.params.with_mu(mu), &s)?;
+            Ok(jam_point(mu, sol.status, sol.x_jam_mm, sol.theta_jam_deg))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(match formulation {
+        Formulation::Translational => Series {
+            layer: "min_norm",
+            label: "min-norm model, translational joint (paper's formulation)".into(),
+            style: SeriesStyle::Points(Marker::OpenSquare),
+            points,
+            flat_names: None,
+            callout: None,
+        },
+        Formulation::Rolling => Series {
+            layer: "min_norm_rolling",
+            label: "min-norm model, disc free to roll (on the F → ∞ limit)".into(),
+            style: SeriesStyle::Points(Marker::Plus),
+            points,
+            flat_names: None,
+            callout: None,
+        },
+    })
+}
+
+/// Simulated jams at [`SIMULATION_MU`] with the scene's `[dynamics]` settings and `drive`, run
+/// in parallel.
+fn simulation(scene: &Scene, models: &dyn Models, drive: Drive) -> Result<Series> {
+    let d = DynamicsParams {
+        drive,
+        ..scene.dynamics
+    };
+    let points = SIMULATION_MU
+        .par_iter()
+        .map(|&mu| {
+            let sol = models.simulate(&scene.params.with_mu(mu), &d, None)?;
+            Ok(jam_point(mu, sol.status, sol.x_jam_mm, sol.theta_jam_deg))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(match drive {
+        Drive::Motion => Series {
+            layer: "simulation_motion",
+            label: format!("simulation, motion drive ω = {} deg/s", d.omega_deg_s),
+            style: SeriesStyle::Points(Marker::Diamond),
+            points,
+            flat_names: None,
+            callout: None,
+        },
+        Drive::Force => Series {
+            layer: "simulation_force",
+            label: format!("simulation, force drive F = {} N", scene.params.force_n),
+            style: SeriesStyle::Points(Marker::OpenDiamond),
+            points,
+            flat_names: None,
+            callout: None,
+        },
+    })
 }
 
 fn point(at: f64, x_jam_mm: Option<f64>, theta_jam_deg: Option<f64>) -> SeriesPoint {

@@ -121,6 +121,7 @@ mod contact;
 mod exact;
 pub mod palm;
 pub mod qp;
+pub mod tolerance;
 
 pub use contact::{Contact, ContactProblem, Joint, Space, Wrench};
 pub use palm::{Formulation, MinNormSettings, PalmSolution, palm_problem};

@@ -1,0 +1,245 @@
+//! Chart kind `time_series` (Fig. 5): the simulated disc speed x_dot and position x against
+//! time, the jam point P_jam marked with t_jam and x_jam.
+//!
+//! One simulation ([`crate::dynamics::simulate`]) with the scene's `[dynamics]` settings records
+//! the series every `series_dt_s`; set `after_jam_s` in the scene's `[dynamics]` so the collapse
+//! after the jam is visible. Beside the motion: the speed a rigid disc touching the turning palm
+//! would have, r omega / (2 sin^2(theta/2)) (the jam is read where x_dot falls below
+//! `jam_speed_ratio` of it), and that disc's position r cot(theta/2).
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use serde::{Deserialize, Serialize};
+
+use super::axes::{DrawResult, PlotAxis};
+use super::models::Models;
+use super::spec::Scene;
+use super::style::LineKind;
+use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, padded_axis};
+use super::{DataFile, scene_subtitle_with};
+use crate::dynamics::jam::SeriesRow;
+use crate::dynamics::scene::Scene as DynScene;
+use crate::error::{Error, Result};
+use crate::grid::AxisScale;
+use crate::statics;
+
+/// `[chart]` keys of `kind = "time_series"`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct TimeSeriesSpec {
+    /// Sampling interval of the drawn series in s, in [1e-5, 0.1] (default: 0.001; the collapse
+    /// at the jam takes a few ms, a pixel of the time axis about 2 ms).
+    pub series_dt_s: f64,
+}
+
+impl Default for TimeSeriesSpec {
+    fn default() -> Self {
+        TimeSeriesSpec { series_dt_s: 0.001 }
+    }
+}
+
+impl TimeSeriesSpec {
+    /// Checks the sampling interval.
+    pub fn validate(&self) -> Result<()> {
+        let dt = self.series_dt_s;
+        // Below 1e-5 s a default run records over 150 000 rows for nothing a picture shows.
+        if !(dt.is_finite() && (1e-5..=0.1).contains(&dt)) {
+            return Err(Error::invalid(
+                "chart.series_dt_s",
+                dt,
+                "the sampling interval lies in [1e-5, 0.1] s",
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// One drawn sample: the simulated row and the rigid-disc references at its palm angle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Sample {
+    row: SeriesRow,
+    geometric_speed_mm_s: f64,
+    touching_x_mm: f64,
+}
+
+/// The computed time series.
+#[derive(Debug, Clone)]
+pub struct TimeSeries {
+    figure: Figure,
+    samples: Vec<Sample>,
+}
+
+impl TimeSeries {
+    /// Runs the simulation and lays out the two panels.
+    pub fn compute(scene: &Scene, spec: &TimeSeriesSpec, models: &dyn Models) -> Result<Self> {
+        let (p, d) = (&scene.params, &scene.dynamics);
+        let sol = models.simulate(p, d, Some(spec.series_dt_s))?;
+        let sys = DynScene::new(p, d);
+        let samples: Vec<Sample> = sol
+            .series
+            .iter()
+            .map(|r| {
+                let th = r.theta_deg.to_radians();
+                Sample {
+                    row: *r,
+                    geometric_speed_mm_s: sys.geometric_speed(th),
+                    touching_x_mm: sys.touching_x(th),
+                }
+            })
+            .collect();
+        let t_end = samples.last().map_or(1.0, |s| s.row.t_s);
+        let t_axis = PlotAxis::new(0.0, t_end, AxisScale::Linear, "time t (s)");
+        let pick = |f: fn(&Sample) -> f64| samples.iter().map(|s| (s.row.t_s, f(s))).collect();
+        let ratio = d.jam_speed_ratio;
+        let speed_curves = vec![
+            Curve {
+                label: "simulated disc (speed ẋ, position x)".into(),
+                style: CurveStyle::Line(LineKind::Solid),
+                points: pick(|s| s.row.x_dot_mm_s),
+            },
+            Curve {
+                label: "rigid disc touching the palm: r·ω/(2·sin²(θ/2)), r·cot(θ/2)".into(),
+                style: CurveStyle::Line(LineKind::Dashed),
+                points: pick(|s| s.geometric_speed_mm_s),
+            },
+            Curve {
+                label: format!("jam threshold: {ratio} of the rigid disc's speed"),
+                style: CurveStyle::Line(LineKind::Dotted),
+                points: samples
+                    .iter()
+                    .map(|s| (s.row.t_s, ratio * s.geometric_speed_mm_s))
+                    .collect(),
+            },
+        ];
+        // The speed panel shows the motion up to a little above the simulated peak: the rigid
+        // disc's speed grows without bound as the palm closes.
+        let v_max = samples
+            .iter()
+            .map(|s| s.row.x_dot_mm_s)
+            .fold(0.0_f64, f64::max);
+        let mut speed = Panel {
+            x: t_axis.clone(),
+            y: PlotAxis::new(
+                0.0,
+                1.35 * v_max.max(1e-9),
+                AxisScale::Linear,
+                "disc speed ẋ (mm/s)",
+            ),
+            curves: speed_curves,
+            marks: Vec::new(),
+        };
+        let rigid = statics::solve(p).x_rigid_mm;
+        let mut x_curves = vec![
+            Curve {
+                label: "simulated disc (speed ẋ, position x)".into(),
+                style: CurveStyle::Line(LineKind::Solid),
+                points: pick(|s| s.row.x_mm),
+            },
+            Curve {
+                label: "rigid disc touching the palm: r·ω/(2·sin²(θ/2)), r·cot(θ/2)".into(),
+                style: CurveStyle::Line(LineKind::Dashed),
+                points: pick(|s| s.touching_x_mm),
+            },
+        ];
+        let mut x_values: Vec<f64> = samples.iter().map(|s| s.row.x_mm).collect();
+        if let Some(xr) = rigid.filter(|x| x.is_finite()) {
+            x_curves.push(Curve {
+                label: format!("F → ∞ limit r/μ = {xr:.2} mm (closed form)"),
+                style: CurveStyle::Line(LineKind::Dotted),
+                points: vec![(0.0, xr), (t_end, xr)],
+            });
+            x_values.push(xr);
+        }
+        let x_top = x_values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let mut position = Panel {
+            x: t_axis,
+            y: padded_axis(
+                x_values.into_iter().chain([x_top * 1.12]),
+                "disc position x (mm)",
+            ),
+            curves: x_curves,
+            marks: Vec::new(),
+        };
+        if let (Some(tj), Some(xj)) = (sol.t_jam_s, sol.x_jam_mm) {
+            let v = interpolate(&samples, tj, |s| s.row.x_dot_mm_s);
+            speed.marks.push(Mark {
+                at: (tj, v),
+                text: format!("P_jam: t_jam = {tj:.4} s, ẋ = {v:.2} mm/s"),
+                side: LabelSide::AboveLeft,
+            });
+            position.marks.push(Mark {
+                at: (tj, xj),
+                text: format!("P_jam: t_jam = {tj:.4} s, x_jam = {xj:.3} mm"),
+                side: LabelSide::AboveLeft,
+            });
+        }
+        let theta = sol.theta_jam_deg.map_or("-".into(), |t| format!("{t:.3}°"));
+        let figure = Figure {
+            title: scene.title.clone(),
+            subtitle: scene_subtitle_with(
+                &format!(
+                    "simulation, {} drive at ω = {} deg/s, {} rtol {:e}",
+                    d.drive.as_str(),
+                    d.omega_deg_s,
+                    d.method.as_str(),
+                    d.rtol
+                ),
+                p,
+                &[],
+            ),
+            panels: vec![speed, position],
+            notes: vec![format!(
+                "Status {}: the jam P_jam is read where ẋ falls below {ratio} of the rigid disc's \
+                 speed (θ_jam = {theta}); after it the palm squeezes the held disc, which creeps.",
+                sol.status
+            )],
+        };
+        Ok(TimeSeries { figure, samples })
+    }
+
+    /// The series as CSV, with the rigid-disc references.
+    pub fn data(&self, _scene: &Scene) -> DataFile {
+        let mut s = String::from(
+            "t_s,theta_deg,x_mm,x_dot_mm_s,geometric_speed_mm_s,touching_x_mm,penetration_mm,\
+             normal_n,ground_friction_n\n",
+        );
+        for p in &self.samples {
+            let r = &p.row;
+            s.push_str(&format!(
+                "{:.7},{:.6},{:.7},{:.6},{:.6},{:.7},{:.7},{:.5},{:.5}\n",
+                r.t_s,
+                r.theta_deg,
+                r.x_mm,
+                r.x_dot_mm_s,
+                p.geometric_speed_mm_s,
+                p.touching_x_mm,
+                r.penetration_mm,
+                r.normal_n,
+                r.ground_friction_n
+            ));
+        }
+        DataFile::csv(s)
+    }
+
+    /// Draws the two panels.
+    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+        self.figure.draw(root)
+    }
+}
+
+/// `f` interpolated linearly in time at `t` (the nearest end outside the samples).
+fn interpolate(samples: &[Sample], t: f64, f: fn(&Sample) -> f64) -> f64 {
+    let i = samples.partition_point(|s| s.row.t_s < t);
+    match (
+        i.checked_sub(1).and_then(|j| samples.get(j)),
+        samples.get(i),
+    ) {
+        (Some(a), Some(b)) if b.row.t_s > a.row.t_s => {
+            let w = (t - a.row.t_s) / (b.row.t_s - a.row.t_s);
+            f(a) + w * (f(b) - f(a))
+        }
+        (Some(a), _) => f(a),
+        (None, Some(b)) => f(b),
+        (None, None) => 0.0,
+    }
+}

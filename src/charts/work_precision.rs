@@ -1,0 +1,292 @@
+//! Chart kind `work_precision` (scene `accuracy`): the dynamics' integrators as error of x_jam
+//! against cost, and the min-norm program's tolerance against its error in theta_jam.
+//!
+//! The picture must be the same bytes on every machine, so the cost is counted, not timed:
+//! right-hand-side evaluations (or accepted steps) of one run without the verification run
+//! ([`crate::dynamics::accuracy::run_study`]). Wall times are left to `jamchart accuracy`, which
+//! reports their medians; neither the chart nor its data file carries one.
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use serde::{Deserialize, Serialize};
+
+use super::axes::DrawResult;
+use super::convergence::sci;
+use super::models::Models;
+use super::spec::Scene;
+use super::style::{LineKind, Marker};
+use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
+use super::{DataFile, scene_subtitle_with};
+use crate::dynamics::Method;
+use crate::dynamics::accuracy::{Study, StudyRow, StudySettings};
+use crate::error::{Error, Result};
+use crate::minnorm::tolerance::ToleranceRow;
+
+/// The deterministic cost on the horizontal axis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Cost {
+    /// Right-hand-side evaluations.
+    #[default]
+    RhsEvals,
+    /// Accepted steps.
+    Steps,
+}
+
+/// `[chart]` keys of `kind = "work_precision"`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct WorkPrecisionSpec {
+    /// Integrator tolerances rtol = atol, each in (0, 1) (default: 1e-2, 1e-3, ..., 1e-9).
+    pub tolerances: Vec<f64>,
+    /// Tolerance of the two reference runs (default: 1e-11).
+    pub reference_rtol: f64,
+    /// The cost axis: "rhs_evals" or "steps" (default: rhs_evals).
+    pub cost: Cost,
+    /// clarabel tolerances of the min-norm panel, each in (0, 1); empty: no panel
+    /// (default: 1e-2, 1e-3, ..., 1e-10).
+    pub min_norm_tolerances: Vec<f64>,
+}
+
+impl Default for WorkPrecisionSpec {
+    fn default() -> Self {
+        WorkPrecisionSpec {
+            tolerances: StudySettings::default().tolerances,
+            reference_rtol: StudySettings::default().reference_rtol,
+            cost: Cost::RhsEvals,
+            min_norm_tolerances: (2..=10).map(|k| 10f64.powi(-k)).collect(),
+        }
+    }
+}
+
+impl WorkPrecisionSpec {
+    /// Checks every tolerance.
+    pub fn validate(&self) -> Result<()> {
+        let lists = [
+            ("chart.tolerances", &self.tolerances),
+            ("chart.min_norm_tolerances", &self.min_norm_tolerances),
+        ];
+        for (key, list) in lists {
+            for &t in list {
+                if !(t.is_finite() && t > 0.0 && t < 1.0) {
+                    return Err(Error::invalid(key, t, "tolerances lie strictly in (0, 1)"));
+                }
+            }
+        }
+        if self.tolerances.is_empty() {
+            return Err(Error::invalid(
+                "chart.tolerances",
+                "[]",
+                "at least one integrator tolerance",
+            ));
+        }
+        let r = self.reference_rtol;
+        if !(r.is_finite() && r > 0.0 && r < 1.0) {
+            return Err(Error::invalid(
+                "chart.reference_rtol",
+                r,
+                "a tolerance lies strictly in (0, 1)",
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The computed study.
+#[derive(Debug, Clone)]
+pub struct WorkPrecision {
+    figure: Figure,
+    study: Study,
+    min_norm: Vec<ToleranceRow>,
+}
+
+impl WorkPrecision {
+    /// Runs the integrators' study (one run per point) and, if asked, the min-norm one.
+    pub fn compute(scene: &Scene, spec: &WorkPrecisionSpec, models: &dyn Models) -> Result<Self> {
+        let (p, d) = (&scene.params, &scene.dynamics);
+        let settings = StudySettings {
+            tolerances: spec.tolerances.clone(),
+            runs: 1,
+            reference_rtol: spec.reference_rtol,
+        };
+        let study = models.accuracy_study(p, d, &settings)?;
+        let min_norm = if spec.min_norm_tolerances.is_empty() {
+            Vec::new()
+        } else {
+            models.min_norm_tolerances(p, &scene.min_norm, &spec.min_norm_tolerances)?
+        };
+        let cost = |r: &StudyRow| match spec.cost {
+            Cost::RhsEvals => r.rhs_evals as f64,
+            Cost::Steps => r.steps as f64,
+        };
+        let cost_label = match spec.cost {
+            Cost::RhsEvals => "cost: right-hand-side evaluations of one run (-)",
+            Cost::Steps => "cost: accepted steps of one run (-)",
+        };
+        let method_curve = |m: Method, line: LineKind, marker: Marker| Curve {
+            label: format!(
+                "{} (rtol = atol = {} … {})",
+                m.as_str(),
+                sci_first(&spec.tolerances),
+                sci_last(&spec.tolerances)
+            ),
+            style: CurveStyle::LinePoints(line, marker),
+            points: study
+                .rows
+                .iter()
+                .filter(|r| r.method == m)
+                .filter_map(|r| r.rel_error.map(|e| (cost(r), e)))
+                .collect(),
+        };
+        let curves = vec![
+            method_curve(Method::Radau5, LineKind::Solid, Marker::Dot),
+            method_curve(Method::Dopri5, LineKind::Dashed, Marker::Square),
+        ];
+        let integrators = Panel {
+            x: decade_axis(study.rows.iter().map(cost), cost_label),
+            y: decade_axis(
+                curves.iter().flat_map(|c| c.points.iter().map(|p| p.1)),
+                "relative error of x_jam (-)",
+            ),
+            curves,
+            marks: Vec::new(),
+        };
+        let mut panels = vec![integrators];
+        if !min_norm.is_empty() {
+            let floor_deg = scene.min_norm.bisection_tol_rad.to_degrees();
+            let pts: Vec<(f64, f64)> = min_norm
+                .iter()
+                .filter_map(|r| r.error_deg.map(|e| (r.tol, e)))
+                .collect();
+            let tol_axis = decade_axis(
+                min_norm.iter().map(|r| r.tol),
+                "clarabel tolerance tol_feas = tol_gap = tol_infeas (-)",
+            );
+            let floor = Curve {
+                label: format!(
+                    "bisection width {} rad = {} deg (the error's floor)",
+                    sci(scene.min_norm.bisection_tol_rad),
+                    sci(floor_deg)
+                ),
+                style: CurveStyle::Line(LineKind::Dotted),
+                points: vec![(tol_axis.min, floor_deg), (tol_axis.max, floor_deg)],
+            };
+            panels.push(Panel {
+                y: decade_axis(
+                    pts.iter().map(|p| p.1).chain([floor_deg]),
+                    "error of min-norm θ_jam (deg)",
+                ),
+                x: tol_axis,
+                curves: vec![
+                    Curve {
+                        label: "min-norm by clarabel vs closed form (translational)".into(),
+                        style: CurveStyle::LinePoints(LineKind::Solid, Marker::Triangle),
+                        points: pts,
+                    },
+                    floor,
+                ],
+                marks: Vec::new(),
+            });
+        }
+        let mut notes = vec![
+            "Cost is counted, not timed, so the picture is the same on every machine; \
+             `jamchart accuracy` reports median wall times."
+                .to_string(),
+        ];
+        for r in &study.references {
+            notes.push(format!(
+                "reference {} at rtol {}: {} x_jam = {} mm",
+                r.method.as_str(),
+                sci(r.rtol),
+                r.status,
+                r.x_jam_mm.map_or("-".into(), |x| format!("{x:.6}"))
+            ));
+        }
+        for r in study.rows.iter().filter(|r| r.rel_error.is_none()) {
+            notes.push(format!(
+                "not drawn: {} at rtol {}: {}",
+                r.method.as_str(),
+                sci(r.rtol),
+                r.reason.as_deref().unwrap_or("no error")
+            ));
+        }
+        for r in min_norm.iter().filter(|r| r.error_deg.is_none()) {
+            notes.push(format!(
+                "not drawn: min-norm at tol {}: {}",
+                sci(r.tol),
+                r.status
+            ));
+        }
+        let figure = Figure {
+            title: scene.title.clone(),
+            subtitle: scene_subtitle_with(
+                &format!(
+                    "simulation, {} drive; errors against the other method's reference",
+                    d.drive.as_str()
+                ),
+                p,
+                &[],
+            ),
+            panels,
+            notes,
+        };
+        Ok(WorkPrecision {
+            figure,
+            study,
+            min_norm,
+        })
+    }
+
+    /// Both studies as one CSV: a row per point, `study` telling them apart.
+    pub fn data(&self, _scene: &Scene) -> DataFile {
+        let f = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
+        let mut s = String::from(
+            "study,method,tol,status,x_jam_mm,theta_jam_deg,error,rel_error,steps,rhs_evals,\
+             jacobian_evals,qp_iterations,reason\n",
+        );
+        for r in &self.study.rows {
+            s.push_str(&format!(
+                "integrator,{},{:e},{},{},,{},{},{},{},{},,{}\n",
+                r.method.as_str(),
+                r.rtol,
+                r.status,
+                f(r.x_jam_mm),
+                f(r.error_mm),
+                f(r.rel_error),
+                r.steps,
+                r.rhs_evals,
+                r.jacobian_evals,
+                quoted(r.reason.as_deref())
+            ));
+        }
+        for r in &self.min_norm {
+            s.push_str(&format!(
+                "min_norm,clarabel,{:e},{},,{},{},,{},,,{},\n",
+                r.tol,
+                r.status,
+                f(r.theta_jam_deg),
+                f(r.error_deg),
+                r.solves,
+                r.iterations
+            ));
+        }
+        DataFile::csv(s)
+    }
+
+    /// Draws the panels.
+    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+        self.figure.draw(root)
+    }
+}
+
+fn sci_first(v: &[f64]) -> String {
+    v.iter().copied().reduce(f64::max).map_or("-".into(), sci)
+}
+
+fn sci_last(v: &[f64]) -> String {
+    v.iter().copied().reduce(f64::min).map_or("-".into(), sci)
+}
+
+fn quoted(s: Option<&str>) -> String {
+    s.map_or(String::new(), |w| format!("\"{}\"", w.replace('"', "'")))
+}

@@ -1,0 +1,237 @@
+//! A figure of stacked x-y panels, the drawing shared by the trace, time-series and
+//! work-precision charts: each panel has its own axes (linear or log), curves, point sets and
+//! labelled points; one legend strip and optional note lines sit below the panels.
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+use super::axes::{self, DrawResult, Margins, PlotAxis};
+use super::legend::{self, LegendEntry, Swatch};
+use super::style::{self, INK, LineKind, Marker};
+use crate::grid::AxisScale;
+
+/// How a curve is drawn.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CurveStyle {
+    /// A line through the points.
+    Line(LineKind),
+    /// A marker at each point.
+    Points(Marker),
+    /// A line with a marker at each point.
+    LinePoints(LineKind, Marker),
+}
+
+/// One curve or point set of a panel, in value space (the panel's axes map it).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Curve {
+    /// Legend text (entries with the same text are listed once).
+    pub label: String,
+    /// Line, markers or both.
+    pub style: CurveStyle,
+    /// The points (x, y).
+    pub points: Vec<(f64, f64)>,
+}
+
+/// A labelled point with dotted guides to the panel's left and bottom axes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mark {
+    /// The point (x, y) in value space.
+    pub at: (f64, f64),
+    /// The label, on a white box.
+    pub text: String,
+    /// Where the label sits, 14 px off the point.
+    pub side: LabelSide,
+}
+
+/// Where a mark's label sits relative to its point.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LabelSide {
+    /// Up and to the left.
+    AboveLeft,
+    /// Up and to the right.
+    AboveRight,
+    /// Down and to the right.
+    BelowRight,
+}
+
+impl LabelSide {
+    /// Offset in px and the text anchor at the offset point.
+    fn place(self) -> ((i32, i32), Pos) {
+        match self {
+            LabelSide::AboveLeft => ((-14, -14), Pos::new(HPos::Right, VPos::Bottom)),
+            LabelSide::AboveRight => ((14, -14), Pos::new(HPos::Left, VPos::Bottom)),
+            LabelSide::BelowRight => ((14, 14), Pos::new(HPos::Left, VPos::Top)),
+        }
+    }
+}
+
+/// One panel: axes, curves and marks.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Panel {
+    /// Horizontal axis.
+    pub x: PlotAxis,
+    /// Vertical axis.
+    pub y: PlotAxis,
+    /// Curves, drawn in order.
+    pub curves: Vec<Curve>,
+    /// Labelled points, drawn last.
+    pub marks: Vec<Mark>,
+}
+
+/// A whole figure: title, subtitle, panels top to bottom, note lines and the legend.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Figure {
+    /// The chart title.
+    pub title: String,
+    /// One line under the title naming the parameters.
+    pub subtitle: String,
+    /// Panels, top to bottom.
+    pub panels: Vec<Panel>,
+    /// Lines of small text between the panels and the legend.
+    pub notes: Vec<String>,
+}
+
+/// Room in px between stacked panels (tick labels and the x-axis label of the upper one).
+const GAP_PX: i32 = 78;
+
+impl Figure {
+    fn legend(&self) -> Vec<LegendEntry> {
+        let mut out: Vec<LegendEntry> = Vec::new();
+        for c in self.panels.iter().flat_map(|p| &p.curves) {
+            if out.iter().any(|e| e.label == c.label) {
+                continue;
+            }
+            let sw = match c.style {
+                CurveStyle::Line(k) | CurveStyle::LinePoints(k, _) => Swatch::Line(k),
+                CurveStyle::Points(m) => Swatch::Marker(m),
+            };
+            out.push(LegendEntry::new(sw, c.label.clone()));
+        }
+        out
+    }
+
+    /// Draws the figure on `root`.
+    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+        let (w, h) = root.dim_in_pixel();
+        let (w, h) = (w as i32, h as i32);
+        let entries = self.legend();
+        let legend_top = h - 12 - legend::rows_needed(root, &entries, w - 120)? * legend::ROW_PX;
+        let note_px = style::NOTE_PX as i32 + 6;
+        let notes_top = legend_top - 6 - self.notes.len() as i32 * note_px;
+        let (top, n) = (72, self.panels.len().max(1) as i32);
+        let panel_h = (notes_top - 64 - top - GAP_PX * (n - 1)) / n;
+        for (i, panel) in self.panels.iter().enumerate() {
+            let t = top + i as i32 * (panel_h + GAP_PX);
+            let m = Margins {
+                top: t as u32,
+                bottom: (h - t - panel_h) as u32,
+                left: 105,
+                right: 40,
+            };
+            let chart = axes::build_chart(root, &panel.x, &panel.y, m)?;
+            axes::draw_grid(&chart, &panel.x, &panel.y)?;
+            let area = chart.plotting_area();
+            for c in &panel.curves {
+                let pts: Vec<(f64, f64)> = c
+                    .points
+                    .iter()
+                    .filter(|(x, y)| visible(&panel.x, *x) && visible(&panel.y, *y))
+                    .map(|&(x, y)| (panel.x.to_plot(x), panel.y.to_plot(y)))
+                    .collect();
+                let (line, marker) = match c.style {
+                    CurveStyle::Line(k) => (Some(k), None),
+                    CurveStyle::Points(m) => (None, Some(m)),
+                    CurveStyle::LinePoints(k, m) => (Some(k), Some(m)),
+                };
+                if let Some(k) = line {
+                    style::draw_line(area, &pts, k, INK)?;
+                }
+                if let Some(m) = marker {
+                    for p in &pts {
+                        style::draw_marker(area, m, *p)?;
+                    }
+                }
+            }
+            for mk in &panel.marks {
+                let (x, y) = (&panel.x, &panel.y);
+                let guide = [
+                    vec![
+                        (x.to_plot(mk.at.0), y.to_plot(mk.at.1)),
+                        (x.to_plot(mk.at.0), y.to_plot(y.min)),
+                    ],
+                    vec![
+                        (x.to_plot(mk.at.0), y.to_plot(mk.at.1)),
+                        (x.to_plot(x.min), y.to_plot(mk.at.1)),
+                    ],
+                ];
+                for g in guide {
+                    style::draw_line(area, &g, LineKind::Dotted, INK)?;
+                }
+                let px = axes::pixel(&chart, x, y, mk.at.0, mk.at.1);
+                style::draw_marker(root, Marker::Dot, px)?;
+                let (off, anchor) = mk.side.place();
+                axes::boxed_text(
+                    root,
+                    &mk.text,
+                    (px.0 + off.0, px.1 + off.1),
+                    anchor,
+                    style::NOTE_PX,
+                )?;
+            }
+            axes::draw_frame(root, &chart, &panel.x, &panel.y)?;
+        }
+        axes::draw_title(root, &self.title)?;
+        let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
+        root.draw(&Text::new(self.subtitle.clone(), (w / 2, 40), sub))?;
+        let note = style::text(style::NOTE_PX).pos(Pos::new(HPos::Left, VPos::Top));
+        for (i, line) in self.notes.iter().enumerate() {
+            let y = notes_top + i as i32 * note_px;
+            root.draw(&Text::new(line.clone(), (60, y), note.clone()))?;
+        }
+        legend::draw_legend(root, &entries, 60, legend_top, w - 120)
+    }
+}
+
+/// Whether `v` can be drawn on axis `a` (finite, and positive on a log axis).
+fn visible(a: &PlotAxis, v: f64) -> bool {
+    v.is_finite() && (a.scale == AxisScale::Linear || v > 0.0)
+}
+
+/// A log axis over whole decades around the positive finite `values` (1..10 when none).
+pub fn decade_axis(values: impl IntoIterator<Item = f64>, label: impl Into<String>) -> PlotAxis {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in values.into_iter().filter(|v| v.is_finite() && *v > 0.0) {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    let (lo, hi) = if lo.is_finite() {
+        (lo, hi)
+    } else {
+        (1.0, 10.0)
+    };
+    let (mut k0, mut k1) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+    if k1 <= k0 {
+        k1 = k0 + 1;
+    }
+    // A value on a decade line would touch the frame: one more decade of room.
+    if (lo / 10f64.powi(k0) - 1.0).abs() < 0.05 {
+        k0 -= 1;
+    }
+    if (hi / 10f64.powi(k1) - 1.0).abs() < 0.05 {
+        k1 += 1;
+    }
+    PlotAxis::new(10f64.powi(k0), 10f64.powi(k1), AxisScale::Log, label)
+}
+
+/// A linear axis over the finite `values` with 6 % headroom (0..1 when none).
+pub fn padded_axis(values: impl IntoIterator<Item = f64>, label: impl Into<String>) -> PlotAxis {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in values.into_iter().filter(|v| v.is_finite()) {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    let (lo, hi) = if lo.is_finite() { (lo, hi) } else { (0.0, 1.0) };
+    let pad = (0.06 * (hi - lo)).max(1e-9 * hi.abs().max(1.0));
+    PlotAxis::new(lo - pad, hi + pad, AxisScale::Linear, label)
+}
