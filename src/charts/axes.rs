@@ -438,7 +438,7 @@ mod tests {
 
     #[test]
     fn decade_ticks_label_powers_of_ten() {
-        let t = decade_ticks(1e-10, 1.0, 600.0);
+        let t = decade_ticks(1e-10, 1.0, 300.0);
         let labels: Vec<&str> = t.major.iter().map(|(_, s)| s.as_str()).collect();
         assert_eq!(labels, ["10⁻¹⁰", "10⁻⁸", "10⁻⁶", "10⁻⁴", "10⁻²", "10⁰"]);
         assert_eq!(power_of_ten(5), "10⁵");

@@ -96,6 +96,7 @@ impl Convergence {
                     .collect(),
             }],
             marks: Vec::new(),
+            tags: Vec::new(),
         };
         let mut residuals = Panel {
             x: x.clone(),
@@ -130,6 +131,7 @@ impl Convergence {
                 },
             ],
             marks: Vec::new(),
+            tags: Vec::new(),
         };
         if let Some(end) = trace.last() {
             residuals.marks.push(Mark {
@@ -141,6 +143,7 @@ impl Convergence {
                     sci(end.res_dual)
                 ),
                 side: LabelSide::AboveLeft,
+                guides: false,
             });
         }
         let objective_note = match (trace.first(), trace.last()) {
@@ -176,17 +179,13 @@ impl Convergence {
         })
     }
 
-    /// The trace as CSV: iteration, objective (N^2), residuals.
+    /// The trace as CSV: the palm angle (deg), iteration, objective (N^2), residuals.
     pub fn data(&self, _scene: &Scene) -> DataFile {
-        let mut s = format!(
-            "# clarabel trace of the min-norm program at theta = {} deg\n\
-             iteration,objective_n2,res_primal,res_dual\n",
-            self.theta_deg
-        );
+        let mut s = String::from("theta_deg,iteration,objective_n2,res_primal,res_dual\n");
         for p in &self.trace {
             s.push_str(&format!(
-                "{},{},{:e},{:e}\n",
-                p.iteration, p.objective_n2, p.res_primal, p.res_dual
+                "{},{},{},{:e},{:e}\n",
+                self.theta_deg, p.iteration, p.objective_n2, p.res_primal, p.res_dual
             ));
         }
         DataFile::csv(s)

@@ -14,6 +14,8 @@ pub enum Swatch {
     Line(LineKind),
     /// A marker.
     Marker(Marker),
+    /// A line sample with a marker on it.
+    LineMarker(LineKind, Marker),
     /// A filled patch of a region colour.
     Patch(RGBColor),
 }
@@ -85,6 +87,10 @@ pub fn draw_legend<DB: DrawingBackend>(
         match e.swatch {
             Swatch::Line(kind) => style::draw_line(root, &[(x, y), (x + 32, y)], kind, INK)?,
             Swatch::Marker(m) => style::draw_marker(root, m, (x + 16, y))?,
+            Swatch::LineMarker(kind, m) => {
+                style::draw_line(root, &[(x, y), (x + 32, y)], kind, INK)?;
+                style::draw_marker(root, m, (x + 16, y))?;
+            }
             Swatch::Patch(c) => {
                 root.draw(&Rectangle::new([(x, y - 8), (x + 32, y + 8)], c.filled()))?;
                 root.draw(&Rectangle::new(

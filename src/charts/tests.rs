@@ -1,8 +1,14 @@
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use super::jam_map::JamMapLayer;
+use super::models::{Live, Models};
 use super::*;
+use crate::dynamics::accuracy::{Study, StudySettings};
+use crate::dynamics::{DynamicsParams, DynamicsSolution};
 use crate::grid::Statics;
+use crate::minnorm::tolerance::ToleranceRow;
+use crate::minnorm::{ContactSolution, MinNormSettings, PalmSolution};
 
 fn charts_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("charts")
@@ -87,7 +93,9 @@ fn jam_map_without_regions_evaluates_no_grid() {
 #[test]
 fn every_committed_scene_loads() {
     let names = scene_names(&charts_dir()).unwrap();
-    for want in ["fig3", "fig6", "fig7a", "fig7b", "fig7c"] {
+    for want in [
+        "accuracy", "fig3", "fig4", "fig5", "fig6", "fig7a", "fig7b", "fig7c",
+    ] {
         assert!(
             names.iter().any(|n| n == want),
             "{want} missing from {names:?}"
@@ -108,4 +116,142 @@ fn paper_points_on_a_non_mu_sweep_are_refused() {
     std::fs::write(dir.path().join("s.toml"), text).unwrap();
     let msg = load_scene(dir.path(), "s").unwrap_err().to_string();
     assert!(msg.contains("chart.layers") && msg.contains("mu"), "{msg}");
+}
+
+/// Counts the model calls of a chart, delegating to the models themselves.
+#[derive(Default)]
+struct Counting {
+    min_norm: AtomicUsize,
+    traces: AtomicUsize,
+    tolerance_studies: AtomicUsize,
+    simulations: AtomicUsize,
+    accuracy_studies: AtomicUsize,
+}
+
+impl Counting {
+    fn counts(&self) -> [usize; 5] {
+        [
+            &self.min_norm,
+            &self.traces,
+            &self.tolerance_studies,
+            &self.simulations,
+            &self.accuracy_studies,
+        ]
+        .map(|c| c.load(Ordering::Relaxed))
+    }
+}
+
+fn bump(c: &AtomicUsize) {
+    c.fetch_add(1, Ordering::Relaxed);
+}
+
+impl Models for Counting {
+    fn min_norm(&self, p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
+        bump(&self.min_norm);
+        Live.min_norm(p, s)
+    }
+    fn min_norm_trace(
+        &self,
+        p: &SceneParams,
+        theta_deg: f64,
+        s: &MinNormSettings,
+    ) -> Result<ContactSolution> {
+        bump(&self.traces);
+        Live.min_norm_trace(p, theta_deg, s)
+    }
+    fn min_norm_tolerances(
+        &self,
+        p: &SceneParams,
+        s: &MinNormSettings,
+        tolerances: &[f64],
+    ) -> Result<Vec<ToleranceRow>> {
+        bump(&self.tolerance_studies);
+        Live.min_norm_tolerances(p, s, tolerances)
+    }
+    fn simulate(
+        &self,
+        p: &SceneParams,
+        d: &DynamicsParams,
+        series_dt_s: Option<f64>,
+    ) -> Result<DynamicsSolution> {
+        bump(&self.simulations);
+        Live.simulate(p, d, series_dt_s)
+    }
+    fn accuracy_study(
+        &self,
+        p: &SceneParams,
+        d: &DynamicsParams,
+        s: &StudySettings,
+    ) -> Result<Study> {
+        bump(&self.accuracy_studies);
+        Live.accuracy_study(p, d, s)
+    }
+}
+
+/// The scene principle: a scene computes only what it draws. Each committed scene's model calls
+/// are counted: [min-norm solves, clarabel traces, min-norm tolerance studies, simulations,
+/// integrator studies]. fig3 and fig7 build no program and no simulation; fig4 runs no
+/// simulation; fig5 runs one and no program; fig6 one per drawn point.
+#[test]
+fn every_scene_makes_only_the_model_calls_it_draws() {
+    let sim_points = 2 * sweep_layers::SIMULATION_MU.len();
+    let expected = |name: &str| -> [usize; 5] {
+        match name {
+            "fig3" | "fig7a" | "fig7b" | "fig7c" => [0; 5],
+            "fig4" => [1, 1, 0, 0, 0],
+            "fig5" => [0, 0, 0, 1, 0],
+            "fig6" => [crate::paper::TABLE1.len(), 0, 0, sim_points, 0],
+            "accuracy" => [0, 0, 1, 0, 1],
+            other => panic!("add scene {other} to this test with the calls it should make"),
+        }
+    };
+    for name in scene_names(&charts_dir()).unwrap() {
+        let scene = load_scene(&charts_dir(), &name).unwrap();
+        let counting = Counting::default();
+        Chart::compute_with(&scene, &counting).unwrap();
+        assert_eq!(
+            counting.counts(),
+            expected(&name),
+            "scene {name}: [min-norm, traces, tolerance studies, simulations, accuracy studies]"
+        );
+    }
+}
+
+/// fig4's trace converges at the closed form's theta_jam, fig5's jam lies within 1.5 % of
+/// r/mu = 25 mm (issue 4's bar for the defaults), as their labels say.
+#[test]
+fn fig4_and_fig5_draw_the_jam_of_the_paper_case() {
+    let fig4 = load_scene(&charts_dir(), "fig4").unwrap();
+    let Chart::Convergence(c) = Chart::compute(&fig4).unwrap() else {
+        panic!("fig4 is a convergence chart")
+    };
+    let csv = String::from_utf8(c.data(&fig4).bytes).unwrap();
+    let rows: Vec<&str> = csv.lines().skip(1).collect();
+    assert!(rows.len() >= 3, "{csv}");
+    let theta: f64 = rows[0].split(',').next().unwrap().parse().unwrap();
+    assert!((theta - 44.646).abs() < 5e-4, "trace at {theta} deg");
+    let last: Vec<f64> = rows[rows.len() - 1]
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    assert!(last[3] < 1e-8 && last[4] < 1e-8, "not converged: {last:?}");
+
+    let fig5 = load_scene(&charts_dir(), "fig5").unwrap();
+    let Chart::TimeSeries(t) = Chart::compute(&fig5).unwrap() else {
+        panic!("fig5 is a time series")
+    };
+    let (tj, xj) = t.jam().expect("fig5 jams");
+    assert!((xj - 25.0).abs() < 0.015 * 25.0, "x_jam {xj} mm");
+    let csv = String::from_utf8(t.data(&fig5).bytes).unwrap();
+    let t_last: f64 = csv
+        .lines()
+        .last()
+        .and_then(|l| l.split(',').next())
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(
+        t_last > tj + 0.1,
+        "the series ends at {t_last} s, the jam is at {tj} s"
+    );
 }

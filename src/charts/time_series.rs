@@ -67,6 +67,7 @@ struct Sample {
 pub struct TimeSeries {
     figure: Figure,
     samples: Vec<Sample>,
+    jam: Option<(f64, f64)>,
 }
 
 impl TimeSeries {
@@ -127,6 +128,7 @@ impl TimeSeries {
             ),
             curves: speed_curves,
             marks: Vec::new(),
+            tags: Vec::new(),
         };
         let rigid = statics::solve(p).x_rigid_mm;
         let mut x_curves = vec![
@@ -159,18 +161,22 @@ impl TimeSeries {
             ),
             curves: x_curves,
             marks: Vec::new(),
+            tags: Vec::new(),
         };
         if let (Some(tj), Some(xj)) = (sol.t_jam_s, sol.x_jam_mm) {
             let v = interpolate(&samples, tj, |s| s.row.x_dot_mm_s);
+            // Labels at the left end of the guides, where the motion has not yet risen.
             speed.marks.push(Mark {
                 at: (tj, v),
                 text: format!("P_jam: t_jam = {tj:.4} s, ẋ = {v:.2} mm/s"),
-                side: LabelSide::AboveLeft,
+                side: LabelSide::GuideStart { above: true },
+                guides: true,
             });
             position.marks.push(Mark {
                 at: (tj, xj),
                 text: format!("P_jam: t_jam = {tj:.4} s, x_jam = {xj:.3} mm"),
-                side: LabelSide::AboveLeft,
+                side: LabelSide::GuideStart { above: false },
+                guides: true,
             });
         }
         let theta = sol.theta_jam_deg.map_or("-".into(), |t| format!("{t:.3}°"));
@@ -194,7 +200,16 @@ impl TimeSeries {
                 sol.status
             )],
         };
-        Ok(TimeSeries { figure, samples })
+        Ok(TimeSeries {
+            figure,
+            samples,
+            jam: sol.t_jam_s.zip(sol.x_jam_mm),
+        })
+    }
+
+    /// The marked jam point (t_jam in s, x_jam in mm), if the simulation jams.
+    pub fn jam(&self) -> Option<(f64, f64)> {
+        self.jam
     }
 
     /// The series as CSV, with the rigid-disc references.

@@ -15,7 +15,7 @@ use super::convergence::sci;
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
-use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
+use super::xy::{Curve, CurveStyle, Figure, Panel, Tag, decade_axis};
 use super::{DataFile, scene_subtitle_with};
 use crate::dynamics::Method;
 use crate::dynamics::accuracy::{Study, StudyRow, StudySettings};
@@ -142,6 +142,23 @@ impl WorkPrecision {
             method_curve(Method::Radau5, LineKind::Solid, Marker::Dot),
             method_curve(Method::Dopri5, LineKind::Dashed, Marker::Square),
         ];
+        // The loosest and tightest run of each method named by its tolerance.
+        let mut tags = Vec::new();
+        for m in [Method::Radau5, Method::Dopri5] {
+            let drawn: Vec<&StudyRow> = study
+                .rows
+                .iter()
+                .filter(|r| r.method == m && r.rel_error.is_some_and(|e| e > 0.0))
+                .collect();
+            let ends = [drawn.first(), drawn.last()];
+            for (i, r) in ends.into_iter().flatten().enumerate() {
+                tags.push(Tag {
+                    at: (cost(r), r.rel_error.unwrap_or(1.0)),
+                    text: format!("rtol {}", sci(r.rtol)),
+                    left: m == Method::Radau5 && i == 0,
+                });
+            }
+        }
         let integrators = Panel {
             x: decade_axis(study.rows.iter().map(cost), cost_label),
             y: decade_axis(
@@ -150,6 +167,7 @@ impl WorkPrecision {
             ),
             curves,
             marks: Vec::new(),
+            tags,
         };
         let mut panels = vec![integrators];
         if !min_norm.is_empty() {
@@ -164,7 +182,7 @@ impl WorkPrecision {
             );
             let floor = Curve {
                 label: format!(
-                    "bisection width {} rad = {} deg (the error's floor)",
+                    "bisection width {} rad = {} deg (the search's resolution)",
                     sci(scene.min_norm.bisection_tol_rad),
                     sci(floor_deg)
                 ),
@@ -186,6 +204,7 @@ impl WorkPrecision {
                     floor,
                 ],
                 marks: Vec::new(),
+                tags: Vec::new(),
             });
         }
         let mut notes = vec![

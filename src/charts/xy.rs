@@ -42,10 +42,12 @@ pub struct Mark {
     pub text: String,
     /// Where the label sits, 14 px off the point.
     pub side: LabelSide,
+    /// Dotted guides from the point to the left and bottom axes (a read-off).
+    pub guides: bool,
 }
 
 /// Where a mark's label sits relative to its point.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum LabelSide {
     /// Up and to the left.
     AboveLeft,
@@ -53,12 +55,17 @@ pub enum LabelSide {
     AboveRight,
     /// Down and to the right.
     BelowRight,
+    /// At the left end of the horizontal guide, just above it (true) or below it (false): the
+    /// guide leads the eye from the label to the point.
+    GuideStart { above: bool },
 }
 
 impl LabelSide {
     /// Offset in px and the text anchor at the offset point.
     fn place(self) -> ((i32, i32), Pos) {
         match self {
+            LabelSide::GuideStart { above: true } => ((8, -4), Pos::new(HPos::Left, VPos::Bottom)),
+            LabelSide::GuideStart { above: false } => ((8, 5), Pos::new(HPos::Left, VPos::Top)),
             LabelSide::AboveLeft => ((-14, -14), Pos::new(HPos::Right, VPos::Bottom)),
             LabelSide::AboveRight => ((14, -14), Pos::new(HPos::Left, VPos::Bottom)),
             LabelSide::BelowRight => ((14, 14), Pos::new(HPos::Left, VPos::Top)),
@@ -77,6 +84,19 @@ pub struct Panel {
     pub curves: Vec<Curve>,
     /// Labelled points, drawn last.
     pub marks: Vec<Mark>,
+    /// Short texts beside points (e.g. the tolerance of a run).
+    pub tags: Vec<Tag>,
+}
+
+/// A short text beside a point, without a box or marker.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tag {
+    /// The point (x, y) in value space.
+    pub at: (f64, f64),
+    /// The text.
+    pub text: String,
+    /// Left of the point (true) or right of it.
+    pub left: bool,
 }
 
 /// A whole figure: title, subtitle, panels top to bottom, note lines and the legend.
@@ -103,7 +123,8 @@ impl Figure {
                 continue;
             }
             let sw = match c.style {
-                CurveStyle::Line(k) | CurveStyle::LinePoints(k, _) => Swatch::Line(k),
+                CurveStyle::Line(k) => Swatch::Line(k),
+                CurveStyle::LinePoints(k, m) => Swatch::LineMarker(k, m),
                 CurveStyle::Points(m) => Swatch::Marker(m),
             };
             out.push(LegendEntry::new(sw, c.label.clone()));
@@ -118,7 +139,8 @@ impl Figure {
         let entries = self.legend();
         let legend_top = h - 12 - legend::rows_needed(root, &entries, w - 120)? * legend::ROW_PX;
         let note_px = style::NOTE_PX as i32 + 6;
-        let notes_top = legend_top - 6 - self.notes.len() as i32 * note_px;
+        let notes = wrap(root, &self.notes, w - 120)?;
+        let notes_top = legend_top - 6 - notes.len() as i32 * note_px;
         let (top, n) = (72, self.panels.len().max(1) as i32);
         let panel_h = (notes_top - 64 - top - GAP_PX * (n - 1)) / n;
         for (i, panel) in self.panels.iter().enumerate() {
@@ -145,7 +167,14 @@ impl Figure {
                     CurveStyle::LinePoints(k, m) => (Some(k), Some(m)),
                 };
                 if let Some(k) = line {
-                    style::draw_line(area, &pts, k, INK)?;
+                    // Runs inside the vertical range only: a curve leaving the panel ends at
+                    // its frame instead of being drawn along it.
+                    let (lo, hi) = (panel.y.plot_range().start, panel.y.plot_range().end);
+                    for run in pts.split(|p| p.1 < lo || p.1 > hi) {
+                        if run.len() > 1 {
+                            style::draw_line(area, run, k, INK)?;
+                        }
+                    }
                 }
                 if let Some(m) = marker {
                     for p in &pts {
@@ -165,19 +194,28 @@ impl Figure {
                         (x.to_plot(x.min), y.to_plot(mk.at.1)),
                     ],
                 ];
-                for g in guide {
+                for g in guide.into_iter().filter(|_| mk.guides) {
                     style::draw_line(area, &g, LineKind::Dotted, INK)?;
                 }
                 let px = axes::pixel(&chart, x, y, mk.at.0, mk.at.1);
                 style::draw_marker(root, Marker::Dot, px)?;
                 let (off, anchor) = mk.side.place();
-                axes::boxed_text(
-                    root,
-                    &mk.text,
-                    (px.0 + off.0, px.1 + off.1),
-                    anchor,
-                    style::NOTE_PX,
-                )?;
+                let from = match mk.side {
+                    LabelSide::GuideStart { .. } => axes::pixel(&chart, x, y, x.min, mk.at.1),
+                    _ => px,
+                };
+                let at = (from.0 + off.0, from.1 + off.1);
+                axes::boxed_text(root, &mk.text, at, anchor, style::NOTE_PX)?;
+            }
+            for tag in &panel.tags {
+                let px = axes::pixel(&chart, &panel.x, &panel.y, tag.at.0, tag.at.1);
+                let (dx, h) = if tag.left {
+                    (-12, HPos::Right)
+                } else {
+                    (12, HPos::Left)
+                };
+                let font = style::text(style::TICK_PX).pos(Pos::new(h, VPos::Center));
+                root.draw(&Text::new(tag.text.clone(), (px.0 + dx, px.1), font))?;
             }
             axes::draw_frame(root, &chart, &panel.x, &panel.y)?;
         }
@@ -185,12 +223,40 @@ impl Figure {
         let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
         root.draw(&Text::new(self.subtitle.clone(), (w / 2, 40), sub))?;
         let note = style::text(style::NOTE_PX).pos(Pos::new(HPos::Left, VPos::Top));
-        for (i, line) in self.notes.iter().enumerate() {
+        for (i, line) in notes.iter().enumerate() {
             let y = notes_top + i as i32 * note_px;
             root.draw(&Text::new(line.clone(), (60, y), note.clone()))?;
         }
         legend::draw_legend(root, &entries, 60, legend_top, w - 120)
     }
+}
+
+/// `notes` broken at spaces into lines at most `width` px wide in the note font.
+fn wrap<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    notes: &[String],
+    width: i32,
+) -> Result<Vec<String>, DrawingAreaErrorKind<DB::ErrorType>> {
+    let font = style::text(style::NOTE_PX);
+    let mut out = Vec::new();
+    for note in notes {
+        let mut line = String::new();
+        for word in note.split(' ') {
+            let candidate = if line.is_empty() {
+                word.to_string()
+            } else {
+                format!("{line} {word}")
+            };
+            if !line.is_empty() && root.estimate_text_size(&candidate, &font)?.0 as i32 > width {
+                out.push(std::mem::take(&mut line));
+                line = word.to_string();
+            } else {
+                line = candidate;
+            }
+        }
+        out.push(line);
+    }
+    Ok(out)
 }
 
 /// Whether `v` can be drawn on axis `a` (finite, and positive on a log axis).
@@ -214,11 +280,12 @@ pub fn decade_axis(values: impl IntoIterator<Item = f64>, label: impl Into<Strin
     if k1 <= k0 {
         k1 = k0 + 1;
     }
-    // A value on a decade line would touch the frame: one more decade of room.
-    if (lo / 10f64.powi(k0) - 1.0).abs() < 0.05 {
+    // A value within a third of a decade line would touch the frame (its marker and label
+    // cross it): one more decade of room.
+    if lo / 10f64.powi(k0) < 1.35 {
         k0 -= 1;
     }
-    if (hi / 10f64.powi(k1) - 1.0).abs() < 0.05 {
+    if 10f64.powi(k1) / hi < 1.35 {
         k1 += 1;
     }
     PlotAxis::new(10f64.powi(k0), 10f64.powi(k1), AxisScale::Log, label)
