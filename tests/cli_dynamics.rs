@@ -178,6 +178,8 @@ fn accuracy_writes_table_and_chart_data() {
             "1",
             "--reference-rtol",
             "1e-9",
+            "--min-norm-tolerances",
+            "1e-3,1e-8",
             "--format",
             "csv",
             "--out-dir",
@@ -191,7 +193,12 @@ fn accuracy_writes_table_and_chart_data() {
         "{csv}"
     );
     assert_eq!(csv.lines().count(), 5, "{csv}");
-    for name in ["accuracy.md", "accuracy.csv", "accuracy.json"] {
+    for name in [
+        "accuracy.md",
+        "accuracy.csv",
+        "accuracy.json",
+        "accuracy_min_norm.csv",
+    ] {
         assert!(dir.path().join("acc").join(name).is_file(), "{name}");
     }
     let json: Value = serde_json::from_str(
@@ -204,9 +211,31 @@ fn accuracy_writes_table_and_chart_data() {
         assert!(r["median_time_s"].as_f64().unwrap() > 0.0);
         assert!(r["rel_error"].as_f64().unwrap() < 1e-2, "{r}");
     }
+    // The min-norm part: clarabel at its default 1e-8 meets the closed form to 1e-5 deg.
+    let mn = json["min_norm_tolerance"].as_array().unwrap();
+    assert_eq!(mn.len(), 2);
+    let e = mn[1]["error_deg"].as_f64().unwrap();
+    assert!(e < 1e-5, "min-norm error {e} deg at tol 1e-8");
     let md = std::fs::read_to_string(dir.path().join("acc/accuracy.md")).unwrap();
     assert!(
-        md.contains("| radau5 |") && md.contains("| dopri5 |"),
+        md.contains("| radau5 |") && md.contains("| dopri5 |") && md.contains("| 1e-8 |"),
         "{md}"
     );
+}
+
+#[test]
+fn accuracy_refuses_a_bad_min_norm_tolerance() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &[
+            "accuracy",
+            "--tolerances",
+            "1e-3",
+            "--min-norm-tolerances",
+            "1e-3,abc",
+        ],
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("abc"), "{}", stderr(&o));
 }

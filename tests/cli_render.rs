@@ -103,7 +103,10 @@ fn unknown_scene_exits_2_and_lists_the_known_ones() {
         err.starts_with("jamchart: ") && err.contains("fig9"),
         "{err}"
     );
-    assert!(err.contains("fig3, fig6, fig7a, fig7b, fig7c"), "{err}");
+    assert!(
+        err.contains("accuracy, fig3, fig4, fig5, fig6, fig7a, fig7b, fig7c"),
+        "{err}"
+    );
     assert!(
         !dir.path().join("o").exists(),
         "nothing is written for a bad request"

@@ -11,6 +11,7 @@ use super::dynamics_args::DynamicsArgs;
 use super::series::write_atomic;
 use crate::dynamics::accuracy::{Study, StudySettings, run_study};
 use crate::error::{Error, Result};
+use crate::minnorm::tolerance::{ToleranceRow, tolerance_study};
 
 /// Flags of `accuracy`.
 #[derive(Debug, Clone, Args)]
@@ -31,7 +32,15 @@ pub struct AccuracyArgs {
     /// Output format on stdout.
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]
     pub format: TableFormat,
-    /// Also write accuracy.md, accuracy.csv (the log-log chart's data) and accuracy.json here.
+    /// clarabel tolerances of the min-norm part, comma-separated; "none" skips it
+    /// [default: 1e-2,1e-3,...,1e-10].
+    ///
+    /// The min-norm model solved by clarabel alone at each tol_feas = tol_gap = tol_infeas,
+    /// its theta_jam compared with the closed form (translational formulation).
+    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    pub min_norm_tolerances: Option<Vec<String>>,
+    /// Also write accuracy.md, accuracy.csv (the log-log chart's data), accuracy.json and
+    /// accuracy_min_norm.csv here.
     #[arg(long, value_name = "DIR")]
     pub out_dir: Option<PathBuf>,
 }
@@ -69,20 +78,96 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
     if let Some(b) = bar {
         b.finish_and_clear();
     }
-    let md = markdown(&study, a.runs);
+    let min_norm = tolerance_study(
+        &config.scene,
+        &config.min_norm,
+        &min_norm_tolerances(a.min_norm_tolerances.as_deref())?,
+    )?;
+    let mut md = markdown(&study, a.runs);
+    md.push_str(&min_norm_markdown(&min_norm));
     let csv = csv(&study);
-    let json = serde_json::to_string_pretty(&study).expect("plain structs serialise") + "\n";
+    let mut doc = serde_json::to_value(&study).expect("plain structs serialise");
+    doc["min_norm_tolerance"] = serde_json::to_value(&min_norm).expect("plain structs serialise");
+    let json = serde_json::to_string_pretty(&doc).expect("JSON values serialise") + "\n";
     if let Some(dir) = &a.out_dir {
         std::fs::create_dir_all(dir).map_err(|e| Error::io("create", dir, e))?;
         write_atomic(&dir.join("accuracy.md"), &md)?;
         write_atomic(&dir.join("accuracy.csv"), &csv)?;
         write_atomic(&dir.join("accuracy.json"), &json)?;
+        write_atomic(&dir.join("accuracy_min_norm.csv"), &min_norm_csv(&min_norm))?;
     }
     Ok(match a.format {
         TableFormat::Text => md,
         TableFormat::Csv => csv,
         TableFormat::Json => json,
     })
+}
+
+/// The min-norm tolerances from `--min-norm-tolerances` ("none" = none; default 1e-2..1e-10).
+fn min_norm_tolerances(arg: Option<&[String]>) -> Result<Vec<f64>> {
+    let Some(list) = arg else {
+        return Ok((2..=10).map(|k| 10f64.powi(-k)).collect());
+    };
+    if list.len() == 1 && list[0].trim() == "none" {
+        return Ok(Vec::new());
+    }
+    list.iter()
+        .map(|v| {
+            v.trim().parse::<f64>().map_err(|_| {
+                Error::invalid(
+                    "--min-norm-tolerances",
+                    v,
+                    "a comma-separated list of numbers in (0, 1), or none",
+                )
+            })
+        })
+        .collect()
+}
+
+fn min_norm_markdown(rows: &[ToleranceRow]) -> String {
+    if rows.is_empty() {
+        return String::new();
+    }
+    let mut s = String::from(
+        "\nMin-norm program: clarabel tolerance against the error of theta_jam (closed form as \
+         reference, translational formulation, exact path off)\n\n\
+         | tol | status | theta_jam [deg] | error [deg] | solves | clarabel iterations | undetermined |\n\
+         |---:|---|---:|---:|---:|---:|---:|\n",
+    );
+    for r in rows {
+        let _ = writeln!(
+            s,
+            "| {:.0e} | {} | {} | {} | {} | {} | {} |",
+            r.tol,
+            r.status,
+            r.theta_jam_deg.map_or("-".into(), |t| format!("{t:.9}")),
+            opt(r.error_deg, 2),
+            r.solves,
+            r.iterations,
+            r.undetermined_solves
+        );
+    }
+    s
+}
+
+fn min_norm_csv(rows: &[ToleranceRow]) -> String {
+    let mut s =
+        String::from("tol,status,theta_jam_deg,error_deg,solves,iterations,undetermined_solves\n");
+    let f = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
+    for r in rows {
+        let _ = writeln!(
+            s,
+            "{:e},{},{},{},{},{},{}",
+            r.tol,
+            r.status,
+            f(r.theta_jam_deg),
+            f(r.error_deg),
+            r.solves,
+            r.iterations,
+            r.undetermined_solves
+        );
+    }
+    s
 }
 
 fn opt(v: Option<f64>, prec: usize) -> String {
