@@ -12,7 +12,7 @@ use super::axes::{DrawResult, PlotAxis, power_of_ten};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
-use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, decade_axis};
+use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
 use super::{DataFile, scene_subtitle_with};
 use crate::error::{Error, Result};
 use crate::grid::AxisScale;
@@ -98,7 +98,7 @@ impl Convergence {
             marks: Vec::new(),
             tags: Vec::new(),
         };
-        let mut residuals = Panel {
+        let residuals = Panel {
             x: x.clone(),
             y: decade_axis(
                 trace
@@ -133,19 +133,6 @@ impl Convergence {
             marks: Vec::new(),
             tags: Vec::new(),
         };
-        if let Some(end) = trace.last() {
-            residuals.marks.push(Mark {
-                at: (end.iteration as f64, end.res_primal),
-                text: format!(
-                    "converged after {} iterations: primal {}, dual {}",
-                    end.iteration,
-                    sci(end.res_primal),
-                    sci(end.res_dual)
-                ),
-                side: LabelSide::AboveLeft,
-                guides: false,
-            });
-        }
         let objective_note = match (trace.first(), trace.last()) {
             (Some(a), Some(b)) => format!(
                 "φ² goes from {:.6} to {:.6} N²: with a translational joint the equilibrium rows \
@@ -164,12 +151,18 @@ impl Convergence {
             panels: vec![objective, residuals],
             notes: vec![
                 objective_note,
-                format!(
-                    "The residuals fall about 100x per iteration until both are below tol_feas = {} \
-                     ({} formulation).",
-                    sci(tol),
-                    s.formulation.as_str()
-                ),
+                match trace.last() {
+                    Some(end) => format!(
+                        "Converged after {} iterations, primal residual {}, dual {}: both below \
+                         tol_feas = {} ({} formulation).",
+                        end.iteration,
+                        sci(end.res_primal),
+                        sci(end.res_dual),
+                        sci(tol),
+                        s.formulation.as_str()
+                    ),
+                    None => String::new(),
+                },
             ],
         };
         Ok(Convergence {
