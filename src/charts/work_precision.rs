@@ -209,7 +209,7 @@ impl WorkPrecision {
         }
         let mut notes = vec![
             "Cost is counted, not timed, so the picture is the same on every machine; \
-             `jamchart accuracy` reports median wall times."
+             jamchart accuracy reports median wall times."
                 .to_string(),
         ];
         for r in &study.references {
