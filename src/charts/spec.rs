@@ -228,6 +228,26 @@ mod tests {
     }
 
     #[test]
+    fn dynamics_override_replaces_its_key_and_refuses_typos() {
+        let mut t = toml::Table::new();
+        t.insert("after_jam_s".into(), toml::Value::Float(0.2));
+        let d = apply_overrides(DynamicsParams::default(), &t, "dynamics").unwrap();
+        assert!((d.after_jam_s - 0.2).abs() < 1e-15);
+        // An optional key the base leaves out is still known.
+        t.insert("atol".into(), toml::Value::Float(1e-7));
+        let d = apply_overrides(DynamicsParams::default(), &t, "dynamics").unwrap();
+        assert_eq!(d.atol, Some(1e-7));
+        t.insert("after_jam".into(), toml::Value::Float(0.2));
+        let msg = apply_overrides(DynamicsParams::default(), &t, "dynamics")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            msg.contains("dynamics") && msg.contains("after_jam"),
+            "{msg}"
+        );
+    }
+
+    #[test]
     fn unknown_chart_key_is_refused_with_its_line() {
         let text = "title = \"t\"\n[chart]\nkind = \"sweep\"\npanls = []\n";
         let msg = parse_toml::<SceneFile>(text, Path::new("s.toml"))

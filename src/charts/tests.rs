@@ -255,3 +255,24 @@ fn fig4_and_fig5_draw_the_jam_of_the_paper_case() {
         "the series ends at {t_last} s, the jam is at {tj} s"
     );
 }
+
+/// The rolling layer's points lie on the F -> infinity line for equal frictions (minnorm docs:
+/// theta_jam = 2 atan mu, x_jam = r/mu), to the bisection's 1e-9 rad (about 3e-8 mm here).
+#[test]
+fn rolling_points_lie_on_the_rigid_limit() {
+    let scene = load_scene(&charts_dir(), "fig6").unwrap();
+    let ChartSpec::Sweep(spec) = &scene.chart else {
+        panic!("fig6 is a sweep")
+    };
+    let series =
+        sweep_layers::series(sweep::SweepLayer::MinNormRolling, spec, &scene, &Live).unwrap();
+    let mut worst: f64 = 0.0;
+    for p in &series[0].points {
+        let s = crate::statics::solve(&scene.params.with_mu(p.at));
+        let (x, xr) = (p.x_jam_mm.unwrap(), s.x_rigid_mm.unwrap());
+        let (t, tr) = (p.theta_jam_deg.unwrap(), s.theta_rigid_deg);
+        worst = worst.max((x - xr).abs()).max((t - tr).abs());
+    }
+    assert_eq!(series[0].points.len(), crate::paper::TABLE1.len());
+    assert!(worst < 1e-6, "worst difference {worst:e} (mm or deg)");
+}
