@@ -1,24 +1,10 @@
 //! The `solve --model dynamics` and `accuracy` commands, run as the real binary in a temp dir.
 
-use std::process::{Command, Output};
-
 use serde_json::Value;
 
-fn jamchart(dir: &std::path::Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_jamchart"))
-        .current_dir(dir)
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+#[path = "common/cli.rs"]
+mod cli_util;
+use cli_util::{jamchart, stderr, stdout};
 
 #[test]
 fn solve_dynamics_json_has_the_statics_keys_and_its_own() {

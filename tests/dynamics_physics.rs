@@ -276,3 +276,28 @@ fn the_papers_1_mm_bar_brings_the_jam_near_its_adams_result() {
         0.01,
     );
 }
+
+/// Regression: the integrators reported "step size 8.9e-16 too small" at t = t_end = 3 s (the
+/// palm flat) whenever their last step landed a rounding error short of t_end, so a disc the
+/// palm could never move (too small for the contact's penetration, or too heavy) came out as
+/// `integrator_failed` instead of `jammed_at_start`.
+#[test]
+fn a_rounding_sliver_before_the_end_is_not_an_integrator_failure() {
+    let d = SceneParams::default();
+    let tiny = SceneParams {
+        radius_mm: 1e-3,
+        ..d
+    };
+    let heavy = SceneParams { mass_kg: 1e6, ..d };
+    for scene in [tiny, heavy] {
+        for method in [Method::Radau5, Method::Dopri5] {
+            let p = DynamicsParams {
+                method,
+                ..Default::default()
+            };
+            let s = run(&scene, &p);
+            assert!(s.failure.is_none(), "{method:?} {scene:?}: {:?}", s.failure);
+            assert_eq!(s.status, JamStatus::JammedAtStart, "{method:?} {scene:?}");
+        }
+    }
+}

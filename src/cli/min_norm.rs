@@ -91,7 +91,11 @@ pub fn render_details(out: &mut String, d: &Map<String, Value>) {
     );
     if let Some(Value::Array(contacts)) = d.get("contacts_at_jam") {
         for c in contacts {
-            let g = |k: &str| c.get(k).and_then(Value::as_f64).unwrap_or(0.0);
+            // Roundoff below the printed digits shows as 0.000, not -0.000.
+            let g = |k: &str| {
+                let v = c.get(k).and_then(Value::as_f64).unwrap_or(0.0);
+                if v.abs() < 5e-4 { 0.0 } else { v }
+            };
             let _ = writeln!(
                 out,
                 "  at the jam, contact {}: f_n = {:.3} N, f_t = {:.3} N, friction utilisation {:.4}",

@@ -103,7 +103,13 @@ fn clap_exit(e: clap::Error) -> i32 {
             let rendered = e.render().to_string();
             let first = rendered.lines().next().unwrap_or("invalid arguments");
             let first = first.strip_prefix("error: ").unwrap_or(first);
-            eprintln!("jamchart: {first}; see 'jamchart --help'");
+            // Keep clap's list of accepted values on the one line: it says what to type instead.
+            let values = rendered
+                .lines()
+                .map(str::trim)
+                .find(|l| l.starts_with("[possible values:"))
+                .map_or(String::new(), |v| format!(" {v}"));
+            eprintln!("jamchart: {first}{values}; see 'jamchart --help'");
             2
         }
     }

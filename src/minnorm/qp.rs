@@ -296,9 +296,9 @@ pub(crate) fn assemble(
             }
             let world = c.normal * f_n + c.tangent[0] * f_t[0] + c.tangent[1] * f_t[1];
             let tangential = f_t[0].hypot(f_t[1]);
-            // A contact carrying next to nothing (roundoff of the largest load) is not slipping;
-            // dividing its roundoff by its roundoff would report noise, or overflow.
-            let utilisation = if c.mu > 0.0 && f_n > 1e-12 * fs {
+            // A contact carrying next to nothing (below the solvers' 1e-10 to 1e-8 of the largest
+            // load) is not slipping: dividing its roundoff by its roundoff would report noise.
+            let utilisation = if c.mu > 0.0 && f_n > 1e-9 * fs {
                 tangential / (c.mu * f_n)
             } else {
                 0.0

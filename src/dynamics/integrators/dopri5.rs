@@ -96,7 +96,8 @@ impl Dopri5 {
         let mut facold: f64 = 1e-4;
         let mut last_rejected = false;
         loop {
-            if t >= t_end {
+            // A step that lands a rounding error short of t_end leaves a sliver that is no step.
+            if t_end - t <= 1e-14 * t.abs().max(1.0) {
                 return (Outcome::Finished, st);
             }
             if st.steps + st.rejected >= tol.max_steps {
