@@ -15,7 +15,7 @@ use super::models::Models;
 use super::spec::Scene;
 use super::style::{self, INK, LineKind, Marker};
 use super::sweep_layers;
-use super::{DataFile, axis_label, scene_subtitle};
+use super::{DataFile, axis_label, scene_subtitle_with};
 use crate::error::{Error, Result};
 use crate::grid::{AxisScale, GridAxis, GridParam};
 use crate::model::SceneParams;
@@ -146,6 +146,24 @@ pub struct Sweep {
 }
 
 impl Sweep {
+    /// The models behind the drawn layers, for the subtitle.
+    fn source(&self) -> &'static str {
+        let has = |f: fn(&SweepLayer) -> bool| self.spec.layers.iter().any(f);
+        let min_norm = has(|l| matches!(l, SweepLayer::MinNorm | SweepLayer::MinNormRolling));
+        let sim = has(|l| {
+            matches!(
+                l,
+                SweepLayer::SimulationMotion | SweepLayer::SimulationForce
+            )
+        });
+        match (min_norm, sim) {
+            (false, false) => "closed-form statics (corrected Eq. 1)",
+            (true, false) => "closed-form statics and min-norm",
+            (false, true) => "closed-form statics and simulation",
+            (true, true) => "closed form, min-norm and simulation",
+        }
+    }
+
     /// Computes the series of every layer.
     pub fn compute(scene: &Scene, spec: &SweepSpec, models: &dyn Models) -> Result<Self> {
         let mut series = Vec::new();
@@ -255,7 +273,7 @@ impl Sweep {
         axes::draw_title(root, &self.title)?;
         let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
         root.draw(&Text::new(
-            scene_subtitle(&self.params, &[a.param]),
+            scene_subtitle_with(self.source(), &self.params, &[a.param]),
             (w / 2, 40),
             sub,
         ))?;
