@@ -58,6 +58,7 @@
 //! thread count; [`charts`] turns scene files (`charts/<name>.toml`) into byte-identical SVG and
 //! PNG design charts with the data behind them (`jamchart render`).
 
+pub mod atomic;
 pub mod charts;
 pub mod cli;
 pub mod config;

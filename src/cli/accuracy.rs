@@ -8,7 +8,7 @@ use clap::Args;
 
 use super::args::{SceneArgs, TableFormat};
 use super::dynamics_args::DynamicsArgs;
-use super::series::write_atomic;
+use crate::atomic::write_atomic;
 use crate::dynamics::accuracy::{Study, StudySettings, run_study};
 use crate::error::{Error, Result};
 use crate::minnorm::tolerance::{ToleranceRow, tolerance_study};
@@ -91,10 +91,13 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
     let json = serde_json::to_string_pretty(&doc).expect("JSON values serialise") + "\n";
     if let Some(dir) = &a.out_dir {
         std::fs::create_dir_all(dir).map_err(|e| Error::io("create", dir, e))?;
-        write_atomic(&dir.join("accuracy.md"), &md)?;
-        write_atomic(&dir.join("accuracy.csv"), &csv)?;
-        write_atomic(&dir.join("accuracy.json"), &json)?;
-        write_atomic(&dir.join("accuracy_min_norm.csv"), &min_norm_csv(&min_norm))?;
+        write_atomic(&dir.join("accuracy.md"), md.as_bytes())?;
+        write_atomic(&dir.join("accuracy.csv"), csv.as_bytes())?;
+        write_atomic(&dir.join("accuracy.json"), json.as_bytes())?;
+        write_atomic(
+            &dir.join("accuracy_min_norm.csv"),
+            min_norm_csv(&min_norm).as_bytes(),
+        )?;
     }
     Ok(match a.format {
         TableFormat::Text => md,

@@ -8,7 +8,7 @@ use clap::{Args, ValueEnum};
 use indicatif::ProgressBar;
 use rayon::prelude::*;
 
-use crate::charts::output::write_atomic;
+use crate::atomic::write_atomic;
 use crate::charts::{self, Formats, Rendered, Scene};
 use crate::error::{Error, Result};
 

@@ -12,7 +12,8 @@ use serde_json::{Map, Value, json};
 use super::args::{ModelChoice, OutputFormat, SceneArgs};
 use super::dynamics_args::DynamicsArgs;
 use super::min_norm;
-use super::series::{series_csv, write_atomic};
+use super::series::series_csv;
+use crate::atomic::write_atomic;
 use crate::config::Config;
 use crate::dynamics;
 use crate::error::{Error, Result};
@@ -126,7 +127,7 @@ fn solve_one(model: ModelChoice, config: &Config, a: &SolveArgs) -> Result<Model
             let s = dynamics::simulate(&config.scene, &config.dynamics, dt)?;
             let elapsed_s = t0.elapsed().as_secs_f64();
             if let Some(path) = series {
-                write_atomic(path, &series_csv(&s.series))?;
+                write_atomic(path, series_csv(&s.series).as_bytes())?;
             }
             let mut details = match serde_json::to_value(&s) {
                 Ok(Value::Object(m)) => m,
