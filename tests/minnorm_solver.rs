@@ -244,9 +244,16 @@ fn bad_input_names_the_contact_and_the_value() {
     assert_eq!(invalid(&p).0, "joints[0].axis");
 }
 
-/// Held solutions balance the load and stay inside their cones, to `rel` of the load.
+/// Held solutions balance the load and stay inside their cones, to `rel` of the larger of the
+/// load and the largest contact force (round-off scales with the forces summed: two contacts
+/// 8 um apart holding a moment carry 9000 N against a 72 N load).
 fn check_held(p: &ContactProblem, sol: &ContactSolution, rel: f64) -> Result<(), TestCaseError> {
-    let scale = load_scale(p);
+    let largest_force = sol
+        .forces
+        .iter()
+        .map(|f| f.normal_n.hypot(f.tangential_n[0]))
+        .fold(0.0, f64::max);
+    let scale = load_scale(p).max(largest_force);
     let r = p
         .contacts
         .iter()
