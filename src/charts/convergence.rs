@@ -135,8 +135,8 @@ impl Convergence {
         };
         let objective_note = match (trace.first(), trace.last()) {
             (Some(a), Some(b)) => format!(
-                "φ² goes from {:.6} to {:.6} N²: with a translational joint the equilibrium rows \
-                 fix the single contact's force (ERRATA), so the first iterate is the minimum.",
+                "φ² goes from {:.3} to {:.3} N²: at the jam the minimum is the corrected Eq. 1 \
+                 force at the ground (ERRATA); the iterates reach it from inside the cones.",
                 a.objective_n2, b.objective_n2
             ),
             _ => "clarabel returned no iterations.".into(),

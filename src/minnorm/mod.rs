@@ -51,27 +51,33 @@
 //!
 //! ## (a) Translational (the paper's)
 //!
-//! One contact A (mu_g); a translational joint carries the moment Mz (a moment joint, free in
-//! sign). The palm slides, so its push is a known load F on the edge of its friction cone,
-//! F (cos alpha_p n_B - sin alpha_p u), at B. The force rows fix the contact force, so the
-//! minimum is trivial (ERRATA): f_t,A = F sin(theta - alpha_p) = R_t and
-//! f_n,A = m g + F cos(theta - alpha_p) = R_n, exactly the corrected Eq. 1; the joint takes
-//! what the two frictions leave of the moment, lambda = r (R_t - F sin alpha_p). Feasibility is
-//! R_n >= 0 and |R_t| <= mu_g R_n: the Eq. 1 test, with the lower edge R_t >= -mu_g R_n added
-//! (the palm's friction dragging the disc back to the hinge). For mu_p <= mu_g that edge never
-//! binds: for theta < alpha_p, |R_t| / (mu_g R_n) <= tan(alpha_p - theta) / mu_g <= 1. Then the
-//! held angles below the start are [0, theta_jam] with the closed form's theta_jam. For
-//! mu_p > mu_g the lower edge binds below theta_low (= alpha_p - alpha_g for m = 0), and the
-//! held angles are the band [theta_low, theta_jam], at least 2 alpha_g wide: the disc still
-//! jams at the closed form's theta_jam, reached first while the palm closes. A start below
-//! theta_low differs: the statics call it jammed at start (their test is one-sided), the
-//! min-norm model does not hold the disc there (the sliding palm's friction would drag it back
-//! into the wedge, outside the premise of a sliding palm) and, finding no held angle further
-//! down, reports never_jams. With
-//! mu_g = 0 < mu_p the band is empty and the two differ: the statics call theta <= alpha_p
-//! jammed (R_t <= 0), the min-norm model holds the disc only where R_t = 0 exactly, so it never
-//! jams.
+//! Contact A at the ground (mu_g); a translational joint carries the moment Mz (a moment joint,
+//! free in sign). The palm slides, so its push is a known load F on the edge of its friction
+//! cone, F (cos alpha_p n_B - sin alpha_p u), at B. And the palm closes: the disc, riding its
+//! joint along X, cannot move back towards the hinge without the gap to the palm closing, so the
+//! palm also acts as a frictionless one-way stop along +X (a contact with normal (1, 0) and
+//! mu = 0; it carries no weight and no friction).
 //!
+//! Where the push drives the disc forward (R_t >= 0) the stop is idle, the force rows fix the
+//! ground force and the minimum is trivial (ERRATA): f_t,A = F sin(theta - alpha_p) = R_t and
+//! f_n,A = m g + F cos(theta - alpha_p) = R_n, exactly the corrected Eq. 1; the joint takes what
+//! the two frictions leave of the moment, lambda = r (R_t - F sin alpha_p). Held is then
+//! R_n >= 0 and R_t <= mu_g R_n: the Eq. 1 test. Where the sliding palm's own friction drags the
+//! disc back (R_t < 0, possible below alpha_p) the ground and the stop share the backward
+//! force, f_t,A = R_t / 2 and the stop R_t / 2 at the minimum norm while the ground's cone allows,
+//! and the disc is always held: the stop takes what the ground cannot. So held is exactly the
+//! statics' one-sided test R_t <= mu_g R_n at every angle, the held angles below the start are
+//! [0, theta_jam] with the closed form's theta_jam for any mu_g and mu_p, and at the jam the
+//! forces are Eq. 1 with the stop idle.
+//!
+//! Without the stop (the paper's Eq. 3 with its two-sided cone alone) the lower edge
+//! R_t >= -mu_g R_n would bind for mu_p > mu_g, the held angles would shrink to a band above
+//! the drag-back region, a start below it would read never_jams and mu_g = 0 < mu_p would never
+//! jam, unlike the statics and the simulation. A frictional stop at B (the palm free to push
+//! harder than F along its cone) gives the same held set below 90 deg, but above it its
+//! normal lifts and the palm would carry part of the disc's weight, which a pushing palm does
+//! not: hence a frictionless stop along the joint's axis.
+
 //! ## (b) Rolling (beyond the paper)
 //!
 //! The disc may rotate: no joint, so the moment must be carried by the friction at A and B.
@@ -108,10 +114,9 @@
 //! ## theta_jam
 //!
 //! Held at the start angle: jammed at start. Otherwise the held angles below the start are
-//! one interval, [0, theta_jam] or a band [theta_low, theta_jam] (above). If the disc is held at
-//! the palm's reach (x = palm length) the boundary lies between the reach and the start;
-//! otherwise a downward scan from the start in `scan_step_deg` steps (0.5 deg) brackets the
-//! band's top. The bracket is bisected to `bisection_tol_rad`; theta_jam is its held end. With
+//! one interval [0, theta_jam] in both formulations (above). If the disc is held at the palm's
+//! reach (x = palm length) the boundary lies between the reach and the start; otherwise a
+//! downward scan from the start in `scan_step_deg` steps (0.5 deg) brackets it (a safeguard). The bracket is bisected to `bisection_tol_rad`; theta_jam is its held end. With
 //! no held angle within reach, the scan goes on below the reach (halving its last step) to tell
 //! "beyond reach" (some held angle further out) from "never jams", down to the angle where the
 //! push's sideways part F sin(theta) is 1e-7 of the largest load (below it "held" is a decision

@@ -13,8 +13,9 @@ use crate::model::{JamStatus, SceneParams, disc_position_mm, palm_angle_at};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Formulation {
-    /// The paper's: one contact at the ground A; the disc rides a translational joint that
-    /// carries the moment; the palm's push is a known load on the edge of its friction cone.
+    /// The paper's: contact A at the ground; the disc rides a translational joint that carries
+    /// the moment; the palm's push is a known load on the edge of its friction cone, and the
+    /// closing palm blocks the disc's way back to the hinge (a frictionless one-way stop along +X).
     Translational,
     /// Beyond the paper: the disc may rotate; contacts at A and at the palm B, whose normal push
     /// F cos(atan mu_palm) is given and whose friction is unknown. Rolling is possible.
@@ -33,7 +34,7 @@ impl Formulation {
     /// Names of the contacts, in the order of [`palm_problem`]'s contacts.
     pub fn contact_names(self) -> &'static [&'static str] {
         match self {
-            Formulation::Translational => &["A (ground)"],
+            Formulation::Translational => &["A (ground)", "B (palm blocks the way back)"],
             Formulation::Rolling => &["A (ground)", "B (palm)"],
         }
     }
@@ -50,8 +51,8 @@ pub struct MinNormSettings {
     /// (default: 1e-9).
     pub bisection_tol_rad: f64,
     /// Step in degrees of the downward scan from the start angle, used when the disc is not held
-    /// at the palm's reach (the held angles then form a band, e.g. mu_palm > mu_ground; a band
-    /// narrower than the step may be missed) (default: 0.5).
+    /// at the palm's reach (a safeguard: the held angles below the start are [0, theta_jam], so
+    /// the jam then lies beyond the reach) (default: 0.5).
     pub scan_step_deg: f64,
     /// The program's settings (section `[min_norm.qp]`).
     pub qp: QpSettings,
@@ -62,8 +63,7 @@ impl Default for MinNormSettings {
         MinNormSettings {
             formulation: Formulation::Translational,
             bisection_tol_rad: 1e-9,
-            // The band of (a) is at least 2 atan(mu_ground) wide: 0.5 deg finds it for
-            // mu_ground >= 0.005.
+            // Fine enough to find a held interval in the scan, coarse enough to be cheap.
             scan_step_deg: 0.5,
             qp: QpSettings::default(),
         }
@@ -114,9 +114,12 @@ pub fn palm_problem(p: &SceneParams, theta: f64, formulation: Formulation) -> Co
                 p.force_n * (ca * n_b[1] - sa * u[1]),
                 0.0,
             ];
+            // The palm closes, so the disc cannot move back towards the hinge: a frictionless
+            // one-way stop along the joint's axis (it carries no weight and no friction).
+            let way_back = Contact::planar(b, [1.0, 0.0], 0.0);
             ContactProblem {
                 space: Space::Planar,
-                contacts: vec![ground],
+                contacts: vec![ground, way_back],
                 joints: vec![Joint::Moment {
                     axis: [0.0, 0.0, 1.0],
                 }],
@@ -213,8 +216,8 @@ impl Search<'_> {
 /// bisect the boundary to `bisection_tol_rad`. With no held angle within reach, scan on (halving
 /// the last step) down to [`theta_floor_rad`] to tell "beyond reach" from "never jams".
 ///
-/// The held angles below the start are one interval, [0, theta_jam] or a band
-/// [theta_low, theta_jam] (module docs), so each bracket holds one boundary. `p` and `s` are
+/// The held angles below the start are one interval, [0, theta_jam] (module docs), so each
+/// bracket holds one boundary. `p` and `s` are
 /// validated here.
 pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
     p.validate()?;
@@ -241,7 +244,7 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
     let reach = palm_angle_at(p.radius_mm, p.palm_length_mm);
     if reach < start {
         // Held at the reach: the held angles reach down past it, one boundary above.
-        // Otherwise scan down for a band of held angles within the palm's reach.
+        // Otherwise scan down for held angles within the palm's reach (a safeguard).
         let bracket = if let Some(held) = search.eval(reach)? {
             Some((reach, start, held))
         } else {
