@@ -40,8 +40,9 @@
 //!    x_jam -> r / mu for equal frictions: the self-locking wedge tan(theta/2) <= mu.
 //! 2. [`minnorm`] (Section 3.2): the contact forces of least norm that satisfy equilibrium and the
 //!    friction cones, solved as a convex program (clarabel); the disc is held exactly where they
-//!    exist. The paper's formulation (a translational joint carries the moment) agrees with the
-//!    closed form; a rolling disc jams later, at the self-locking wedge 2 atan(mu).
+//!    exist. The paper's formulation (a translational joint carries the moment; the closing palm
+//!    blocks the way back) agrees with the closed form; a rolling disc jams later, at the
+//!    self-locking wedge 2 atan(mu).
 //! 3. [`dynamics`] (Section 4): a simulation of the paper's Adams model with an IMPACT contact and
 //!    Adams' regularised friction, integrated by RADAU5 or DOPRI5 with the jam read off the
 //!    disc's speed; a palm driven by motion jams near r/mu, a force-limited palm near the closed
