@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use clap::Args;
 
 use super::args::{SceneArgs, TableFormat};
-use super::dynamics_args::DynamicsArgs;
+use super::dynamics::DynamicsArgs;
 use crate::atomic::write_atomic;
 use crate::dynamics::accuracy::{Study, StudySettings, run_study};
 use crate::error::{Error, Result};

@@ -52,12 +52,8 @@ pub struct SceneArgs {
 }
 
 impl SceneArgs {
-    /// Defaults, then the file, then the flags; validated before anything is computed.
-    pub fn resolve(&self) -> Result<Config> {
-        self.resolve_with(|_| {})
-    }
-
-    /// As [`SceneArgs::resolve`], with more overrides (`more`) applied before validation.
+    /// Defaults, then the file, then these flags, then the other flags of the command (`more`);
+    /// validated before anything is computed.
     pub fn resolve_with(&self, more: impl FnOnce(&mut Config)) -> Result<Config> {
         let mut config = match &self.config {
             Some(path) => Config::load(path)?,
@@ -100,7 +96,7 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
         "gravity_m_s2" => "--gravity",
         "start_angle_deg" => "--start-angle",
         "palm_length_mm" => "--palm-length",
-        key => return super::dynamics_args::flag_for_key(key),
+        key => return super::dynamics::flag_for_key(key),
     })
 }
 
@@ -115,6 +111,37 @@ pub enum ModelChoice {
     Dynamics,
     /// Every model that is built.
     All,
+}
+
+impl ModelChoice {
+    /// The models to run, in the order they are printed.
+    pub fn models(self) -> &'static [Model] {
+        match self {
+            ModelChoice::Statics => &[Model::Statics],
+            ModelChoice::MinNorm => &[Model::MinNorm],
+            ModelChoice::Dynamics => &[Model::Dynamics],
+            ModelChoice::All => &[Model::Statics, Model::MinNorm, Model::Dynamics],
+        }
+    }
+}
+
+/// One model, as `--model` names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Model {
+    Statics,
+    MinNorm,
+    Dynamics,
+}
+
+impl Model {
+    /// The `model` key of a result: statics, min-norm or dynamics.
+    pub fn name(self) -> &'static str {
+        match self {
+            Model::Statics => "statics",
+            Model::MinNorm => "min-norm",
+            Model::Dynamics => "dynamics",
+        }
+    }
 }
 
 /// Output of `solve`.

@@ -6,6 +6,7 @@ use std::time::Instant;
 use clap::ValueEnum;
 use serde_json::{Map, Value, json};
 
+use super::args::Model;
 use super::solve::ModelRecord;
 use crate::config::Config;
 use crate::error::Result;
@@ -14,7 +15,7 @@ use crate::minnorm::{Formulation, palm};
 /// `--formulation`: how the min-norm model carries the disc's moment.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum FormulationArg {
-    /// The paper's: a translational joint carries the moment; one ground contact.
+    /// The paper's: a translational joint carries the moment; the palm blocks the way back.
     Translational,
     /// The disc may rotate: friction at the ground and the palm carries the moment.
     Rolling,
@@ -67,7 +68,7 @@ pub fn record(config: &Config, trace: bool) -> Result<ModelRecord> {
         details.insert("trace".into(), json!(t.trace));
     }
     Ok(ModelRecord {
-        model: "min-norm",
+        model: Model::MinNorm.name(),
         status: s.status,
         theta_jam_deg: s.theta_jam_deg,
         x_jam_mm: s.x_jam_mm,

@@ -3,10 +3,9 @@
 
 mod accuracy;
 mod args;
-mod dynamics_args;
+mod dynamics;
 mod min_norm;
 pub mod render;
-mod series;
 mod solve;
 mod table;
 

@@ -1,27 +1,20 @@
 //! `jamchart solve`: the read-off of theta_jam and x_jam.
 
 use std::fmt::Write;
-use std::time::Instant;
-
 use std::path::PathBuf;
+use std::time::Instant;
 
 use clap::Args;
 use serde::Serialize;
 use serde_json::{Map, Value, json};
 
-use super::args::{ModelChoice, OutputFormat, SceneArgs};
-use super::dynamics_args::DynamicsArgs;
+use super::args::{Model, ModelChoice, OutputFormat, SceneArgs};
+use super::dynamics::{self, DynamicsArgs};
 use super::min_norm;
-use super::series::series_csv;
-use crate::atomic::write_atomic;
 use crate::config::Config;
-use crate::dynamics;
 use crate::error::{Error, Result};
 use crate::model::JamStatus;
 use crate::statics;
-
-/// Sampling interval of `--series` in s: 0.2 ms resolves the collapse at the jam (a few ms).
-const SERIES_DT_S: f64 = 2e-4;
 
 /// Flags of `solve`.
 #[derive(Debug, Clone, Args)]
@@ -69,26 +62,25 @@ pub struct ModelRecord {
 }
 
 pub fn run(a: &SolveArgs) -> Result<String> {
-    let mut config = a.scene.resolve_with(|c| a.dynamics.apply(c))?;
-    if let Some(f) = a.formulation {
-        config.min_norm.formulation = f.into();
-    }
-    let models: &[ModelChoice] = match a.model {
-        ModelChoice::All => &[
-            ModelChoice::Statics,
-            ModelChoice::MinNorm,
-            ModelChoice::Dynamics,
-        ],
-        ref m => std::slice::from_ref(m),
-    };
-    if a.series.is_some() && !models.contains(&ModelChoice::Dynamics) {
+    let config = a.scene.resolve_with(|c| {
+        a.dynamics.apply(c);
+        if let Some(f) = a.formulation {
+            c.min_norm.formulation = f.into();
+        }
+    })?;
+    let models = a.model.models();
+    if a.series.is_some() && !models.contains(&Model::Dynamics) {
         return Err(Error::Unsupported(
             "--series needs the dynamics: add --model dynamics".into(),
         ));
     }
     let results = models
         .iter()
-        .map(|m| solve_one(*m, &config, a))
+        .map(|m| match m {
+            Model::Statics => Ok(statics_record(&config)),
+            Model::MinNorm => min_norm::record(&config, a.trace),
+            Model::Dynamics => dynamics::record(&config, a.series.as_deref()),
+        })
         .collect::<Result<Vec<ModelRecord>>>()?;
     Ok(match a.format {
         OutputFormat::Json => {
@@ -99,60 +91,45 @@ pub fn run(a: &SolveArgs) -> Result<String> {
     })
 }
 
-fn solve_one(model: ModelChoice, config: &Config, a: &SolveArgs) -> Result<ModelRecord> {
-    let series = a.series.as_deref();
-    match model {
-        ModelChoice::MinNorm => min_norm::record(config, a.trace),
-        ModelChoice::Statics => {
-            let t0 = Instant::now();
-            let s = statics::solve(&config.scene);
-            let elapsed_s = t0.elapsed().as_secs_f64();
-            let mut details = Map::new();
-            details.insert("theta_rigid_deg".into(), json!(s.theta_rigid_deg));
-            details.insert("x_rigid_mm".into(), json!(s.x_rigid_mm));
-            details.insert("lift_off_above_deg".into(), json!(s.lift_off_above_deg));
-            details.insert("lifts_off".into(), json!(s.lifts_off));
-            Ok(ModelRecord {
-                model: "statics",
-                status: s.status,
-                theta_jam_deg: s.theta_jam_deg,
-                x_jam_mm: s.x_jam_mm,
-                elapsed_s,
-                details,
-            })
-        }
-        ModelChoice::Dynamics => {
-            let t0 = Instant::now();
-            let dt = series.map(|_| SERIES_DT_S);
-            let s = dynamics::simulate(&config.scene, &config.dynamics, dt)?;
-            let elapsed_s = t0.elapsed().as_secs_f64();
-            if let Some(path) = series {
-                write_atomic(path, series_csv(&s.series).as_bytes())?;
-            }
-            let mut details = match serde_json::to_value(&s) {
-                Ok(Value::Object(m)) => m,
-                _ => Map::new(),
-            };
-            for k in ["status", "theta_jam_deg", "x_jam_mm"] {
-                details.shift_remove(k);
-            }
-            if let Some(path) = series {
-                details.insert("series".into(), json!(path.display().to_string()));
-            }
-            // The [dynamics] settings in force, so that the answer can be reproduced.
-            details.insert("settings".into(), json!(config.dynamics));
-            Ok(ModelRecord {
-                model: "dynamics",
-                status: s.status,
-                theta_jam_deg: s.theta_jam_deg,
-                x_jam_mm: s.x_jam_mm,
-                elapsed_s,
-                details,
-            })
-        }
-        ModelChoice::All => Err(Error::Unsupported(
-            "--model all is expanded into the models before solving".into(),
-        )),
+/// The closed form's record: the statics' keys plus the F -> inf limit and lift-off.
+fn statics_record(config: &Config) -> ModelRecord {
+    let t0 = Instant::now();
+    let s = statics::solve(&config.scene);
+    let elapsed_s = t0.elapsed().as_secs_f64();
+    let mut details = Map::new();
+    details.insert("theta_rigid_deg".into(), json!(s.theta_rigid_deg));
+    details.insert("x_rigid_mm".into(), json!(s.x_rigid_mm));
+    details.insert("lift_off_above_deg".into(), json!(s.lift_off_above_deg));
+    details.insert("lifts_off".into(), json!(s.lifts_off));
+    ModelRecord {
+        model: Model::Statics.name(),
+        status: s.status,
+        theta_jam_deg: s.theta_jam_deg,
+        x_jam_mm: s.x_jam_mm,
+        elapsed_s,
+        details,
+    }
+}
+
+/// The statics' own lines: the F -> inf limit and a lift-off warning.
+fn render_statics(s: &mut String, d: &Map<String, Value>) {
+    if let (Some(t), Some(x)) = (
+        d.get("theta_rigid_deg").and_then(Value::as_f64),
+        d.get("x_rigid_mm").and_then(Value::as_f64),
+    ) {
+        let _ = writeln!(
+            s,
+            "  unlimited push (F -> inf, a motion-driven palm): theta = {t:.3} deg, x = {x:.3} mm"
+        );
+    }
+    if d.get("lifts_off").and_then(Value::as_bool) == Some(true)
+        && let Some(above) = d.get("lift_off_above_deg").and_then(Value::as_f64)
+    {
+        let _ = writeln!(
+            s,
+            "  warning: above {above:.3} deg the palm lifts the disc off the ground (R_n < 0); \
+             the statics do not hold there"
+        );
     }
 }
 
@@ -207,28 +184,11 @@ fn render_text(config: &Config, results: &[ModelRecord]) -> String {
             }
             _ => {}
         }
-        let d = &r.details;
-        render_dynamics(&mut s, r);
-        if r.model == "min-norm" {
-            min_norm::render_details(&mut s, d);
-        }
-        if let (Some(t), Some(x)) = (
-            d.get("theta_rigid_deg").and_then(Value::as_f64),
-            d.get("x_rigid_mm").and_then(Value::as_f64),
-        ) {
-            let _ = writeln!(
-                s,
-                "  unlimited push (F -> inf, a motion-driven palm): theta = {t:.3} deg, x = {x:.3} mm"
-            );
-        }
-        if d.get("lifts_off").and_then(Value::as_bool) == Some(true) {
-            let above = d.get("lift_off_above_deg").and_then(Value::as_f64);
-            let _ = writeln!(
-                s,
-                "  warning: above {:.3} deg the palm lifts the disc off the ground (R_n < 0); \
-                 the statics do not hold there",
-                above.unwrap_or(f64::NAN)
-            );
+        match r.model {
+            "statics" => render_statics(&mut s, &r.details),
+            "min-norm" => min_norm::render_details(&mut s, &r.details),
+            "dynamics" => dynamics::render_details(&mut s, r),
+            _ => {}
         }
         if r.elapsed_s < 1e-3 {
             let _ = writeln!(s, "  took {:.1} us", r.elapsed_s * 1e6);
@@ -237,55 +197,4 @@ fn render_text(config: &Config, results: &[ModelRecord]) -> String {
         }
     }
     s
-}
-
-/// The dynamics' own lines: jam time, trust, work.
-fn render_dynamics(s: &mut String, r: &ModelRecord) {
-    if r.model != "dynamics" {
-        return;
-    }
-    let d = &r.details;
-    let num = |k: &str| d.get(k).and_then(Value::as_f64);
-    let text = |k: &str| d.get(k).and_then(Value::as_str).unwrap_or("?").to_string();
-    if r.status == JamStatus::Inaccurate
-        && let (Some(t), Some(x)) = (r.theta_jam_deg, r.x_jam_mm)
-    {
-        let _ = writeln!(s, "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm");
-    }
-    if let Some(t) = num("t_jam_s") {
-        let _ = writeln!(
-            s,
-            "  t_jam     = {t:.4} s     time of the jam from the start of the push"
-        );
-    }
-    if let Some(e) = num("x_jam_error_mm") {
-        let _ = writeln!(
-            s,
-            "  x_jam error estimate {e:.2e} mm (second run at a tenth of the tolerances)"
-        );
-    }
-    if let Some(x) = num("x_stiction_mm") {
-        let _ = writeln!(
-            s,
-            "  ground contact enters stiction (slip < V_s) at x = {x:.3} mm"
-        );
-    }
-    if let Some(c) = d.get("cross_check").and_then(Value::as_str) {
-        let _ = writeln!(s, "  inaccurate: {c}");
-    }
-    if let Some(f) = d.get("failure").filter(|f| !f.is_null()) {
-        let t = f.get("t_s").and_then(Value::as_f64).unwrap_or(f64::NAN);
-        let why = f.get("reason").and_then(Value::as_str).unwrap_or("?");
-        let _ = writeln!(s, "  the integrator gave up at t = {t:.4} s: {why}");
-    }
-    let _ = writeln!(
-        s,
-        "  {} drive, {}: {} steps ({} rejected), {} rhs and {} Jacobian evaluations",
-        text("drive"),
-        text("method"),
-        num("steps").unwrap_or(0.0),
-        num("rejected_steps").unwrap_or(0.0),
-        num("rhs_evals").unwrap_or(0.0),
-        num("jacobian_evals").unwrap_or(0.0)
-    );
 }

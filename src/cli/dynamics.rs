@@ -1,9 +1,24 @@
-//! Flags of the dynamic simulation, merged over the `[dynamics]` section of the TOML file.
+//! The dynamic simulation on the command line: its flags (merged over the `[dynamics]` section
+//! of the TOML file), its record and lines of text for `solve`, and the `--series` CSV.
+
+use std::fmt::Write as _;
+use std::path::Path;
+use std::time::Instant;
 
 use clap::Args;
+use serde_json::{Map, Value, json};
 
+use super::args::Model;
+use super::solve::ModelRecord;
+use crate::atomic::write_atomic;
 use crate::config::Config;
-use crate::dynamics::{Drive, Method};
+use crate::dynamics::jam::SeriesRow;
+use crate::dynamics::{self, Drive, Method};
+use crate::error::Result;
+use crate::model::JamStatus;
+
+/// Sampling interval of `--series` in s: 0.2 ms resolves the collapse at the jam (a few ms).
+const SERIES_DT_S: f64 = 2e-4;
 
 /// Dynamics flags: each overrides the same key of the `[dynamics]` section.
 #[derive(Debug, Clone, Default, Args)]
@@ -190,4 +205,107 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
         "after_jam_s" => "--after-jam",
         _ => return None,
     })
+}
+
+/// Simulates the scene; with `series`, also writes the time series there (atomically).
+pub fn record(config: &Config, series: Option<&Path>) -> Result<ModelRecord> {
+    let t0 = Instant::now();
+    let dt = series.map(|_| SERIES_DT_S);
+    let s = dynamics::simulate(&config.scene, &config.dynamics, dt)?;
+    let elapsed_s = t0.elapsed().as_secs_f64();
+    if let Some(path) = series {
+        write_atomic(path, series_csv(&s.series).as_bytes())?;
+    }
+    let mut details = match serde_json::to_value(&s) {
+        Ok(Value::Object(m)) => m,
+        _ => Map::new(),
+    };
+    for k in ["status", "theta_jam_deg", "x_jam_mm"] {
+        details.shift_remove(k);
+    }
+    if let Some(path) = series {
+        details.insert("series".into(), json!(path.display().to_string()));
+    }
+    // The [dynamics] settings in force, so that the answer can be reproduced.
+    details.insert("settings".into(), json!(config.dynamics));
+    Ok(ModelRecord {
+        model: Model::Dynamics.name(),
+        status: s.status,
+        theta_jam_deg: s.theta_jam_deg,
+        x_jam_mm: s.x_jam_mm,
+        elapsed_s,
+        details,
+    })
+}
+
+/// The dynamics' own lines under the shared status lines of `solve`: jam time, trust, work.
+pub fn render_details(s: &mut String, r: &ModelRecord) {
+    let d = &r.details;
+    let num = |k: &str| d.get(k).and_then(Value::as_f64);
+    let text = |k: &str| d.get(k).and_then(Value::as_str).unwrap_or("?").to_string();
+    if r.status == JamStatus::Inaccurate
+        && let (Some(t), Some(x)) = (r.theta_jam_deg, r.x_jam_mm)
+    {
+        let _ = writeln!(s, "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm");
+    }
+    if let Some(t) = num("t_jam_s") {
+        let _ = writeln!(
+            s,
+            "  t_jam     = {t:.4} s     time of the jam from the start of the push"
+        );
+    }
+    if let Some(e) = num("x_jam_error_mm") {
+        let _ = writeln!(
+            s,
+            "  x_jam error estimate {e:.2e} mm (second run at a tenth of the tolerances)"
+        );
+    }
+    if let Some(x) = num("x_stiction_mm") {
+        let _ = writeln!(
+            s,
+            "  ground contact enters stiction (slip < V_s) at x = {x:.3} mm"
+        );
+    }
+    if let Some(c) = d.get("cross_check").and_then(Value::as_str) {
+        let _ = writeln!(s, "  inaccurate: {c}");
+    }
+    if let Some(f) = d.get("failure").filter(|f| !f.is_null()) {
+        let t = f.get("t_s").and_then(Value::as_f64).unwrap_or(f64::NAN);
+        let why = f.get("reason").and_then(Value::as_str).unwrap_or("?");
+        let _ = writeln!(s, "  the integrator gave up at t = {t:.4} s: {why}");
+    }
+    let _ = writeln!(
+        s,
+        "  {} drive, {}: {} steps ({} rejected), {} rhs and {} Jacobian evaluations",
+        text("drive"),
+        text("method"),
+        num("steps").unwrap_or(0.0),
+        num("rejected_steps").unwrap_or(0.0),
+        num("rhs_evals").unwrap_or(0.0),
+        num("jacobian_evals").unwrap_or(0.0)
+    );
+}
+
+/// The time series as CSV, one row per sample, units in the header.
+pub fn series_csv(rows: &[SeriesRow]) -> String {
+    let mut s = String::from(
+        "t_s,theta_deg,x_mm,x_dot_mm_s,penetration_mm,normal_n,palm_friction_n,\
+         ground_normal_n,ground_friction_n\n",
+    );
+    for r in rows {
+        let _ = writeln!(
+            s,
+            "{:.7},{:.6},{:.7},{:.6},{:.7},{:.5},{:.5},{:.5},{:.5}",
+            r.t_s,
+            r.theta_deg,
+            r.x_mm,
+            r.x_dot_mm_s,
+            r.penetration_mm,
+            r.normal_n,
+            r.palm_friction_n,
+            r.ground_normal_n,
+            r.ground_friction_n
+        );
+    }
+    s
 }
