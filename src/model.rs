@@ -214,6 +214,21 @@ mod tests {
     }
 
     #[test]
+    fn status_text_is_its_json_spelling() {
+        use JamStatus::*;
+        for s in [
+            NeverJams,
+            JammedAtStart,
+            BeyondReach,
+            Jams,
+            Inaccurate,
+            IntegratorFailed,
+        ] {
+            assert_eq!(serde_json::to_value(s).unwrap(), s.as_str(), "{s:?}");
+        }
+    }
+
+    #[test]
     fn validate_names_the_key() {
         let p = SceneParams {
             radius_mm: -1.0,
