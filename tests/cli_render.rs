@@ -1,28 +1,18 @@
 //! `jamchart render` run as a process in a temporary directory.
 
-use std::path::Path;
-use std::process::Command;
-
-fn jamchart(args: &[&str], cwd: &Path) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_jamchart"))
-        .args(args)
-        .current_dir(cwd)
-        .env_remove("RAYON_NUM_THREADS")
-        .output()
-        .expect("the binary runs")
-}
+#[path = "common/cli.rs"]
+mod cli_util;
+use cli_util::{jamchart, repo, stderr};
 
 fn scenes_dir() -> String {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("charts")
-        .display()
-        .to_string()
+    repo().join("charts").display().to_string()
 }
 
 #[test]
 fn render_one_scene_writes_picture_and_data_and_nothing_else() {
     let dir = tempfile::tempdir().unwrap();
     let out = jamchart(
+        dir.path(),
         &[
             "render",
             "fig7b",
@@ -31,7 +21,6 @@ fn render_one_scene_writes_picture_and_data_and_nothing_else() {
             "--scenes-dir",
             &scenes_dir(),
         ],
-        dir.path(),
     );
     assert!(
         out.status.success(),
@@ -73,7 +62,7 @@ fn svg_format_writes_no_png() {
         "--scenes-dir",
         &scenes_dir(),
     ];
-    let out = jamchart(&args, dir.path());
+    let out = jamchart(dir.path(), &args);
     assert!(
         out.status.success(),
         "{}",
@@ -87,6 +76,7 @@ fn svg_format_writes_no_png() {
 fn unknown_scene_exits_2_and_lists_the_known_ones() {
     let dir = tempfile::tempdir().unwrap();
     let out = jamchart(
+        dir.path(),
         &[
             "render",
             "fig9",
@@ -95,7 +85,6 @@ fn unknown_scene_exits_2_and_lists_the_known_ones() {
             "--scenes-dir",
             &scenes_dir(),
         ],
-        dir.path(),
     );
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
@@ -123,7 +112,7 @@ fn bad_scene_file_names_file_line_and_key() {
         "title = \"t\"\nbase = \"none.toml\"\n[chart]\nkind = \"sweep\"\naxis = { param = \"mu\", min = 0.1, max = 0.5, count = 5 }\n",
     )
     .unwrap();
-    let out = jamchart(&["render", "--scenes-dir", "charts"], dir.path());
+    let out = jamchart(dir.path(), &["render", "--scenes-dir", "charts"]);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("none.toml"), "{err}");
@@ -132,7 +121,38 @@ fn bad_scene_file_names_file_line_and_key() {
         "title = \"t\"\nbase = \"none.toml\"\n[chart]\nkind = \"sweep\"\naxs = 1\n",
     )
     .unwrap();
-    let out = jamchart(&["render", "--scenes-dir", "charts"], dir.path());
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("bad.toml:") && err.contains("axs"), "{err}");
+    let out = jamchart(dir.path(), &["render", "--scenes-dir", "charts"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    // The chart is an internally tagged table ([chart] kind = ...), whose keys serde reads
+    // without their own positions: the line is the table's, and the message names the key.
+    assert!(err.contains("bad.toml:3:") && err.contains("axs"), "{err}");
+}
+
+/// Regression: `render fig7a fig7a` drew the scene twice at once, both writes went through the
+/// same temporary file, and the run failed with "cannot write o/fig7a.csv" (or left torn files).
+#[test]
+fn a_scene_named_twice_is_rendered_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = jamchart(
+        dir.path(),
+        &[
+            "render",
+            "fig7a",
+            "fig7a",
+            "fig7a",
+            "fig7a",
+            "--out",
+            "o",
+            "--scenes-dir",
+            &scenes_dir(),
+        ],
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let mut files: Vec<String> = std::fs::read_dir(dir.path().join("o"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().to_string())
+        .collect();
+    files.sort();
+    assert_eq!(files, ["fig7a.csv", "fig7a.png", "fig7a.svg"]);
 }

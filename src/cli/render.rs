@@ -55,11 +55,14 @@ impl From<RenderFormat> for Formats {
 /// The scenes named in `wanted` (all when empty), loaded and validated before anything is drawn.
 pub fn load_scenes(dir: &Path, wanted: &[String]) -> Result<Vec<Scene>> {
     let known = charts::scene_names(dir)?;
-    let names = if wanted.is_empty() {
+    let mut names = if wanted.is_empty() {
         known.clone()
     } else {
         wanted.to_vec()
     };
+    // A scene named twice is drawn once: two renders would write the same files at once.
+    let mut seen = std::collections::HashSet::new();
+    names.retain(|n| seen.insert(n.clone()));
     for n in &names {
         if !known.contains(n) {
             return Err(Error::invalid(

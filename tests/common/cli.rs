@@ -6,12 +6,14 @@ use std::process::{Command, Output};
 
 use serde_json::Value;
 
-/// Runs `jamchart ARGS` in `dir`, without a backtrace setting inherited from the caller.
+/// Runs `jamchart ARGS` in `dir`, without a backtrace or thread-count setting inherited from
+/// the caller.
 pub fn jamchart(dir: &Path, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_jamchart"))
         .args(args)
         .current_dir(dir)
         .env_remove("RUST_BACKTRACE")
+        .env_remove("RAYON_NUM_THREADS")
         .output()
         .expect("the binary runs")
 }
