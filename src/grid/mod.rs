@@ -149,11 +149,26 @@ impl GridResult {
     }
 }
 
+/// At most this many cells in one grid: 2^26, 512 MiB per quantity, far beyond any chart's
+/// resolution; an axis alone may have up to 2^24 samples.
+pub const MAX_CELLS: usize = 1 << 26;
+
 impl GridRequest {
     /// Checks the axes, the base scene and the scene at the corners of the grid.
     pub fn validate(&self) -> Result<()> {
         self.x.validate("x_axis")?;
         self.y.validate("y_axis")?;
+        let cells = self.x.count.saturating_mul(self.y.count);
+        if cells > MAX_CELLS {
+            return Err(Error::invalid(
+                "x_axis.count * y_axis.count",
+                cells,
+                format!(
+                    "a grid has at most {MAX_CELLS} cells (8 bytes each per quantity); \
+                     lower the counts"
+                ),
+            ));
+        }
         if self.x.param == self.y.param {
             return Err(Error::invalid(
                 "y_axis.param",

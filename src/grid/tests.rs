@@ -28,6 +28,21 @@ fn opt_bits(v: &[Option<f64>]) -> Vec<Option<u64>> {
     v.iter().map(|x| x.map(f64::to_bits)).collect()
 }
 
+/// Regression: two axes of 200,000 samples each passed validation and the process aborted
+/// allocating 320 GB; the cell count is now refused before anything is allocated.
+#[test]
+fn a_grid_too_large_to_allocate_is_refused() {
+    let err = mu_theta(200_000, 200_000)
+        .validate()
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("x_axis.count * y_axis.count") && err.contains("40000000000"),
+        "{err}"
+    );
+    assert!(mu_theta(8192, 8192).validate().is_ok());
+}
+
 /// The grid's results must not depend on how rayon splits the work.
 #[test]
 fn bit_identical_for_any_thread_count() {
