@@ -75,12 +75,22 @@ pub struct StaticsSolution {
     pub lifts_off: bool,
 }
 
+/// The closed-form jam angle in rad, alpha_g + alpha_p + asin(m g sin(alpha_g) / F), before the
+/// statuses are decided; +infinity when the push can never move the disc (m g sin(alpha_g) >= F).
+pub fn theta_jam_rad(p: &SceneParams) -> f64 {
+    // m g sin(alpha_g) / F, written so that mu -> infinity stays finite.
+    let load_ratio = p.weight_n() * p.alpha_ground().sin() / p.force_n;
+    if load_ratio < 1.0 {
+        p.alpha_ground() + p.alpha_palm() + load_ratio.asin()
+    } else {
+        f64::INFINITY
+    }
+}
+
 /// Solves the scene in closed form. `p` must have passed [`SceneParams::validate`].
 pub fn solve(p: &SceneParams) -> StaticsSolution {
     let start = p.start_angle_deg.to_radians();
     let wedge = p.alpha_ground() + p.alpha_palm();
-    // m g sin(alpha_g) / F, written so that mu -> infinity stays finite.
-    let load_ratio = p.weight_n() * p.alpha_ground().sin() / p.force_n;
     let lift_off_above = lift_off_angle(p);
     let lifts_off = lift_off_above.is_some_and(|t| t < start);
 
@@ -95,11 +105,7 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
         lifts_off,
     };
 
-    let theta_jam = if load_ratio < 1.0 {
-        wedge + load_ratio.asin()
-    } else {
-        f64::INFINITY
-    };
+    let theta_jam = theta_jam_rad(p);
     if theta_jam <= 0.0 {
         out.status = JamStatus::NeverJams;
         return out;

@@ -313,11 +313,6 @@ fn bad_min_norm_settings_are_refused_naming_the_key() {
             "min_norm.qp.max_iter",
         ),
         (
-            "scan.toml",
-            "[min_norm]\nscan_step_deg = 0.0\n",
-            "min_norm.scan_step_deg",
-        ),
-        (
             "gap.toml",
             "[min_norm.qp]\ntol_gap = -1.0\n",
             "min_norm.qp.tol_gap",

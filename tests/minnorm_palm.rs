@@ -43,10 +43,11 @@ fn agree_with_statics(p: &SceneParams, fast_path: bool) -> Result<f64, String> {
     let tol = tol_level(fast_path);
     // Every held solution balances the load and stays in its cone (to ten times the tolerance).
     if let Some(sol) = &m.at_jam {
+        // The ground's friction cone, and every contact (the way-back stop too) pushing.
         let f = &sol.forces[0];
         let ok = sol.residual_force_n <= tol * scale
             && sol.residual_moment_nmm <= tol * scale * p.radius_mm
-            && f.normal_n >= -tol * scale
+            && sol.forces.iter().all(|c| c.normal_n >= -tol * scale)
             && f.tangential_n[0].abs() <= p.mu_ground * f.normal_n + tol * scale;
         if !ok {
             return Err(format!(
@@ -59,12 +60,7 @@ fn agree_with_statics(p: &SceneParams, fast_path: bool) -> Result<f64, String> {
     };
     if s.status != m.status {
         let reach_deg = palm_angle_at(p.radius_mm, p.palm_length_mm).to_degrees();
-        let closed_deg = (p.alpha_ground()
-            + p.alpha_palm()
-            + (p.weight_n() * p.alpha_ground().sin() / p.force_n)
-                .min(1.0)
-                .asin())
-        .to_degrees();
+        let closed_deg = statics::theta_jam_rad(p).to_degrees();
         let near = (closed_deg - p.start_angle_deg).abs() < AGREE_DEG
             || (closed_deg - reach_deg).abs() < AGREE_DEG;
         // The documented search floor (palm::FLOOR_PUSH_FRACTION): a jam beyond the reach and

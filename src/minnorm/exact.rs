@@ -12,7 +12,8 @@
 //!
 //! with `G z >= 0` and multipliers `w = -w' >= 0`. With at most 8 cone rows there are at most
 //! 256 sets; they are tried by increasing size, so a held problem whose optimum is strictly
-//! inside its cones (the palm scene away from the jam) costs one small solve. No set passing
+//! inside its cones costs one small solve (the palm scene (a), whose idle way-back stop is an
+//! active row, a few). No set passing
 //! the test means the program is infeasible. The KKT matrix may be singular (dependent rows,
 //! a joint that duplicates another); it is then solved in the least-squares sense by SVD and
 //! accepted only if the residual vanishes. clarabel is the reference: the tests compare both.
@@ -64,8 +65,8 @@ pub(crate) fn solve_lowered(low: &Lowered) -> ContactSolution {
     ContactSolution::not_held(HoldStatus::NotHeld, Backend::Exact, tried)
 }
 
-/// The unique solution of the equalities when they are square and regular (both palm
-/// formulations: the minimum is trivial, ERRATA.md).
+/// The unique solution of the equalities when they are square and regular (the palm scene's
+/// rolling formulation: the minimum is trivial).
 fn determined(low: &Lowered) -> Option<DVector<f64>> {
     if low.eq.nrows() != low.eq.ncols() {
         return None;

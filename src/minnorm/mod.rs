@@ -36,9 +36,10 @@
 //! largest load. A contact whose forces are that much smaller than the largest load has its cone
 //! judged at tolerance level.
 //!
-//! In the palm scene the equalities fix the forces (below), so clarabel's first iterate already
-//! balances the load and phi^2 is the same at every iteration of the trace; the primal and dual
-//! residuals carry the convergence, about five iterations as in Fig. 4.
+//! In the palm scene clarabel converges in about five iterations, as in Fig. 4. In (b) the
+//! equalities fix the forces (below), so phi^2 is the same at every iteration and the residuals
+//! carry the convergence; in (a) the way-back stop adds an unknown and the iterates reach the
+//! Eq. 1 minimum from inside the cones.
 //!
 //! # The palm scene, in a frame at the disc centre C
 //!
@@ -64,7 +65,7 @@
 //! the two frictions leave of the moment, lambda = r (R_t - F sin alpha_p). Held is then
 //! R_n >= 0 and R_t <= mu_g R_n: the Eq. 1 test. Where the sliding palm's own friction drags the
 //! disc back (R_t < 0, possible below alpha_p) the ground and the stop share the backward
-//! force, f_t,A = R_t / 2 and the stop R_t / 2 at the minimum norm while the ground's cone allows,
+//! force, f_t,A = R_t / 2 and the stop pushes -R_t / 2 at the minimum norm while the ground's cone allows,
 //! and the disc is always held: the stop takes what the ground cannot. So held is exactly the
 //! statics' one-sided test R_t <= mu_g R_n at every angle, the held angles below the start are
 //! [0, theta_jam] with the closed form's theta_jam for any mu_g and mu_p, and at the jam the
@@ -115,11 +116,10 @@
 //!
 //! Held at the start angle: jammed at start. Otherwise the held angles below the start are
 //! one interval [0, theta_jam] in both formulations (above). If the disc is held at the palm's
-//! reach (x = palm length) the boundary lies between the reach and the start; otherwise a
-//! downward scan from the start in `scan_step_deg` steps (0.5 deg) brackets it (a safeguard). The bracket is bisected to `bisection_tol_rad`; theta_jam is its held end. With
-//! no held angle within reach, the scan goes on below the reach (halving its last step) to tell
-//! "beyond reach" (some held angle further out) from "never jams", down to the angle where the
-//! push's sideways part F sin(theta) is 1e-7 of the largest load (below it "held" is a decision
+//! reach (x = palm length) the boundary lies between the reach and the start, and the bracket
+//! is bisected to `bisection_tol_rad`; theta_jam is its held end. If not, one solve tells
+//! "beyond reach" (held further out) from "never jams": at the angle where the push's sideways
+//! part F sin(theta) is 1e-7 of the largest load (below it "held" is a decision
 //! at the solvers' tolerance, [`palm::FLOOR_PUSH_FRACTION`]).
 
 mod contact;

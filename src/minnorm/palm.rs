@@ -50,10 +50,6 @@ pub struct MinNormSettings {
     /// Width in rad at which the bisection on the held / not-held boundary stops
     /// (default: 1e-9).
     pub bisection_tol_rad: f64,
-    /// Step in degrees of the downward scan from the start angle, used when the disc is not held
-    /// at the palm's reach (a safeguard: the held angles below the start are [0, theta_jam], so
-    /// the jam then lies beyond the reach) (default: 0.5).
-    pub scan_step_deg: f64,
     /// The program's settings (section `[min_norm.qp]`).
     pub qp: QpSettings,
 }
@@ -63,8 +59,6 @@ impl Default for MinNormSettings {
         MinNormSettings {
             formulation: Formulation::Translational,
             bisection_tol_rad: 1e-9,
-            // Fine enough to find a held interval in the scan, coarse enough to be cheap.
-            scan_step_deg: 0.5,
             qp: QpSettings::default(),
         }
     }
@@ -80,14 +74,6 @@ impl MinNormSettings {
                 "min_norm.bisection_tol_rad",
                 t,
                 "the bisection tolerance lies in [1e-15, 0.1] rad, e.g. 1e-9",
-            ));
-        }
-        let st = self.scan_step_deg;
-        if !(st.is_finite() && st > 0.0 && st <= 10.0) {
-            return Err(Error::invalid(
-                "min_norm.scan_step_deg",
-                st,
-                "the scan step lies in (0, 10] deg, e.g. 0.5",
             ));
         }
         self.qp.validate()
@@ -210,14 +196,10 @@ impl Search<'_> {
     }
 }
 
-/// Solves the palm scene by the minimum-norm model: held at the start angle -> jammed at start;
-/// else bracket the first held angle below the start within the palm's reach (x <= palm
-/// length): the reach itself if held there, else a downward scan in `scan_step_deg` steps; and
-/// bisect the boundary to `bisection_tol_rad`. With no held angle within reach, scan on (halving
-/// the last step) down to [`theta_floor_rad`] to tell "beyond reach" from "never jams".
-///
-/// The held angles below the start are one interval, [0, theta_jam] (module docs), so each
-/// bracket holds one boundary. `p` and `s` are
+/// Solves the palm scene by the minimum-norm model. The held angles below the start are one
+/// interval, [0, theta_jam] (module docs), so: held at the start angle -> jammed at start; held
+/// at the palm's reach (x = palm length) -> bisect [reach, start] to `bisection_tol_rad`;
+/// otherwise held at [`theta_floor_rad`] -> beyond reach, else never jams. `p` and `s` are
 /// validated here.
 pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
     p.validate()?;
@@ -242,55 +224,27 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
         return Ok(search.jam_at(JamStatus::JammedAtStart, start, sol));
     }
     let reach = palm_angle_at(p.radius_mm, p.palm_length_mm);
-    if reach < start {
-        // Held at the reach: the held angles reach down past it, one boundary above.
-        // Otherwise scan down for held angles within the palm's reach (a safeguard).
-        let bracket = if let Some(held) = search.eval(reach)? {
-            Some((reach, start, held))
-        } else {
-            let step = s.scan_step_deg.to_radians();
-            let mut found = None;
-            let mut above = start;
-            while above - step > reach {
-                let theta = above - step;
-                if let Some(held) = search.eval(theta)? {
-                    found = Some((theta, above, held));
-                    break;
+    if reach < start
+        && let Some(mut held) = search.eval(reach)?
+    {
+        let (mut lo, mut hi) = (reach, start);
+        while hi - lo > s.bisection_tol_rad {
+            let mid = 0.5 * (lo + hi);
+            match search.eval(mid)? {
+                Some(sol) => {
+                    lo = mid;
+                    held = sol;
                 }
-                above = theta;
+                None => hi = mid,
             }
-            found
-        };
-        if let Some((mut lo, mut hi, mut held)) = bracket {
-            while hi - lo > s.bisection_tol_rad {
-                let mid = 0.5 * (lo + hi);
-                match search.eval(mid)? {
-                    Some(sol) => {
-                        lo = mid;
-                        held = sol;
-                    }
-                    None => hi = mid,
-                }
-            }
-            return Ok(search.jam_at(JamStatus::Jams, lo, held));
         }
+        return Ok(search.jam_at(JamStatus::Jams, lo, held));
     }
-    // Below the reach only the status is wanted: "beyond reach" if any angle is held. Scan on
-    // in steps, then halve the last step down to the floor.
+    // Not held within reach: theta_jam lies below it. Only the status is wanted, and one solve
+    // at the floor tells it (below the floor "held" is a decision at the solvers' tolerance).
     let floor = theta_floor_rad(p);
-    let step = s.scan_step_deg.to_radians();
-    let mut theta = reach.min(start);
-    while theta > floor {
-        let next = if theta > 2.0 * step {
-            theta - step
-        } else {
-            0.5 * theta
-        };
-        theta = next.max(floor);
-        if search.eval(theta)?.is_some() {
-            search.out.status = JamStatus::BeyondReach;
-            return Ok(search.out);
-        }
+    if floor < reach.min(start) && search.eval(floor)?.is_some() {
+        search.out.status = JamStatus::BeyondReach;
     }
     Ok(search.out)
 }

@@ -108,7 +108,7 @@ pub struct ContactForce {
     /// The force in the problem's frame, in N.
     pub world_n: [f64; 3],
     /// Friction utilisation |f_t| / (mu f_n): 0 free of friction, 1 at the point of slipping
-    /// (0 where mu = 0 or f_n is below 1e-12 of the largest load).
+    /// (0 where mu = 0 or f_n is below 1e-9 of the largest load).
     pub utilisation: f64,
 }
 

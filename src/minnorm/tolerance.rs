@@ -41,6 +41,8 @@ pub fn tolerance_study(
     s: &MinNormSettings,
     tolerances: &[f64],
 ) -> Result<Vec<ToleranceRow>> {
+    p.validate()?;
+    s.validate()?;
     let oracle = statics::solve(p);
     let oracle_theta = (oracle.status == JamStatus::Jams)
         .then_some(oracle.theta_jam_deg)
