@@ -104,6 +104,10 @@ pub struct JamDetector<'a> {
     pub at_confirmation: Option<(f64, f64)>,
     /// Since when (s) the palm has touched the disc without a break, seen at step ends.
     touching_since: Option<f64>,
+    /// The palm lost the disc at the candidate or at a step end since: it may have bounced ahead.
+    bounced: bool,
+    /// Period in s of the disc oscillating on the palm contact's stiffness at the candidate.
+    contact_period: f64,
     pub series: Vec<SeriesRow>,
     next_sample: f64,
     y: Vec<f64>,
@@ -123,6 +127,8 @@ impl<'a> JamDetector<'a> {
             push_after_jam: 0.0,
             at_confirmation: None,
             touching_since: None,
+            bounced: false,
+            contact_period: 0.0,
             series: Vec::new(),
             next_sample: t0,
             y: vec![0.0; 3],
@@ -133,13 +139,17 @@ impl<'a> JamDetector<'a> {
         y[2] - ratio * self.sys.geometric_speed(y[0])
     }
 
-    /// The confirmation window after a candidate at palm angle `theta`: 0.25 deg of palm turn,
-    /// or longer than the flight of a bounce: a disc knocked ahead of the palm at up to twice the
-    /// palm's speed is caught again after 2 v_geo / (mu_g g) at most (friction decelerates it).
+    /// The confirmation window after a candidate at palm angle `theta`: 0.25 deg of palm turn, and
+    /// two periods of the disc oscillating on the contact (a soft contact slows the disc below
+    /// the threshold while it compresses, then throws it ahead); if the palm lost the disc since
+    /// the candidate (`bounced`), also longer than the flight of a bounce: a disc knocked ahead of
+    /// the palm at up to twice the palm's speed is caught again after 2 v_geo / (mu_g g) at most
+    /// (friction decelerates it). Without a bounce that flight term would keep the palm grinding
+    /// on a stuck disc for up to a second at mu = 0.1.
     fn confirm_time(&self, theta: f64) -> f64 {
-        let turn = CONFIRM_DEG.to_radians() / self.sys.omega;
+        let turn = (CONFIRM_DEG.to_radians() / self.sys.omega).max(2.0 * self.contact_period);
         let decel = self.rule.ground_decel;
-        let flight = if decel > 0.0 {
+        let flight = if self.bounced && decel > 0.0 {
             2.0 * self.sys.geometric_speed(theta) / decel
         } else {
             0.0
@@ -247,37 +257,52 @@ impl Observer for JamDetector<'_> {
                 self.jam = Some(instant(t));
                 self.push_after_jam = 0.0;
                 self.stiction = None;
+                let mut at = [0.0; 3];
+                step.eval(t, &mut at);
+                let (_, stiffness_n_per_mm) =
+                    sys.impact.elastic(sys.evaluate(&at, None).penetration);
+                self.bounced = stiffness_n_per_mm <= 0.0;
+                // T = 2 pi sqrt(m / k), k in N/m.
+                self.contact_period = if stiffness_n_per_mm > 0.0 {
+                    std::f64::consts::TAU * (sys.mass / (1e3 * stiffness_n_per_mm)).sqrt()
+                } else {
+                    0.0
+                };
             } else {
                 return Control::Continue;
             }
         }
         let jam = self.jam.expect("set above");
+        let penetration = sys.evaluate(&y, None).penetration;
+        let (elastic_push, _) = sys.impact.elastic(penetration);
         if !self.confirmed {
             if self.ratio_margin(&y, rule.arm_ratio) >= 0.0 {
                 // The disc recovered: it was slowed, not jammed.
                 self.jam = None;
+                self.stiction = None;
                 self.discarded += 1;
                 return Control::Continue;
             }
-            let (el, _) = sys.impact.elastic(sys.evaluate(&y, None).penetration);
-            self.push_after_jam = self.push_after_jam.max(el);
+            self.push_after_jam = self.push_after_jam.max(elastic_push);
         }
         if self.stiction.is_none() && y[2] < rule.v_stiction {
             let a = t0.max(jam.t);
             let t = first_root(step, a, t1, |y| y[2] - rule.v_stiction);
             self.stiction = Some(instant(t));
         }
-        let penetration = sys.evaluate(&y, None).penetration;
         if penetration <= 0.0 {
             self.touching_since = None;
+            self.bounced = true;
         } else if self.touching_since.is_none() {
             self.touching_since = Some(t1);
         }
-        let since = self.touching_since.map(|t| t.max(jam.t));
-        if !self.confirmed && since.is_some_and(|t| t1 >= t + self.confirm_time(jam.theta)) {
+        if !self.confirmed
+            && self
+                .touching_since
+                .is_some_and(|t| t1 >= t + self.confirm_time(jam.theta))
+        {
             self.confirmed = true;
-            let (el, _) = sys.impact.elastic(penetration);
-            self.at_confirmation = Some((y[0], el));
+            self.at_confirmation = Some((y[0], elastic_push));
         }
         if self.confirmed && t1 >= jam.t + rule.after_jam {
             Control::Stop(t1)

@@ -68,8 +68,8 @@ use crate::error::Result;
 use crate::model::{JamStatus, SceneParams};
 use jam::SeriesRow;
 
-/// How far past the self-locking wedge a jam may lie before it is called inaccurate: a fast disc
-/// coasts past the wedge on its inertia (0.7 % at mu = 0.15 with the defaults).
+/// How far past the self-locking wedge, beyond the disc's coasting distance, a jam may lie before
+/// it is called inaccurate: the contact's give (the jam sits 0.2-1 % from r/mu at the defaults).
 pub(crate) const WEDGE_MARGIN: f64 = 0.05;
 
 /// Largest step: 1 deg of commanded palm turn, so that arming and a jam never share a step.
@@ -152,12 +152,15 @@ pub fn simulate(
         out.status = JamStatus::Inaccurate;
         return Ok(out);
     }
-    if !params.verify || out.status == JamStatus::IntegratorFailed {
+    // Nothing to verify when the run failed or already failed a cross-check.
+    if !params.verify || out.status == JamStatus::IntegratorFailed || out.cross_check.is_some() {
         return Ok(out);
     }
+    // The time after the jam changes neither the status nor x_jam: the check stops at the jam.
     let fine = DynamicsParams {
         rtol: params.rtol / 10.0,
         atol: Some(params.atol() / 10.0),
+        after_jam_s: 0.0,
         ..*params
     };
     let check = run::run_once(scene, &fine, None);
@@ -165,9 +168,6 @@ pub fn simulate(
     out.rejected_steps += check.rejected_steps;
     out.rhs_evals += check.rhs_evals;
     out.jacobian_evals += check.jacobian_evals;
-    if out.cross_check.is_some() {
-        return Ok(out);
-    }
     let reason = match (out.x_jam_mm, check.x_jam_mm) {
         _ if check.status != out.status => Some(format!(
             "a second run at rtol = {:e} says {} instead of {}: tighten --rtol",
