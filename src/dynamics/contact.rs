@@ -57,14 +57,10 @@ pub struct ImpactLaw {
 pub struct ImpactForce {
     /// N in newtons.
     pub normal: f64,
-    /// The elastic part k delta^e in N.
-    pub elastic: f64,
     /// dN/d delta in N/mm.
     pub d_delta: f64,
     /// dN/d delta_dot in N s/mm.
     pub d_rate: f64,
-    /// d(k delta^e)/d delta in N/mm.
-    pub d_elastic: f64,
 }
 
 impl ImpactLaw {
@@ -77,27 +73,23 @@ impl ImpactLaw {
         (p * delta, self.exponent * p)
     }
 
-    /// The normal force at penetration `delta` (mm) closing at `rate` (mm/s).
-    pub fn force(&self, delta: f64, rate: f64) -> ImpactForce {
+    /// The normal force at penetration `delta` (mm) closing at `rate` (mm/s); `elastic` is
+    /// [`ImpactLaw::elastic`] at `delta`, which the caller computes once (the force drive needs it
+    /// too, and it costs a `powf`).
+    pub fn force(&self, delta: f64, rate: f64, elastic: (f64, f64)) -> ImpactForce {
         if delta <= 0.0 {
             return ImpactForce::default();
         }
-        let (elastic, d_elastic) = self.elastic(delta);
+        let (elastic, d_elastic) = elastic;
         let (c, dc) = step(delta, 0.0, 0.0, self.depth, self.damping);
         let n = elastic + c * rate;
         if n <= 0.0 {
-            return ImpactForce {
-                elastic,
-                d_elastic,
-                ..Default::default()
-            };
+            return ImpactForce::default();
         }
         ImpactForce {
             normal: n,
-            elastic,
             d_delta: d_elastic + dc * rate,
             d_rate: c,
-            d_elastic,
         }
     }
 }
@@ -203,11 +195,12 @@ mod tests {
             damping: 10.0,
             depth: 0.01,
         };
-        assert_eq!(law.force(-1e-3, 5.0).normal, 0.0);
+        let force = |delta: f64, rate: f64| law.force(delta, rate, law.elastic(delta));
+        assert_eq!(force(-1e-3, 5.0).normal, 0.0);
         for (delta, rate) in [(0.004, 3.0), (0.02, -1.0), (0.06, 0.5)] {
-            let f = law.force(delta, rate);
-            let dd = fd(|d| law.force(d, rate).normal, delta);
-            let dr = fd(|r| law.force(delta, r).normal, rate);
+            let f = force(delta, rate);
+            let dd = fd(|d| force(d, rate).normal, delta);
+            let dr = fd(|r| force(delta, r).normal, rate);
             assert!(
                 (f.d_delta - dd).abs() < 1e-5 * dd.abs(),
                 "{delta}: {} vs {dd}",

@@ -146,10 +146,11 @@ impl Scene {
         let s_b = self.contact_distance(y);
         let g_sb: Grad = [r * c - x * s, c, 0.0];
 
+        let elastic = self.impact.elastic(delta);
         let (theta_dot, g_td) = match self.drive {
             Drive::Motion => (-self.omega, [0.0; 3]),
             Drive::Force => {
-                let (el, d_el) = self.impact.elastic(delta);
+                let (el, d_el) = elastic;
                 let lim = self.normal_limit;
                 let (w, dw) = step(el, (1.0 - self.band) * lim, 0.0, lim, 1.0);
                 (
@@ -165,7 +166,7 @@ impl Scene {
         g_rate[2] += s;
         let g_rate = scale(-1.0, &g_rate);
 
-        let imp = self.impact.force(delta, rate);
+        let imp = self.impact.force(delta, rate, elastic);
         let n = imp.normal;
         let g_n = axpy(imp.d_delta, &g_delta, &scale(imp.d_rate, &g_rate));
 

@@ -2,7 +2,7 @@
 //! (Hairer, Norsett & Wanner, Solving ODEs I, Section II.5; code DOPRI5).
 
 use super::{
-    Control, DenseStep, Observer, OdeSystem, Outcome, Stats, Tolerances, initial_step, scaled_norm,
+    DenseStep, Observer, OdeSystem, Outcome, Stats, StepLoop, Tolerances, initial_step, scaled_norm,
 };
 
 const C2: f64 = 1.0 / 5.0;
@@ -87,29 +87,19 @@ impl Dopri5 {
         let mut ys = vec![0.0; n];
         let mut y1 = vec![0.0; n];
         let mut err = vec![0.0; n];
-        let mut t = t0;
-        sys.rhs(t, y0, &mut k[0]);
+        sys.rhs(t0, y0, &mut k[0]);
         st.rhs_evals += 1;
-        let mut h = initial_step(sys, t, y0, &k[0], 5.0, tol, &mut st.rhs_evals);
+        let mut h = initial_step(sys, t0, y0, &k[0], 5.0, tol, &mut st.rhs_evals);
+        let mut lp = StepLoop::new(t0, st);
         let (safe, beta, fac_min, fac_max) = (0.9, 0.04, 0.2, 10.0);
         let expo1 = 0.2 - beta * 0.75;
         let mut facold: f64 = 1e-4;
-        let mut last_rejected = false;
         loop {
-            // A step that lands a rounding error short of t_end leaves a sliver that is no step.
-            if t_end - t <= 1e-14 * t.abs().max(1.0) {
-                return (Outcome::Finished, st);
-            }
-            if st.steps + st.rejected >= tol.max_steps {
-                let reason = format!("step limit of {} reached", tol.max_steps);
-                return (Outcome::Failed { t, reason }, st);
-            }
-            h = h.min(t_end - t);
-            // Also true for a NaN step.
-            if h.is_nan() || h <= 1e-14 * t.abs().max(1.0) {
-                let reason = format!("step size {h:.3e} too small");
-                return (Outcome::Failed { t, reason }, st);
-            }
+            h = match lp.begin_step(t_end, h, tol) {
+                Ok(h) => h,
+                Err(end) => return (end, lp.stats),
+            };
+            let t = lp.t;
             let stage = |ys: &mut [f64], k: &[Vec<f64>; 7], coef: &[(usize, f64)]| {
                 for i in 0..n {
                     ys[i] = y0[i] + h * coef.iter().map(|&(j, a)| a * k[j][i]).sum::<f64>();
@@ -136,7 +126,7 @@ impl Dopri5 {
             );
             let (head, tail) = k.split_at_mut(6);
             sys.rhs(t + h, &y1, &mut tail[0]);
-            st.rhs_evals += 6;
+            lp.stats.rhs_evals += 6;
             for i in 0..n {
                 err[i] = h
                     * (E1 * head[0][i]
@@ -148,20 +138,15 @@ impl Dopri5 {
             }
             let e = scaled_norm(&err, y0, &y1, tol);
             if !e.is_finite() {
-                st.rejected += 1;
+                lp.reject();
                 h *= 0.1;
-                last_rejected = true;
                 continue;
             }
             let fac11 = e.powf(expo1);
             if e <= 1.0 {
                 let fac = (fac11 / facold.powf(beta) / safe).clamp(1.0 / fac_max, 1.0 / fac_min);
-                let mut hnew = h / fac;
+                let hnew = h / fac;
                 facold = e.max(1e-4);
-                if last_rejected {
-                    hnew = hnew.min(h);
-                }
-                last_rejected = false;
                 for i in 0..n {
                     let dy = y1[i] - y0[i];
                     let bspl = h * k[0][i] - dy;
@@ -177,18 +162,14 @@ impl Dopri5 {
                             + D6 * k[5][i]
                             + D7 * k[6][i]);
                 }
-                st.steps += 1;
-                let control = obs.on_step(&Dense { t0: t, h, r: &r });
-                t += h;
-                y0.copy_from_slice(&y1);
+                let dense = Dense { t0: t, h, r: &r };
+                h = match lp.accept_step(&dense, h, hnew, &y1, y0, obs) {
+                    Ok(hnew) => hnew.min(tol.max_step),
+                    Err(stopped) => return (stopped, lp.stats),
+                };
                 k.swap(0, 6);
-                if let Control::Stop(ts) = control {
-                    return (Outcome::Stopped { t: ts }, st);
-                }
-                h = hnew.min(tol.max_step);
             } else {
-                st.rejected += 1;
-                last_rejected = true;
+                lp.reject();
                 h /= (fac11 / safe).min(1.0 / fac_min);
             }
         }

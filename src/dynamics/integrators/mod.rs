@@ -55,8 +55,6 @@ pub struct Stats {
     pub rhs_evals: u64,
     /// Jacobian evaluations.
     pub jacobian_evals: u64,
-    /// LU decompositions.
-    pub decompositions: u64,
 }
 
 /// How an integration ended.
@@ -91,6 +89,83 @@ pub enum Control {
 /// Watches accepted steps (events, output).
 pub trait Observer {
     fn on_step(&mut self, step: &dyn DenseStep) -> Control;
+}
+
+/// The bookkeeping of an adaptive step loop, shared by the methods (their error estimates, step
+/// controllers and dense outputs stay their own).
+pub(crate) struct StepLoop {
+    /// Time of the last accepted state.
+    pub t: f64,
+    /// Whether the last attempt was rejected.
+    pub last_rejected: bool,
+    pub stats: Stats,
+}
+
+impl StepLoop {
+    pub fn new(t0: f64, stats: Stats) -> StepLoop {
+        StepLoop {
+            t: t0,
+            last_rejected: false,
+            stats,
+        }
+    }
+
+    /// Checks before a step attempt of size `h`: `Err` ends the integration (`Finished` at t_end,
+    /// `Failed` at the step limit or on a step too small or NaN), `Ok` is `h` clamped so as not to
+    /// pass t_end.
+    pub fn begin_step(&self, t_end: f64, h: f64, tol: &Tolerances) -> Result<f64, Outcome> {
+        let t = self.t;
+        // A step that lands a rounding error short of t_end leaves a sliver that is no step.
+        if t_end - t <= 1e-14 * t.abs().max(1.0) {
+            return Err(Outcome::Finished);
+        }
+        if self.stats.steps + self.stats.rejected >= tol.max_steps {
+            let reason = format!("step limit of {} reached", tol.max_steps);
+            return Err(Outcome::Failed { t, reason });
+        }
+        let h = h.min(t_end - t);
+        // Also true for a NaN step.
+        if h.is_nan() || h <= 1e-14 * t.abs().max(1.0) {
+            let reason = format!("step size {h:.3e} too small");
+            return Err(Outcome::Failed { t, reason });
+        }
+        Ok(h)
+    }
+
+    /// Counts a rejected attempt (error test or Newton failure).
+    pub fn reject(&mut self) {
+        self.stats.rejected += 1;
+        self.last_rejected = true;
+    }
+
+    /// Accepts the step `dense` of size `h` that ends at `y1`: counts it, shows it to the
+    /// observer and moves (t, `y`) to its end. Returns the next step, `h_new` capped at `h` after
+    /// a rejection (a step size that just failed does not grow at once), or `Err(Stopped)` if the
+    /// observer stops the integration.
+    pub fn accept_step(
+        &mut self,
+        dense: &dyn DenseStep,
+        h: f64,
+        h_new: f64,
+        y1: &[f64],
+        y: &mut [f64],
+        obs: &mut dyn Observer,
+    ) -> Result<f64, Outcome> {
+        let h_new = if self.last_rejected {
+            h_new.min(h)
+        } else {
+            h_new
+        };
+        self.last_rejected = false;
+        self.stats.steps += 1;
+        let control = obs.on_step(dense);
+        self.t += h;
+        y.copy_from_slice(y1);
+        match control {
+            Control::Stop(t) => Err(Outcome::Stopped { t }),
+            Control::Continue => Ok(h_new),
+        }
+    }
 }
 
 /// RMS norm of `e` scaled by atol + rtol max(|a|, |b|).

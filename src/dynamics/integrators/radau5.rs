@@ -13,7 +13,7 @@
 
 use super::linalg::Lu;
 use super::{
-    Control, DenseStep, Observer, OdeSystem, Outcome, Stats, Tolerances, initial_step, scaled_norm,
+    DenseStep, Observer, OdeSystem, Outcome, Stats, StepLoop, Tolerances, initial_step, scaled_norm,
 };
 
 const SQ6: f64 = 2.449_489_742_783_178;
@@ -145,36 +145,28 @@ impl Radau5 {
         let mut cont = vec![0.0; n];
         let mut f2 = vec![0.0; n];
         let mut ddiff = vec![[0.0; 3]; n];
-        let mut have_poly = false;
-        let mut scal_y = vec![0.0; n];
+        // y0 at the start of the step: the Newton iteration's scale and the dense output's base.
+        let mut y_start = vec![0.0; n];
 
-        let mut t = t0;
-        sys.rhs(t, y0, &mut f0);
+        sys.rhs(t0, y0, &mut f0);
         st.rhs_evals += 1;
-        let mut h = initial_step(sys, t, y0, &f0, 5.0, &tol, &mut st.rhs_evals);
+        let mut h = initial_step(sys, t0, y0, &f0, 5.0, &tol, &mut st.rhs_evals);
+        let mut lp = StepLoop::new(t0, st);
         let mut need_jac = true;
+        // No step accepted yet (so no collocation polynomial to start Newton from).
         let mut first = true;
-        let mut last_rejected = false;
         let mut faccon: f64 = 1.0;
         let (mut h_acc, mut err_acc) = (h, 1e-2);
-        let fail = |t: f64, reason: String, st: Stats| (Outcome::Failed { t, reason }, st);
 
         loop {
-            // A step that lands a rounding error short of t_end leaves a sliver that is no step.
-            if t_end - t <= 1e-14 * t.abs().max(1.0) {
-                return (Outcome::Finished, st);
-            }
-            if st.steps + st.rejected >= tol.max_steps {
-                return fail(t, format!("step limit of {} reached", tol.max_steps), st);
-            }
-            h = h.min(t_end - t);
-            // Also true for a NaN step.
-            if h.is_nan() || h <= 1e-14 * t.abs().max(1.0) {
-                return fail(t, format!("step size {h:.3e} too small"), st);
-            }
+            h = match lp.begin_step(t_end, h, &tol) {
+                Ok(h) => h,
+                Err(end) => return (end, lp.stats),
+            };
+            let t = lp.t;
             if need_jac {
                 sys.jacobian(t, y0, &mut jac);
-                st.jacobian_evals += 1;
+                lp.stats.jacobian_evals += 1;
                 need_jac = false;
             }
             // I - h (A (x) J) and u1/h I - J.
@@ -195,15 +187,13 @@ impl Radau5 {
                     small[i * n + j] = id - jac[i * n + j];
                 }
             }
-            st.decompositions += 2;
             if !lu_big.factor(m, &big) || !lu_small.factor(n, &small) {
-                st.rejected += 1;
+                lp.reject();
                 h *= 0.5;
-                last_rejected = true;
                 continue;
             }
             // Starting values: the previous collocation polynomial extrapolated, or zero.
-            if have_poly && !first {
+            if !first {
                 for i in 0..n {
                     let d = ddiff[i];
                     let p = |s: f64| s * (d[0] + (s - cf.c[0]) * (d[1] + (s - cf.c[1]) * d[2]));
@@ -215,7 +205,7 @@ impl Radau5 {
             } else {
                 z.fill(0.0);
             }
-            scal_y.copy_from_slice(y0);
+            y_start.copy_from_slice(y0);
             // Simplified Newton iteration.
             let mut converged = false;
             let mut newt = 0usize;
@@ -229,7 +219,7 @@ impl Radau5 {
                     }
                     sys.rhs(t + cf.c[k] * h, &ys, &mut fz[k * n..(k + 1) * n]);
                 }
-                st.rhs_evals += 3;
+                lp.stats.rhs_evals += 3;
                 for k in 0..3 {
                     for i in 0..n {
                         let s: f64 = (0..3).map(|j| cf.a[k][j] * fz[j * n + i]).sum();
@@ -238,7 +228,7 @@ impl Radau5 {
                 }
                 lu_big.solve(&mut dz, &mut work);
                 let dyno = (0..3)
-                    .map(|k| scaled_norm(&dz[k * n..(k + 1) * n], &scal_y, &scal_y, &tol).powi(2))
+                    .map(|k| scaled_norm(&dz[k * n..(k + 1) * n], &y_start, &y_start, &tol).powi(2))
                     .sum::<f64>();
                 let dyno = (dyno / 3.0).sqrt();
                 if !dyno.is_finite() {
@@ -278,9 +268,8 @@ impl Radau5 {
                 }
             }
             if !converged {
-                st.rejected += 1;
+                lp.reject();
                 h *= newton_fail.unwrap_or(0.5);
-                last_rejected = true;
                 continue;
             }
             // Error estimate.
@@ -291,12 +280,12 @@ impl Radau5 {
             }
             lu_small.solve(&mut cont, &mut work);
             let mut err = scaled_norm(&cont, y0, &y1, &tol);
-            if err >= 1.0 && (first || last_rejected) {
+            if err >= 1.0 && (first || lp.last_rejected) {
                 for i in 0..n {
                     ys[i] = y0[i] + cont[i];
                 }
                 sys.rhs(t, &ys, &mut cont);
-                st.rhs_evals += 1;
+                lp.stats.rhs_evals += 1;
                 for i in 0..n {
                     cont[i] += f2[i];
                 }
@@ -304,9 +293,8 @@ impl Radau5 {
                 err = scaled_norm(&cont, y0, &y1, &tol);
             }
             if !err.is_finite() {
-                st.rejected += 1;
+                lp.reject();
                 h *= 0.2;
-                last_rejected = true;
                 continue;
             }
             let err = err.max(1e-10);
@@ -319,35 +307,26 @@ impl Radau5 {
                 }
                 h_acc = h;
                 err_acc = err.max(1e-2);
-                let mut hnew = (h / quot).min(tol.max_step);
-                if last_rejected {
-                    hnew = hnew.min(h);
-                }
+                let hnew = (h / quot).min(tol.max_step);
                 divided_differences(cf.c, &z, n, &mut ddiff);
-                have_poly = true;
-                st.steps += 1;
-                let control = obs.on_step(&Collocation {
+                let dense = Collocation {
                     t0: t,
                     h,
-                    y0,
+                    y0: &y_start,
                     dd: &ddiff,
                     c: cf.c,
-                });
-                t += h;
-                y0.copy_from_slice(&y1);
-                if let Control::Stop(ts) = control {
-                    return (Outcome::Stopped { t: ts }, st);
-                }
-                sys.rhs(t, y0, &mut f0);
-                st.rhs_evals += 1;
+                };
+                h = match lp.accept_step(&dense, h, hnew, &y1, y0, obs) {
+                    Ok(hnew) => hnew,
+                    Err(stopped) => return (stopped, lp.stats),
+                };
+                sys.rhs(lp.t, y0, &mut f0);
+                lp.stats.rhs_evals += 1;
                 need_jac = true;
                 first = false;
-                last_rejected = false;
-                h = hnew;
             } else {
-                st.rejected += 1;
+                lp.reject();
                 h = if first { 0.1 * h } else { h / quot };
-                last_rejected = true;
             }
         }
     }
