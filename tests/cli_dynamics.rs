@@ -225,3 +225,22 @@ fn accuracy_refuses_a_bad_min_norm_tolerance() {
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("abc"), "{}", stderr(&o));
 }
+
+#[test]
+fn accuracy_names_the_setting_of_a_bad_tolerance() {
+    let dir = tempfile::tempdir().unwrap();
+    for (args, named) in [
+        (["--tolerances", "1e-3,2"], "tolerances = 2"),
+        (["--reference-rtol", "0"], "reference_rtol = 0"),
+    ] {
+        let mut all = vec!["accuracy", "--min-norm-tolerances", "none"];
+        all.extend(args);
+        let o = jamchart(dir.path(), &all);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(
+            stderr(&o).contains(named) && stderr(&o).contains("strictly between 0 and 1"),
+            "{args:?}: {}",
+            stderr(&o)
+        );
+    }
+}

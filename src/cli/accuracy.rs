@@ -24,11 +24,11 @@ pub struct AccuracyArgs {
     #[arg(long, value_name = "LIST", value_delimiter = ',')]
     pub tolerances: Option<Vec<f64>>,
     /// Timed runs per point; the median is reported [default: 5].
-    #[arg(long, value_name = "N", default_value_t = 5)]
-    pub runs: usize,
+    #[arg(long, value_name = "N")]
+    pub runs: Option<usize>,
     /// Tolerance of the reference solutions [default: 1e-11].
-    #[arg(long, value_name = "RTOL", default_value_t = 1e-11)]
-    pub reference_rtol: f64,
+    #[arg(long, value_name = "RTOL")]
+    pub reference_rtol: Option<f64>,
     /// Output format on stdout.
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]
     pub format: TableFormat,
@@ -47,17 +47,15 @@ pub struct AccuracyArgs {
 
 pub fn run(a: &AccuracyArgs) -> Result<String> {
     let config = a.scene.resolve_with(|c| a.dynamics.apply(c))?;
+    let defaults = StudySettings::default();
     let settings = StudySettings {
-        tolerances: a
-            .tolerances
-            .clone()
-            .unwrap_or_else(|| StudySettings::default().tolerances),
-        runs: a.runs,
-        reference_rtol: a.reference_rtol,
+        tolerances: a.tolerances.clone().unwrap_or(defaults.tolerances),
+        runs: a.runs.unwrap_or(defaults.runs),
+        reference_rtol: a.reference_rtol.unwrap_or(defaults.reference_rtol),
     };
     let bar = std::io::stderr().is_terminal().then(|| {
-        let n = 2 * (settings.tolerances.len() + 1);
-        let b = indicatif::ProgressBar::new(n as u64);
+        // The length comes with the first progress call.
+        let b = indicatif::ProgressBar::no_length();
         if let Ok(style) = indicatif::ProgressStyle::with_template(
             "accuracy {bar:30} {pos}/{len} points, {elapsed}",
         ) {
@@ -69,8 +67,9 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
         &config.scene,
         &config.dynamics,
         &settings,
-        &mut |done, _| {
+        &mut |done, total| {
             if let Some(b) = &bar {
+                b.set_length(total as u64);
                 b.set_position(done as u64);
             }
         },
@@ -83,7 +82,7 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
         &config.min_norm,
         &min_norm_tolerances(a.min_norm_tolerances.as_deref())?,
     )?;
-    let mut md = markdown(&study, a.runs);
+    let mut md = markdown(&study, settings.runs);
     md.push_str(&min_norm_markdown(&min_norm));
     let csv = csv(&study);
     let mut doc = serde_json::to_value(&study).expect("plain structs serialise");

@@ -28,12 +28,7 @@ pub struct DynamicsArgs {
     /// motion: prescribed omega, pushes as hard as needed (the paper's Adams model; jams near
     /// r/mu). force: turns at omega until its push reaches --force, then stalls (jams near the
     /// closed form at that force).
-    #[arg(
-        long,
-        allow_negative_numbers = true,
-        value_name = "DRIVE",
-        help_heading = "Dynamics"
-    )]
+    #[arg(long, value_name = "DRIVE", help_heading = "Dynamics")]
     pub drive: Option<Drive>,
     /// Palm closing speed omega in deg/s [default: 30].
     #[arg(
@@ -110,12 +105,7 @@ pub struct DynamicsArgs {
     )]
     pub palm_offset: Option<f64>,
     /// Integrator: radau5 (implicit) or dopri5 (explicit) [default: radau5].
-    #[arg(
-        long,
-        allow_negative_numbers = true,
-        value_name = "METHOD",
-        help_heading = "Dynamics"
-    )]
+    #[arg(long, value_name = "METHOD", help_heading = "Dynamics")]
     pub method: Option<Method>,
     /// Relative tolerance per step, in (0, 1) [default: 1e-6].
     ///

@@ -103,7 +103,8 @@ fn reason_of(s: &DynamicsSolution) -> Option<String> {
         .or_else(|| (s.status != JamStatus::Jams).then(|| format!("status {}", s.status)))
 }
 
-/// Runs the study; `progress(done, total)` is called after each point.
+/// Runs the study; `progress(done, total)` is called once before the first point (done = 0) and
+/// after each point.
 pub fn run_study(
     scene: &SceneParams,
     params: &DynamicsParams,
@@ -116,17 +117,26 @@ pub fn run_study(
     if settings.runs == 0 {
         return Err(Error::invalid("runs", 0, "at least one run per point"));
     }
-    for &t in settings.tolerances.iter().chain([&settings.reference_rtol]) {
-        if !(t.is_finite() && t > 0.0 && t < 1.0) {
-            return Err(Error::invalid(
-                "tolerances",
-                t,
-                "must lie strictly between 0 and 1",
-            ));
+    // Each point's parameters must pass `validate`; its error (about rtol, the only key `raw`
+    // changes that can fail) is named after the setting that gave the tolerance.
+    let named = |key: &str, e: Error| match e {
+        Error::InvalidValue { value, reason, .. } => Error::InvalidValue {
+            key: key.to_string(),
+            value,
+            reason,
+        },
+        e => e,
+    };
+    let points = (settings.tolerances.iter().map(|&t| ("tolerances", t)))
+        .chain([("reference_rtol", settings.reference_rtol)]);
+    for (key, t) in points {
+        for m in METHODS {
+            raw(params, m, t).validate().map_err(|e| named(key, e))?;
         }
     }
     let total = METHODS.len() * (settings.tolerances.len() + 1);
     let mut done = 0;
+    progress(done, total);
     let mut references = Vec::new();
     for m in METHODS {
         let s = run::run_once(scene, &raw(params, m, settings.reference_rtol), None);

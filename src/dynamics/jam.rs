@@ -98,7 +98,8 @@ pub struct JamDetector<'a> {
     pub beyond_reach: Option<Instant>,
     /// Candidates the disc recovered from.
     pub discarded: u32,
-    /// Largest elastic palm push (N) since the candidate jam.
+    /// Largest elastic palm push (N) from the candidate jam to its confirmation; it stops
+    /// updating once the jam is confirmed (the run-on after it does not count).
     pub push_after_jam: f64,
     /// Palm angle (rad) and elastic push (N) when the jam was confirmed.
     pub at_confirmation: Option<(f64, f64)>,
