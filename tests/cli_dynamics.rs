@@ -230,8 +230,14 @@ fn accuracy_refuses_a_bad_min_norm_tolerance() {
 fn accuracy_names_the_setting_of_a_bad_tolerance() {
     let dir = tempfile::tempdir().unwrap();
     for (args, named) in [
-        (["--tolerances", "1e-3,2"], "tolerances = 2"),
-        (["--reference-rtol", "0"], "reference_rtol = 0"),
+        (
+            ["--tolerances", "1e-3,2"],
+            "tolerances = 2 (flag --tolerances)",
+        ),
+        (
+            ["--reference-rtol", "0"],
+            "reference_rtol = 0 (flag --reference-rtol)",
+        ),
     ] {
         let mut all = vec!["accuracy", "--min-norm-tolerances", "none"];
         all.extend(args);

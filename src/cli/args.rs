@@ -96,6 +96,8 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
         "gravity_m_s2" => "--gravity",
         "start_angle_deg" => "--start-angle",
         "palm_length_mm" => "--palm-length",
+        "tolerances" => "--tolerances",
+        "reference_rtol" => "--reference-rtol",
         key => return super::dynamics::flag_for_key(key),
     })
 }
