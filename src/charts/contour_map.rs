@@ -82,6 +82,15 @@ impl ContourMapSpec {
                 "must lie in (0, 100) %",
             ));
         }
+        // The settle line's label and legend read "F ≈ ...", "to the right": true only when the
+        // push force runs along x (x_jam falls towards r/mu as F grows).
+        if self.settle_pct.is_some() && self.x_axis.param != GridParam::ForceN {
+            return Err(Error::invalid(
+                "chart.settle_pct",
+                format!("x_axis.param = {}", self.x_axis.param.as_str()),
+                "the settle line needs force_n on the x axis; drop settle_pct or put force_n on x",
+            ));
+        }
         self.request(base).validate()
     }
 
