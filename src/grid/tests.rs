@@ -51,7 +51,12 @@ fn bit_identical_for_any_thread_count() {
         base: SceneParams::default(),
         x: GridAxis::log(GridParam::ForceN, 50.0, 10_000.0, 97),
         y: GridAxis::linear(GridParam::RadiusMm, 10.0, 30.0, 61),
-        quantities: vec![Quantity::Status, Quantity::ThetaJamDeg, Quantity::XJamMm],
+        quantities: vec![
+            Quantity::Status,
+            Quantity::ThetaJamDeg,
+            Quantity::XJamMm,
+            Quantity::XRigidMm,
+        ],
     };
     let run = |threads| {
         in_pool(threads, || {
@@ -77,6 +82,10 @@ fn bit_identical_for_any_thread_count() {
         assert_eq!(
             opt_bits(r1.theta_jam_deg.as_ref().unwrap()),
             opt_bits(r.theta_jam_deg.as_ref().unwrap())
+        );
+        assert_eq!(
+            opt_bits(r1.x_rigid_mm.as_ref().unwrap()),
+            opt_bits(r.x_rigid_mm.as_ref().unwrap())
         );
     }
 }
