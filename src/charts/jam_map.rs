@@ -103,6 +103,9 @@ pub struct JamMap {
     title: String,
     /// The margin grid (present only with the regions layer).
     grid: Option<GridResult>,
+    /// The jam region (margin >= 0) as rings in plot space (ln for log axes), traced once here
+    /// so that drawing, once per format, only fills them.
+    jam_rings: Vec<Vec<(f64, f64)>>,
     /// The closed-form jam point at each x sample, (value, point).
     boundary: Vec<(f64, JamPoint)>,
     /// The read-off at the scene's own x value.
@@ -117,6 +120,10 @@ impl JamMap {
             true => Some(grid::evaluate(&spec.request(&p), model)?),
             false => None,
         };
+        let jam_rings = grid
+            .as_ref()
+            .map(|g| jam_rings(g, spec))
+            .unwrap_or_default();
         let param = spec.x_axis.param;
         let boundary = match spec.has(JamMapLayer::Boundary) {
             true => spec
@@ -136,6 +143,7 @@ impl JamMap {
             params: p,
             title: scene.title.clone(),
             grid,
+            jam_rings,
             boundary,
             read_off,
         })
@@ -219,11 +227,11 @@ impl JamMap {
             right,
         };
         let chart = axes::build_chart(root, &x, &y, margins)?;
-        if let Some(g) = &self.grid {
-            self.draw_regions(&chart, g)?;
+        let area = chart.plotting_area();
+        for ring in &self.jam_rings {
+            area.draw(&Polygon::new(ring.clone(), JAM_FILL.filled()))?;
         }
         axes::draw_grid(&chart, &x, &y)?;
-        let area = chart.plotting_area();
         let curve: Vec<(f64, f64)> = self
             .boundary
             .iter()
@@ -245,28 +253,6 @@ impl JamMap {
         ))?;
         let (_, py) = chart.plotting_area().get_pixel_range();
         legend::draw_legend(root, &entries, 60, py.end + 62, w as i32 - 120)
-    }
-
-    fn draw_regions<DB: DrawingBackend>(
-        &self,
-        chart: &Chart<DB>,
-        g: &GridResult,
-    ) -> DrawResult<DB> {
-        let Some(margin) = &g.margin_n else {
-            return Ok(());
-        };
-        let builder = ContourBuilder::new(g.nx(), g.ny(), true);
-        // A single threshold on a finite grid cannot fail; no polygon is drawn if it ever did.
-        let jam = builder.contours(margin, &[0.0]).unwrap_or_default();
-        let (xr, yr) = (&self.spec.x_axis, &self.spec.y_axis);
-        for c in &jam {
-            for ring in grid_polygons(c.geometry(), xr, yr) {
-                chart
-                    .plotting_area()
-                    .draw(&Polygon::new(ring, JAM_FILL.filled()))?;
-            }
-        }
-        Ok(())
     }
 
     /// "SLIDE" top left and "JAM" bottom right: where each region lies for every map whose
@@ -396,6 +382,19 @@ impl JamMap {
             big,
         )
     }
+}
+
+/// The rings of the region where the margin grid `g` is >= 0, in plot space.
+fn jam_rings(g: &GridResult, spec: &JamMapSpec) -> Vec<Vec<(f64, f64)>> {
+    let Some(margin) = &g.margin_n else {
+        return Vec::new();
+    };
+    let builder = ContourBuilder::new(g.nx(), g.ny(), true);
+    // A single threshold on a finite grid cannot fail; no polygon is drawn if it ever did.
+    let jam = builder.contours(margin, &[0.0]).unwrap_or_default();
+    jam.iter()
+        .flat_map(|c| grid_polygons(c.geometry(), &spec.x_axis, &spec.y_axis))
+        .collect()
 }
 
 /// The symbol of a parameter for labels.
