@@ -16,7 +16,9 @@ use super::axes::{self, DrawResult, Margins, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
 use super::spec::Scene;
 use super::style::{self, INK, LineKind};
-use super::{DataFile, axis_label, grid_lines, grid_polygons, scene_subtitle};
+use super::{
+    DataFile, axis_label, grid_lines, grid_polygons, param_symbol, param_unit, scene_subtitle,
+};
 use crate::error::{Error, Result};
 use crate::grid::{
     self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, ModelName, PointModel, Quantity,
@@ -272,13 +274,8 @@ impl ContourMap {
         self.draw_theta_lines(root, &chart, &y)?;
         self.draw_settle_line(root, &chart, &y)?;
         axes::draw_frame(root, &chart, &x, &y)?;
-        axes::draw_title(root, &self.title)?;
-        let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
-        root.draw(&Text::new(
-            scene_subtitle(&self.params, &[xa.param, ya.param]),
-            (w as i32 / 2, 40),
-            sub,
-        ))?;
+        let sub = scene_subtitle(&self.params, &[xa.param, ya.param]);
+        axes::draw_header(root, &self.title, &sub)?;
         legend::draw_legend(root, &entries, 60, py.end + 62, w as i32 - 120)
     }
 
@@ -330,9 +327,9 @@ impl ContourMap {
             };
             let s = format!(
                 "{} ≈ {} {}: x_jam within {pct} % of r/μ →",
-                short(xa.param),
+                param_symbol(xa.param),
                 style::fmt_num(value, 0),
-                unit(xa.param)
+                param_unit(xa.param)
             );
             axes::boxed_text(
                 root,
@@ -405,26 +402,4 @@ fn nearest_point(paths: &[Vec<(f64, f64)>], u: f64) -> Option<&(f64, f64)> {
 /// A level as a label: whole numbers without decimals.
 fn level_text(v: f64) -> String {
     style::fmt_num(v, if v.fract() == 0.0 { 0 } else { 1 })
-}
-
-/// A parameter's symbol.
-fn short(p: GridParam) -> &'static str {
-    match p {
-        GridParam::ForceN => "F",
-        GridParam::RadiusMm => "r",
-        GridParam::MassKg => "m",
-        other => other.as_str(),
-    }
-}
-
-/// A parameter's unit.
-fn unit(p: GridParam) -> &'static str {
-    match p {
-        GridParam::ForceN => "N",
-        GridParam::RadiusMm | GridParam::PalmLengthMm => "mm",
-        GridParam::MassKg => "kg",
-        GridParam::GravityMS2 => "m/s²",
-        GridParam::StartAngleDeg | GridParam::ThetaDeg => "deg",
-        _ => "",
-    }
 }

@@ -17,7 +17,7 @@ use super::axes::{self, Chart, DrawResult, Margins, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
 use super::spec::Scene;
 use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
-use super::{DataFile, axis_label, grid_polygons, scene_subtitle};
+use super::{DataFile, axis_label, grid_polygons, param_symbol, scene_subtitle};
 use crate::error::{Error, Result};
 use crate::grid::{
     self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, ModelName, PointModel,
@@ -176,7 +176,7 @@ impl JamMap {
         let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
         (
             PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param)),
-            PlotAxis::new(ya.min, ya.max, ya.scale, "palm angle θ (deg)"),
+            PlotAxis::new(ya.min, ya.max, ya.scale, axis_label(ya.param)),
         )
     }
 
@@ -201,7 +201,7 @@ impl JamMap {
         if let Some((v, _)) = self.read_off {
             let s = format!(
                 "read-off lines 1-2-3 at {} = {}",
-                short_name(self.spec.x_axis.param),
+                param_symbol(self.spec.x_axis.param),
                 style::fmt_num(v, 2)
             );
             e.push(LegendEntry::new(Swatch::Line(LineKind::Dashed), s));
@@ -244,13 +244,8 @@ impl JamMap {
             self.draw_position_scale(root, &chart, &x, &y)?;
         }
         self.draw_read_off(root, &chart, &x, &y)?;
-        axes::draw_title(root, &self.title)?;
-        let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
-        root.draw(&Text::new(
-            scene_subtitle(&self.params, &[self.spec.x_axis.param]),
-            (w as i32 / 2, 40),
-            sub,
-        ))?;
+        let sub = scene_subtitle(&self.params, &[self.spec.x_axis.param]);
+        axes::draw_header(root, &self.title, &sub)?;
         let (_, py) = chart.plotting_area().get_pixel_range();
         legend::draw_legend(root, &entries, 60, py.end + 62, w as i32 - 120)
     }
@@ -358,7 +353,7 @@ impl JamMap {
         )?;
         num("2", ((left.0 + corner.0) / 2, corner.1 - 14))?;
         num("3", ((right.0 + corner.0) / 2, corner.1 - 14))?;
-        let name = short_name(self.spec.x_axis.param);
+        let name = param_symbol(self.spec.x_axis.param);
         let big = style::NOTE_PX;
         axes::boxed_text(
             root,
@@ -395,16 +390,4 @@ fn jam_rings(g: &GridResult, spec: &JamMapSpec) -> Vec<Vec<(f64, f64)>> {
     jam.iter()
         .flat_map(|c| grid_polygons(c.geometry(), &spec.x_axis, &spec.y_axis))
         .collect()
-}
-
-/// The symbol of a parameter for labels.
-fn short_name(p: GridParam) -> &'static str {
-    match p {
-        GridParam::Mu => "μ",
-        GridParam::MuGround => "μ_ground",
-        GridParam::MuPalm => "μ_palm",
-        GridParam::ForceN => "F",
-        GridParam::MassKg => "m",
-        other => other.as_str(),
-    }
 }

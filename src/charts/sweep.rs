@@ -270,13 +270,8 @@ impl Sweep {
             }
             axes::draw_frame(root, &chart, &x, &y)?;
         }
-        axes::draw_title(root, &self.title)?;
-        let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
-        root.draw(&Text::new(
-            scene_subtitle_with(self.source(), &self.params, &[a.param]),
-            (w / 2, 40),
-            sub,
-        ))?;
+        let sub = scene_subtitle_with(self.source(), &self.params, &[a.param]);
+        axes::draw_header(root, &self.title, &sub)?;
         legend::draw_legend(root, &entries, 60, legend_top, w - 120)
     }
 }
