@@ -42,8 +42,8 @@ pub struct ContourMapSpec {
     /// (default: none; the paper's Fig. 7b discussion suggests 1).
     #[serde(default)]
     pub settle_pct: Option<f64>,
-    /// The model whose jam points are drawn (default: statics; the margin of a jam map's
-    /// regions is always the statics').
+    /// The model whose x_jam and theta_jam are contoured (default: statics; the settle line's
+    /// limit r/mu is always the statics').
     #[serde(default)]
     pub model: ModelName,
 }

@@ -22,10 +22,9 @@
 //! - A model over a map (jam map boundary and read-off, contour map): implement
 //!   [`crate::grid::PointModel`] and add a [`crate::grid::ModelName`] variant; scenes then say
 //!   `model = "min_norm"`.
-//! - A new chart kind (Fig. 4, the min-norm convergence trace; Fig. 5, the simulated velocity
-//!   and position against time): a module with a spec struct, `compute`, `data` and a
-//!   backend-generic `draw` (as [`sweep`]), a [`ChartSpec`] variant and a [`Chart`] variant.
-//!   Those scenes (`charts/fig4.toml`, `charts/fig5.toml`) come with their models.
+//! - A new chart kind: a module with a spec struct, `compute`, `data` and a backend-generic
+//!   `draw` (x-y panels through [`xy::Figure`], as [`convergence`] and [`time_series`] do), a
+//!   [`ChartSpec`] variant, a [`Chart`] variant and a scene `charts/<name>.toml`.
 
 pub mod axes;
 pub mod contour_map;

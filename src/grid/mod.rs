@@ -55,8 +55,6 @@ pub struct JamPoint {
 ///
 /// The min-norm and dynamics models plug into grids and charts by implementing this.
 pub trait PointModel: Sync {
-    /// The model's name as in `--model` and in data files, e.g. `statics`.
-    fn name(&self) -> &'static str;
     /// The jam point for scene `p` (already validated).
     fn jam_point(&self, p: &SceneParams) -> JamPoint;
 }
@@ -66,10 +64,6 @@ pub trait PointModel: Sync {
 pub struct Statics;
 
 impl PointModel for Statics {
-    fn name(&self) -> &'static str {
-        "statics"
-    }
-
     fn jam_point(&self, p: &SceneParams) -> JamPoint {
         let s = statics::solve(p);
         JamPoint {
