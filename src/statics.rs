@@ -87,20 +87,30 @@ pub fn theta_jam_rad(p: &SceneParams) -> f64 {
     }
 }
 
+/// The F -> infinity limit of the jam: `(theta_rigid_deg, x_rigid_mm)`.
+///
+/// theta_rigid = alpha_g + alpha_p (the self-locking wedge), x_rigid = r cot(theta_rigid / 2)
+/// in mm (r/mu for equal frictions); None when the wedge is closed (frictionless) or x_rigid is
+/// not finite. Depends on mu_ground, mu_palm and radius_mm only.
+pub fn rigid_limit(p: &SceneParams) -> (f64, Option<f64>) {
+    let wedge = p.alpha_ground() + p.alpha_palm();
+    let x_rigid = finite_or_none(disc_position_mm(p.radius_mm, wedge)).filter(|_| wedge > 0.0);
+    (wedge.to_degrees(), x_rigid)
+}
+
 /// Solves the scene in closed form. `p` must have passed [`SceneParams::validate`].
 pub fn solve(p: &SceneParams) -> StaticsSolution {
     let start = p.start_angle_deg.to_radians();
-    let wedge = p.alpha_ground() + p.alpha_palm();
     let lift_off_above = lift_off_angle(p);
     let lifts_off = lift_off_above.is_some_and(|t| t < start);
 
-    let x_rigid = finite_or_none(disc_position_mm(p.radius_mm, wedge)).filter(|_| wedge > 0.0);
+    let (theta_rigid_deg, x_rigid_mm) = rigid_limit(p);
     let mut out = StaticsSolution {
         status: JamStatus::Jams,
         theta_jam_deg: None,
         x_jam_mm: None,
-        theta_rigid_deg: wedge.to_degrees(),
-        x_rigid_mm: x_rigid,
+        theta_rigid_deg,
+        x_rigid_mm,
         lift_off_above_deg: lift_off_above.map(f64::to_degrees),
         lifts_off,
     };

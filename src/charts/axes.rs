@@ -390,14 +390,18 @@ pub fn boxed_text<DB: DrawingBackend>(
     ))
 }
 
-/// The chart title, centred at the top of `root`.
-pub fn draw_title<DB: DrawingBackend>(
+/// The chart title centred at the top of `root`, and the subtitle line (the scene, the source) under it.
+pub fn draw_header<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     title: &str,
+    subtitle: &str,
 ) -> DrawResult<DB> {
     let (w, _) = root.dim_in_pixel();
-    let style = style::text(style::TITLE_PX).pos(Pos::new(HPos::Center, VPos::Top));
-    root.draw(&Text::new(title.to_string(), (w as i32 / 2, 12), style))
+    let mid = w as i32 / 2;
+    let title_font = style::text(style::TITLE_PX).pos(Pos::new(HPos::Center, VPos::Top));
+    root.draw(&Text::new(title.to_string(), (mid, 12), title_font))?;
+    let sub_font = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
+    root.draw(&Text::new(subtitle.to_string(), (mid, 40), sub_font))
 }
 
 #[cfg(test)]

@@ -6,7 +6,6 @@
 //! it the push force no longer matters.
 
 use contour::ContourBuilder;
-use geo_types::MultiLineString;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -17,7 +16,9 @@ use super::axes::{self, DrawResult, Margins, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
 use super::spec::Scene;
 use super::style::{self, INK, LineKind};
-use super::{DataFile, axis_label, grid_lines, grid_polygons, scene_subtitle};
+use super::{
+    DataFile, axis_label, grid_lines, grid_polygons, param_symbol, param_unit, scene_subtitle,
+};
 use crate::error::{Error, Result};
 use crate::grid::{
     self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, ModelName, PointModel, Quantity,
@@ -41,8 +42,8 @@ pub struct ContourMapSpec {
     /// (default: none; the paper's Fig. 7b discussion suggests 1).
     #[serde(default)]
     pub settle_pct: Option<f64>,
-    /// The model whose jam points are drawn (default: statics; the margin of a jam map's
-    /// regions is always the statics').
+    /// The model whose x_jam and theta_jam are contoured (default: statics; the settle line's
+    /// limit r/mu is always the statics').
     #[serde(default)]
     pub model: ModelName,
 }
@@ -82,6 +83,15 @@ impl ContourMapSpec {
                 "must lie in (0, 100) %",
             ));
         }
+        // The settle line's label and legend read "F ≈ ...", "to the right": true only when the
+        // push force runs along x (x_jam falls towards r/mu as F grows).
+        if self.settle_pct.is_some() && self.x_axis.param != GridParam::ForceN {
+            return Err(Error::invalid(
+                "chart.settle_pct",
+                format!("x_axis.param = {}", self.x_axis.param.as_str()),
+                "the settle line needs force_n on the x axis; drop settle_pct or put force_n on x",
+            ));
+        }
         self.request(base).validate()
     }
 
@@ -111,7 +121,18 @@ pub struct ContourMap {
     grid: GridResult,
     /// Percent gap (x_rigid - x_jam) / x_rigid per cell, when the settle line is drawn.
     gap_pct: Option<Vec<f64>>,
+    /// The shaded x_jam bands in plot space, lowest first: the rings of each band.
+    bands: Vec<Paths>,
+    /// The x_jam iso-lines in plot space, (level in mm, paths).
+    x_jam_lines: Vec<(f64, Paths)>,
+    /// The theta_jam iso-lines in plot space, (level in deg, paths).
+    theta_lines: Vec<(f64, Paths)>,
+    /// The settle line in plot space.
+    settle_lines: Vec<Paths>,
 }
+
+/// Polylines or rings in plot space (ln for log axes).
+type Paths = Vec<Vec<(f64, f64)>>;
 
 /// A value for cells where a model gives no jam: below every level, so they stay unshaded.
 const NO_JAM: f64 = -1.0;
@@ -124,7 +145,7 @@ impl ContourMap {
     /// Evaluates the grid quantities the layers need.
     pub fn compute(scene: &Scene, spec: &ContourMapSpec, model: &dyn PointModel) -> Result<Self> {
         let grid = grid::evaluate(&spec.request(&scene.params), model)?;
-        let gap_pct = match (&grid.x_jam_mm, &grid.x_rigid_mm) {
+        let gap_pct: Option<Vec<f64>> = match (&grid.x_jam_mm, &grid.x_rigid_mm) {
             (Some(x), Some(r)) => Some(
                 x.iter()
                     .zip(r)
@@ -137,12 +158,52 @@ impl ContourMap {
             ),
             _ => None,
         };
+        // The marching squares run once here; `draw` only strokes (it runs once per format).
+        let (xa, ya) = (&spec.x_axis, &spec.y_axis);
+        let b = ContourBuilder::new(grid.nx(), grid.ny(), true);
+        // Finite values and levels cannot fail; nothing is drawn if they ever did.
+        let lines = |values: &[f64], levels: &[f64]| -> Vec<(f64, Paths)> {
+            b.lines(values, levels)
+                .unwrap_or_default()
+                .into_iter()
+                .map(|l| {
+                    let t = l.threshold();
+                    (t, grid_lines(&l.into_inner().0, xa, ya))
+                })
+                .collect()
+        };
+        let xj = dense(grid.x_jam_mm.as_deref().unwrap_or_default());
+        let levels = &spec.x_jam_levels_mm;
+        // Bands: below the first level, between levels, above the last.
+        let mut edges = vec![f64::MIN];
+        edges.extend(levels);
+        edges.push(f64::MAX);
+        let bands = b
+            .isobands(&xj, &edges)
+            .unwrap_or_default()
+            .iter()
+            .map(|band| grid_polygons(band.geometry(), xa, ya))
+            .collect();
+        let x_jam_lines = lines(&xj, levels);
+        let theta_lines = grid
+            .theta_jam_deg
+            .as_deref()
+            .map(|tj| lines(&dense(tj), &spec.theta_jam_levels_deg))
+            .unwrap_or_default();
+        let settle_lines = match (&gap_pct, spec.settle_pct) {
+            (Some(gap), Some(pct)) => lines(gap, &[pct]).into_iter().map(|(_, p)| p).collect(),
+            _ => Vec::new(),
+        };
         Ok(ContourMap {
             spec: spec.clone(),
             params: scene.params,
             title: scene.title.clone(),
             grid,
             gap_pct,
+            bands,
+            x_jam_lines,
+            theta_lines,
+            settle_lines,
         })
     }
 
@@ -161,23 +222,6 @@ impl ContourMap {
         }))
     }
 
-    fn lines(&self, values: &[f64], levels: &[f64]) -> Vec<(f64, MultiLineString<f64>)> {
-        let b = ContourBuilder::new(self.grid.nx(), self.grid.ny(), true);
-        // Finite values and levels cannot fail; nothing is drawn if they ever did.
-        b.lines(values, levels)
-            .unwrap_or_default()
-            .into_iter()
-            .map(|l| {
-                let t = l.threshold();
-                (t, l.into_inner().0)
-            })
-            .collect()
-    }
-
-    fn to_plot(&self, ml: &MultiLineString<f64>) -> Vec<Vec<(f64, f64)>> {
-        grid_lines(ml, &self.spec.x_axis, &self.spec.y_axis)
-    }
-
     /// Draws the map on `root`.
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
         let (w, _) = root.dim_in_pixel();
@@ -194,22 +238,11 @@ impl ContourMap {
         };
         let chart = axes::build_chart(root, &x, &y, m)?;
         let area = chart.plotting_area();
-        let xj = dense(self.grid.x_jam_mm.as_deref().unwrap_or_default());
-        let levels = &self.spec.x_jam_levels_mm;
-        // Bands: below the first level, between levels, above the last.
-        let mut edges = vec![f64::MIN];
-        edges.extend(levels);
-        edges.push(f64::MAX);
-        let greys = style::band_greys(edges.len() - 1);
-        let b = ContourBuilder::new(self.grid.nx(), self.grid.ny(), true);
-        for (band, grey) in b
-            .isobands(&xj, &edges)
-            .unwrap_or_default()
-            .iter()
-            .zip(&greys)
-        {
-            for ring in grid_polygons(band.geometry(), xa, ya) {
-                area.draw(&Polygon::new(ring, grey.filled()))?;
+        // One band below the first level, one between each pair, one above the last.
+        let greys = style::band_greys(self.spec.x_jam_levels_mm.len() + 1);
+        for (rings, grey) in self.bands.iter().zip(&greys) {
+            for ring in rings {
+                area.draw(&Polygon::new(ring.clone(), grey.filled()))?;
             }
         }
         axes::draw_grid(&chart, &x, &y)?;
@@ -218,18 +251,17 @@ impl ContourMap {
         let (label_u, mid_u, left_u) = [0.86, 0.5, 0.1]
             .map(|f| xr.start + f * (xr.end - xr.start))
             .into();
-        for (level, ml) in self.lines(&xj, levels) {
-            let paths = self.to_plot(&ml);
-            for p in &paths {
+        for (level, paths) in &self.x_jam_lines {
+            for p in paths {
                 style::draw_line(area, p, LineKind::Solid, INK)?;
             }
             // Right of the plot where lines are flat; further left for lines that leave the
             // plot there (near an edge).
             let at = [label_u, mid_u, left_u]
                 .into_iter()
-                .find_map(|u| nearest_x(&paths, u, &chart, (&px, &py)));
+                .find_map(|u| nearest_x(paths, u, &chart, (&px, &py)));
             if let Some(at) = at {
-                let s = format!("{} mm", level_text(level));
+                let s = format!("{} mm", level_text(*level));
                 axes::boxed_text(
                     root,
                     &s,
@@ -242,13 +274,8 @@ impl ContourMap {
         self.draw_theta_lines(root, &chart, &y)?;
         self.draw_settle_line(root, &chart, &y)?;
         axes::draw_frame(root, &chart, &x, &y)?;
-        axes::draw_title(root, &self.title)?;
-        let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
-        root.draw(&Text::new(
-            scene_subtitle(&self.params, &[xa.param, ya.param]),
-            (w as i32 / 2, 40),
-            sub,
-        ))?;
+        let sub = scene_subtitle(&self.params, &[xa.param, ya.param]);
+        axes::draw_header(root, &self.title, &sub)?;
         legend::draw_legend(root, &entries, 60, py.end + 62, w as i32 - 120)
     }
 
@@ -259,18 +286,14 @@ impl ContourMap {
         chart: &axes::Chart<DB>,
         y: &PlotAxis,
     ) -> DrawResult<DB> {
-        let Some(tj) = &self.grid.theta_jam_deg else {
-            return Ok(());
-        };
         let levels = &self.spec.theta_jam_levels_deg;
-        for (i, (level, ml)) in self.lines(&dense(tj), levels).into_iter().enumerate() {
-            let paths = self.to_plot(&ml);
-            for p in &paths {
+        for (i, (level, paths)) in self.theta_lines.iter().enumerate() {
+            for p in paths {
                 style::draw_line(chart.plotting_area(), p, LineKind::Dotted, INK)?;
             }
             let frac = 0.95 - 0.06 * (levels.len() - 1 - i) as f64;
-            if let Some((_, at)) = at_height(&paths, chart, y, frac) {
-                let s = format!("θ_jam = {}°", level_text(level));
+            if let Some((_, at)) = at_height(paths, chart, y, frac) {
+                let s = format!("θ_jam = {}°", level_text(*level));
                 let pos = Pos::new(HPos::Left, VPos::Center);
                 axes::boxed_text(root, &s, (at.0 + 5, at.1), pos, style::TICK_PX)?;
             }
@@ -286,16 +309,15 @@ impl ContourMap {
         chart: &axes::Chart<DB>,
         y: &PlotAxis,
     ) -> DrawResult<DB> {
-        let (Some(gap), Some(pct)) = (&self.gap_pct, self.spec.settle_pct) else {
+        let Some(pct) = self.spec.settle_pct else {
             return Ok(());
         };
         let xa = &self.spec.x_axis;
-        for (_, ml) in self.lines(gap, &[pct]) {
-            let paths = self.to_plot(&ml);
-            for p in &paths {
+        for paths in &self.settle_lines {
+            for p in paths {
                 style::draw_line(chart.plotting_area(), p, LineKind::Dashed, INK)?;
             }
-            let Some(((u, _), at)) = at_height(&paths, chart, y, 0.06) else {
+            let Some(((u, _), at)) = at_height(paths, chart, y, 0.06) else {
                 continue;
             };
             let value = if xa.scale == AxisScale::Log {
@@ -305,9 +327,9 @@ impl ContourMap {
             };
             let s = format!(
                 "{} ≈ {} {}: x_jam within {pct} % of r/μ →",
-                short(xa.param),
+                param_symbol(xa.param),
                 style::fmt_num(value, 0),
-                unit(xa.param)
+                param_unit(xa.param)
             );
             axes::boxed_text(
                 root,
@@ -380,26 +402,4 @@ fn nearest_point(paths: &[Vec<(f64, f64)>], u: f64) -> Option<&(f64, f64)> {
 /// A level as a label: whole numbers without decimals.
 fn level_text(v: f64) -> String {
     style::fmt_num(v, if v.fract() == 0.0 { 0 } else { 1 })
-}
-
-/// A parameter's symbol.
-fn short(p: GridParam) -> &'static str {
-    match p {
-        GridParam::ForceN => "F",
-        GridParam::RadiusMm => "r",
-        GridParam::MassKg => "m",
-        other => other.as_str(),
-    }
-}
-
-/// A parameter's unit.
-fn unit(p: GridParam) -> &'static str {
-    match p {
-        GridParam::ForceN => "N",
-        GridParam::RadiusMm | GridParam::PalmLengthMm => "mm",
-        GridParam::MassKg => "kg",
-        GridParam::GravityMS2 => "m/s²",
-        GridParam::StartAngleDeg | GridParam::ThetaDeg => "deg",
-        _ => "",
-    }
 }

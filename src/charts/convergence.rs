@@ -149,10 +149,9 @@ impl Convergence {
                 &[],
             ),
             panels: vec![objective, residuals],
-            notes: vec![
-                objective_note,
-                match trace.last() {
-                    Some(end) => format!(
+            notes: std::iter::once(objective_note)
+                .chain(trace.last().map(|end| {
+                    format!(
                         "Converged after {} iterations, primal residual {}, dual {}: both below \
                          tol_feas = {} ({} formulation).",
                         end.iteration,
@@ -160,10 +159,9 @@ impl Convergence {
                         sci(end.res_dual),
                         sci(tol),
                         s.formulation.as_str()
-                    ),
-                    None => String::new(),
-                },
-            ],
+                    )
+                }))
+                .collect(),
         };
         Ok(Convergence {
             figure,

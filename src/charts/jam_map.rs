@@ -17,7 +17,7 @@ use super::axes::{self, Chart, DrawResult, Margins, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
 use super::spec::Scene;
 use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
-use super::{DataFile, axis_label, grid_polygons, scene_subtitle};
+use super::{DataFile, axis_label, grid_polygons, param_symbol, scene_subtitle};
 use crate::error::{Error, Result};
 use crate::grid::{
     self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, ModelName, PointModel,
@@ -103,6 +103,9 @@ pub struct JamMap {
     title: String,
     /// The margin grid (present only with the regions layer).
     grid: Option<GridResult>,
+    /// The jam region (margin >= 0) as rings in plot space (ln for log axes), traced once here
+    /// so that drawing, once per format, only fills them.
+    jam_rings: Vec<Vec<(f64, f64)>>,
     /// The closed-form jam point at each x sample, (value, point).
     boundary: Vec<(f64, JamPoint)>,
     /// The read-off at the scene's own x value.
@@ -117,6 +120,10 @@ impl JamMap {
             true => Some(grid::evaluate(&spec.request(&p), model)?),
             false => None,
         };
+        let jam_rings = grid
+            .as_ref()
+            .map(|g| jam_rings(g, spec))
+            .unwrap_or_default();
         let param = spec.x_axis.param;
         let boundary = match spec.has(JamMapLayer::Boundary) {
             true => spec
@@ -136,6 +143,7 @@ impl JamMap {
             params: p,
             title: scene.title.clone(),
             grid,
+            jam_rings,
             boundary,
             read_off,
         })
@@ -168,7 +176,7 @@ impl JamMap {
         let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
         (
             PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param)),
-            PlotAxis::new(ya.min, ya.max, ya.scale, "palm angle θ (deg)"),
+            PlotAxis::new(ya.min, ya.max, ya.scale, axis_label(ya.param)),
         )
     }
 
@@ -193,7 +201,7 @@ impl JamMap {
         if let Some((v, _)) = self.read_off {
             let s = format!(
                 "read-off lines 1-2-3 at {} = {}",
-                short_name(self.spec.x_axis.param),
+                param_symbol(self.spec.x_axis.param),
                 style::fmt_num(v, 2)
             );
             e.push(LegendEntry::new(Swatch::Line(LineKind::Dashed), s));
@@ -219,11 +227,11 @@ impl JamMap {
             right,
         };
         let chart = axes::build_chart(root, &x, &y, margins)?;
-        if let Some(g) = &self.grid {
-            self.draw_regions(&chart, g)?;
+        let area = chart.plotting_area();
+        for ring in &self.jam_rings {
+            area.draw(&Polygon::new(ring.clone(), JAM_FILL.filled()))?;
         }
         axes::draw_grid(&chart, &x, &y)?;
-        let area = chart.plotting_area();
         let curve: Vec<(f64, f64)> = self
             .boundary
             .iter()
@@ -236,37 +244,10 @@ impl JamMap {
             self.draw_position_scale(root, &chart, &x, &y)?;
         }
         self.draw_read_off(root, &chart, &x, &y)?;
-        axes::draw_title(root, &self.title)?;
-        let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
-        root.draw(&Text::new(
-            scene_subtitle(&self.params, &[self.spec.x_axis.param]),
-            (w as i32 / 2, 40),
-            sub,
-        ))?;
+        let sub = scene_subtitle(&self.params, &[self.spec.x_axis.param]);
+        axes::draw_header(root, &self.title, &sub)?;
         let (_, py) = chart.plotting_area().get_pixel_range();
         legend::draw_legend(root, &entries, 60, py.end + 62, w as i32 - 120)
-    }
-
-    fn draw_regions<DB: DrawingBackend>(
-        &self,
-        chart: &Chart<DB>,
-        g: &GridResult,
-    ) -> DrawResult<DB> {
-        let Some(margin) = &g.margin_n else {
-            return Ok(());
-        };
-        let builder = ContourBuilder::new(g.nx(), g.ny(), true);
-        // A single threshold on a finite grid cannot fail; no polygon is drawn if it ever did.
-        let jam = builder.contours(margin, &[0.0]).unwrap_or_default();
-        let (xr, yr) = (&self.spec.x_axis, &self.spec.y_axis);
-        for c in &jam {
-            for ring in grid_polygons(c.geometry(), xr, yr) {
-                chart
-                    .plotting_area()
-                    .draw(&Polygon::new(ring, JAM_FILL.filled()))?;
-            }
-        }
-        Ok(())
     }
 
     /// "SLIDE" top left and "JAM" bottom right: where each region lies for every map whose
@@ -372,7 +353,7 @@ impl JamMap {
         )?;
         num("2", ((left.0 + corner.0) / 2, corner.1 - 14))?;
         num("3", ((right.0 + corner.0) / 2, corner.1 - 14))?;
-        let name = short_name(self.spec.x_axis.param);
+        let name = param_symbol(self.spec.x_axis.param);
         let big = style::NOTE_PX;
         axes::boxed_text(
             root,
@@ -398,14 +379,15 @@ impl JamMap {
     }
 }
 
-/// The symbol of a parameter for labels.
-fn short_name(p: GridParam) -> &'static str {
-    match p {
-        GridParam::Mu => "μ",
-        GridParam::MuGround => "μ_ground",
-        GridParam::MuPalm => "μ_palm",
-        GridParam::ForceN => "F",
-        GridParam::MassKg => "m",
-        other => other.as_str(),
-    }
+/// The rings of the region where the margin grid `g` is >= 0, in plot space.
+fn jam_rings(g: &GridResult, spec: &JamMapSpec) -> Vec<Vec<(f64, f64)>> {
+    let Some(margin) = &g.margin_n else {
+        return Vec::new();
+    };
+    let builder = ContourBuilder::new(g.nx(), g.ny(), true);
+    // A single threshold on a finite grid cannot fail; no polygon is drawn if it ever did.
+    let jam = builder.contours(margin, &[0.0]).unwrap_or_default();
+    jam.iter()
+        .flat_map(|c| grid_polygons(c.geometry(), &spec.x_axis, &spec.y_axis))
+        .collect()
 }

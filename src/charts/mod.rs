@@ -22,10 +22,9 @@
 //! - A model over a map (jam map boundary and read-off, contour map): implement
 //!   [`crate::grid::PointModel`] and add a [`crate::grid::ModelName`] variant; scenes then say
 //!   `model = "min_norm"`.
-//! - A new chart kind (Fig. 4, the min-norm convergence trace; Fig. 5, the simulated velocity
-//!   and position against time): a module with a spec struct, `compute`, `data` and a
-//!   backend-generic `draw` (as [`sweep`]), a [`ChartSpec`] variant and a [`Chart`] variant.
-//!   Those scenes (`charts/fig4.toml`, `charts/fig5.toml`) come with their models.
+//! - A new chart kind: a module with a spec struct, `compute`, `data` and a backend-generic
+//!   `draw` (x-y panels through [`xy::Figure`], as [`convergence`] and [`time_series`] do), a
+//!   [`ChartSpec`] variant, a [`Chart`] variant and a scene `charts/<name>.toml`.
 
 pub mod axes;
 pub mod contour_map;
@@ -223,20 +222,59 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
     })
 }
 
-/// Axis label (quantity and unit) of a scene parameter.
-pub fn axis_label(p: GridParam) -> &'static str {
+/// The symbol of a scene parameter in labels, e.g. `F` for force_n.
+pub fn param_symbol(p: GridParam) -> &'static str {
     match p {
-        GridParam::Mu => "friction coefficient μ = μ_ground = μ_palm (-)",
-        GridParam::MuGround => "ground friction coefficient μ_ground (-)",
-        GridParam::MuPalm => "palm friction coefficient μ_palm (-)",
-        GridParam::RadiusMm => "disc radius r (mm)",
-        GridParam::MassKg => "disc mass m (kg)",
-        GridParam::ForceN => "palm push F (N)",
-        GridParam::GravityMS2 => "gravity g (m/s²)",
-        GridParam::StartAngleDeg => "start angle of the palm (deg)",
-        GridParam::PalmLengthMm => "palm length (mm)",
-        GridParam::ThetaDeg => "palm angle θ (deg)",
+        GridParam::Mu => "μ",
+        GridParam::MuGround => "μ_ground",
+        GridParam::MuPalm => "μ_palm",
+        GridParam::RadiusMm => "r",
+        GridParam::MassKg => "m",
+        GridParam::ForceN => "F",
+        GridParam::GravityMS2 => "g",
+        GridParam::StartAngleDeg => "θ_start",
+        GridParam::PalmLengthMm => "L_palm",
+        GridParam::ThetaDeg => "θ",
     }
+}
+
+/// The unit of a scene parameter in labels; `-` for the friction coefficients.
+pub fn param_unit(p: GridParam) -> &'static str {
+    match p {
+        GridParam::Mu | GridParam::MuGround | GridParam::MuPalm => "-",
+        GridParam::RadiusMm | GridParam::PalmLengthMm => "mm",
+        GridParam::MassKg => "kg",
+        GridParam::ForceN => "N",
+        GridParam::GravityMS2 => "m/s²",
+        GridParam::StartAngleDeg | GridParam::ThetaDeg => "deg",
+    }
+}
+
+/// Axis label of a scene parameter: quantity, symbol and unit.
+pub fn axis_label(p: GridParam) -> String {
+    let quantity = match p {
+        GridParam::Mu => "friction coefficient",
+        GridParam::MuGround => "ground friction coefficient",
+        GridParam::MuPalm => "palm friction coefficient",
+        GridParam::RadiusMm => "disc radius",
+        GridParam::MassKg => "disc mass",
+        GridParam::ForceN => "palm push",
+        GridParam::GravityMS2 => "gravity",
+        GridParam::StartAngleDeg => "start angle of the palm",
+        GridParam::PalmLengthMm => "palm length",
+        GridParam::ThetaDeg => "palm angle",
+    };
+    // One mu stands for both contacts; the label says so.
+    let symbol = match p {
+        GridParam::Mu => "μ = μ_ground = μ_palm",
+        _ => param_symbol(p),
+    };
+    format!("{quantity} {symbol} ({})", param_unit(p))
+}
+
+/// `symbol = value unit`, e.g. `F = 200 N`.
+fn param_value(p: GridParam, v: f64) -> String {
+    format!("{} = {v} {}", param_symbol(p), param_unit(p))
 }
 
 /// One line naming the scene's parameters for under the title, without the `swept` ones (they
@@ -252,18 +290,18 @@ pub fn scene_subtitle_with(source: &str, p: &SceneParams, swept: &[GridParam]) -
     } else {
         format!("μ_ground = {}, μ_palm = {}", p.mu_ground, p.mu_palm)
     };
-    let parts = [
-        (GridParam::Mu, mu),
-        (GridParam::MassKg, format!("m = {} kg", p.mass_kg)),
-        (GridParam::RadiusMm, format!("r = {} mm", p.radius_mm)),
-        (GridParam::ForceN, format!("F = {} N", p.force_n)),
-        (
-            GridParam::GravityMS2,
-            format!("g = {} m/s²", p.gravity_m_s2),
-        ),
+    let shown = [
+        GridParam::MassKg,
+        GridParam::RadiusMm,
+        GridParam::ForceN,
+        GridParam::GravityMS2,
     ];
+    let parts = std::iter::once((GridParam::Mu, mu)).chain(
+        shown
+            .into_iter()
+            .filter_map(|k| k.get(p).map(|v| (k, param_value(k, v)))),
+    );
     let kept: Vec<String> = parts
-        .into_iter()
         .filter(|(k, _)| !swept.contains(k))
         .map(|(_, s)| s)
         .collect();

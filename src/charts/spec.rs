@@ -12,7 +12,7 @@
 //! width_px = 1000
 //! height_px = 900
 //! [chart]                          # the chart kind and its own keys
-//! kind = "jam_map"                 # jam_map | sweep | contour_map
+//! kind = "jam_map"                 # jam_map | sweep | contour_map | convergence | time_series | work_precision
 //! ```
 //!
 //! The `[chart]` keys of each kind are documented on [`JamMapSpec`], [`SweepSpec`],

@@ -270,13 +270,8 @@ impl Sweep {
             }
             axes::draw_frame(root, &chart, &x, &y)?;
         }
-        axes::draw_title(root, &self.title)?;
-        let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
-        root.draw(&Text::new(
-            scene_subtitle_with(self.source(), &self.params, &[a.param]),
-            (w / 2, 40),
-            sub,
-        ))?;
+        let sub = scene_subtitle_with(self.source(), &self.params, &[a.param]);
+        axes::draw_header(root, &self.title, &sub)?;
         legend::draw_legend(root, &entries, 60, legend_top, w - 120)
     }
 }
@@ -296,11 +291,17 @@ impl Sweep {
             .iter()
             .filter_map(|p| panel.value(p).map(|v| (p.at, v)))
             .collect();
-        if let (Some(names), Some(&(a0, v0)), Some(&(a1, v1))) =
+        if let (Some(names), Some(&(a0, _)), Some(&(a1, v1))) =
             (s.flat_names, vals.first(), vals.last())
         {
-            // Flat to 1e-9 relative: the curve is a constant, worth its number.
-            if a0 != a1 && (v1 - v0).abs() <= 1e-9 * v0.abs() {
+            // Flat to 1e-9 relative over every point (not only the ends): the curve is a
+            // constant, worth its number.
+            let (lo, hi) = vals
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(_, v)| {
+                    (lo.min(v), hi.max(v))
+                });
+            if a0 != a1 && hi - lo <= 1e-9 * lo.abs().max(hi.abs()) {
                 let (name, unit) = match panel {
                     SweepPanel::XJamMm => (names[0], " mm"),
                     SweepPanel::ThetaJamDeg => (names[1], "°"),

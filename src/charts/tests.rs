@@ -118,6 +118,33 @@ fn paper_points_on_a_non_mu_sweep_are_refused() {
     assert!(msg.contains("chart.layers") && msg.contains("mu"), "{msg}");
 }
 
+/// A contour map with x = mu and y = force_n drew "mu ≈ 0 : x_jam within 1 % of r/μ →" and a
+/// legend saying "to the right": the settle line assumed force_n on x. Other x axes are refused.
+#[test]
+fn settle_line_without_force_on_x_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("base.toml"), "").unwrap();
+    let scene = |x: &str, y: &str| {
+        format!(
+            "title = \"t\"\nbase = \"base.toml\"\n[chart]\nkind = \"contour_map\"\n\
+             x_axis = {{ {x}, count = 3 }}\ny_axis = {{ {y}, count = 3 }}\n\
+             x_jam_levels_mm = [30.0]\nsettle_pct = 1.0\n"
+        )
+    };
+    let (mu, force) = (
+        "param = \"mu\", min = 0.2, max = 0.6",
+        "param = \"force_n\", min = 50.0, max = 500.0",
+    );
+    std::fs::write(dir.path().join("bad.toml"), scene(mu, force)).unwrap();
+    let msg = load_scene(dir.path(), "bad").unwrap_err().to_string();
+    assert!(
+        msg.contains("chart.settle_pct") && msg.contains("x_axis.param = mu"),
+        "{msg}"
+    );
+    std::fs::write(dir.path().join("good.toml"), scene(force, mu)).unwrap();
+    load_scene(dir.path(), "good").unwrap();
+}
+
 /// Counts the model calls of a chart, delegating to the models themselves.
 #[derive(Default)]
 struct Counting {

@@ -219,9 +219,7 @@ impl Figure {
             }
             axes::draw_frame(root, &chart, &panel.x, &panel.y)?;
         }
-        axes::draw_title(root, &self.title)?;
-        let sub = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
-        root.draw(&Text::new(self.subtitle.clone(), (w / 2, 40), sub))?;
+        axes::draw_header(root, &self.title, &self.subtitle)?;
         let note = style::text(style::NOTE_PX).pos(Pos::new(HPos::Left, VPos::Top));
         for (i, line) in notes.iter().enumerate() {
             let y = notes_top + i as i32 * note_px;

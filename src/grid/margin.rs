@@ -18,6 +18,10 @@ use super::{GridParam, GridRequest};
 use crate::model::SceneParams;
 
 /// The margin of one scene as a function of theta: `c0_n + a_n cos(theta) + b_n sin(theta)`.
+///
+/// Derived from the corrected Eq. 1 ([`crate::statics::ground_reaction`]): margin = mu_g R_n - R_t
+/// with R_n = m g + F cos(theta - alpha_p) and R_t = F sin(theta - alpha_p); expanding the
+/// difference angles and collecting cos(theta) and sin(theta) gives the three coefficients.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MarginCoeffs {
     /// mu_g m g in N.

@@ -55,8 +55,6 @@ pub struct JamPoint {
 ///
 /// The min-norm and dynamics models plug into grids and charts by implementing this.
 pub trait PointModel: Sync {
-    /// The model's name as in `--model` and in data files, e.g. `statics`.
-    fn name(&self) -> &'static str;
     /// The jam point for scene `p` (already validated).
     fn jam_point(&self, p: &SceneParams) -> JamPoint;
 }
@@ -66,10 +64,6 @@ pub trait PointModel: Sync {
 pub struct Statics;
 
 impl PointModel for Statics {
-    fn name(&self) -> &'static str {
-        "statics"
-    }
-
     fn jam_point(&self, p: &SceneParams) -> JamPoint {
         let s = statics::solve(p);
         JamPoint {
@@ -222,22 +216,10 @@ pub fn evaluate(req: &GridRequest, model: &dyn PointModel) -> Result<GridResult>
 
     let jam_wanted =
         wants(Quantity::Status) || wants(Quantity::ThetaJamDeg) || wants(Quantity::XJamMm);
-    let points: Option<Vec<JamPoint>> = jam_wanted.then(|| {
-        let nx = x_values.len();
-        (0..nx * y_values.len())
-            .into_par_iter()
-            .map(|i| model.jam_point(&req.cell_params(x_values[i % nx], y_values[i / nx])))
-            .collect()
-    });
-    let x_rigid_mm = wants(Quantity::XRigidMm).then(|| {
-        let nx = x_values.len();
-        (0..nx * y_values.len())
-            .into_par_iter()
-            .map(|i| {
-                statics::solve(&req.cell_params(x_values[i % nx], y_values[i / nx])).x_rigid_mm
-            })
-            .collect()
-    });
+    let points: Option<Vec<JamPoint>> =
+        jam_wanted.then(|| per_cell(req, &x_values, &y_values, |p| model.jam_point(p)));
+    let x_rigid_mm = wants(Quantity::XRigidMm)
+        .then(|| per_cell(req, &x_values, &y_values, |p| statics::rigid_limit(p).1));
     let pick = |q: Quantity| points.as_ref().filter(|_| wants(q));
     Ok(GridResult {
         margin_n,
@@ -249,6 +231,20 @@ pub fn evaluate(req: &GridRequest, model: &dyn PointModel) -> Result<GridResult>
         x_values,
         y_values,
     })
+}
+
+/// `f` of every cell's scene, in parallel, in index order `iy * nx + ix`.
+fn per_cell<T: Send>(
+    req: &GridRequest,
+    xs: &[f64],
+    ys: &[f64],
+    f: impl Fn(&SceneParams) -> T + Sync,
+) -> Vec<T> {
+    let nx = xs.len();
+    (0..nx * ys.len())
+        .into_par_iter()
+        .map(|i| f(&req.cell_params(xs[i % nx], ys[i / nx])))
+        .collect()
 }
 
 #[cfg(test)]

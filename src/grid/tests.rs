@@ -51,7 +51,12 @@ fn bit_identical_for_any_thread_count() {
         base: SceneParams::default(),
         x: GridAxis::log(GridParam::ForceN, 50.0, 10_000.0, 97),
         y: GridAxis::linear(GridParam::RadiusMm, 10.0, 30.0, 61),
-        quantities: vec![Quantity::Status, Quantity::ThetaJamDeg, Quantity::XJamMm],
+        quantities: vec![
+            Quantity::Status,
+            Quantity::ThetaJamDeg,
+            Quantity::XJamMm,
+            Quantity::XRigidMm,
+        ],
     };
     let run = |threads| {
         in_pool(threads, || {
@@ -77,6 +82,10 @@ fn bit_identical_for_any_thread_count() {
         assert_eq!(
             opt_bits(r1.theta_jam_deg.as_ref().unwrap()),
             opt_bits(r.theta_jam_deg.as_ref().unwrap())
+        );
+        assert_eq!(
+            opt_bits(r1.x_rigid_mm.as_ref().unwrap()),
+            opt_bits(r.x_rigid_mm.as_ref().unwrap())
         );
     }
 }
@@ -120,37 +129,70 @@ fn margin_without_theta_axis_is_refused() {
     assert!(msg.contains("mu_ground = -0.1"), "{msg}");
 }
 
-/// The hoisted kernel against `statics::margin_n`: |diff| <= 1e-12 (|F| + m g), worst case reported.
-#[test]
-fn hoisted_margin_matches_statics() {
-    let req = mu_theta(101, 89);
-    let g = evaluate(&req, &Statics).unwrap();
+/// The hoisted kernel of `req` against `statics::margin_n` cell by cell:
+/// |diff| <= 1e-12 (|F| + m g), worst case reported.
+fn assert_margin_matches_statics(req: &GridRequest) {
+    let g = evaluate(req, &Statics).unwrap();
     let m = g.margin_n.as_ref().unwrap();
+    let theta_on_x = req.x.param == GridParam::ThetaDeg;
     let mut worst = (0.0_f64, 0.0, 0.0);
-    for (iy, &t) in g.y_values.iter().enumerate() {
-        for (ix, &mu) in g.x_values.iter().enumerate() {
-            let p = req.base.with_mu(mu);
+    for (iy, &yv) in g.y_values.iter().enumerate() {
+        for (ix, &xv) in g.x_values.iter().enumerate() {
+            let p = req.cell_params(xv, yv);
+            let t = if theta_on_x { xv } else { yv };
             let d = (m[g.index(ix, iy)] - statics::margin_n(&p, t.to_radians())).abs();
             if d > worst.0 {
-                worst = (d, mu, t);
+                worst = (d, xv, yv);
             }
         }
     }
     let tol = 1e-12 * (req.base.force_n + req.base.weight_n());
     assert!(
         worst.0 <= tol,
-        "worst |diff| {} N at mu {}, theta {} deg",
+        "worst |diff| {} N at {} = {}, {} = {}",
         worst.0,
+        req.x.param.as_str(),
         worst.1,
+        req.y.param.as_str(),
         worst.2
     );
 }
 
+/// The oracle over mu (mu_ground = mu_palm), over mu_ground with mu_palm = 0.7 and over mu_palm
+/// with mu_ground = 0.25: a kernel that swapped the two frictions passes only the first. The
+/// mu_palm grid puts theta on x, the branch no chart uses.
+#[test]
+fn hoisted_margin_matches_statics() {
+    let theta = |n| GridAxis::log(GridParam::ThetaDeg, 10.0, 70.0, n);
+    assert_margin_matches_statics(&mu_theta(101, 89));
+    assert_margin_matches_statics(&GridRequest {
+        base: SceneParams {
+            mu_palm: 0.7,
+            ..SceneParams::default()
+        },
+        x: GridAxis::linear(GridParam::MuGround, 0.1, 0.9, 53),
+        y: theta(47),
+        quantities: vec![Quantity::MarginN],
+    });
+    assert_margin_matches_statics(&GridRequest {
+        base: SceneParams {
+            mu_ground: 0.25,
+            ..SceneParams::default()
+        },
+        x: theta(43),
+        y: GridAxis::linear(GridParam::MuPalm, 0.1, 0.9, 37),
+        quantities: vec![Quantity::MarginN],
+    });
+}
+
 proptest! {
-    /// The margin changes sign at the closed-form theta_jam: >= 0 just below, <= 0 just above.
+    /// The margin changes sign at the closed-form theta_jam: >= 0 just below, <= 0 just above
+    /// (unequal ground and palm frictions, so a kernel that swapped them fails).
     #[test]
-    fn margin_changes_sign_at_theta_jam(mu in 0.05f64..1.0, force in 20.0f64..5000.0) {
-        let p = SceneParams { force_n: force, ..SceneParams::default().with_mu(mu) };
+    fn margin_changes_sign_at_theta_jam(
+        mu_g in 0.05f64..1.0, mu_p in 0.0f64..1.0, force in 20.0f64..5000.0,
+    ) {
+        let p = SceneParams { force_n: force, mu_ground: mu_g, mu_palm: mu_p, ..SceneParams::default() };
         let s = statics::solve(&p);
         prop_assume!(s.status == JamStatus::Jams);
         let tj = s.theta_jam_deg.unwrap();
