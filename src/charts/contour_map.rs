@@ -326,10 +326,11 @@ impl ContourMap {
                 u
             };
             let s = format!(
-                "{} ≈ {} {}: x_jam within {pct} % of r/μ →",
+                "{} ≈ {} {}: x_jam within {pct} % of {} →",
                 param_symbol(xa.param),
                 style::fmt_num(value, 0),
-                param_unit(xa.param)
+                param_unit(xa.param),
+                self.rigid_limit_name()
             );
             axes::boxed_text(
                 root,
@@ -340,6 +341,20 @@ impl ContourMap {
             )?;
         }
         Ok(())
+    }
+
+    /// The F -> infinity limit of x_jam: r/μ where the two frictions are equal everywhere on the
+    /// map, r cot((α_g + α_p)/2) otherwise.
+    fn rigid_limit_name(&self) -> &'static str {
+        let axes = [self.spec.x_axis.param, self.spec.y_axis.param];
+        let one_mu = self.params.mu_ground == self.params.mu_palm
+            && !axes.contains(&GridParam::MuGround)
+            && !axes.contains(&GridParam::MuPalm);
+        if one_mu {
+            "r/μ"
+        } else {
+            "r·cot((α_g + α_p)/2)"
+        }
     }
 
     fn legend(&self) -> Vec<LegendEntry> {
@@ -355,7 +370,8 @@ impl ContourMap {
         }
         if let Some(p) = self.spec.settle_pct {
             let s = format!(
-                "x_jam within {p} % of its F → ∞ limit r/μ to the right: F no longer matters"
+                "x_jam within {p} % of its F → ∞ limit {} to the right: F no longer matters",
+                self.rigid_limit_name()
             );
             e.push(LegendEntry::new(Swatch::Line(LineKind::Dashed), s));
         }
