@@ -13,6 +13,7 @@
 //! height_px = 900
 //! [chart]                          # the chart kind and its own keys
 //! kind = "jam_map"                 # jam_map | sweep | contour_map | convergence | time_series | work_precision
+//!                                  # | vlocator_capacity | vlocator_optimum
 //! ```
 //!
 //! The `[chart]` keys of each kind are documented on [`JamMapSpec`], [`SweepSpec`],
@@ -28,6 +29,8 @@ use super::convergence::ConvergenceSpec;
 use super::jam_map::JamMapSpec;
 use super::sweep::SweepSpec;
 use super::time_series::TimeSeriesSpec;
+use super::vlocator_capacity::VlocatorCapacitySpec;
+use super::vlocator_optimum::VlocatorOptimumSpec;
 use super::work_precision::WorkPrecisionSpec;
 use crate::config::{Config, parse_toml};
 use crate::dynamics::DynamicsParams;
@@ -92,6 +95,10 @@ pub enum ChartSpec {
     /// Error of x_jam against cost per integrator, and the min-norm tolerance against its
     /// error (the accuracy study).
     WorkPrecision(WorkPrecisionSpec),
+    /// Holding capacity of a V-locator over included angle and load direction.
+    VlocatorCapacity(VlocatorCapacitySpec),
+    /// Optimum included angle of a V-locator against load direction and load.
+    VlocatorOptimum(VlocatorOptimumSpec),
 }
 
 /// A scene file as written.
@@ -181,6 +188,8 @@ pub fn load_scene(dir: &Path, name: &str) -> Result<Scene> {
         ChartSpec::Convergence(s) => s.validate()?,
         ChartSpec::TimeSeries(s) => s.validate()?,
         ChartSpec::WorkPrecision(s) => s.validate()?,
+        ChartSpec::VlocatorCapacity(s) => s.validate()?,
+        ChartSpec::VlocatorOptimum(s) => s.validate()?,
     }
     Ok(scene)
 }
