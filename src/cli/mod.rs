@@ -44,13 +44,16 @@ pub enum Command {
     /// mu = 0.45 ... 0.15, with the relative difference to the printed values and the known
     /// erratum of the mu = 0.30 row marked.
     Table(table::TableArgs),
-    /// Draw the design charts (scenes in charts/) as SVG, PNG and data.
+    /// Draw the design charts (built-in scenes or your own) as SVG, PNG and data.
     ///
-    /// Each scene charts/NAME.toml names its chart kind, parameters, axes and layers; render
-    /// writes DIR/NAME.svg, NAME.png and the data behind the chart (NAME.csv or .json), each
-    /// atomically (temporary file, then rename). The pictures are byte-identical for any thread
-    /// count: the font is embedded and the PNG carries no metadata.
+    /// Each scene names its chart kind, parameters, axes and layers (`jamchart scenes` lists the
+    /// built-in ones; charts/README.md documents the keys); render writes DIR/NAME.svg, NAME.png
+    /// and the data behind the chart (NAME.csv or .json), each atomically (temporary file, then
+    /// rename). The pictures are byte-identical for any thread count: the font is embedded and
+    /// the PNG carries no metadata.
     Render(render::RenderArgs),
+    /// List the scenes render draws: name, chart kind and title, one line each.
+    Scenes(render::ScenesArgs),
     /// Error against run time of the dynamics' integrators (work-precision study).
     ///
     /// For each integrator and tolerance: the error of x_jam against a reference computed by the
@@ -69,6 +72,7 @@ pub fn main() -> i32 {
         Command::Solve(a) => solve::run(a),
         Command::Table(a) => table::run(a),
         Command::Render(a) => render::run(a),
+        Command::Scenes(a) => render::list(a),
         Command::Accuracy(a) => accuracy::run(a),
     };
     match result {
