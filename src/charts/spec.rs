@@ -266,15 +266,22 @@ fn parse_scene(
         size: file.size,
         chart: file.chart,
     };
-    match &scene.chart {
-        ChartSpec::JamMap(s) => s.validate(&scene.params)?,
-        ChartSpec::Sweep(s) => s.validate(&scene.params)?,
-        ChartSpec::ContourMap(s) => s.validate(&scene.params)?,
-        ChartSpec::Convergence(s) => s.validate()?,
-        ChartSpec::TimeSeries(s) => s.validate()?,
-        ChartSpec::WorkPrecision(s) => s.validate()?,
-    }
+    scene.validate_chart()?;
     Ok(scene)
+}
+
+impl Scene {
+    /// Checks the chart's settings against the scene's parameters.
+    pub fn validate_chart(&self) -> Result<()> {
+        match &self.chart {
+            ChartSpec::JamMap(s) => s.validate(&self.params),
+            ChartSpec::Sweep(s) => s.validate(&self.params),
+            ChartSpec::ContourMap(s) => s.validate(&self.params),
+            ChartSpec::Convergence(s) => s.validate(),
+            ChartSpec::TimeSeries(s) => s.validate(),
+            ChartSpec::WorkPrecision(s) => s.validate(),
+        }
+    }
 }
 
 /// `base` with the keys of the override table of `[section]` replaced; unknown keys are refused.

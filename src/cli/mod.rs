@@ -7,6 +7,7 @@ mod dynamics;
 mod min_norm;
 pub mod render;
 mod solve;
+mod sweep;
 mod table;
 
 use std::io::Write;
@@ -52,6 +53,12 @@ pub enum Command {
     /// rename). The pictures are byte-identical for any thread count: the font is embedded and
     /// the PNG carries no metadata.
     Render(render::RenderArgs),
+    /// Draw x_jam and theta_jam against one or two parameters, without a scene file.
+    ///
+    /// One axis: both against it, with the F -> infinity limit (CSV, SVG, PNG). Two axes: a map
+    /// of x_jam over both (JSON, SVG, PNG). The other parameters come from the defaults (the
+    /// paper's), then --config FILE, then the flags. Closed-form statics.
+    Sweep(sweep::SweepArgs),
     /// List the scenes render draws: name, chart kind and title, one line each.
     Scenes(render::ScenesArgs),
     /// Error against run time of the dynamics' integrators (work-precision study).
@@ -73,6 +80,7 @@ pub fn main() -> i32 {
         Command::Table(a) => table::run(a),
         Command::Render(a) => render::run(a),
         Command::Scenes(a) => render::list(a),
+        Command::Sweep(a) => sweep::run(a),
         Command::Accuracy(a) => accuracy::run(a),
     };
     match result {
