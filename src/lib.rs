@@ -68,6 +68,7 @@ pub mod error;
 pub mod grid;
 pub mod minnorm;
 pub mod model;
+pub mod models;
 pub mod paper;
 pub mod statics;
 
