@@ -14,7 +14,8 @@ use crate::charts::sweep::{SweepPanel, SweepSpec};
 use crate::charts::sweep_layers::SweepLayer;
 use crate::charts::{self, ChartSpec, Scene, axis_label};
 use crate::error::Result;
-use crate::grid::{AxisScale, GridAxis, GridParam, ModelName};
+use crate::grid::{AxisScale, GridAxis, GridParam};
+use crate::models::ModelKind;
 
 /// Flags of `sweep`.
 #[derive(Debug, Clone, Args)]
@@ -119,7 +120,7 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
                 x_jam_levels_mm: Vec::new(),
                 theta_jam_levels_deg: Vec::new(),
                 settle_pct: None,
-                model: ModelName::Statics,
+                model: ModelKind::Statics,
             });
             let (px, py) = (x_axis.param.as_str(), y_axis.param.as_str());
             let title = format!(
