@@ -4,6 +4,7 @@
 mod accuracy;
 mod args;
 mod dynamics;
+mod guidance;
 mod min_norm;
 pub mod render;
 mod solve;
@@ -111,19 +112,28 @@ fn clap_exit(e: clap::Error) -> i32 {
             2
         }
         _ => {
-            let rendered = e.render().to_string();
-            let first = rendered.lines().next().unwrap_or("invalid arguments");
-            let first = first.strip_prefix("error: ").unwrap_or(first);
-            // Keep clap's list of accepted values on the one line: it says what to type instead.
-            let values = rendered
-                .lines()
-                .map(str::trim)
-                .find(|l| l.starts_with("[possible values:"))
-                .map_or(String::new(), |v| format!(" {v}"));
-            eprintln!("jamchart: {first}{values}; see 'jamchart --help'");
+            eprintln!("jamchart: {}", one_line(&e.render().to_string()));
             2
         }
     }
+}
+
+/// clap's usage error as one line, keeping what says what to type instead: the accepted values,
+/// the missing arguments and the "did you mean" tips (`tip: a similar argument exists: ...`).
+fn one_line(rendered: &str) -> String {
+    let mut lines = rendered.lines().map(str::trim);
+    let first = lines.next().unwrap_or("invalid arguments");
+    let mut text = first.strip_prefix("error: ").unwrap_or(first).to_string();
+    // "the following required arguments were not provided:" lists them on the next lines.
+    let listed = text.ends_with(':');
+    for line in lines.take_while(|l| !l.starts_with("Usage:")) {
+        if line.starts_with("[possible values:") || (listed && line.starts_with('<')) {
+            text = format!("{} {line}", text.trim_end_matches(':'));
+        } else if let Some(tip) = line.strip_prefix("tip: ") {
+            text = format!("{text}; {tip}");
+        }
+    }
+    format!("{text}; see 'jamchart --help'")
 }
 
 /// The error message, with the flag that sets a key named beside the key.

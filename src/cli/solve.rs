@@ -196,5 +196,8 @@ fn render_text(config: &Config, results: &[ModelRecord]) -> String {
             let _ = writeln!(s, "  took {:.1} ms", r.elapsed_s * 1e3);
         }
     }
+    if results.len() > 1 {
+        s.push_str(&super::guidance::guidance(config, results));
+    }
     s
 }
