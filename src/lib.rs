@@ -66,6 +66,7 @@ pub mod config;
 pub mod dynamics;
 pub mod error;
 pub mod grid;
+pub mod limits;
 pub mod minnorm;
 pub mod model;
 pub mod paper;

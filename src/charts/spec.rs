@@ -94,6 +94,16 @@ pub enum ChartSpec {
     WorkPrecision(WorkPrecisionSpec),
 }
 
+impl ChartSpec {
+    /// The extension of the data file behind this kind of chart: `json` for maps, `csv` else.
+    pub fn data_extension(&self) -> &'static str {
+        match self {
+            ChartSpec::JamMap(_) | ChartSpec::ContourMap(_) => "json",
+            _ => "csv",
+        }
+    }
+}
+
 /// A scene file as written.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]

@@ -8,7 +8,7 @@ use std::time::Instant;
 use clap::Args;
 use serde_json::{Map, Value, json};
 
-use super::args::Model;
+use super::args::{Model, parse_f64};
 use super::solve::ModelRecord;
 use crate::atomic::write_atomic;
 use crate::config::Config;
@@ -33,7 +33,7 @@ pub struct DynamicsArgs {
     /// Palm closing speed omega in deg/s [default: 30].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "DEG/S",
         help_heading = "Dynamics"
     )]
@@ -43,7 +43,7 @@ pub struct DynamicsArgs {
     /// The penetration at a force P is (P/k)^(1/e): about 60 um at 200 N with the defaults.
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "N/MM^E",
         help_heading = "Dynamics"
     )]
@@ -51,7 +51,7 @@ pub struct DynamicsArgs {
     /// IMPACT force exponent e, >= 1 [default: 2.2].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "E",
         help_heading = "Dynamics"
     )]
@@ -59,7 +59,7 @@ pub struct DynamicsArgs {
     /// IMPACT maximum damping c_max in N s/mm [default: 10].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "N*S/MM",
         help_heading = "Dynamics"
     )]
@@ -67,7 +67,7 @@ pub struct DynamicsArgs {
     /// Penetration in mm at which the damping reaches c_max [default: 0.01].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "MM",
         help_heading = "Dynamics"
     )]
@@ -75,7 +75,7 @@ pub struct DynamicsArgs {
     /// Static friction coefficient at both contacts [default: the dynamic mu].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "MU",
         help_heading = "Dynamics"
     )]
@@ -83,7 +83,7 @@ pub struct DynamicsArgs {
     /// Stiction transition velocity V_s in mm/s [default: 0.1].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "MM/S",
         help_heading = "Dynamics"
     )]
@@ -91,7 +91,7 @@ pub struct DynamicsArgs {
     /// Friction transition velocity V_d in mm/s, > V_s [default: 0.2].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "MM/S",
         help_heading = "Dynamics"
     )]
@@ -99,7 +99,7 @@ pub struct DynamicsArgs {
     /// Offset of the palm's face from the hinge line in mm (half the bar's thickness) [default: 0].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "MM",
         help_heading = "Dynamics"
     )]
@@ -112,7 +112,7 @@ pub struct DynamicsArgs {
     /// Looser than 1e-2 is always reported inaccurate.
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "RTOL",
         help_heading = "Dynamics"
     )]
@@ -120,7 +120,7 @@ pub struct DynamicsArgs {
     /// Absolute tolerance per step in rad, mm, mm/s, in (0, 1) [default: rtol].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "ATOL",
         help_heading = "Dynamics"
     )]
@@ -131,7 +131,7 @@ pub struct DynamicsArgs {
     /// Simulated time after the jam in s, for --series [default: 0].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "S",
         help_heading = "Dynamics"
     )]

@@ -69,10 +69,14 @@ pub fn run(a: &SolveArgs) -> Result<String> {
         }
     })?;
     let models = a.model.models();
-    if a.series.is_some() && !models.contains(&Model::Dynamics) {
-        return Err(Error::Unsupported(
-            "--series needs the dynamics: add --model dynamics".into(),
-        ));
+    if let Some(path) = &a.series {
+        if !models.contains(&Model::Dynamics) {
+            return Err(Error::Unsupported(
+                "--series needs the dynamics: add --model dynamics".into(),
+            ));
+        }
+        // Before the simulation runs: a path that will be refused is refused now.
+        crate::atomic::check_all([path.as_path()])?;
     }
     let results = models
         .iter()
