@@ -69,6 +69,7 @@ pub mod grid;
 pub mod limits;
 pub mod minnorm;
 pub mod model;
+pub mod models;
 pub mod paper;
 pub mod statics;
 

@@ -14,16 +14,16 @@ use serde_json::json;
 
 use super::axes::{self, DrawResult, Margins, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
+use super::models::Models;
 use super::spec::Scene;
 use super::style::{self, INK, LineKind};
 use super::{
     DataFile, axis_label, grid_lines, grid_polygons, param_symbol, param_unit, scene_subtitle,
 };
 use crate::error::{Error, Result};
-use crate::grid::{
-    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, ModelName, PointModel, Quantity,
-};
+use crate::grid::{self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, Quantity};
 use crate::model::SceneParams;
+use crate::models::ModelKind;
 
 /// `[chart]` keys of `kind = "contour_map"`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -45,7 +45,7 @@ pub struct ContourMapSpec {
     /// The model whose x_jam and theta_jam are contoured (default: statics; the settle line's
     /// limit r/mu is always the statics').
     #[serde(default)]
-    pub model: ModelName,
+    pub model: ModelKind,
 }
 
 impl ContourMapSpec {
@@ -143,8 +143,11 @@ fn dense(v: &[Option<f64>]) -> Vec<f64> {
 
 impl ContourMap {
     /// Evaluates the grid quantities the layers need.
-    pub fn compute(scene: &Scene, spec: &ContourMapSpec, model: &dyn PointModel) -> Result<Self> {
-        let grid = grid::evaluate(&spec.request(&scene.params), model)?;
+    pub fn compute(scene: &Scene, spec: &ContourMapSpec, models: &dyn Models) -> Result<Self> {
+        let model = spec.model.with(&scene.min_norm, &scene.dynamics);
+        let grid = grid::evaluate(&spec.request(&scene.params), |q| {
+            models.jam_point(&model, q)
+        })?;
         let gap_pct: Option<Vec<f64>> = match (&grid.x_jam_mm, &grid.x_rigid_mm) {
             (Some(x), Some(r)) => Some(
                 x.iter()

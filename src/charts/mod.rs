@@ -19,9 +19,9 @@
 //!   force drive): one [`sweep_layers::SweepLayer`] variant and its arm in
 //!   [`sweep_layers::series`], returning [`sweep::Series`] of markers; legend, panels, data file
 //!   and hashes follow.
-//! - A model over a map (jam map boundary and read-off, contour map): implement
-//!   [`crate::grid::PointModel`] and add a [`crate::grid::ModelName`] variant; scenes then say
-//!   `model = "min_norm"`.
+//! - A model over a map (jam map boundary and read-off, contour map): nothing to do here. Maps
+//!   name any model of the port ([`crate::models::ModelKind`]: `model = "min_norm"`) and call
+//!   it per cell through [`models::Models::solve`].
 //! - A new chart kind: a module with a spec struct, `compute`, `data` and a backend-generic
 //!   `draw` (x-y panels through [`xy::Figure`], as [`convergence`] and [`time_series`] do), a
 //!   [`ChartSpec`] variant, a [`Chart`] variant and a scene `charts/<name>.toml`.
@@ -134,15 +134,11 @@ impl Chart {
     /// [`Chart::compute`] with the min-norm and dynamics calls going through `models`.
     pub fn compute_with(scene: &Scene, models: &dyn models::Models) -> Result<Chart> {
         Ok(match &scene.chart {
-            ChartSpec::JamMap(s) => {
-                Chart::JamMap(jam_map::JamMap::compute(scene, s, s.model.point_model())?)
-            }
+            ChartSpec::JamMap(s) => Chart::JamMap(jam_map::JamMap::compute(scene, s, models)?),
             ChartSpec::Sweep(s) => Chart::Sweep(sweep::Sweep::compute(scene, s, models)?),
-            ChartSpec::ContourMap(s) => Chart::ContourMap(contour_map::ContourMap::compute(
-                scene,
-                s,
-                s.model.point_model(),
-            )?),
+            ChartSpec::ContourMap(s) => {
+                Chart::ContourMap(contour_map::ContourMap::compute(scene, s, models)?)
+            }
             ChartSpec::Convergence(s) => {
                 Chart::Convergence(convergence::Convergence::compute(scene, s, models)?)
             }
