@@ -27,7 +27,7 @@ pub enum Error {
 
     /// A request whose estimated memory or output exceeds its limit ([`crate::limits`]).
     #[error(
-        "{what} would take about {}, over the limit of {}: lower {key}",
+        "{what} would take about {}, over the limit of {} (set by {key})",
         crate::limits::human_bytes(*estimate_bytes),
         crate::limits::human_bytes(*limit_bytes)
     )]
@@ -53,6 +53,14 @@ pub enum Error {
          (replaced atomically), FIFOs, terminals and /dev/null: give another path"
     )]
     UnsafeOutput { path: PathBuf, what: String },
+
+    /// A chart's model failed, so the chart would have nothing to draw; nothing is written.
+    #[error("scene {scene}: the {model} failed: {reason}; no chart is drawn from it")]
+    ModelFailed {
+        scene: String,
+        model: &'static str,
+        reason: String,
+    },
 
     /// A chart could not be drawn or encoded (a plotters or PNG encoder failure).
     #[error("drawing scene {scene}: {message}")]

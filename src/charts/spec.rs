@@ -34,6 +34,7 @@ use crate::config::{
 };
 use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
+use crate::limits;
 use crate::minnorm::MinNormSettings;
 use crate::model::SceneParams;
 
@@ -194,7 +195,69 @@ pub fn load_scene(dir: &Path, name: &str) -> Result<Scene> {
         ChartSpec::TimeSeries(s) => s.validate()?,
         ChartSpec::WorkPrecision(s) => s.validate()?,
     }
+    check_size(&scene)?;
     Ok(scene)
+}
+
+/// The scene's counts against [`crate::limits`]: memory and output estimated from the grid
+/// cells, sweep points or series rows, and the lengths of its lists.
+fn check_size(scene: &Scene) -> Result<()> {
+    const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
+    let cells =
+        |x: &crate::grid::GridAxis, y: &crate::grid::GridAxis| x.count as f64 * y.count as f64;
+    match &scene.chart {
+        ChartSpec::JamMap(s) => {
+            limits::check_items(CELLS, cells(&s.x_axis, &s.y_axis), limits::JAM_MAP_CELL)
+        }
+        ChartSpec::ContourMap(s) => {
+            let levels = [
+                ("chart.x_jam_levels_mm", s.x_jam_levels_mm.len()),
+                ("chart.theta_jam_levels_deg", s.theta_jam_levels_deg.len()),
+            ];
+            for (key, n) in levels {
+                if n > limits::MAX_LEVELS {
+                    return Err(Error::invalid(
+                        key,
+                        format!("{n} levels"),
+                        format!("at most {} levels", limits::MAX_LEVELS),
+                    ));
+                }
+            }
+            limits::check_items(CELLS, cells(&s.x_axis, &s.y_axis), limits::CONTOUR_MAP_CELL)
+        }
+        ChartSpec::Sweep(s) => {
+            limits::check_items("chart.axis.count", s.axis.count as f64, limits::SWEEP_POINT)
+        }
+        ChartSpec::TimeSeries(s) => {
+            let rows = limits::series_rows(
+                scene.params.start_angle_deg,
+                scene.dynamics.omega_deg_s,
+                s.series_dt_s,
+            );
+            limits::check_items(
+                "chart.series_dt_s and dynamics.omega_deg_s",
+                rows,
+                limits::SERIES_ROW,
+            )
+        }
+        ChartSpec::WorkPrecision(s) => {
+            let lists = [
+                ("chart.tolerances", s.tolerances.len()),
+                ("chart.min_norm_tolerances", s.min_norm_tolerances.len()),
+            ];
+            for (key, n) in lists {
+                if n > limits::MAX_TOLERANCES {
+                    return Err(Error::invalid(
+                        key,
+                        format!("{n} tolerances"),
+                        format!("at most {} tolerances", limits::MAX_TOLERANCES),
+                    ));
+                }
+            }
+            Ok(())
+        }
+        ChartSpec::Convergence(_) => Ok(()),
+    }
 }
 
 /// `base` with the keys of the override table of `[section]` replaced; unknown keys are refused.

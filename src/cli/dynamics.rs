@@ -13,12 +13,12 @@ use super::solve::ModelRecord;
 use crate::atomic::write_atomic;
 use crate::config::Config;
 use crate::dynamics::jam::SeriesRow;
-use crate::dynamics::{self, Drive, Method};
+use crate::dynamics::{self, Drive, DynamicsSolution, Method};
 use crate::error::Result;
 use crate::model::JamStatus;
 
 /// Sampling interval of `--series` in s: 0.2 ms resolves the collapse at the jam (a few ms).
-const SERIES_DT_S: f64 = 2e-4;
+pub const SERIES_DT_S: f64 = 2e-4;
 
 /// Dynamics flags: each overrides the same key of the `[dynamics]` section.
 #[derive(Debug, Clone, Default, Args)]
@@ -215,6 +215,8 @@ pub fn record(config: &Config, series: Option<&Path>) -> Result<ModelRecord> {
     }
     if let Some(path) = series {
         details.insert("series".into(), json!(path.display().to_string()));
+        details.insert("series_rows".into(), json!(s.series.len()));
+        details.insert("series_end".into(), json!(series_end(config, &s)));
     }
     // The [dynamics] settings in force, so that the answer can be reproduced.
     details.insert("settings".into(), json!(config.dynamics));
@@ -226,6 +228,43 @@ pub fn record(config: &Config, series: Option<&Path>) -> Result<ModelRecord> {
         elapsed_s,
         details,
     })
+}
+
+/// Where the time series ends and why: the jam's confirmation, `after_jam_s` after the jam, the
+/// palm closing (theta = 0, before the time asked for), or the integrator giving up.
+fn series_end(config: &Config, s: &DynamicsSolution) -> String {
+    let t = s.simulated_s;
+    let closes_s = config.scene.start_angle_deg / config.dynamics.omega_deg_s;
+    let after = config.dynamics.after_jam_s;
+    let closed = t >= closes_s * (1.0 - 1e-9);
+    if let Some(f) = &s.failure {
+        return format!(
+            "stops at t = {t:.4} s: the integrator gave up at t = {:.4} s",
+            f.t_s
+        );
+    }
+    match s.t_jam_s {
+        Some(jam) if closed && jam + after > t * (1.0 + 1e-9) => format!(
+            "stops at t = {t:.4} s: the palm closed (theta = 0), {:.4} s after the jam instead of \
+             the {after} s asked for (--after-jam)",
+            t - jam
+        ),
+        Some(jam) if after > 0.0 => {
+            format!(
+                "stops at t = {t:.4} s: {:.4} s after the jam, as asked (--after-jam)",
+                t - jam
+            )
+        }
+        Some(_) => format!(
+            "stops at t = {t:.4} s: at the jam's confirmation (--after-jam S records S s more)"
+        ),
+        None if closed => format!("stops at t = {t:.4} s: the palm closed (theta = 0) with no jam"),
+        None if s.status == JamStatus::BeyondReach => format!(
+            "stops at t = {t:.4} s: the disc reached the palm's end ({} mm) with no jam",
+            config.scene.palm_length_mm
+        ),
+        None => format!("stops at t = {t:.4} s ({})", s.status),
+    }
 }
 
 /// The dynamics' own lines under the shared status lines of `solve`: jam time, trust, work.
@@ -258,6 +297,13 @@ pub fn render_details(s: &mut String, r: &ModelRecord) {
     }
     if let Some(c) = d.get("cross_check").and_then(Value::as_str) {
         let _ = writeln!(s, "  inaccurate: {c}");
+    }
+    if let (Some(path), Some(rows), Some(end)) = (
+        d.get("series").and_then(Value::as_str),
+        num("series_rows"),
+        d.get("series_end").and_then(Value::as_str),
+    ) {
+        let _ = writeln!(s, "  series: {rows} rows in {path}; it {end}");
     }
     if let Some(f) = d.get("failure").filter(|f| !f.is_null()) {
         let t = f.get("t_s").and_then(Value::as_f64).unwrap_or(f64::NAN);

@@ -75,8 +75,15 @@ pub fn run(a: &SolveArgs) -> Result<String> {
                 "--series needs the dynamics: add --model dynamics".into(),
             ));
         }
-        // Before the simulation runs: a path that will be refused is refused now.
+        // Before the simulation runs: a path that will be refused is refused now, and a series
+        // too long to hold is refused by its estimate.
         crate::atomic::check_all([path.as_path()])?;
+        let rows = crate::limits::series_rows(
+            config.scene.start_angle_deg,
+            config.dynamics.omega_deg_s,
+            dynamics::SERIES_DT_S,
+        );
+        crate::limits::check_items("--omega (omega_deg_s)", rows, crate::limits::SERIES_ROW)?;
     }
     let results = models
         .iter()
