@@ -131,10 +131,10 @@ pub fn human_bytes(b: u64) -> String {
         v /= 1024.0;
         i += 1;
     }
-    if i == 0 {
-        format!("{b} B")
-    } else {
-        format!("{v:.3} {}", units[i]).replace(".000 ", " ")
+    match i {
+        0 => format!("{b} B"),
+        _ if v.fract() == 0.0 => format!("{v:.0} {}", units[i]),
+        _ => format!("{v:.1} {}", units[i]),
     }
 }
 
