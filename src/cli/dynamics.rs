@@ -3,22 +3,17 @@
 
 use std::fmt::Write as _;
 use std::path::Path;
-use std::time::Instant;
 
 use clap::Args;
-use serde_json::{Map, Value, json};
+use serde::Serialize;
 
-use super::args::{Model, parse_f64};
-use super::solve::ModelRecord;
+use super::args::parse_f64;
 use crate::atomic::write_atomic;
 use crate::config::Config;
 use crate::dynamics::jam::SeriesRow;
-use crate::dynamics::{self, Drive, DynamicsSolution, Method};
+use crate::dynamics::{Drive, DynamicsParams, DynamicsSolution, Method};
 use crate::error::Result;
 use crate::model::JamStatus;
-
-/// Sampling interval of `--series` in s: 0.2 ms resolves the collapse at the jam (a few ms).
-pub const SERIES_DT_S: f64 = 2e-4;
 
 /// Dynamics flags: each overrides the same key of the `[dynamics]` section.
 #[derive(Debug, Clone, Default, Args)]
@@ -197,42 +192,42 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
     })
 }
 
-/// Simulates the scene; with `series`, also writes the time series there (atomically).
-pub fn record(config: &Config, series: Option<&Path>) -> Result<ModelRecord> {
-    let t0 = Instant::now();
-    let dt = series.map(|_| SERIES_DT_S);
-    let s = dynamics::simulate(&config.scene, &config.dynamics, dt)?;
-    let elapsed_s = t0.elapsed().as_secs_f64();
-    if let Some(path) = series {
-        write_atomic(path, series_csv(&s.series).as_bytes())?;
+/// The dynamics' own JSON keys in `solve`'s record: the solution's, the series file and the
+/// `[dynamics]` settings in force, so that the answer can be reproduced.
+#[derive(Debug, Serialize)]
+pub struct Record<'a> {
+    #[serde(flatten)]
+    solution: &'a DynamicsSolution,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    series: Option<String>,
+    /// Rows written to the series.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    series_rows: Option<usize>,
+    /// Where the series ends and why ([`series_end`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    series_end: Option<String>,
+    settings: &'a DynamicsParams,
+}
+
+/// The JSON keys of `s`, simulated with `config`'s `[dynamics]`, its series written to `series`.
+pub fn record<'a>(
+    s: &'a DynamicsSolution,
+    config: &'a Config,
+    series: Option<&Path>,
+) -> Record<'a> {
+    Record {
+        solution: s,
+        series: series.map(|p| p.display().to_string()),
+        series_rows: series.map(|_| s.series.len()),
+        series_end: series.map(|_| series_end(config, s)),
+        settings: &config.dynamics,
     }
-    let mut details = match serde_json::to_value(&s) {
-        Ok(Value::Object(m)) => m,
-        _ => Map::new(),
-    };
-    for k in ["status", "theta_jam_deg", "x_jam_mm"] {
-        details.shift_remove(k);
-    }
-    if let Some(path) = series {
-        details.insert("series".into(), json!(path.display().to_string()));
-        details.insert("series_rows".into(), json!(s.series.len()));
-        details.insert("series_end".into(), json!(series_end(config, &s)));
-    }
-    // The [dynamics] settings in force, so that the answer can be reproduced.
-    details.insert("settings".into(), json!(config.dynamics));
-    Ok(ModelRecord {
-        model: Model::Dynamics.name(),
-        status: s.status,
-        theta_jam_deg: s.theta_jam_deg,
-        x_jam_mm: s.x_jam_mm,
-        elapsed_s,
-        details,
-    })
 }
 
 /// Where the time series ends and why: the jam's confirmation, `after_jam_s` after the jam, the
-/// palm closing (theta = 0, before the time asked for), or the integrator giving up.
-fn series_end(config: &Config, s: &DynamicsSolution) -> String {
+/// palm closing (theta = 0, before the time asked for), the palm's end, or the integrator
+/// giving up.
+pub fn series_end(config: &Config, s: &DynamicsSolution) -> String {
     let t = s.simulated_s;
     let closes_s = config.scene.start_angle_deg / config.dynamics.omega_deg_s;
     let after = config.dynamics.after_jam_s;
@@ -249,16 +244,16 @@ fn series_end(config: &Config, s: &DynamicsSolution) -> String {
              the {after} s asked for (--after-jam)",
             t - jam
         ),
-        Some(jam) if after > 0.0 => {
-            format!(
-                "stops at t = {t:.4} s: {:.4} s after the jam, as asked (--after-jam)",
-                t - jam
-            )
-        }
+        Some(jam) if after > 0.0 => format!(
+            "stops at t = {t:.4} s: {:.4} s after the jam, as asked (--after-jam)",
+            t - jam
+        ),
         Some(_) => format!(
             "stops at t = {t:.4} s: at the jam's confirmation (--after-jam S records S s more)"
         ),
-        None if closed => format!("stops at t = {t:.4} s: the palm closed (theta = 0) with no jam"),
+        None if closed => {
+            format!("stops at t = {t:.4} s: the palm closed (theta = 0) with no jam")
+        }
         None if s.status == JamStatus::BeyondReach => format!(
             "stops at t = {t:.4} s: the disc reached the palm's end ({} mm) with no jam",
             config.scene.palm_length_mm
@@ -267,58 +262,70 @@ fn series_end(config: &Config, s: &DynamicsSolution) -> String {
     }
 }
 
-/// The dynamics' own lines under the shared status lines of `solve`: jam time, trust, work.
-pub fn render_details(s: &mut String, r: &ModelRecord) {
-    let d = &r.details;
-    let num = |k: &str| d.get(k).and_then(Value::as_f64);
-    let text = |k: &str| d.get(k).and_then(Value::as_str).unwrap_or("?").to_string();
-    if r.status == JamStatus::Inaccurate
-        && let (Some(t), Some(x)) = (r.theta_jam_deg, r.x_jam_mm)
+/// Writes the time series of `s` to `path` as CSV (atomically).
+pub fn write_series(s: &DynamicsSolution, path: &Path) -> Result<()> {
+    write_atomic(path, series_csv(&s.series).as_bytes())
+}
+
+/// The dynamics' own lines under the shared status lines of `solve`: jam time, trust, work,
+/// and where the series written to `series` ends and why.
+pub fn render_details(
+    s: &mut String,
+    d: &DynamicsSolution,
+    config: &Config,
+    series: Option<&Path>,
+) {
+    if d.status == JamStatus::Inaccurate
+        && let (Some(t), Some(x)) = (d.theta_jam_deg, d.x_jam_mm)
     {
         let _ = writeln!(s, "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm");
     }
-    if let Some(t) = num("t_jam_s") {
+    if let Some(t) = d.t_jam_s {
         let _ = writeln!(
             s,
             "  t_jam     = {t:.4} s     time of the jam from the start of the push"
         );
     }
-    if let Some(e) = num("x_jam_error_mm") {
+    if let Some(e) = d.x_jam_error_mm {
         let _ = writeln!(
             s,
             "  x_jam error estimate {e:.2e} mm (second run at a tenth of the tolerances)"
         );
     }
-    if let Some(x) = num("x_stiction_mm") {
+    if let Some(x) = d.x_stiction_mm {
         let _ = writeln!(
             s,
             "  ground contact enters stiction (slip < V_s) at x = {x:.3} mm"
         );
     }
-    if let Some(c) = d.get("cross_check").and_then(Value::as_str) {
+    if let Some(c) = &d.cross_check {
         let _ = writeln!(s, "  inaccurate: {c}");
     }
-    if let (Some(path), Some(rows), Some(end)) = (
-        d.get("series").and_then(Value::as_str),
-        num("series_rows"),
-        d.get("series_end").and_then(Value::as_str),
-    ) {
-        let _ = writeln!(s, "  series: {rows} rows in {path}; it {end}");
+    if let Some(path) = series {
+        let _ = writeln!(
+            s,
+            "  series: {} rows in {}; it {}",
+            d.series.len(),
+            path.display(),
+            series_end(config, d)
+        );
     }
-    if let Some(f) = d.get("failure").filter(|f| !f.is_null()) {
-        let t = f.get("t_s").and_then(Value::as_f64).unwrap_or(f64::NAN);
-        let why = f.get("reason").and_then(Value::as_str).unwrap_or("?");
-        let _ = writeln!(s, "  the integrator gave up at t = {t:.4} s: {why}");
+    if let Some(f) = &d.failure {
+        let _ = writeln!(
+            s,
+            "  the integrator gave up at t = {:.4} s: {}",
+            f.t_s, f.reason
+        );
     }
     let _ = writeln!(
         s,
         "  {} drive, {}: {} steps ({} rejected), {} rhs and {} Jacobian evaluations",
-        text("drive"),
-        text("method"),
-        num("steps").unwrap_or(0.0),
-        num("rejected_steps").unwrap_or(0.0),
-        num("rhs_evals").unwrap_or(0.0),
-        num("jacobian_evals").unwrap_or(0.0)
+        d.drive.as_str(),
+        d.method.as_str(),
+        d.steps,
+        d.rejected_steps,
+        d.rhs_evals,
+        d.jacobian_evals
     );
 }
 
