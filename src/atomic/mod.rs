@@ -70,13 +70,17 @@ fn create_parents(outputs: &[Output]) -> Result<Vec<PathBuf>> {
             if d.as_os_str().is_empty() {
                 continue;
             }
-            if let Err(e) = std::fs::create_dir(d) {
-                for c in created.iter().rev() {
-                    let _ = std::fs::remove_dir(c);
+            match std::fs::create_dir(d) {
+                Ok(()) => created.push(d.to_path_buf()),
+                // `a/b/..` reads as missing until `a/b` exists: nothing new to remove later.
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists && d.is_dir() => {}
+                Err(e) => {
+                    for c in created.iter().rev() {
+                        let _ = std::fs::remove_dir(c);
+                    }
+                    return Err(Error::io("create the directory", d, e));
                 }
-                return Err(Error::io("create the directory", d, e));
             }
-            created.push(d.to_path_buf());
         }
     }
     Ok(created)

@@ -147,6 +147,14 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
 
 pub fn run(a: &SweepArgs) -> Result<String> {
     let scene = scene(a)?;
+    // The name is a file name: a folder in it would write outside --out.
+    if scene.name.contains('/') || scene.name.starts_with('.') || scene.name.is_empty() {
+        return Err(crate::error::Error::invalid(
+            "--name",
+            &scene.name,
+            "a file name without folders or a leading dot; --out gives the folder",
+        ));
+    }
     let formats = a.format.into();
     // Every output path is checked before anything is computed.
     let planned = output_paths(&a.out, &scene.name, scene.chart.data_extension(), formats);
