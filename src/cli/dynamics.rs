@@ -13,7 +13,7 @@ use super::solve::ModelRecord;
 use crate::atomic::write_atomic;
 use crate::config::Config;
 use crate::dynamics::jam::SeriesRow;
-use crate::dynamics::{self, Drive, Method};
+use crate::dynamics::{self, CrossCheck, Drive, DynamicsParams, DynamicsSolution, Failure, Method};
 use crate::error::Result;
 use crate::model::JamStatus;
 
@@ -218,6 +218,17 @@ pub fn record(config: &Config, series: Option<&Path>) -> Result<ModelRecord> {
     }
     // The [dynamics] settings in force, so that the answer can be reproduced.
     details.insert("settings".into(), json!(config.dynamics));
+    let mut notes = Vec::new();
+    if let Some(c) = &s.cross_check {
+        notes.push(format!("{}: {c}", s.status));
+    }
+    if let Some(f) = &s.failure {
+        notes.push(format!("the integrator gave up: {f}"));
+    }
+    if let Some(a) = advice(&s, &config.dynamics) {
+        details.insert("advice".into(), json!(a));
+        notes.push(format!("advice: {a}"));
+    }
     Ok(ModelRecord {
         model: Model::Dynamics.name(),
         status: s.status,
@@ -225,6 +236,55 @@ pub fn record(config: &Config, series: Option<&Path>) -> Result<ModelRecord> {
         x_jam_mm: s.x_jam_mm,
         elapsed_s,
         details,
+        notes,
+    })
+}
+
+/// How many stiction transition velocities the palm must move the disc at for the regularised
+/// friction to behave as Coulomb's: below that a held disc creeps at a good part of the palm's
+/// speed, and tightening the tolerances changes nothing (V_s sets the error).
+const SPEED_PER_STICTION_VELOCITY: f64 = 20.0;
+
+/// What to do about a typed reason, in terms of the flags that act on it.
+fn advice(s: &DynamicsSolution, d: &DynamicsParams) -> Option<String> {
+    let tighten = || format!("tighten --rtol (now {:e}) and compare the answers", d.rtol);
+    if let Some(c) = s.cross_check {
+        return Some(match c {
+            CrossCheck::LooseTolerance { loosest, .. } => {
+                format!("set --rtol to {loosest} or tighter")
+            }
+            CrossCheck::HeldBelowSlidingPush {
+                geometric_speed_mm_s: v,
+                stiction_velocity_mm_s: vs,
+                ..
+            }
+            | CrossCheck::PastWedge {
+                geometric_speed_mm_s: v,
+                stiction_velocity_mm_s: vs,
+                ..
+            } if v < SPEED_PER_STICTION_VELOCITY * vs => format!(
+                "the palm is slow against the stiction transition velocity: lower \
+                 --stiction-velocity to {:.2e} mm/s or less (the tolerances do not set this \
+                 error)",
+                v / SPEED_PER_STICTION_VELOCITY
+            ),
+            CrossCheck::VerificationDisagrees { .. }
+            | CrossCheck::ErrorEstimate { .. }
+            | CrossCheck::PastWedge { .. }
+            | CrossCheck::StoppedBelowForceLimit { .. }
+            | CrossCheck::HeldBelowSlidingPush { .. } => tighten(),
+        });
+    }
+    s.failure.map(|f| match f {
+        Failure::StepLimit { steps, .. } => format!(
+            "raise max_steps in the [dynamics] section of --config (now {steps}), or use \
+             --method radau5, which takes far fewer steps on this stiff problem"
+        ),
+        Failure::StepSizeTooSmall { .. } => {
+            "use --method radau5 or a softer --stiffness: the contact is too stiff for the \
+             step controller"
+                .to_string()
+        }
     })
 }
 
@@ -256,13 +316,8 @@ pub fn render_details(s: &mut String, r: &ModelRecord) {
             "  ground contact enters stiction (slip < V_s) at x = {x:.3} mm"
         );
     }
-    if let Some(c) = d.get("cross_check").and_then(Value::as_str) {
-        let _ = writeln!(s, "  inaccurate: {c}");
-    }
-    if let Some(f) = d.get("failure").filter(|f| !f.is_null()) {
-        let t = f.get("t_s").and_then(Value::as_f64).unwrap_or(f64::NAN);
-        let why = f.get("reason").and_then(Value::as_str).unwrap_or("?");
-        let _ = writeln!(s, "  the integrator gave up at t = {t:.4} s: {why}");
+    for n in &r.notes {
+        let _ = writeln!(s, "  {n}");
     }
     let _ = writeln!(
         s,

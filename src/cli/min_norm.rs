@@ -74,6 +74,7 @@ pub fn record(config: &Config, trace: bool) -> Result<ModelRecord> {
         x_jam_mm: s.x_jam_mm,
         elapsed_s,
         details,
+        notes: Vec::new(),
     })
 }
 

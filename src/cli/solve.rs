@@ -59,6 +59,9 @@ pub struct ModelRecord {
     pub elapsed_s: f64,
     #[serde(flatten)]
     pub details: Map<String, Value>,
+    /// Lines of text the model's renderer prints, made from its typed result (not in JSON).
+    #[serde(skip)]
+    pub notes: Vec<String>,
 }
 
 pub fn run(a: &SolveArgs) -> Result<String> {
@@ -108,6 +111,7 @@ fn statics_record(config: &Config) -> ModelRecord {
         x_jam_mm: s.x_jam_mm,
         elapsed_s,
         details,
+        notes: Vec::new(),
     }
 }
 

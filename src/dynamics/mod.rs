@@ -62,10 +62,13 @@ pub mod jam;
 pub mod params;
 mod run;
 pub mod scene;
+mod verdict;
 
 use serde::Serialize;
 
+pub use integrators::Failure;
 pub use params::{Drive, DynamicsParams, Method};
+pub use verdict::CrossCheck;
 
 use crate::error::Result;
 use crate::model::{JamStatus, SceneParams};
@@ -81,15 +84,6 @@ pub(crate) const MAX_STEP_DEG: f64 = 1.0;
 /// Tolerances looser than this are never trusted: at rtol = 0.05-0.5 the answers were 58 % short
 /// to 574 % long, and some wrong ones passed every other check (see the module docs).
 pub(crate) const LOOSEST_RTOL: f64 = 1e-2;
-
-/// An integration that gave up.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Failure {
-    /// Simulated time in s where it stopped.
-    pub t_s: f64,
-    /// Why, e.g. "step limit of 2000000 reached".
-    pub reason: String,
-}
 
 /// The result of one simulation.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -124,7 +118,7 @@ pub struct DynamicsSolution {
     /// Jam candidates the disc recovered from.
     pub discarded_candidates: u32,
     /// Why the result is `inaccurate`, if it is.
-    pub cross_check: Option<String>,
+    pub cross_check: Option<CrossCheck>,
     /// Set when the integrator gave up (also after a confirmed jam, during the run-on).
     pub failure: Option<Failure>,
     /// Simulated time in s.
@@ -147,11 +141,10 @@ pub fn simulate(
     params.validate_scene(scene)?;
     let mut out = run::run_once(scene, params, series_dt_s);
     if params.rtol > LOOSEST_RTOL {
-        out.cross_check = Some(format!(
-            "rtol = {} is looser than {LOOSEST_RTOL}: no check can vouch for the answer; \
-             tighten --rtol",
-            params.rtol
-        ));
+        out.cross_check = Some(CrossCheck::LooseTolerance {
+            rtol: params.rtol,
+            loosest: LOOSEST_RTOL,
+        });
         out.status = JamStatus::Inaccurate;
         return Ok(out);
     }
@@ -172,19 +165,17 @@ pub fn simulate(
     out.rhs_evals += check.rhs_evals;
     out.jacobian_evals += check.jacobian_evals;
     let reason = match (out.x_jam_mm, check.x_jam_mm) {
-        _ if check.status != out.status => Some(format!(
-            "a second run at rtol = {:e} says {} instead of {}: tighten --rtol",
-            fine.rtol, check.status, out.status
-        )),
+        _ if check.status != out.status => Some(CrossCheck::VerificationDisagrees {
+            rtol: fine.rtol,
+            status: out.status,
+            check_status: check.status,
+        }),
         (Some(a), Some(b)) => {
             let e = (a - b).abs();
             out.x_jam_error_mm = Some(e);
-            (e > params.max_jam_error * b.abs()).then(|| {
-                format!(
-                    "x_jam moves by {e:.3e} mm (more than {:e} of it) when the tolerances are \
-                     divided by 10: tighten --rtol",
-                    params.max_jam_error
-                )
+            (e > params.max_jam_error * b.abs()).then_some(CrossCheck::ErrorEstimate {
+                error_mm: e,
+                allowed_rel: params.max_jam_error,
             })
         }
         _ => None,

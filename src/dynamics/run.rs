@@ -3,7 +3,9 @@
 use super::integrators::{Dopri5, Outcome, Radau5, Stats, Tolerances};
 use super::jam::{JamDetector, JamRule};
 use super::scene::Scene;
-use super::{Drive, DynamicsParams, DynamicsSolution, Failure, MAX_STEP_DEG, Method, WEDGE_MARGIN};
+use super::{
+    CrossCheck, Drive, DynamicsParams, DynamicsSolution, MAX_STEP_DEG, Method, WEDGE_MARGIN,
+};
 use crate::model::{JamStatus, SceneParams};
 
 /// One run at the given tolerances, without the verification run. Parameters must be valid.
@@ -52,13 +54,7 @@ fn conclude(
         .then(|| sys.touching_x(wedge))
         .filter(|x| x.is_finite());
     let (failure, simulated) = match &outcome {
-        Outcome::Failed { t, reason } => (
-            Some(Failure {
-                t_s: *t,
-                reason: reason.clone(),
-            }),
-            *t,
-        ),
+        Outcome::Failed(f) => (Some(*f), f.t_s()),
         Outcome::Stopped { t } => (None, *t),
         Outcome::Finished => (None, sys_end(scene, sys)),
     };
@@ -117,36 +113,37 @@ fn conclude(
     if let Some(xw) = x_wedge
         && jam.x > xw * (1.0 + WEDGE_MARGIN) + coast
     {
-        out.cross_check = Some(format!(
-            "x_jam = {:.4} mm lies beyond the self-locking limit {xw:.4} mm that no push can \
-             pass: the integration is not accurate enough; tighten --rtol",
-            jam.x
-        ));
+        out.cross_check = Some(CrossCheck::PastWedge {
+            x_jam_mm: jam.x,
+            x_wedge_mm: xw,
+            coast_mm: coast,
+            geometric_speed_mm_s: sys.geometric_speed(wedge),
+            stiction_velocity_mm_s: params.stiction_velocity_mm_s,
+        });
     }
     let stalled = det.push_after_jam >= (1.0 - 2.0 * params.force_band) * sys.normal_limit;
     if params.drive == Drive::Force && jam.theta > wedge + 0.1_f64.to_radians() && !stalled {
-        out.cross_check = Some(format!(
-            "the disc stopped at {:.3} deg while the drive's push stayed at {:.2} N, below its \
-             limit {:.2} N: the integration is not accurate enough; tighten --rtol",
-            jam.theta.to_degrees(),
-            det.push_after_jam,
-            sys.normal_limit
-        ));
+        out.cross_check = Some(CrossCheck::StoppedBelowForceLimit {
+            theta_deg: jam.theta.to_degrees(),
+            push_n: det.push_after_jam,
+            limit_n: sys.normal_limit,
+        });
     }
     if let Some((theta, push)) = det.at_confirmation {
         let needed = sliding_push_n(scene, params, theta);
         if push > 2.0 * needed {
-            out.cross_check = Some(format!(
-                "the disc stood still at {:.4} mm while the palm pushed with {push:.2} N at \
-                 {:.3} deg, more than twice the {needed:.2} N that slides it: the integration is \
-                 not accurate enough; tighten --rtol",
-                jam.x,
-                theta.to_degrees()
-            ));
+            out.cross_check = Some(CrossCheck::HeldBelowSlidingPush {
+                x_jam_mm: jam.x,
+                theta_deg: theta.to_degrees(),
+                push_n: push,
+                needed_n: needed,
+                geometric_speed_mm_s: sys.geometric_speed(jam.theta),
+                stiction_velocity_mm_s: params.stiction_velocity_mm_s,
+            });
         }
     }
-    if out.cross_check.is_some() {
-        out.status = JamStatus::Inaccurate;
+    if let Some(c) = &out.cross_check {
+        out.status = c.status();
     }
     out
 }
