@@ -1,7 +1,9 @@
 //! One integration of the scene to the jam, and its reading and quasi-static cross-checks.
 
+use super::integrators::Failure;
 use super::integrators::{Dopri5, Outcome, Radau5, Stats, Tolerances};
 use super::jam::{JamDetector, JamRule};
+use super::nonsmooth::{self, End};
 use super::scene::Scene;
 use super::{
     CrossCheck, Drive, DynamicsParams, DynamicsSolution, MAX_STEP_DEG, Method, WEDGE_MARGIN,
@@ -14,6 +16,9 @@ pub(super) fn run_once(
     params: &DynamicsParams,
     series_dt_s: Option<f64>,
 ) -> DynamicsSolution {
+    if params.method == Method::Nonsmooth {
+        return run_nonsmooth(scene, params, series_dt_s);
+    }
     let sys = Scene::new(scene, params);
     let theta0 = scene.start_angle_deg.to_radians();
     let mut y = vec![theta0, sys.touching_x(theta0), 0.0];
@@ -37,6 +42,7 @@ pub(super) fn run_once(
     let (outcome, stats) = match params.method {
         Method::Radau5 => Radau5.integrate(&sys, 0.0, &mut y, t_end, &tol, &mut det),
         Method::Dopri5 => Dopri5.integrate(&sys, 0.0, &mut y, t_end, &tol, &mut det),
+        Method::Nonsmooth => unreachable!("dispatched above"),
     };
     conclude(scene, params, &sys, det, outcome, stats)
 }
@@ -77,6 +83,8 @@ fn conclude(
         x_jam_error_mm: None,
         failure,
         simulated_s: simulated,
+        lock_up: None,
+        disc_motion: None,
         series: det.series,
     };
     if det.beyond_reach.is_some() {
@@ -161,6 +169,78 @@ fn sliding_push_n(scene: &SceneParams, params: &DynamicsParams, theta: f64) -> f
     } else {
         f64::INFINITY
     }
+}
+
+/// One nonsmooth run read as a solution: a lock-up (motion drive) or the disc and palm at rest
+/// (force drive) is the jam.
+fn run_nonsmooth(
+    scene: &SceneParams,
+    params: &DynamicsParams,
+    series_dt_s: Option<f64>,
+) -> DynamicsSolution {
+    let sys = Scene::new(scene, params);
+    let wedge = scene.alpha_ground() + scene.alpha_palm();
+    let x_wedge = (wedge > 0.0)
+        .then(|| sys.touching_x(wedge))
+        .filter(|x| x.is_finite());
+    let run = nonsmooth::run(scene, params, series_dt_s);
+    let mut out = DynamicsSolution {
+        status: JamStatus::Jams,
+        theta_jam_deg: None,
+        x_jam_mm: None,
+        t_jam_s: None,
+        x_stiction_mm: None,
+        t_stiction_s: None,
+        x_wedge_mm: x_wedge,
+        method: params.method,
+        drive: params.drive,
+        steps: run.steps,
+        rejected_steps: 0,
+        rhs_evals: run.mode_solves,
+        jacobian_evals: 0,
+        x_jam_error_mm: None,
+        discarded_candidates: 0,
+        cross_check: None,
+        failure: None,
+        simulated_s: run.simulated_s,
+        lock_up: None,
+        disc_motion: Some(run.tally),
+        series: run.series,
+    };
+    let (t, theta, x) = match run.end {
+        End::LockUp(l) => {
+            out.lock_up = Some(l);
+            (l.t_s, l.theta_deg.to_radians(), l.x_mm)
+        }
+        End::AtRest { t, theta, x } => (t, theta, x),
+        End::BeyondReach { .. } => {
+            out.status = JamStatus::BeyondReach;
+            return out;
+        }
+        End::PalmClosed => {
+            out.status = JamStatus::NeverJams;
+            return out;
+        }
+        End::NoSolution { t } | End::StepLimit { t } => {
+            out.failure = Some(match run.end {
+                End::StepLimit { .. } => Failure::StepLimit {
+                    t_s: t,
+                    steps: params.max_steps,
+                },
+                _ => Failure::NoConsistentContact { t_s: t },
+            });
+            out.status = JamStatus::IntegratorFailed;
+            return out;
+        }
+    };
+    out.theta_jam_deg = Some(theta.to_degrees());
+    out.x_jam_mm = Some(x);
+    out.t_jam_s = Some(t);
+    // Held where it started: the jam is at the start (as the regularised model's "never armed").
+    if !run.moved {
+        out.status = JamStatus::JammedAtStart;
+    }
+    out
 }
 
 fn sys_end(scene: &SceneParams, sys: &Scene) -> f64 {

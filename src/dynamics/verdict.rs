@@ -16,16 +16,18 @@ pub enum CrossCheck {
     /// The relative tolerance `rtol` is looser than `loosest`, beyond which no check can vouch
     /// for the answer.
     LooseTolerance { rtol: f64, loosest: f64 },
-    /// A second run at the tighter relative tolerance `rtol` ended with `check_status` instead
-    /// of `status`.
+    /// A second run (`check`) ended with `check_status` instead of `status`.
     VerificationDisagrees {
-        rtol: f64,
+        check: Refinement,
         status: JamStatus,
         check_status: JamStatus,
     },
-    /// x_jam moved by `error_mm` (more than `allowed_rel` of x_jam) when the tolerances were
-    /// divided by 10.
-    ErrorEstimate { error_mm: f64, allowed_rel: f64 },
+    /// x_jam moved by `error_mm` (more than `allowed_rel` of x_jam) in the second run `check`.
+    ErrorEstimate {
+        error_mm: f64,
+        allowed_rel: f64,
+        check: Refinement,
+    },
     /// The jam at `x_jam_mm` lies beyond the self-locking limit `x_wedge_mm` (plus the disc's
     /// coasting distance `coast_mm` and the contact's give), which no push can pass. The palm
     /// drives the disc at `geometric_speed_mm_s` at the wedge, against the stiction transition
@@ -60,6 +62,28 @@ pub enum CrossCheck {
     },
 }
 
+/// The second run that checks a simulation.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Refinement {
+    /// RADAU5 or DOPRI5 at a tenth of the tolerances: this relative tolerance.
+    Tolerance { rtol: f64 },
+    /// The nonsmooth method at twice the step (a first-order method: the difference estimates
+    /// the error of the finer run): this palm turn per step in deg.
+    Step { step_deg: f64 },
+}
+
+impl std::fmt::Display for Refinement {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            Refinement::Tolerance { rtol } => write!(f, "a second run at rtol = {rtol:e}"),
+            Refinement::Step { step_deg } => {
+                write!(f, "a second run at a step of {step_deg:e} deg of palm turn")
+            }
+        }
+    }
+}
+
 impl CrossCheck {
     /// The status an answer with this reason gets.
     pub fn status(&self) -> JamStatus {
@@ -75,20 +99,17 @@ impl std::fmt::Display for CrossCheck {
                 "rtol = {rtol} is looser than {loosest}: no check can vouch for the answer"
             ),
             CrossCheck::VerificationDisagrees {
-                rtol,
+                check,
                 status,
                 check_status,
-            } => write!(
-                f,
-                "a second run at rtol = {rtol:e} says {check_status} instead of {status}"
-            ),
+            } => write!(f, "{check} says {check_status} instead of {status}"),
             CrossCheck::ErrorEstimate {
                 error_mm,
                 allowed_rel,
+                check,
             } => write!(
                 f,
-                "x_jam moves by {error_mm:.3e} mm (more than {allowed_rel:e} of it) when the \
-                 tolerances are divided by 10"
+                "x_jam moves by {error_mm:.3e} mm (more than {allowed_rel:e} of it) in {check}"
             ),
             CrossCheck::PastWedge {
                 x_jam_mm,

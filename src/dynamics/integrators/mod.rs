@@ -81,13 +81,18 @@ pub enum Failure {
     /// The step controller asked for a step of `h_s` s (or NaN) at `t_s`, too small to advance
     /// the time in floating point.
     StepSizeTooSmall { t_s: f64, h_s: f64 },
+    /// The nonsmooth method found no contact impulses that obey the contact laws at `t_s`
+    /// although the drive could give way.
+    NoConsistentContact { t_s: f64 },
 }
 
 impl Failure {
     /// Simulated time in s where the integration stopped.
     pub fn t_s(&self) -> f64 {
         match *self {
-            Failure::StepLimit { t_s, .. } | Failure::StepSizeTooSmall { t_s, .. } => t_s,
+            Failure::StepLimit { t_s, .. }
+            | Failure::StepSizeTooSmall { t_s, .. }
+            | Failure::NoConsistentContact { t_s } => t_s,
         }
     }
 }
@@ -101,6 +106,10 @@ impl std::fmt::Display for Failure {
             Failure::StepSizeTooSmall { t_s, h_s } => {
                 write!(f, "step size {h_s:.3e} s too small at t = {t_s:.4} s")
             }
+            Failure::NoConsistentContact { t_s } => write!(
+                f,
+                "no contact impulses obey the contact laws at t = {t_s:.4} s"
+            ),
         }
     }
 }
