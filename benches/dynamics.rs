@@ -5,7 +5,7 @@
 //! (and stays so at the two next tighter rungs) is timed: the median of 21 runs, without and
 //! with the verification run that `solve` does by default. Run: `cargo bench --bench dynamics`.
 
-use std::time::Instant;
+mod common;
 
 use jamchart::JamStatus;
 use jamchart::dynamics::{DynamicsParams, Method, simulate};
@@ -23,15 +23,9 @@ fn x_jam(scene: &SceneParams, p: &DynamicsParams) -> Option<f64> {
 }
 
 fn median_ms(scene: &SceneParams, p: &DynamicsParams) -> f64 {
-    let mut t: Vec<f64> = (0..RUNS)
-        .map(|_| {
-            let t0 = Instant::now();
-            std::hint::black_box(simulate(scene, p, None).ok());
-            t0.elapsed().as_secs_f64() * 1e3
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[RUNS / 2]
+    1e3 * common::median_s(RUNS, || {
+        std::hint::black_box(simulate(scene, p, None).ok());
+    })
 }
 
 fn main() {

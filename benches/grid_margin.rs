@@ -3,22 +3,20 @@
 //! `cargo bench --bench grid_margin`; prints the median of 9 runs for the default rayon pool
 //! (all cores) and for one thread. Goal (issue 5): >= 100 million points/s on 2 cores.
 
+mod common;
+
 use std::time::Instant;
 
+use common::median;
 use jamchart::SceneParams;
-use jamchart::grid::{self, GridAxis, GridParam, GridRequest, Quantity, Statics};
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
+use jamchart::grid::{self, GridAxis, GridParam, GridRequest, Quantity, statics_point};
 
 fn measure(req: &GridRequest, runs: usize) -> f64 {
     let cells = (req.x.count * req.y.count) as f64;
     let rates = (0..runs)
         .map(|_| {
             let t0 = Instant::now();
-            let g = grid::evaluate(req, &Statics).expect("valid grid");
+            let g = grid::evaluate(req, |p| Ok(statics_point(p))).expect("valid grid");
             let dt = t0.elapsed().as_secs_f64();
             std::hint::black_box(g);
             cells / dt
@@ -48,7 +46,7 @@ fn main() {
     for n in [4001, 1001] {
         let req = request(n);
         // One warm-up run to start the pool and settle the allocator.
-        let _ = grid::evaluate(&req, &Statics);
+        let _ = grid::evaluate(&req, |p| Ok(statics_point(p)));
         let all = measure(&req, 9);
         let one = pool.install(|| measure(&req, 9));
         println!(

@@ -4,7 +4,7 @@
 //! Run: `cargo bench --bench minnorm`. Prints medians of 7 runs. Goals (issue 3): >= 20,000
 //! solves/s across both cores; Table 1 in a few ms.
 
-use std::time::Instant;
+mod common;
 
 use jamchart::minnorm::{
     Formulation, HoldStatus, MinNormSettings, QpSettings, palm, palm_problem, solve,
@@ -20,22 +20,9 @@ mod random_planar;
 
 const RUNS: usize = 7;
 
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
-
 /// Median seconds of `f` over RUNS runs.
-fn time(mut f: impl FnMut()) -> f64 {
-    median(
-        (0..RUNS)
-            .map(|_| {
-                let t0 = Instant::now();
-                f();
-                t0.elapsed().as_secs_f64()
-            })
-            .collect(),
-    )
+fn time(f: impl FnMut()) -> f64 {
+    common::median_s(RUNS, f)
 }
 
 /// Palm problems at angles across 5..90 deg for mu in 0.15..0.45: what a grid of cells asks.

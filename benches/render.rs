@@ -4,14 +4,13 @@
 //! and prints the medians. Goals (issue 5): fig3 at least 20x faster than the 2.7 s numpy +
 //! matplotlib script (< 135 ms), all scenes within about 2 s.
 
+mod common;
+
+use common::median;
+
 use std::path::Path;
 use std::process::Command;
 use std::time::Instant;
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
 
 fn time_render(scenes: &[&str], runs: usize) -> f64 {
     let out = tempfile::tempdir().expect("temp dir");

@@ -160,7 +160,10 @@ pub fn palm_angle_at(radius_mm: f64, x_mm: f64) -> f64 {
 pub enum JamStatus {
     /// theta_jam <= 0: both frictions are zero and the disc slides to the hinge's far side.
     NeverJams,
-    /// The disc is held already at the start angle, or the push can never move it.
+    /// The push is too weak ever to move the disc: F <= m g sin(atan mu_ground), the least push
+    /// that slides it (the palm's push must overcome the ground friction it adds itself).
+    TooWeak,
+    /// The disc is held already at the start angle: it jams as soon as the palm touches it.
     JammedAtStart,
     /// The jam point lies beyond the palm's end, so the palm loses the disc first.
     BeyondReach,
@@ -171,6 +174,9 @@ pub enum JamStatus {
     Inaccurate,
     /// A simulation's integrator gave up before the jam (the time and reason are reported).
     IntegratorFailed,
+    /// The scene lies outside what this model represents (a typed reason says why); the other
+    /// models may still answer it.
+    OutsideModel,
 }
 
 impl JamStatus {
@@ -178,11 +184,13 @@ impl JamStatus {
     pub fn as_str(self) -> &'static str {
         match self {
             JamStatus::NeverJams => "never_jams",
+            JamStatus::TooWeak => "too_weak",
             JamStatus::JammedAtStart => "jammed_at_start",
             JamStatus::BeyondReach => "beyond_reach",
             JamStatus::Jams => "jams",
             JamStatus::Inaccurate => "inaccurate",
             JamStatus::IntegratorFailed => "integrator_failed",
+            JamStatus::OutsideModel => "outside_model",
         }
     }
 }
@@ -199,7 +207,7 @@ mod tests {
 
     #[test]
     fn equal_tangents_eq2_simplifies() {
-        // Eq. 2 as printed: r(1 + cos t)/tan t + r sin t; ERRATA says it equals r cot(t/2).
+        // Eq. 2 as printed: r(1 + cos t)/tan t + r sin t; the crate docs say it equals r cot(t/2).
         for deg in [10.0_f64, 30.0, 44.646, 60.0, 89.0, 120.0] {
             let t = deg.to_radians();
             let r = 10.0;
@@ -218,11 +226,13 @@ mod tests {
         use JamStatus::*;
         for s in [
             NeverJams,
+            TooWeak,
             JammedAtStart,
             BeyondReach,
             Jams,
             Inaccurate,
             IntegratorFailed,
+            OutsideModel,
         ] {
             assert_eq!(serde_json::to_value(s).unwrap(), s.as_str(), "{s:?}");
         }

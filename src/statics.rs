@@ -18,6 +18,8 @@
 //! theta_jam = alpha_g + alpha_p + asin(m g sin(alpha_g) / F),   x_jam = r cot(theta_jam / 2).
 //! ```
 
+use std::f64::consts::FRAC_PI_2;
+
 use serde::Serialize;
 
 use crate::model::{JamStatus, SceneParams, disc_position_mm};
@@ -57,12 +59,16 @@ pub fn margin_n(p: &SceneParams, theta: f64) -> f64 {
 /// The closed-form answer for one push.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct StaticsSolution {
-    /// Outcome, decided in the order never_jams, jammed_at_start, beyond_reach, jams.
+    /// Outcome, decided in the order beyond_reach (the disc starts past the palm's end),
+    /// never_jams, too_weak, jammed_at_start, beyond_reach (the jam lies past it), jams.
+    #[serde(skip)] // shared by every model: the record carries it
     pub status: JamStatus,
     /// Palm angle at the jam in degrees (the start angle if jammed at start; None if it never jams
     /// or the jam is beyond reach).
+    #[serde(skip)] // shared by every model: the record carries it
     pub theta_jam_deg: Option<f64>,
     /// Disc position at the jam in mm, r cot(theta_jam/2) (None as for `theta_jam_deg`).
+    #[serde(skip)] // shared by every model: the record carries it
     pub x_jam_mm: Option<f64>,
     /// The F -> infinity limit of theta_jam in degrees, alpha_g + alpha_p: what a palm driven by
     /// prescribed motion reaches (the classic self-locking wedge).
@@ -115,9 +121,21 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
         lifts_off,
     };
 
+    // A disc that starts beyond the palm's end is never touched, whatever the friction.
+    if disc_position_mm(p.radius_mm, start) > p.palm_length_mm {
+        out.status = JamStatus::BeyondReach;
+        return out;
+    }
     let theta_jam = theta_jam_rad(p);
     if theta_jam <= 0.0 {
         out.status = JamStatus::NeverJams;
+        return out;
+    }
+    // Too weak: no angle slides the disc, not even 90 deg + alpha_g + alpha_p where the push
+    // slides it best. When that angle lies past 180 deg (mu_g mu_p >= 1) the wedge self-locks
+    // at every palm angle whatever the push, and the disc is jammed at the start instead.
+    if theta_jam.is_infinite() && p.alpha_ground() + p.alpha_palm() < FRAC_PI_2 {
+        out.status = JamStatus::TooWeak;
         return out;
     }
     // The margin is checked at the start as well: with a heavy disc and a start near 180 deg the
@@ -153,13 +171,49 @@ fn finite_or_none(v: f64) -> Option<f64> {
     v.is_finite().then_some(v)
 }
 
+/// The least push in N that can slide the disc: m g sin(atan mu_ground). The palm's push F is
+/// most effective at theta = 90 deg + alpha_g + alpha_p, where the corrected Eq. 1 margin is
+/// mu_g m g - F / cos(alpha_g); it slides the disc there iff F > m g sin(alpha_g).
+pub fn least_push_n(p: &SceneParams) -> f64 {
+    p.weight_n() * p.alpha_ground().sin()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    /// Regression: a push too weak ever to move the disc was reported `jammed_at_start`, the
+    /// same as a disc that jams as soon as the palm touches it.
+    #[test]
+    fn a_push_too_weak_to_move_the_disc_is_too_weak_not_jammed() {
+        let p = SceneParams::default();
+        let least = least_push_n(&p);
+        assert!((least - 9.806 * 0.4_f64.atan().sin()).abs() < 1e-12);
+        for (f, want) in [
+            (0.999 * least, JamStatus::TooWeak),
+            (1.001 * least, JamStatus::JammedAtStart),
+        ] {
+            let s = solve(&SceneParams { force_n: f, ..p });
+            assert_eq!(s.status, want, "F = {f}");
+        }
+    }
+
+    /// Regression: a disc starting past the palm's end (start 1 deg: x = 1145.9 mm on a
+    /// 150 mm palm) was `jammed_at_start` at x = 1145.887 mm: the palm never touches it.
+    #[test]
+    fn a_disc_starting_past_the_palms_end_is_beyond_reach() {
+        for mu in [0.0, 0.4, 5.0] {
+            let p = SceneParams {
+                start_angle_deg: 1.0,
+                ..SceneParams::default().with_mu(mu)
+            };
+            assert_eq!(solve(&p).status, JamStatus::BeyondReach, "mu = {mu}");
+        }
+    }
+
     #[test]
     fn errata_worked_example() {
-        // ERRATA.md: m = 1 kg, g = 9.806, r = 10 mm, F = 200 N, mu = 0.4.
+        // The crate docs' corrected Eq. 1 example: m = 1 kg, g = 9.806, r = 10 mm, F = 200 N, mu = 0.4.
         let s = solve(&SceneParams::default());
         assert_eq!(s.status, JamStatus::Jams);
         assert!((s.theta_jam_deg.unwrap() - 44.646).abs() < 5e-4);
@@ -196,8 +250,15 @@ mod tests {
             ..Default::default()
         };
         let s = solve(&heavy);
+        assert_eq!(s.status, JamStatus::TooWeak);
+        assert_eq!(s.theta_jam_deg, None);
+        // Held at the start, but a push that could slide it later: jammed at the start.
+        let early = SceneParams {
+            start_angle_deg: 40.0,
+            ..Default::default()
+        };
+        let s = solve(&early);
         assert_eq!(s.status, JamStatus::JammedAtStart);
-        assert_eq!(s.theta_jam_deg, Some(90.0));
-        assert!((s.x_jam_mm.unwrap() - 10.0).abs() < 1e-12);
+        assert_eq!(s.theta_jam_deg, Some(40.0));
     }
 }

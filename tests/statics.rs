@@ -39,7 +39,7 @@ fn table1_corrected_matches_golden_to_1e9() {
 
 #[test]
 fn paper_table1_is_our_theta_truncated_and_x_of_that_theta() {
-    // ERRATA: the printed theta is the closed form to 0.1 deg (we find: truncated, not rounded) and
+    // Corrections to the paper (crate docs): the printed theta is the closed form to 0.1 deg (we find: truncated, not rounded) and
     // the printed x is r cot(theta/2) of it; the mu = 0.30 row's x is the known erratum.
     for [mu, theta, _, paper_theta, paper_x] in golden_table1() {
         assert!(
@@ -146,9 +146,10 @@ fn statuses_in_their_order() {
     let s = statics::solve(&d.with_mu(0.01));
     assert_eq!(s.status, JamStatus::BeyondReach);
     assert_eq!((s.theta_jam_deg, s.x_jam_mm), (None, None));
-    // A push too weak to move the disc at all: m g sin(alpha)/F >= 1.
+    // A push too weak to move the disc at all: m g sin(alpha)/F >= 1 (its own status since
+    // issue 13; it was jammed_at_start, indistinguishable from a disc that jams at once).
     let s = statics::solve(&SceneParams { force_n: 1.0, ..d });
-    assert_eq!(s.status, JamStatus::JammedAtStart);
+    assert_eq!(s.status, JamStatus::TooWeak);
 }
 
 #[test]

@@ -17,6 +17,7 @@ use super::{DataFile, scene_subtitle_with};
 use crate::error::{Error, Result};
 use crate::grid::AxisScale;
 use crate::minnorm::{HoldStatus, TracePoint};
+use crate::models::ModelSpec;
 
 /// `[chart]` keys of `kind = "convergence"`.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
@@ -59,7 +60,7 @@ impl Convergence {
         let (theta_deg, at_what) = match spec.theta_deg {
             Some(t) => (t, "the scene's angle".to_string()),
             None => {
-                let sol = models.min_norm(p, s)?;
+                let sol = models.solve(&ModelSpec::MinNorm(*s), p)?;
                 match sol.theta_jam_deg {
                     Some(t) => (t, "θ_jam".to_string()),
                     None => (p.start_angle_deg, format!("the start ({})", sol.status)),

@@ -15,15 +15,16 @@ use serde_json::json;
 
 use super::axes::{self, Chart, DrawResult, Margins, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
+use super::models::Models;
 use super::spec::Scene;
 use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
 use super::{DataFile, axis_label, grid_polygons, param_symbol, scene_subtitle};
 use crate::error::{Error, Result};
 use crate::grid::{
-    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, ModelName, PointModel,
-    Quantity,
+    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, Quantity,
 };
 use crate::model::{SceneParams, disc_position_mm, palm_angle_at};
+use crate::models::ModelKind;
 
 /// What a jam map draws (`layers`, default all).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -53,7 +54,7 @@ pub struct JamMapSpec {
     /// The model whose jam points are drawn (default: statics; the margin of a jam map's
     /// regions is always the statics').
     #[serde(default)]
-    pub model: ModelName,
+    pub model: ModelKind,
 }
 
 fn all_layers() -> Vec<JamMapLayer> {
@@ -114,10 +115,12 @@ pub struct JamMap {
 
 impl JamMap {
     /// Computes what the layers of `spec` need, and nothing else.
-    pub fn compute(scene: &Scene, spec: &JamMapSpec, model: &dyn PointModel) -> Result<Self> {
+    pub fn compute(scene: &Scene, spec: &JamMapSpec, models: &dyn Models) -> Result<Self> {
         let p = scene.params;
+        let model = spec.model.with(&scene.min_norm, &scene.dynamics);
+        let jam_point = |q: &SceneParams| models.jam_point(&model, q);
         let grid = match spec.has(JamMapLayer::Regions) {
-            true => Some(grid::evaluate(&spec.request(&p), model)?),
+            true => Some(grid::evaluate(&spec.request(&p), jam_point)?),
             false => None,
         };
         let jam_rings = grid
@@ -126,18 +129,17 @@ impl JamMap {
             .unwrap_or_default();
         let param = spec.x_axis.param;
         let boundary = match spec.has(JamMapLayer::Boundary) {
-            true => spec
-                .x_axis
-                .values()
-                .into_iter()
-                .map(|v| (v, model.jam_point(&param.apply(p, v))))
-                .collect(),
+            true => {
+                let xs = spec.x_axis.values();
+                let points = grid::at_values(&p, param, &xs, jam_point)?;
+                xs.into_iter().zip(points).collect()
+            }
             false => Vec::new(),
         };
-        let read_off = spec
-            .has(JamMapLayer::ReadOff)
-            .then(|| param.get(&p).map(|v| (v, model.jam_point(&p))))
-            .flatten();
+        let read_off = match (spec.has(JamMapLayer::ReadOff), param.get(&p)) {
+            (true, Some(v)) => Some((v, jam_point(&p)?)),
+            _ => None,
+        };
         Ok(JamMap {
             spec: spec.clone(),
             params: p,

@@ -19,20 +19,22 @@
 //!   force drive): one [`sweep_layers::SweepLayer`] variant and its arm in
 //!   [`sweep_layers::series`], returning [`sweep::Series`] of markers; legend, panels, data file
 //!   and hashes follow.
-//! - A model over a map (jam map boundary and read-off, contour map): implement
-//!   [`crate::grid::PointModel`] and add a [`crate::grid::ModelName`] variant; scenes then say
-//!   `model = "min_norm"`.
+//! - A model over a map (jam map boundary and read-off, contour map): nothing to do here. Maps
+//!   name any model of the port ([`crate::models::ModelKind`]: `model = "min_norm"`) and call
+//!   it per cell through [`models::Models::solve`].
 //! - A new chart kind: a module with a spec struct, `compute`, `data` and a backend-generic
 //!   `draw` (x-y panels through [`xy::Figure`], as [`convergence`] and [`time_series`] do), a
 //!   [`ChartSpec`] variant, a [`Chart`] variant and a scene `charts/<name>.toml`.
 
 pub mod axes;
+pub mod builtin;
 pub mod contour_map;
 pub mod convergence;
 pub mod jam_map;
 pub mod legend;
 pub mod models;
 pub mod output;
+pub mod overrides;
 pub mod spec;
 pub mod style;
 pub mod sweep;
@@ -49,7 +51,7 @@ use crate::error::{Error, Result};
 use crate::grid::{GridAxis, GridParam};
 use crate::model::SceneParams;
 use axes::DrawResult;
-pub use spec::{ChartSpec, Scene, load_scene, scene_names};
+pub use spec::{ChartSpec, Scene, SceneSource, load_scene, scene_files, scene_names};
 
 /// Which pictures to produce.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -132,15 +134,11 @@ impl Chart {
     /// [`Chart::compute`] with the min-norm and dynamics calls going through `models`.
     pub fn compute_with(scene: &Scene, models: &dyn models::Models) -> Result<Chart> {
         Ok(match &scene.chart {
-            ChartSpec::JamMap(s) => {
-                Chart::JamMap(jam_map::JamMap::compute(scene, s, s.model.point_model())?)
-            }
+            ChartSpec::JamMap(s) => Chart::JamMap(jam_map::JamMap::compute(scene, s, models)?),
             ChartSpec::Sweep(s) => Chart::Sweep(sweep::Sweep::compute(scene, s, models)?),
-            ChartSpec::ContourMap(s) => Chart::ContourMap(contour_map::ContourMap::compute(
-                scene,
-                s,
-                s.model.point_model(),
-            )?),
+            ChartSpec::ContourMap(s) => {
+                Chart::ContourMap(contour_map::ContourMap::compute(scene, s, models)?)
+            }
             ChartSpec::Convergence(s) => {
                 Chart::Convergence(convergence::Convergence::compute(scene, s, models)?)
             }

@@ -1,22 +1,25 @@
-//! The expensive model calls a chart can make (min-norm programs, simulations, studies), behind
-//! one trait.
+//! The model calls a chart can make (any model through the port, min-norm traces, studies),
+//! behind one trait.
 //!
 //! Charts compute through [`Models`], never by calling the models directly, so a test can hand
 //! them a counting implementation and check the scene principle: a scene computes only what it
 //! draws (fig3 builds no program and no simulation; fig4 runs no simulation). [`Live`] calls the
-//! models. The closed-form statics are cheap and are called directly.
+//! models. The closed-form statics' margin and F -> infinity limit are cheap closed forms and
+//! are called directly.
 
+use crate::dynamics::DynamicsParams;
 use crate::dynamics::accuracy::{Study, StudySettings, run_study};
-use crate::dynamics::{DynamicsParams, DynamicsSolution, simulate};
 use crate::error::Result;
+use crate::grid::JamPoint;
 use crate::minnorm::tolerance::{ToleranceRow, tolerance_study};
-use crate::minnorm::{ContactSolution, MinNormSettings, PalmSolution, palm};
+use crate::minnorm::{ContactSolution, MinNormSettings, palm};
 use crate::model::SceneParams;
+use crate::models::{self, ModelSpec, Solution};
 
 /// The model calls of charts; implementations must be callable from several threads.
 pub trait Models: Sync {
-    /// The min-norm jam point ([`palm::solve`]).
-    fn min_norm(&self, p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution>;
+    /// One model's answer through the port ([`models::solve`]).
+    fn solve(&self, spec: &ModelSpec, p: &SceneParams) -> Result<Solution>;
     /// clarabel's trace at one palm angle ([`palm::trace_at`]).
     fn min_norm_trace(
         &self,
@@ -31,13 +34,6 @@ pub trait Models: Sync {
         s: &MinNormSettings,
         tolerances: &[f64],
     ) -> Result<Vec<ToleranceRow>>;
-    /// One simulation ([`simulate`]).
-    fn simulate(
-        &self,
-        p: &SceneParams,
-        d: &DynamicsParams,
-        series_dt_s: Option<f64>,
-    ) -> Result<DynamicsSolution>;
     /// The integrators' work-precision study ([`run_study`]).
     fn accuracy_study(
         &self,
@@ -45,6 +41,11 @@ pub trait Models: Sync {
         d: &DynamicsParams,
         s: &StudySettings,
     ) -> Result<Study>;
+
+    /// The jam point of `spec` for `p`: the part of [`Models::solve`] a grid needs.
+    fn jam_point(&self, spec: &ModelSpec, p: &SceneParams) -> Result<JamPoint> {
+        self.solve(spec, p).map(|s| JamPoint::from(&s))
+    }
 }
 
 /// The models themselves.
@@ -52,8 +53,8 @@ pub trait Models: Sync {
 pub struct Live;
 
 impl Models for Live {
-    fn min_norm(&self, p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
-        palm::solve(p, s)
+    fn solve(&self, spec: &ModelSpec, p: &SceneParams) -> Result<Solution> {
+        models::solve(spec, p)
     }
 
     fn min_norm_trace(
@@ -72,15 +73,6 @@ impl Models for Live {
         tolerances: &[f64],
     ) -> Result<Vec<ToleranceRow>> {
         tolerance_study(p, s, tolerances)
-    }
-
-    fn simulate(
-        &self,
-        p: &SceneParams,
-        d: &DynamicsParams,
-        series_dt_s: Option<f64>,
-    ) -> Result<DynamicsSolution> {
-        simulate(p, d, series_dt_s)
     }
 
     fn accuracy_study(

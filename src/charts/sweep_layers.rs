@@ -9,7 +9,6 @@
 //! sit halfway between them ([`SIMULATION_MU`]), so that no marker hides another (at
 //! mu = 0.4 the paper's two values, ours and a simulation's would lie within 3 px).
 
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::models::Models;
@@ -18,9 +17,10 @@ use super::style::{LineKind, Marker};
 use super::sweep::{Series, SeriesPoint, SeriesStyle, SweepSpec};
 use crate::dynamics::{Drive, DynamicsParams};
 use crate::error::{Error, Result};
-use crate::grid::{GridParam, PointModel, Statics};
+use crate::grid::{self, GridParam, statics_point};
 use crate::minnorm::{Formulation, MinNormSettings};
 use crate::model::{JamStatus, disc_position_mm};
+use crate::models::ModelSpec;
 use crate::paper::{ADAMS_X_JAM_MM_MU_0_4, TABLE1};
 use crate::statics;
 
@@ -86,7 +86,7 @@ pub fn series(
                 .values()
                 .into_iter()
                 .map(|v| {
-                    let j = Statics.jam_point(&at(v));
+                    let j = statics_point(&at(v));
                     point(v, j.x_jam_mm, j.theta_jam_deg)
                 })
                 .collect(),
@@ -144,20 +144,32 @@ fn jam_point(mu: f64, status: JamStatus, x: Option<f64>, theta: Option<f64>) -> 
     point(mu, x.filter(|_| jams), theta.filter(|_| jams))
 }
 
-/// Min-norm points at the Table 1 mu values, solved in parallel (each point is independent, so
-/// the result does not depend on the thread count).
+/// `spec`'s jam points at the mu values `mu`, a sweep through the grid (in parallel; each point
+/// is independent, so the result does not depend on the thread count).
+fn model_points(
+    scene: &Scene,
+    models: &dyn Models,
+    spec: &ModelSpec,
+    mu: &[f64],
+) -> Result<Vec<SeriesPoint>> {
+    grid::at_values(&scene.params, GridParam::Mu, mu, |p| {
+        let j = models.jam_point(spec, p)?;
+        Ok(jam_point(
+            p.mu_ground,
+            j.status,
+            j.x_jam_mm,
+            j.theta_jam_deg,
+        ))
+    })
+}
+
+/// Min-norm points at the Table 1 mu values.
 fn min_norm(scene: &Scene, models: &dyn Models, formulation: Formulation) -> Result<Series> {
     let s = MinNormSettings {
         formulation,
         ..scene.min_norm
     };
-    let points = table1_mu()
-        .par_iter()
-        .map(|&mu| {
-            let sol = models.min_norm(&scene.params.with_mu(mu), &s)?;
-            Ok(jam_point(mu, sol.status, sol.x_jam_mm, sol.theta_jam_deg))
-        })
-        .collect::<Result<Vec<_>>>()?;
+    let points = model_points(scene, models, &ModelSpec::MinNorm(s), &table1_mu())?;
     Ok(match formulation {
         Formulation::Translational => Series {
             layer: "min_norm",
@@ -178,20 +190,17 @@ fn min_norm(scene: &Scene, models: &dyn Models, formulation: Formulation) -> Res
     })
 }
 
-/// Simulated jams at [`SIMULATION_MU`] with the scene's `[dynamics]` settings and `drive`, run
-/// in parallel.
+/// Simulated jams at [`SIMULATION_MU`] with the scene's `[dynamics]` settings and `drive`.
 fn simulation(scene: &Scene, models: &dyn Models, drive: Drive) -> Result<Series> {
     let d = DynamicsParams {
         drive,
         ..scene.dynamics
     };
-    let points = SIMULATION_MU
-        .par_iter()
-        .map(|&mu| {
-            let sol = models.simulate(&scene.params.with_mu(mu), &d, None)?;
-            Ok(jam_point(mu, sol.status, sol.x_jam_mm, sol.theta_jam_deg))
-        })
-        .collect::<Result<Vec<_>>>()?;
+    let spec = ModelSpec::Dynamics {
+        params: d,
+        series_dt_s: None,
+    };
+    let points = model_points(scene, models, &spec, &SIMULATION_MU)?;
     Ok(match drive {
         Drive::Motion => Series {
             layer: "simulation_motion",

@@ -21,6 +21,7 @@ use crate::dynamics::jam::SeriesRow;
 use crate::dynamics::scene::Scene as DynScene;
 use crate::error::{Error, Result};
 use crate::grid::AxisScale;
+use crate::models::{Detail, ModelSpec};
 use crate::statics;
 
 /// `[chart]` keys of `kind = "time_series"`.
@@ -74,7 +75,17 @@ impl TimeSeries {
     /// Runs the simulation and lays out the two panels.
     pub fn compute(scene: &Scene, spec: &TimeSeriesSpec, models: &dyn Models) -> Result<Self> {
         let (p, d) = (&scene.params, &scene.dynamics);
-        let sol = models.simulate(p, d, Some(spec.series_dt_s))?;
+        let spec = ModelSpec::Dynamics {
+            params: *d,
+            series_dt_s: Some(spec.series_dt_s),
+        };
+        let sol = models.solve(&spec, p)?;
+        let Detail::Dynamics(sol) = sol.detail else {
+            return Err(Error::Unsupported(format!(
+                "the simulation cannot run this scene: {}",
+                sol.status
+            )));
+        };
         let sys = DynScene::new(p, d);
         let samples: Vec<Sample> = sol
             .series

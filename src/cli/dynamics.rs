@@ -3,25 +3,19 @@
 
 use std::fmt::Write as _;
 use std::path::Path;
-use std::time::Instant;
 
 use clap::Args;
-use serde_json::{Map, Value, json};
+use serde::Serialize;
 
-use super::args::Model;
-use super::solve::ModelRecord;
 use crate::atomic::write_atomic;
 use crate::config::Config;
 use crate::dynamics::jam::SeriesRow;
 use crate::dynamics::nonsmooth::DiscMotion;
 use crate::dynamics::{
-    self, CrossCheck, Drive, DynamicsParams, DynamicsSolution, Failure, Method, Refinement,
+    CrossCheck, Drive, DynamicsParams, DynamicsSolution, Failure, Method, Refinement,
 };
 use crate::error::Result;
 use crate::model::JamStatus;
-
-/// Sampling interval of `--series` in s: 0.2 ms resolves the collapse at the jam (a few ms).
-const SERIES_DT_S: f64 = 2e-4;
 
 /// Dynamics flags: each overrides the same key of the `[dynamics]` section.
 #[derive(Debug, Clone, Default, Args)]
@@ -227,97 +221,104 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
     })
 }
 
-/// Simulates the scene; with `series`, also writes the time series there (atomically).
-pub fn record(config: &Config, series: Option<&Path>) -> Result<ModelRecord> {
-    let t0 = Instant::now();
-    let dt = series.map(|_| SERIES_DT_S);
-    let s = dynamics::simulate(&config.scene, &config.dynamics, dt)?;
-    let elapsed_s = t0.elapsed().as_secs_f64();
-    if let Some(path) = series {
-        write_atomic(path, series_csv(&s.series).as_bytes())?;
-    }
-    let mut details = match serde_json::to_value(&s) {
-        Ok(Value::Object(m)) => m,
-        _ => Map::new(),
-    };
-    for k in ["status", "theta_jam_deg", "x_jam_mm"] {
-        details.shift_remove(k);
-    }
-    if let Some(path) = series {
-        details.insert("series".into(), json!(path.display().to_string()));
-    }
-    // The [dynamics] settings in force, so that the answer can be reproduced.
-    details.insert("settings".into(), json!(config.dynamics));
-    let notes = notes(&s, &config.dynamics);
-    if let Some(a) = advice(&s, &config.dynamics) {
-        details.insert("advice".into(), json!(a));
-    }
-    Ok(ModelRecord {
-        model: Model::Dynamics.name(),
-        status: s.status,
-        theta_jam_deg: s.theta_jam_deg,
-        x_jam_mm: s.x_jam_mm,
-        elapsed_s,
-        details,
-        notes,
-    })
+/// The dynamics' own JSON keys in `solve`'s record: the solution's, the series file and the
+/// `[dynamics]` settings in force, so that the answer can be reproduced.
+#[derive(Debug, Serialize)]
+pub struct Record<'a> {
+    #[serde(flatten)]
+    solution: &'a DynamicsSolution,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    series: Option<String>,
+    settings: &'a DynamicsParams,
+    /// What to do about a `cross_check` or `failure`, naming the flags that act on it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    advice: Option<String>,
 }
 
-/// The dynamics' own lines of text, from the typed solution: trust, verdict, advice and work.
-fn notes(s: &DynamicsSolution, d: &DynamicsParams) -> Vec<String> {
-    let mut notes = Vec::new();
-    let nonsmooth = s.method == Method::Nonsmooth;
-    if let Some(e) = s.x_jam_error_mm {
-        notes.push(if nonsmooth {
-            format!(
-                "x_jam error estimate {e:.2e} mm (a step of palm turn at the jam, or the change \
-                 at twice the step if larger)"
-            )
+/// The JSON keys of `s`, simulated with `settings`, its series written to `series`.
+pub fn record<'a>(
+    s: &'a DynamicsSolution,
+    settings: &'a DynamicsParams,
+    series: Option<&Path>,
+) -> Record<'a> {
+    Record {
+        solution: s,
+        series: series.map(|p| p.display().to_string()),
+        settings,
+        advice: advice(s),
+    }
+}
+
+/// Writes the time series of `s` to `path` as CSV (atomically).
+pub fn write_series(s: &DynamicsSolution, path: &Path) -> Result<()> {
+    write_atomic(path, series_csv(&s.series).as_bytes())
+}
+
+/// The dynamics' own lines under the shared status lines of `solve`: jam time, trust, work.
+pub fn render_details(s: &mut String, d: &DynamicsSolution) {
+    if d.status == JamStatus::Inaccurate
+        && let (Some(t), Some(x)) = (d.theta_jam_deg, d.x_jam_mm)
+    {
+        let _ = writeln!(s, "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm");
+    }
+    if let Some(t) = d.t_jam_s {
+        let _ = writeln!(
+            s,
+            "  t_jam     = {t:.4} s     time of the jam from the start of the push"
+        );
+    }
+    let nonsmooth = d.method == Method::Nonsmooth;
+    if let Some(e) = d.x_jam_error_mm {
+        let how = if nonsmooth {
+            "a step of palm turn at the jam, or the change at twice the step if larger"
         } else {
-            format!("x_jam error estimate {e:.2e} mm (second run at a tenth of the tolerances)")
-        });
+            "second run at a tenth of the tolerances"
+        };
+        let _ = writeln!(s, "  x_jam error estimate {e:.2e} mm ({how})");
     }
-    if let Some(x) = s.x_stiction_mm {
-        notes.push(format!(
-            "ground contact enters stiction (slip < V_s) at x = {x:.3} mm"
-        ));
+    if let Some(x) = d.x_stiction_mm {
+        let _ = writeln!(
+            s,
+            "  ground contact enters stiction (slip < V_s) at x = {x:.3} mm"
+        );
     }
-    if let Some(l) = s.lock_up {
-        notes.push(format!(
-            "lock-up: the palm cannot turn past {:.3} deg; it pushed with {:.0} N in the last \
+    if let Some(l) = d.lock_up {
+        let _ = writeln!(
+            s,
+            "  lock-up: the palm cannot turn past {:.3} deg; it pushed with {:.0} N in the last \
              step (a rigid disc needs an unbounded push there)",
             l.theta_deg, l.push_n
-        ));
+        );
     }
-    if let Some(c) = &s.cross_check {
-        notes.push(format!("{}: {c}", s.status));
+    if let Some(c) = &d.cross_check {
+        let _ = writeln!(s, "  {}: {c}", d.status);
     }
-    if let Some(f) = &s.failure {
-        notes.push(format!("the integrator gave up: {f}"));
+    if let Some(f) = &d.failure {
+        let _ = writeln!(s, "  the integrator gave up: {f}");
     }
-    if let Some(a) = advice(s, d) {
-        notes.push(format!("advice: {a}"));
+    if let Some(a) = advice(d) {
+        let _ = writeln!(s, "  advice: {a}");
     }
-    notes.push(if nonsmooth {
-        format!(
-            "{} drive, nonsmooth: {} steps of {} deg, {} contact-mode solves",
-            s.drive.as_str(),
-            s.steps,
-            d.nonsmooth_step_deg,
-            s.rhs_evals
-        )
+    if nonsmooth {
+        let _ = writeln!(
+            s,
+            "  {} drive, nonsmooth: {} steps, {} contact-mode solves",
+            d.drive.as_str(),
+            d.steps,
+            d.rhs_evals
+        );
     } else {
-        format!(
-            "{} drive, {}: {} steps ({} rejected), {} rhs and {} Jacobian evaluations",
-            s.drive.as_str(),
-            s.method.as_str(),
-            s.steps,
-            s.rejected_steps,
-            s.rhs_evals,
-            s.jacobian_evals
-        )
-    });
-    notes
+        let _ = writeln!(
+            s,
+            "  {} drive, {}: {} steps ({} rejected), {} rhs and {} Jacobian evaluations",
+            d.drive.as_str(),
+            d.method.as_str(),
+            d.steps,
+            d.rejected_steps,
+            d.rhs_evals,
+            d.jacobian_evals
+        );
+    }
 }
 
 /// How many stiction transition velocities the palm must move the disc at for the regularised
@@ -325,9 +326,8 @@ fn notes(s: &DynamicsSolution, d: &DynamicsParams) -> Vec<String> {
 /// speed, and tightening the tolerances changes nothing (V_s sets the error).
 const SPEED_PER_STICTION_VELOCITY: f64 = 20.0;
 
-/// What to do about a typed reason, in terms of the flags that act on it.
-fn advice(s: &DynamicsSolution, d: &DynamicsParams) -> Option<String> {
-    let tighten = || format!("tighten --rtol (now {:e}) and compare the answers", d.rtol);
+/// What to do about the typed reason of `s`, in terms of the flags that act on it.
+fn advice(s: &DynamicsSolution) -> Option<String> {
     if let Some(c) = s.cross_check {
         return Some(match c {
             CrossCheck::LooseTolerance { loosest, .. } => {
@@ -345,25 +345,36 @@ fn advice(s: &DynamicsSolution, d: &DynamicsParams) -> Option<String> {
             } if v < SPEED_PER_STICTION_VELOCITY * vs => format!(
                 "the palm is slow against the stiction transition velocity: lower \
                  --stiction-velocity to {:.2e} mm/s or less (the tolerances do not set this \
-                 error)",
+                 error), or use --method nonsmooth",
                 v / SPEED_PER_STICTION_VELOCITY
             ),
             CrossCheck::VerificationDisagrees {
-                check: Refinement::Step { .. },
+                check: Refinement::Step { step_deg },
                 ..
             }
             | CrossCheck::ErrorEstimate {
-                check: Refinement::Step { .. },
+                check: Refinement::Step { step_deg },
                 ..
             } => format!(
                 "lower --nonsmooth-step (now {} deg) and compare the answers",
-                d.nonsmooth_step_deg
+                step_deg / 2.0
             ),
-            CrossCheck::VerificationDisagrees { .. }
-            | CrossCheck::ErrorEstimate { .. }
-            | CrossCheck::PastWedge { .. }
+            CrossCheck::VerificationDisagrees {
+                check: Refinement::Tolerance { rtol },
+                ..
+            }
+            | CrossCheck::ErrorEstimate {
+                check: Refinement::Tolerance { rtol },
+                ..
+            } => format!(
+                "tighten --rtol (now {:e}) and compare the answers",
+                rtol * 10.0
+            ),
+            CrossCheck::PastWedge { .. }
             | CrossCheck::StoppedBelowForceLimit { .. }
-            | CrossCheck::HeldBelowSlidingPush { .. } => tighten(),
+            | CrossCheck::HeldBelowSlidingPush { .. } => {
+                "tighten --rtol and compare the answers".to_string()
+            }
         });
     }
     s.failure.map(|f| match f {
@@ -382,26 +393,6 @@ fn advice(s: &DynamicsSolution, d: &DynamicsParams) -> Option<String> {
                 .to_string()
         }
     })
-}
-
-/// The dynamics' own lines under the shared status lines of `solve`: jam time, trust, work.
-pub fn render_details(s: &mut String, r: &ModelRecord) {
-    let d = &r.details;
-    let num = |k: &str| d.get(k).and_then(Value::as_f64);
-    if r.status == JamStatus::Inaccurate
-        && let (Some(t), Some(x)) = (r.theta_jam_deg, r.x_jam_mm)
-    {
-        let _ = writeln!(s, "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm");
-    }
-    if let Some(t) = num("t_jam_s") {
-        let _ = writeln!(
-            s,
-            "  t_jam     = {t:.4} s     time of the jam from the start of the push"
-        );
-    }
-    for n in &r.notes {
-        let _ = writeln!(s, "  {n}");
-    }
 }
 
 /// The time series as CSV, one row per sample, units in the header.

@@ -1,7 +1,9 @@
-//! One axis of a grid: which scene parameter it varies, over which range, how finely.
+//! One axis of a grid: which parameter it varies, over which range, how finely; and the palm
+//! scene's parameters ([`GridParam`]) as a [`ParamSet`].
 
 use serde::{Deserialize, Serialize};
 
+use super::ParamSet;
 use crate::error::{Error, Result};
 use crate::model::SceneParams;
 
@@ -82,6 +84,22 @@ impl GridParam {
     }
 }
 
+impl ParamSet for SceneParams {
+    type Param = GridParam;
+
+    fn with(self, param: GridParam, value: f64) -> Self {
+        param.apply(self, value)
+    }
+
+    fn validate(&self) -> Result<()> {
+        SceneParams::validate(self)
+    }
+
+    fn param_name(param: GridParam) -> &'static str {
+        param.as_str()
+    }
+}
+
 /// How the samples of an axis are spaced.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -94,11 +112,14 @@ pub enum AxisScale {
 }
 
 /// One grid axis: `count` samples of `param` from `min` to `max` inclusive.
+///
+/// `P` is the parameter type of the [`ParamSet`] the axis varies: [`GridParam`] for the palm
+/// scene (the default), the locator's for a V-locator.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct GridAxis {
+pub struct GridAxis<P = GridParam> {
     /// The parameter varied along this axis.
-    pub param: GridParam,
+    pub param: P,
     /// First sample, in the parameter's unit.
     pub min: f64,
     /// Last sample, in the parameter's unit (> min).
@@ -110,9 +131,9 @@ pub struct GridAxis {
     pub scale: AxisScale,
 }
 
-impl GridAxis {
+impl<P: Copy> GridAxis<P> {
     /// A linear axis.
-    pub fn linear(param: GridParam, min: f64, max: f64, count: usize) -> Self {
+    pub fn linear(param: P, min: f64, max: f64, count: usize) -> Self {
         GridAxis {
             param,
             min,
@@ -123,7 +144,7 @@ impl GridAxis {
     }
 
     /// A logarithmic axis.
-    pub fn log(param: GridParam, min: f64, max: f64, count: usize) -> Self {
+    pub fn log(param: P, min: f64, max: f64, count: usize) -> Self {
         GridAxis {
             scale: AxisScale::Log,
             ..Self::linear(param, min, max, count)

@@ -1,13 +1,17 @@
-//! The parallel grid evaluator: a model over any two scene parameters.
+//! The parallel grid evaluator: any function of a parameter set over one or two axes.
 //!
-//! A [`GridRequest`] names a base [`SceneParams`], two [`GridAxis`] and the [`Quantity`]s wanted;
-//! [`evaluate`] computes only those, in parallel (rayon), and returns them in index order
-//! `iy * nx + ix` (x fastest). Each cell is computed by the same instructions whatever thread runs
-//! it and whatever the chunking, so the result is bit-identical for any thread count (a test says
-//! so): no reductions across cells, no fused multiply-adds chosen by the compiler.
+//! [`Grid`] is generic over the [`ParamSet`] it varies (the palm scene's [`SceneParams`], a
+//! V-locator's parameters, ...): [`Grid::map`] evaluates a function of the cell's parameters in
+//! parallel (rayon) and returns the cells in index order `iy * nx + ix` (x fastest); a sweep is
+//! a one-axis grid and [`at_values`] the same at a list of values. Each cell is computed by the
+//! same instructions whatever thread runs it and whatever the chunking, so the result is
+//! bit-identical for any thread count (a test says so): no reductions across cells, no fused
+//! multiply-adds chosen by the compiler.
 //!
-//! The statics margin has a fast kernel (see [`MarginCoeffs`]); the jam point (status, theta_jam, x_jam)
-//! comes from any [`PointModel`], so the min-norm and dynamics models plug in by implementing it.
+//! For the palm scene a [`GridRequest`] names the [`Quantity`]s wanted and [`evaluate`] computes
+//! only those: the statics margin by a fast kernel ([`MarginCoeffs`]), the jam point (status,
+//! theta_jam, x_jam) by any model of the port ([`crate::models`]), passed in as the function
+//! that answers one scene so that charts can count the calls.
 
 mod axis;
 mod margin;
@@ -20,7 +24,133 @@ pub use margin::MarginCoeffs;
 
 use crate::error::{Error, Result};
 use crate::model::{JamStatus, SceneParams};
+use crate::models::Solution;
 use crate::statics;
+
+/// A set of parameters a grid can vary, one named parameter per axis.
+pub trait ParamSet: Copy + Send + Sync {
+    /// The parameters an axis can vary (their snake_case names are TOML keys).
+    type Param: Copy + PartialEq + Send + Sync;
+    /// `self` with `param` set to `value`.
+    fn with(self, param: Self::Param, value: f64) -> Self;
+    /// Checks every field; the error names the key and the value.
+    fn validate(&self) -> Result<()>;
+    /// The snake_case name of `param`, for messages and data files.
+    fn param_name(param: Self::Param) -> &'static str;
+}
+
+/// At most this many cells in one grid: 2^26, 512 MiB per quantity, far beyond any chart's
+/// resolution; an axis alone may have up to 2^24 samples.
+pub const MAX_CELLS: usize = 1 << 26;
+
+/// A parameter set varied over one axis (a sweep) or two.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Grid<S: ParamSet> {
+    /// The parameters every cell starts from; the axes overwrite theirs.
+    pub base: S,
+    /// Horizontal axis (index ix, fastest in memory).
+    pub x: GridAxis<S::Param>,
+    /// Vertical axis (index iy); None for a sweep.
+    pub y: Option<GridAxis<S::Param>>,
+}
+
+/// The cells of an evaluated grid, in index order `iy * nx + ix`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Cells<T> {
+    /// Horizontal sample values.
+    pub x_values: Vec<f64>,
+    /// Vertical sample values (one value, NaN, for a sweep: it has a single row).
+    pub y_values: Vec<f64>,
+    /// One value per cell.
+    pub values: Vec<T>,
+}
+
+impl<S: ParamSet> Grid<S> {
+    /// Checks the axes, the cell count, and the parameters at the grid's corners (every
+    /// parameter is monotone along its axis, so the corners bound the whole grid).
+    pub fn validate(&self) -> Result<()> {
+        self.x.validate("x_axis")?;
+        let mut cells = self.x.count;
+        if let Some(y) = &self.y {
+            y.validate("y_axis")?;
+            cells = cells.saturating_mul(y.count);
+            if y.param == self.x.param {
+                return Err(Error::invalid(
+                    "y_axis.param",
+                    S::param_name(y.param),
+                    "the two axes must vary different parameters",
+                ));
+            }
+        }
+        if cells > MAX_CELLS {
+            return Err(Error::invalid(
+                "x_axis.count * y_axis.count",
+                cells,
+                format!(
+                    "a grid has at most {MAX_CELLS} cells (8 bytes each per quantity); \
+                     lower the counts"
+                ),
+            ));
+        }
+        self.base.validate()?;
+        let ys = match &self.y {
+            Some(y) => vec![Some(y.min), Some(y.max)],
+            None => vec![None],
+        };
+        for xv in [self.x.min, self.x.max] {
+            for &yv in &ys {
+                self.cell(xv, yv).validate()?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The parameters of the cell at `(xv, yv)`.
+    pub fn cell(&self, xv: f64, yv: Option<f64>) -> S {
+        let p = self.base.with(self.x.param, xv);
+        match (&self.y, yv) {
+            (Some(y), Some(v)) => p.with(y.param, v),
+            _ => p,
+        }
+    }
+
+    /// `f` of every cell's parameters, in parallel, in index order; validated first. The first
+    /// error in index order is returned.
+    pub fn map<T: Send>(&self, f: impl Fn(&S) -> Result<T> + Sync) -> Result<Cells<T>> {
+        self.validate()?;
+        let x_values = self.x.values();
+        let y_values = self.y.as_ref().map_or(vec![f64::NAN], GridAxis::values);
+        let nx = x_values.len();
+        let has_y = self.y.is_some();
+        let values: Vec<Result<T>> = (0..nx * y_values.len())
+            .into_par_iter()
+            .map(|i| {
+                let yv = has_y.then(|| y_values[i / nx]);
+                f(&self.cell(x_values[i % nx], yv))
+            })
+            .collect();
+        Ok(Cells {
+            values: values.into_iter().collect::<Result<_>>()?,
+            x_values,
+            y_values,
+        })
+    }
+}
+
+/// `f` at `base` with `param` set to each of `values`, in parallel, in order: a sweep at given
+/// points (e.g. the paper's Table 1 mu values). The first error in order is returned.
+pub fn at_values<S: ParamSet, T: Send>(
+    base: &S,
+    param: S::Param,
+    values: &[f64],
+    f: impl Fn(&S) -> Result<T> + Sync,
+) -> Result<Vec<T>> {
+    let out: Vec<Result<T>> = values
+        .par_iter()
+        .map(|&v| f(&base.with(param, v)))
+        .collect();
+    out.into_iter().collect()
+}
 
 /// A quantity a grid can compute per cell.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -40,7 +170,7 @@ pub enum Quantity {
     XRigidMm,
 }
 
-/// What a model says about one push: the part of its solution a grid or chart needs.
+/// What a model says about one push: the part of its [`Solution`] a grid or chart needs.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct JamPoint {
     /// Outcome of the push.
@@ -51,21 +181,8 @@ pub struct JamPoint {
     pub x_jam_mm: Option<f64>,
 }
 
-/// A model that answers one push; the grid calls it once per cell, from several threads.
-///
-/// The min-norm and dynamics models plug into grids and charts by implementing this.
-pub trait PointModel: Sync {
-    /// The jam point for scene `p` (already validated).
-    fn jam_point(&self, p: &SceneParams) -> JamPoint;
-}
-
-/// The closed-form statics ([`statics::solve`]) as a [`PointModel`].
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Statics;
-
-impl PointModel for Statics {
-    fn jam_point(&self, p: &SceneParams) -> JamPoint {
-        let s = statics::solve(p);
+impl From<&Solution> for JamPoint {
+    fn from(s: &Solution) -> Self {
         JamPoint {
             status: s.status,
             theta_jam_deg: s.theta_jam_deg,
@@ -74,23 +191,13 @@ impl PointModel for Statics {
     }
 }
 
-/// A model a scene can name for its jam points (`model = "statics"`).
-///
-/// The min-norm and dynamics models join as variants once they implement [`PointModel`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ModelName {
-    /// The closed-form statics.
-    #[default]
-    Statics,
-}
-
-impl ModelName {
-    /// The model itself.
-    pub fn point_model(self) -> &'static dyn PointModel {
-        match self {
-            ModelName::Statics => &Statics,
-        }
+/// The closed-form jam point of `p` (validated): the cheap model, called directly.
+pub fn statics_point(p: &SceneParams) -> JamPoint {
+    let s = statics::solve(p);
+    JamPoint {
+        status: s.status,
+        theta_jam_deg: s.theta_jam_deg,
+        x_jam_mm: s.x_jam_mm,
     }
 }
 
@@ -143,41 +250,19 @@ impl GridResult {
     }
 }
 
-/// At most this many cells in one grid: 2^26, 512 MiB per quantity, far beyond any chart's
-/// resolution; an axis alone may have up to 2^24 samples.
-pub const MAX_CELLS: usize = 1 << 26;
-
 impl GridRequest {
+    /// The generic grid of this request.
+    pub fn grid(&self) -> Grid<SceneParams> {
+        Grid {
+            base: self.base,
+            x: self.x,
+            y: Some(self.y),
+        }
+    }
+
     /// Checks the axes, the base scene and the scene at the corners of the grid.
     pub fn validate(&self) -> Result<()> {
-        self.x.validate("x_axis")?;
-        self.y.validate("y_axis")?;
-        let cells = self.x.count.saturating_mul(self.y.count);
-        if cells > MAX_CELLS {
-            return Err(Error::invalid(
-                "x_axis.count * y_axis.count",
-                cells,
-                format!(
-                    "a grid has at most {MAX_CELLS} cells (8 bytes each per quantity); \
-                     lower the counts"
-                ),
-            ));
-        }
-        if self.x.param == self.y.param {
-            return Err(Error::invalid(
-                "y_axis.param",
-                self.y.param.as_str(),
-                "the two axes must vary different parameters",
-            ));
-        }
-        self.base.validate()?;
-        // Every parameter is monotone along its axis, so the corners bound the whole grid.
-        for (xv, yv) in [self.x.min, self.x.max]
-            .into_iter()
-            .flat_map(|xv| [(xv, self.y.min), (xv, self.y.max)])
-        {
-            self.cell_params(xv, yv).validate()?;
-        }
+        self.grid().validate()?;
         for axis in [&self.x, &self.y] {
             if axis.param == GridParam::ThetaDeg && !(axis.min >= 0.0 && axis.max <= 180.0) {
                 return Err(Error::invalid(
@@ -197,30 +282,31 @@ impl GridRequest {
         }
         Ok(())
     }
-
-    fn cell_params(&self, xv: f64, yv: f64) -> SceneParams {
-        self.y.param.apply(self.x.param.apply(self.base, xv), yv)
-    }
 }
 
-/// Evaluates the requested quantities over the grid with `model`, in parallel.
+/// Evaluates the requested quantities over the grid, in parallel; `jam_point` answers one
+/// scene (any model of the port, e.g. `|p| Ok(JamPoint::from(&models::solve(&spec, p)?))`).
 ///
 /// The margin always comes from the closed-form statics (it is that model's quantity); the jam
-/// point from `model`. Bit-identical for any rayon thread count.
-pub fn evaluate(req: &GridRequest, model: &dyn PointModel) -> Result<GridResult> {
+/// point from `jam_point`, called only when a jam quantity is wanted. Bit-identical for any
+/// rayon thread count.
+pub fn evaluate(
+    req: &GridRequest,
+    jam_point: impl Fn(&SceneParams) -> Result<JamPoint> + Sync,
+) -> Result<GridResult> {
     req.validate()?;
-    let x_values = req.x.values();
-    let y_values = req.y.values();
+    let grid = req.grid();
     let wants = |q| req.quantities.contains(&q);
-    let margin_n = wants(Quantity::MarginN).then(|| margin::margin_grid(req, &x_values, &y_values));
-
     let jam_wanted =
         wants(Quantity::Status) || wants(Quantity::ThetaJamDeg) || wants(Quantity::XJamMm);
-    let points: Option<Vec<JamPoint>> =
-        jam_wanted.then(|| per_cell(req, &x_values, &y_values, |p| model.jam_point(p)));
+    let points = jam_wanted.then(|| grid.map(&jam_point)).transpose()?;
     let x_rigid_mm = wants(Quantity::XRigidMm)
-        .then(|| per_cell(req, &x_values, &y_values, |p| statics::rigid_limit(p).1));
-    let pick = |q: Quantity| points.as_ref().filter(|_| wants(q));
+        .then(|| grid.map(|p| Ok(statics::rigid_limit(p).1)))
+        .transpose()?
+        .map(|c| c.values);
+    let (x_values, y_values) = (req.x.values(), req.y.values());
+    let margin_n = wants(Quantity::MarginN).then(|| margin::margin_grid(req, &x_values, &y_values));
+    let pick = |q: Quantity| points.as_ref().filter(|_| wants(q)).map(|c| &c.values);
     Ok(GridResult {
         margin_n,
         status: pick(Quantity::Status).map(|v| v.iter().map(|p| p.status).collect()),
@@ -231,20 +317,6 @@ pub fn evaluate(req: &GridRequest, model: &dyn PointModel) -> Result<GridResult>
         x_values,
         y_values,
     })
-}
-
-/// `f` of every cell's scene, in parallel, in index order `iy * nx + ix`.
-fn per_cell<T: Send>(
-    req: &GridRequest,
-    xs: &[f64],
-    ys: &[f64],
-    f: impl Fn(&SceneParams) -> T + Sync,
-) -> Vec<T> {
-    let nx = xs.len();
-    (0..nx * ys.len())
-        .into_par_iter()
-        .map(|i| f(&req.cell_params(xs[i % nx], ys[i / nx])))
-        .collect()
 }
 
 #[cfg(test)]

@@ -3,6 +3,11 @@ use proptest::prelude::*;
 use super::*;
 use crate::statics;
 
+/// The closed form as the grid's jam-point function.
+fn st(p: &SceneParams) -> Result<JamPoint> {
+    Ok(statics_point(p))
+}
+
 fn mu_theta(nx: usize, ny: usize) -> GridRequest {
     GridRequest {
         base: SceneParams::default(),
@@ -61,8 +66,8 @@ fn bit_identical_for_any_thread_count() {
     let run = |threads| {
         in_pool(threads, || {
             (
-                evaluate(&margin_req, &Statics).unwrap(),
-                evaluate(&rf_req, &Statics).unwrap(),
+                evaluate(&margin_req, st).unwrap(),
+                evaluate(&rf_req, st).unwrap(),
             )
         })
     };
@@ -98,7 +103,7 @@ fn only_requested_quantities_and_index_order() {
         y: GridAxis::linear(GridParam::RadiusMm, 10.0, 20.0, 2),
         base: SceneParams::default(),
     };
-    let g = evaluate(&req, &Statics).unwrap();
+    let g = evaluate(&req, st).unwrap();
     assert!(g.margin_n.is_none() && g.status.is_none() && g.theta_jam_deg.is_none());
     let x = g.x_jam_mm.as_ref().unwrap();
     assert_eq!(x.len(), 6);
@@ -119,26 +124,26 @@ fn margin_without_theta_axis_is_refused() {
         y: GridAxis::linear(GridParam::ForceN, 50.0, 100.0, 2),
         ..mu_theta(2, 2)
     };
-    let msg = evaluate(&req, &Statics).unwrap_err().to_string();
+    let msg = evaluate(&req, st).unwrap_err().to_string();
     assert!(msg.contains("theta_deg"), "{msg}");
     let req = GridRequest {
         x: GridAxis::linear(GridParam::Mu, -0.1, 0.5, 2),
         ..mu_theta(2, 2)
     };
-    let msg = evaluate(&req, &Statics).unwrap_err().to_string();
+    let msg = evaluate(&req, st).unwrap_err().to_string();
     assert!(msg.contains("mu_ground = -0.1"), "{msg}");
 }
 
 /// The hoisted kernel of `req` against `statics::margin_n` cell by cell:
 /// |diff| <= 1e-12 (|F| + m g), worst case reported.
 fn assert_margin_matches_statics(req: &GridRequest) {
-    let g = evaluate(req, &Statics).unwrap();
+    let g = evaluate(req, st).unwrap();
     let m = g.margin_n.as_ref().unwrap();
     let theta_on_x = req.x.param == GridParam::ThetaDeg;
     let mut worst = (0.0_f64, 0.0, 0.0);
     for (iy, &yv) in g.y_values.iter().enumerate() {
         for (ix, &xv) in g.x_values.iter().enumerate() {
-            let p = req.cell_params(xv, yv);
+            let p = req.grid().cell(xv, Some(yv));
             let t = if theta_on_x { xv } else { yv };
             let d = (m[g.index(ix, iy)] - statics::margin_n(&p, t.to_radians())).abs();
             if d > worst.0 {
@@ -219,7 +224,7 @@ proptest! {
             y: GridAxis::linear(GridParam::ThetaDeg, t_lo, t_lo + t_span, 5),
             quantities: vec![Quantity::MarginN, Quantity::Status, Quantity::ThetaJamDeg, Quantity::XJamMm, Quantity::XRigidMm],
         };
-        let g = evaluate(&req, &Statics).unwrap();
+        let g = evaluate(&req, st).unwrap();
         prop_assert!(g.margin_n.unwrap().iter().all(|v| v.is_finite()));
         for v in [g.theta_jam_deg.unwrap(), g.x_jam_mm.unwrap(), g.x_rigid_mm.unwrap()] {
             prop_assert!(v.iter().flatten().all(|v| v.is_finite()));

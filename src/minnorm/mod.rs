@@ -48,7 +48,7 @@
 //! t_B = u = (cos theta, sin theta) along the palm, away from the hinge. Moments are taken about
 //! C, so lever arms are r, and theta -> 0 (x -> infinity) stays well conditioned; equilibrium
 //! does not depend on the moment point, so this is Eq. 5 with r measured from C, not from the
-//! hinge (the paper's Eq. 7 mixes the two; see ERRATA.md).
+//! hinge (the paper's Eq. 7 mixes the two; crate docs, Corrections to the paper).
 //!
 //! ## (a) Translational (the paper's)
 //!
@@ -60,7 +60,7 @@
 //! mu = 0; it carries no weight and no friction).
 //!
 //! Where the push drives the disc forward (R_t >= 0) the stop is idle, the force rows fix the
-//! ground force and the minimum is trivial (ERRATA): f_t,A = F sin(theta - alpha_p) = R_t and
+//! ground force and the minimum is trivial (crate docs, Corrections): f_t,A = F sin(theta - alpha_p) = R_t and
 //! f_n,A = m g + F cos(theta - alpha_p) = R_n, exactly the corrected Eq. 1; the joint takes what
 //! the two frictions leave of the moment, lambda = r (R_t - F sin alpha_p). Held is then
 //! R_n >= 0 and R_t <= mu_g R_n: the Eq. 1 test. Where the sliding palm's own friction drags the
@@ -117,10 +117,13 @@
 //! Held at the start angle: jammed at start. Otherwise the held angles below the start are
 //! one interval [0, theta_jam] in both formulations (above). If the disc is held at the palm's
 //! reach (x = palm length) the boundary lies between the reach and the start, and the bracket
-//! is bisected to `bisection_tol_rad`; theta_jam is its held end. If not, one solve tells
-//! "beyond reach" (held further out) from "never jams": at the angle where the push's sideways
-//! part F sin(theta) is 1e-7 of the largest load (below it "held" is a decision
-//! at the solvers' tolerance, [`palm::FLOOR_PUSH_FRACTION`]).
+//! is bisected to `bisection_tol_rad` (relative below 0.1 rad); theta_jam is its held end. If
+//! not, the jam lies beyond the reach whenever theta_jam > 0, which the derivations above give
+//! without a solve: with any friction in (a), with friction at both contacts in (b); otherwise
+//! the disc never jams. A disc that starts past the palm's end is beyond reach. In (a), a disc
+//! held at the start and also at 90 deg + alpha_g + alpha_p, where the push slides it best (the
+//! margin there is mu_g m g - F / cos alpha_g), is held at every angle: the push is too weak to
+//! move it, F <= m g sin(alpha_g).
 
 mod contact;
 mod exact;

@@ -31,6 +31,16 @@ impl Formulation {
         }
     }
 
+    /// Whether this formulation holds the disc at some palm angle > 0: with any friction when
+    /// a joint carries the moment; with friction at both contacts when the disc may roll
+    /// (held iff tan(theta/2) <= min(mu_p, mu_g (1 + m g / N)), module docs).
+    pub fn can_jam(self, p: &SceneParams) -> bool {
+        match self {
+            Formulation::Translational => p.mu_ground + p.mu_palm > 0.0,
+            Formulation::Rolling => p.mu_ground > 0.0 && p.mu_palm > 0.0,
+        }
+    }
+
     /// Names of the contacts, in the order of [`palm_problem`]'s contacts.
     pub fn contact_names(self) -> &'static [&'static str] {
         match self {
@@ -149,20 +159,10 @@ pub struct PalmSolution {
     pub at_jam: Option<ContactSolution>,
 }
 
-/// The sideways part of the push, F sin(theta), as a fraction of the largest load (F or m g)
-/// below which the search for a held angle stops: there a jam cannot be told from the solvers'
-/// tolerance (1e-8 of the largest load for clarabel, 1e-10 for the exact path; ten times
-/// clarabel's). The smallest angle searched is asin(1e-7 max(F, m g) / F) >= 1e-7 rad
-/// (x > 2e7 r); a jam further out is reported as never_jams (the statics call it beyond_reach;
-/// only mu below about 1e-7 max(1, m g / F) gets there).
-pub const FLOOR_PUSH_FRACTION: f64 = 1e-7;
-
-/// The smallest palm angle searched, in rad; see [`FLOOR_PUSH_FRACTION`].
-pub fn theta_floor_rad(p: &SceneParams) -> f64 {
-    (FLOOR_PUSH_FRACTION * p.force_n.max(p.weight_n()) / p.force_n)
-        .min(1.0)
-        .asin()
-}
+/// Below 0.1 rad the bisection stops at this fraction of the angle instead of
+/// `bisection_tol_rad` (default 1e-9 rad, itself 1e-8 of 0.1 rad): the agreement with the
+/// closed form stays within 1e-6 relative for any mu > 0.
+pub const RELATIVE_RESOLUTION: f64 = 1e-8;
 
 struct Search<'a> {
     p: &'a SceneParams,
@@ -198,9 +198,11 @@ impl Search<'_> {
 
 /// Solves the palm scene by the minimum-norm model. The held angles below the start are one
 /// interval, [0, theta_jam] (module docs), so: held at the start angle -> jammed at start; held
-/// at the palm's reach (x = palm length) -> bisect [reach, start] to `bisection_tol_rad`;
-/// otherwise held at [`theta_floor_rad`] -> beyond reach, else never jams. `p` and `s` are
-/// validated here.
+/// at the palm's reach (x = palm length) -> bisect [reach, start] to `bisection_tol_rad`
+/// (relative below 0.1 rad, [`RELATIVE_RESOLUTION`]); otherwise beyond reach if the formulation
+/// can jam at all, else never jams. A disc starting past the palm's end is beyond reach; one held
+/// at the start and at 90 deg + alpha_g + alpha_p (below 180 deg) is too weak to move. `p` and `s` are validated
+/// here.
 pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
     p.validate()?;
     s.validate()?;
@@ -220,15 +222,35 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
         },
     };
     let start = p.start_angle_deg.to_radians();
+    let reach = palm_angle_at(p.radius_mm, p.palm_length_mm);
+    // A disc that starts beyond the palm's end is never touched.
+    if start < reach {
+        search.out.status = JamStatus::BeyondReach;
+        return Ok(search.out);
+    }
     if let Some(sol) = search.eval(start)? {
+        // With a joint carrying the moment, held where the push slides the disc best means held
+        // at every angle: the push is too weak (module docs). A rolling disc's hold does not
+        // depend on the push that way: held at every angle there is a wedge that always locks.
+        // Past 180 deg (mu_g mu_p >= 1) the wedge self-locks at every angle: jammed at start.
+        let best = std::f64::consts::FRAC_PI_2 + p.alpha_ground() + p.alpha_palm();
+        if s.formulation == Formulation::Translational
+            && best < std::f64::consts::PI
+            && best != start
+            && search.eval(best)?.is_some()
+        {
+            search.out.status = JamStatus::TooWeak;
+            return Ok(search.out);
+        }
         return Ok(search.jam_at(JamStatus::JammedAtStart, start, sol));
     }
-    let reach = palm_angle_at(p.radius_mm, p.palm_length_mm);
     if reach < start
         && let Some(mut held) = search.eval(reach)?
     {
         let (mut lo, mut hi) = (reach, start);
-        while hi - lo > s.bisection_tol_rad {
+        // Relative below 0.1 rad, so that a jam at 1e-9 rad is still found to 1e-6 of itself;
+        // above it the absolute tolerance governs (every chart's jam angle is above it).
+        while hi - lo > s.bisection_tol_rad.min(RELATIVE_RESOLUTION * lo) {
             let mid = 0.5 * (lo + hi);
             match search.eval(mid)? {
                 Some(sol) => {
@@ -240,10 +262,11 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
         }
         return Ok(search.jam_at(JamStatus::Jams, lo, held));
     }
-    // Not held within reach: theta_jam lies below it. Only the status is wanted, and one solve
-    // at the floor tells it (below the floor "held" is a decision at the solvers' tolerance).
-    let floor = theta_floor_rad(p);
-    if floor < reach.min(start) && search.eval(floor)?.is_some() {
+    // Not held within reach: theta_jam lies below it, if it exists. The held angles are
+    // [0, theta_jam] (module docs), with theta_jam > 0 whenever the formulation has friction to
+    // hold with, so no solve is needed (a solve at an angle of 1e-9 rad would decide at the
+    // solvers' tolerance, and called mu = 1e-8 never_jams where the statics say beyond_reach).
+    if s.formulation.can_jam(p) {
         search.out.status = JamStatus::BeyondReach;
     }
     Ok(search.out)
