@@ -1,6 +1,7 @@
 //! The nonsmooth method (rigid contacts, exact Coulomb friction) against the closed form and
 //! against the regularised model in its stiff limit (issue 10).
 
+use jamchart::dynamics::nonsmooth::DiscMotion;
 use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Method, simulate};
 use jamchart::model::SceneParams;
 use jamchart::{JamStatus, statics};
@@ -148,5 +149,78 @@ fn nonsmooth_and_stiff_regularised_agree() {
             let cf = statics::solve(&scene).x_jam_mm.unwrap();
             assert!(ns > cf && rg > cf, "{ns} {rg} vs {cf}");
         }
+    }
+}
+
+fn rolling(drive: Drive, omega_deg_s: f64) -> DynamicsParams {
+    DynamicsParams {
+        disc: DiscMotion::Rolls,
+        ..nonsmooth(drive, omega_deg_s)
+    }
+}
+
+/// The disc free to roll (issue 10): with equal frictions mu = 0.15 ... 0.45 it rolls on the
+/// ground (no slip at A) while the palm slides over it, and locks up where the translational disc
+/// does, at r/mu: a rolling disc's moment balance makes the two friction forces equal, so the palm
+/// contact reaches its cone at tan(theta/2) = mu_p while the ground, pressed harder, still holds.
+/// With unequal frictions the rolling disc locks up at r / min(mu_g, mu_p) (the min-norm rolling
+/// formulation's tan(theta/2) <= min(mu_p, mu_g (1 + m g / N)) with N unbounded), far beyond the
+/// translational disc's r cot((alpha_g + alpha_p)/2): 50.0 mm against 25.87 mm for 0.2/0.6 and
+/// 0.6/0.2. For 0.2/0.6 (ground/palm) it rolls first and then slips on the ground.
+#[test]
+fn a_rolling_disc_rolls_and_locks_up_at_r_over_the_smaller_mu() {
+    for mu in [0.15, 0.25, 0.35, 0.45] {
+        let scene = SceneParams::default().with_mu(mu);
+        let s = simulate(&scene, &rolling(Drive::Motion, 30.0), None).unwrap();
+        let x = x_jam(&s);
+        assert!(rel(x, 10.0 / mu) < 1e-3, "mu {mu}: {x}");
+        let m = s.disc_motion.unwrap();
+        assert!(
+            m.rolling_steps > 100 * m.slipping_steps,
+            "mu {mu}: it rolls: {m:?}"
+        );
+    }
+    for (mu_ground, mu_palm, slips) in [(0.2, 0.6, true), (0.6, 0.2, false)] {
+        let scene = SceneParams {
+            mu_ground,
+            mu_palm,
+            ..SceneParams::default()
+        };
+        let s = simulate(&scene, &rolling(Drive::Motion, 30.0), None).unwrap();
+        let x = x_jam(&s);
+        let want = 10.0 / f64::min(mu_ground, mu_palm);
+        assert!(rel(x, want) < 1e-3, "{mu_ground}/{mu_palm}: {x} vs {want}");
+        let m = s.disc_motion.unwrap();
+        assert_eq!(m.slipping_steps > m.rolling_steps, slips, "{m:?}");
+        let slides = simulate(&scene, &nonsmooth(Drive::Motion, 30.0), None).unwrap();
+        let wedge = scene.alpha_ground() + scene.alpha_palm();
+        let x_slides = 10.0 / (0.5 * wedge).tan();
+        assert!(rel(x_jam(&slides), x_slides) < 1e-3, "{slides:?}");
+        assert!(x > 1.9 * x_slides);
+    }
+}
+
+/// At finite push and slow omega the rolling disc jams where the min-norm rolling formulation
+/// says (tan(theta/2) = min(mu_p, mu_g (1 + m g / N))): within 0.2 %.
+#[test]
+fn a_rolling_disc_pushed_slowly_with_a_finite_force_jams_where_min_norm_rolling_says() {
+    use jamchart::minnorm::{Formulation, MinNormSettings, palm};
+    for (mu_ground, mu_palm) in [(0.4, 0.4), (0.2, 0.6), (0.6, 0.2)] {
+        let scene = SceneParams {
+            mu_ground,
+            mu_palm,
+            ..SceneParams::default()
+        };
+        let s = simulate(&scene, &rolling(Drive::Force, 0.5), None).unwrap();
+        let settings = MinNormSettings {
+            formulation: Formulation::Rolling,
+            ..Default::default()
+        };
+        let want = palm::solve(&scene, &settings).unwrap().x_jam_mm.unwrap();
+        let x = x_jam(&s);
+        assert!(
+            rel(x, want) < 2e-3,
+            "{mu_ground}/{mu_palm}: {x} vs min-norm {want}"
+        );
     }
 }

@@ -31,7 +31,9 @@
 //! instead of letting a drift in the gap accumulate. theta_dot is -omega for the motion drive; the
 //! force drive adds the law of a self-locking drive with a limit N_max = F cos(atan mu_palm) on
 //! its normal push: theta_dot = -omega below the limit, in [-omega, 0] at it, 0 above it (the
-//! drive holds). Each step's problem is small (five unknowns) and solved exactly by enumerating
+//! drive holds); when none of these is consistent (a rolling disc coming to rest in the wedge
+//! would, at the limit, turn the palm back) the drive stops below its limit rather than back
+//! off ([`step::DriveMode::Stalls`]). Each step's problem is small (five unknowns) and solved exactly by enumerating
 //! the contact modes ([`step`]): no relaxation of the friction cone, so a sliding contact does
 //! not separate (the artefact of Anitescu's convex relaxation, which makes a contact sliding at
 //! speed u_T open at mu u_T, is absent). The test `the_step_is_a_fixed_point_of_clarabels_tresca_problem`
@@ -57,6 +59,32 @@
 //! ([`LockUp::push_n`]), which grows as the step shrinks (it is about mu_g m g / D with D the
 //! wedge's margin at the last step). With the force drive the palm stalls at its limit and holds;
 //! the jam is the first step in which the disc and the palm are both at rest, and it lasts.
+//!
+//! # The disc free to roll
+//!
+//! With [`DiscMotion::Rolls`] the palm's friction turns the disc, and a rolling disc's moment
+//! balance makes the ground's and the palm's friction forces equal in size. The ground, pressed
+//! by the weight and the push, holds first; the palm contact reaches its cone where
+//! tan(theta/2) = mu_p; and the disc locks up where tan(theta/2) = min(mu_p, mu_g (1 + m g / N))
+//! (the min-norm rolling formulation), i.e. at r / min(mu_g, mu_p) with the motion drive's
+//! unbounded push. Measured at the defaults (motion drive, 30 deg/s, step 0.01 deg):
+//!
+//! ```text
+//! mu_g / mu_p   slides (translational)     rolls
+//! 0.15 / 0.15   66.673 mm                  66.673 mm, rolls (ground sticks) all the way
+//! 0.25 ... 0.45 r/mu + <= 0.06 %           the same, rolls all the way
+//! 0.2 / 0.6     25.869 mm = r cot((a_g + a_p)/2)   50.022 mm: rolls while 0.6 N_B <= 0.2 N_A,
+//!                                                  then slips on the ground, spinning
+//! 0.6 / 0.2     25.869 mm                  50.022 mm, rolls all the way
+//! ```
+//!
+//! So with equal frictions rolling changes nothing (the disc rolls instead of sliding, which is
+//! what a real gripper sees, and jams at the same r/mu), while with unequal frictions the
+//! translational joint, which takes the palm's moment, makes the disc jam at half the distance:
+//! the sum of the friction angles counts for a disc that cannot turn, the smaller one for a disc
+//! that can. With the force drive at 0.5 deg/s and F = 200 N the rolling disc jams within 0.13 %
+//! of the min-norm rolling answer (25.006 / 47.326 / 50.036 mm against 25.000 / 47.296 /
+//! 50.000 mm for 0.4/0.4, 0.2/0.6, 0.6/0.2).
 //!
 //! # Known artefacts
 //!

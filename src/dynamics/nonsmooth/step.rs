@@ -40,6 +40,11 @@ pub enum DriveMode {
     /// theta_dot = 0 and the palm's normal impulse is at or above its limit (a self-locking
     /// drive does not back off).
     Holds,
+    /// theta_dot = 0 with the palm's normal impulse below its limit: the last resort when a disc
+    /// coming to rest in the wedge would, at the limit, turn the palm back, and running would
+    /// need more than the limit. A self-locking drive stops rather than back off. Never carried
+    /// over to the next step's first guess.
+    Stalls,
 }
 
 const CONTACT_MODES: [ContactMode; 4] = [
@@ -103,10 +108,17 @@ impl StepProblem {
         } else {
             &[DriveMode::Runs]
         };
-        if let Some(s) = self.try_modes(first) {
+        if first.2 != DriveMode::Stalls
+            && let Some(s) = self.try_modes(first)
+        {
             return Some(s);
         }
-        for &d in drives {
+        let last: &[DriveMode] = if self.push_limit.is_finite() {
+            &[DriveMode::Stalls]
+        } else {
+            &[]
+        };
+        for &d in drives.iter().chain(last) {
             for g in CONTACT_MODES {
                 for p in CONTACT_MODES {
                     let m = (g, p, d);
@@ -166,7 +178,7 @@ impl StepProblem {
                 m[4][2] = 1.0;
                 m[4][5] = self.push_limit;
             }
-            DriveMode::Holds => m[4][4] = 1.0,
+            DriveMode::Holds | DriveMode::Stalls => m[4][4] = 1.0,
         }
         let z = solve5(m)?;
         let p = [z[0], z[1], z[2], z[3]];
@@ -202,6 +214,7 @@ impl StepProblem {
                 theta_dot <= 1e-6 * self.omega && theta_dot >= -self.omega * (1.0 + 1e-6)
             }
             DriveMode::Holds => p[2] >= self.push_limit - scale_p,
+            DriveMode::Stalls => p[2] >= -scale_p && p[2] <= self.push_limit + scale_p,
         };
         ok.then_some(StepSolution {
             impulse: p,
