@@ -2,7 +2,7 @@
 //!
 //! ```toml
 //! title = "Fig. 3: ..."            # the chart's title
-//! base = "../config/paper.toml"    # parameter set, relative to this file (default shown)
+//! base = "my-params.toml"          # parameter set, relative to this file (default: built-in paper set)
 //! [scene]                          # overrides of the base's [scene] keys
 //! force_n = 200.0
 //! [dynamics]                       # overrides of the base's [dynamics] keys (scenes that simulate)
@@ -27,14 +27,18 @@ use serde::{Deserialize, Serialize};
 use super::contour_map::ContourMapSpec;
 use super::convergence::ConvergenceSpec;
 use super::jam_map::JamMapSpec;
+use super::overrides::{self, Setting};
 use super::sweep::SweepSpec;
 use super::time_series::TimeSeriesSpec;
 use super::vlocator_capacity::VlocatorCapacitySpec;
 use super::vlocator_optimum::VlocatorOptimumSpec;
 use super::work_precision::WorkPrecisionSpec;
-use crate::config::{Config, parse_toml};
+use crate::config::{
+    Config, array_for_table, cut_quotes, keyed, not_a_table, parse_toml, seq_for_struct,
+};
 use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
+use crate::limits;
 use crate::minnorm::MinNormSettings;
 use crate::model::SceneParams;
 
@@ -101,8 +105,36 @@ pub enum ChartSpec {
     VlocatorOptimum(VlocatorOptimumSpec),
 }
 
+impl ChartSpec {
+    /// The `kind` key: jam_map, sweep, contour_map, convergence, time_series, work_precision,
+    /// vlocator_capacity or vlocator_optimum.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            ChartSpec::JamMap(_) => "jam_map",
+            ChartSpec::Sweep(_) => "sweep",
+            ChartSpec::ContourMap(_) => "contour_map",
+            ChartSpec::Convergence(_) => "convergence",
+            ChartSpec::TimeSeries(_) => "time_series",
+            ChartSpec::WorkPrecision(_) => "work_precision",
+            ChartSpec::VlocatorCapacity(_) => "vlocator_capacity",
+            ChartSpec::VlocatorOptimum(_) => "vlocator_optimum",
+        }
+    }
+
+    /// The extension of the data file behind this kind of chart: `json` for maps, `csv` else.
+    pub fn data_extension(&self) -> &'static str {
+        match self {
+            ChartSpec::JamMap(_)
+            | ChartSpec::ContourMap(_)
+            | ChartSpec::VlocatorCapacity(_)
+            | ChartSpec::VlocatorOptimum(_) => "json",
+            _ => "csv",
+        }
+    }
+}
+
 /// A scene file as written.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct SceneFile {
     title: String,
@@ -139,32 +171,109 @@ pub struct Scene {
     pub chart: ChartSpec,
 }
 
-/// The default base parameter set, relative to the scene file's directory.
-pub const DEFAULT_BASE: &str = "../config/paper.toml";
+/// Where a scene comes from: built into the binary, or a file of the user's.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum SceneSource {
+    /// A built-in scene ([`super::builtin::SCENES`]), by name.
+    BuiltIn(String),
+    /// A scene file; the scene is named after the file stem.
+    File(PathBuf),
+}
+
+impl SceneSource {
+    /// The scene's name: the built-in name or the file stem.
+    pub fn name(&self) -> String {
+        match self {
+            SceneSource::BuiltIn(n) => n.clone(),
+            SceneSource::File(p) => p
+                .file_stem()
+                .map_or_else(|| p.display().to_string(), |s| s.to_string_lossy().into()),
+        }
+    }
+
+    /// Reads, overrides (`--set`) and validates the scene.
+    ///
+    /// A `base` is relative to the scene file's folder (to the current folder for a built-in
+    /// scene); without one the built-in paper set (config/paper.toml) is the base.
+    pub fn load(&self, settings: &[Setting]) -> Result<Scene> {
+        let name = self.name();
+        match self {
+            SceneSource::BuiltIn(n) => {
+                let text = super::builtin::scene_text(n).ok_or_else(|| {
+                    Error::invalid(
+                        "scene",
+                        n,
+                        format!(
+                            "not a built-in scene; they are {}",
+                            super::builtin::scene_names().join(", ")
+                        ),
+                    )
+                })?;
+                let label = PathBuf::from(format!("<built-in charts/{n}.toml>"));
+                parse_scene(name, text, &label, Path::new(""), settings)
+            }
+            SceneSource::File(path) => {
+                let text = std::fs::read_to_string(path).map_err(|e| Error::io("read", path, e))?;
+                let dir = path.parent().unwrap_or(Path::new(""));
+                parse_scene(name, &text, path, dir, settings)
+            }
+        }
+    }
+}
 
 /// The scene names in `dir` (the stems of its `*.toml` files), sorted.
 pub fn scene_names(dir: &Path) -> Result<Vec<String>> {
+    Ok(scene_files(dir)?.iter().map(SceneSource::name).collect())
+}
+
+/// The scene files `dir/*.toml`, sorted by name.
+pub fn scene_files(dir: &Path) -> Result<Vec<SceneSource>> {
     let entries = std::fs::read_dir(dir).map_err(|e| Error::io("read", dir, e))?;
-    let mut names = Vec::new();
+    let mut files = Vec::new();
     for entry in entries {
         let path = entry.map_err(|e| Error::io("read", dir, e))?.path();
-        if path.extension().is_some_and(|e| e == "toml")
-            && let Some(stem) = path.file_stem().and_then(|s| s.to_str())
-        {
-            names.push(stem.to_string());
+        if path.extension().is_some_and(|e| e == "toml") && path.file_stem().is_some() {
+            files.push(SceneSource::File(path));
         }
     }
-    names.sort();
-    Ok(names)
+    files.sort_by_key(SceneSource::name);
+    Ok(files)
 }
 
 /// Loads and validates scene `name` from `dir/<name>.toml`.
 pub fn load_scene(dir: &Path, name: &str) -> Result<Scene> {
-    let path = dir.join(format!("{name}.toml"));
-    let text = std::fs::read_to_string(&path).map_err(|e| Error::io("read", &path, e))?;
-    let file: SceneFile = parse_toml(&text, &path)?;
-    let base_path = dir.join(file.base.as_deref().unwrap_or(Path::new(DEFAULT_BASE)));
-    let base = Config::load(&base_path)?;
+    SceneSource::File(dir.join(format!("{name}.toml"))).load(&[])
+}
+
+/// A scene from its text: `path` names it in errors, `dir` resolves its `base`.
+fn parse_scene(
+    name: String,
+    text: &str,
+    path: &Path,
+    dir: &Path,
+    settings: &[Setting],
+) -> Result<Scene> {
+    // The file as written first, so that its own mistakes carry their line.
+    let mut file: SceneFile = parse_toml(text, path)?;
+    if !settings.is_empty() {
+        let mut table: toml::Table = parse_toml(text, path)?;
+        overrides::apply(&mut table, settings)?;
+        file = SceneFile::deserialize(toml::Value::Table(table)).map_err(|e| {
+            let typed: Vec<String> = settings.iter().map(Setting::to_string).collect();
+            Error::invalid(
+                "--set",
+                typed.join(" "),
+                format!(
+                    "scene {name} does not take it: {}; its keys are in charts/README.md",
+                    e.message().trim()
+                ),
+            )
+        })?;
+    }
+    let base = match &file.base {
+        Some(b) => Config::load(&dir.join(b))?,
+        None => super::builtin::paper_config(),
+    };
     let params: SceneParams = apply_overrides(base.scene, &file.scene, "scene")?;
     params.validate()?;
     let min_norm: MinNormSettings = apply_overrides(base.min_norm, &file.min_norm, "min_norm")?;
@@ -173,7 +282,7 @@ pub fn load_scene(dir: &Path, name: &str) -> Result<Scene> {
     dynamics.validate()?;
     file.size.validate()?;
     let scene = Scene {
-        name: name.to_string(),
+        name,
         title: file.title,
         params,
         min_norm,
@@ -181,17 +290,106 @@ pub fn load_scene(dir: &Path, name: &str) -> Result<Scene> {
         size: file.size,
         chart: file.chart,
     };
-    match &scene.chart {
-        ChartSpec::JamMap(s) => s.validate(&scene.params)?,
-        ChartSpec::Sweep(s) => s.validate(&scene.params)?,
-        ChartSpec::ContourMap(s) => s.validate(&scene.params)?,
-        ChartSpec::Convergence(s) => s.validate()?,
-        ChartSpec::TimeSeries(s) => s.validate()?,
-        ChartSpec::WorkPrecision(s) => s.validate()?,
-        ChartSpec::VlocatorCapacity(s) => s.validate()?,
-        ChartSpec::VlocatorOptimum(s) => s.validate()?,
-    }
+    scene.validate_chart()?;
     Ok(scene)
+}
+
+impl Scene {
+    /// Checks the chart's settings against the scene's parameters.
+    pub fn validate_chart(&self) -> Result<()> {
+        match &self.chart {
+            ChartSpec::JamMap(s) => s.validate(&self.params),
+            ChartSpec::Sweep(s) => s.validate(&self.params),
+            ChartSpec::ContourMap(s) => s.validate(&self.params),
+            ChartSpec::Convergence(s) => s.validate(),
+            ChartSpec::TimeSeries(s) => s.validate(),
+            ChartSpec::WorkPrecision(s) => s.validate(),
+            ChartSpec::VlocatorCapacity(s) => s.validate(),
+            ChartSpec::VlocatorOptimum(s) => s.validate(),
+        }?;
+        check_size(self)
+    }
+}
+
+/// The scene's counts against [`crate::limits`]: memory and output estimated from the grid
+/// cells, sweep points or series rows, and the lengths of its lists.
+fn check_size(scene: &Scene) -> Result<()> {
+    const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
+    let cells =
+        |x: &crate::grid::GridAxis, y: &crate::grid::GridAxis| x.count as f64 * y.count as f64;
+    match &scene.chart {
+        ChartSpec::JamMap(s) => {
+            limits::check_items(CELLS, cells(&s.x_axis, &s.y_axis), limits::JAM_MAP_CELL)
+        }
+        ChartSpec::ContourMap(s) => {
+            let levels = [
+                ("chart.x_jam_levels_mm", s.x_jam_levels_mm.len()),
+                ("chart.theta_jam_levels_deg", s.theta_jam_levels_deg.len()),
+            ];
+            for (key, n) in levels {
+                if n > limits::MAX_LEVELS {
+                    return Err(Error::invalid(
+                        key,
+                        format!("{n} levels"),
+                        format!("at most {} levels", limits::MAX_LEVELS),
+                    ));
+                }
+            }
+            limits::check_items(CELLS, cells(&s.x_axis, &s.y_axis), limits::CONTOUR_MAP_CELL)
+        }
+        ChartSpec::Sweep(s) => {
+            limits::check_items("chart.axis.count", s.axis.count as f64, limits::SWEEP_POINT)
+        }
+        ChartSpec::TimeSeries(s) => {
+            let rows = limits::series_rows(
+                scene.params.start_angle_deg,
+                scene.dynamics.omega_deg_s,
+                s.series_dt_s,
+            );
+            limits::check_items(
+                "chart.series_dt_s and dynamics.omega_deg_s",
+                rows,
+                limits::SERIES_ROW,
+            )
+        }
+        ChartSpec::WorkPrecision(s) => {
+            let lists = [
+                ("chart.tolerances", s.tolerances.len()),
+                ("chart.min_norm_tolerances", s.min_norm_tolerances.len()),
+            ];
+            for (key, n) in lists {
+                if n > limits::MAX_TOLERANCES {
+                    return Err(Error::invalid(
+                        key,
+                        format!("{n} tolerances"),
+                        format!("at most {} tolerances", limits::MAX_TOLERANCES),
+                    ));
+                }
+            }
+            Ok(())
+        }
+        ChartSpec::Convergence(_) => Ok(()),
+        // A contoured map as the contour map is (its cells hold less: two capacities).
+        ChartSpec::VlocatorCapacity(s) => {
+            limits::check_count(
+                "chart.levels_over_w",
+                s.levels_over_w.len(),
+                limits::MAX_LEVELS,
+                "levels",
+            )?;
+            let n = s.x_axis.count as f64 * s.y_axis.count as f64;
+            limits::check_items(CELLS, n, limits::CONTOUR_MAP_CELL)
+        }
+        // At most five curves (one per marker) of two sweeps.
+        ChartSpec::VlocatorOptimum(s) => {
+            let n = (s.direction_axis.count + s.load_axis.count) as f64 * s.mus.len() as f64;
+            limits::check_items(
+                "chart.direction_axis.count + chart.load_axis.count",
+                n,
+                limits::SWEEP_POINT,
+            )
+        }
+    }
 }
 
 /// `base` with the keys of the override table of `[section]` replaced; unknown keys are refused.
@@ -206,16 +404,41 @@ where
     for (key, value) in overrides {
         table.insert(key.clone(), value.clone());
     }
-    T::deserialize(toml::Value::Table(table)).map_err(|e| {
-        Error::invalid(
-            section,
-            e.message().trim(),
-            format!(
-                "a [{section}] override is unknown or has the wrong type; the keys are those of \
-                 [{section}] in config/paper.toml"
-            ),
-        )
-    })
+    let hint = format!("the keys are those of [{section}] in config/paper.toml");
+    let merged = toml::Value::Table(table);
+    let value: T = serde_path_to_error::deserialize(merged.clone()).map_err(|e| {
+        let key = e.path().to_string();
+        if let Some(k) = seq_for_struct::<T>(&merged, &key) {
+            let written = value_at(overrides, &k).map_or(String::new(), toml::Value::to_string);
+            return Error::Unsupported(not_a_table(&format!("{section}.{k}"), &written));
+        }
+        let written = value_at(overrides, &key).map(toml::Value::to_string);
+        let key = format!("{section}.{key}");
+        let message = cut_quotes(e.into_inner().message().trim());
+        Error::Unsupported(format!(
+            "{}; {hint}",
+            keyed(Some(&key), written.as_deref(), &message)
+        ))
+    })?;
+    if let Some(key) = array_for_table(&toml::Value::Table(overrides.clone()), &value, section) {
+        let written = value_at(overrides, key.split_once('.').map_or("", |(_, k)| k));
+        let written = written.map_or(String::new(), toml::Value::to_string);
+        return Err(Error::Unsupported(not_a_table(&key, &written)));
+    }
+    Ok(value)
+}
+
+/// The value at a dotted key of a table (array indices are not followed).
+fn value_at<'a>(t: &'a toml::Table, key: &str) -> Option<&'a toml::Value> {
+    let (head, rest) = match key.split_once('.') {
+        Some((h, r)) => (h, Some(r)),
+        None => (key, None),
+    };
+    match (t.get(head)?, rest) {
+        (v, None) => Some(v),
+        (toml::Value::Table(inner), Some(r)) => value_at(inner, r),
+        (v, Some(_)) => Some(v),
+    }
 }
 
 #[cfg(test)]
@@ -252,6 +475,25 @@ mod tests {
             .to_string();
         assert!(
             msg.contains("dynamics") && msg.contains("after_jam"),
+            "{msg}"
+        );
+    }
+
+    /// Regression (issue 13): a `[dynamics]` override of the wrong type said `invalid dynamics
+    /// = invalid type: unit variant, expected string only`; an array stood in for a table.
+    #[test]
+    fn overrides_of_the_wrong_type_name_the_key_and_value() {
+        let t: toml::Table = toml::from_str("rtol = \"x\"\n").unwrap();
+        let msg = apply_overrides(DynamicsParams::default(), &t, "dynamics")
+            .unwrap_err()
+            .to_string();
+        assert!(msg.starts_with("dynamics.rtol = \"x\": "), "{msg}");
+        let t: toml::Table = toml::from_str("qp = [1, 2]\n").unwrap();
+        let msg = apply_overrides(MinNormSettings::default(), &t, "min_norm")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            msg.contains("min_norm.qp = [1, 2]: expected a table"),
             "{msg}"
         );
     }

@@ -8,16 +8,18 @@ use clap::{Args, ValueEnum};
 use indicatif::ProgressBar;
 use rayon::prelude::*;
 
-use crate::atomic::write_atomic;
-use crate::charts::{self, Formats, Rendered, Scene};
+use crate::atomic::{Output, check_all, write_all};
+use crate::charts::overrides::Setting;
+use crate::charts::{self, Formats, Rendered, Scene, SceneSource};
 use crate::error::{Error, Result};
 
 /// Flags of `render`.
 #[derive(Debug, Clone, Args)]
 pub struct RenderArgs {
-    /// Scenes to render, by name (default: every scene in --scenes-dir).
+    /// Scenes: built-in names, scene files or folders of them (default: every built-in scene).
     ///
-    /// Names are the file stems of the scene files, e.g. fig3 for charts/fig3.toml.
+    /// `jamchart scenes` lists the built-in ones (fig3, fig6, ...). A path to NAME.toml adds a
+    /// scene of your own (its keys are in charts/README.md); a folder adds every *.toml in it.
     #[arg(value_name = "SCENE")]
     pub scenes: Vec<String>,
     /// Output directory (created if missing).
@@ -26,9 +28,16 @@ pub struct RenderArgs {
     /// Pictures to write; the data file (.csv or .json) is always written.
     #[arg(long, value_enum, default_value_t = RenderFormat::Both)]
     pub format: RenderFormat,
-    /// Directory of the scene files NAME.toml.
-    #[arg(long, value_name = "DIR", default_value = "charts")]
-    pub scenes_dir: PathBuf,
+    /// Override a scene key in every scene rendered, e.g. mu_palm=0.6 (repeatable).
+    ///
+    /// A bare key is a [scene], [dynamics] or [min_norm] key (mu sets both frictions); other
+    /// keys take their section: chart.x_axis.count=51, size.width_px=2000, title="...". The
+    /// value is TOML; a bare word is a string.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<Setting>,
+    /// Folder whose scene files replace the built-in scenes (names then refer to its files).
+    #[arg(long, value_name = "DIR")]
+    pub scenes_dir: Option<PathBuf>,
 }
 
 /// Picture formats of `render`.
@@ -52,47 +61,142 @@ impl From<RenderFormat> for Formats {
     }
 }
 
-/// The scenes named in `wanted` (all when empty), loaded and validated before anything is drawn.
-pub fn load_scenes(dir: &Path, wanted: &[String]) -> Result<Vec<Scene>> {
-    let known = charts::scene_names(dir)?;
-    let mut names = if wanted.is_empty() {
-        known.clone()
-    } else {
-        wanted.to_vec()
+/// The scenes named in `wanted` (all known ones when empty): a known name (built in, or in
+/// `dir` when given), a scene file, or a folder of scene files.
+pub fn scene_sources(wanted: &[String], dir: Option<&Path>) -> Result<Vec<SceneSource>> {
+    let known = match dir {
+        Some(d) => charts::scene_files(d)?,
+        None => charts::builtin::scene_names()
+            .into_iter()
+            .map(SceneSource::BuiltIn)
+            .collect(),
     };
-    // A scene named twice is drawn once: two renders would write the same files at once.
-    let mut seen = std::collections::HashSet::new();
-    names.retain(|n| seen.insert(n.clone()));
-    for n in &names {
-        if !known.contains(n) {
+    if let Some(d) = dir
+        && known.is_empty()
+    {
+        return Err(nothing_to_render(d));
+    }
+    if wanted.is_empty() {
+        return Ok(known);
+    }
+    let mut sources: Vec<SceneSource> = Vec::new();
+    for w in wanted {
+        let path = Path::new(w);
+        if let Some(s) = known.iter().find(|s| s.name() == *w) {
+            sources.push(s.clone());
+        } else if path.is_dir() {
+            sources.extend(charts::scene_files(path)?);
+        } else if path.is_file() || w.ends_with(".toml") {
+            sources.push(SceneSource::File(path.to_path_buf()));
+        } else {
+            let names: Vec<String> = known.iter().map(SceneSource::name).collect();
             return Err(Error::invalid(
                 "scene",
-                n,
-                format!("unknown scene; the known scenes are {}", known.join(", ")),
+                w,
+                format!(
+                    "unknown scene; the known scenes are {}, or give a scene file or folder by path",
+                    names.join(", ")
+                ),
             ));
         }
     }
-    names.iter().map(|n| charts::load_scene(dir, n)).collect()
+    // A scene named twice is drawn once: two renders would write the same files at once.
+    let mut unique: Vec<SceneSource> = Vec::new();
+    for s in sources {
+        match unique.iter().find(|u| u.name() == s.name()) {
+            Some(u) if *u == s => {}
+            Some(u) => {
+                return Err(Error::invalid(
+                    "scene",
+                    s.name(),
+                    format!(
+                        "two scenes of this name ({u:?} and {s:?}) would write the same files; \
+                         rename one"
+                    ),
+                ));
+            }
+            None => unique.push(s),
+        }
+    }
+    match wanted.iter().find(|w| Path::new(w).is_dir()) {
+        Some(folder) if unique.is_empty() => Err(nothing_to_render(Path::new(folder))),
+        _ => Ok(unique),
+    }
 }
 
-/// Writes the rendered files of one scene into `out`; returns their paths.
-pub fn write_rendered(out: &Path, r: &Rendered) -> Result<Vec<PathBuf>> {
-    let mut files = vec![(r.data.extension, &r.data.bytes)];
-    files.extend(r.svg.as_ref().map(|b| ("svg", b)));
-    files.extend(r.png.as_ref().map(|b| ("png", b)));
+/// A folder with no scene file: rendering nothing and exiting 0 would hide the mistake.
+fn nothing_to_render(dir: &Path) -> Error {
+    Error::invalid(
+        "scenes folder",
+        dir.display(),
+        "holds no scene files (NAME.toml): nothing to render; give the folder of the scenes, or \
+         leave out --scenes-dir for the built-in ones",
+    )
+}
+
+/// The scenes named in `wanted` (see [`scene_sources`]) with `settings` applied, loaded and
+/// validated before anything is drawn.
+pub fn load_scenes(
+    wanted: &[String],
+    dir: Option<&Path>,
+    settings: &[Setting],
+) -> Result<Vec<Scene>> {
+    scene_sources(wanted, dir)?
+        .iter()
+        .map(|s| s.load(settings))
+        .collect()
+}
+
+/// The files of one scene in `out`: data first, then the pictures `formats` asks for.
+pub fn output_paths(
+    out: &Path,
+    name: &str,
+    data_extension: &str,
+    formats: Formats,
+) -> Vec<PathBuf> {
+    let mut exts = vec![data_extension];
+    exts.extend(formats.svg().then_some("svg"));
+    exts.extend(formats.png().then_some("png"));
+    exts.iter()
+        .map(|ext| out.join(format!("{name}.{ext}")))
+        .collect()
+}
+
+/// Writes the rendered files of all scenes into `out` as one set (all or none); returns the
+/// paths per scene.
+pub fn write_rendered(out: &Path, rendered: &[Rendered]) -> Result<Vec<Vec<PathBuf>>> {
+    let mut files: Vec<(PathBuf, &[u8])> = Vec::new();
     let mut paths = Vec::new();
-    for (ext, bytes) in files {
-        let path = out.join(format!("{}.{ext}", r.name));
-        write_atomic(&path, bytes)?;
-        paths.push(path);
+    for r in rendered {
+        let all = [
+            (r.data.extension, Some(&r.data.bytes)),
+            ("svg", r.svg.as_ref()),
+            ("png", r.png.as_ref()),
+        ];
+        let mine: Vec<(PathBuf, &[u8])> = all
+            .into_iter()
+            .filter_map(|(ext, b)| Some((out.join(format!("{}.{ext}", r.name)), b?.as_slice())))
+            .collect();
+        paths.push(mine.iter().map(|(p, _)| p.clone()).collect());
+        files.extend(mine);
     }
+    let set: Vec<Output> = files
+        .iter()
+        .map(|(path, bytes)| Output { path, bytes })
+        .collect();
+    write_all(&set)?;
     Ok(paths)
 }
 
 pub fn run(a: &RenderArgs) -> Result<String> {
-    let scenes = load_scenes(&a.scenes_dir, &a.scenes)?;
-    std::fs::create_dir_all(&a.out)
-        .map_err(|e| Error::io("create the output directory", &a.out, e))?;
+    let scenes = load_scenes(&a.scenes, a.scenes_dir.as_deref(), &a.set)?;
+    let formats = Formats::from(a.format);
+    // Every output path is checked before anything is computed.
+    let planned: Vec<PathBuf> = scenes
+        .iter()
+        .flat_map(|s| output_paths(&a.out, &s.name, s.chart.data_extension(), formats))
+        .collect();
+    check_all(planned.iter().map(PathBuf::as_path))?;
     // A bar only for a person watching: not in CI logs, not into pipes.
     let show = std::io::stderr().is_terminal() && std::env::var_os("CI").is_none();
     let bar = if show {
@@ -100,20 +204,52 @@ pub fn run(a: &RenderArgs) -> Result<String> {
     } else {
         ProgressBar::hidden()
     };
-    let formats = Formats::from(a.format);
-    let written: Vec<Result<Vec<PathBuf>>> = scenes
+    let rendered: Vec<Result<Rendered>> = scenes
         .par_iter()
         .map(|s| {
-            let paths = charts::render(s, formats).and_then(|r| write_rendered(&a.out, &r));
+            let r = charts::render(s, formats);
             bar.inc(1);
-            paths
+            r
         })
         .collect();
     bar.finish_and_clear();
+    // The first failure in scene order, so the message does not depend on the thread count.
+    let rendered = rendered.into_iter().collect::<Result<Vec<Rendered>>>()?;
+    let written = write_rendered(&a.out, &rendered)?;
     let mut text = String::new();
     for (scene, paths) in scenes.iter().zip(written) {
-        let list: Vec<String> = paths?.iter().map(|p| p.display().to_string()).collect();
+        let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
         let _ = writeln!(text, "{}: {}", scene.name, list.join(" "));
+    }
+    Ok(text)
+}
+
+/// Flags of `scenes`.
+#[derive(Debug, Clone, Args)]
+pub struct ScenesArgs {
+    /// Scenes to list: names, scene files or folders (default: every built-in scene).
+    #[arg(value_name = "SCENE")]
+    pub scenes: Vec<String>,
+}
+
+/// One line per scene: name, chart kind, title.
+pub fn list(a: &ScenesArgs) -> Result<String> {
+    let scenes = load_scenes(&a.scenes, None, &[])?;
+    let name_w = scenes.iter().map(|s| s.name.len()).max().unwrap_or(0);
+    let kind_w = scenes
+        .iter()
+        .map(|s| s.chart.kind().len())
+        .max()
+        .unwrap_or(0);
+    let mut text = String::new();
+    for s in &scenes {
+        let _ = writeln!(
+            text,
+            "{:name_w$}  {:kind_w$}  {}",
+            s.name,
+            s.chart.kind(),
+            s.title
+        );
     }
     Ok(text)
 }
