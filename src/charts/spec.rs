@@ -13,6 +13,7 @@
 //! height_px = 900
 //! [chart]                          # the chart kind and its own keys
 //! kind = "jam_map"                 # jam_map | sweep | contour_map | convergence | time_series | work_precision
+//!                                  # | vlocator_capacity | vlocator_optimum
 //! ```
 //!
 //! The `[chart]` keys of each kind are documented on [`JamMapSpec`], [`SweepSpec`],
@@ -29,6 +30,8 @@ use super::jam_map::JamMapSpec;
 use super::overrides::{self, Setting};
 use super::sweep::SweepSpec;
 use super::time_series::TimeSeriesSpec;
+use super::vlocator_capacity::VlocatorCapacitySpec;
+use super::vlocator_optimum::VlocatorOptimumSpec;
 use super::work_precision::WorkPrecisionSpec;
 use crate::config::{
     Config, array_for_table, cut_quotes, keyed, not_a_table, parse_toml, seq_for_struct,
@@ -96,10 +99,15 @@ pub enum ChartSpec {
     /// Error of x_jam against cost per integrator, and the min-norm tolerance against its
     /// error (the accuracy study).
     WorkPrecision(WorkPrecisionSpec),
+    /// Holding capacity of a V-locator over included angle and load direction.
+    VlocatorCapacity(VlocatorCapacitySpec),
+    /// Optimum included angle of a V-locator against load direction and load.
+    VlocatorOptimum(VlocatorOptimumSpec),
 }
 
 impl ChartSpec {
-    /// The `kind` key: jam_map, sweep, contour_map, convergence, time_series or work_precision.
+    /// The `kind` key: jam_map, sweep, contour_map, convergence, time_series, work_precision,
+    /// vlocator_capacity or vlocator_optimum.
     pub fn kind(&self) -> &'static str {
         match self {
             ChartSpec::JamMap(_) => "jam_map",
@@ -108,13 +116,18 @@ impl ChartSpec {
             ChartSpec::Convergence(_) => "convergence",
             ChartSpec::TimeSeries(_) => "time_series",
             ChartSpec::WorkPrecision(_) => "work_precision",
+            ChartSpec::VlocatorCapacity(_) => "vlocator_capacity",
+            ChartSpec::VlocatorOptimum(_) => "vlocator_optimum",
         }
     }
 
     /// The extension of the data file behind this kind of chart: `json` for maps, `csv` else.
     pub fn data_extension(&self) -> &'static str {
         match self {
-            ChartSpec::JamMap(_) | ChartSpec::ContourMap(_) => "json",
+            ChartSpec::JamMap(_)
+            | ChartSpec::ContourMap(_)
+            | ChartSpec::VlocatorCapacity(_)
+            | ChartSpec::VlocatorOptimum(_) => "json",
             _ => "csv",
         }
     }
@@ -291,6 +304,8 @@ impl Scene {
             ChartSpec::Convergence(s) => s.validate(),
             ChartSpec::TimeSeries(s) => s.validate(),
             ChartSpec::WorkPrecision(s) => s.validate(),
+            ChartSpec::VlocatorCapacity(s) => s.validate(),
+            ChartSpec::VlocatorOptimum(s) => s.validate(),
         }?;
         check_size(self)
     }
@@ -354,6 +369,26 @@ fn check_size(scene: &Scene) -> Result<()> {
             Ok(())
         }
         ChartSpec::Convergence(_) => Ok(()),
+        // A contoured map as the contour map is (its cells hold less: two capacities).
+        ChartSpec::VlocatorCapacity(s) => {
+            limits::check_count(
+                "chart.levels_over_w",
+                s.levels_over_w.len(),
+                limits::MAX_LEVELS,
+                "levels",
+            )?;
+            let n = s.x_axis.count as f64 * s.y_axis.count as f64;
+            limits::check_items(CELLS, n, limits::CONTOUR_MAP_CELL)
+        }
+        // At most five curves (one per marker) of two sweeps.
+        ChartSpec::VlocatorOptimum(s) => {
+            let n = (s.direction_axis.count + s.load_axis.count) as f64 * s.mus.len() as f64;
+            limits::check_items(
+                "chart.direction_axis.count + chart.load_axis.count",
+                n,
+                limits::SWEEP_POINT,
+            )
+        }
     }
 }
 

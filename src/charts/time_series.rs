@@ -90,10 +90,7 @@ impl TimeSeries {
         };
         // A failed run would be drawn as empty panels: the render fails instead, saying why.
         if let Some(f) = &sol.failure {
-            return Err(failed(format!(
-                "the integrator gave up at t = {:.4} s: {}",
-                f.t_s, f.reason
-            )));
+            return Err(failed(format!("the integrator gave up: {f}")));
         }
         if sol.series.len() < 2 {
             return Err(failed(format!(

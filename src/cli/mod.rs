@@ -16,8 +16,6 @@ use std::io::Write;
 
 use clap::{Parser, Subcommand};
 
-pub use args::{ModelChoice, OutputFormat, SceneArgs, TableFormat};
-
 use crate::error::Error;
 
 /// Predicts where a pushed circular workpiece jams and draws design charts.
