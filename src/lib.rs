@@ -63,6 +63,7 @@ pub mod atomic;
 pub mod charts;
 pub mod cli;
 pub mod config;
+pub mod csv_out;
 pub mod dynamics;
 pub mod error;
 pub mod grid;

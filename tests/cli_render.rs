@@ -205,3 +205,24 @@ fn own_scene_file_renders_from_its_path_and_set_overrides_it() {
     assert_eq!(bad.status.code(), Some(2));
     assert!(stderr(&bad).contains("radius_mm"), "{}", stderr(&bad));
 }
+
+/// Data files held `2.4746092876045168e1`, `4.08e-1` and `-0.00000`; a spreadsheet wants plain
+/// decimals. Every numeric cell of these CSVs is one, and no cell is a negative zero.
+#[test]
+fn csv_cells_are_plain_decimals() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = jamchart(
+        dir.path(),
+        &["render", "fig4", "fig5", "fig7b", "--format", "svg"],
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    for name in ["fig4.csv", "fig5.csv", "fig7b.csv"] {
+        let text = std::fs::read_to_string(dir.path().join("out").join(name)).unwrap();
+        for cell in text.lines().skip(1).flat_map(|l| l.split(',')) {
+            if let Ok(v) = cell.parse::<f64>() {
+                let zero_ok = v != 0.0 || cell == "0";
+                assert!(!cell.contains(['e', 'E']) && zero_ok, "{name}: cell {cell:?}");
+            }
+        }
+    }
+}

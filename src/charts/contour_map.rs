@@ -18,7 +18,8 @@ use super::models::Models;
 use super::spec::Scene;
 use super::style::{self, INK, LineKind};
 use super::{
-    DataFile, axis_label, grid_lines, grid_polygons, param_symbol, param_unit, scene_subtitle,
+    DataFile, axis_label, cells_csv, grid_lines, grid_polygons, param_symbol, param_unit,
+    scene_subtitle,
 };
 use crate::error::{Error, Result};
 use crate::grid::{self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, Quantity};
@@ -251,6 +252,21 @@ impl ContourMap {
             "x_jam_mm": g.x_jam_mm, "theta_jam_deg": g.theta_jam_deg,
             "x_gap_to_rigid_limit_pct": self.gap_pct,
         }))
+    }
+
+    /// The cells as long-format CSV: the axis values, x_jam_mm and, where computed,
+    /// theta_jam_deg and x_gap_to_rigid_limit_pct.
+    pub fn cells(&self) -> DataFile {
+        let g = &self.grid;
+        let mut columns = Vec::new();
+        columns.extend(g.x_jam_mm.clone().map(|v| ("x_jam_mm", v)));
+        columns.extend(g.theta_jam_deg.clone().map(|v| ("theta_jam_deg", v)));
+        let gap = self
+            .gap_pct
+            .as_ref()
+            .map(|v| v.iter().copied().map(Some).collect());
+        columns.extend(gap.map(|v| ("x_gap_to_rigid_limit_pct", v)));
+        cells_csv(g, self.spec.x_axis.param, self.spec.y_axis.param, &columns)
     }
 
     /// Draws the map on `root`.

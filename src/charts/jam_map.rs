@@ -18,7 +18,7 @@ use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
-use super::{DataFile, axis_label, grid_polygons, param_symbol, scene_subtitle};
+use super::{DataFile, axis_label, cells_csv, grid_polygons, param_symbol, scene_subtitle};
 use crate::error::{Error, Result};
 use crate::grid::{
     self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, Quantity,
@@ -172,6 +172,14 @@ impl JamMap {
             })),
         });
         DataFile::json(&doc)
+    }
+
+    /// The cells of the margin grid as long-format CSV (None when the regions are not drawn).
+    pub fn cells(&self) -> Option<DataFile> {
+        let g = self.grid.as_ref()?;
+        let margin = g.margin_n.as_ref()?.iter().copied().map(Some).collect();
+        let (x, y) = (self.spec.x_axis.param, self.spec.y_axis.param);
+        Some(cells_csv(g, x, y, &[("margin_n", margin)]))
     }
 
     fn axes(&self) -> (PlotAxis, PlotAxis) {

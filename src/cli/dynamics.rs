@@ -12,7 +12,6 @@ use super::args::Model;
 use super::solve::ModelRecord;
 use crate::atomic::write_atomic;
 use crate::config::Config;
-use crate::dynamics::jam::SeriesRow;
 use crate::dynamics::{self, Drive, Method};
 use crate::error::Result;
 use crate::model::JamStatus;
@@ -204,7 +203,10 @@ pub fn record(config: &Config, series: Option<&Path>) -> Result<ModelRecord> {
     let s = dynamics::simulate(&config.scene, &config.dynamics, dt)?;
     let elapsed_s = t0.elapsed().as_secs_f64();
     if let Some(path) = series {
-        write_atomic(path, series_csv(&s.series).as_bytes())?;
+        write_atomic(
+            path,
+            &crate::charts::time_series::series_csv(&config.scene, &config.dynamics, &s.series),
+        )?;
     }
     let mut details = match serde_json::to_value(&s) {
         Ok(Value::Object(m)) => m,
@@ -274,28 +276,4 @@ pub fn render_details(s: &mut String, r: &ModelRecord) {
         num("rhs_evals").unwrap_or(0.0),
         num("jacobian_evals").unwrap_or(0.0)
     );
-}
-
-/// The time series as CSV, one row per sample, units in the header.
-pub fn series_csv(rows: &[SeriesRow]) -> String {
-    let mut s = String::from(
-        "t_s,theta_deg,x_mm,x_dot_mm_s,penetration_mm,normal_n,palm_friction_n,\
-         ground_normal_n,ground_friction_n\n",
-    );
-    for r in rows {
-        let _ = writeln!(
-            s,
-            "{:.7},{:.6},{:.7},{:.6},{:.7},{:.5},{:.5},{:.5},{:.5}",
-            r.t_s,
-            r.theta_deg,
-            r.x_mm,
-            r.x_dot_mm_s,
-            r.penetration_mm,
-            r.normal_n,
-            r.palm_friction_n,
-            r.ground_normal_n,
-            r.ground_friction_n
-        );
-    }
-    s
 }

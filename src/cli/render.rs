@@ -132,6 +132,7 @@ pub fn load_scenes(
 /// Writes the rendered files of one scene into `out`; returns their paths.
 pub fn write_rendered(out: &Path, r: &Rendered) -> Result<Vec<PathBuf>> {
     let mut files = vec![(r.data.extension, &r.data.bytes)];
+    files.extend(r.cells.as_ref().map(|c| (c.extension, &c.bytes)));
     files.extend(r.svg.as_ref().map(|b| ("svg", b)));
     files.extend(r.png.as_ref().map(|b| ("png", b)));
     let mut paths = Vec::new();

@@ -119,7 +119,8 @@ fn render_statics(s: &mut String, d: &Map<String, Value>) {
     ) {
         let _ = writeln!(
             s,
-            "  unlimited push (F -> inf, a motion-driven palm): theta = {t:.3} deg, x = {x:.3} mm"
+            "  x_rigid   = {x:.3} mm, theta_rigid = {t:.3} deg: the limit of an unlimited push \
+             (F -> inf, a motion-driven palm)"
         );
     }
     if d.get("lifts_off").and_then(Value::as_bool) == Some(true)
