@@ -221,7 +221,10 @@ fn csv_cells_are_plain_decimals() {
         for cell in text.lines().skip(1).flat_map(|l| l.split(',')) {
             if let Ok(v) = cell.parse::<f64>() {
                 let zero_ok = v != 0.0 || cell == "0";
-                assert!(!cell.contains(['e', 'E']) && zero_ok, "{name}: cell {cell:?}");
+                assert!(
+                    !cell.contains(['e', 'E']) && zero_ok,
+                    "{name}: cell {cell:?}"
+                );
             }
         }
     }

@@ -16,7 +16,7 @@ use super::axes::{self, DrawResult, Margins, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
 use super::spec::Scene;
-use super::style::{self, INK, LineKind};
+use super::style::{self, LineKind};
 use super::{
     DataFile, axis_label, cells_csv, grid_lines, grid_polygons, param_symbol, param_unit,
     scene_subtitle,
@@ -286,7 +286,7 @@ impl ContourMap {
         let chart = axes::build_chart(root, &x, &y, m)?;
         let area = chart.plotting_area();
         // One band below the first level, one between each pair, one above the last.
-        let greys = style::band_greys(self.spec.x_jam_levels_mm.len() + 1);
+        let greys = style::band_colors(self.spec.x_jam_levels_mm.len() + 1);
         for (rings, grey) in self.bands.iter().zip(&greys) {
             for ring in rings {
                 area.draw(&Polygon::new(ring.clone(), grey.filled()))?;
@@ -300,7 +300,7 @@ impl ContourMap {
             .into();
         for (level, paths) in &self.x_jam_lines {
             for p in paths {
-                style::draw_line(area, p, LineKind::Solid, INK)?;
+                style::draw_line(area, p, LineKind::Solid, LineKind::Solid.color())?;
             }
             // Right of the plot where lines are flat; further left for lines that leave the
             // plot there (near an edge).
@@ -336,7 +336,12 @@ impl ContourMap {
         let levels = &self.spec.theta_jam_levels_deg;
         for (i, (level, paths)) in self.theta_lines.iter().enumerate() {
             for p in paths {
-                style::draw_line(chart.plotting_area(), p, LineKind::Dotted, INK)?;
+                style::draw_line(
+                    chart.plotting_area(),
+                    p,
+                    LineKind::Dotted,
+                    LineKind::Dotted.color(),
+                )?;
             }
             let frac = 0.95 - 0.06 * (levels.len() - 1 - i) as f64;
             if let Some((_, at)) = at_height(paths, chart, y, frac) {
@@ -362,7 +367,12 @@ impl ContourMap {
         let xa = &self.spec.x_axis;
         for paths in &self.settle_lines {
             for p in paths {
-                style::draw_line(chart.plotting_area(), p, LineKind::Dashed, INK)?;
+                style::draw_line(
+                    chart.plotting_area(),
+                    p,
+                    LineKind::Dashed,
+                    LineKind::Dashed.color(),
+                )?;
             }
             let Some(((u, _), at)) = at_height(paths, chart, y, 0.06) else {
                 continue;

@@ -247,7 +247,7 @@ impl JamMap {
             .iter()
             .filter_map(|(v, p)| p.theta_jam_deg.map(|t| (x.to_plot(*v), y.to_plot(t))))
             .collect();
-        style::draw_line(area, &curve, LineKind::Solid, INK)?;
+        style::draw_line(area, &curve, LineKind::Solid, LineKind::Solid.color())?;
         self.draw_region_labels(root, &chart)?;
         axes::draw_frame(root, &chart, &x, &y)?;
         if self.spec.has(JamMapLayer::PositionScale) {
@@ -345,7 +345,7 @@ impl JamMap {
         let at = |a: f64, b: f64| axes::pixel(c, x, y, a, b);
         let (corner, bottom, left, right) = (at(v, t), at(v, y.min), at(x.min, t), at(x.max, t));
         for line in [[bottom, corner], [corner, left], [corner, right]] {
-            style::draw_line(root, &line, LineKind::Dashed, INK)?;
+            style::draw_line(root, &line, LineKind::Dashed, LineKind::Dashed.color())?;
         }
         root.draw(&Circle::new(corner, 5, INK.filled()))?;
         let num = |s: &str, p: (i32, i32)| {

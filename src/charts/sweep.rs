@@ -13,7 +13,7 @@ use super::axes::{self, DrawResult, Margins, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
 use super::spec::Scene;
-use super::style::{self, INK, LineKind, Marker};
+use super::style::{self, LineKind, Marker};
 use super::sweep_layers;
 use super::{DataFile, axis_label, scene_subtitle_with};
 use crate::csv_out::{Dec, dec, to_csv_with_header};
@@ -255,7 +255,7 @@ impl Sweep {
                     .filter_map(|p| panel.value(p).map(|v| (x.to_plot(p.at), y.to_plot(v))))
                     .collect();
                 match s.style {
-                    SeriesStyle::Line(k) => style::draw_line(area, &pts, k, INK)?,
+                    SeriesStyle::Line(k) => style::draw_line(area, &pts, k, k.color())?,
                     SeriesStyle::Points(mk) => {
                         for p in pts {
                             style::draw_marker(area, mk, p)?;
