@@ -61,11 +61,14 @@ pub fn margin_n(p: &SceneParams, theta: f64) -> f64 {
 pub struct StaticsSolution {
     /// Outcome, decided in the order beyond_reach (the disc starts past the palm's end),
     /// never_jams, too_weak, jammed_at_start, beyond_reach (the jam lies past it), jams.
+    #[serde(skip)] // shared by every model: the record carries it
     pub status: JamStatus,
     /// Palm angle at the jam in degrees (the start angle if jammed at start; None if it never jams
     /// or the jam is beyond reach).
+    #[serde(skip)] // shared by every model: the record carries it
     pub theta_jam_deg: Option<f64>,
     /// Disc position at the jam in mm, r cot(theta_jam/2) (None as for `theta_jam_deg`).
+    #[serde(skip)] // shared by every model: the record carries it
     pub x_jam_mm: Option<f64>,
     /// The F -> infinity limit of theta_jam in degrees, alpha_g + alpha_p: what a palm driven by
     /// prescribed motion reaches (the classic self-locking wedge).
@@ -210,7 +213,7 @@ mod tests {
 
     #[test]
     fn errata_worked_example() {
-        // ERRATA.md: m = 1 kg, g = 9.806, r = 10 mm, F = 200 N, mu = 0.4.
+        // The crate docs' corrected Eq. 1 example: m = 1 kg, g = 9.806, r = 10 mm, F = 200 N, mu = 0.4.
         let s = solve(&SceneParams::default());
         assert_eq!(s.status, JamStatus::Jams);
         assert!((s.theta_jam_deg.unwrap() - 44.646).abs() < 5e-4);

@@ -110,7 +110,7 @@ fn bad_dynamics_settings_exit_2_naming_key_and_flag() {
         (&["--rtol", "1"], "rtol", "--rtol"),
         (&["--rtol", "0"], "rtol", "--rtol"),
         (&["--atol", "2"], "atol", "--atol"),
-        (&["--mass", "0"], "mass_kg", "--mass"),
+        (&["--mass", "-1"], "mass_kg", "--mass"),
     ];
     for (flags, key, flag) in cases {
         let mut args = vec!["solve", "--model", "dynamics"];
@@ -251,4 +251,32 @@ fn accuracy_names_the_setting_of_a_bad_tolerance() {
             stderr(&o)
         );
     }
+}
+
+/// Regression (issue 13): `solve --model all --mass 0` refused the whole command because the
+/// dynamics need a mass, although the statics and the min-norm model are defined for a
+/// weightless disc. The dynamics now say so in their own result; the others answer.
+#[test]
+fn a_model_that_cannot_run_a_scene_says_so_and_the_others_answer() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &["solve", "--model", "all", "--mass", "0", "--format", "json"],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let doc: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let r = doc["results"].as_array().unwrap();
+    assert_eq!(
+        (r[0]["status"].as_str(), r[1]["status"].as_str()),
+        (Some("jams"), Some("jams"))
+    );
+    assert_eq!(r[2]["status"], "outside_model");
+    assert_eq!(r[2]["outside_model"]["reason"], "needs_mass");
+    let o = jamchart(dir.path(), &["solve", "--model", "dynamics", "--mass", "0"]);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(
+        stdout(&o).contains("needs a disc with mass"),
+        "{}",
+        stdout(&o)
+    );
 }

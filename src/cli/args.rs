@@ -6,6 +6,7 @@ use clap::{Args, ValueEnum};
 
 use crate::config::Config;
 use crate::error::Result;
+use crate::models::ModelKind;
 
 /// Scene flags: each overrides the same key of `--config FILE` (or of the defaults).
 #[derive(Debug, Clone, Default, Args)]
@@ -117,31 +118,12 @@ pub enum ModelChoice {
 
 impl ModelChoice {
     /// The models to run, in the order they are printed.
-    pub fn models(self) -> &'static [Model] {
+    pub fn models(self) -> &'static [ModelKind] {
         match self {
-            ModelChoice::Statics => &[Model::Statics],
-            ModelChoice::MinNorm => &[Model::MinNorm],
-            ModelChoice::Dynamics => &[Model::Dynamics],
-            ModelChoice::All => &[Model::Statics, Model::MinNorm, Model::Dynamics],
-        }
-    }
-}
-
-/// One model, as `--model` names it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Model {
-    Statics,
-    MinNorm,
-    Dynamics,
-}
-
-impl Model {
-    /// The `model` key of a result: statics, min-norm or dynamics.
-    pub fn name(self) -> &'static str {
-        match self {
-            Model::Statics => "statics",
-            Model::MinNorm => "min-norm",
-            Model::Dynamics => "dynamics",
+            ModelChoice::Statics => &[ModelKind::Statics],
+            ModelChoice::MinNorm => &[ModelKind::MinNorm],
+            ModelChoice::Dynamics => &[ModelKind::Dynamics],
+            ModelChoice::All => &ModelKind::ALL,
         }
     }
 }

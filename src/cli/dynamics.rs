@@ -3,21 +3,15 @@
 
 use std::fmt::Write as _;
 use std::path::Path;
-use std::time::Instant;
 
 use clap::Args;
-use serde_json::{Map, Value, json};
+use serde::Serialize;
 
-use super::args::Model;
-use super::solve::ModelRecord;
 use crate::atomic::write_atomic;
 use crate::config::Config;
-use crate::dynamics::{self, Drive, Method};
+use crate::dynamics::{Drive, DynamicsParams, DynamicsSolution, Method};
 use crate::error::Result;
 use crate::model::JamStatus;
-
-/// Sampling interval of `--series` in s: 0.2 ms resolves the collapse at the jam (a few ms).
-const SERIES_DT_S: f64 = 2e-4;
 
 /// Dynamics flags: each overrides the same key of the `[dynamics]` section.
 #[derive(Debug, Clone, Default, Args)]
@@ -196,84 +190,81 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
     })
 }
 
-/// Simulates the scene; with `series`, also writes the time series there (atomically).
-pub fn record(config: &Config, series: Option<&Path>) -> Result<ModelRecord> {
-    let t0 = Instant::now();
-    let dt = series.map(|_| SERIES_DT_S);
-    let s = dynamics::simulate(&config.scene, &config.dynamics, dt)?;
-    let elapsed_s = t0.elapsed().as_secs_f64();
-    if let Some(path) = series {
-        write_atomic(
-            path,
-            &crate::charts::time_series::series_csv(&config.scene, &config.dynamics, &s.series),
-        )?;
+/// The dynamics' own JSON keys in `solve`'s record: the solution's, the series file and the
+/// `[dynamics]` settings in force, so that the answer can be reproduced.
+#[derive(Debug, Serialize)]
+pub struct Record<'a> {
+    #[serde(flatten)]
+    solution: &'a DynamicsSolution,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    series: Option<String>,
+    settings: &'a DynamicsParams,
+}
+
+/// The JSON keys of `s`, simulated with `settings`, its series written to `series`.
+pub fn record<'a>(
+    s: &'a DynamicsSolution,
+    settings: &'a DynamicsParams,
+    series: Option<&Path>,
+) -> Record<'a> {
+    Record {
+        solution: s,
+        series: series.map(|p| p.display().to_string()),
+        settings,
     }
-    let mut details = match serde_json::to_value(&s) {
-        Ok(Value::Object(m)) => m,
-        _ => Map::new(),
-    };
-    for k in ["status", "theta_jam_deg", "x_jam_mm"] {
-        details.shift_remove(k);
-    }
-    if let Some(path) = series {
-        details.insert("series".into(), json!(path.display().to_string()));
-    }
-    // The [dynamics] settings in force, so that the answer can be reproduced.
-    details.insert("settings".into(), json!(config.dynamics));
-    Ok(ModelRecord {
-        model: Model::Dynamics.name(),
-        status: s.status,
-        theta_jam_deg: s.theta_jam_deg,
-        x_jam_mm: s.x_jam_mm,
-        elapsed_s,
-        details,
-    })
+}
+
+/// Writes the time series of `s`, simulated for `config`, to `path` as CSV (atomically), with
+/// the columns of render's fig5.csv.
+pub fn write_series(config: &Config, s: &DynamicsSolution, path: &Path) -> Result<()> {
+    let csv = crate::charts::time_series::series_csv(&config.scene, &config.dynamics, &s.series);
+    write_atomic(path, &csv)
 }
 
 /// The dynamics' own lines under the shared status lines of `solve`: jam time, trust, work.
-pub fn render_details(s: &mut String, r: &ModelRecord) {
-    let d = &r.details;
-    let num = |k: &str| d.get(k).and_then(Value::as_f64);
-    let text = |k: &str| d.get(k).and_then(Value::as_str).unwrap_or("?").to_string();
-    if r.status == JamStatus::Inaccurate
-        && let (Some(t), Some(x)) = (r.theta_jam_deg, r.x_jam_mm)
+pub fn render_details(s: &mut String, d: &DynamicsSolution) {
+    if d.status == JamStatus::Inaccurate
+        && let (Some(t), Some(x)) = (d.theta_jam_deg, d.x_jam_mm)
     {
         let _ = writeln!(s, "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm");
     }
-    if let Some(t) = num("t_jam_s") {
+    if let Some(t) = d.t_jam_s {
         let _ = writeln!(
             s,
             "  t_jam     = {t:.4} s     time of the jam from the start of the push"
         );
     }
-    if let Some(e) = num("x_jam_error_mm") {
+    if let Some(e) = d.x_jam_error_mm {
         let _ = writeln!(
             s,
             "  x_jam error estimate {e:.2e} mm (second run at a tenth of the tolerances)"
         );
     }
-    if let Some(x) = num("x_stiction_mm") {
+    if let Some(x) = d.x_stiction_mm {
         let _ = writeln!(
             s,
             "  ground contact enters stiction (slip < V_s) at x = {x:.3} mm"
         );
     }
-    if let Some(c) = d.get("cross_check").and_then(Value::as_str) {
+    if let Some(c) = &d.cross_check {
         let _ = writeln!(s, "  inaccurate: {c}");
     }
-    if let Some(f) = d.get("failure").filter(|f| !f.is_null()) {
-        let t = f.get("t_s").and_then(Value::as_f64).unwrap_or(f64::NAN);
-        let why = f.get("reason").and_then(Value::as_str).unwrap_or("?");
-        let _ = writeln!(s, "  the integrator gave up at t = {t:.4} s: {why}");
+    if let Some(f) = &d.failure {
+        let _ = writeln!(
+            s,
+            "  the integrator gave up at t = {:.4} s: {}",
+            f.t_s, f.reason
+        );
     }
     let _ = writeln!(
         s,
         "  {} drive, {}: {} steps ({} rejected), {} rhs and {} Jacobian evaluations",
-        text("drive"),
-        text("method"),
-        num("steps").unwrap_or(0.0),
-        num("rejected_steps").unwrap_or(0.0),
-        num("rhs_evals").unwrap_or(0.0),
-        num("jacobian_evals").unwrap_or(0.0)
+        d.drive.as_str(),
+        d.method.as_str(),
+        d.steps,
+        d.rejected_steps,
+        d.rhs_evals,
+        d.jacobian_evals
     );
 }
+

@@ -1,16 +1,14 @@
-//! The min-norm model's record for `solve`: its JSON keys and its lines of text.
+//! The min-norm model in `solve`: its JSON keys, its lines of text and the `--trace`.
 
 use std::fmt::Write;
-use std::time::Instant;
 
 use clap::ValueEnum;
-use serde_json::{Map, Value, json};
+use serde::Serialize;
 
-use super::args::Model;
-use super::solve::ModelRecord;
 use crate::config::Config;
 use crate::error::Result;
-use crate::minnorm::{Formulation, palm};
+use crate::minnorm::qp::{Backend, ContactSolution, HoldStatus, TracePoint};
+use crate::minnorm::{Formulation, PalmSolution, palm};
 
 /// `--formulation`: how the min-norm model carries the disc's moment.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -30,104 +28,137 @@ impl From<FormulationArg> for Formulation {
     }
 }
 
-/// Solves the scene by the min-norm model; with `trace`, adds clarabel's convergence trace at
-/// theta_jam (at the start angle when there is no jam).
-pub fn record(config: &Config, trace: bool) -> Result<ModelRecord> {
-    let t0 = Instant::now();
-    let s = palm::solve(&config.scene, &config.min_norm)?;
-    let elapsed_s = t0.elapsed().as_secs_f64();
-    let mut details = Map::new();
-    details.insert("iterations".into(), json!(s.iterations));
-    details.insert("solves".into(), json!(s.solves));
-    details.insert("formulation".into(), json!(s.formulation.as_str()));
-    details.insert("backend".into(), json!(s.backend));
-    details.insert("undetermined_solves".into(), json!(s.undetermined_solves));
-    let contacts: Vec<Value> = s
+/// The min-norm model's own JSON keys in `solve`'s record.
+#[derive(Debug, Serialize)]
+pub struct Record<'a> {
+    iterations: u32,
+    solves: u32,
+    formulation: &'static str,
+    backend: Backend,
+    undetermined_solves: u32,
+    contacts_at_jam: Vec<ContactRecord>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    trace_theta_deg: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    trace_status: Option<HoldStatus>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    trace: Option<&'a [TracePoint]>,
+}
+
+/// One contact's force at the jam, in its normal-tangent frame.
+#[derive(Debug, Serialize)]
+struct ContactRecord {
+    contact: &'static str,
+    normal_n: f64,
+    tangential_n: f64,
+    utilisation: f64,
+}
+
+/// clarabel's convergence trace at one palm angle (the paper's Fig. 4), for `--trace`.
+#[derive(Debug, Clone)]
+pub struct Trace {
+    /// The palm angle traced, in deg: theta_jam, or the start angle when there is no jam.
+    pub theta_deg: f64,
+    /// clarabel's answer there, with its per-iteration trace.
+    pub solution: ContactSolution,
+}
+
+/// clarabel's trace at the jam of `s` (at the start angle when there is none).
+pub fn trace(config: &Config, s: &PalmSolution) -> Result<Trace> {
+    let theta_deg = s.theta_jam_deg.unwrap_or(config.scene.start_angle_deg);
+    let solution = palm::trace_at(&config.scene, theta_deg, &config.min_norm)?;
+    Ok(Trace {
+        theta_deg,
+        solution,
+    })
+}
+
+/// The JSON keys of `s` (and of its trace).
+pub fn record<'a>(s: &PalmSolution, trace: Option<&'a Trace>) -> Record<'a> {
+    let contacts_at_jam = s
         .at_jam
         .iter()
         .flat_map(|sol| {
             sol.forces
                 .iter()
                 .zip(s.formulation.contact_names())
-                .map(|(f, name)| {
-                    json!({
-                        "contact": name,
-                        "normal_n": f.normal_n,
-                        "tangential_n": f.tangential_n[0],
-                        "utilisation": f.utilisation,
-                    })
+                .map(|(f, name)| ContactRecord {
+                    contact: name,
+                    normal_n: f.normal_n,
+                    tangential_n: f.tangential_n[0],
+                    utilisation: f.utilisation,
                 })
         })
         .collect();
-    details.insert("contacts_at_jam".into(), Value::Array(contacts));
-    if trace {
-        let at = s.theta_jam_deg.unwrap_or(config.scene.start_angle_deg);
-        let t = palm::trace_at(&config.scene, at, &config.min_norm)?;
-        details.insert("trace_theta_deg".into(), json!(at));
-        details.insert("trace_status".into(), json!(t.status));
-        details.insert("trace".into(), json!(t.trace));
+    Record {
+        iterations: s.iterations,
+        solves: s.solves,
+        formulation: s.formulation.as_str(),
+        backend: s.backend,
+        undetermined_solves: s.undetermined_solves,
+        contacts_at_jam,
+        trace_theta_deg: trace.map(|t| t.theta_deg),
+        trace_status: trace.map(|t| t.solution.status),
+        trace: trace.map(|t| t.solution.trace.as_slice()),
     }
-    Ok(ModelRecord {
-        model: Model::MinNorm.name(),
-        status: s.status,
-        theta_jam_deg: s.theta_jam_deg,
-        x_jam_mm: s.x_jam_mm,
-        elapsed_s,
-        details,
-    })
 }
 
 /// The min-norm lines under the shared status lines of `solve`'s text output.
-pub fn render_details(out: &mut String, d: &Map<String, Value>) {
-    let num = |k: &str| d.get(k).and_then(Value::as_f64).unwrap_or(0.0);
-    let text = |k: &str| d.get(k).and_then(Value::as_str).unwrap_or("").to_string();
+pub fn render_details(out: &mut String, s: &PalmSolution, trace: Option<&Trace>) {
     let _ = writeln!(
         out,
         "  formulation {}: {} solves by {} ({} iterations, {} undetermined)",
-        text("formulation"),
-        num("solves"),
-        text("backend"),
-        num("iterations"),
-        num("undetermined_solves"),
+        s.formulation.as_str(),
+        s.solves,
+        backend_name(s.backend),
+        s.iterations,
+        s.undetermined_solves,
     );
-    if let Some(Value::Array(contacts)) = d.get("contacts_at_jam") {
-        for c in contacts {
-            // Roundoff below the printed digits shows as 0.000, not -0.000.
-            let g = |k: &str| {
-                let v = c.get(k).and_then(Value::as_f64).unwrap_or(0.0);
-                if v.abs() < 5e-4 { 0.0 } else { v }
-            };
+    // Roundoff below the printed digits shows as 0.000, not -0.000.
+    let g = |v: f64| if v.abs() < 5e-4 { 0.0 } else { v };
+    if let Some(sol) = &s.at_jam {
+        for (f, name) in sol.forces.iter().zip(s.formulation.contact_names()) {
             let _ = writeln!(
                 out,
-                "  at the jam, contact {}: f_n = {:.3} N, f_t = {:.3} N, friction utilisation {:.4}",
-                c.get("contact").and_then(Value::as_str).unwrap_or("?"),
-                g("normal_n"),
-                g("tangential_n"),
-                g("utilisation"),
+                "  at the jam, contact {name}: f_n = {:.3} N, f_t = {:.3} N, friction utilisation {:.4}",
+                g(f.normal_n),
+                g(f.tangential_n[0]),
+                g(f.utilisation),
             );
         }
     }
-    if let Some(Value::Array(points)) = d.get("trace") {
+    if let Some(t) = trace {
         let _ = writeln!(
             out,
             "  clarabel trace at theta = {:.6} deg ({}):\n  {:>4}  {:>18}  {:>10}  {:>10}",
-            num("trace_theta_deg"),
-            text("trace_status"),
+            t.theta_deg,
+            hold_name(t.solution.status),
             "iter",
             "phi^2 [N^2]",
             "res_primal",
             "res_dual"
         );
-        for p in points {
-            let g = |k: &str| p.get(k).and_then(Value::as_f64).unwrap_or(0.0);
+        for p in &t.solution.trace {
             let _ = writeln!(
                 out,
                 "  {:>4}  {:>18.9}  {:>10.3e}  {:>10.3e}",
-                g("iteration"),
-                g("objective_n2"),
-                g("res_primal"),
-                g("res_dual")
+                p.iteration, p.objective_n2, p.res_primal, p.res_dual
             );
         }
+    }
+}
+
+fn backend_name(b: Backend) -> &'static str {
+    match b {
+        Backend::Exact => "exact",
+        Backend::Clarabel => "clarabel",
+    }
+}
+
+fn hold_name(h: HoldStatus) -> &'static str {
+    match h {
+        HoldStatus::Held => "held",
+        HoldStatus::NotHeld => "not_held",
+        HoldStatus::Undetermined => "undetermined",
     }
 }

@@ -10,6 +10,7 @@ pub mod render;
 mod solve;
 mod sweep;
 mod table;
+mod vlocator;
 
 use std::io::Write;
 
@@ -68,6 +69,14 @@ pub enum Command {
     /// other integrator at a tight tolerance, the median wall time of --runs runs, steps,
     /// right-hand-side and Jacobian evaluations; failures are listed with their reason.
     Accuracy(accuracy::AccuracyArgs),
+    /// Hold a disc in a V-block: verdict, flank forces, holding capacity, optimum angle.
+    ///
+    /// A disc of weight m g in a V of two flat flanks (a symmetric V by --included-angle, any
+    /// V by --flank-angles), with an external force P at --load-angle, at the centre or at a
+    /// rim point. Prints whether the V holds it (wedged, slips, lifts_off or held), the
+    /// minimum-norm flank forces (N), the largest load P_max (N) held in that direction and
+    /// the included angle that best survives errors in load and friction.
+    Vlocator(vlocator::VlocatorArgs),
 }
 
 /// Runs the command line and returns the process exit code: 0 success, 2 bad input or failure.
@@ -83,6 +92,7 @@ pub fn main() -> i32 {
         Command::Scenes(a) => render::list(a),
         Command::Sweep(a) => sweep::run(a),
         Command::Accuracy(a) => accuracy::run(a),
+        Command::Vlocator(a) => vlocator::run(a),
     };
     match result {
         Ok(text) => {
@@ -139,10 +149,12 @@ fn one_line(rendered: &str) -> String {
 /// The error message, with the flag that sets a key named beside the key.
 fn describe(e: &Error) -> String {
     match e {
-        Error::InvalidValue { key, value, reason } => match args::flag_for_key(key) {
-            Some(flag) => format!("invalid {key} = {value} (flag {flag}): {reason}"),
-            None => e.to_string(),
-        },
+        Error::InvalidValue { key, value, reason } => {
+            match args::flag_for_key(key).or_else(|| vlocator::flag_for_key(key)) {
+                Some(flag) => format!("invalid {key} = {value} (flag {flag}): {reason}"),
+                None => e.to_string(),
+            }
+        }
         _ => e.to_string(),
     }
 }

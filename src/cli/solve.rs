@@ -1,20 +1,23 @@
-//! `jamchart solve`: the read-off of theta_jam and x_jam.
+//! `jamchart solve`: the read-off of theta_jam and x_jam, every model through the port
+//! ([`crate::models`]); text and JSON are printed from the typed solutions.
 
 use std::fmt::Write;
 use std::path::PathBuf;
-use std::time::Instant;
 
 use clap::Args;
 use serde::Serialize;
-use serde_json::{Map, Value, json};
 
-use super::args::{Model, ModelChoice, OutputFormat, SceneArgs};
+use super::args::{ModelChoice, OutputFormat, SceneArgs};
 use super::dynamics::{self, DynamicsArgs};
 use super::min_norm;
 use crate::config::Config;
 use crate::error::{Error, Result};
-use crate::model::JamStatus;
-use crate::statics;
+use crate::model::{JamStatus, SceneParams};
+use crate::models::{self, Detail, ModelKind, ModelSpec, OutsideModel, Solution};
+use crate::statics::{self, StaticsSolution};
+
+/// Sampling interval of `--series` in s: 0.2 ms resolves the collapse at the jam (a few ms).
+const SERIES_DT_S: f64 = 2e-4;
 
 /// Flags of `solve`.
 #[derive(Debug, Clone, Args)]
@@ -49,16 +52,39 @@ pub struct SolveArgs {
     pub trace: bool,
 }
 
-/// One model's answer as `solve` prints it; `details` holds the model's own extra keys.
-#[derive(Debug, Clone, Serialize)]
-pub struct ModelRecord {
-    pub model: &'static str,
-    pub status: JamStatus,
-    pub theta_jam_deg: Option<f64>,
-    pub x_jam_mm: Option<f64>,
-    pub elapsed_s: f64,
+/// One model's answer with what `solve` asked of it beyond the port: the min-norm trace.
+struct Answer {
+    solution: Solution,
+    trace: Option<min_norm::Trace>,
+}
+
+/// One model's answer in `solve`'s JSON: the keys every model shares, then its own.
+#[derive(Serialize)]
+struct Record<'a> {
+    model: &'static str,
+    status: JamStatus,
+    theta_jam_deg: Option<f64>,
+    x_jam_mm: Option<f64>,
+    elapsed_s: f64,
     #[serde(flatten)]
-    pub details: Map<String, Value>,
+    detail: DetailRecord<'a>,
+}
+
+/// A model's own keys.
+#[derive(Serialize)]
+#[serde(untagged)]
+enum DetailRecord<'a> {
+    Statics(&'a StaticsSolution),
+    MinNorm(min_norm::Record<'a>),
+    Dynamics(dynamics::Record<'a>),
+    Outside { outside_model: &'a OutsideModel },
+}
+
+/// The JSON document of `solve --format json`.
+#[derive(Serialize)]
+struct Document<'a> {
+    inputs: &'a SceneParams,
+    results: Vec<Record<'a>>,
 }
 
 pub fn run(a: &SolveArgs) -> Result<String> {
@@ -68,63 +94,73 @@ pub fn run(a: &SolveArgs) -> Result<String> {
             c.min_norm.formulation = f.into();
         }
     })?;
-    let models = a.model.models();
-    if a.series.is_some() && !models.contains(&Model::Dynamics) {
+    let kinds = a.model.models();
+    if a.series.is_some() && !kinds.contains(&ModelKind::Dynamics) {
         return Err(Error::Unsupported(
             "--series needs the dynamics: add --model dynamics".into(),
         ));
     }
-    let results = models
-        .iter()
-        .map(|m| match m {
-            Model::Statics => Ok(statics_record(&config)),
-            Model::MinNorm => min_norm::record(&config, a.trace),
-            Model::Dynamics => dynamics::record(&config, a.series.as_deref()),
-        })
-        .collect::<Result<Vec<ModelRecord>>>()?;
+    let mut answers = Vec::new();
+    for &kind in kinds {
+        let mut spec = kind.with(&config.min_norm, &config.dynamics);
+        if let ModelSpec::Dynamics { series_dt_s, .. } = &mut spec {
+            *series_dt_s = a.series.as_ref().map(|_| SERIES_DT_S);
+        }
+        let solution = models::solve(&spec, &config.scene)?;
+        let trace = match &solution.detail {
+            Detail::MinNorm(s) if a.trace => Some(min_norm::trace(&config, s)?),
+            _ => None,
+        };
+        if let (Detail::Dynamics(s), Some(path)) = (&solution.detail, &a.series) {
+            dynamics::write_series(&config, s, path)?;
+        }
+        answers.push(Answer { solution, trace });
+    }
     Ok(match a.format {
         OutputFormat::Json => {
-            let doc = json!({ "inputs": config.scene, "results": results });
+            let doc = Document {
+                inputs: &config.scene,
+                results: answers.iter().map(|x| record(x, &config, a)).collect(),
+            };
             serde_json::to_string_pretty(&doc).expect("plain structs serialise") + "\n"
         }
-        OutputFormat::Text => render_text(&config, &results),
+        OutputFormat::Text => render_text(&config, &answers),
     })
 }
 
-/// The closed form's record: the statics' keys plus the F -> inf limit and lift-off.
-fn statics_record(config: &Config) -> ModelRecord {
-    let t0 = Instant::now();
-    let s = statics::solve(&config.scene);
-    let elapsed_s = t0.elapsed().as_secs_f64();
-    let mut details = Map::new();
-    details.insert("theta_rigid_deg".into(), json!(s.theta_rigid_deg));
-    details.insert("x_rigid_mm".into(), json!(s.x_rigid_mm));
-    details.insert("lift_off_above_deg".into(), json!(s.lift_off_above_deg));
-    details.insert("lifts_off".into(), json!(s.lifts_off));
-    ModelRecord {
-        model: Model::Statics.name(),
+/// The JSON record of one answer.
+fn record<'a>(x: &'a Answer, config: &'a Config, a: &SolveArgs) -> Record<'a> {
+    let s = &x.solution;
+    let detail = match &s.detail {
+        Detail::Statics(d) => DetailRecord::Statics(d),
+        Detail::MinNorm(d) => DetailRecord::MinNorm(min_norm::record(d, x.trace.as_ref())),
+        Detail::Dynamics(d) => {
+            DetailRecord::Dynamics(dynamics::record(d, &config.dynamics, a.series.as_deref()))
+        }
+        Detail::Outside(why) => DetailRecord::Outside { outside_model: why },
+    };
+    Record {
+        model: s.model.as_str(),
         status: s.status,
         theta_jam_deg: s.theta_jam_deg,
         x_jam_mm: s.x_jam_mm,
-        elapsed_s,
-        details,
+        elapsed_s: s.elapsed_s,
+        detail,
     }
 }
 
 /// The statics' own lines: the F -> inf limit and a lift-off warning.
-fn render_statics(s: &mut String, d: &Map<String, Value>) {
-    if let (Some(t), Some(x)) = (
-        d.get("theta_rigid_deg").and_then(Value::as_f64),
-        d.get("x_rigid_mm").and_then(Value::as_f64),
-    ) {
+fn render_statics(s: &mut String, d: &StaticsSolution) {
+    if let Some(x) = d.x_rigid_mm {
         let _ = writeln!(
             s,
-            "  x_rigid   = {x:.3} mm, theta_rigid = {t:.3} deg: the limit of an unlimited push \
-             (F -> inf, a motion-driven palm)"
+            "  x_rigid   = {x:.3} mm, theta_rigid = {:.3} deg: the limit of an unlimited push \
+             (F -> inf, a motion-driven palm)",
+            d.theta_rigid_deg
         );
     }
-    if d.get("lifts_off").and_then(Value::as_bool) == Some(true)
-        && let Some(above) = d.get("lift_off_above_deg").and_then(Value::as_f64)
+    if d.lifts_off
+        && let Some(above) = d.lift_off_above_deg
     {
         let _ = writeln!(
             s,
@@ -134,7 +170,7 @@ fn render_statics(s: &mut String, d: &Map<String, Value>) {
     }
 }
 
-fn render_text(config: &Config, results: &[ModelRecord]) -> String {
+fn render_text(config: &Config, answers: &[Answer]) -> String {
     let p = &config.scene;
     let mut s = String::new();
     let _ = writeln!(
@@ -150,7 +186,8 @@ fn render_text(config: &Config, results: &[ModelRecord]) -> String {
         p.start_angle_deg,
         p.palm_length_mm
     );
-    for r in results {
+    for x in answers {
+        let r = &x.solution;
         let _ = writeln!(s, "\n{}: {}", r.model, r.status);
         match (r.status, r.theta_jam_deg, r.x_jam_mm) {
             (JamStatus::Jams, Some(t), Some(x)) => {
@@ -170,6 +207,14 @@ fn render_text(config: &Config, results: &[ModelRecord]) -> String {
                     "  the disc does not move: it is held already at the start angle {t:.3} deg{at}"
                 );
             }
+            (JamStatus::TooWeak, ..) => {
+                let _ = writeln!(
+                    s,
+                    "  the push cannot move the disc at any palm angle: it takes more than \
+                     m g sin(atan mu_ground) = {:.4} N (--force), or less ground friction",
+                    statics::least_push_n(p)
+                );
+            }
             (JamStatus::NeverJams, ..) => {
                 let _ = writeln!(
                     s,
@@ -179,17 +224,20 @@ fn render_text(config: &Config, results: &[ModelRecord]) -> String {
             (JamStatus::BeyondReach, ..) => {
                 let _ = writeln!(
                     s,
-                    "  the jam point lies beyond the palm's end ({} mm): the disc leaves the palm first",
+                    "  the jam point lies beyond the palm's end ({} mm), or the disc starts past \
+                     it: the palm loses the disc first",
                     p.palm_length_mm
                 );
             }
             _ => {}
         }
-        match r.model {
-            "statics" => render_statics(&mut s, &r.details),
-            "min-norm" => min_norm::render_details(&mut s, &r.details),
-            "dynamics" => dynamics::render_details(&mut s, r),
-            _ => {}
+        match &r.detail {
+            Detail::Statics(d) => render_statics(&mut s, d),
+            Detail::MinNorm(d) => min_norm::render_details(&mut s, d, x.trace.as_ref()),
+            Detail::Dynamics(d) => dynamics::render_details(&mut s, d),
+            Detail::Outside(why) => {
+                let _ = writeln!(s, "  not run: {why}");
+            }
         }
         if r.elapsed_s < 1e-3 {
             let _ = writeln!(s, "  took {:.1} us", r.elapsed_s * 1e6);
@@ -197,8 +245,11 @@ fn render_text(config: &Config, results: &[ModelRecord]) -> String {
             let _ = writeln!(s, "  took {:.1} ms", r.elapsed_s * 1e3);
         }
     }
-    if results.len() > 1 {
-        s.push_str(&super::guidance::guidance(config, results));
+    if answers.len() > 1 {
+        s.push_str(&super::guidance::guidance(
+            config,
+            answers.iter().map(|x| &x.solution),
+        ));
     }
     s
 }

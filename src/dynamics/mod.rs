@@ -95,10 +95,13 @@ pub struct Failure {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DynamicsSolution {
     /// Outcome: jams, jammed_at_start, never_jams, beyond_reach, inaccurate or integrator_failed.
+    #[serde(skip)] // shared by every model: the record carries it
     pub status: JamStatus,
     /// Palm angle at the jam (speed-ratio reading) in deg.
+    #[serde(skip)] // shared by every model: the record carries it
     pub theta_jam_deg: Option<f64>,
     /// Disc position at the jam in mm.
+    #[serde(skip)] // shared by every model: the record carries it
     pub x_jam_mm: Option<f64>,
     /// Time of the jam in s.
     pub t_jam_s: Option<f64>,
