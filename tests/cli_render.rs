@@ -33,7 +33,7 @@ fn render_one_scene_writes_picture_and_data_and_nothing_else() {
         .collect();
     files.sort();
     // No temporary file is left behind, and no other scene is rendered.
-    assert_eq!(files, ["fig7b.csv", "fig7b.png", "fig7b.svg"]);
+    assert_eq!(files, ["fig7b.csv", "fig7b.png", "fig7b.svg", "index.html"]);
     let csv = std::fs::read_to_string(dir.path().join("o/fig7b.csv")).unwrap();
     assert!(
         csv.starts_with("layer,force_n,x_jam_mm,theta_jam_deg\n"),
@@ -174,10 +174,15 @@ fn render_in_an_empty_folder_draws_every_built_in_scene() {
     );
     let out = jamchart(dir.path(), &["render"]);
     assert!(out.status.success(), "{}", stderr(&out));
+    let index = std::fs::read_to_string(dir.path().join("out/index.html")).unwrap();
     for n in &names {
         for ext in ["svg", "png"] {
             let f = dir.path().join(format!("out/{n}.{ext}"));
             assert!(f.exists(), "{} missing", f.display());
+            assert!(
+                index.contains(&format!("href=\"{n}.{ext}\"")),
+                "index.html lacks {n}.{ext}"
+            );
         }
     }
 }

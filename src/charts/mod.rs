@@ -30,6 +30,7 @@ pub mod axes;
 pub mod builtin;
 pub mod contour_map;
 pub mod convergence;
+pub mod gallery;
 pub mod jam_map;
 pub mod legend;
 pub mod models;

@@ -267,4 +267,3 @@ pub fn render_details(s: &mut String, d: &DynamicsSolution) {
         d.jacobian_evals
     );
 }
-

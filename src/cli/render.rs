@@ -166,10 +166,20 @@ pub fn run(a: &RenderArgs) -> Result<String> {
         .collect();
     bar.finish_and_clear();
     let mut text = String::new();
+    let mut entries = Vec::new();
     for (scene, paths) in scenes.iter().zip(written) {
-        let list: Vec<String> = paths?.iter().map(|p| p.display().to_string()).collect();
+        let paths = paths?;
+        let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
         let _ = writeln!(text, "{}: {}", scene.name, list.join(" "));
+        let files = paths
+            .iter()
+            .filter_map(|p| p.file_name().map(|f| f.to_string_lossy().into_owned()))
+            .collect();
+        entries.push(charts::gallery::Entry { scene, files });
     }
+    let index = a.out.join("index.html");
+    write_atomic(&index, charts::gallery::index_html(&entries).as_bytes())?;
+    let _ = writeln!(text, "gallery: {}", index.display());
     Ok(text)
 }
 
