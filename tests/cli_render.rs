@@ -154,7 +154,7 @@ fn a_scene_named_twice_is_rendered_once() {
         .map(|e| e.unwrap().file_name().to_string_lossy().to_string())
         .collect();
     files.sort();
-    assert_eq!(files, ["fig7a.csv", "fig7a.png", "fig7a.svg"]);
+    assert_eq!(files, ["fig7a.csv", "fig7a.png", "fig7a.svg", "index.html"]);
 }
 
 /// Scenes used to be read from ./charts, so `render` failed outside the repository and after
