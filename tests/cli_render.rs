@@ -206,6 +206,22 @@ fn own_scene_file_renders_from_its_path_and_set_overrides_it() {
     let b = std::fs::read_to_string(dir.path().join("b/shaft.csv")).unwrap();
     assert_eq!(a.lines().count(), b.lines().count());
     assert_ne!(a, b, "--set force_n=80 changed nothing");
+    // fig3's axis mu sets both frictions: a fixed palm friction needs a mu_ground axis.
+    let palm = ["render", "fig3", "--set", "mu_palm=0.6", "--out", "c"];
+    let refused = jamchart(dir.path(), &palm);
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(
+        stderr(&refused).contains("chart.x_axis.param=mu_ground"),
+        "{}",
+        stderr(&refused)
+    );
+    let fixed = [
+        &palm[..],
+        &["--set", "chart.x_axis.param=mu_ground", "--format", "svg"],
+    ]
+    .concat();
+    let out = jamchart(dir.path(), &fixed);
+    assert!(out.status.success(), "{}", stderr(&out));
     let bad = jamchart(dir.path(), &["render", "fig3", "--set", "radious=3"]);
     assert_eq!(bad.status.code(), Some(2));
     assert!(stderr(&bad).contains("radius_mm"), "{}", stderr(&bad));
