@@ -67,10 +67,12 @@ pub enum Formats {
 }
 
 impl Formats {
-    fn svg(self) -> bool {
+    /// Whether an SVG is wanted.
+    pub fn svg(self) -> bool {
         self != Formats::Png
     }
-    fn png(self) -> bool {
+    /// Whether a PNG is wanted.
+    pub fn png(self) -> bool {
         self != Formats::Svg
     }
 }
