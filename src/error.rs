@@ -11,17 +11,24 @@ pub enum Error {
     /// A parameter is out of its valid range. `key` is the TOML key (the CLI adds the flag).
     #[error("invalid {key} = {value}: {reason}")]
     InvalidValue {
+        /// The TOML key, with its section where it has one (e.g. `dynamics.rtol`).
         key: String,
+        /// The value as given, cut to a readable length.
         value: String,
+        /// What a valid value is.
         reason: String,
     },
 
     /// A TOML file does not parse or has an unknown key.
     #[error("{path}:{line}:{column}: {message}")]
     Config {
+        /// The file.
         path: PathBuf,
+        /// 1-based line of the offending text.
         line: usize,
+        /// 1-based column of the offending text.
         column: usize,
+        /// The parser's message, naming the key.
         message: String,
     },
 
@@ -32,17 +39,24 @@ pub enum Error {
         crate::limits::human_bytes(*limit_bytes)
     )]
     TooLarge {
+        /// The setting that sizes the request (e.g. `chart.x_axis.count`).
         key: String,
+        /// What would be too large ("the jam map's grid", ...).
         what: String,
+        /// The estimated memory or output in bytes.
         estimate_bytes: u64,
+        /// The limit in bytes.
         limit_bytes: u64,
     },
 
     /// A file could not be read or written; `action` says which ("read", "write", ...).
     #[error("cannot {action} {path}: {source}")]
     Io {
+        /// What was being done: "read", "write", ...
         action: &'static str,
+        /// The path it concerns.
         path: PathBuf,
+        /// The operating system's error.
         source: std::io::Error,
     },
 
@@ -52,19 +66,32 @@ pub enum Error {
         "refusing to write {path}: it is {what}; jamchart writes only new names, regular files \
          (replaced atomically), FIFOs, terminals and /dev/null: give another path"
     )]
-    UnsafeOutput { path: PathBuf, what: String },
+    UnsafeOutput {
+        /// The refused path.
+        path: PathBuf,
+        /// What is there (a symbolic link, a directory, a device).
+        what: String,
+    },
 
     /// A chart's model failed, so the chart would have nothing to draw; nothing is written.
     #[error("scene {scene}: the {model} failed: {reason}; no chart is drawn from it")]
     ModelFailed {
+        /// The scene's name.
         scene: String,
+        /// The model that failed ("simulation", "min-norm program").
         model: &'static str,
+        /// Its typed reason, as text.
         reason: String,
     },
 
     /// A chart could not be drawn or encoded (a plotters or PNG encoder failure).
     #[error("drawing scene {scene}: {message}")]
-    Draw { scene: String, message: String },
+    Draw {
+        /// The scene's name.
+        scene: String,
+        /// The backend's or encoder's message.
+        message: String,
+    },
 
     /// A request the tool cannot serve (yet), e.g. a model that is not built.
     #[error("{0}")]

@@ -95,7 +95,10 @@ fn every_readme_example_is_a_scene_that_loads() {
         .into_iter()
         .map(|n| SceneSource::BuiltIn(n).load(&[]).unwrap().chart.kind())
         .collect();
-    assert!(examples.len() >= all_kinds.len(), "one example per chart kind");
+    assert!(
+        examples.len() >= all_kinds.len(),
+        "one example per chart kind"
+    );
     let mut kinds = BTreeSet::new();
     for (i, text) in examples.iter().enumerate() {
         let path = dir.path().join(format!("example{i}.toml"));

@@ -241,9 +241,13 @@ pub fn power_of_ten(k: i32) -> String {
 /// Space around a chart's plotting area, in px.
 #[derive(Debug, Clone, Copy)]
 pub struct Margins {
+    /// Above the plotting area (title, subtitle).
     pub top: u32,
+    /// Below it (x tick labels, axis title, legend).
     pub bottom: u32,
+    /// Left of it (y tick labels, axis title).
     pub left: u32,
+    /// Right of it (a second scale, labels).
     pub right: u32,
 }
 

@@ -23,7 +23,9 @@ pub enum Swatch {
 /// One legend entry.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LegendEntry {
+    /// What the entry's sample looks like.
     pub swatch: Swatch,
+    /// Its text.
     pub label: String,
 }
 

@@ -125,6 +125,7 @@ pub struct Rendered {
 }
 
 /// A computed chart of any kind.
+#[allow(missing_docs)] // one variant per chart kind, documented on its module
 pub enum Chart {
     JamMap(jam_map::JamMap),
     Sweep(sweep::Sweep),

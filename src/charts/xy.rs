@@ -57,7 +57,10 @@ pub enum LabelSide {
     BelowRight,
     /// At the left end of the horizontal guide, just above it (true) or below it (false): the
     /// guide leads the eye from the label to the point.
-    GuideStart { above: bool },
+    GuideStart {
+        /// Above the guide (true) or below it (false).
+        above: bool,
+    },
 }
 
 impl LabelSide {

@@ -65,12 +65,17 @@ pub enum Joint {
     /// A force along `direction` (any non-zero length, normalised) through `position_mm`; its
     /// reaction is reported in N.
     Force {
+        /// A point of the force's line of action, in mm.
         position_mm: [f64; 3],
+        /// Its direction (normalised here).
         direction: [f64; 3],
     },
     /// A pure moment about `axis` (normalised), reported in N mm; in a planar problem only
     /// the z axis is meaningful (a translational joint that keeps the body from rotating).
-    Moment { axis: [f64; 3] },
+    Moment {
+        /// The moment's axis (normalised here).
+        axis: [f64; 3],
+    },
 }
 
 /// A wrench: a force in N and a moment in N mm about the frame's origin (Eq. 6).
