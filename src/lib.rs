@@ -97,13 +97,14 @@
 //! thread count; [`charts`] turns scene files (`charts/<name>.toml`) into byte-identical SVG and
 //! PNG design charts with the data behind them (`jamchart render`).
 
-pub mod atomic;
+mod atomic;
 pub mod charts;
-pub mod cli;
+mod cli;
 pub mod config;
 pub mod dynamics;
 pub mod error;
 pub mod grid;
+pub mod limits;
 pub mod locator;
 pub mod minnorm;
 pub mod model;
@@ -111,5 +112,6 @@ pub mod models;
 pub mod paper;
 pub mod statics;
 
+pub use cli::main as run_cli;
 pub use error::{Error, Result};
 pub use model::{JamStatus, SceneParams};

@@ -1,4 +1,4 @@
-//! Chart bytes: deterministic PNG encoding (the files are written by [`crate::atomic`]).
+//! Chart bytes: deterministic PNG encoding (the files are written by the crate's all-or-nothing writer, `atomic`).
 
 /// Encodes an RGB8 buffer as PNG with only the IHDR, IDAT and IEND chunks: no time, no text, no
 /// gamma, so the bytes depend on the pixels alone.

@@ -4,13 +4,15 @@ use std::fmt::Write as _;
 use std::io::IsTerminal;
 use std::path::PathBuf;
 
-use clap::Args;
+use clap::{ArgAction, Args};
 
+use super::args::parse_f64;
 use super::args::{SceneArgs, TableFormat};
 use super::dynamics::DynamicsArgs;
-use crate::atomic::write_atomic;
+use crate::atomic::{Output, check_all, write_all};
 use crate::dynamics::accuracy::{Study, StudySettings, run_study};
 use crate::error::{Error, Result};
+use crate::limits::MAX_TOLERANCES;
 use crate::minnorm::tolerance::{ToleranceRow, tolerance_study};
 
 /// Flags of `accuracy`.
@@ -20,24 +22,26 @@ pub struct AccuracyArgs {
     pub scene: SceneArgs,
     #[command(flatten)]
     pub dynamics: DynamicsArgs,
-    /// Relative tolerances to try, comma-separated [default: 1e-2,1e-3,...,1e-9].
-    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    /// Relative tolerances to try, comma-separated, at most 64 [default: 1e-2,1e-3,...,1e-9].
+    ///
+    /// Given once: a second --tolerances is refused like any repeated flag.
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set, value_parser = parse_f64)]
     pub tolerances: Option<Vec<f64>>,
-    /// Timed runs per point; the median is reported [default: 5].
+    /// Timed runs per point, 1 to 1000; the median is reported [default: 5].
     #[arg(long, value_name = "N")]
     pub runs: Option<usize>,
     /// Tolerance of the reference solutions [default: 1e-11].
-    #[arg(long, value_name = "RTOL")]
+    #[arg(long, value_name = "RTOL", value_parser = parse_f64)]
     pub reference_rtol: Option<f64>,
     /// Output format on stdout.
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]
     pub format: TableFormat,
-    /// clarabel tolerances of the min-norm part, comma-separated; "none" skips it
+    /// clarabel tolerances of the min-norm part, comma-separated, at most 64; "none" skips it
     /// [default: 1e-2,1e-3,...,1e-10].
     ///
     /// The min-norm model solved by clarabel alone at each tol_feas = tol_gap = tol_infeas,
     /// its theta_jam compared with the closed form (translational formulation).
-    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
     pub min_norm_tolerances: Option<Vec<String>>,
     /// Also write accuracy.md, accuracy.csv (the log-log chart's data), accuracy.json and
     /// accuracy_min_norm.csv here.
@@ -45,7 +49,16 @@ pub struct AccuracyArgs {
     pub out_dir: Option<PathBuf>,
 }
 
+/// The files of `--out-dir`.
+const OUT_FILES: [&str; 4] = [
+    "accuracy.md",
+    "accuracy.csv",
+    "accuracy.json",
+    "accuracy_min_norm.csv",
+];
+
 pub fn run(a: &AccuracyArgs) -> Result<String> {
+    // Everything is validated before anything is computed: flags, the study, the output paths.
     let config = a.scene.resolve_with(|c| a.dynamics.apply(c))?;
     let defaults = StudySettings::default();
     let settings = StudySettings {
@@ -53,6 +66,14 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
         runs: a.runs.unwrap_or(defaults.runs),
         reference_rtol: a.reference_rtol.unwrap_or(defaults.reference_rtol),
     };
+    settings.validate()?;
+    let min_norm_tols = min_norm_tolerances(a.min_norm_tolerances.as_deref())?;
+    let out_paths: Vec<PathBuf> = a
+        .out_dir
+        .iter()
+        .flat_map(|d| OUT_FILES.map(|f| d.join(f)))
+        .collect();
+    check_all(out_paths.iter().map(PathBuf::as_path))?;
     let bar = std::io::stderr().is_terminal().then(|| {
         // The length comes with the first progress call.
         let b = indicatif::ProgressBar::no_length();
@@ -77,26 +98,27 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
     if let Some(b) = bar {
         b.finish_and_clear();
     }
-    let min_norm = tolerance_study(
-        &config.scene,
-        &config.min_norm,
-        &min_norm_tolerances(a.min_norm_tolerances.as_deref())?,
-    )?;
+    let min_norm = tolerance_study(&config.scene, &config.min_norm, &min_norm_tols)?;
     let mut md = markdown(&study, settings.runs);
     md.push_str(&min_norm_markdown(&min_norm));
     let csv = csv(&study);
     let mut doc = serde_json::to_value(&study).expect("plain structs serialise");
     doc["min_norm_tolerance"] = serde_json::to_value(&min_norm).expect("plain structs serialise");
     let json = serde_json::to_string_pretty(&doc).expect("JSON values serialise") + "\n";
-    if let Some(dir) = &a.out_dir {
-        std::fs::create_dir_all(dir).map_err(|e| Error::io("create", dir, e))?;
-        write_atomic(&dir.join("accuracy.md"), md.as_bytes())?;
-        write_atomic(&dir.join("accuracy.csv"), csv.as_bytes())?;
-        write_atomic(&dir.join("accuracy.json"), json.as_bytes())?;
-        write_atomic(
-            &dir.join("accuracy_min_norm.csv"),
-            min_norm_csv(&min_norm).as_bytes(),
-        )?;
+    if !out_paths.is_empty() {
+        let mn_csv = min_norm_csv(&min_norm);
+        let contents = [
+            md.as_bytes(),
+            csv.as_bytes(),
+            json.as_bytes(),
+            mn_csv.as_bytes(),
+        ];
+        let set: Vec<Output> = out_paths
+            .iter()
+            .zip(contents)
+            .map(|(path, bytes)| Output { path, bytes })
+            .collect();
+        write_all(&set)?;
     }
     Ok(match a.format {
         TableFormat::Text => md,
@@ -105,7 +127,8 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
     })
 }
 
-/// The min-norm tolerances from `--min-norm-tolerances` ("none" = none; default 1e-2..1e-10).
+/// The min-norm tolerances from `--min-norm-tolerances` ("none" = none; default 1e-2..1e-10),
+/// each in (0, 1), at most [`MAX_TOLERANCES`].
 fn min_norm_tolerances(arg: Option<&[String]>) -> Result<Vec<f64>> {
     let Some(list) = arg else {
         return Ok((2..=10).map(|k| 10f64.powi(-k)).collect());
@@ -113,15 +136,23 @@ fn min_norm_tolerances(arg: Option<&[String]>) -> Result<Vec<f64>> {
     if list.len() == 1 && list[0].trim() == "none" {
         return Ok(Vec::new());
     }
+    let key = "--min-norm-tolerances";
+    if list.len() > MAX_TOLERANCES {
+        return Err(Error::invalid(
+            key,
+            format!("{} values", list.len()),
+            format!("at most {MAX_TOLERANCES} tolerances"),
+        ));
+    }
     list.iter()
         .map(|v| {
-            v.trim().parse::<f64>().map_err(|_| {
-                Error::invalid(
-                    "--min-norm-tolerances",
-                    v,
-                    "a comma-separated list of numbers in (0, 1), or none",
-                )
-            })
+            let reason = "a comma-separated list of numbers in (0, 1), or none";
+            let t = parse_f64(v.trim())
+                .map_err(|why| Error::invalid(key, v, format!("{why}; {reason}")))?;
+            if !(t > 0.0 && t < 1.0) {
+                return Err(Error::invalid(key, v, reason));
+            }
+            Ok(t)
         })
         .collect()
 }

@@ -16,8 +16,6 @@ use std::io::Write;
 
 use clap::{Parser, Subcommand};
 
-pub use args::{ModelChoice, OutputFormat, SceneArgs, TableFormat};
-
 use crate::error::Error;
 
 /// Predicts where a pushed circular workpiece jams and draws design charts.
@@ -81,6 +79,7 @@ pub enum Command {
 
 /// Runs the command line and returns the process exit code: 0 success, 2 bad input or failure.
 pub fn main() -> i32 {
+    crate::atomic::install_signal_cleanup();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => return clap_exit(e),
