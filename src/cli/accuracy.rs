@@ -9,11 +9,15 @@ use clap::{ArgAction, Args};
 use super::args::parse_f64;
 use super::args::{SceneArgs, TableFormat};
 use super::dynamics::DynamicsArgs;
+use serde::Serialize;
+
 use crate::atomic::{Output, check_all, write_all};
+use crate::csv_out::{Dec, dec, to_csv};
 use crate::dynamics::accuracy::{Study, StudySettings, run_study};
 use crate::error::{Error, Result};
 use crate::limits::MAX_TOLERANCES;
 use crate::minnorm::tolerance::{ToleranceRow, tolerance_study};
+use crate::model::JamStatus;
 
 /// Flags of `accuracy`.
 #[derive(Debug, Clone, Args)]
@@ -43,7 +47,7 @@ pub struct AccuracyArgs {
     /// its theta_jam compared with the closed form (translational formulation).
     #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
     pub min_norm_tolerances: Option<Vec<String>>,
-    /// Also write accuracy.md, accuracy.csv (the log-log chart's data), accuracy.json and
+    /// Also write accuracy.md, accuracy_integrators.csv (the log-log chart's data), accuracy.json and
     /// accuracy_min_norm.csv here.
     #[arg(long, value_name = "DIR")]
     pub out_dir: Option<PathBuf>,
@@ -52,7 +56,8 @@ pub struct AccuracyArgs {
 /// The files of `--out-dir`.
 const OUT_FILES: [&str; 4] = [
     "accuracy.md",
-    "accuracy.csv",
+    // Not accuracy.csv: render's accuracy scene writes that name with another schema.
+    "accuracy_integrators.csv",
     "accuracy.json",
     "accuracy_min_norm.csv",
 ];
@@ -107,12 +112,7 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
     let json = serde_json::to_string_pretty(&doc).expect("JSON values serialise") + "\n";
     if !out_paths.is_empty() {
         let mn_csv = min_norm_csv(&min_norm);
-        let contents = [
-            md.as_bytes(),
-            csv.as_bytes(),
-            json.as_bytes(),
-            mn_csv.as_bytes(),
-        ];
+        let contents = [md.as_bytes(), &csv, json.as_bytes(), &mn_csv];
         let set: Vec<Output> = out_paths
             .iter()
             .zip(contents)
@@ -122,7 +122,7 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
     }
     Ok(match a.format {
         TableFormat::Text => md,
-        TableFormat::Csv => csv,
+        TableFormat::Csv => String::from_utf8(csv).expect("CSV of UTF-8 strings"),
         TableFormat::Json => json,
     })
 }
@@ -183,24 +183,28 @@ fn min_norm_markdown(rows: &[ToleranceRow]) -> String {
     s
 }
 
-fn min_norm_csv(rows: &[ToleranceRow]) -> String {
-    let mut s =
-        String::from("tol,status,theta_jam_deg,error_deg,solves,iterations,undetermined_solves\n");
-    let f = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
-    for r in rows {
-        let _ = writeln!(
-            s,
-            "{:e},{},{},{},{},{},{}",
-            r.tol,
-            r.status,
-            f(r.theta_jam_deg),
-            f(r.error_deg),
-            r.solves,
-            r.iterations,
-            r.undetermined_solves
-        );
+/// The min-norm tolerance study as CSV, one row per tolerance.
+fn min_norm_csv(rows: &[ToleranceRow]) -> Vec<u8> {
+    /// One clarabel tolerance.
+    #[derive(Serialize)]
+    struct Row {
+        tol: Dec,
+        status: JamStatus,
+        theta_jam_deg: Option<Dec>,
+        error_deg: Option<Dec>,
+        solves: u32,
+        iterations: u32,
+        undetermined_solves: u32,
     }
-    s
+    to_csv(rows.iter().map(|r| Row {
+        tol: Dec(r.tol),
+        status: r.status,
+        theta_jam_deg: dec(r.theta_jam_deg),
+        error_deg: dec(r.error_deg),
+        solves: r.solves,
+        iterations: r.iterations,
+        undetermined_solves: r.undetermined_solves,
+    }))
 }
 
 fn opt(v: Option<f64>, prec: usize) -> String {
@@ -270,33 +274,39 @@ fn markdown(study: &Study, runs: usize) -> String {
 }
 
 /// One row per point: the data of the log-log chart (rel_error against median_time_s).
-fn csv(study: &Study) -> String {
-    let mut s = String::from(
-        "method,rtol,status,x_jam_mm,error_mm,rel_error,reference,median_time_s,runs,steps,\
-         rejected_steps,rhs_evals,jacobian_evals,reason\n",
-    );
-    let f = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
-    for r in &study.rows {
-        let _ = writeln!(
-            s,
-            "{},{:e},{},{},{},{},{},{:e},{},{},{},{},{},{}",
-            r.method.as_str(),
-            r.rtol,
-            r.status,
-            r.x_jam_mm.map_or(String::new(), |x| format!("{x:.9}")),
-            f(r.error_mm),
-            f(r.rel_error),
-            r.reference.map_or("", |m| m.as_str()),
-            r.median_time_s,
-            r.runs,
-            r.steps,
-            r.rejected_steps,
-            r.rhs_evals,
-            r.jacobian_evals,
-            r.reason
-                .as_ref()
-                .map_or(String::new(), |w| format!("\"{}\"", w.replace('"', "'")))
-        );
+fn csv(study: &Study) -> Vec<u8> {
+    /// One integrator at one rtol.
+    #[derive(Serialize)]
+    struct Row<'a> {
+        method: &'static str,
+        rtol: Dec,
+        status: JamStatus,
+        x_jam_mm: Option<Dec>,
+        error_mm: Option<Dec>,
+        rel_error: Option<Dec>,
+        reference: Option<&'static str>,
+        median_time_s: Dec,
+        runs: usize,
+        steps: u64,
+        rejected_steps: u64,
+        rhs_evals: u64,
+        jacobian_evals: u64,
+        reason: Option<&'a str>,
     }
-    s
+    to_csv(study.rows.iter().map(|r| Row {
+        method: r.method.as_str(),
+        rtol: Dec(r.rtol),
+        status: r.status,
+        x_jam_mm: dec(r.x_jam_mm),
+        error_mm: dec(r.error_mm),
+        rel_error: dec(r.rel_error),
+        reference: r.reference.map(|m| m.as_str()),
+        median_time_s: Dec(r.median_time_s),
+        runs: r.runs,
+        steps: r.steps,
+        rejected_steps: r.rejected_steps,
+        rhs_evals: r.rhs_evals,
+        jacobian_evals: r.jacobian_evals,
+        reason: r.reason.as_deref(),
+    }))
 }
