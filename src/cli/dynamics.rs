@@ -371,7 +371,7 @@ pub fn render_details(
         let _ = writeln!(s, "  {}: {c}", d.status);
     }
     if let Some(f) = &d.failure {
-        let _ = writeln!(s, "  the integrator gave up at t = {:.4} s: {f}", f.t_s());
+        let _ = writeln!(s, "  the integrator gave up: {f}");
     }
     if let Some(a) = advice(d) {
         let _ = writeln!(s, "  advice: {a}");

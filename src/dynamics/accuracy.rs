@@ -110,7 +110,7 @@ fn raw(params: &DynamicsParams, method: Method, rtol: f64) -> DynamicsParams {
 fn reason_of(s: &DynamicsSolution) -> Option<String> {
     s.cross_check
         .map(|c| c.to_string())
-        .or_else(|| s.failure.map(|f| format!("at t = {:.4} s: {f}", f.t_s())))
+        .or_else(|| s.failure.map(|f| f.to_string()))
         .or_else(|| (s.status != JamStatus::Jams).then(|| format!("status {}", s.status)))
 }
 

@@ -97,17 +97,19 @@ impl Failure {
     }
 }
 
-/// What happened, without the time (`t_s()` gives it): "step limit of 60000 reached".
 impl std::fmt::Display for Failure {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match *self {
-            Failure::StepLimit { steps, .. } => write!(f, "step limit of {steps} reached"),
-            Failure::StepSizeTooSmall { h_s, .. } => {
-                write!(f, "step size {h_s:.3e} s too small")
+            Failure::StepLimit { t_s, steps } => {
+                write!(f, "step limit of {steps} reached at t = {t_s:.4} s")
             }
-            Failure::NoConsistentContact { .. } => {
-                write!(f, "no contact impulses obey the contact laws")
+            Failure::StepSizeTooSmall { t_s, h_s } => {
+                write!(f, "step size {h_s:.3e} s too small at t = {t_s:.4} s")
             }
+            Failure::NoConsistentContact { t_s } => write!(
+                f,
+                "no contact impulses obey the contact laws at t = {t_s:.4} s"
+            ),
         }
     }
 }
