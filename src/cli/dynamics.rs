@@ -359,6 +359,17 @@ pub fn render_details(
             series_end(config, d)
         );
     }
+    if let Some(m) = d
+        .disc_motion
+        .filter(|m| m.rolling_steps > 0 || m.free_steps > 0)
+    {
+        let _ = writeln!(
+            s,
+            "  while pushed the disc rolled {} steps and slipped on the ground {}; off the palm \
+             {}, lifted {}",
+            m.rolling_steps, m.slipping_steps, m.free_steps, m.lifted_steps
+        );
+    }
     if let Some(l) = d.lock_up {
         let _ = writeln!(
             s,
