@@ -3,12 +3,14 @@
 //!
 //! For each method the loosest tolerance of a ladder whose x_jam is within 1e-4 of a reference
 //! (and stays so at the two next tighter rungs) is timed: the median of 21 runs, without and
-//! with the verification run that `solve` does by default. Run: `cargo bench --bench dynamics`.
+//! with the verification run that `solve` does by default (which also runs the rigid contact for
+//! the model's uncertainty). Run: `cargo bench --bench dynamics`; the nonsmooth method alone:
+//! `cargo bench --bench dynamics -- nonsmooth`.
 
 mod common;
 
 use jamchart::JamStatus;
-use jamchart::dynamics::{DynamicsParams, Method, simulate};
+use jamchart::dynamics::{Drive, DynamicsParams, Method, simulate};
 use jamchart::model::SceneParams;
 
 const TARGET: f64 = 1e-4;
@@ -29,6 +31,11 @@ fn median_ms(scene: &SceneParams, p: &DynamicsParams) -> f64 {
 }
 
 fn main() {
+    nonsmooth();
+    // `cargo bench --bench dynamics -- nonsmooth` stops here.
+    if std::env::args().any(|a| a == "nonsmooth") {
+        return;
+    }
     let scene = SceneParams::default();
     let scenarios = [
         ("defaults (k = 1e5 N/mm^2.2, ~59 um at 200 N)", 1e5),
@@ -108,6 +115,44 @@ fn main() {
                 LADDER[i],
                 ref_method.as_str(),
                 errs[i].unwrap_or(f64::NAN)
+            );
+        }
+    }
+}
+
+/// The nonsmooth method (issue 10's goal: well under 1 ms per run): the median of 21 runs at its
+/// default step for several frictions and both drives, without and with the check at twice the
+/// step, and how far x_jam lies from the rigid limit (motion: r/mu; force: the closed form, which
+/// the disc's inertia passes at 30 deg/s).
+fn nonsmooth() {
+    println!(
+        "\n| nonsmooth | mu | drive | steps | x_jam [mm] | reference [mm] | rel. | median [ms] | with verify [ms] |"
+    );
+    println!("|---|---:|---|---:|---:|---:|---:|---:|---:|");
+    for drive in [Drive::Motion, Drive::Force] {
+        for mu in [0.15, 0.3, 0.45] {
+            let scene = SceneParams::default().with_mu(mu);
+            let p = DynamicsParams {
+                method: Method::Nonsmooth,
+                drive,
+                verify: false,
+                ..Default::default()
+            };
+            let s = simulate(&scene, &p, None).expect("valid");
+            let reference = match drive {
+                Drive::Motion => scene.radius_mm / mu,
+                Drive::Force => jamchart::statics::solve(&scene)
+                    .x_jam_mm
+                    .unwrap_or(f64::NAN),
+            };
+            let x = s.x_jam_mm.unwrap_or(f64::NAN);
+            let t = median_ms(&scene, &p);
+            let tv = median_ms(&scene, &DynamicsParams { verify: true, ..p });
+            println!(
+                "| default step 0.01 deg | {mu} | {} | {} | {x:.4} | {reference:.4} | {:+.2e} | {t:.3} | {tv:.3} |",
+                drive.as_str(),
+                s.steps,
+                (x - reference) / reference
             );
         }
     }

@@ -330,6 +330,20 @@ pub fn render_details(
         };
         let _ = writeln!(s, "  x_jam error estimate {e:.2e} mm ({how})");
     }
+    if let (Some(xr), Some(u)) = (d.x_jam_rigid_mm, d.model_uncertainty_mm) {
+        let _ = writeln!(
+            s,
+            "  model uncertainty {u:.3} mm: a rigid contact (--method nonsmooth) jams at \
+             {xr:.3} mm; the contact's unknown compliance moves the jam, the integrator does not"
+        );
+    }
+    if let (Some(t), Some(_)) = (d.physical_until_s, d.series.last()) {
+        let _ = writeln!(
+            s,
+            "  the series is physical up to t = {t:.4} s: after the lock-up a real palm stops, \
+             the simulated one presses on into the disc"
+        );
+    }
     if let Some(x) = d.x_stiction_mm {
         let _ = writeln!(
             s,
@@ -343,6 +357,17 @@ pub fn render_details(
             d.series.len(),
             path.display(),
             series_end(config, d)
+        );
+    }
+    if let Some(m) = d
+        .disc_motion
+        .filter(|m| m.rolling_steps > 0 || m.free_steps > 0)
+    {
+        let _ = writeln!(
+            s,
+            "  while pushed the disc rolled {} steps and slipped on the ground {}; off the palm \
+             {}, lifted {}",
+            m.rolling_steps, m.slipping_steps, m.free_steps, m.lifted_steps
         );
     }
     if let Some(l) = d.lock_up {
@@ -432,6 +457,21 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
             } => format!(
                 "tighten --rtol (now {:e}) and compare the answers",
                 rtol * 10.0
+            ),
+            CrossCheck::LiftsOff { .. } => {
+                "start the push at 90 deg or below (--start-angle): above it the palm lifts the \
+                 disc"
+                    .to_string()
+            }
+            CrossCheck::KnockedAhead { x_rigid_mm, .. } => format!(
+                "design to the rigid contact's {x_rigid_mm:.3} mm (--method nonsmooth), measure \
+                 the real contact's --stiffness and --damping, or close the palm slower \
+                 (--omega) so that it does not strike the disc"
+            ),
+            CrossCheck::ContactModelDependent { x_rigid_mm, .. } => format!(
+                "the rigid contact's {x_rigid_mm:.3} mm (--method nonsmooth) is the answer \
+                 without compliance; give --stiffness of the real contact, and check --mass \
+                 (a heavy disc presses a soft contact millimetres deep)"
             ),
             CrossCheck::PastWedge { .. }
             | CrossCheck::StoppedBelowForceLimit { .. }

@@ -98,6 +98,8 @@ pub struct JamDetector<'a> {
     pub beyond_reach: Option<Instant>,
     /// Candidates the disc recovered from.
     pub discarded: u32,
+    /// The palm lost the disc (no penetration at a step end) after it first pushed it to speed.
+    pub separated: bool,
     /// Largest elastic palm push (N) from the candidate jam to its confirmation; it stops
     /// updating once the jam is confirmed (the run-on after it does not count).
     pub push_after_jam: f64,
@@ -125,6 +127,7 @@ impl<'a> JamDetector<'a> {
             stiction: None,
             beyond_reach: None,
             discarded: 0,
+            separated: false,
             push_after_jam: 0.0,
             at_confirmation: None,
             touching_since: None,
@@ -249,6 +252,9 @@ impl Observer for JamDetector<'_> {
         if !self.armed {
             self.armed = self.ratio_margin(&y, rule.arm_ratio) >= 0.0;
             return Control::Continue;
+        }
+        if self.jam.is_none() && sys.evaluate(&y, None).penetration <= 0.0 {
+            self.separated = true;
         }
         if self.jam.is_none() {
             if self.ratio_margin(&y, jam_ratio) < 0.0 {

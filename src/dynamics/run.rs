@@ -85,6 +85,10 @@ fn conclude(
         simulated_s: simulated,
         lock_up: None,
         disc_motion: None,
+        palm_lost_disc: det.separated,
+        x_jam_rigid_mm: None,
+        model_uncertainty_mm: None,
+        physical_until_s: None,
         series: det.series,
     };
     if det.beyond_reach.is_some() {
@@ -110,6 +114,10 @@ fn conclude(
     out.theta_jam_deg = Some(jam.theta.to_degrees());
     out.x_jam_mm = Some(jam.x);
     out.t_jam_s = Some(jam.t);
+    // A motion-driven palm against a jammed disc is a lock-up: a real palm stops there.
+    if params.drive == Drive::Motion {
+        out.physical_until_s = Some(jam.t);
+    }
     // A disc reaching the wedge at the palm's speed v_geo coasts on, braked by the ground, for
     // up to v_geo^2 / (2 mu_g g): 0.05 mm at mu = 0.4, 36 mm at mu = 0.1 (omega = 30 deg/s).
     let decel = scene.mu_ground * scene.gravity_m_s2 * 1000.0;
@@ -205,6 +213,10 @@ fn run_nonsmooth(
         simulated_s: run.simulated_s,
         lock_up: None,
         disc_motion: Some(run.tally),
+        palm_lost_disc: run.knocked_ahead,
+        x_jam_rigid_mm: None,
+        model_uncertainty_mm: None,
+        physical_until_s: None,
         series: run.series,
     };
     let (t, theta, x) = match run.end {
@@ -236,6 +248,14 @@ fn run_nonsmooth(
     out.theta_jam_deg = Some(theta.to_degrees());
     out.x_jam_mm = Some(x);
     out.t_jam_s = Some(t);
+    if let Some(theta_deg) = run.lift_off_deg
+        && params.disc == nonsmooth::DiscMotion::Slides
+    {
+        let c = CrossCheck::LiftsOff { theta_deg };
+        out.cross_check = Some(c);
+        out.status = c.status();
+        return out;
+    }
     // Held where it started: the jam is at the start (as the regularised model's "never armed").
     if !run.moved {
         out.status = JamStatus::JammedAtStart;

@@ -60,6 +60,21 @@ pub enum CrossCheck {
         geometric_speed_mm_s: f64,
         stiction_velocity_mm_s: f64,
     },
+    /// The palm lifts the disc off the ground at `theta_deg` (above 90 deg its push points up):
+    /// no model here represents a disc in the air.
+    LiftsOff { theta_deg: f64 },
+    /// The palm lost the disc and struck it again before the jam at `x_jam_mm`: the disc was
+    /// knocked ahead, and where it jams depends on a restitution and a contact stiffness nobody
+    /// knows (the rigid, plastic contact says `x_rigid_mm`).
+    KnockedAhead { x_jam_mm: f64, x_rigid_mm: f64 },
+    /// The compliant contact's jam at `x_jam_mm` lies more than `allowed_rel` from the rigid
+    /// contact's `x_rigid_mm`: the answer is the contact stiffness's (or the mass's), not the
+    /// geometry's and friction's.
+    ContactModelDependent {
+        x_jam_mm: f64,
+        x_rigid_mm: f64,
+        allowed_rel: f64,
+    },
 }
 
 /// The second run that checks a simulation.
@@ -87,7 +102,12 @@ impl std::fmt::Display for Refinement {
 impl CrossCheck {
     /// The status an answer with this reason gets.
     pub fn status(&self) -> JamStatus {
-        JamStatus::Inaccurate
+        match self {
+            CrossCheck::LiftsOff { .. } | CrossCheck::KnockedAhead { .. } => {
+                JamStatus::OutsideModel
+            }
+            _ => JamStatus::Inaccurate,
+        }
     }
 }
 
@@ -146,6 +166,32 @@ impl std::fmt::Display for CrossCheck {
                  {push_n:.2} N at {theta_deg:.3} deg, more than twice the {needed_n:.2} N that \
                  slides it (the palm drives the disc at {geometric_speed_mm_s:.3} mm/s there, \
                  against a stiction transition velocity of {stiction_velocity_mm_s} mm/s)"
+            ),
+            CrossCheck::LiftsOff { theta_deg } => write!(
+                f,
+                "the palm lifts the disc off the ground at {theta_deg:.3} deg: above 90 deg its \
+                 push points upwards, and no model here represents a disc in the air"
+            ),
+            CrossCheck::KnockedAhead {
+                x_jam_mm,
+                x_rigid_mm,
+            } => write!(
+                f,
+                "the palm lost the disc and struck it again before the jam at {x_jam_mm:.3} mm: \
+                 the disc was knocked ahead, and where it jams depends on the contact's \
+                 stiffness and restitution (a rigid, plastic contact jams at {x_rigid_mm:.3} mm)"
+            ),
+            CrossCheck::ContactModelDependent {
+                x_jam_mm,
+                x_rigid_mm,
+                allowed_rel,
+            } => write!(
+                f,
+                "x_jam = {x_jam_mm:.3} mm lies {:.1} % from the rigid contact's {x_rigid_mm:.3} mm \
+                 (more than {:.1} %): the compliant contact, not the geometry and friction, sets \
+                 the answer",
+                100.0 * (x_jam_mm - x_rigid_mm) / x_rigid_mm,
+                100.0 * allowed_rel
             ),
         }
     }

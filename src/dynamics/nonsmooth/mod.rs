@@ -108,6 +108,9 @@ use crate::model::SceneParams;
 /// close gaps of round-off size (1e-11 mm) over a step are around 1e-7 mm/s.
 const REST_MM_S: f64 = 1e-6;
 
+/// Height (mm) above the ground beyond which the disc has left it: far above round-off.
+const LIFT_MM: f64 = 1e-9;
+
 /// How the disc may move in the nonsmooth method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -174,8 +177,8 @@ pub struct Run {
     pub moved: bool,
     /// Whether the palm lost the disc after first pushing it (knocked ahead).
     pub knocked_ahead: bool,
-    /// Whether the disc left the ground while the palm touched it.
-    pub lifted: bool,
+    /// Palm angle in deg where the disc first left the ground while the palm touched it.
+    pub lift_off_deg: Option<f64>,
     /// The time series (empty unless asked for).
     pub series: Vec<SeriesRow>,
     /// Simulated time in s.
@@ -334,7 +337,7 @@ pub fn run(scene: &SceneParams, params: &DynamicsParams, series_dt_s: Option<f64
         tally: MotionTally::default(),
         moved: false,
         knocked_ahead: false,
-        lifted: false,
+        lift_off_deg: None,
         series: Vec::new(),
         simulated_s: 0.0,
     };
@@ -379,11 +382,14 @@ pub fn run(scene: &SceneParams, params: &DynamicsParams, series_dt_s: Option<f64
         let to_n = 1e-3 / dt;
         last_push = p[2] * to_n;
         let (ground, palm, drive) = modes;
+        // Lifted: the disc leaves the ground by more than round-off over the step (an open
+        // ground contact with the palm's friction carrying the weight exactly is not a lift).
+        let lifts = built.gaps[0] + dt * v[1] > LIFT_MM;
         if palm != ContactMode::Open {
             pushed = true;
-            if ground == ContactMode::Open {
+            if lifts {
                 out.tally.lifted_steps += 1;
-                out.lifted = true;
+                out.lift_off_deg.get_or_insert(theta.to_degrees());
             } else if ground == ContactMode::Stick {
                 if v[0] != 0.0 {
                     out.tally.rolling_steps += 1;

@@ -238,11 +238,12 @@ fn solve5(mut m: [[f64; 6]; 5]) -> Option<[f64; 5]> {
             return None;
         }
         m.swap(col, piv);
-        for row in col + 1..5 {
-            let f = m[row][col] / m[col][col];
+        let pivot_row = m[col];
+        for row in m.iter_mut().skip(col + 1) {
+            let f = row[col] / pivot_row[col];
             if f != 0.0 {
-                for k in col..6 {
-                    m[row][k] -= f * m[col][k];
+                for (r, p) in row.iter_mut().zip(&pivot_row).skip(col) {
+                    *r -= f * p;
                 }
             }
         }

@@ -68,17 +68,17 @@ fn tresca_by_clarabel(
         put(&[(2, 1.0)], b.v_free[2], &mut row);
     }
     // Without friction tau_k has no cost and no optimum: pin it.
-    for k in 0..2 {
-        if bound[k] <= 0.0 {
+    for (k, bk) in bound.iter().enumerate() {
+        if *bk <= 0.0 {
             put(&[(3 + k, 1.0)], 0.0, &mut row);
         }
     }
     let eq = row;
-    for k in 0..2 {
+    for (k, bk) in bound.iter().enumerate() {
         let (n, t) = (2 * k, 2 * k + 1);
         let jn: Vec<(usize, f64)> = (0..3).map(|i| (i, -b.jac[n][i])).collect();
         put(&jn, c[n] * theta_dot + b.gaps[k] / st.dt, &mut row);
-        if bound[k] <= 0.0 {
+        if *bk <= 0.0 {
             continue;
         }
         let mut up: Vec<(usize, f64)> = (0..3).map(|i| (i, b.jac[t][i])).collect();
