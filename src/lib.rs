@@ -71,6 +71,7 @@ pub mod model;
 pub mod models;
 pub mod paper;
 pub mod statics;
+pub mod study;
 
 pub use error::{Error, Result};
 pub use model::{JamStatus, SceneParams};

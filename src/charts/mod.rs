@@ -9,7 +9,8 @@
 //!
 //! Chart kinds, one module each: [`jam_map`] (Fig. 3), [`sweep`] (Figs. 6, 7a, 7b),
 //! [`contour_map`] (Fig. 7c), [`convergence`] (Fig. 4), [`time_series`] (Fig. 5),
-//! [`work_precision`] (the accuracy study). The last three draw through [`xy`], stacked x-y
+//! [`work_precision`] (the accuracy study), [`stability`] (the stability matrix); [`error_time`]
+//! draws `jamchart accuracy`'s wall-time chart, which is not a scene. The last three draw through [`xy`], stacked x-y
 //! panels. Min-norm programs and simulations are called through [`models::Models`], so a test
 //! can count them: a scene computes only what it draws.
 //!
@@ -29,11 +30,13 @@
 pub mod axes;
 pub mod contour_map;
 pub mod convergence;
+pub mod error_time;
 pub mod jam_map;
 pub mod legend;
 pub mod models;
 pub mod output;
 pub mod spec;
+pub mod stability;
 pub mod style;
 pub mod sweep;
 pub mod sweep_layers;
@@ -121,6 +124,7 @@ pub enum Chart {
     Convergence(convergence::Convergence),
     TimeSeries(time_series::TimeSeries),
     WorkPrecision(work_precision::WorkPrecision),
+    Stability(stability::Stability),
 }
 
 impl Chart {
@@ -146,6 +150,9 @@ impl Chart {
             ChartSpec::WorkPrecision(s) => {
                 Chart::WorkPrecision(work_precision::WorkPrecision::compute(scene, s, models)?)
             }
+            ChartSpec::Stability(s) => {
+                Chart::Stability(stability::Stability::compute(scene, s, models)?)
+            }
         })
     }
 
@@ -159,6 +166,7 @@ impl Chart {
             Chart::Convergence(c) => c.draw(root),
             Chart::TimeSeries(c) => c.draw(root),
             Chart::WorkPrecision(c) => c.draw(root),
+            Chart::Stability(c) => c.draw(root),
         }
     }
 
@@ -171,6 +179,7 @@ impl Chart {
             Chart::Convergence(c) => c.data(scene),
             Chart::TimeSeries(c) => c.data(scene),
             Chart::WorkPrecision(c) => c.data(scene),
+            Chart::Stability(c) => c.data(scene),
         }
     }
 }

@@ -26,6 +26,7 @@ use serde::{Deserialize, Serialize};
 use super::contour_map::ContourMapSpec;
 use super::convergence::ConvergenceSpec;
 use super::jam_map::JamMapSpec;
+use super::stability::StabilitySpec;
 use super::sweep::SweepSpec;
 use super::time_series::TimeSeriesSpec;
 use super::work_precision::WorkPrecisionSpec;
@@ -92,6 +93,8 @@ pub enum ChartSpec {
     /// Error of x_jam against cost per integrator, and the min-norm tolerance against its
     /// error (the accuracy study).
     WorkPrecision(WorkPrecisionSpec),
+    /// The stability matrix: case by method, coloured by class.
+    Stability(StabilitySpec),
 }
 
 /// A scene file as written.
@@ -181,6 +184,7 @@ pub fn load_scene(dir: &Path, name: &str) -> Result<Scene> {
         ChartSpec::Convergence(s) => s.validate()?,
         ChartSpec::TimeSeries(s) => s.validate()?,
         ChartSpec::WorkPrecision(s) => s.validate()?,
+        ChartSpec::Stability(s) => s.validate()?,
     }
     Ok(scene)
 }

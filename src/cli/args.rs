@@ -98,7 +98,13 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
         "start_angle_deg" => "--start-angle",
         "palm_length_mm" => "--palm-length",
         "tolerances" => "--tolerances",
-        "reference_rtol" => "--reference-rtol",
+        "converged_rtol" => "--converged-rtol",
+        "min_norm_tolerances" => "--min-norm-tolerances",
+        "penetrations_um" => "--penetrations",
+        "runs" => "--runs",
+        "max_steps" => "--max-steps",
+        "cells_per_axis" => "--map-cells",
+        "cases" => "--cases",
         key => return super::dynamics::flag_for_key(key),
     })
 }
