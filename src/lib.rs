@@ -51,7 +51,45 @@
 //! The closed form is the oracle: the other two models are tested against it where physics says
 //! they must agree.
 //!
-//! Outcomes are data ([`model::JamStatus`]); [`error::Error`] is only for misuse.
+//! ## One port for every model
+//!
+//! [`models`] is the single place a model is chosen and run: a [`models::ModelSpec`] (the model
+//! and its settings, chosen by data) goes into [`models::solve`], and one [`models::Solution`]
+//! comes out (status, theta_jam, x_jam, wall time and the model's own detail). `solve`, the grid
+//! ([`grid`], generic over any [`grid::ParamSet`]), sweeps, charts and the reports all call it.
+//! **To add a model**, write its module and register it in [`models`] (one variant in each of
+//! `ModelKind`, `ModelSpec`, `Detail` and one arm of `solve`); **to add a chart kind**, write its
+//! module under [`charts`] and register it in `charts::spec::ChartSpec` and `charts::Chart`.
+//!
+//! Outcomes are data ([`model::JamStatus`], with typed reasons in each model's solution);
+//! [`error::Error`] is only for misuse.
+//!
+//! ## Corrections to the paper
+//!
+//! Each was verified by independent calculation and is pinned by a test.
+//!
+//! - **Eq. 2** simplifies: r (1 + cos t) / tan t + r sin t = r cot(t/2); x is also the distance
+//!   from the hinge to both contact points.
+//! - **Eq. 1, sign error**: the paper prints R_n = F_t sin(theta) - F_n cos(theta) + m g; the palm
+//!   presses the disc down, and only R_t = F sin(theta - alpha), R_n = m g + F cos(theta - alpha)
+//!   (alpha = atan mu) reproduces Table 1. The jam R_t < mu R_n then reduces to
+//!   theta_jam = 2 alpha + asin(m g sin(alpha) / F): 44.646 deg and x_jam = 24.355 mm for the
+//!   paper's m = 1 kg, g = 9.806 m/s^2, r = 10 mm, F = 200 N, mu = 0.4. F -> infinity gives
+//!   the self-locking wedge tan(theta/2) = mu, x = r / mu (25.0 mm, the "threshold" of Fig. 7b).
+//! - **Table 1**: the theta columns are the closed form truncated to 0.1 deg and the x columns
+//!   r cot(theta/2) of that theta; the mu = 0.30 row's x = 35.50 mm does not match its own
+//!   theta = 34.2 deg (r cot(17.1 deg) = 32.51 mm; the closed form gives 32.500 mm). The second
+//!   model differs from the first by up to 0.6 % only through the paper's angle scan and solver
+//!   tolerances: solved exactly, the minimum-norm model agrees with the closed form.
+//! - **Eq. 7**: its moment rows are inconsistent with its force rows (476.7 looks like N cm
+//!   against positions in mm; the lever arm 27.38 mm is 3 mm longer than x_jam). With one ground
+//!   contact and a translating disc the force rows fix the reaction, so the minimum norm is
+//!   trivial there; the moment is carried by the translational joint.
+//! - **Section 4**: the printed IMPACT parameters are garbled (four parameters, three numbers); we
+//!   use Adams' documented defaults (1e5 N/mm^e, exponent 2.2, 10 N s/mm, 0.01 mm). The palm is
+//!   driven by motion, so the simulation's jam tends to r / mu, not the F = 200 N value; the
+//!   paper's 25.58 mm at mu = 0.4 is 2.3 % above r / mu, which the 1 mm palm bar's offset
+//!   explains. Adams' friction has no true stiction, so a jammed disc still creeps.
 //!
 //! ## Grids and charts
 //!
@@ -59,13 +97,14 @@
 //! thread count; [`charts`] turns scene files (`charts/<name>.toml`) into byte-identical SVG and
 //! PNG design charts with the data behind them (`jamchart render`).
 
-pub mod atomic;
+mod atomic;
 pub mod charts;
-pub mod cli;
+mod cli;
 pub mod config;
 pub mod dynamics;
 pub mod error;
 pub mod grid;
+pub mod locator;
 pub mod minnorm;
 pub mod model;
 pub mod models;
@@ -73,5 +112,6 @@ pub mod paper;
 pub mod statics;
 pub mod study;
 
+pub use cli::main as run_cli;
 pub use error::{Error, Result};
 pub use model::{JamStatus, SceneParams};

@@ -1,5 +1,5 @@
-//! The `jamchart` binary: all the work is in the library's `cli` module.
+//! The `jamchart` binary: all the work is in the library's command line (`jamchart::run_cli`).
 
 fn main() {
-    std::process::exit(jamchart::cli::main());
+    std::process::exit(jamchart::run_cli());
 }

@@ -207,7 +207,7 @@ mod tests {
 
     #[test]
     fn equal_tangents_eq2_simplifies() {
-        // Eq. 2 as printed: r(1 + cos t)/tan t + r sin t; ERRATA says it equals r cot(t/2).
+        // Eq. 2 as printed: r(1 + cos t)/tan t + r sin t; the crate docs say it equals r cot(t/2).
         for deg in [10.0_f64, 30.0, 44.646, 60.0, 89.0, 120.0] {
             let t = deg.to_radians();
             let r = 10.0;

@@ -1,7 +1,7 @@
 //! Numbers printed in the paper, kept verbatim so that outputs can stand beside them.
 //!
-//! H. Parvaz, AUT J. Mech. Eng. 4(4) (2020) 553-564. See `../shared/paper/ERRATA.md` for what is
-//! wrong in them.
+//! H. Parvaz, AUT J. Mech. Eng. 4(4) (2020) 553-564. What is wrong in them is listed in the
+//! crate docs, "Corrections to the paper".
 
 /// One row of the paper's Table 1 (m = 1 kg, r = 10 mm, F = 200 N, equal frictions).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -213,7 +213,7 @@ mod tests {
 
     #[test]
     fn errata_worked_example() {
-        // ERRATA.md: m = 1 kg, g = 9.806, r = 10 mm, F = 200 N, mu = 0.4.
+        // The crate docs' corrected Eq. 1 example: m = 1 kg, g = 9.806, r = 10 mm, F = 200 N, mu = 0.4.
         let s = solve(&SceneParams::default());
         assert_eq!(s.status, JamStatus::Jams);
         assert!((s.theta_jam_deg.unwrap() - 44.646).abs() < 5e-4);

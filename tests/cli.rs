@@ -361,3 +361,52 @@ fn table_has_min_norm_columns_agreeing_with_the_closed_form() {
     let md = stdout(&jamchart(repo(), &["table"]));
     assert!(md.contains("| 44.646192 | 24.3546 |"), "{md}");
 }
+
+/// clap's "did you mean" tips used to be dropped: only the first line of its error was kept.
+#[test]
+fn mistyped_command_and_flag_get_a_did_you_mean() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(dir.path(), &["slove"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("'solve'"), "{}", stderr(&o));
+    let o = jamchart(dir.path(), &["solve", "--radious", "3"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("'--radius'"), "{}", stderr(&o));
+    assert_eq!(stderr(&o).lines().count(), 1, "{}", stderr(&o));
+}
+
+/// `solve --model all` says which model answers which question and flags a disagreement above
+/// 2 %: the motion-driven simulation of a weak push jams far beyond the statics at F.
+#[test]
+fn all_models_come_with_guidance_and_a_flag_past_two_percent() {
+    let dir = tempfile::tempdir().unwrap();
+    let weak = [
+        "solve",
+        "--model",
+        "all",
+        "--radius",
+        "25",
+        "--mass",
+        "2.5",
+        "--mu-ground",
+        "0.15",
+        "--mu-palm",
+        "0.25",
+        "--force",
+        "80",
+    ];
+    let o = jamchart(dir.path(), &weak);
+    let text = stdout(&o);
+    assert!(text.contains("which to design to:"), "{text}");
+    assert!(
+        text.contains("note: dynamics differs from statics by +"),
+        "{text}"
+    );
+    // The paper's case: the three agree within 2 %, nothing is flagged.
+    let o = jamchart(dir.path(), &["solve", "--model", "all"]);
+    let text = stdout(&o);
+    assert!(
+        text.contains("which to design to:") && !text.contains("note:"),
+        "{text}"
+    );
+}

@@ -156,3 +156,52 @@ fn a_scene_named_twice_is_rendered_once() {
     files.sort();
     assert_eq!(files, ["fig7a.csv", "fig7a.png", "fig7a.svg"]);
 }
+
+/// Scenes used to be read from ./charts, so `render` failed outside the repository and after
+/// `cargo install`: the built-in scenes and paper set make an empty folder enough.
+#[test]
+fn render_in_an_empty_folder_draws_every_built_in_scene() {
+    let dir = tempfile::tempdir().unwrap();
+    let list = jamchart(dir.path(), &["scenes"]);
+    assert!(list.status.success(), "{}", stderr(&list));
+    let names: Vec<String> = String::from_utf8_lossy(&list.stdout)
+        .lines()
+        .map(|l| l.split_whitespace().next().unwrap().to_string())
+        .collect();
+    assert!(
+        names.len() >= 8 && names.contains(&"fig3".to_string()),
+        "{names:?}"
+    );
+    let out = jamchart(dir.path(), &["render"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    for n in &names {
+        for ext in ["svg", "png"] {
+            let f = dir.path().join(format!("out/{n}.{ext}"));
+            assert!(f.exists(), "{} missing", f.display());
+        }
+    }
+}
+
+/// A user's scene in another folder: no `base` means the built-in paper set, and `--set`
+/// changes its parameters without editing the file.
+#[test]
+fn own_scene_file_renders_from_its_path_and_set_overrides_it() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir(dir.path().join("mine")).unwrap();
+    let text = "title = \"shaft\"\n[scene]\nradius_mm = 25.0\n[chart]\nkind = \"sweep\"\n\
+                axis = { param = \"mu\", min = 0.1, max = 0.5, count = 5 }\n\
+                panels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n";
+    std::fs::write(dir.path().join("mine/shaft.toml"), text).unwrap();
+    let plain = jamchart(dir.path(), &["render", "mine/shaft.toml", "--out", "a"]);
+    assert!(plain.status.success(), "{}", stderr(&plain));
+    let set = ["render", "mine", "--out", "b", "--set", "force_n=80"];
+    let pushed = jamchart(dir.path(), &set);
+    assert!(pushed.status.success(), "{}", stderr(&pushed));
+    let a = std::fs::read_to_string(dir.path().join("a/shaft.csv")).unwrap();
+    let b = std::fs::read_to_string(dir.path().join("b/shaft.csv")).unwrap();
+    assert_eq!(a.lines().count(), b.lines().count());
+    assert_ne!(a, b, "--set force_n=80 changed nothing");
+    let bad = jamchart(dir.path(), &["render", "fig3", "--set", "radious=3"]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(stderr(&bad).contains("radius_mm"), "{}", stderr(&bad));
+}

@@ -123,7 +123,7 @@ fn done_when_example_gives_44_646_deg_and_24_355_mm() {
 
 #[test]
 fn translational_forces_are_the_corrected_eq1() {
-    // ERRATA: where the push drives the disc forward (R_t >= 0) the way-back stop is idle, the
+    // Corrections to the paper (crate docs): where the push drives the disc forward (R_t >= 0) the way-back stop is idle, the
     // minimum is trivial and the ground force is R_t, R_n of Eq. 1; the joint carries the rest
     // of the moment, r (R_t - F sin alpha_p). mu = 1.2 holds the disc below theta_jam =
     // 100.9 deg: forces exist at every angle tried.

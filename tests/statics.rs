@@ -39,7 +39,7 @@ fn table1_corrected_matches_golden_to_1e9() {
 
 #[test]
 fn paper_table1_is_our_theta_truncated_and_x_of_that_theta() {
-    // ERRATA: the printed theta is the closed form to 0.1 deg (we find: truncated, not rounded) and
+    // Corrections to the paper (crate docs): the printed theta is the closed form to 0.1 deg (we find: truncated, not rounded) and
     // the printed x is r cot(theta/2) of it; the mu = 0.30 row's x is the known erratum.
     for [mu, theta, _, paper_theta, paper_x] in golden_table1() {
         assert!(

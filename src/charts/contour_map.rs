@@ -33,7 +33,9 @@ pub struct ContourMapSpec {
     pub x_axis: GridAxis,
     /// Vertical axis (a scene parameter).
     pub y_axis: GridAxis,
-    /// x_jam iso-line levels in mm, increasing; the bands between them are shaded.
+    /// x_jam iso-line levels in mm, increasing; the bands between them are shaded (default:
+    /// about eight round levels over the map's range).
+    #[serde(default)]
     pub x_jam_levels_mm: Vec<f64>,
     /// theta_jam iso-line levels in deg (default: none).
     #[serde(default)]
@@ -60,7 +62,7 @@ impl ContourMapSpec {
         }
         let increasing =
             |v: &[f64]| v.windows(2).all(|w| w[0] < w[1]) && v.iter().all(|x| x.is_finite());
-        if self.x_jam_levels_mm.is_empty() || !increasing(&self.x_jam_levels_mm) {
+        if !increasing(&self.x_jam_levels_mm) {
             return Err(Error::invalid(
                 "chart.x_jam_levels_mm",
                 format!("{:?}", self.x_jam_levels_mm),
@@ -110,6 +112,28 @@ impl ContourMapSpec {
             quantities,
         }
     }
+}
+
+/// About eight round levels (steps of 1, 2 or 5 times a power of ten) strictly inside the range
+/// of the jammed cells of `values`; one level in the middle when the range is flat.
+fn round_levels(values: &[f64]) -> Vec<f64> {
+    let jammed = values.iter().copied().filter(|v| *v != NO_JAM);
+    let (lo, hi) = jammed.fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(v), b.max(v)));
+    if lo >= hi {
+        return vec![if lo < f64::MAX { lo } else { 1.0 }];
+    }
+    let raw = (hi - lo) / 8.0;
+    let decade = 10f64.powf(raw.log10().floor());
+    let step = [1.0, 2.0, 5.0, 10.0]
+        .iter()
+        .map(|m| m * decade)
+        .find(|s| *s >= raw)
+        .unwrap_or(10.0 * decade);
+    let first = (lo / step).floor() as i64 + 1;
+    (first..)
+        .map(|k| k as f64 * step)
+        .take_while(|v| *v < hi)
+        .collect()
 }
 
 /// The computed contour map.
@@ -176,6 +200,10 @@ impl ContourMap {
                 .collect()
         };
         let xj = dense(grid.x_jam_mm.as_deref().unwrap_or_default());
+        let mut spec = spec.clone();
+        if spec.x_jam_levels_mm.is_empty() {
+            spec.x_jam_levels_mm = round_levels(&xj);
+        }
         let levels = &spec.x_jam_levels_mm;
         // Bands: below the first level, between levels, above the last.
         let mut edges = vec![f64::MIN];
@@ -198,7 +226,7 @@ impl ContourMap {
             _ => Vec::new(),
         };
         Ok(ContourMap {
-            spec: spec.clone(),
+            spec,
             params: scene.params,
             title: scene.title.clone(),
             grid,
@@ -421,4 +449,17 @@ fn nearest_point(paths: &[Vec<(f64, f64)>], u: f64) -> Option<&(f64, f64)> {
 /// A level as a label: whole numbers without decimals.
 fn level_text(v: f64) -> String {
     style::fmt_num(v, if v.fract() == 0.0 { 0 } else { 1 })
+}
+
+#[cfg(test)]
+mod round_levels_tests {
+    use super::*;
+
+    #[test]
+    fn levels_are_round_inside_the_range_and_skip_unjammed_cells() {
+        let l = round_levels(&[NO_JAM, 24.3, 31.0, 61.7]);
+        assert_eq!(l, [25.0, 30.0, 35.0, 40.0, 45.0, 50.0, 55.0, 60.0]);
+        assert_eq!(round_levels(&[3.0, 3.0]), [3.0]);
+        assert_eq!(round_levels(&[NO_JAM]), [1.0]);
+    }
 }

@@ -28,6 +28,7 @@
 //!   [`ChartSpec`] variant, a [`Chart`] variant and a scene `charts/<name>.toml`.
 
 pub mod axes;
+pub mod builtin;
 pub mod contour_map;
 pub mod convergence;
 pub mod error_time;
@@ -35,6 +36,7 @@ pub mod jam_map;
 pub mod legend;
 pub mod models;
 pub mod output;
+pub mod overrides;
 pub mod spec;
 pub mod stability;
 pub mod style;
@@ -52,7 +54,7 @@ use crate::error::{Error, Result};
 use crate::grid::{GridAxis, GridParam};
 use crate::model::SceneParams;
 use axes::DrawResult;
-pub use spec::{ChartSpec, Scene, load_scene, scene_names};
+pub use spec::{ChartSpec, Scene, SceneSource, load_scene, scene_files, scene_names};
 
 /// Which pictures to produce.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -2,7 +2,7 @@
 //!
 //! ```toml
 //! title = "Fig. 3: ..."            # the chart's title
-//! base = "../config/paper.toml"    # parameter set, relative to this file (default shown)
+//! base = "my-params.toml"          # parameter set, relative to this file (default: built-in paper set)
 //! [scene]                          # overrides of the base's [scene] keys
 //! force_n = 200.0
 //! [dynamics]                       # overrides of the base's [dynamics] keys (scenes that simulate)
@@ -26,6 +26,7 @@ use serde::{Deserialize, Serialize};
 use super::contour_map::ContourMapSpec;
 use super::convergence::ConvergenceSpec;
 use super::jam_map::JamMapSpec;
+use super::overrides::{self, Setting};
 use super::stability::StabilitySpec;
 use super::sweep::SweepSpec;
 use super::time_series::TimeSeriesSpec;
@@ -97,6 +98,22 @@ pub enum ChartSpec {
     Stability(StabilitySpec),
 }
 
+impl ChartSpec {
+    /// The `kind` key: jam_map, sweep, contour_map, convergence, time_series, work_precision or
+    /// stability.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            ChartSpec::JamMap(_) => "jam_map",
+            ChartSpec::Sweep(_) => "sweep",
+            ChartSpec::ContourMap(_) => "contour_map",
+            ChartSpec::Convergence(_) => "convergence",
+            ChartSpec::TimeSeries(_) => "time_series",
+            ChartSpec::WorkPrecision(_) => "work_precision",
+            ChartSpec::Stability(_) => "stability",
+        }
+    }
+}
+
 /// A scene file as written.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -135,32 +152,109 @@ pub struct Scene {
     pub chart: ChartSpec,
 }
 
-/// The default base parameter set, relative to the scene file's directory.
-pub const DEFAULT_BASE: &str = "../config/paper.toml";
+/// Where a scene comes from: built into the binary, or a file of the user's.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum SceneSource {
+    /// A built-in scene ([`super::builtin::SCENES`]), by name.
+    BuiltIn(String),
+    /// A scene file; the scene is named after the file stem.
+    File(PathBuf),
+}
+
+impl SceneSource {
+    /// The scene's name: the built-in name or the file stem.
+    pub fn name(&self) -> String {
+        match self {
+            SceneSource::BuiltIn(n) => n.clone(),
+            SceneSource::File(p) => p
+                .file_stem()
+                .map_or_else(|| p.display().to_string(), |s| s.to_string_lossy().into()),
+        }
+    }
+
+    /// Reads, overrides (`--set`) and validates the scene.
+    ///
+    /// A `base` is relative to the scene file's folder (to the current folder for a built-in
+    /// scene); without one the built-in paper set (config/paper.toml) is the base.
+    pub fn load(&self, settings: &[Setting]) -> Result<Scene> {
+        let name = self.name();
+        match self {
+            SceneSource::BuiltIn(n) => {
+                let text = super::builtin::scene_text(n).ok_or_else(|| {
+                    Error::invalid(
+                        "scene",
+                        n,
+                        format!(
+                            "not a built-in scene; they are {}",
+                            super::builtin::scene_names().join(", ")
+                        ),
+                    )
+                })?;
+                let label = PathBuf::from(format!("<built-in charts/{n}.toml>"));
+                parse_scene(name, text, &label, Path::new(""), settings)
+            }
+            SceneSource::File(path) => {
+                let text = std::fs::read_to_string(path).map_err(|e| Error::io("read", path, e))?;
+                let dir = path.parent().unwrap_or(Path::new(""));
+                parse_scene(name, &text, path, dir, settings)
+            }
+        }
+    }
+}
 
 /// The scene names in `dir` (the stems of its `*.toml` files), sorted.
 pub fn scene_names(dir: &Path) -> Result<Vec<String>> {
+    Ok(scene_files(dir)?.iter().map(SceneSource::name).collect())
+}
+
+/// The scene files `dir/*.toml`, sorted by name.
+pub fn scene_files(dir: &Path) -> Result<Vec<SceneSource>> {
     let entries = std::fs::read_dir(dir).map_err(|e| Error::io("read", dir, e))?;
-    let mut names = Vec::new();
+    let mut files = Vec::new();
     for entry in entries {
         let path = entry.map_err(|e| Error::io("read", dir, e))?.path();
-        if path.extension().is_some_and(|e| e == "toml")
-            && let Some(stem) = path.file_stem().and_then(|s| s.to_str())
-        {
-            names.push(stem.to_string());
+        if path.extension().is_some_and(|e| e == "toml") && path.file_stem().is_some() {
+            files.push(SceneSource::File(path));
         }
     }
-    names.sort();
-    Ok(names)
+    files.sort_by_key(SceneSource::name);
+    Ok(files)
 }
 
 /// Loads and validates scene `name` from `dir/<name>.toml`.
 pub fn load_scene(dir: &Path, name: &str) -> Result<Scene> {
-    let path = dir.join(format!("{name}.toml"));
-    let text = std::fs::read_to_string(&path).map_err(|e| Error::io("read", &path, e))?;
-    let file: SceneFile = parse_toml(&text, &path)?;
-    let base_path = dir.join(file.base.as_deref().unwrap_or(Path::new(DEFAULT_BASE)));
-    let base = Config::load(&base_path)?;
+    SceneSource::File(dir.join(format!("{name}.toml"))).load(&[])
+}
+
+/// A scene from its text: `path` names it in errors, `dir` resolves its `base`.
+fn parse_scene(
+    name: String,
+    text: &str,
+    path: &Path,
+    dir: &Path,
+    settings: &[Setting],
+) -> Result<Scene> {
+    // The file as written first, so that its own mistakes carry their line.
+    let mut file: SceneFile = parse_toml(text, path)?;
+    if !settings.is_empty() {
+        let mut table: toml::Table = parse_toml(text, path)?;
+        overrides::apply(&mut table, settings)?;
+        file = SceneFile::deserialize(toml::Value::Table(table)).map_err(|e| {
+            let typed: Vec<String> = settings.iter().map(Setting::to_string).collect();
+            Error::invalid(
+                "--set",
+                typed.join(" "),
+                format!(
+                    "scene {name} does not take it: {}; its keys are in charts/README.md",
+                    e.message().trim()
+                ),
+            )
+        })?;
+    }
+    let base = match &file.base {
+        Some(b) => Config::load(&dir.join(b))?,
+        None => super::builtin::paper_config(),
+    };
     let params: SceneParams = apply_overrides(base.scene, &file.scene, "scene")?;
     params.validate()?;
     let min_norm: MinNormSettings = apply_overrides(base.min_norm, &file.min_norm, "min_norm")?;
@@ -169,7 +263,7 @@ pub fn load_scene(dir: &Path, name: &str) -> Result<Scene> {
     dynamics.validate()?;
     file.size.validate()?;
     let scene = Scene {
-        name: name.to_string(),
+        name,
         title: file.title,
         params,
         min_norm,
@@ -177,16 +271,23 @@ pub fn load_scene(dir: &Path, name: &str) -> Result<Scene> {
         size: file.size,
         chart: file.chart,
     };
-    match &scene.chart {
-        ChartSpec::JamMap(s) => s.validate(&scene.params)?,
-        ChartSpec::Sweep(s) => s.validate(&scene.params)?,
-        ChartSpec::ContourMap(s) => s.validate(&scene.params)?,
-        ChartSpec::Convergence(s) => s.validate()?,
-        ChartSpec::TimeSeries(s) => s.validate()?,
-        ChartSpec::WorkPrecision(s) => s.validate()?,
-        ChartSpec::Stability(s) => s.validate()?,
-    }
+    scene.validate_chart()?;
     Ok(scene)
+}
+
+impl Scene {
+    /// Checks the chart's settings against the scene's parameters.
+    pub fn validate_chart(&self) -> Result<()> {
+        match &self.chart {
+            ChartSpec::JamMap(s) => s.validate(&self.params),
+            ChartSpec::Sweep(s) => s.validate(&self.params),
+            ChartSpec::ContourMap(s) => s.validate(&self.params),
+            ChartSpec::Convergence(s) => s.validate(),
+            ChartSpec::TimeSeries(s) => s.validate(),
+            ChartSpec::WorkPrecision(s) => s.validate(),
+            ChartSpec::Stability(s) => s.validate(),
+        }
+    }
 }
 
 /// `base` with the keys of the override table of `[section]` replaced; unknown keys are refused.

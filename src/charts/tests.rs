@@ -18,7 +18,7 @@ fn fig3() -> Scene {
     load_scene(&charts_dir(), "fig3").expect("fig3 loads")
 }
 
-/// The read-off fig3 labels is the closed form of ERRATA.md: 44.646 deg, 24.355 mm (+-5e-4).
+/// The read-off fig3 labels is the corrected Eq. 1 (crate docs): 44.646 deg, 24.355 mm (+-5e-4).
 #[test]
 fn fig3_reads_off_the_errata_values() {
     let scene = fig3();

@@ -4,17 +4,18 @@
 mod accuracy;
 mod args;
 mod dynamics;
+mod guidance;
 mod min_norm;
 pub mod render;
 mod solve;
 mod stability;
+mod sweep;
 mod table;
+mod vlocator;
 
 use std::io::Write;
 
 use clap::{Parser, Subcommand};
-
-pub use args::{ModelChoice, OutputFormat, SceneArgs, TableFormat};
 
 use crate::error::Error;
 
@@ -45,13 +46,22 @@ pub enum Command {
     /// mu = 0.45 ... 0.15, with the relative difference to the printed values and the known
     /// erratum of the mu = 0.30 row marked.
     Table(table::TableArgs),
-    /// Draw the design charts (scenes in charts/) as SVG, PNG and data.
+    /// Draw the design charts (built-in scenes or your own) as SVG, PNG and data.
     ///
-    /// Each scene charts/NAME.toml names its chart kind, parameters, axes and layers; render
-    /// writes DIR/NAME.svg, NAME.png and the data behind the chart (NAME.csv or .json), each
-    /// atomically (temporary file, then rename). The pictures are byte-identical for any thread
-    /// count: the font is embedded and the PNG carries no metadata.
+    /// Each scene names its chart kind, parameters, axes and layers (`jamchart scenes` lists the
+    /// built-in ones; charts/README.md documents the keys); render writes DIR/NAME.svg, NAME.png
+    /// and the data behind the chart (NAME.csv or .json), each atomically (temporary file, then
+    /// rename). The pictures are byte-identical for any thread count: the font is embedded and
+    /// the PNG carries no metadata.
     Render(render::RenderArgs),
+    /// Draw x_jam and theta_jam against one or two parameters, without a scene file.
+    ///
+    /// One axis: both against it, with the F -> infinity limit (CSV, SVG, PNG). Two axes: a map
+    /// of x_jam over both (JSON, SVG, PNG). The other parameters come from the defaults (the
+    /// paper's), then --config FILE, then the flags. Closed-form statics.
+    Sweep(sweep::SweepArgs),
+    /// List the scenes render draws: name, chart kind and title, one line each.
+    Scenes(render::ScenesArgs),
     /// Error against run time of every model, against the physical reference.
     ///
     /// Every way of answering (closed form; min-norm by its exact path and by clarabel at each
@@ -70,6 +80,14 @@ pub enum Command {
     /// each answer classed correct / inaccurate_flagged / failed_named / wrong_unflagged
     /// against the case's physical reference. The chart is the scene `stability`.
     Stability(stability::StabilityArgs),
+    /// Hold a disc in a V-block: verdict, flank forces, holding capacity, optimum angle.
+    ///
+    /// A disc of weight m g in a V of two flat flanks (a symmetric V by --included-angle, any
+    /// V by --flank-angles), with an external force P at --load-angle, at the centre or at a
+    /// rim point. Prints whether the V holds it (wedged, slips, lifts_off or held), the
+    /// minimum-norm flank forces (N), the largest load P_max (N) held in that direction and
+    /// the included angle that best survives errors in load and friction.
+    Vlocator(vlocator::VlocatorArgs),
 }
 
 /// Runs the command line and returns the process exit code: 0 success, 2 bad input or failure.
@@ -82,8 +100,11 @@ pub fn main() -> i32 {
         Command::Solve(a) => solve::run(a),
         Command::Table(a) => table::run(a),
         Command::Render(a) => render::run(a),
+        Command::Scenes(a) => render::list(a),
+        Command::Sweep(a) => sweep::run(a),
         Command::Accuracy(a) => accuracy::run(a),
         Command::Stability(a) => stability::run(a),
+        Command::Vlocator(a) => vlocator::run(a),
     };
     match result {
         Ok(text) => {
@@ -113,28 +134,39 @@ fn clap_exit(e: clap::Error) -> i32 {
             2
         }
         _ => {
-            let rendered = e.render().to_string();
-            let first = rendered.lines().next().unwrap_or("invalid arguments");
-            let first = first.strip_prefix("error: ").unwrap_or(first);
-            // Keep clap's list of accepted values on the one line: it says what to type instead.
-            let values = rendered
-                .lines()
-                .map(str::trim)
-                .find(|l| l.starts_with("[possible values:"))
-                .map_or(String::new(), |v| format!(" {v}"));
-            eprintln!("jamchart: {first}{values}; see 'jamchart --help'");
+            eprintln!("jamchart: {}", one_line(&e.render().to_string()));
             2
         }
     }
 }
 
+/// clap's usage error as one line, keeping what says what to type instead: the accepted values,
+/// the missing arguments and the "did you mean" tips (`tip: a similar argument exists: ...`).
+fn one_line(rendered: &str) -> String {
+    let mut lines = rendered.lines().map(str::trim);
+    let first = lines.next().unwrap_or("invalid arguments");
+    let mut text = first.strip_prefix("error: ").unwrap_or(first).to_string();
+    // "the following required arguments were not provided:" lists them on the next lines.
+    let listed = text.ends_with(':');
+    for line in lines.take_while(|l| !l.starts_with("Usage:")) {
+        if line.starts_with("[possible values:") || (listed && line.starts_with('<')) {
+            text = format!("{} {line}", text.trim_end_matches(':'));
+        } else if let Some(tip) = line.strip_prefix("tip: ") {
+            text = format!("{text}; {tip}");
+        }
+    }
+    format!("{text}; see 'jamchart --help'")
+}
+
 /// The error message, with the flag that sets a key named beside the key.
 fn describe(e: &Error) -> String {
     match e {
-        Error::InvalidValue { key, value, reason } => match args::flag_for_key(key) {
-            Some(flag) => format!("invalid {key} = {value} (flag {flag}): {reason}"),
-            None => e.to_string(),
-        },
+        Error::InvalidValue { key, value, reason } => {
+            match args::flag_for_key(key).or_else(|| vlocator::flag_for_key(key)) {
+                Some(flag) => format!("invalid {key} = {value} (flag {flag}): {reason}"),
+                None => e.to_string(),
+            }
+        }
         _ => e.to_string(),
     }
 }

@@ -9,15 +9,17 @@ use indicatif::ProgressBar;
 use rayon::prelude::*;
 
 use crate::atomic::write_atomic;
-use crate::charts::{self, Formats, Rendered, Scene};
+use crate::charts::overrides::Setting;
+use crate::charts::{self, Formats, Rendered, Scene, SceneSource};
 use crate::error::{Error, Result};
 
 /// Flags of `render`.
 #[derive(Debug, Clone, Args)]
 pub struct RenderArgs {
-    /// Scenes to render, by name (default: every scene in --scenes-dir).
+    /// Scenes: built-in names, scene files or folders of them (default: every built-in scene).
     ///
-    /// Names are the file stems of the scene files, e.g. fig3 for charts/fig3.toml.
+    /// `jamchart scenes` lists the built-in ones (fig3, fig6, ...). A path to NAME.toml adds a
+    /// scene of your own (its keys are in charts/README.md); a folder adds every *.toml in it.
     #[arg(value_name = "SCENE")]
     pub scenes: Vec<String>,
     /// Output directory (created if missing).
@@ -26,9 +28,16 @@ pub struct RenderArgs {
     /// Pictures to write; the data file (.csv or .json) is always written.
     #[arg(long, value_enum, default_value_t = RenderFormat::Both)]
     pub format: RenderFormat,
-    /// Directory of the scene files NAME.toml.
-    #[arg(long, value_name = "DIR", default_value = "charts")]
-    pub scenes_dir: PathBuf,
+    /// Override a scene key in every scene rendered, e.g. mu_palm=0.6 (repeatable).
+    ///
+    /// A bare key is a [scene], [dynamics] or [min_norm] key (mu sets both frictions); other
+    /// keys take their section: chart.x_axis.count=51, size.width_px=2000, title="...". The
+    /// value is TOML; a bare word is a string.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<Setting>,
+    /// Folder whose scene files replace the built-in scenes (names then refer to its files).
+    #[arg(long, value_name = "DIR")]
+    pub scenes_dir: Option<PathBuf>,
 }
 
 /// Picture formats of `render`.
@@ -52,27 +61,72 @@ impl From<RenderFormat> for Formats {
     }
 }
 
-/// The scenes named in `wanted` (all when empty), loaded and validated before anything is drawn.
-pub fn load_scenes(dir: &Path, wanted: &[String]) -> Result<Vec<Scene>> {
-    let known = charts::scene_names(dir)?;
-    let mut names = if wanted.is_empty() {
-        known.clone()
-    } else {
-        wanted.to_vec()
+/// The scenes named in `wanted` (all known ones when empty): a known name (built in, or in
+/// `dir` when given), a scene file, or a folder of scene files.
+pub fn scene_sources(wanted: &[String], dir: Option<&Path>) -> Result<Vec<SceneSource>> {
+    let known = match dir {
+        Some(d) => charts::scene_files(d)?,
+        None => charts::builtin::scene_names()
+            .into_iter()
+            .map(SceneSource::BuiltIn)
+            .collect(),
     };
-    // A scene named twice is drawn once: two renders would write the same files at once.
-    let mut seen = std::collections::HashSet::new();
-    names.retain(|n| seen.insert(n.clone()));
-    for n in &names {
-        if !known.contains(n) {
+    if wanted.is_empty() {
+        return Ok(known);
+    }
+    let mut sources: Vec<SceneSource> = Vec::new();
+    for w in wanted {
+        let path = Path::new(w);
+        if let Some(s) = known.iter().find(|s| s.name() == *w) {
+            sources.push(s.clone());
+        } else if path.is_dir() {
+            sources.extend(charts::scene_files(path)?);
+        } else if path.is_file() || w.ends_with(".toml") {
+            sources.push(SceneSource::File(path.to_path_buf()));
+        } else {
+            let names: Vec<String> = known.iter().map(SceneSource::name).collect();
             return Err(Error::invalid(
                 "scene",
-                n,
-                format!("unknown scene; the known scenes are {}", known.join(", ")),
+                w,
+                format!(
+                    "unknown scene; the known scenes are {}, or give a scene file or folder by path",
+                    names.join(", ")
+                ),
             ));
         }
     }
-    names.iter().map(|n| charts::load_scene(dir, n)).collect()
+    // A scene named twice is drawn once: two renders would write the same files at once.
+    let mut unique: Vec<SceneSource> = Vec::new();
+    for s in sources {
+        match unique.iter().find(|u| u.name() == s.name()) {
+            Some(u) if *u == s => {}
+            Some(u) => {
+                return Err(Error::invalid(
+                    "scene",
+                    s.name(),
+                    format!(
+                        "two scenes of this name ({u:?} and {s:?}) would write the same files; \
+                         rename one"
+                    ),
+                ));
+            }
+            None => unique.push(s),
+        }
+    }
+    Ok(unique)
+}
+
+/// The scenes named in `wanted` (see [`scene_sources`]) with `settings` applied, loaded and
+/// validated before anything is drawn.
+pub fn load_scenes(
+    wanted: &[String],
+    dir: Option<&Path>,
+    settings: &[Setting],
+) -> Result<Vec<Scene>> {
+    scene_sources(wanted, dir)?
+        .iter()
+        .map(|s| s.load(settings))
+        .collect()
 }
 
 /// Writes the rendered files of one scene into `out`; returns their paths.
@@ -90,7 +144,7 @@ pub fn write_rendered(out: &Path, r: &Rendered) -> Result<Vec<PathBuf>> {
 }
 
 pub fn run(a: &RenderArgs) -> Result<String> {
-    let scenes = load_scenes(&a.scenes_dir, &a.scenes)?;
+    let scenes = load_scenes(&a.scenes, a.scenes_dir.as_deref(), &a.set)?;
     std::fs::create_dir_all(&a.out)
         .map_err(|e| Error::io("create the output directory", &a.out, e))?;
     // A bar only for a person watching: not in CI logs, not into pipes.
@@ -114,6 +168,36 @@ pub fn run(a: &RenderArgs) -> Result<String> {
     for (scene, paths) in scenes.iter().zip(written) {
         let list: Vec<String> = paths?.iter().map(|p| p.display().to_string()).collect();
         let _ = writeln!(text, "{}: {}", scene.name, list.join(" "));
+    }
+    Ok(text)
+}
+
+/// Flags of `scenes`.
+#[derive(Debug, Clone, Args)]
+pub struct ScenesArgs {
+    /// Scenes to list: names, scene files or folders (default: every built-in scene).
+    #[arg(value_name = "SCENE")]
+    pub scenes: Vec<String>,
+}
+
+/// One line per scene: name, chart kind, title.
+pub fn list(a: &ScenesArgs) -> Result<String> {
+    let scenes = load_scenes(&a.scenes, None, &[])?;
+    let name_w = scenes.iter().map(|s| s.name.len()).max().unwrap_or(0);
+    let kind_w = scenes
+        .iter()
+        .map(|s| s.chart.kind().len())
+        .max()
+        .unwrap_or(0);
+    let mut text = String::new();
+    for s in &scenes {
+        let _ = writeln!(
+            text,
+            "{:name_w$}  {:kind_w$}  {}",
+            s.name,
+            s.chart.kind(),
+            s.title
+        );
     }
     Ok(text)
 }

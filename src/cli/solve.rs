@@ -244,5 +244,11 @@ fn render_text(config: &Config, answers: &[Answer]) -> String {
             let _ = writeln!(s, "  took {:.1} ms", r.elapsed_s * 1e3);
         }
     }
+    if answers.len() > 1 {
+        s.push_str(&super::guidance::guidance(
+            config,
+            answers.iter().map(|x| &x.solution),
+        ));
+    }
     s
 }

@@ -51,7 +51,7 @@ impl Method {
 /// Parameters of the Adams-like model and of its integration (section `[dynamics]`).
 ///
 /// Defaults are the paper's Adams model (Section 4) with Adams' documented IMPACT defaults where
-/// the paper's printed contact parameters are garbled (see ERRATA.md).
+/// the paper's printed contact parameters are garbled (crate docs, Corrections to the paper).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct DynamicsParams {

@@ -48,7 +48,7 @@
 //! t_B = u = (cos theta, sin theta) along the palm, away from the hinge. Moments are taken about
 //! C, so lever arms are r, and theta -> 0 (x -> infinity) stays well conditioned; equilibrium
 //! does not depend on the moment point, so this is Eq. 5 with r measured from C, not from the
-//! hinge (the paper's Eq. 7 mixes the two; see ERRATA.md).
+//! hinge (the paper's Eq. 7 mixes the two; crate docs, Corrections to the paper).
 //!
 //! ## (a) Translational (the paper's)
 //!
@@ -60,7 +60,7 @@
 //! mu = 0; it carries no weight and no friction).
 //!
 //! Where the push drives the disc forward (R_t >= 0) the stop is idle, the force rows fix the
-//! ground force and the minimum is trivial (ERRATA): f_t,A = F sin(theta - alpha_p) = R_t and
+//! ground force and the minimum is trivial (crate docs, Corrections): f_t,A = F sin(theta - alpha_p) = R_t and
 //! f_n,A = m g + F cos(theta - alpha_p) = R_n, exactly the corrected Eq. 1; the joint takes what
 //! the two frictions leave of the moment, lambda = r (R_t - F sin alpha_p). Held is then
 //! R_n >= 0 and R_t <= mu_g R_n: the Eq. 1 test. Where the sliding palm's own friction drags the

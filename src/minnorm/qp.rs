@@ -87,6 +87,45 @@ pub enum HoldStatus {
     Undetermined,
 }
 
+/// clarabel's own termination status, kept beside the [`HoldStatus`] it was read as (the
+/// spellings are clarabel's `SolverStatus` names in snake_case).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+#[allow(missing_docs)] // clarabel's SolverStatus documents each
+pub enum ClarabelStatus {
+    Unsolved,
+    Solved,
+    PrimalInfeasible,
+    DualInfeasible,
+    AlmostSolved,
+    AlmostPrimalInfeasible,
+    AlmostDualInfeasible,
+    MaxIterations,
+    MaxTime,
+    NumericalError,
+    InsufficientProgress,
+    CallbackTerminated,
+}
+
+impl From<SolverStatus> for ClarabelStatus {
+    fn from(s: SolverStatus) -> Self {
+        match s {
+            SolverStatus::Unsolved => ClarabelStatus::Unsolved,
+            SolverStatus::Solved => ClarabelStatus::Solved,
+            SolverStatus::PrimalInfeasible => ClarabelStatus::PrimalInfeasible,
+            SolverStatus::DualInfeasible => ClarabelStatus::DualInfeasible,
+            SolverStatus::AlmostSolved => ClarabelStatus::AlmostSolved,
+            SolverStatus::AlmostPrimalInfeasible => ClarabelStatus::AlmostPrimalInfeasible,
+            SolverStatus::AlmostDualInfeasible => ClarabelStatus::AlmostDualInfeasible,
+            SolverStatus::MaxIterations => ClarabelStatus::MaxIterations,
+            SolverStatus::MaxTime => ClarabelStatus::MaxTime,
+            SolverStatus::NumericalError => ClarabelStatus::NumericalError,
+            SolverStatus::InsufficientProgress => ClarabelStatus::InsufficientProgress,
+            SolverStatus::CallbackTerminated => ClarabelStatus::CallbackTerminated,
+        }
+    }
+}
+
 /// Which solver produced a solution.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -146,6 +185,8 @@ pub struct ContactSolution {
     pub backend: Backend,
     /// Per-iteration trace (clarabel only; empty for the exact path).
     pub trace: Vec<TracePoint>,
+    /// clarabel's own status (None for the exact path): which stop an `undetermined` was.
+    pub clarabel_status: Option<ClarabelStatus>,
 }
 
 /// Solves the minimum-norm program: the exact path where it applies and `fast_path` is set,
@@ -155,15 +196,15 @@ pub fn solve(problem: &ContactProblem, settings: &QpSettings) -> Result<ContactS
     if settings.fast_path && exact::applies(&low) {
         return Ok(exact::solve_lowered(&low));
     }
-    Ok(solve_lowered(&low, settings))
+    solve_lowered(&low, settings)
 }
 
 /// Solves with clarabel whatever the size, recording the per-iteration trace.
 pub fn solve_clarabel(problem: &ContactProblem, settings: &QpSettings) -> Result<ContactSolution> {
-    Ok(solve_lowered(&problem.lower()?, settings))
+    solve_lowered(&problem.lower()?, settings)
 }
 
-fn solve_lowered(low: &Lowered, settings: &QpSettings) -> ContactSolution {
+fn solve_lowered(low: &Lowered, settings: &QpSettings) -> Result<ContactSolution> {
     let n = low.eq.ncols();
     let p_diag: Vec<usize> = (0..low.n_contact_vars).collect();
     let p =
@@ -210,11 +251,9 @@ fn solve_lowered(low: &Lowered, settings: &QpSettings) -> ContactSolution {
         max_threads: 1,
         ..DefaultSettings::default()
     };
-    let undetermined = ContactSolution::not_held(HoldStatus::Undetermined, Backend::Clarabel, 0);
-    let Ok(mut solver) = DefaultSolver::new(&p, &q, &a, &b, &cones, cs) else {
-        // Dimensions and settings are ours and checked; refuse to panic all the same.
-        return undetermined;
-    };
+    // Dimensions and settings are ours and checked: a refusal here is a bug or misuse.
+    let mut solver = DefaultSolver::new(&p, &q, &a, &b, &cones, cs)
+        .map_err(|e| Error::Unsupported(format!("clarabel refused the program: {e:?}")))?;
     let trace = Arc::new(Mutex::new(Vec::new()));
     let sink = Arc::clone(&trace);
     let objective_scale = low.force_scale_n * low.force_scale_n;
@@ -254,7 +293,8 @@ fn solve_lowered(low: &Lowered, settings: &QpSettings) -> ContactSolution {
         ContactSolution::not_held(status, Backend::Clarabel, sol.iterations)
     };
     out.trace = trace;
-    out
+    out.clarabel_status = Some(sol.status.into());
+    Ok(out)
 }
 
 fn finite_point(p: &TracePoint) -> bool {
@@ -273,6 +313,7 @@ impl ContactSolution {
             iterations,
             backend,
             trace: Vec::new(),
+            clarabel_status: None,
         }
     }
 }
@@ -339,5 +380,6 @@ pub(crate) fn assemble(
         iterations,
         backend,
         trace: Vec::new(),
+        clarabel_status: None,
     }
 }

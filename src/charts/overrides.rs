@@ -1,0 +1,178 @@
+//! `--set key=value`: one key of a scene file replaced before the scene is read.
+//!
+//! A dotted key names its section (`chart.x_axis.count=51`, `dynamics.after_jam_s=0.3`,
+//! `size.width_px=2000`); a bare key is a `[scene]`, `[dynamics]` or `[min_norm]` key, found in
+//! that order (`mu_palm=0.6`), or a top-level key (`title`, `base`). `mu` sets both frictions,
+//! as the paper's single mu. The value is TOML (`0.6`, `51`, `"log"`, `[1.0, 2.0]`); a bare word
+//! is a string (`scale=log`).
+
+use std::str::FromStr;
+
+use serde::Serialize;
+
+use crate::dynamics::DynamicsParams;
+use crate::error::{Error, Result};
+use crate::minnorm::MinNormSettings;
+use crate::model::SceneParams;
+
+/// One `key=value` override.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Setting {
+    /// The key as typed, e.g. `mu_palm` or `chart.x_axis.count`.
+    pub key: String,
+    /// The value, parsed as TOML.
+    pub value: toml::Value,
+}
+
+impl FromStr for Setting {
+    type Err = String;
+
+    fn from_str(s: &str) -> std::result::Result<Self, String> {
+        let (key, raw) = s
+            .split_once('=')
+            .ok_or_else(|| format!("'{s}' is not key=value (e.g. mu_palm=0.6)"))?;
+        let key = key.trim();
+        if key.is_empty() || key.split('.').any(str::is_empty) {
+            return Err(format!("'{s}' has an empty key"));
+        }
+        let raw = raw.trim();
+        let value = toml::from_str::<toml::Table>(&format!("v = {raw}"))
+            .ok()
+            .and_then(|mut t| t.remove("v"))
+            .unwrap_or_else(|| toml::Value::String(raw.to_string()));
+        Ok(Setting {
+            key: key.to_string(),
+            value,
+        })
+    }
+}
+
+impl std::fmt::Display for Setting {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}={}", self.key, self.value)
+    }
+}
+
+/// The top-level keys of a scene file that are values, not sections.
+const TOP_LEVEL: &[&str] = &["title", "base"];
+
+/// The full paths a setting writes, e.g. `["scene", "mu_palm"]`.
+fn paths(key: &str, value: &toml::Value) -> Result<Vec<Vec<String>>> {
+    if key.contains('.') || TOP_LEVEL.contains(&key) {
+        return Ok(vec![key.split('.').map(str::to_string).collect()]);
+    }
+    if key == "mu" {
+        return Ok(["mu_ground", "mu_palm"]
+            .iter()
+            .map(|k| vec!["scene".to_string(), k.to_string()])
+            .collect());
+    }
+    let sections = [
+        ("scene", keys_of(SceneParams::default())),
+        ("dynamics", keys_of(DynamicsParams::default())),
+        ("min_norm", keys_of(MinNormSettings::default())),
+    ];
+    for (section, keys) in &sections {
+        if keys.iter().any(|k| k == key) {
+            return Ok(vec![vec![section.to_string(), key.to_string()]]);
+        }
+    }
+    Err(Error::invalid(
+        &format!("--set {key}"),
+        value,
+        format!(
+            "not a scene key; bare keys are mu, {}, {}, and the [dynamics] and [min_norm] keys; \
+             other keys take their section, e.g. chart.x_axis.count or dynamics.atol",
+            sections[0].1.join(", "),
+            TOP_LEVEL.join(", ")
+        ),
+    ))
+}
+
+/// The keys a settings struct writes (its optional keys left unset are not among them).
+fn keys_of<T: Serialize>(t: T) -> Vec<String> {
+    toml::Table::try_from(t)
+        .expect("settings serialise to a table")
+        .keys()
+        .cloned()
+        .collect()
+}
+
+/// Applies `settings` in order to a scene file's table; sections and inline tables on the way
+/// are created when missing.
+pub fn apply(table: &mut toml::Table, settings: &[Setting]) -> Result<()> {
+    for s in settings {
+        for path in paths(&s.key, &s.value)? {
+            let (last, parents) = path.split_last().expect("keys are not empty");
+            let mut t = &mut *table;
+            for p in parents {
+                let entry = t
+                    .entry(p.clone())
+                    .or_insert_with(|| toml::Value::Table(toml::Table::new()));
+                t = entry.as_table_mut().ok_or_else(|| {
+                    Error::invalid(
+                        &format!("--set {}", s.key),
+                        &s.value,
+                        format!("{p} is a value, not a section"),
+                    )
+                })?;
+            }
+            t.insert(last.clone(), s.value.clone());
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn set(s: &str) -> Setting {
+        s.parse().unwrap()
+    }
+
+    #[test]
+    fn values_parse_as_toml_and_bare_words_as_strings() {
+        assert_eq!(set("mu_palm=0.6").value, toml::Value::Float(0.6));
+        assert_eq!(
+            set("chart.x_axis.count = 51").value,
+            toml::Value::Integer(51)
+        );
+        assert_eq!(set("scale=log").value, toml::Value::String("log".into()));
+        assert!("mu_palm".parse::<Setting>().is_err());
+        assert!("a..b=1".parse::<Setting>().is_err());
+    }
+
+    #[test]
+    fn bare_keys_find_their_section_and_dotted_keys_create_theirs() {
+        let mut t: toml::Table = toml::from_str("[chart]\nx_axis = { count = 401 }\n").unwrap();
+        let sets = [
+            set("mu=0.3"),
+            set("after_jam_s=0.1"),
+            set("chart.x_axis.count=51"),
+            set("title=hello"),
+        ];
+        apply(&mut t, &sets).unwrap();
+        assert_eq!(t["scene"]["mu_ground"].as_float(), Some(0.3));
+        assert_eq!(t["scene"]["mu_palm"].as_float(), Some(0.3));
+        assert_eq!(t["dynamics"]["after_jam_s"].as_float(), Some(0.1));
+        assert_eq!(t["chart"]["x_axis"]["count"].as_integer(), Some(51));
+        assert_eq!(t["title"].as_str(), Some("hello"));
+    }
+
+    #[test]
+    fn unknown_bare_key_is_refused_with_the_known_ones() {
+        let mut t = toml::Table::new();
+        let msg = apply(&mut t, &[set("radious_mm=3")])
+            .unwrap_err()
+            .to_string();
+        assert!(
+            msg.contains("radious_mm") && msg.contains("radius_mm"),
+            "{msg}"
+        );
+        let msg = apply(&mut t, &[set("title=a"), set("title.x=1")])
+            .unwrap_err()
+            .to_string();
+        assert!(msg.contains("not a section"), "{msg}");
+    }
+}

@@ -1,0 +1,177 @@
+//! `jamchart sweep`: x_jam and theta_jam against one or two parameters, without a scene file.
+
+use std::path::PathBuf;
+use std::str::FromStr;
+
+use clap::Args;
+use serde::Deserialize;
+
+use super::args::SceneArgs;
+use super::render::{RenderFormat, write_rendered};
+use crate::charts::contour_map::ContourMapSpec;
+use crate::charts::spec::Size;
+use crate::charts::sweep::{SweepPanel, SweepSpec};
+use crate::charts::sweep_layers::SweepLayer;
+use crate::charts::{self, ChartSpec, Scene, axis_label};
+use crate::error::Result;
+use crate::grid::{AxisScale, GridAxis, GridParam};
+use crate::models::ModelKind;
+
+/// Flags of `sweep`.
+#[derive(Debug, Clone, Args)]
+pub struct SweepArgs {
+    /// The swept parameter(s): PARAM=MIN:MAX, optionally :COUNT and :log.
+    ///
+    /// One axis draws x_jam and theta_jam against it (NAME.csv); two draw a map of x_jam over
+    /// both, the first across (NAME.json). PARAM is one of mu (both frictions), mu_ground,
+    /// mu_palm, radius_mm, mass_kg, force_n, gravity_m_s2, start_angle_deg, palm_length_mm.
+    /// COUNT defaults to 201 samples (101 per axis of a map). E.g. mu=0.1:0.5 or
+    /// force_n=50:10000:log radius_mm=10:30.
+    #[arg(value_name = "PARAM=MIN:MAX", required = true, num_args = 1..=2)]
+    pub axes: Vec<AxisArg>,
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Output directory (created if missing).
+    #[arg(long, value_name = "DIR", default_value = "out")]
+    pub out: PathBuf,
+    /// File name of the outputs, without extension [default: sweep_PARAM or map_PARAM_PARAM].
+    #[arg(long, value_name = "NAME")]
+    pub name: Option<String>,
+    /// Pictures to write; the data file is always written.
+    #[arg(long, value_enum, default_value_t = RenderFormat::Both)]
+    pub format: RenderFormat,
+}
+
+/// `PARAM=MIN:MAX[:COUNT][:log]` as typed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AxisArg {
+    param: GridParam,
+    min: f64,
+    max: f64,
+    count: Option<usize>,
+    scale: AxisScale,
+}
+
+impl FromStr for AxisArg {
+    type Err = String;
+
+    fn from_str(s: &str) -> std::result::Result<Self, String> {
+        let usage = || format!("'{s}' is not PARAM=MIN:MAX[:COUNT][:log] (e.g. mu=0.1:0.5)");
+        let (name, range) = s.split_once('=').ok_or_else(usage)?;
+        let param = GridParam::deserialize(toml::Value::String(name.trim().to_string()))
+            .map_err(|e| format!("'{s}': {}", e.message().trim()))?;
+        let mut parts = range.split(':');
+        let mut number = || -> std::result::Result<f64, String> {
+            parts
+                .next()
+                .and_then(|p| p.trim().parse().ok())
+                .ok_or_else(usage)
+        };
+        let (min, max) = (number()?, number()?);
+        let (mut count, mut scale) = (None, AxisScale::Linear);
+        for p in range.split(':').skip(2) {
+            match p.trim() {
+                "log" => scale = AxisScale::Log,
+                "linear" => scale = AxisScale::Linear,
+                n => count = Some(n.parse().map_err(|_| usage())?),
+            }
+        }
+        Ok(AxisArg {
+            param,
+            min,
+            max,
+            count,
+            scale,
+        })
+    }
+}
+
+impl AxisArg {
+    fn axis(&self, default_count: usize) -> GridAxis {
+        GridAxis {
+            param: self.param,
+            min: self.min,
+            max: self.max,
+            count: self.count.unwrap_or(default_count),
+            scale: self.scale,
+        }
+    }
+}
+
+/// The scene `sweep` draws: a sweep for one axis, a contour map of x_jam for two.
+pub fn scene(a: &SweepArgs) -> Result<Scene> {
+    let config = a.scene.resolve_with(|_| {})?;
+    let (chart, default_name, title) = match a.axes.as_slice() {
+        [x] => {
+            let axis = x.axis(201);
+            let chart = ChartSpec::Sweep(SweepSpec {
+                axis,
+                panels: vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg],
+                layers: vec![SweepLayer::Statics, SweepLayer::RigidLimit],
+            });
+            let title = format!("Jam point against {}", axis_label(axis.param));
+            (chart, format!("sweep_{}", axis.param.as_str()), title)
+        }
+        [x, y] => {
+            let (x_axis, y_axis) = (x.axis(101), y.axis(101));
+            let chart = ChartSpec::ContourMap(ContourMapSpec {
+                x_axis,
+                y_axis,
+                x_jam_levels_mm: Vec::new(),
+                theta_jam_levels_deg: Vec::new(),
+                settle_pct: None,
+                model: ModelKind::Statics,
+            });
+            let (px, py) = (x_axis.param.as_str(), y_axis.param.as_str());
+            let title = format!(
+                "Jam position x_jam over {} and {}",
+                charts::param_symbol(x_axis.param),
+                charts::param_symbol(y_axis.param)
+            );
+            (chart, format!("map_{px}_{py}"), title)
+        }
+        _ => unreachable!("clap takes one or two axes"),
+    };
+    let scene = Scene {
+        name: a.name.clone().unwrap_or(default_name),
+        title,
+        params: config.scene,
+        min_norm: config.min_norm,
+        dynamics: config.dynamics,
+        size: Size::default(),
+        chart,
+    };
+    scene.validate_chart()?;
+    Ok(scene)
+}
+
+pub fn run(a: &SweepArgs) -> Result<String> {
+    let scene = scene(a)?;
+    std::fs::create_dir_all(&a.out)
+        .map_err(|e| crate::error::Error::io("create the output directory", &a.out, e))?;
+    let rendered = charts::render(&scene, a.format.into())?;
+    let paths = write_rendered(&a.out, &rendered)?;
+    let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    Ok(format!("{}: {}\n", scene.name, list.join(" ")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn axis_takes_range_count_and_scale() {
+        let a: AxisArg = "force_n=50:10000:31:log".parse().unwrap();
+        let g = a.axis(201);
+        assert_eq!(
+            (g.param, g.count, g.scale),
+            (GridParam::ForceN, 31, AxisScale::Log)
+        );
+        assert!((g.min - 50.0).abs() < 1e-12 && (g.max - 1e4).abs() < 1e-12);
+        assert_eq!("mu=0.1:0.5".parse::<AxisArg>().unwrap().axis(7).count, 7);
+        let msg = "radious_mm=1:2".parse::<AxisArg>().unwrap_err();
+        assert!(msg.contains("radius_mm"), "{msg}");
+        assert!("mu=0.1".parse::<AxisArg>().is_err());
+        assert!("mu=0.1:x".parse::<AxisArg>().is_err());
+    }
+}

@@ -1,0 +1,305 @@
+//! `jamchart vlocator`: a disc in a V-block, its verdict, forces, capacity and optimum angle.
+
+use std::fmt::Write;
+
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+
+use super::args::OutputFormat;
+use crate::error::{Error, Result};
+use crate::locator::{
+    self, Capacity, FlankForce, LocatorParams, LocatorSolution, OPT_MAX_DEG, OPT_MIN_DEG, Optimum,
+    Rotation, Verdict,
+};
+
+/// `--rotation`: whether the disc may turn in the V.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RotationArg {
+    /// The disc may rotate: the flank frictions carry the moment (a real V-block).
+    Free,
+    /// A joint carries the moment (the paper's translational formulation).
+    Blocked,
+}
+
+/// Flags of `vlocator`.
+#[derive(Debug, Clone, Args)]
+pub struct VlocatorArgs {
+    /// Included angle of a symmetric V in deg, in (0, 180) [default: 90].
+    #[arg(
+        long,
+        value_name = "DEG",
+        allow_negative_numbers = true,
+        conflicts_with = "flank_angles"
+    )]
+    pub included_angle: Option<f64>,
+    /// Flank angles a1,a2 above the horizontal in deg (left, right).
+    ///
+    /// Each in [0, 180) with a1 + a2 < 180; above 90 a flank overhangs. The included angle
+    /// is 180 - a1 - a2 [default: 45,45]
+    #[arg(
+        long,
+        value_name = "A1,A2",
+        value_delimiter = ',',
+        // "-5,40" is not a number: without this clap reads it as a flag.
+        allow_hyphen_values = true
+    )]
+    pub flank_angles: Option<Vec<f64>>,
+    /// Friction coefficient on both flanks [default: 0.3].
+    ///
+    /// --mu-left or --mu-right given as well take precedence for their flank. Dimensionless, >= 0
+    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
+    pub mu: Option<f64>,
+    /// Friction coefficient on the left flank [default: 0.3].
+    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
+    pub mu_left: Option<f64>,
+    /// Friction coefficient on the right flank [default: 0.3].
+    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
+    pub mu_right: Option<f64>,
+    /// Disc mass m in kg [default: 1].
+    #[arg(long, value_name = "KG", allow_negative_numbers = true)]
+    pub mass: Option<f64>,
+    /// Gravitational acceleration g in m/s^2 [default: 9.806].
+    #[arg(long, value_name = "M/S^2", allow_negative_numbers = true)]
+    pub gravity: Option<f64>,
+    /// External force P in N, >= 0 [default: 0].
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub load: Option<f64>,
+    /// Direction of the external force in deg from +x, counter-clockwise [default: 0].
+    ///
+    /// 0 pushes sideways towards the right flank, -90 straight down into the V, 90 lifts.
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true)]
+    pub load_angle: Option<f64>,
+    /// Apply the force at the rim point at this angle (deg from +x about the centre).
+    ///
+    /// It then adds the moment r P sin(phi - psi). Free rotation only. Omitted: at the centre.
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true)]
+    pub load_at_rim: Option<f64>,
+    /// Whether the disc may rotate in the V.
+    #[arg(long, value_enum, default_value_t = RotationArg::Free)]
+    pub rotation: RotationArg,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
+    pub format: OutputFormat,
+}
+
+impl VlocatorArgs {
+    /// The parameters: defaults, then the flags; validated.
+    pub fn params(&self) -> Result<LocatorParams> {
+        let mut p = LocatorParams::default();
+        if let Some(g) = self.included_angle {
+            if !(g.is_finite() && g > 0.0 && g < 180.0) {
+                return Err(Error::invalid(
+                    "included_angle_deg",
+                    g,
+                    "the included angle of a V lies in (0, 180) deg",
+                ));
+            }
+            p = p.with_included_angle(g);
+        }
+        if let Some(a) = &self.flank_angles {
+            let [a1, a2] = a[..] else {
+                let text: Vec<String> = a.iter().map(f64::to_string).collect();
+                return Err(Error::invalid(
+                    "flank_angles",
+                    text.join(","),
+                    "give two angles, left and right, e.g. 30,60",
+                ));
+            };
+            p.flank_left_deg = a1;
+            p.flank_right_deg = a2;
+        }
+        if let Some(mu) = self.mu {
+            p = p.with_mu(mu);
+        }
+        let overrides = [
+            (self.mu_left, &mut p.mu_left),
+            (self.mu_right, &mut p.mu_right),
+            (self.mass, &mut p.mass_kg),
+            (self.gravity, &mut p.gravity_m_s2),
+            (self.load, &mut p.load_n),
+            (self.load_angle, &mut p.load_angle_deg),
+        ];
+        for (flag, field) in overrides {
+            if let Some(v) = flag {
+                *field = v;
+            }
+        }
+        p.load_at_rim_deg = self.load_at_rim;
+        p.rotation = match self.rotation {
+            RotationArg::Free => Rotation::Free,
+            RotationArg::Blocked => Rotation::Blocked,
+        };
+        p.validate()?;
+        Ok(p)
+    }
+}
+
+/// The flag that sets a locator key, for error messages.
+pub fn flag_for_key(key: &str) -> Option<&'static str> {
+    Some(match key {
+        "included_angle_deg" => "--included-angle",
+        "flank_angles" => "--flank-angles",
+        "flank_left_deg" | "flank_right_deg" | "flank_left_deg + flank_right_deg" => {
+            "--flank-angles or --included-angle"
+        }
+        "mu_left" => "--mu-left or --mu",
+        "mu_right" => "--mu-right or --mu",
+        "load_n" => "--load",
+        "load_angle_deg" => "--load-angle",
+        "load_at_rim_deg" => "--load-at-rim",
+        _ => return None,
+    })
+}
+
+/// The JSON document: the issue's keys, then the inputs.
+#[derive(Serialize)]
+struct Report<'a> {
+    verdict: &'static str,
+    self_locking: bool,
+    locking_needed: bool,
+    friction_held: bool,
+    forces: Option<&'a [FlankForce; 2]>,
+    capacity: &'a Capacity,
+    optimum: &'a Optimum,
+    inputs: &'a LocatorParams,
+}
+
+/// Runs `vlocator`: the text or JSON answer.
+pub fn run(args: &VlocatorArgs) -> Result<String> {
+    let p = args.params()?;
+    let s = locator::solve(&p)?;
+    Ok(match args.format {
+        OutputFormat::Json => {
+            let report = Report {
+                verdict: s.verdict.as_str(),
+                self_locking: s.self_locking,
+                locking_needed: s.locking_needed,
+                friction_held: s.friction_held,
+                forces: s.forces.as_ref(),
+                capacity: &s.capacity,
+                optimum: &s.optimum,
+                inputs: &p,
+            };
+            let mut text = serde_json::to_string_pretty(&report).expect("the report serialises");
+            text.push('\n');
+            text
+        }
+        OutputFormat::Text => text(&p, &s),
+    })
+}
+
+/// The answer for a person, units on every number.
+fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
+    let mut out = String::new();
+    let w = p.weight_n();
+    let at = match p.load_at_rim_deg {
+        Some(psi) => format!("at the rim point {psi} deg"),
+        None => "at the centre".to_string(),
+    };
+    let _ = writeln!(
+        out,
+        "V of {:.3} deg (left flank {} deg, right flank {} deg), mu {} left / {} right, {} rotation",
+        p.included_angle_deg(),
+        p.flank_left_deg,
+        p.flank_right_deg,
+        p.mu_left,
+        p.mu_right,
+        p.rotation.as_str()
+    );
+    let _ = writeln!(
+        out,
+        "weight W = {w:.3} N; load P = {} N at {} deg {at}",
+        p.load_n, p.load_angle_deg
+    );
+    let verdict = match s.verdict {
+        Verdict::Wedged => {
+            "wedged: the V self-locks; it holds any load, the part can jam and needs a pull to \
+             come out"
+                .to_string()
+        }
+        Verdict::Slips { mode } => format!("slips: no equilibrium, the part {}", mode.describe()),
+        Verdict::LiftsOff { flank } => format!(
+            "lifts off: held on the {} flank alone, the {} flank carries nothing",
+            flank.other().as_str(),
+            flank.as_str()
+        ),
+        Verdict::Held => "held on both flanks".to_string(),
+    };
+    let _ = writeln!(out, "verdict: {verdict}");
+    let yes = |b: bool| if b { "yes" } else { "no" };
+    let _ = writeln!(
+        out,
+        "  self-locking: {}; held only by friction: {}; held only because it locks: {}",
+        yes(s.self_locking),
+        yes(s.friction_held),
+        yes(s.locking_needed)
+    );
+    match &s.forces {
+        Some(forces) => {
+            let lower = if s.self_locking {
+                " (a lower bound: the V can squeeze harder)"
+            } else {
+                ""
+            };
+            let _ = writeln!(out, "minimum-norm flank forces{lower}:");
+            for f in forces {
+                let _ = writeln!(
+                    out,
+                    "  {:<5} flank: normal {:.3} N, friction {:.3} N up the flank, \
+                     (fx, fy) = ({:.3}, {:.3}) N, friction utilisation {:.1} %",
+                    f.flank.as_str(),
+                    clean(f.normal_n),
+                    clean(f.tangential_up_n),
+                    clean(f.fx_n),
+                    clean(f.fy_n),
+                    100.0 * f.utilisation
+                );
+            }
+        }
+        None => {
+            let _ = writeln!(out, "flank forces: none (no equilibrium)");
+        }
+    }
+    let c = &s.capacity;
+    let cap = match (c.unbounded, c.p_max_n, c.failure_mode) {
+        (true, _, _) => "unbounded: every load in this direction is held".to_string(),
+        (false, Some(pm), Some(m)) => format!(
+            "P_max = {pm:.3} N = {:.3} W; beyond it the part {}",
+            pm / w,
+            m.describe()
+        ),
+        (false, _, m) => format!(
+            "none: not even the weight is held; the part {}",
+            m.map_or("leaves", |m| m.describe())
+        ),
+    };
+    let _ = writeln!(
+        out,
+        "holding capacity at {} deg {at}: {cap}",
+        p.load_angle_deg
+    );
+    let o = &s.optimum;
+    let bound = if o.at_bound {
+        format!(" (at the end of the search range {OPT_MIN_DEG}-{OPT_MAX_DEG} deg)")
+    } else {
+        String::new()
+    };
+    let _ = writeln!(
+        out,
+        "optimum included angle (balanced: survives load x rho with friction / rho, and friction \
+         x rho): {:.2} deg{bound}, safety factor rho* = {:.3} (a factor on load and friction)",
+        o.included_angle_deg, o.safety_factor
+    );
+    if o.safety_factor <= 1.0 {
+        let _ = writeln!(
+            out,
+            "  rho* <= 1: no V that does not lock can hold this load at this friction"
+        );
+    }
+    out
+}
+
+/// Roundoff below the printed digits shows as 0.000, not -0.000.
+fn clean(v: f64) -> f64 {
+    if v.abs() < 5e-4 { 0.0 } else { v }
+}

@@ -1,0 +1,62 @@
+//! `jamchart sweep` run as a process in a temporary directory: a chart of one's own parameters
+//! without a scene file.
+
+#[path = "common/cli.rs"]
+mod cli_util;
+use cli_util::{jamchart, stderr};
+
+/// The statics row at mu = 0.4 of a one-line sweep is the paper's closed form, 24.355 mm.
+#[test]
+fn one_axis_sweep_writes_data_and_pictures_with_the_closed_form() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = jamchart(dir.path(), &["sweep", "mu=0.2:0.6:5"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    for ext in ["csv", "svg", "png"] {
+        assert!(
+            dir.path().join(format!("out/sweep_mu.{ext}")).exists(),
+            "{ext}"
+        );
+    }
+    let csv = std::fs::read_to_string(dir.path().join("out/sweep_mu.csv")).unwrap();
+    let row = csv
+        .lines()
+        .find(|l| l.starts_with("statics,0.4,"))
+        .unwrap_or_else(|| panic!("{csv}"));
+    let x: f64 = row.split(',').nth(2).unwrap().parse().unwrap();
+    assert!((x - 24.355).abs() < 5e-4, "{row}");
+}
+
+#[test]
+fn two_axis_sweep_draws_a_map_with_flags_for_the_rest() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = [
+        "sweep",
+        "force_n=50:1000:9:log",
+        "radius_mm=10:30:7",
+        "--mass",
+        "2.5",
+        "--name",
+        "shaft",
+        "--out",
+        "o",
+    ];
+    let out = jamchart(dir.path(), &args);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let png = std::fs::read(dir.path().join("o/shaft.png")).unwrap();
+    assert_eq!(&png[1..4], b"PNG");
+    assert!(dir.path().join("o/shaft.svg").exists());
+}
+
+#[test]
+fn bad_axis_exits_2_and_names_the_parameters() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = jamchart(dir.path(), &["sweep", "radious_mm=10:30"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(stderr(&out).contains("radius_mm"), "{}", stderr(&out));
+    let out = jamchart(dir.path(), &["sweep", "mu=0.5:0.1"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        !dir.path().join("out").exists(),
+        "nothing written for a bad request"
+    );
+}
