@@ -23,6 +23,8 @@ fn accuracy_writes_every_output_with_one_schema() {
             "1e-3,1e-5",
             "--penetrations",
             "none",
+            "--nonsmooth-steps",
+            "0.1",
             "--runs",
             "1",
             "--converged-rtol",
@@ -41,11 +43,13 @@ fn accuracy_writes_every_output_with_one_schema() {
     let csv = stdout(&o);
     let header = csv.lines().next().unwrap();
     assert!(
-        header.starts_with("model,method,tolerance,penetration_um,status,theta_jam_deg,x_jam_mm,"),
+        header.starts_with(
+            "model,method,tolerance,penetration_um,step_deg,status,theta_jam_deg,x_jam_mm,"
+        ),
         "{header}"
     );
-    // statics, exact, 2 clarabel, 2 radau5.
-    assert_eq!(csv.lines().count(), 1 + 6, "{csv}");
+    // statics, exact, 2 clarabel, 2 radau5, 1 nonsmooth.
+    assert_eq!(csv.lines().count(), 1 + 7, "{csv}");
     for name in [
         "accuracy.md",
         "accuracy.csv",
@@ -61,7 +65,7 @@ fn accuracy_writes_every_output_with_one_schema() {
     )
     .unwrap();
     let rows = json["accuracy"]["rows"].as_array().unwrap();
-    assert_eq!(rows.len(), 6);
+    assert_eq!(rows.len(), 7);
     for r in rows {
         assert!(r["median_time_s"].as_f64().unwrap() > 0.0, "{r}");
         // A force drive is judged by the closed form at F.
@@ -83,7 +87,7 @@ fn accuracy_writes_every_output_with_one_schema() {
         "{sim}"
     );
     let map = json["map_cost"]["rows"].as_array().unwrap();
-    assert_eq!(map.len(), 4);
+    assert_eq!(map.len(), 5);
     let md = std::fs::read_to_string(dir.path().join("acc/accuracy.md")).unwrap();
     assert!(md.contains("## Floors of the simulation"), "{md}");
     assert!(md.contains("A 6 x 6 map"), "{md}");
@@ -143,10 +147,10 @@ fn stability_runs_the_named_cases_and_refuses_an_unknown_one() {
         ],
     );
     assert!(o.status.success(), "{}", stderr(&o));
-    assert!(stderr(&o).contains("stability matrix of 3 cases x 5 methods took"));
+    assert!(stderr(&o).contains("stability matrix of 3 cases x 6 methods took"));
     let doc: Value = serde_json::from_str(&stdout(&o)).unwrap();
     let rows = doc["rows"].as_array().unwrap();
-    assert_eq!(rows.len(), 15);
+    assert_eq!(rows.len(), 18);
     assert!(
         rows.iter().all(|r| r["class"] != "wrong_unflagged"),
         "{doc}"

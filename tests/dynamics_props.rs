@@ -35,7 +35,7 @@ proptest! {
         }
         prop_assert!(s.simulated_s.is_finite());
         if let Some(f) = &s.failure {
-            prop_assert!(f.t_s.is_finite() && !f.reason.is_empty());
+            prop_assert!(f.t_s().is_finite() && !f.to_string().is_empty());
         }
     }
 }

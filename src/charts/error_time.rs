@@ -52,7 +52,7 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
     ];
     let mut int_curves = Vec::new();
     let mut keys: Vec<(&str, u64)> = Vec::new();
-    for r in rows.iter().filter(|r| r.model == ModelKind::Dynamics) {
+    for r in rows.iter().filter(|r| r.penetration_um.is_some()) {
         let k = (r.method, r.penetration_um.unwrap_or(0.0).to_bits());
         if !keys.contains(&k) {
             keys.push(k);
@@ -91,6 +91,19 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
             points: pts(&sel, &|r| r.integration_error_mm),
         });
     }
+    let ns_label = "nonsmooth, rigid contacts (step 0.3 … 0.01 deg)".to_string();
+    let ns_style = CurveStyle::LinePoints(LineKind::Dotted, Marker::Plus);
+    let ns = |r: &AccuracyRow| r.method == "nonsmooth";
+    err_curves.push(Curve {
+        label: ns_label.clone(),
+        style: ns_style,
+        points: pts(&ns, &|r| r.x_rel_error),
+    });
+    int_curves.push(Curve {
+        label: ns_label,
+        style: ns_style,
+        points: pts(&ns, &|r| r.integration_error_mm),
+    });
     err_curves.retain(|c| !c.points.is_empty());
     int_curves.retain(|c| !c.points.is_empty());
     // The closed form (a fraction of a microsecond) is a note, not a point: it would stretch
@@ -132,9 +145,10 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
         .filter_map(|r| {
             r.reason.as_ref().map(|w| {
                 format!(
-                    "{} {}{}: {}",
+                    "{} {}{}{}: {}",
                     r.method,
                     r.tolerance.map_or(String::new(), |t| format!("{t:.0e}")),
+                    r.step_deg.map_or(String::new(), |h| format!("{h} deg")),
                     r.penetration_um
                         .map_or(String::new(), |p| format!(" {p:.1} um")),
                     w.tag()

@@ -233,10 +233,11 @@ fn every_scene_makes_only_the_model_calls_it_draws() {
             "fig5" => [0, 0, 0, 1, 0],
             "fig6" => [crate::paper::TABLE1.len(), 0, 0, sim_points, 0],
             "accuracy" => [0, 0, 1, 0, 1],
-            // Every case through the two min-norm paths and the two integrators.
+            // Every case through the two min-norm paths, the two integrators and the nonsmooth
+            // method.
             "stability" => {
                 let n = crate::study::stability::cases(&crate::config::Config::default()).len();
-                [2 * n, 0, 0, 2 * n, 0]
+                [2 * n, 0, 0, 3 * n, 0]
             }
             other => panic!("add scene {other} to this test with the calls it should make"),
         }

@@ -44,6 +44,13 @@ pub struct AccuracyArgs {
     /// The exact path is always a row.
     #[arg(long, value_name = "LIST", value_delimiter = ',')]
     pub min_norm_tolerances: Option<Vec<String>>,
+    /// Steps of the nonsmooth rows in deg of palm turn, comma-separated, at most 16; "none"
+    /// skips them [default: 0.3,0.1,0.03,0.01].
+    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    pub nonsmooth_steps: Option<Vec<String>>,
+    /// Step of the nonsmooth method's converged answer in deg [default: 0.002].
+    #[arg(long, value_name = "DEG")]
+    pub converged_step: Option<f64>,
     /// Timed runs per row, 1..=100; the median is reported [default: 3].
     #[arg(long, value_name = "N")]
     pub runs: Option<usize>,
@@ -102,8 +109,14 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
             a.penetrations.as_deref(),
             d.penetrations_um,
         )?,
+        nonsmooth_steps_deg: list_or_none(
+            "nonsmooth_steps_deg",
+            a.nonsmooth_steps.as_deref(),
+            d.nonsmooth_steps_deg,
+        )?,
         runs: a.runs.unwrap_or(d.runs),
         converged_rtol: a.converged_rtol.unwrap_or(d.converged_rtol),
+        converged_step_deg: a.converged_step.unwrap_or(d.converged_step_deg),
         max_steps: a.max_steps.unwrap_or(d.max_steps),
     };
     settings.validate()?;
@@ -211,13 +224,20 @@ fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapse
         );
     }
     for c in &r.converged {
+        let at = match (c.rtol, c.step_deg) {
+            (Some(r), _) => format!("rtol {r:.0e}"),
+            (_, Some(h)) => format!("step {h} deg"),
+            _ => String::new(),
+        };
+        let contact = match (c.method, c.penetration_um) {
+            (Method::Nonsmooth, _) => "rigid contacts".to_string(),
+            (_, Some(p)) => format!("{p} um"),
+            (_, None) => "the [dynamics] stiffness".into(),
+        };
         let _ = writeln!(
             s,
-            "- converged {} at rtol {:.0e}, {}: {} x_jam = {} mm{}",
+            "- converged {} at {at}, {contact}: {} x_jam = {} mm{}",
             c.method.as_str(),
-            c.rtol,
-            c.penetration_um
-                .map_or("the [dynamics] stiffness".into(), |p| format!("{p} um")),
             c.status,
             fixed(c.x_jam_mm, 6),
             c.reason
@@ -228,18 +248,19 @@ fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapse
     let _ = writeln!(
         s,
         "\nWall times are medians of {runs} runs of one answer.\n\n\
-         | model | method | tolerance | penetration [um] | status | theta_jam [deg] | x_jam [mm] | reference | x error [mm] | rel. x error | theta error [deg] | converged by | integration error [mm] | time [ms] | steps | evaluations |\n\
-         |---|---|---:|---:|---|---:|---:|---|---:|---:|---:|---|---:|---:|---:|---:|"
+         | model | method | tolerance | penetration [um] | step [deg] | status | theta_jam [deg] | x_jam [mm] | reference | x error [mm] | rel. x error | theta error [deg] | converged by | integration error [mm] | time [ms] | steps | evaluations |\n\
+         |---|---|---:|---:|---:|---|---:|---:|---|---:|---:|---:|---|---:|---:|---:|---:|"
     );
     let mut failures = Vec::new();
     for row in &r.rows {
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.4} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.4} | {} | {} |",
             model_name(row.model),
             row.method,
             row.tolerance.map_or("-".into(), |t| format!("{t:.0e}")),
             fixed(row.penetration_um, 2),
+            row.step_deg.map_or("-".into(), |h| h.to_string()),
             row.status,
             fixed(row.theta_jam_deg, 4),
             fixed(row.x_jam_mm, 6),
@@ -304,6 +325,9 @@ fn label(row: &AccuracyRow) -> String {
     if let Some(p) = row.penetration_um {
         let _ = write!(s, ", {p:.2} um");
     }
+    if let Some(h) = row.step_deg {
+        let _ = write!(s, " at step {h} deg");
+    }
     s
 }
 
@@ -312,7 +336,7 @@ fn label(row: &AccuracyRow) -> String {
 fn floors(r: &AccuracyReport) -> String {
     let mut s = String::from(
         "\n## Floors of the simulation\n\n\
-         | method | penetration [um] | reference | smallest rel. x error | at tolerance | integration error there [mm] |\n\
+         | method | penetration [um] | reference | smallest rel. x error | at tolerance or step | integration error there [mm] |\n\
          |---|---:|---|---:|---:|---:|\n",
     );
     let mut keys: Vec<(&str, u64)> = Vec::new();
@@ -334,14 +358,22 @@ fn floors(r: &AccuracyReport) -> String {
             .iter()
             .find(|x| x.method == method)
             .map_or(ReferenceKind::RigidLimit, |x| x.reference);
+        let contact = if method == "nonsmooth" {
+            "rigid".to_string()
+        } else {
+            format!("{:.2}", f64::from_bits(pen))
+        };
+        let at = best.and_then(|b| {
+            b.tolerance
+                .map(|t| format!("{t:.0e}"))
+                .or(b.step_deg.map(|h| format!("{h} deg")))
+        });
         let _ = writeln!(
             s,
-            "| {method} | {:.2} | {} | {} | {} | {} |",
-            f64::from_bits(pen),
+            "| {method} | {contact} | {} | {} | {} | {} |",
             reference.as_str(),
             sci(best.and_then(|b| b.x_rel_error)),
-            best.and_then(|b| b.tolerance)
-                .map_or("-".into(), |t| format!("{t:.0e}")),
+            at.unwrap_or("-".into()),
             sci(best.and_then(|b| b.integration_error_mm))
         );
     }
@@ -355,6 +387,7 @@ struct CsvRow<'a> {
     method: &'a str,
     tolerance: Option<f64>,
     penetration_um: Option<f64>,
+    step_deg: Option<f64>,
     status: JamStatus,
     theta_jam_deg: Option<f64>,
     x_jam_mm: Option<f64>,
@@ -382,6 +415,7 @@ fn csv_rows(r: &AccuracyReport) -> Result<String> {
         method: x.method,
         tolerance: x.tolerance,
         penetration_um: x.penetration_um,
+        step_deg: x.step_deg,
         status: x.status,
         theta_jam_deg: x.theta_jam_deg,
         x_jam_mm: x.x_jam_mm,

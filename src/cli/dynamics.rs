@@ -10,7 +10,10 @@ use serde::Serialize;
 use crate::atomic::write_atomic;
 use crate::config::Config;
 use crate::dynamics::jam::SeriesRow;
-use crate::dynamics::{Drive, DynamicsParams, DynamicsSolution, Method};
+use crate::dynamics::nonsmooth::DiscMotion;
+use crate::dynamics::{
+    CrossCheck, Drive, DynamicsParams, DynamicsSolution, Failure, Method, Refinement,
+};
 use crate::error::Result;
 use crate::model::JamStatus;
 
@@ -98,9 +101,30 @@ pub struct DynamicsArgs {
         help_heading = "Dynamics"
     )]
     pub palm_offset: Option<f64>,
-    /// Integrator: radau5 (implicit) or dopri5 (explicit) [default: radau5].
+    /// Method: radau5 (implicit), dopri5 (explicit) or nonsmooth (rigid) [default: radau5].
+    ///
+    /// radau5 and dopri5 integrate the compliant IMPACT contact with regularised friction;
+    /// nonsmooth time-steps rigid contacts with exact Coulomb friction (true stiction; the jam is
+    /// the lock-up of the motion-driven palm).
     #[arg(long, value_name = "METHOD", help_heading = "Dynamics")]
     pub method: Option<Method>,
+    /// Palm turn per step of the nonsmooth method in deg, in (0, 1] [default: 0.01].
+    ///
+    /// x_jam converges to the rigid answer in the first order of the step: 0.01 deg puts it
+    /// within 0.1 % of r/mu for mu = 0.15-0.45 (motion drive).
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "DEG",
+        help_heading = "Dynamics"
+    )]
+    pub nonsmooth_step: Option<f64>,
+    /// How the disc moves in the nonsmooth method: slides or rolls [default: slides].
+    ///
+    /// slides: the paper's translational joint (no rotation); rolls: free in the plane (x, y,
+    /// rotation) with unilateral contacts at the ground and the palm.
+    #[arg(long, value_name = "MOTION", help_heading = "Dynamics")]
+    pub disc: Option<DiscMotion>,
     /// Relative tolerance per step, in (0, 1) [default: 1e-6].
     ///
     /// Looser than 1e-2 is always reported inaccurate.
@@ -142,6 +166,9 @@ impl DynamicsArgs {
         if let Some(v) = self.method {
             d.method = v;
         }
+        if let Some(v) = self.disc {
+            d.disc = v;
+        }
         if let Some(v) = self.mu_static {
             d.mu_static_ground = Some(v);
             d.mu_static_palm = Some(v);
@@ -163,6 +190,7 @@ impl DynamicsArgs {
             (self.palm_offset, &mut d.palm_offset_mm),
             (self.rtol, &mut d.rtol),
             (self.after_jam, &mut d.after_jam_s),
+            (self.nonsmooth_step, &mut d.nonsmooth_step_deg),
         ];
         for (flag, field) in overrides {
             if let Some(v) = flag {
@@ -187,6 +215,8 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
         "rtol" => "--rtol",
         "atol" => "--atol",
         "after_jam_s" => "--after-jam",
+        "nonsmooth_step_deg" => "--nonsmooth-step",
+        "disc" => "--disc",
         _ => return None,
     })
 }
@@ -200,6 +230,9 @@ pub struct Record<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     series: Option<String>,
     settings: &'a DynamicsParams,
+    /// What to do about a `cross_check` or `failure`, naming the flags that act on it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    advice: Option<String>,
 }
 
 /// The JSON keys of `s`, simulated with `settings`, its series written to `series`.
@@ -212,6 +245,7 @@ pub fn record<'a>(
         solution: s,
         series: series.map(|p| p.display().to_string()),
         settings,
+        advice: advice(s),
     }
 }
 
@@ -233,11 +267,14 @@ pub fn render_details(s: &mut String, d: &DynamicsSolution) {
             "  t_jam     = {t:.4} s     time of the jam from the start of the push"
         );
     }
+    let nonsmooth = d.method == Method::Nonsmooth;
     if let Some(e) = d.x_jam_error_mm {
-        let _ = writeln!(
-            s,
-            "  x_jam error estimate {e:.2e} mm (second run at a tenth of the tolerances)"
-        );
+        let how = if nonsmooth {
+            "a step of palm turn at the jam, or the change at twice the step if larger"
+        } else {
+            "second run at a tenth of the tolerances"
+        };
+        let _ = writeln!(s, "  x_jam error estimate {e:.2e} mm ({how})");
     }
     if let Some(x) = d.x_stiction_mm {
         let _ = writeln!(
@@ -245,26 +282,117 @@ pub fn render_details(s: &mut String, d: &DynamicsSolution) {
             "  ground contact enters stiction (slip < V_s) at x = {x:.3} mm"
         );
     }
-    if let Some(c) = &d.cross_check {
-        let _ = writeln!(s, "  inaccurate: {c}");
-    }
-    if let Some(f) = &d.failure {
+    if let Some(l) = d.lock_up {
         let _ = writeln!(
             s,
-            "  the integrator gave up at t = {:.4} s: {}",
-            f.t_s, f.reason
+            "  lock-up: the palm cannot turn past {:.3} deg; it pushed with {:.0} N in the last \
+             step (a rigid disc needs an unbounded push there)",
+            l.theta_deg, l.push_n
         );
     }
-    let _ = writeln!(
-        s,
-        "  {} drive, {}: {} steps ({} rejected), {} rhs and {} Jacobian evaluations",
-        d.drive.as_str(),
-        d.method.as_str(),
-        d.steps,
-        d.rejected_steps,
-        d.rhs_evals,
-        d.jacobian_evals
-    );
+    if let Some(c) = &d.cross_check {
+        let _ = writeln!(s, "  {}: {c}", d.status);
+    }
+    if let Some(f) = &d.failure {
+        let _ = writeln!(s, "  the integrator gave up: {f}");
+    }
+    if let Some(a) = advice(d) {
+        let _ = writeln!(s, "  advice: {a}");
+    }
+    if nonsmooth {
+        let _ = writeln!(
+            s,
+            "  {} drive, nonsmooth: {} steps, {} contact-mode solves",
+            d.drive.as_str(),
+            d.steps,
+            d.rhs_evals
+        );
+    } else {
+        let _ = writeln!(
+            s,
+            "  {} drive, {}: {} steps ({} rejected), {} rhs and {} Jacobian evaluations",
+            d.drive.as_str(),
+            d.method.as_str(),
+            d.steps,
+            d.rejected_steps,
+            d.rhs_evals,
+            d.jacobian_evals
+        );
+    }
+}
+
+/// How many stiction transition velocities the palm must move the disc at for the regularised
+/// friction to behave as Coulomb's: below that a held disc creeps at a good part of the palm's
+/// speed, and tightening the tolerances changes nothing (V_s sets the error).
+const SPEED_PER_STICTION_VELOCITY: f64 = 20.0;
+
+/// What to do about the typed reason of `s`, in terms of the flags that act on it.
+fn advice(s: &DynamicsSolution) -> Option<String> {
+    if let Some(c) = s.cross_check {
+        return Some(match c {
+            CrossCheck::LooseTolerance { loosest, .. } => {
+                format!("set --rtol to {loosest} or tighter")
+            }
+            CrossCheck::HeldBelowSlidingPush {
+                geometric_speed_mm_s: v,
+                stiction_velocity_mm_s: vs,
+                ..
+            }
+            | CrossCheck::PastWedge {
+                geometric_speed_mm_s: v,
+                stiction_velocity_mm_s: vs,
+                ..
+            } if v < SPEED_PER_STICTION_VELOCITY * vs => format!(
+                "the palm is slow against the stiction transition velocity: lower \
+                 --stiction-velocity to {:.2e} mm/s or less (the tolerances do not set this \
+                 error), or use --method nonsmooth",
+                v / SPEED_PER_STICTION_VELOCITY
+            ),
+            CrossCheck::VerificationDisagrees {
+                check: Refinement::Step { step_deg },
+                ..
+            }
+            | CrossCheck::ErrorEstimate {
+                check: Refinement::Step { step_deg },
+                ..
+            } => format!(
+                "lower --nonsmooth-step (now {} deg) and compare the answers",
+                step_deg / 2.0
+            ),
+            CrossCheck::VerificationDisagrees {
+                check: Refinement::Tolerance { rtol },
+                ..
+            }
+            | CrossCheck::ErrorEstimate {
+                check: Refinement::Tolerance { rtol },
+                ..
+            } => format!(
+                "tighten --rtol (now {:e}) and compare the answers",
+                rtol * 10.0
+            ),
+            CrossCheck::PastWedge { .. }
+            | CrossCheck::StoppedBelowForceLimit { .. }
+            | CrossCheck::HeldBelowSlidingPush { .. } => {
+                "tighten --rtol and compare the answers".to_string()
+            }
+        });
+    }
+    s.failure.map(|f| match f {
+        Failure::StepLimit { steps, .. } => format!(
+            "raise max_steps in the [dynamics] section of --config (now {steps}), or use \
+             --method radau5, which takes far fewer steps on this stiff problem"
+        ),
+        Failure::NoConsistentContact { .. } => {
+            "this is a defect of the nonsmooth method: please report the scene; --method \
+             radau5 simulates it with a compliant contact"
+                .to_string()
+        }
+        Failure::StepSizeTooSmall { .. } => {
+            "use --method radau5 or a softer --stiffness: the contact is too stiff for the \
+             step controller"
+                .to_string()
+        }
+    })
 }
 
 /// The time series as CSV, one row per sample, units in the header.

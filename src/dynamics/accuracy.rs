@@ -94,12 +94,8 @@ fn raw(params: &DynamicsParams, method: Method, rtol: f64) -> DynamicsParams {
 
 fn reason_of(s: &DynamicsSolution) -> Option<String> {
     s.cross_check
-        .clone()
-        .or_else(|| {
-            s.failure
-                .as_ref()
-                .map(|f| format!("at t = {:.4} s: {}", f.t_s, f.reason))
-        })
+        .map(|c| c.to_string())
+        .or_else(|| s.failure.map(|f| f.to_string()))
         .or_else(|| (s.status != JamStatus::Jams).then(|| format!("status {}", s.status)))
 }
 

@@ -59,13 +59,17 @@ pub mod accuracy;
 pub mod contact;
 pub mod integrators;
 pub mod jam;
+pub mod nonsmooth;
 pub mod params;
 mod run;
 pub mod scene;
+mod verdict;
 
 use serde::Serialize;
 
+pub use integrators::Failure;
 pub use params::{Drive, DynamicsParams, Method};
+pub use verdict::{CrossCheck, Refinement};
 
 use crate::error::Result;
 use crate::model::{JamStatus, SceneParams};
@@ -81,15 +85,6 @@ pub(crate) const MAX_STEP_DEG: f64 = 1.0;
 /// Tolerances looser than this are never trusted: at rtol = 0.05-0.5 the answers were 58 % short
 /// to 574 % long, and some wrong ones passed every other check (see the module docs).
 pub(crate) const LOOSEST_RTOL: f64 = 1e-2;
-
-/// An integration that gave up.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Failure {
-    /// Simulated time in s where it stopped.
-    pub t_s: f64,
-    /// Why, e.g. "step limit of 2000000 reached".
-    pub reason: String,
-}
 
 /// The result of one simulation.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -127,14 +122,24 @@ pub struct DynamicsSolution {
     /// Jam candidates the disc recovered from.
     pub discarded_candidates: u32,
     /// Why the result is `inaccurate`, if it is.
-    pub cross_check: Option<String>,
+    pub cross_check: Option<CrossCheck>,
     /// Set when the integrator gave up (also after a confirmed jam, during the run-on).
     pub failure: Option<Failure>,
     /// Simulated time in s.
     pub simulated_s: f64,
+    /// The nonsmooth method's lock-up: where the motion-driven palm could turn no further and
+    /// the push it needed (None for the other methods and drives).
+    pub lock_up: Option<nonsmooth::LockUp>,
+    /// How the disc moved, in steps of the nonsmooth method (None for the other methods).
+    pub disc_motion: Option<nonsmooth::MotionTally>,
     /// The time series (empty unless asked for).
     #[serde(skip)]
     pub series: Vec<SeriesRow>,
+}
+
+/// Disc position (mm) touching the palm at `theta` (rad), with the palm's offset.
+fn disc_x_mm(scene: &SceneParams, params: &DynamicsParams, theta: f64) -> f64 {
+    (scene.radius_mm * (1.0 + theta.cos()) + params.palm_offset_mm) / theta.sin()
 }
 
 /// Simulates one push until the jam is read (plus `after_jam_s`), and, with `verify`, once more
@@ -149,12 +154,12 @@ pub fn simulate(
     params.validate()?;
     params.validate_scene(scene)?;
     let mut out = run::run_once(scene, params, series_dt_s);
-    if params.rtol > LOOSEST_RTOL {
-        out.cross_check = Some(format!(
-            "rtol = {} is looser than {LOOSEST_RTOL}: no check can vouch for the answer; \
-             tighten --rtol",
-            params.rtol
-        ));
+    let nonsmooth = params.method == Method::Nonsmooth;
+    if params.rtol > LOOSEST_RTOL && !nonsmooth {
+        out.cross_check = Some(CrossCheck::LooseTolerance {
+            rtol: params.rtol,
+            loosest: LOOSEST_RTOL,
+        });
         out.status = JamStatus::Inaccurate;
         return Ok(out);
     }
@@ -163,11 +168,28 @@ pub fn simulate(
         return Ok(out);
     }
     // The time after the jam changes neither the status nor x_jam: the check stops at the jam.
-    let fine = DynamicsParams {
-        rtol: params.rtol / 10.0,
-        atol: Some(params.atol() / 10.0),
-        after_jam_s: 0.0,
-        ..*params
+    let fine = if nonsmooth {
+        DynamicsParams {
+            // Twice the step: the method is of first order, so |x(h) - x(2h)| estimates the
+            // error of x(h), at half the cost of a run at half the step.
+            nonsmooth_step_deg: (2.0 * params.nonsmooth_step_deg).min(1.0),
+            after_jam_s: 0.0,
+            ..*params
+        }
+    } else {
+        DynamicsParams {
+            rtol: params.rtol / 10.0,
+            atol: Some(params.atol() / 10.0),
+            after_jam_s: 0.0,
+            ..*params
+        }
+    };
+    let refinement = if nonsmooth {
+        Refinement::Step {
+            step_deg: fine.nonsmooth_step_deg,
+        }
+    } else {
+        Refinement::Tolerance { rtol: fine.rtol }
     };
     let check = run::run_once(scene, &fine, None);
     out.steps += check.steps;
@@ -175,19 +197,27 @@ pub fn simulate(
     out.rhs_evals += check.rhs_evals;
     out.jacobian_evals += check.jacobian_evals;
     let reason = match (out.x_jam_mm, check.x_jam_mm) {
-        _ if check.status != out.status => Some(format!(
-            "a second run at rtol = {:e} says {} instead of {}: tighten --rtol",
-            fine.rtol, check.status, out.status
-        )),
+        _ if check.status != out.status => Some(CrossCheck::VerificationDisagrees {
+            check: refinement,
+            status: out.status,
+            check_status: check.status,
+        }),
         (Some(a), Some(b)) => {
-            let e = (a - b).abs();
+            // The nonsmooth jam is read at a step end: it can lie up to a step of palm turn off,
+            // whatever the second run says (their steps may land alike on the jam's angle).
+            let e = if nonsmooth && let Some(theta) = out.theta_jam_deg {
+                let turn = params.nonsmooth_step_deg.to_radians();
+                let th = theta.to_radians();
+                let x = |t: f64| disc_x_mm(scene, params, t);
+                (a - b).abs().max((x(th + turn) - x(th)).abs())
+            } else {
+                (a - b).abs()
+            };
             out.x_jam_error_mm = Some(e);
-            (e > params.max_jam_error * b.abs()).then(|| {
-                format!(
-                    "x_jam moves by {e:.3e} mm (more than {:e} of it) when the tolerances are \
-                     divided by 10: tighten --rtol",
-                    params.max_jam_error
-                )
+            (e > params.max_jam_error * b.abs()).then_some(CrossCheck::ErrorEstimate {
+                error_mm: e,
+                allowed_rel: params.max_jam_error,
+                check: refinement,
             })
         }
         _ => None,

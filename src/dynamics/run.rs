@@ -1,9 +1,13 @@
 //! One integration of the scene to the jam, and its reading and quasi-static cross-checks.
 
+use super::integrators::Failure;
 use super::integrators::{Dopri5, Outcome, Radau5, Stats, Tolerances};
 use super::jam::{JamDetector, JamRule};
+use super::nonsmooth::{self, End};
 use super::scene::Scene;
-use super::{Drive, DynamicsParams, DynamicsSolution, Failure, MAX_STEP_DEG, Method, WEDGE_MARGIN};
+use super::{
+    CrossCheck, Drive, DynamicsParams, DynamicsSolution, MAX_STEP_DEG, Method, WEDGE_MARGIN,
+};
 use crate::model::{JamStatus, SceneParams};
 
 /// One run at the given tolerances, without the verification run. Parameters must be valid.
@@ -12,6 +16,9 @@ pub(super) fn run_once(
     params: &DynamicsParams,
     series_dt_s: Option<f64>,
 ) -> DynamicsSolution {
+    if params.method == Method::Nonsmooth {
+        return run_nonsmooth(scene, params, series_dt_s);
+    }
     let sys = Scene::new(scene, params);
     let theta0 = scene.start_angle_deg.to_radians();
     let mut y = vec![theta0, sys.touching_x(theta0), 0.0];
@@ -35,6 +42,7 @@ pub(super) fn run_once(
     let (outcome, stats) = match params.method {
         Method::Radau5 => Radau5.integrate(&sys, 0.0, &mut y, t_end, &tol, &mut det),
         Method::Dopri5 => Dopri5.integrate(&sys, 0.0, &mut y, t_end, &tol, &mut det),
+        Method::Nonsmooth => unreachable!("dispatched above"),
     };
     conclude(scene, params, &sys, det, outcome, stats)
 }
@@ -52,13 +60,7 @@ fn conclude(
         .then(|| sys.touching_x(wedge))
         .filter(|x| x.is_finite());
     let (failure, simulated) = match &outcome {
-        Outcome::Failed { t, reason } => (
-            Some(Failure {
-                t_s: *t,
-                reason: reason.clone(),
-            }),
-            *t,
-        ),
+        Outcome::Failed(f) => (Some(*f), f.t_s()),
         Outcome::Stopped { t } => (None, *t),
         Outcome::Finished => (None, sys_end(scene, sys)),
     };
@@ -81,6 +83,8 @@ fn conclude(
         x_jam_error_mm: None,
         failure,
         simulated_s: simulated,
+        lock_up: None,
+        disc_motion: None,
         series: det.series,
     };
     if det.beyond_reach.is_some() {
@@ -117,36 +121,37 @@ fn conclude(
     if let Some(xw) = x_wedge
         && jam.x > xw * (1.0 + WEDGE_MARGIN) + coast
     {
-        out.cross_check = Some(format!(
-            "x_jam = {:.4} mm lies beyond the self-locking limit {xw:.4} mm that no push can \
-             pass: the integration is not accurate enough; tighten --rtol",
-            jam.x
-        ));
+        out.cross_check = Some(CrossCheck::PastWedge {
+            x_jam_mm: jam.x,
+            x_wedge_mm: xw,
+            coast_mm: coast,
+            geometric_speed_mm_s: sys.geometric_speed(wedge),
+            stiction_velocity_mm_s: params.stiction_velocity_mm_s,
+        });
     }
     let stalled = det.push_after_jam >= (1.0 - 2.0 * params.force_band) * sys.normal_limit;
     if params.drive == Drive::Force && jam.theta > wedge + 0.1_f64.to_radians() && !stalled {
-        out.cross_check = Some(format!(
-            "the disc stopped at {:.3} deg while the drive's push stayed at {:.2} N, below its \
-             limit {:.2} N: the integration is not accurate enough; tighten --rtol",
-            jam.theta.to_degrees(),
-            det.push_after_jam,
-            sys.normal_limit
-        ));
+        out.cross_check = Some(CrossCheck::StoppedBelowForceLimit {
+            theta_deg: jam.theta.to_degrees(),
+            push_n: det.push_after_jam,
+            limit_n: sys.normal_limit,
+        });
     }
     if let Some((theta, push)) = det.at_confirmation {
         let needed = sliding_push_n(scene, params, theta);
         if push > 2.0 * needed {
-            out.cross_check = Some(format!(
-                "the disc stood still at {:.4} mm while the palm pushed with {push:.2} N at \
-                 {:.3} deg, more than twice the {needed:.2} N that slides it: the integration is \
-                 not accurate enough; tighten --rtol",
-                jam.x,
-                theta.to_degrees()
-            ));
+            out.cross_check = Some(CrossCheck::HeldBelowSlidingPush {
+                x_jam_mm: jam.x,
+                theta_deg: theta.to_degrees(),
+                push_n: push,
+                needed_n: needed,
+                geometric_speed_mm_s: sys.geometric_speed(jam.theta),
+                stiction_velocity_mm_s: params.stiction_velocity_mm_s,
+            });
         }
     }
-    if out.cross_check.is_some() {
-        out.status = JamStatus::Inaccurate;
+    if let Some(c) = &out.cross_check {
+        out.status = c.status();
     }
     out
 }
@@ -164,6 +169,78 @@ fn sliding_push_n(scene: &SceneParams, params: &DynamicsParams, theta: f64) -> f
     } else {
         f64::INFINITY
     }
+}
+
+/// One nonsmooth run read as a solution: a lock-up (motion drive) or the disc and palm at rest
+/// (force drive) is the jam.
+fn run_nonsmooth(
+    scene: &SceneParams,
+    params: &DynamicsParams,
+    series_dt_s: Option<f64>,
+) -> DynamicsSolution {
+    let sys = Scene::new(scene, params);
+    let wedge = scene.alpha_ground() + scene.alpha_palm();
+    let x_wedge = (wedge > 0.0)
+        .then(|| sys.touching_x(wedge))
+        .filter(|x| x.is_finite());
+    let run = nonsmooth::run(scene, params, series_dt_s);
+    let mut out = DynamicsSolution {
+        status: JamStatus::Jams,
+        theta_jam_deg: None,
+        x_jam_mm: None,
+        t_jam_s: None,
+        x_stiction_mm: None,
+        t_stiction_s: None,
+        x_wedge_mm: x_wedge,
+        method: params.method,
+        drive: params.drive,
+        steps: run.steps,
+        rejected_steps: 0,
+        rhs_evals: run.mode_solves,
+        jacobian_evals: 0,
+        x_jam_error_mm: None,
+        discarded_candidates: 0,
+        cross_check: None,
+        failure: None,
+        simulated_s: run.simulated_s,
+        lock_up: None,
+        disc_motion: Some(run.tally),
+        series: run.series,
+    };
+    let (t, theta, x) = match run.end {
+        End::LockUp(l) => {
+            out.lock_up = Some(l);
+            (l.t_s, l.theta_deg.to_radians(), l.x_mm)
+        }
+        End::AtRest { t, theta, x } => (t, theta, x),
+        End::BeyondReach { .. } => {
+            out.status = JamStatus::BeyondReach;
+            return out;
+        }
+        End::PalmClosed => {
+            out.status = JamStatus::NeverJams;
+            return out;
+        }
+        End::NoSolution { t } | End::StepLimit { t } => {
+            out.failure = Some(match run.end {
+                End::StepLimit { .. } => Failure::StepLimit {
+                    t_s: t,
+                    steps: params.max_steps,
+                },
+                _ => Failure::NoConsistentContact { t_s: t },
+            });
+            out.status = JamStatus::IntegratorFailed;
+            return out;
+        }
+    };
+    out.theta_jam_deg = Some(theta.to_degrees());
+    out.x_jam_mm = Some(x);
+    out.t_jam_s = Some(t);
+    // Held where it started: the jam is at the start (as the regularised model's "never armed").
+    if !run.moved {
+        out.status = JamStatus::JammedAtStart;
+    }
+    out
 }
 
 fn sys_end(scene: &SceneParams, sys: &Scene) -> f64 {

@@ -12,6 +12,9 @@
 //!   model (same contact, same friction law) solved at `converged_rtol` by the same integrator,
 //!   or by the other if that one does not finish (the row names which, `converged_by`).
 //!
+//! The nonsmooth method (rigid contacts, exact Coulomb friction) is its own model: its rows
+//! vary the step, and its integration error is against itself at `converged_step_deg`.
+//!
 //! The simulation runs without its verification run (the raw method is measured) and with the
 //! step limit `max_steps`. Wall time is the median of `runs` answers through the port.
 
@@ -44,10 +47,16 @@ pub struct AccuracySettings {
     /// Contact stiffnesses beside the `[dynamics]` one, as the penetration in um at the
     /// scene's push F, each in (0, 1e4), at most 8 (default: 10, 1).
     pub penetrations_um: Vec<f64>,
+    /// Steps of the nonsmooth rows in deg of palm turn, each in (0, 1), at most 16 (default:
+    /// 0.3, 0.1, 0.03, 0.01).
+    pub nonsmooth_steps_deg: Vec<f64>,
     /// Timed runs per row, 1..=100; the median is reported (default: 3).
     pub runs: usize,
-    /// rtol of the converged answers, in (0, 1) (default: 1e-10).
+    /// rtol of the integrators' converged answers, in (0, 1) (default: 1e-10).
     pub converged_rtol: f64,
+    /// Step of the nonsmooth method's converged answer in deg, in (0, 1) (default: 0.002; the
+    /// method is of first order, so its error there is about a fifth of the 0.01 deg row's).
+    pub converged_step_deg: f64,
     /// Step limit of every simulation, >= 1 (default: 500000: RADAU5 at rtol 1e-10 and 1 um
     /// needs about 1e5 steps, and DOPRI5, which cannot pass the stiff contacts, fails in a
     /// second instead of four).
@@ -61,8 +70,10 @@ impl Default for AccuracySettings {
             methods: vec![Method::Radau5, Method::Dopri5],
             tolerances: (2..=8).map(|k| 10f64.powi(-k)).collect(),
             penetrations_um: vec![10.0, 1.0],
+            nonsmooth_steps_deg: vec![0.3, 0.1, 0.03, 0.01],
             runs: 3,
             converged_rtol: 1e-10,
+            converged_step_deg: 0.002,
             max_steps: 500_000,
         }
     }
@@ -86,13 +97,35 @@ impl AccuracySettings {
             0.0,
             1e4,
         )?;
+        check_list(
+            "nonsmooth_steps_deg",
+            &self.nonsmooth_steps_deg,
+            MAX_TOLERANCES,
+            0.0,
+            1.0,
+        )?;
         check_count("runs", self.runs, 1, MAX_RUNS)?;
         check_list("converged_rtol", &[self.converged_rtol], 1, 0.0, 1.0)?;
-        if self.methods.is_empty() || self.methods.len() > 4 {
+        check_list(
+            "converged_step_deg",
+            &[self.converged_step_deg],
+            1,
+            0.0,
+            1.0,
+        )?;
+        if self.methods.len() > 4 {
             return Err(Error::invalid(
                 "methods",
                 self.methods.len(),
-                "one to four integrators",
+                "at most four integrators",
+            ));
+        }
+        if self.methods.contains(&Method::Nonsmooth) {
+            return Err(Error::invalid(
+                "methods",
+                "nonsmooth",
+                "the integrators of the regularised model are radau5 and dopri5; the nonsmooth \
+                 method's rows are set by its steps",
             ));
         }
         if self.max_steps == 0 {
@@ -117,6 +150,12 @@ impl AccuracySettings {
                 }
             }
         }
+        out.extend(
+            (self.nonsmooth_steps_deg.iter()).map(|&step_deg| Source::Nonsmooth {
+                step_deg,
+                verify: false,
+            }),
+        );
         out
     }
 
@@ -136,8 +175,10 @@ pub struct AccuracyRow {
     pub method: &'static str,
     /// clarabel's tol or the integrator's rtol.
     pub tolerance: Option<f64>,
-    /// Contact penetration in um at the scene's push F (simulation rows).
+    /// Contact penetration in um at the scene's push F (regularised simulation rows).
     pub penetration_um: Option<f64>,
+    /// Step in deg of palm turn (nonsmooth rows).
+    pub step_deg: Option<f64>,
     /// The model's status.
     pub status: JamStatus,
     /// theta_jam in deg.
@@ -179,12 +220,14 @@ pub struct AccuracyRow {
 /// A converged answer of the regularised model at one stiffness.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Converged {
-    /// The integrator.
+    /// The method.
     pub method: Method,
-    /// Penetration in um at F (None: the `[dynamics]` stiffness).
+    /// Penetration in um at F (None: the `[dynamics]` stiffness, or the nonsmooth method).
     pub penetration_um: Option<f64>,
-    /// Its rtol.
-    pub rtol: f64,
+    /// Its rtol (integrators).
+    pub rtol: Option<f64>,
+    /// Its step in deg (the nonsmooth method).
+    pub step_deg: Option<f64>,
     /// Its status.
     pub status: JamStatus,
     /// Its x_jam in mm, if it jams.
@@ -228,7 +271,7 @@ pub fn run(
     };
     let sources = settings.sources();
     let stiff = settings.stiffnesses();
-    let converged_sources: Vec<Source> = stiff
+    let mut converged_sources: Vec<Source> = stiff
         .iter()
         .flat_map(|&pen| {
             settings
@@ -242,6 +285,12 @@ pub fn run(
                 })
         })
         .collect();
+    if !settings.nonsmooth_steps_deg.is_empty() {
+        converged_sources.push(Source::Nonsmooth {
+            step_deg: settings.converged_step_deg,
+            verify: false,
+        });
+    }
     for s in sources.iter().chain(&converged_sources) {
         s.spec(base).validate()?;
     }
@@ -252,18 +301,19 @@ pub fn run(
     let mut converged = Vec::new();
     for src in &converged_sources {
         let (s, _, _) = super::solve_timed(&crate::models::solve, src, base, scene, 1)?;
-        let Source::Simulation {
-            method,
-            penetration_um,
-            ..
-        } = *src
-        else {
-            unreachable!("converged sources are simulations")
+        let (method, penetration_um) = match *src {
+            Source::Simulation {
+                method,
+                penetration_um,
+                ..
+            } => (method, penetration_um),
+            _ => (Method::Nonsmooth, None),
         };
         converged.push(Converged {
             method,
             penetration_um,
-            rtol: settings.converged_rtol,
+            rtol: src.tolerance(),
+            step_deg: src.step_deg(),
             status: s.status,
             x_jam_mm: jam_x(s.status, s.x_jam_mm).filter(|_| why(&s).is_none()),
             reason: why(&s),
@@ -278,9 +328,10 @@ pub fn run(
                 .find(|c| c.method == m && c.penetration_um == pen)
                 .and_then(|c| c.x_jam_mm.map(|x| (m, x)))
         };
+        // The nonsmooth method is its own model: no other method's answer stands in for it.
         find(m).or_else(|| {
             (settings.methods.iter())
-                .filter(|&&o| o != m)
+                .filter(|&&o| o != m && m != Method::Nonsmooth)
                 .find_map(|&o| find(o))
         })
     };
@@ -303,6 +354,7 @@ pub fn run(
                 penetration_um,
                 ..
             } => converged_x(*method, *penetration_um),
+            Source::Nonsmooth { .. } => converged_x(Method::Nonsmooth, None),
             _ => None,
         };
         let (steps, evaluations) = super::work(&s);
@@ -326,6 +378,7 @@ pub fn run(
             method: src.method(),
             tolerance: src.tolerance(),
             penetration_um,
+            step_deg: src.step_deg(),
             status: s.status,
             theta_jam_deg: s.theta_jam_deg,
             x_jam_mm: s.x_jam_mm,
@@ -369,8 +422,10 @@ mod tests {
             methods: vec![Method::Radau5],
             tolerances: vec![1e-3, 1e-6],
             penetrations_um: vec![1.0],
+            nonsmooth_steps_deg: vec![0.1, 0.01],
             runs: 1,
             converged_rtol: 1e-9,
+            converged_step_deg: 0.002,
             max_steps: 500_000,
         }
     }
@@ -408,6 +463,16 @@ mod tests {
         let ie = soft.integration_error_mm.unwrap();
         assert!(ie < 0.1 * soft.x_error_mm.unwrap(), "{ie}");
         assert_eq!(soft.converged_by, Some(Method::Radau5));
+        // The nonsmooth method has no contact give: at 0.1 and 0.01 deg it meets r / mu to
+        // 1e-4 (measured 7e-5: both lock up on the same step of palm angle, 43.600 deg; RADAU5
+        // at 1 um comes to 4e-5), and within 2 um of its own answer at 0.002 deg.
+        let ns: Vec<&AccuracyRow> = rows.iter().filter(|r| r.method == "nonsmooth").collect();
+        assert_eq!(ns.len(), 2);
+        for r in &ns {
+            assert!(r.x_rel_error.unwrap() < 1e-4, "{r:?}");
+            assert_eq!(r.converged_by, Some(Method::Nonsmooth));
+            assert!(r.integration_error_mm.unwrap() < 2e-3, "{r:?}");
+        }
         assert!(rows.iter().all(|r| r.median_time_s > 0.0 && r.runs == 1));
     }
 

@@ -67,7 +67,7 @@ impl MapCostSettings {
 pub struct MapCostRow {
     /// The model.
     pub model: ModelKind,
-    /// How it answers (closed_form, exact, clarabel, radau5).
+    /// How it answers (closed_form, exact, clarabel, radau5, nonsmooth).
     pub method: &'static str,
     /// Cells per axis it answered.
     pub sampled_per_axis: usize,
@@ -121,6 +121,13 @@ pub fn run(base: &Config, settings: &MapCostSettings) -> Result<MapCostReport> {
                 method: Method::Radau5,
                 rtol: base.dynamics.rtol,
                 penetration_um: None,
+                verify: base.dynamics.verify,
+            },
+            settings.dynamics_per_axis,
+        ),
+        (
+            Source::Nonsmooth {
+                step_deg: base.dynamics.nonsmooth_step_deg,
                 verify: base.dynamics.verify,
             },
             settings.dynamics_per_axis,
@@ -192,7 +199,7 @@ mod tests {
             dynamics_per_axis: 2,
         };
         let report = run(&Config::default(), &s).unwrap();
-        assert_eq!(report.rows.len(), 4);
+        assert_eq!(report.rows.len(), 5);
         let statics = &report.rows[0];
         assert!(!statics.extrapolated);
         assert_eq!(statics.max_x_rel_error, Some(0.0));
@@ -208,6 +215,9 @@ mod tests {
         assert_eq!(sim.untrusted_cells + sim.status_mismatches, 0, "{sim:?}");
         let e = sim.max_x_rel_error.unwrap();
         assert!((0.1..0.2).contains(&e), "{sim:?}");
+        let ns = &report.rows[4];
+        assert_eq!(ns.method, "nonsmooth");
+        assert_eq!(ns.untrusted_cells + ns.status_mismatches, 0, "{ns:?}");
     }
 
     #[test]

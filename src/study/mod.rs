@@ -32,7 +32,7 @@ pub mod stability;
 use serde::Serialize;
 
 use crate::config::Config;
-use crate::dynamics::{Drive, DynamicsParams, DynamicsSolution, Method};
+use crate::dynamics::{CrossCheck, Drive, DynamicsParams, DynamicsSolution, Failure, Method};
 use crate::error::{Error, Result};
 use crate::minnorm::palm::MinNormSettings;
 use crate::minnorm::qp::QpSettings;
@@ -64,6 +64,13 @@ pub enum Source {
         /// Run the verification at a tenth of the tolerance (what `solve` does by default).
         verify: bool,
     },
+    /// The nonsmooth simulation (rigid contacts, exact Coulomb friction) at one step size.
+    Nonsmooth {
+        /// Palm turn per time step in deg, in (0, 1].
+        step_deg: f64,
+        /// Run the verification at twice the step (what `solve` does by default).
+        verify: bool,
+    },
 }
 
 impl Source {
@@ -72,7 +79,7 @@ impl Source {
         match self {
             Source::Statics => ModelKind::Statics,
             Source::MinNormExact | Source::MinNormClarabel { .. } => ModelKind::MinNorm,
-            Source::Simulation { .. } => ModelKind::Dynamics,
+            Source::Simulation { .. } | Source::Nonsmooth { .. } => ModelKind::Dynamics,
         }
     }
 
@@ -83,6 +90,7 @@ impl Source {
             Source::MinNormExact => "exact",
             Source::MinNormClarabel { .. } => "clarabel",
             Source::Simulation { method, .. } => method.as_str(),
+            Source::Nonsmooth { .. } => Method::Nonsmooth.as_str(),
         }
     }
 
@@ -91,6 +99,14 @@ impl Source {
         match *self {
             Source::MinNormClarabel { tol } => Some(tol),
             Source::Simulation { rtol, .. } => Some(rtol),
+            _ => None,
+        }
+    }
+
+    /// The nonsmooth method's step in deg of palm turn, if this is it.
+    pub fn step_deg(&self) -> Option<f64> {
+        match *self {
+            Source::Nonsmooth { step_deg, .. } => Some(step_deg),
             _ => None,
         }
     }
@@ -111,6 +127,9 @@ impl Source {
         }
         if let Some(p) = self.penetration_um() {
             s.push_str(&format!(" {p} um"));
+        }
+        if let Some(h) = self.step_deg() {
+            s.push_str(&format!(" step {h} deg"));
         }
         s
     }
@@ -158,13 +177,22 @@ impl Source {
                     series_dt_s: None,
                 }
             }
+            Source::Nonsmooth { step_deg, verify } => ModelSpec::Dynamics {
+                params: DynamicsParams {
+                    method: Method::Nonsmooth,
+                    nonsmooth_step_deg: step_deg,
+                    verify,
+                    ..base.dynamics
+                },
+                series_dt_s: None,
+            },
         }
     }
 
     /// The drive this source poses the scene with: the simulation's, none for a finite push.
     pub fn drive(&self, base: &Config) -> Option<Drive> {
         match self {
-            Source::Simulation { .. } => Some(base.dynamics.drive),
+            Source::Simulation { .. } | Source::Nonsmooth { .. } => Some(base.dynamics.drive),
             _ => None,
         }
     }
@@ -239,9 +267,8 @@ pub fn reference(scene: &SceneParams, drive: Option<Drive>) -> Reference {
 
 /// Why a row has no trusted answer, with what the model said.
 ///
-/// JSON: the snake_case variant name under `reason`, beside its fields. The simulation's
-/// failure and cross-check are carried as the model's own message until its typed reasons
-/// land on main (branch `dyn`).
+/// JSON: the snake_case variant name under `reason`, beside its fields; the simulation's own
+/// typed reason under `failure` or `check`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(tag = "reason", rename_all = "snake_case")]
 pub enum Why {
@@ -256,17 +283,15 @@ pub enum Why {
         /// The model's reason.
         outside: OutsideModel,
     },
-    /// The integrator gave up at simulated time `t_s`.
+    /// The integrator gave up (step limit, step size too small).
     IntegratorGaveUp {
-        /// Simulated time in s.
-        t_s: f64,
-        /// The integrator's reason (step limit, step size too small).
-        message: String,
+        /// The integrator's reason, with the simulated time.
+        failure: Failure,
     },
     /// The simulation's answer failed a cross-check or its error estimate.
     CrossCheck {
-        /// The check's statement.
-        message: String,
+        /// The check and its numbers.
+        check: CrossCheck,
     },
 }
 
@@ -287,10 +312,8 @@ impl std::fmt::Display for Why {
         match self {
             Why::NoJam { status } => write!(f, "the model says {status}"),
             Why::Outside { outside } => write!(f, "{outside}"),
-            Why::IntegratorGaveUp { t_s, message } => {
-                write!(f, "the integrator gave up at t = {t_s:.4} s: {message}")
-            }
-            Why::CrossCheck { message } => write!(f, "{message}"),
+            Why::IntegratorGaveUp { failure } => write!(f, "the integrator gave up: {failure}"),
+            Why::CrossCheck { check } => write!(f, "{check}"),
         }
     }
 }
@@ -316,16 +339,11 @@ pub fn why(s: &Solution) -> Option<Why> {
 fn dynamics_why(d: &DynamicsSolution) -> Option<Why> {
     // A failure during the run-on after a confirmed jam leaves the jam standing.
     if d.status == JamStatus::IntegratorFailed {
-        if let Some(f) = &d.failure {
-            return Some(Why::IntegratorGaveUp {
-                t_s: f.t_s,
-                message: f.reason.clone(),
-            });
+        if let Some(failure) = d.failure {
+            return Some(Why::IntegratorGaveUp { failure });
         }
     }
-    d.cross_check
-        .as_ref()
-        .map(|c| Why::CrossCheck { message: c.clone() })
+    d.cross_check.map(|check| Why::CrossCheck { check })
 }
 
 /// The work a solution counted: (steps, evaluations). Steps are the integrator's accepted

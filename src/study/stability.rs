@@ -7,7 +7,8 @@
 //! palm speed (0.1 to 3600 deg/s), start angles near the jam, near 0 and near 180 deg, and a
 //! force-limited push barely able to move the disc. The methods ([`methods`]) are what a user
 //! gets from `solve`: the closed form, the min-norm program by its exact path and by clarabel,
-//! and the simulation by each integrator at its default tolerance with its verification run.
+//! the regularised simulation by each integrator at its default tolerance, and the nonsmooth
+//! simulation at its default step, each with its verification run.
 //!
 //! Each answer is put in one [`Class`]:
 //!
@@ -258,7 +259,7 @@ pub fn cases(base: &Config) -> Vec<Case> {
     out
 }
 
-/// The methods of the matrix: what `solve` runs by default for each model and integrator.
+/// The methods of the matrix: what `solve` runs by default for each model and method.
 pub fn methods(base: &Config) -> Vec<Source> {
     let d = &base.dynamics;
     vec![
@@ -277,6 +278,10 @@ pub fn methods(base: &Config) -> Vec<Source> {
             method: Method::Dopri5,
             rtol: d.rtol,
             penetration_um: None,
+            verify: d.verify,
+        },
+        Source::Nonsmooth {
+            step_deg: d.nonsmooth_step_deg,
             verify: d.verify,
         },
     ]
@@ -367,8 +372,8 @@ impl StabilityRow {
             .into_iter()
             .flatten(),
         );
-        if let Some(Why::IntegratorGaveUp { t_s, .. }) = &self.reason {
-            v.push(*t_s);
+        if let Some(Why::IntegratorGaveUp { failure }) = &self.reason {
+            v.push(failure.t_s());
         }
         v
     }
@@ -505,10 +510,13 @@ fn allowance_mm(
     theta_deg: Option<f64>,
     x_mm: Option<f64>,
 ) -> f64 {
-    let Source::Simulation { .. } = m else {
-        return STATICS_ALLOWANCE_REL * x_ref.abs();
-    };
     let (p, d) = (&c.scene, &c.dynamics);
+    let compliant = match m {
+        Source::Simulation { .. } => true,
+        // Rigid contacts: no give.
+        Source::Nonsmooth { .. } => false,
+        _ => return STATICS_ALLOWANCE_REL * x_ref.abs(),
+    };
     let wedge = p.alpha_ground() + p.alpha_palm();
     // The push the contact carries at the jam: the force drive's limit F; the motion drive
     // pushes as hard as sliding the disc needs at the angle it stopped at, by the corrected
@@ -522,7 +530,11 @@ fn allowance_mm(
     };
     let delta = super::penetration_mm(push, d.stiffness_n_per_mm_e, d.exponent);
     let theta_ref = r.theta_jam_deg.unwrap_or(90.0).to_radians();
-    let give = 4.0 * delta / theta_ref.sin().max(1e-3);
+    let give = if compliant {
+        4.0 * delta / theta_ref.sin().max(1e-3)
+    } else {
+        0.0
+    };
     // Inertia, which the reference lacks, may carry the disc past it: at most the distance
     // the ground brakes it from the palm's speed there, as the dynamics' own wedge check.
     let decel = p.mu_ground * p.gravity_m_s2 * 1000.0;
@@ -568,7 +580,7 @@ mod tests {
         let cs = pick(&base, &names);
         assert_eq!(cs.len(), names.len());
         let report = run(&base, &cs, &methods(&base)).unwrap();
-        assert_eq!(report.rows.len(), names.len() * 5);
+        assert_eq!(report.rows.len(), names.len() * 6);
         let wrong: Vec<String> = report
             .of_class(Class::WrongUnflagged)
             .map(|r| format!("{} {} {:?} {:?}", r.case, r.method, r.status, r.x_jam_mm))
@@ -577,18 +589,18 @@ mod tests {
         for r in &report.rows {
             assert!(r.numbers().iter().all(|v| v.is_finite()), "{r:?}");
         }
-        // The exact paths must answer every one of these correctly.
+        // The closed form and the min-norm program must answer every one of these correctly.
         for r in report
             .rows
             .iter()
-            .filter(|r| r.method != "radau5" && r.method != "dopri5")
+            .filter(|r| r.model != ModelKind::Dynamics)
         {
             assert_eq!(r.class, Class::Correct, "{r:?}");
         }
     }
 
     /// Explicit integration of a 0.01 um contact fails by its step limit, named, not by a
-    /// wrong answer; RADAU5 answers it.
+    /// wrong answer; RADAU5 and the nonsmooth method (which has no stiffness) answer it.
     #[test]
     fn dopri5_on_the_stiffest_contact_fails_by_its_step_limit() {
         let base = Config::default();
@@ -598,5 +610,11 @@ mod tests {
         assert_eq!(d.class, Class::FailedNamed, "{d:?}");
         assert!(matches!(d.reason, Some(Why::IntegratorGaveUp { .. })));
         assert_eq!(row("radau5").class, Class::Correct, "{:?}", row("radau5"));
+        assert_eq!(
+            row("nonsmooth").class,
+            Class::Correct,
+            "{:?}",
+            row("nonsmooth")
+        );
     }
 }

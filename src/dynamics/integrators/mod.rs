@@ -21,6 +21,8 @@ mod tests;
 pub use dopri5::Dopri5;
 pub use radau5::Radau5;
 
+use serde::Serialize;
+
 /// A system y' = f(t, y) of `dim()` equations with its Jacobian.
 pub trait OdeSystem {
     /// Number of equations.
@@ -64,8 +66,52 @@ pub enum Outcome {
     Finished,
     /// The observer stopped it at this time.
     Stopped { t: f64 },
-    /// The method gave up at time `t`.
-    Failed { t: f64, reason: String },
+    /// The method gave up.
+    Failed(Failure),
+}
+
+/// Why an integrator gave up, with the numbers needed to act (diffsol's style of stop reasons).
+///
+/// JSON: the snake_case variant name under `reason`, beside its fields.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "reason", rename_all = "snake_case")]
+pub enum Failure {
+    /// The step budget ran out: `steps` attempts (accepted and rejected) by simulated time `t_s`.
+    StepLimit { t_s: f64, steps: u64 },
+    /// The step controller asked for a step of `h_s` s (or NaN) at `t_s`, too small to advance
+    /// the time in floating point.
+    StepSizeTooSmall { t_s: f64, h_s: f64 },
+    /// The nonsmooth method found no contact impulses that obey the contact laws at `t_s`
+    /// although the drive could give way.
+    NoConsistentContact { t_s: f64 },
+}
+
+impl Failure {
+    /// Simulated time in s where the integration stopped.
+    pub fn t_s(&self) -> f64 {
+        match *self {
+            Failure::StepLimit { t_s, .. }
+            | Failure::StepSizeTooSmall { t_s, .. }
+            | Failure::NoConsistentContact { t_s } => t_s,
+        }
+    }
+}
+
+impl std::fmt::Display for Failure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            Failure::StepLimit { t_s, steps } => {
+                write!(f, "step limit of {steps} reached at t = {t_s:.4} s")
+            }
+            Failure::StepSizeTooSmall { t_s, h_s } => {
+                write!(f, "step size {h_s:.3e} s too small at t = {t_s:.4} s")
+            }
+            Failure::NoConsistentContact { t_s } => write!(
+                f,
+                "no contact impulses obey the contact laws at t = {t_s:.4} s"
+            ),
+        }
+    }
 }
 
 /// One accepted step, seen through its dense output.
@@ -120,14 +166,16 @@ impl StepLoop {
             return Err(Outcome::Finished);
         }
         if self.stats.steps + self.stats.rejected >= tol.max_steps {
-            let reason = format!("step limit of {} reached", tol.max_steps);
-            return Err(Outcome::Failed { t, reason });
+            let steps = tol.max_steps;
+            return Err(Outcome::Failed(Failure::StepLimit { t_s: t, steps }));
         }
         let h = h.min(t_end - t);
         // Also true for a NaN step.
         if h.is_nan() || h <= 1e-14 * t.abs().max(1.0) {
-            let reason = format!("step size {h:.3e} too small");
-            return Err(Outcome::Failed { t, reason });
+            return Err(Outcome::Failed(Failure::StepSizeTooSmall {
+                t_s: t,
+                h_s: h,
+            }));
         }
         Ok(h)
     }

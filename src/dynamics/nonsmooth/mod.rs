@@ -1,0 +1,439 @@
+//! The nonsmooth method: rigid unilateral contacts with exact Coulomb friction, time-stepped at
+//! the velocity-impulse level (Moreau-Jean; Stewart-Trinkle's form of the gap condition).
+//!
+//! # Formulation
+//!
+//! The disc's configuration is q = (x, y, phi) (centre in mm, rotation in rad, counter-clockwise)
+//! with generalised velocity v = (x_dot, y_dot, phi_dot) and mass matrix M = diag(m, m, I),
+//! I = m r^2 / 2 (a solid disc). [`DiscMotion::Slides`] is the paper's translational joint:
+//! phi is locked (I^-1 = 0), so the ground's friction, not a rotation, takes the palm's moment;
+//! [`DiscMotion::Rolls`] lets the disc turn. With the palm's normal n = (sin theta, -cos theta)
+//! and direction t = (cos theta, sin theta), the gaps and relative velocities (disc minus
+//! support, mm and mm/s) are
+//!
+//! ```text
+//! ground A:  g_A = y - r                       U_NA = y_dot     U_TA = x_dot + r phi_dot
+//! palm B:    g_B = x sin t - y cos t - r - h   U_NB = v_c . n + s_B theta_dot
+//!                                              U_TB = v_c . t - r phi_dot - h theta_dot
+//! ```
+//!
+//! with s_B = x cos theta + y sin theta the contact's distance from the hinge and h the palm's
+//! offset. In matrix form U = J v + c theta_dot. One step of length dt from (q, v, theta):
+//!
+//! ```text
+//! M (v+ - v) = dt f_ext + J^T P               f_ext = (0, -m g, 0), P the contact impulses
+//! 0 <= P_N  _|_  U_N+ + g / dt >= 0           Signorini at the velocity level, per contact
+//! P_T in -mu P_N sign(U_T+)                   exact Coulomb (|P_T| <= mu_s P_N when U_T+ = 0)
+//! q+ = q + dt v+,  theta+ = theta + dt theta_dot
+//! ```
+//!
+//! The gap term g/dt makes the contact close exactly at the end of the step (Stewart-Trinkle)
+//! instead of letting a drift in the gap accumulate. theta_dot is -omega for the motion drive; the
+//! force drive adds the law of a self-locking drive with a limit N_max = F cos(atan mu_palm) on
+//! its normal push: theta_dot = -omega below the limit, in [-omega, 0] at it, 0 above it (the
+//! drive holds); when none of these is consistent (a rolling disc coming to rest in the wedge
+//! would, at the limit, turn the palm back) the drive stops below its limit rather than back
+//! off ([`step::DriveMode::Stalls`]). Each step's problem is small (five unknowns) and solved exactly by enumerating
+//! the contact modes ([`step`]): no relaxation of the friction cone, so a sliding contact does
+//! not separate (the artefact of Anitescu's convex relaxation, which makes a contact sliding at
+//! speed u_T open at mu u_T, is absent). The test `the_step_is_a_fixed_point_of_clarabels_tresca_problem`
+//! checks each step against clarabel: with the friction bounds fixed at mu times the normal
+//! impulses found, the step's velocities minimise the kinetic energy under the contact
+//! constraints (the Tresca problem, a convex QP), and clarabel finds the same velocities.
+//!
+//! # Restitution
+//!
+//! Newton's coefficient is 0: an impact is plastic, the contact closes and stays closed while it
+//! pushes. A disc in a palm's grip is in sustained contact, where any e > 0 would only add
+//! chatter; a real gripper's impacts at 30 deg/s are slow and well damped. A regularised model
+//! with a stiff, lightly damped contact bounces instead, so the two methods disagree where a fast
+//! palm knocks the disc ahead (see the module docs of [`crate::dynamics`]).
+//!
+//! # The jam
+//!
+//! Exact Coulomb friction has true stiction: a held disc does not move, to round-off. With the
+//! motion drive the palm must turn whatever the load; past the self-locking wedge no impulse can
+//! both keep the palm out of the disc and obey the friction laws, so the step problem has no
+//! solution: a lock-up, the rigid model's jam (the push needed grows without bound). It is
+//! reported as the jam at the disc's position when it happens, with the push of the last step
+//! ([`LockUp::push_n`]), which grows as the step shrinks (it is about mu_g m g / D with D the
+//! wedge's margin at the last step). With the force drive the palm stalls at its limit and holds;
+//! the jam is the first step in which the disc and the palm are both at rest, and it lasts.
+//!
+//! # The disc free to roll
+//!
+//! With [`DiscMotion::Rolls`] the palm's friction turns the disc, and a rolling disc's moment
+//! balance makes the ground's and the palm's friction forces equal in size. The ground, pressed
+//! by the weight and the push, holds first; the palm contact reaches its cone where
+//! tan(theta/2) = mu_p; and the disc locks up where tan(theta/2) = min(mu_p, mu_g (1 + m g / N))
+//! (the min-norm rolling formulation), i.e. at r / min(mu_g, mu_p) with the motion drive's
+//! unbounded push. Measured at the defaults (motion drive, 30 deg/s, step 0.01 deg):
+//!
+//! ```text
+//! mu_g / mu_p   slides (translational)     rolls
+//! 0.15 / 0.15   66.673 mm                  66.673 mm, rolls (ground sticks) all the way
+//! 0.25 ... 0.45 r/mu + <= 0.06 %           the same, rolls all the way
+//! 0.2 / 0.6     25.869 mm = r cot((a_g + a_p)/2)   50.022 mm: rolls while 0.6 N_B <= 0.2 N_A,
+//!                                                  then slips on the ground, spinning
+//! 0.6 / 0.2     25.869 mm                  50.022 mm, rolls all the way
+//! ```
+//!
+//! So with equal frictions rolling changes nothing (the disc rolls instead of sliding, which is
+//! what a real gripper sees, and jams at the same r/mu), while with unequal frictions the
+//! translational joint, which takes the palm's moment, makes the disc jam at half the distance:
+//! the sum of the friction angles counts for a disc that cannot turn, the smaller one for a disc
+//! that can. With the force drive at 0.5 deg/s and F = 200 N the rolling disc jams within 0.13 %
+//! of the min-norm rolling answer (25.006 / 47.326 / 50.036 mm against 25.000 / 47.296 /
+//! 50.000 mm for 0.4/0.4, 0.2/0.6, 0.6/0.2).
+//!
+//! # Known artefacts
+//!
+//! * The geometry (n, t, s_B, the gaps) is taken at the start of each step: the jam lands up to
+//!   a step's palm turn off, so x_jam converges to r/mu in the first order of the step.
+//! * Contact is decided per step: a disc knocked ahead flies for whole steps; the palm catches
+//!   it at a step end.
+//! * Coulomb's law with a rigid body can have several consistent answers (Painleve); the first
+//!   consistent mode wins, the previous step's tried first, so the choice is deterministic.
+
+pub mod step;
+
+use serde::{Deserialize, Serialize};
+
+use self::step::{ContactMode, DriveMode, Modes, StepProblem};
+use super::jam::SeriesRow;
+use super::{Drive, DynamicsParams};
+use crate::model::SceneParams;
+
+/// Speed (mm/s, and rad/s for the rotation) below which the disc is at rest: the speeds that
+/// close gaps of round-off size (1e-11 mm) over a step are around 1e-7 mm/s.
+const REST_MM_S: f64 = 1e-6;
+
+/// How the disc may move in the nonsmooth method.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DiscMotion {
+    /// The paper's: on a translational joint, no rotation (the joint takes the moment).
+    Slides,
+    /// Free in the plane: x, y and rotation, unilateral contacts at the ground and the palm.
+    Rolls,
+}
+
+/// A lock-up: the motion-driven palm cannot turn any further without entering the disc.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LockUp {
+    /// Time in s.
+    pub t_s: f64,
+    /// Palm angle in deg.
+    pub theta_deg: f64,
+    /// Disc centre abscissa in mm.
+    pub x_mm: f64,
+    /// The palm's normal push in the last step before it, in N (grows as the step shrinks).
+    pub push_n: f64,
+}
+
+/// How the disc moved while the palm touched it, counted in steps.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+pub struct MotionTally {
+    /// Steps with the disc sliding on the ground.
+    pub slipping_steps: u64,
+    /// Steps with the disc rolling on the ground (no slip at A) while it moves.
+    pub rolling_steps: u64,
+    /// Steps with the disc off the palm.
+    pub free_steps: u64,
+    /// Steps with the disc lifted off the ground.
+    pub lifted_steps: u64,
+}
+
+/// How a nonsmooth run ended.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum End {
+    /// Lock-up (motion drive).
+    LockUp(LockUp),
+    /// Disc and palm at rest (force drive): (t, theta, x).
+    AtRest { t: f64, theta: f64, x: f64 },
+    /// The contact passed the palm's end: (t, theta, x).
+    BeyondReach { t: f64, theta: f64, x: f64 },
+    /// The palm closed to theta = 0 without a jam.
+    PalmClosed,
+    /// The step problem had no solution although the drive could give way (should not happen).
+    NoSolution { t: f64 },
+    /// The step limit `max_steps` was reached at time t.
+    StepLimit { t: f64 },
+}
+
+/// The result of one nonsmooth run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Run {
+    pub end: End,
+    /// Time steps taken.
+    pub steps: u64,
+    /// Choices of contact modes tried (linear solves).
+    pub mode_solves: u64,
+    pub tally: MotionTally,
+    /// Whether the disc moved at all before the end.
+    pub moved: bool,
+    /// Whether the palm lost the disc after first pushing it (knocked ahead).
+    pub knocked_ahead: bool,
+    /// Whether the disc left the ground while the palm touched it.
+    pub lifted: bool,
+    /// The time series (empty unless asked for).
+    pub series: Vec<SeriesRow>,
+    /// Simulated time in s.
+    pub simulated_s: f64,
+}
+
+impl std::str::FromStr for DiscMotion {
+    type Err = String;
+    fn from_str(s: &str) -> std::result::Result<Self, String> {
+        match s {
+            "slides" => Ok(DiscMotion::Slides),
+            "rolls" => Ok(DiscMotion::Rolls),
+            _ => Err(format!(
+                "unknown disc motion '{s}' (expected slides or rolls)"
+            )),
+        }
+    }
+}
+
+/// The step length in s for a palm turn of `step_deg` at omega.
+pub fn step_s(params: &DynamicsParams) -> f64 {
+    params.nonsmooth_step_deg.to_radians() / params.omega_deg_s.to_radians()
+}
+
+/// The constants of one simulation, in kg, mm, s.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Stepper {
+    /// r in mm.
+    pub radius: f64,
+    /// The palm face's offset h in mm.
+    pub offset: f64,
+    /// g in mm/s^2.
+    pub gravity: f64,
+    /// M^-1 = (1/m, 1/m, 1/I) in 1/kg and 1/(kg mm^2); 1/I = 0 when the disc only slides.
+    pub inv_mass: [f64; 3],
+    pub mu: [f64; 2],
+    pub mu_static: [f64; 2],
+    /// omega in rad/s.
+    pub omega: f64,
+    /// The palm's normal impulse limit over a step in kg mm/s (infinite: motion drive).
+    pub push_limit: f64,
+    /// The step in s.
+    pub dt: f64,
+}
+
+/// One step's problem and what is needed to turn its answer into velocities.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Built {
+    pub problem: StepProblem,
+    /// J: rows U_NA, U_TA, U_NB, U_TB; columns x_dot, y_dot, phi_dot.
+    pub jac: [[f64; 3]; 4],
+    /// v + dt M^-1 f_ext in mm/s and rad/s.
+    pub v_free: [f64; 3],
+    /// (g_A, g_B) in mm.
+    pub gaps: [f64; 2],
+    /// s_B, the contact's distance from the hinge, in mm.
+    pub contact_distance: f64,
+}
+
+impl Stepper {
+    /// The constants for valid parameters.
+    pub fn new(scene: &SceneParams, params: &DynamicsParams) -> Stepper {
+        let dt = step_s(params);
+        let (m, r) = (scene.mass_kg, scene.radius_mm);
+        let mu = [scene.mu_ground, scene.mu_palm];
+        Stepper {
+            radius: r,
+            offset: params.palm_offset_mm,
+            gravity: scene.gravity_m_s2 * 1000.0,
+            inv_mass: [
+                1.0 / m,
+                1.0 / m,
+                match params.disc {
+                    DiscMotion::Slides => 0.0,
+                    DiscMotion::Rolls => 2.0 / (m * r * r),
+                },
+            ],
+            mu,
+            mu_static: [
+                params.mu_static_ground.unwrap_or(mu[0]),
+                params.mu_static_palm.unwrap_or(mu[1]),
+            ],
+            omega: params.omega_deg_s.to_radians(),
+            // N_max in kg mm/s^2 (1 N = 1000 kg mm/s^2), as an impulse over one step.
+            push_limit: match params.drive {
+                Drive::Motion => f64::INFINITY,
+                Drive::Force => scene.force_n * scene.alpha_palm().cos() * 1000.0 * dt,
+            },
+            dt,
+        }
+    }
+
+    /// The step's problem at configuration `q`, velocity `v` and palm angle `theta`.
+    pub fn build(&self, q: &[f64; 3], v: &[f64; 3], theta: f64) -> Built {
+        let (r, h, dt) = (self.radius, self.offset, self.dt);
+        let (s, c) = theta.sin_cos();
+        let s_b = q[0] * c + q[1] * s;
+        let jac = [[0.0, 1.0, 0.0], [1.0, 0.0, r], [s, -c, 0.0], [c, s, -r]];
+        let v_free = [v[0], v[1] - dt * self.gravity, v[2]];
+        let mut b = [0.0; 4];
+        let mut a = [[0.0; 4]; 4];
+        for i in 0..4 {
+            b[i] = (0..3).map(|k| jac[i][k] * v_free[k]).sum();
+            for j in 0..4 {
+                a[i][j] = (0..3)
+                    .map(|k| jac[i][k] * self.inv_mass[k] * jac[j][k])
+                    .sum();
+            }
+        }
+        let gaps = [q[1] - r, q[0] * s - q[1] * c - r - h];
+        Built {
+            problem: StepProblem {
+                b,
+                a,
+                c: [0.0, 0.0, s_b, -h],
+                gap_rate: [gaps[0] / dt, gaps[1] / dt],
+                mu: self.mu,
+                mu_static: self.mu_static,
+                omega: self.omega,
+                push_limit: self.push_limit,
+            },
+            jac,
+            v_free,
+            gaps,
+            contact_distance: s_b,
+        }
+    }
+
+    /// Velocities after the step for impulses `p`: v+ = v_free + M^-1 J^T P.
+    pub fn velocities(&self, built: &Built, p: &[f64; 4]) -> [f64; 3] {
+        let mut v = built.v_free;
+        for (k, vk) in v.iter_mut().enumerate() {
+            *vk += self.inv_mass[k] * (0..4).map(|i| built.jac[i][k] * p[i]).sum::<f64>();
+        }
+        v
+    }
+}
+
+/// Runs the push from the start angle with the disc at rest touching the palm and the ground,
+/// and on for `after_jam_s` after a force-driven jam (a lock-up ends the run: the rigid palm can
+/// turn no further). Parameters must be valid.
+pub fn run(scene: &SceneParams, params: &DynamicsParams, series_dt_s: Option<f64>) -> Run {
+    let st = Stepper::new(scene, params);
+    let dt = st.dt;
+    let r = st.radius;
+    let mut theta = scene.start_angle_deg.to_radians();
+    let (s0, c0) = theta.sin_cos();
+    // Touching both: y = r, x sin - r cos = r + h.
+    let mut q = [(r * (1.0 + c0) + st.offset) / s0, r, 0.0];
+    let mut v = [0.0; 3];
+    let mut modes: Modes = (ContactMode::Stick, ContactMode::Open, DriveMode::Runs);
+    let mut out = Run {
+        end: End::PalmClosed,
+        steps: 0,
+        mode_solves: 0,
+        tally: MotionTally::default(),
+        moved: false,
+        knocked_ahead: false,
+        lifted: false,
+        series: Vec::new(),
+        simulated_s: 0.0,
+    };
+    let series_dt = series_dt_s.filter(|d| *d > 0.0 && d.is_finite());
+    let mut next_sample = 0.0;
+    let mut t = 0.0;
+    let mut last_push = 0.0;
+    let mut pushed = false;
+    let mut rest: Option<End> = None;
+    while theta > 0.0 {
+        if let Some(End::AtRest { t: t_jam, .. }) = rest
+            && t >= t_jam + params.after_jam_s
+        {
+            break;
+        }
+        if out.steps >= params.max_steps {
+            out.end = End::StepLimit { t };
+            break;
+        }
+        let built = st.build(&q, &v, theta);
+        if rest.is_none() && built.contact_distance > scene.palm_length_mm {
+            out.end = End::BeyondReach { t, theta, x: q[0] };
+            break;
+        }
+        let Some(sol) = built.problem.solve(modes) else {
+            out.end = match params.drive {
+                Drive::Motion => End::LockUp(LockUp {
+                    t_s: t,
+                    theta_deg: theta.to_degrees(),
+                    x_mm: q[0],
+                    push_n: last_push,
+                }),
+                Drive::Force => End::NoSolution { t },
+            };
+            break;
+        };
+        out.mode_solves += 1;
+        modes = sol.modes;
+        let p = sol.impulse;
+        v = st.velocities(&built, &p);
+        // kg mm/s per step -> N.
+        let to_n = 1e-3 / dt;
+        last_push = p[2] * to_n;
+        let (ground, palm, drive) = modes;
+        if palm != ContactMode::Open {
+            pushed = true;
+            if ground == ContactMode::Open {
+                out.tally.lifted_steps += 1;
+                out.lifted = true;
+            } else if ground == ContactMode::Stick {
+                if v[0] != 0.0 {
+                    out.tally.rolling_steps += 1;
+                }
+            } else {
+                out.tally.slipping_steps += 1;
+            }
+        } else if pushed {
+            out.tally.free_steps += 1;
+            out.knocked_ahead = true;
+        }
+        if let Some(sdt) = series_dt {
+            while next_sample <= t + dt {
+                out.series.push(SeriesRow {
+                    t_s: next_sample,
+                    theta_deg: theta.to_degrees(),
+                    x_mm: q[0],
+                    x_dot_mm_s: v[0],
+                    penetration_mm: -built.gaps[1],
+                    normal_n: p[2] * to_n,
+                    palm_friction_n: -p[3] * to_n,
+                    ground_normal_n: p[0] * to_n,
+                    ground_friction_n: p[1] * to_n,
+                });
+                next_sample += sdt;
+            }
+        }
+        // At rest to round-off: the velocities that close a gap of round-off size (1e-11 mm
+        // over a step) are far below 1e-6 mm/s.
+        let at_rest =
+            v.iter().all(|x| x.abs() <= REST_MM_S) && sol.theta_dot.abs() <= 1e-6 * st.omega;
+        if rest.is_none() && drive != DriveMode::Runs && at_rest {
+            rest = Some(End::AtRest { t, theta, x: q[0] });
+        }
+        if v[0] != 0.0 {
+            out.moved = true;
+        }
+        for k in 0..3 {
+            q[k] += dt * v[k];
+        }
+        theta += dt * sol.theta_dot;
+        t += dt;
+        out.steps += 1;
+    }
+    if let Some(end) = rest {
+        out.end = end;
+    }
+    out.simulated_s = t;
+    out
+}
+
+#[cfg(test)]
+mod tests;

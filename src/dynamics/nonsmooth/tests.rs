@@ -1,0 +1,245 @@
+//! The step solver against clarabel, and the lock-up against the closed form of the wedge.
+
+use clarabel::algebra::CscMatrix;
+use clarabel::solver::{DefaultSettings, DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
+
+use super::step::ContactMode;
+use super::*;
+
+/// A small deterministic generator (64-bit LCG), so the sample is the same on every run.
+struct Lcg(u64);
+impl Lcg {
+    fn unit(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.unit()
+    }
+}
+
+/// The Tresca problem of one step, solved by clarabel: with the friction bounds `bound` (the
+/// friction impulse limits, kg mm/s) and the palm speed `theta_dot` fixed,
+///
+/// ```text
+/// min 1/2 (v - v_free)' M (v - v_free) + sum_k bound_k |U_Tk(v)|   s.t.  U_Nk(v) + g_k / dt >= 0
+/// ```
+///
+/// whose optimality conditions are the step's equations with those bounds. Returns v (unique:
+/// M is positive definite; the multipliers need not be when more contacts hold than the disc has
+/// freedoms).
+fn tresca_by_clarabel(
+    st: &Stepper,
+    b: &Built,
+    theta_dot: f64,
+    bound: [f64; 2],
+    slides: bool,
+) -> [f64; 3] {
+    // w = (v_x, v_y, v_phi, tau_A, tau_B); the locked rotation gets mass 1 and an equality.
+    let mass = [
+        1.0 / st.inv_mass[0],
+        1.0 / st.inv_mass[1],
+        if slides { 1.0 } else { 1.0 / st.inv_mass[2] },
+    ];
+    let p = CscMatrix::new_from_triplets(5, 5, vec![0, 1, 2], vec![0, 1, 2], mass.to_vec());
+    let q = vec![
+        -mass[0] * b.v_free[0],
+        -mass[1] * b.v_free[1],
+        -mass[2] * b.v_free[2],
+        bound[0],
+        bound[1],
+    ];
+    let c = b.problem.c;
+    let (mut ri, mut ci, mut vals, mut rhs) = (vec![], vec![], vec![], vec![]);
+    let mut row = 0;
+    let mut put = |coeffs: &[(usize, f64)], bb: f64, row: &mut usize| {
+        for &(col, v) in coeffs {
+            ri.push(*row);
+            ci.push(col);
+            vals.push(v);
+        }
+        rhs.push(bb);
+        *row += 1;
+    };
+    if slides {
+        put(&[(2, 1.0)], b.v_free[2], &mut row);
+    }
+    // Without friction tau_k has no cost and no optimum: pin it.
+    for k in 0..2 {
+        if bound[k] <= 0.0 {
+            put(&[(3 + k, 1.0)], 0.0, &mut row);
+        }
+    }
+    let eq = row;
+    for k in 0..2 {
+        let (n, t) = (2 * k, 2 * k + 1);
+        let jn: Vec<(usize, f64)> = (0..3).map(|i| (i, -b.jac[n][i])).collect();
+        put(&jn, c[n] * theta_dot + b.gaps[k] / st.dt, &mut row);
+        if bound[k] <= 0.0 {
+            continue;
+        }
+        let mut up: Vec<(usize, f64)> = (0..3).map(|i| (i, b.jac[t][i])).collect();
+        up.push((3 + k, -1.0));
+        put(&up, -c[t] * theta_dot, &mut row);
+        let mut dn: Vec<(usize, f64)> = (0..3).map(|i| (i, -b.jac[t][i])).collect();
+        dn.push((3 + k, -1.0));
+        put(&dn, c[t] * theta_dot, &mut row);
+    }
+    let a = CscMatrix::new_from_triplets(row, 5, ri, ci, vals);
+    let mut cones = Vec::new();
+    if eq > 0 {
+        cones.push(SupportedConeT::ZeroConeT(eq));
+    }
+    cones.push(SupportedConeT::NonnegativeConeT(row - eq));
+    let settings = DefaultSettings {
+        verbose: false,
+        tol_feas: 1e-10,
+        max_iter: 200,
+        tol_gap_abs: 1e-10,
+        tol_gap_rel: 1e-10,
+        max_threads: 1,
+        ..DefaultSettings::default()
+    };
+    let mut solver = DefaultSolver::new(&p, &q, &a, &rhs, &cones, settings).unwrap();
+    solver.solve();
+    let sol = &solver.solution;
+    assert!(
+        matches!(
+            sol.status,
+            SolverStatus::Solved | SolverStatus::AlmostSolved
+        ),
+        "{:?}",
+        sol.status
+    );
+    [sol.x[0], sol.x[1], sol.x[2]]
+}
+
+/// Each step's answer is a fixed point of the Tresca problem whose friction bounds are mu times
+/// its own normal impulses: clarabel, given those bounds, finds the same velocities and normal
+/// impulses. That is the exact Coulomb law (no relaxed cone), checked on 400 random states of
+/// both disc motions and both drives, sliding, sticking, opening and rolling.
+#[test]
+fn the_step_is_a_fixed_point_of_clarabels_tresca_problem() {
+    let mut rng = Lcg(7);
+    let mut checked = 0;
+    let mut modes_seen = std::collections::HashSet::new();
+    let mut worst: f64 = 0.0;
+    for i in 0..400 {
+        let slides = i % 2 == 0;
+        let drive = if i % 4 < 2 {
+            Drive::Motion
+        } else {
+            Drive::Force
+        };
+        let scene = SceneParams {
+            mu_ground: rng.range(0.0, 0.8),
+            mu_palm: rng.range(0.0, 0.8),
+            mass_kg: rng.range(0.1, 5.0),
+            ..SceneParams::default()
+        };
+        let params = DynamicsParams {
+            drive,
+            disc: if slides {
+                DiscMotion::Slides
+            } else {
+                DiscMotion::Rolls
+            },
+            method: crate::dynamics::Method::Nonsmooth,
+            omega_deg_s: rng.range(1.0, 90.0),
+            palm_offset_mm: if i % 3 == 0 { 0.5 } else { 0.0 },
+            ..DynamicsParams::default()
+        };
+        let st = Stepper::new(&scene, &params);
+        let theta = rng.range(20.0, 88.0).to_radians();
+        let (s, c) = theta.sin_cos();
+        let r = scene.radius_mm;
+        let touching = (r * (1.0 + c) + params.palm_offset_mm) / s;
+        let q = [
+            touching + rng.range(-1e-3, 2e-3),
+            r + rng.range(-1e-4, 1e-3),
+            0.0,
+        ];
+        let v = [
+            rng.range(-5.0, 40.0),
+            rng.range(-2.0, 2.0),
+            if slides { 0.0 } else { rng.range(-3.0, 3.0) },
+        ];
+        let built = st.build(&q, &v, theta);
+        let Some(sol) =
+            built
+                .problem
+                .solve((ContactMode::Stick, ContactMode::Open, step::DriveMode::Runs))
+        else {
+            continue;
+        };
+        modes_seen.insert(format!("{:?}", sol.modes));
+        let vp = st.velocities(&built, &sol.impulse);
+        let bound = |k: usize, mode: ContactMode| {
+            let mu = if mode == ContactMode::Stick {
+                st.mu_static[k]
+            } else {
+                st.mu[k]
+            };
+            mu * sol.impulse[2 * k].max(0.0)
+        };
+        let (ground, palm, _) = sol.modes;
+        let vc = tresca_by_clarabel(
+            &st,
+            &built,
+            sol.theta_dot,
+            [bound(0, ground), bound(1, palm)],
+            slides,
+        );
+        let scale = 1.0 + v.iter().chain(&vp).fold(0.0_f64, |a, x| a.max(x.abs()));
+        for k in 0..3 {
+            let e = (vc[k] - vp[k]).abs() / scale;
+            worst = worst.max(e);
+            assert!(
+                e < 1e-6,
+                "state {i} {:?}: v{k} {} vs clarabel {}",
+                sol.modes,
+                vp[k],
+                vc[k]
+            );
+        }
+        checked += 1;
+    }
+    eprintln!(
+        "{checked} steps checked, worst relative velocity difference {worst:.1e}, modes {modes_seen:?}"
+    );
+    assert!(checked > 300, "{checked}");
+    assert!(modes_seen.len() >= 4, "{modes_seen:?}");
+}
+
+/// The lock-up of a motion-driven palm comes within one step of palm turn after the wedge
+/// tan(theta/2) = mu, for several frictions and steps: x_jam - r/mu lies in [0, the distance the
+/// touching position moves in one step].
+#[test]
+fn the_lock_up_lies_within_a_step_past_the_wedge() {
+    for mu in [0.15, 0.3, 0.45] {
+        for step_deg in [0.1, 0.03, 0.01, 0.003] {
+            let scene = SceneParams::default().with_mu(mu);
+            let params = DynamicsParams {
+                method: crate::dynamics::Method::Nonsmooth,
+                nonsmooth_step_deg: step_deg,
+                ..DynamicsParams::default()
+            };
+            let run = run(&scene, &params, None);
+            let End::LockUp(l) = run.end else {
+                panic!("mu {mu}, step {step_deg}: {:?}", run.end);
+            };
+            let wedge = 2.0 * mu.atan();
+            let x = |t: f64| scene.radius_mm / (0.5 * t).tan();
+            let one_step = x(wedge - step_deg.to_radians()) - x(wedge);
+            let off = l.x_mm - scene.radius_mm / mu;
+            assert!(
+                off >= -1e-9 && off <= one_step + 1e-9,
+                "mu {mu}, step {step_deg}: x_jam - r/mu = {off:.3e} mm, one step {one_step:.3e}"
+            );
+            assert!(l.theta_deg.to_radians() <= wedge + 1e-12);
+        }
+    }
+}

@@ -1,0 +1,152 @@
+//! Why a simulation's answer is not a trusted `jams`: typed reasons with their numbers.
+//!
+//! Each reason states a fact about the physics or the numerics; what to do about it is the
+//! caller's business (the command line turns each into advice that names its flag).
+
+use serde::Serialize;
+
+use crate::model::JamStatus;
+
+/// A reason to distrust a simulated jam, with the numbers needed to act.
+///
+/// JSON: the snake_case variant name under `reason`, beside its fields.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "reason", rename_all = "snake_case")]
+pub enum CrossCheck {
+    /// The relative tolerance `rtol` is looser than `loosest`, beyond which no check can vouch
+    /// for the answer.
+    LooseTolerance { rtol: f64, loosest: f64 },
+    /// A second run (`check`) ended with `check_status` instead of `status`.
+    VerificationDisagrees {
+        check: Refinement,
+        status: JamStatus,
+        check_status: JamStatus,
+    },
+    /// x_jam moved by `error_mm` (more than `allowed_rel` of x_jam) in the second run `check`.
+    ErrorEstimate {
+        error_mm: f64,
+        allowed_rel: f64,
+        check: Refinement,
+    },
+    /// The jam at `x_jam_mm` lies beyond the self-locking limit `x_wedge_mm` (plus the disc's
+    /// coasting distance `coast_mm` and the contact's give), which no push can pass. The palm
+    /// drives the disc at `geometric_speed_mm_s` at the wedge, against the stiction transition
+    /// velocity `stiction_velocity_mm_s`: a palm slow against V_s lets the regularised friction
+    /// slide the disc on, below the speed the jam is read at.
+    PastWedge {
+        x_jam_mm: f64,
+        x_wedge_mm: f64,
+        coast_mm: f64,
+        geometric_speed_mm_s: f64,
+        stiction_velocity_mm_s: f64,
+    },
+    /// The force-limited drive's push stayed at `push_n`, below its limit `limit_n`, while the
+    /// disc stopped at `theta_deg`: nothing held the disc there.
+    StoppedBelowForceLimit {
+        theta_deg: f64,
+        push_n: f64,
+        limit_n: f64,
+    },
+    /// The disc stood still at `x_jam_mm` while the palm pushed with `push_n` at `theta_deg`,
+    /// more than twice the `needed_n` that slides it against static friction. With the disc's
+    /// geometric speed `geometric_speed_mm_s` at the jam against the stiction transition
+    /// velocity `stiction_velocity_mm_s`: the regularised friction holds a disc that creeps
+    /// below V_s, so a palm slow against V_s stops the disc early.
+    HeldBelowSlidingPush {
+        x_jam_mm: f64,
+        theta_deg: f64,
+        push_n: f64,
+        needed_n: f64,
+        geometric_speed_mm_s: f64,
+        stiction_velocity_mm_s: f64,
+    },
+}
+
+/// The second run that checks a simulation.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Refinement {
+    /// RADAU5 or DOPRI5 at a tenth of the tolerances: this relative tolerance.
+    Tolerance { rtol: f64 },
+    /// The nonsmooth method at twice the step (a first-order method: the difference estimates
+    /// the error of the finer run): this palm turn per step in deg.
+    Step { step_deg: f64 },
+}
+
+impl std::fmt::Display for Refinement {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            Refinement::Tolerance { rtol } => write!(f, "a second run at rtol = {rtol:e}"),
+            Refinement::Step { step_deg } => {
+                write!(f, "a second run at a step of {step_deg:e} deg of palm turn")
+            }
+        }
+    }
+}
+
+impl CrossCheck {
+    /// The status an answer with this reason gets.
+    pub fn status(&self) -> JamStatus {
+        JamStatus::Inaccurate
+    }
+}
+
+impl std::fmt::Display for CrossCheck {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            CrossCheck::LooseTolerance { rtol, loosest } => write!(
+                f,
+                "rtol = {rtol} is looser than {loosest}: no check can vouch for the answer"
+            ),
+            CrossCheck::VerificationDisagrees {
+                check,
+                status,
+                check_status,
+            } => write!(f, "{check} says {check_status} instead of {status}"),
+            CrossCheck::ErrorEstimate {
+                error_mm,
+                allowed_rel,
+                check,
+            } => write!(
+                f,
+                "x_jam moves by {error_mm:.3e} mm (more than {allowed_rel:e} of it) in {check}"
+            ),
+            CrossCheck::PastWedge {
+                x_jam_mm,
+                x_wedge_mm,
+                coast_mm,
+                geometric_speed_mm_s,
+                stiction_velocity_mm_s,
+            } => write!(
+                f,
+                "x_jam = {x_jam_mm:.4} mm lies beyond the self-locking limit {x_wedge_mm:.4} mm \
+                 that no push can pass (coasting allowance {coast_mm:.3} mm; the palm drives \
+                 the disc at {geometric_speed_mm_s:.3} mm/s there, against a stiction \
+                 transition velocity of {stiction_velocity_mm_s} mm/s)"
+            ),
+            CrossCheck::StoppedBelowForceLimit {
+                theta_deg,
+                push_n,
+                limit_n,
+            } => write!(
+                f,
+                "the disc stopped at {theta_deg:.3} deg while the drive's push stayed at \
+                 {push_n:.2} N, below its limit {limit_n:.2} N"
+            ),
+            CrossCheck::HeldBelowSlidingPush {
+                x_jam_mm,
+                theta_deg,
+                push_n,
+                needed_n,
+                geometric_speed_mm_s,
+                stiction_velocity_mm_s,
+            } => write!(
+                f,
+                "the disc stood still at {x_jam_mm:.4} mm while the palm pushed with \
+                 {push_n:.2} N at {theta_deg:.3} deg, more than twice the {needed_n:.2} N that \
+                 slides it (the palm drives the disc at {geometric_speed_mm_s:.3} mm/s there, \
+                 against a stiction transition velocity of {stiction_velocity_mm_s} mm/s)"
+            ),
+        }
+    }
+}
