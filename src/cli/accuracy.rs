@@ -350,7 +350,7 @@ fn floors(r: &AccuracyReport) -> String {
         let best = r
             .rows
             .iter()
-            .filter(|x| x.method == method && x.penetration_um.map(f64::to_bits) == Some(pen))
+            .filter(|x| x.method == method && x.penetration_um.unwrap_or(0.0).to_bits() == pen)
             .filter(|x| x.x_rel_error.is_some())
             .min_by(|a, b| a.x_rel_error.unwrap().total_cmp(&b.x_rel_error.unwrap()));
         let reference = r

@@ -101,6 +101,7 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
         "converged_rtol" => "--converged-rtol",
         "min_norm_tolerances" => "--min-norm-tolerances",
         "penetrations_um" => "--penetrations",
+        "methods" => "--methods",
         "nonsmooth_steps_deg" => "--nonsmooth-steps",
         "converged_step_deg" => "--converged-step",
         "runs" => "--runs",

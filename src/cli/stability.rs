@@ -56,7 +56,7 @@ pub fn run(a: &StabilityArgs) -> Result<String> {
             }
             let mut out = Vec::new();
             for n in names {
-                let Some(c) = all.iter().find(|c| &c.name == n.trim()) else {
+                let Some(c) = all.iter().find(|c| c.name == n.trim()) else {
                     let known: Vec<&str> = all.iter().map(|c| c.name.as_str()).collect();
                     return Err(Error::invalid(
                         "cases",
