@@ -7,7 +7,7 @@
 //! min-norm program by its exact path or by clarabel at a tolerance, the simulation by an
 //! integrator at a tolerance and a contact stiffness) through the one model port
 //! ([`crate::models::solve`]), and compares each answer with the **physical reference** of the
-//! scene as that source poses it ([`reference`]):
+//! scene as that source poses it ([`reference()`]):
 //!
 //! * a palm pushing with the scene's force F (the statics, the min-norm program, the simulation
 //!   with the `force` drive): the closed form of the corrected Eq. 1 at F;
