@@ -3,6 +3,8 @@
 //! Every section is optional and every key has a default, so a partial file works; an unknown key
 //! is refused with the file, line and column.
 
+mod read;
+
 use std::path::Path;
 
 use serde::{Deserialize, Serialize};
@@ -11,6 +13,7 @@ use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
 use crate::minnorm::MinNormSettings;
 use crate::model::SceneParams;
+pub use read::{array_for_table, cut_quotes, keyed, not_a_table, parse_toml, seq_for_struct};
 
 /// A whole parameter file. Each model's issue adds its own section.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
@@ -40,28 +43,22 @@ impl Config {
     }
 }
 
-/// Parses TOML text into `T`, turning the parser's error into one line with file:line:column.
-pub fn parse_toml<T: serde::de::DeserializeOwned>(text: &str, path: &Path) -> Result<T> {
-    toml::from_str(text).map_err(|e| {
-        let (line, column) = e
-            .span()
-            .map(|s| line_column(text, s.start))
-            .unwrap_or((1, 1));
-        Error::Config {
-            path: path.to_path_buf(),
-            line,
-            column,
-            message: e.message().trim().replace('\n', " "),
-        }
-    })
-}
-
-/// 1-based line and column of byte `offset` in `text`.
-fn line_column(text: &str, offset: usize) -> (usize, usize) {
-    let before = &text[..offset.min(text.len())];
-    let line = before.matches('\n').count() + 1;
-    let column = before.len() - before.rfind('\n').map_or(0, |i| i + 1) + 1;
-    (line, column)
+/// What is wrong with a number written as `raw` that parsed to `v`: None if it is fine.
+///
+/// Text that overflows to infinity or underflows to zero is refused, so that a message quotes
+/// what was written (`1e400`), never what it became (`inf`); the words inf and nan pass.
+pub fn float_range_problem(raw: &str, v: f64) -> Option<&'static str> {
+    let lower = raw.to_ascii_lowercase();
+    if v.is_infinite() && !lower.contains("inf") {
+        return Some("is beyond the range of a 64-bit float (the largest is about 1.8e308)");
+    }
+    let mantissa = lower.split('e').next().unwrap_or("");
+    if v == 0.0 && mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b)) {
+        return Some(
+            "is too small for a 64-bit float: it would become 0 (the smallest is about 5e-324)",
+        );
+    }
+    None
 }
 
 #[cfg(test)]
@@ -75,6 +72,99 @@ mod tests {
         let msg = err.to_string();
         assert!(msg.starts_with("x.toml:3:1:"), "{msg}");
         assert!(msg.contains("radus_mm"), "{msg}");
+    }
+
+    fn err(text: &str) -> String {
+        parse_toml::<Config>(text, Path::new("c.toml"))
+            .unwrap_err()
+            .to_string()
+    }
+
+    /// Regression (issue 13): `scene = [1, 2]` ran with mu_ground = 1, mu_palm = 2, serde
+    /// filling the struct's fields in order from the array. Any settings table given as an
+    /// array is refused, however its elements happen to fit.
+    #[test]
+    fn a_section_must_be_a_table() {
+        for (text, key) in [
+            ("scene = [1, 2]\n", "scene"),
+            ("scene = [0.3]\n", "scene"),
+            ("[min_norm]\nqp = [true, 50]\n", "min_norm.qp"),
+            ("[min_norm]\nqp = [1, 2]\n", "min_norm.qp"),
+            ("dynamics = []\n", "dynamics"),
+        ] {
+            let msg = err(text);
+            assert!(
+                msg.contains(&format!("{key} = ")) && msg.contains("expected a table"),
+                "{text}: {msg}"
+            );
+        }
+    }
+
+    /// Regression (issue 13): `radius_mm = "ten"` said `invalid type: string "ten", expected
+    /// f64` without the key, `drive = 3` said only `wanted string or table`.
+    #[test]
+    fn wrong_types_name_the_key_with_its_section_and_value() {
+        for (text, says) in [
+            (
+                "[scene]\nradius_mm = \"ten\"\n",
+                "c.toml:2:13: scene.radius_mm = \"ten\": ",
+            ),
+            (
+                "[dynamics]\ndrive = 3\n",
+                "c.toml:2:9: dynamics.drive = 3: ",
+            ),
+            (
+                "[min_norm.qp]\nmax_iter = -1\n",
+                "min_norm.qp.max_iter = -1: ",
+            ),
+            ("[dynamics]\nverify = 1.5\n", "dynamics.verify = 1.5: "),
+        ] {
+            let msg = err(text);
+            assert!(
+                msg.contains(says) && msg.contains("expected"),
+                "{text}: {msg}"
+            );
+        }
+    }
+
+    /// Regression (issue 13): a 50 MB value was echoed whole on one stderr line.
+    #[test]
+    fn long_values_are_cut_in_messages() {
+        let long = "a".repeat(5_000_000);
+        for text in [
+            format!("[scene]\nradius_mm = \"{long}\"\n"),
+            format!("[scene]\n{long} = 1\n"),
+            format!("[dynamics]\ndrive = \"{long}\"\n"),
+        ] {
+            let msg = err(&text);
+            assert!(msg.len() < 600, "{} bytes: {:.200}", msg.len(), msg);
+            assert!(msg.contains("bytes in all"), "{msg}");
+        }
+    }
+
+    /// Regression (issue 13): `1e400` was reported as `inf` (and `1e-400` read as 0).
+    #[test]
+    fn numbers_out_of_f64_range_are_quoted_as_written() {
+        for (text, written) in [
+            (
+                "[scene]\nradius_mm = 1e400\n",
+                "scene.radius_mm = 1e400 is beyond",
+            ),
+            (
+                "[scene]\nforce_n = -1_0e400\n",
+                "scene.force_n = -1_0e400 is beyond",
+            ),
+            (
+                "[dynamics]\nrtol = 1e-400\n",
+                "dynamics.rtol = 1e-400 is too small",
+            ),
+        ] {
+            let msg = err(text);
+            assert!(msg.contains(written) && !msg.contains("inf"), "{msg}");
+        }
+        // The word inf is passed on, for validate() to judge.
+        let c: Config = parse_toml("[scene]\nforce_n = inf\n", Path::new("c.toml")).unwrap();
+        assert!(c.scene.force_n.is_infinite());
     }
 
     #[test]

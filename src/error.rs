@@ -25,12 +25,41 @@ pub enum Error {
         message: String,
     },
 
+    /// A request whose estimated memory or output exceeds its limit ([`crate::limits`]).
+    #[error(
+        "{what} would take about {}, over the limit of {} (set by {key})",
+        crate::limits::human_bytes(*estimate_bytes),
+        crate::limits::human_bytes(*limit_bytes)
+    )]
+    TooLarge {
+        key: String,
+        what: String,
+        estimate_bytes: u64,
+        limit_bytes: u64,
+    },
+
     /// A file could not be read or written; `action` says which ("read", "write", ...).
     #[error("cannot {action} {path}: {source}")]
     Io {
         action: &'static str,
         path: PathBuf,
         source: std::io::Error,
+    },
+
+    /// An output path jamchart will not write: `what` says what is there (a symbolic link, a
+    /// directory, a device); nothing was written.
+    #[error(
+        "refusing to write {path}: it is {what}; jamchart writes only new names, regular files \
+         (replaced atomically), FIFOs, terminals and /dev/null: give another path"
+    )]
+    UnsafeOutput { path: PathBuf, what: String },
+
+    /// A chart's model failed, so the chart would have nothing to draw; nothing is written.
+    #[error("scene {scene}: the {model} failed: {reason}; no chart is drawn from it")]
+    ModelFailed {
+        scene: String,
+        model: &'static str,
+        reason: String,
     },
 
     /// A chart could not be drawn or encoded (a plotters or PNG encoder failure).
@@ -47,7 +76,7 @@ impl Error {
     pub fn invalid(key: &str, value: impl std::fmt::Display, reason: impl Into<String>) -> Self {
         Error::InvalidValue {
             key: key.to_string(),
-            value: value.to_string(),
+            value: cut(&value.to_string()),
             reason: reason.into(),
         }
     }
@@ -62,5 +91,36 @@ impl Error {
     }
 }
 
+/// Values quoted in messages are cut to this many characters: a message stays one readable line
+/// even when the value is a 50 MB string.
+pub const QUOTE_MAX_CHARS: usize = 60;
+
+/// `s` whole if short, else its first [`QUOTE_MAX_CHARS`] characters, an ellipsis and the full
+/// length.
+pub fn cut(s: &str) -> String {
+    match s.char_indices().nth(QUOTE_MAX_CHARS) {
+        None => s.to_string(),
+        Some((end, _)) => format!("{}... ({} bytes in all)", &s[..end], s.len()),
+    }
+}
+
 /// Result with [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn long_values_are_cut_short_ones_kept() {
+        assert_eq!(cut("ten"), "ten");
+        let long = "x".repeat(50_000_000);
+        let c = cut(&long);
+        assert!(
+            c.len() < 100 && c.ends_with("(50000000 bytes in all)"),
+            "{c}"
+        );
+        let msg = Error::invalid("radius_mm", &long, "a number").to_string();
+        assert!(msg.len() < 150, "{}", msg.len());
+    }
+}

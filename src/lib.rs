@@ -111,6 +111,7 @@ pub mod config;
 pub mod dynamics;
 pub mod error;
 pub mod grid;
+pub mod limits;
 pub mod locator;
 pub mod minnorm;
 pub mod model;

@@ -105,7 +105,7 @@ fn accuracy_refuses_bad_flags_before_computing() {
             vec!["--converged-rtol", "0"],
             "converged_rtol = 0 (flag --converged-rtol)",
         ),
-        (vec!["--runs", "101"], "runs = 101 (flag --runs)"),
+        (vec!["--runs", "1001"], "runs = 1001 (flag --runs)"),
         (
             vec!["--min-norm-tolerances", "1e-3,abc"],
             "min_norm_tolerances = abc (flag --min-norm-tolerances)",

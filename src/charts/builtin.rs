@@ -19,6 +19,14 @@ pub const SCENES: &[(&str, &str)] = &[
     ("fig7b", include_str!("../../charts/fig7b.toml")),
     ("fig7c", include_str!("../../charts/fig7c.toml")),
     ("stability", include_str!("../../charts/stability.toml")),
+    (
+        "vlocator-capacity",
+        include_str!("../../charts/vlocator-capacity.toml"),
+    ),
+    (
+        "vlocator-optimum",
+        include_str!("../../charts/vlocator-optimum.toml"),
+    ),
 ];
 
 /// The names of the built-in scenes, sorted.

@@ -74,6 +74,14 @@ impl Convergence {
             HoldStatus::Undetermined => "undetermined",
         };
         let trace = t.trace;
+        // No iteration to draw: the render fails instead of drawing empty panels.
+        if trace.is_empty() {
+            return Err(Error::ModelFailed {
+                scene: scene.name.clone(),
+                model: "min-norm program",
+                reason: format!("clarabel recorded no iteration at {theta_deg} deg ({held})"),
+            });
+        }
         let last = trace.last().map_or(1, |p| p.iteration).max(1) as f64;
         let x = PlotAxis::new(
             -0.4,

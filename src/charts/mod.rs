@@ -9,8 +9,10 @@
 //!
 //! Chart kinds, one module each: [`jam_map`] (Fig. 3), [`sweep`] (Figs. 6, 7a, 7b),
 //! [`contour_map`] (Fig. 7c), [`convergence`] (Fig. 4), [`time_series`] (Fig. 5),
-//! [`work_precision`] (the accuracy study), [`stability`] (the stability matrix); [`error_time`]
-//! draws `jamchart accuracy`'s wall-time chart, which is not a scene. The last three draw through [`xy`], stacked x-y
+//! [`work_precision`] (the accuracy study), [`stability`] (the stability matrix),
+//! [`vlocator_capacity`] and [`vlocator_optimum`] (V-type locators, [`crate::locator`]);
+//! [`error_time`] draws `jamchart accuracy`'s wall-time chart, which is not a scene. The last
+//! three x-y kinds draw through [`xy`], stacked x-y
 //! panels. Min-norm programs and simulations are called through [`models::Models`], so a test
 //! can count them: a scene computes only what it draws.
 //!
@@ -43,6 +45,8 @@ pub mod style;
 pub mod sweep;
 pub mod sweep_layers;
 pub mod time_series;
+pub mod vlocator_capacity;
+pub mod vlocator_optimum;
 pub mod work_precision;
 pub mod xy;
 
@@ -68,10 +72,12 @@ pub enum Formats {
 }
 
 impl Formats {
-    fn svg(self) -> bool {
+    /// Whether an SVG is wanted.
+    pub fn svg(self) -> bool {
         self != Formats::Png
     }
-    fn png(self) -> bool {
+    /// Whether a PNG is wanted.
+    pub fn png(self) -> bool {
         self != Formats::Svg
     }
 }
@@ -126,6 +132,8 @@ pub enum Chart {
     Convergence(convergence::Convergence),
     TimeSeries(time_series::TimeSeries),
     WorkPrecision(work_precision::WorkPrecision),
+    VlocatorCapacity(vlocator_capacity::VlocatorCapacity),
+    VlocatorOptimum(vlocator_optimum::VlocatorOptimum),
     Stability(stability::Stability),
 }
 
@@ -152,6 +160,12 @@ impl Chart {
             ChartSpec::WorkPrecision(s) => {
                 Chart::WorkPrecision(work_precision::WorkPrecision::compute(scene, s, models)?)
             }
+            ChartSpec::VlocatorCapacity(s) => {
+                Chart::VlocatorCapacity(vlocator_capacity::VlocatorCapacity::compute(scene, s)?)
+            }
+            ChartSpec::VlocatorOptimum(s) => {
+                Chart::VlocatorOptimum(vlocator_optimum::VlocatorOptimum::compute(scene, s)?)
+            }
             ChartSpec::Stability(s) => {
                 Chart::Stability(stability::Stability::compute(scene, s, models)?)
             }
@@ -168,6 +182,8 @@ impl Chart {
             Chart::Convergence(c) => c.draw(root),
             Chart::TimeSeries(c) => c.draw(root),
             Chart::WorkPrecision(c) => c.draw(root),
+            Chart::VlocatorCapacity(c) => c.draw(root),
+            Chart::VlocatorOptimum(c) => c.draw(root),
             Chart::Stability(c) => c.draw(root),
         }
     }
@@ -181,6 +197,8 @@ impl Chart {
             Chart::Convergence(c) => c.data(scene),
             Chart::TimeSeries(c) => c.data(scene),
             Chart::WorkPrecision(c) => c.data(scene),
+            Chart::VlocatorCapacity(c) => c.data(scene),
+            Chart::VlocatorOptimum(c) => c.data(scene),
             Chart::Stability(c) => c.data(scene),
         }
     }
@@ -317,7 +335,11 @@ pub fn scene_subtitle_with(source: &str, p: &SceneParams, swept: &[GridParam]) -
 
 /// The exterior rings of contour polygons, mapped from the contour crate's grid coordinates to
 /// plot space (ln for log axes). The crate puts sample i at the centre of cell [i, i + 1].
-pub fn grid_polygons(mp: &MultiPolygon<f64>, xa: &GridAxis, ya: &GridAxis) -> Vec<Vec<(f64, f64)>> {
+pub fn grid_polygons<P>(
+    mp: &MultiPolygon<f64>,
+    xa: &GridAxis<P>,
+    ya: &GridAxis<P>,
+) -> Vec<Vec<(f64, f64)>> {
     mp.0.iter()
         .map(|poly| {
             poly.exterior()
@@ -330,7 +352,7 @@ pub fn grid_polygons(mp: &MultiPolygon<f64>, xa: &GridAxis, ya: &GridAxis) -> Ve
 }
 
 /// Plot-space coordinate of contour-crate grid coordinate `g` on axis `a`.
-pub fn grid_to_plot(g: f64, a: &GridAxis) -> f64 {
+pub fn grid_to_plot<P>(g: f64, a: &GridAxis<P>) -> f64 {
     let (lo, hi) = match a.scale {
         crate::grid::AxisScale::Linear => (a.min, a.max),
         crate::grid::AxisScale::Log => (a.min.ln(), a.max.ln()),
@@ -342,7 +364,11 @@ pub fn grid_to_plot(g: f64, a: &GridAxis) -> f64 {
 ///
 /// The crate closes every ring around the edge of the grid; those pieces are not iso-lines and
 /// would be drawn on the frame.
-pub fn grid_lines(ml: &MultiLineString<f64>, xa: &GridAxis, ya: &GridAxis) -> Vec<Vec<(f64, f64)>> {
+pub fn grid_lines<P>(
+    ml: &MultiLineString<f64>,
+    xa: &GridAxis<P>,
+    ya: &GridAxis<P>,
+) -> Vec<Vec<(f64, f64)>> {
     let (nx, ny) = (xa.count as f64, ya.count as f64);
     let on_border =
         |c: &geo_types::Coord<f64>| c.x <= 0.5 || c.x >= nx - 0.5 || c.y <= 0.5 || c.y >= ny - 0.5;

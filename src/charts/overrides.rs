@@ -36,6 +36,15 @@ impl FromStr for Setting {
             return Err(format!("'{s}' has an empty key"));
         }
         let raw = raw.trim();
+        // `1e400` would otherwise become the string "1e400" (toml refuses the overflow).
+        if let Some(problem) = raw
+            .replace('_', "")
+            .parse::<f64>()
+            .ok()
+            .and_then(|v| crate::config::float_range_problem(raw, v))
+        {
+            return Err(format!("{key} = {} {problem}", crate::error::cut(raw)));
+        }
         let value = toml::from_str::<toml::Table>(&format!("v = {raw}"))
             .ok()
             .and_then(|mut t| t.remove("v"))

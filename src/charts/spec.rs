@@ -13,6 +13,7 @@
 //! height_px = 900
 //! [chart]                          # the chart kind and its own keys
 //! kind = "jam_map"                 # jam_map | sweep | contour_map | convergence | time_series | work_precision
+//!                                  # | vlocator_capacity | vlocator_optimum
 //! ```
 //!
 //! The `[chart]` keys of each kind are documented on [`JamMapSpec`], [`SweepSpec`],
@@ -30,10 +31,15 @@ use super::overrides::{self, Setting};
 use super::stability::StabilitySpec;
 use super::sweep::SweepSpec;
 use super::time_series::TimeSeriesSpec;
+use super::vlocator_capacity::VlocatorCapacitySpec;
+use super::vlocator_optimum::VlocatorOptimumSpec;
 use super::work_precision::WorkPrecisionSpec;
-use crate::config::{Config, parse_toml};
+use crate::config::{
+    Config, array_for_table, cut_quotes, keyed, not_a_table, parse_toml, seq_for_struct,
+};
 use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
+use crate::limits;
 use crate::minnorm::MinNormSettings;
 use crate::model::SceneParams;
 
@@ -94,13 +100,17 @@ pub enum ChartSpec {
     /// Error of x_jam against cost per integrator, and the min-norm tolerance against its
     /// error (the accuracy study).
     WorkPrecision(WorkPrecisionSpec),
+    /// Holding capacity of a V-locator over included angle and load direction.
+    VlocatorCapacity(VlocatorCapacitySpec),
+    /// Optimum included angle of a V-locator against load direction and load.
+    VlocatorOptimum(VlocatorOptimumSpec),
     /// The stability matrix: case by method, coloured by class.
     Stability(StabilitySpec),
 }
 
 impl ChartSpec {
-    /// The `kind` key: jam_map, sweep, contour_map, convergence, time_series, work_precision or
-    /// stability.
+    /// The `kind` key: jam_map, sweep, contour_map, convergence, time_series, work_precision,
+    /// vlocator_capacity, vlocator_optimum or stability.
     pub fn kind(&self) -> &'static str {
         match self {
             ChartSpec::JamMap(_) => "jam_map",
@@ -110,12 +120,25 @@ impl ChartSpec {
             ChartSpec::TimeSeries(_) => "time_series",
             ChartSpec::WorkPrecision(_) => "work_precision",
             ChartSpec::Stability(_) => "stability",
+            ChartSpec::VlocatorCapacity(_) => "vlocator_capacity",
+            ChartSpec::VlocatorOptimum(_) => "vlocator_optimum",
+        }
+    }
+
+    /// The extension of the data file behind this kind of chart: `json` for maps, `csv` else.
+    pub fn data_extension(&self) -> &'static str {
+        match self {
+            ChartSpec::JamMap(_)
+            | ChartSpec::ContourMap(_)
+            | ChartSpec::VlocatorCapacity(_)
+            | ChartSpec::VlocatorOptimum(_) => "json",
+            _ => "csv",
         }
     }
 }
 
 /// A scene file as written.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct SceneFile {
     title: String,
@@ -286,6 +309,92 @@ impl Scene {
             ChartSpec::TimeSeries(s) => s.validate(),
             ChartSpec::WorkPrecision(s) => s.validate(),
             ChartSpec::Stability(s) => s.validate(),
+            ChartSpec::VlocatorCapacity(s) => s.validate(),
+            ChartSpec::VlocatorOptimum(s) => s.validate(),
+        }?;
+        check_size(self)
+    }
+}
+
+/// The scene's counts against [`crate::limits`]: memory and output estimated from the grid
+/// cells, sweep points or series rows, and the lengths of its lists.
+fn check_size(scene: &Scene) -> Result<()> {
+    const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
+    let cells =
+        |x: &crate::grid::GridAxis, y: &crate::grid::GridAxis| x.count as f64 * y.count as f64;
+    match &scene.chart {
+        ChartSpec::JamMap(s) => {
+            limits::check_items(CELLS, cells(&s.x_axis, &s.y_axis), limits::JAM_MAP_CELL)
+        }
+        ChartSpec::ContourMap(s) => {
+            let levels = [
+                ("chart.x_jam_levels_mm", s.x_jam_levels_mm.len()),
+                ("chart.theta_jam_levels_deg", s.theta_jam_levels_deg.len()),
+            ];
+            for (key, n) in levels {
+                if n > limits::MAX_LEVELS {
+                    return Err(Error::invalid(
+                        key,
+                        format!("{n} levels"),
+                        format!("at most {} levels", limits::MAX_LEVELS),
+                    ));
+                }
+            }
+            limits::check_items(CELLS, cells(&s.x_axis, &s.y_axis), limits::CONTOUR_MAP_CELL)
+        }
+        ChartSpec::Sweep(s) => {
+            limits::check_items("chart.axis.count", s.axis.count as f64, limits::SWEEP_POINT)
+        }
+        ChartSpec::TimeSeries(s) => {
+            let rows = limits::series_rows(
+                scene.params.start_angle_deg,
+                scene.dynamics.omega_deg_s,
+                s.series_dt_s,
+            );
+            limits::check_items(
+                "chart.series_dt_s and dynamics.omega_deg_s",
+                rows,
+                limits::SERIES_ROW,
+            )
+        }
+        ChartSpec::WorkPrecision(s) => {
+            let lists = [
+                ("chart.tolerances", s.tolerances.len()),
+                ("chart.min_norm_tolerances", s.min_norm_tolerances.len()),
+            ];
+            for (key, n) in lists {
+                if n > limits::MAX_TOLERANCES {
+                    return Err(Error::invalid(
+                        key,
+                        format!("{n} tolerances"),
+                        format!("at most {} tolerances", limits::MAX_TOLERANCES),
+                    ));
+                }
+            }
+            Ok(())
+        }
+        ChartSpec::Convergence(_) => Ok(()),
+        // Its cases are names from the fixed matrix (checked by validate): at most its 26 rows.
+        ChartSpec::Stability(_) => Ok(()),
+        // A contoured map as the contour map is (its cells hold less: two capacities).
+        ChartSpec::VlocatorCapacity(s) => {
+            limits::check_count(
+                "chart.levels_over_w",
+                s.levels_over_w.len(),
+                limits::MAX_LEVELS,
+                "levels",
+            )?;
+            let n = s.x_axis.count as f64 * s.y_axis.count as f64;
+            limits::check_items(CELLS, n, limits::CONTOUR_MAP_CELL)
+        }
+        // At most five curves (one per marker) of two sweeps.
+        ChartSpec::VlocatorOptimum(s) => {
+            let n = (s.direction_axis.count + s.load_axis.count) as f64 * s.mus.len() as f64;
+            limits::check_items(
+                "chart.direction_axis.count + chart.load_axis.count",
+                n,
+                limits::SWEEP_POINT,
+            )
         }
     }
 }
@@ -302,16 +411,41 @@ where
     for (key, value) in overrides {
         table.insert(key.clone(), value.clone());
     }
-    T::deserialize(toml::Value::Table(table)).map_err(|e| {
-        Error::invalid(
-            section,
-            e.message().trim(),
-            format!(
-                "a [{section}] override is unknown or has the wrong type; the keys are those of \
-                 [{section}] in config/paper.toml"
-            ),
-        )
-    })
+    let hint = format!("the keys are those of [{section}] in config/paper.toml");
+    let merged = toml::Value::Table(table);
+    let value: T = serde_path_to_error::deserialize(merged.clone()).map_err(|e| {
+        let key = e.path().to_string();
+        if let Some(k) = seq_for_struct::<T>(&merged, &key) {
+            let written = value_at(overrides, &k).map_or(String::new(), toml::Value::to_string);
+            return Error::Unsupported(not_a_table(&format!("{section}.{k}"), &written));
+        }
+        let written = value_at(overrides, &key).map(toml::Value::to_string);
+        let key = format!("{section}.{key}");
+        let message = cut_quotes(e.into_inner().message().trim());
+        Error::Unsupported(format!(
+            "{}; {hint}",
+            keyed(Some(&key), written.as_deref(), &message)
+        ))
+    })?;
+    if let Some(key) = array_for_table(&toml::Value::Table(overrides.clone()), &value, section) {
+        let written = value_at(overrides, key.split_once('.').map_or("", |(_, k)| k));
+        let written = written.map_or(String::new(), toml::Value::to_string);
+        return Err(Error::Unsupported(not_a_table(&key, &written)));
+    }
+    Ok(value)
+}
+
+/// The value at a dotted key of a table (array indices are not followed).
+fn value_at<'a>(t: &'a toml::Table, key: &str) -> Option<&'a toml::Value> {
+    let (head, rest) = match key.split_once('.') {
+        Some((h, r)) => (h, Some(r)),
+        None => (key, None),
+    };
+    match (t.get(head)?, rest) {
+        (v, None) => Some(v),
+        (toml::Value::Table(inner), Some(r)) => value_at(inner, r),
+        (v, Some(_)) => Some(v),
+    }
 }
 
 #[cfg(test)]
@@ -348,6 +482,25 @@ mod tests {
             .to_string();
         assert!(
             msg.contains("dynamics") && msg.contains("after_jam"),
+            "{msg}"
+        );
+    }
+
+    /// Regression (issue 13): a `[dynamics]` override of the wrong type said `invalid dynamics
+    /// = invalid type: unit variant, expected string only`; an array stood in for a table.
+    #[test]
+    fn overrides_of_the_wrong_type_name_the_key_and_value() {
+        let t: toml::Table = toml::from_str("rtol = \"x\"\n").unwrap();
+        let msg = apply_overrides(DynamicsParams::default(), &t, "dynamics")
+            .unwrap_err()
+            .to_string();
+        assert!(msg.starts_with("dynamics.rtol = \"x\": "), "{msg}");
+        let t: toml::Table = toml::from_str("qp = [1, 2]\n").unwrap();
+        let msg = apply_overrides(MinNormSettings::default(), &t, "min_norm")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            msg.contains("min_norm.qp = [1, 2]: expected a table"),
             "{msg}"
         );
     }

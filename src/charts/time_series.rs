@@ -80,12 +80,25 @@ impl TimeSeries {
             series_dt_s: Some(spec.series_dt_s),
         };
         let sol = models.solve(&spec, p)?;
+        let failed = |reason: String| Error::ModelFailed {
+            scene: scene.name.clone(),
+            model: "simulation",
+            reason,
+        };
         let Detail::Dynamics(sol) = sol.detail else {
-            return Err(Error::Unsupported(format!(
-                "the simulation cannot run this scene: {}",
+            return Err(failed(format!("it cannot run this scene ({})", sol.status)));
+        };
+        // A failed run would be drawn as empty panels: the render fails instead, saying why.
+        if let Some(f) = &sol.failure {
+            return Err(failed(format!("the integrator gave up: {f}")));
+        }
+        if sol.series.len() < 2 {
+            return Err(failed(format!(
+                "it recorded {} samples (status {})",
+                sol.series.len(),
                 sol.status
             )));
-        };
+        }
         let sys = DynScene::new(p, d);
         let samples: Vec<Sample> = sol
             .series

@@ -5,12 +5,12 @@ use std::fmt::Write as _;
 use std::io::IsTerminal;
 use std::path::PathBuf;
 
-use clap::Args;
+use clap::{ArgAction, Args};
 use serde::Serialize;
 
-use super::args::{SceneArgs, TableFormat};
+use super::args::{SceneArgs, TableFormat, parse_f64};
 use super::dynamics::DynamicsArgs;
-use crate::atomic::write_atomic;
+use crate::atomic::{Output, check_all, write_all};
 use crate::dynamics::Method;
 use crate::error::{Error, Result};
 use crate::model::JamStatus;
@@ -26,42 +26,42 @@ pub struct AccuracyArgs {
     pub scene: SceneArgs,
     #[command(flatten)]
     pub dynamics: DynamicsArgs,
-    /// Integrator tolerances rtol = atol, comma-separated, at most 16 [default: 1e-2,...,1e-8].
-    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    /// Integrator tolerances rtol = atol, comma-separated, at most 64 [default: 1e-2,...,1e-8].
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set, value_parser = parse_f64)]
     pub tolerances: Option<Vec<f64>>,
     /// Integrators, comma-separated [default: radau5,dopri5].
-    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
     pub methods: Option<Vec<Method>>,
     /// Contact stiffnesses beside --stiffness, as penetration in um at --force, at most 8
     /// [default: 10,1].
     ///
     /// k = F / delta^e; "none" keeps only --stiffness.
-    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
     pub penetrations: Option<Vec<String>>,
-    /// clarabel tolerances of the min-norm rows, comma-separated, at most 16; "none" skips them
+    /// clarabel tolerances of the min-norm rows, comma-separated, at most 64; "none" skips them
     /// [default: 1e-2,1e-4,1e-6,1e-8,1e-10].
     ///
     /// The exact path is always a row.
-    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
     pub min_norm_tolerances: Option<Vec<String>>,
-    /// Steps of the nonsmooth rows in deg of palm turn, comma-separated, at most 16; "none"
+    /// Steps of the nonsmooth rows in deg of palm turn, comma-separated, at most 64; "none"
     /// skips them [default: 0.3,0.1,0.03,0.01].
-    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
     pub nonsmooth_steps: Option<Vec<String>>,
     /// Step of the nonsmooth method's converged answer in deg [default: 0.002].
-    #[arg(long, value_name = "DEG")]
+    #[arg(long, value_name = "DEG", value_parser = parse_f64)]
     pub converged_step: Option<f64>,
-    /// Timed runs per row, 1..=100; the median is reported [default: 3].
+    /// Timed runs per row, 1 to 1000; the median is reported [default: 3].
     #[arg(long, value_name = "N")]
     pub runs: Option<usize>,
     /// Tolerance of the converged answers the integration error is measured against
     /// [default: 1e-10].
-    #[arg(long, value_name = "RTOL", alias = "reference-rtol")]
+    #[arg(long, value_name = "RTOL", alias = "reference-rtol", value_parser = parse_f64)]
     pub converged_rtol: Option<f64>,
     /// Step limit of every simulation [default: 500000].
     #[arg(long, value_name = "N")]
     pub max_steps: Option<u64>,
-    /// Cells per axis of the map whose cost is reported, 2..=2000; 0 skips it [default: 400].
+    /// Cells per axis of the map whose cost is reported, 2 to 2000; 0 skips it [default: 400].
     ///
     /// The map is mu 0.1-0.8 by F 20-2000 N (log); the statics answer all of it, the min-norm
     /// program 40 x 40 cells and the simulation 20 x 20, and their time is extrapolated.
@@ -76,6 +76,16 @@ pub struct AccuracyArgs {
     pub out_dir: Option<PathBuf>,
 }
 
+/// The files of `--out-dir`, in the order they are written.
+const OUT_FILES: [&str; 6] = [
+    "accuracy.md",
+    "accuracy.csv",
+    "accuracy.json",
+    "accuracy_map.csv",
+    "accuracy.svg",
+    "accuracy.png",
+];
+
 /// Parses a list of numbers where "none" means an empty list.
 fn list_or_none(key: &str, arg: Option<&[String]>, default: Vec<f64>) -> Result<Vec<f64>> {
     let Some(list) = arg else {
@@ -86,9 +96,13 @@ fn list_or_none(key: &str, arg: Option<&[String]>, default: Vec<f64>) -> Result<
     }
     list.iter()
         .map(|v| {
-            v.trim()
-                .parse::<f64>()
-                .map_err(|_| Error::invalid(key, v, "a comma-separated list of numbers, or none"))
+            parse_f64(v.trim()).map_err(|why| {
+                Error::invalid(
+                    key,
+                    v,
+                    format!("{why}; a comma-separated list of numbers, or none"),
+                )
+            })
         })
         .collect()
 }
@@ -135,9 +149,13 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
             Some(s)
         }
     };
-    if let Some(dir) = &a.out_dir {
-        std::fs::create_dir_all(dir).map_err(|e| Error::io("create", dir, e))?;
-    }
+    // Every output is checked before anything runs and written all or nothing at the end.
+    let out_paths: Vec<PathBuf> = a
+        .out_dir
+        .iter()
+        .flat_map(|d| OUT_FILES.map(|f| d.join(f)))
+        .collect();
+    check_all(out_paths.iter().map(PathBuf::as_path))?;
     let bar = std::io::stderr().is_terminal().then(|| {
         let b = indicatif::ProgressBar::no_length();
         if let Ok(style) =
@@ -168,16 +186,25 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
     }))
     .expect("plain structs serialise")
         + "\n";
-    if let Some(dir) = &a.out_dir {
-        write_atomic(&dir.join("accuracy.md"), md.as_bytes())?;
-        write_atomic(&dir.join("accuracy.csv"), csv.as_bytes())?;
-        write_atomic(&dir.join("accuracy.json"), json.as_bytes())?;
-        if let Some(m) = &map {
-            write_atomic(&dir.join("accuracy_map.csv"), map_csv(m)?.as_bytes())?;
-        }
+    if !out_paths.is_empty() {
+        let map_csv = map.as_ref().map(map_csv).transpose()?.unwrap_or_default();
         let (svg, png) = crate::charts::error_time::render(&report, &config.scene)?;
-        write_atomic(&dir.join("accuracy.svg"), &svg)?;
-        write_atomic(&dir.join("accuracy.png"), &png)?;
+        let contents: [&[u8]; 6] = [
+            md.as_bytes(),
+            csv.as_bytes(),
+            json.as_bytes(),
+            map_csv.as_bytes(),
+            &svg,
+            &png,
+        ];
+        let set: Vec<Output> = out_paths
+            .iter()
+            .zip(contents)
+            // Without the map (--map-cells 0) its file is not written.
+            .filter(|(path, _)| map.is_some() || !path.ends_with("accuracy_map.csv"))
+            .map(|(path, bytes)| Output { path, bytes })
+            .collect();
+        write_all(&set)?;
     }
     Ok(match a.format {
         TableFormat::Text => md,

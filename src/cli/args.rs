@@ -21,34 +21,34 @@ pub struct SceneArgs {
     ///
     /// The paper's single mu; --mu-ground or --mu-palm given as well take precedence for their
     /// contact. Dimensionless, >= 0 [default: 0.4]
-    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
+    #[arg(long, value_name = "MU", allow_negative_numbers = true, value_parser = parse_f64)]
     pub mu: Option<f64>,
     /// Friction coefficient at the ground contact A [default: 0.4].
-    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
+    #[arg(long, value_name = "MU", allow_negative_numbers = true, value_parser = parse_f64)]
     pub mu_ground: Option<f64>,
     /// Friction coefficient at the palm contact B [default: 0.4].
-    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
+    #[arg(long, value_name = "MU", allow_negative_numbers = true, value_parser = parse_f64)]
     pub mu_palm: Option<f64>,
     /// Disc radius r in mm [default: 10].
-    #[arg(long, value_name = "MM", allow_negative_numbers = true)]
+    #[arg(long, value_name = "MM", allow_negative_numbers = true, value_parser = parse_f64)]
     pub radius: Option<f64>,
     /// Palm push F in N [default: 200].
     ///
     /// The magnitude of the palm's force on the disc while it slides; F -> infinity is a palm
     /// driven by prescribed motion.
-    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    #[arg(long, value_name = "N", allow_negative_numbers = true, value_parser = parse_f64)]
     pub force: Option<f64>,
     /// Disc mass m in kg [default: 1].
-    #[arg(long, value_name = "KG", allow_negative_numbers = true)]
+    #[arg(long, value_name = "KG", allow_negative_numbers = true, value_parser = parse_f64)]
     pub mass: Option<f64>,
     /// Gravitational acceleration g in m/s^2 [default: 9.806].
-    #[arg(long, value_name = "M/S^2", allow_negative_numbers = true)]
+    #[arg(long, value_name = "M/S^2", allow_negative_numbers = true, value_parser = parse_f64)]
     pub gravity: Option<f64>,
     /// Palm angle where the push starts, in deg, in (0, 180) [default: 90].
-    #[arg(long, value_name = "DEG", allow_negative_numbers = true)]
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true, value_parser = parse_f64)]
     pub start_angle: Option<f64>,
     /// Palm length in mm; a jam beyond its end is never reached [default: 150].
-    #[arg(long, value_name = "MM", allow_negative_numbers = true)]
+    #[arg(long, value_name = "MM", allow_negative_numbers = true, value_parser = parse_f64)]
     pub palm_length: Option<f64>,
 }
 
@@ -104,12 +104,28 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
         "methods" => "--methods",
         "nonsmooth_steps_deg" => "--nonsmooth-steps",
         "converged_step_deg" => "--converged-step",
-        "runs" => "--runs",
         "max_steps" => "--max-steps",
         "cells_per_axis" => "--map-cells",
         "cases" => "--cases",
+        "runs" => "--runs",
         key => return super::dynamics::flag_for_key(key),
     })
+}
+
+/// Parses a number flag, refusing text that overflows to infinity or underflows to zero, so that
+/// a message quotes what was written (`1e400`), never what it became (`inf`).
+///
+/// The words `inf`, `infinity` and `nan` are passed on: each setting's `validate` says whether
+/// it takes them.
+pub fn parse_f64(s: &str) -> std::result::Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("{} is not a number", crate::error::cut(s)))?;
+    match crate::config::float_range_problem(s.trim(), v) {
+        Some(problem) => Err(format!("{} {problem}", crate::error::cut(s))),
+        None => Ok(v),
+    }
 }
 
 /// Which model answers `solve`.

@@ -7,6 +7,7 @@ use std::path::Path;
 use clap::Args;
 use serde::Serialize;
 
+use super::args::parse_f64;
 use crate::atomic::write_atomic;
 use crate::config::Config;
 use crate::dynamics::jam::SeriesRow;
@@ -30,7 +31,7 @@ pub struct DynamicsArgs {
     /// Palm closing speed omega in deg/s [default: 30].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "DEG/S",
         help_heading = "Dynamics"
     )]
@@ -40,7 +41,7 @@ pub struct DynamicsArgs {
     /// The penetration at a force P is (P/k)^(1/e): about 60 um at 200 N with the defaults.
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "N/MM^E",
         help_heading = "Dynamics"
     )]
@@ -48,7 +49,7 @@ pub struct DynamicsArgs {
     /// IMPACT force exponent e, >= 1 [default: 2.2].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "E",
         help_heading = "Dynamics"
     )]
@@ -56,7 +57,7 @@ pub struct DynamicsArgs {
     /// IMPACT maximum damping c_max in N s/mm [default: 10].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "N*S/MM",
         help_heading = "Dynamics"
     )]
@@ -64,7 +65,7 @@ pub struct DynamicsArgs {
     /// Penetration in mm at which the damping reaches c_max [default: 0.01].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "MM",
         help_heading = "Dynamics"
     )]
@@ -72,7 +73,7 @@ pub struct DynamicsArgs {
     /// Static friction coefficient at both contacts [default: the dynamic mu].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "MU",
         help_heading = "Dynamics"
     )]
@@ -80,7 +81,7 @@ pub struct DynamicsArgs {
     /// Stiction transition velocity V_s in mm/s [default: 0.1].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "MM/S",
         help_heading = "Dynamics"
     )]
@@ -88,7 +89,7 @@ pub struct DynamicsArgs {
     /// Friction transition velocity V_d in mm/s, > V_s [default: 0.2].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "MM/S",
         help_heading = "Dynamics"
     )]
@@ -96,7 +97,7 @@ pub struct DynamicsArgs {
     /// Offset of the palm's face from the hinge line in mm (half the bar's thickness) [default: 0].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "MM",
         help_heading = "Dynamics"
     )]
@@ -130,7 +131,7 @@ pub struct DynamicsArgs {
     /// Looser than 1e-2 is always reported inaccurate.
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "RTOL",
         help_heading = "Dynamics"
     )]
@@ -138,7 +139,7 @@ pub struct DynamicsArgs {
     /// Absolute tolerance per step in rad, mm, mm/s, in (0, 1) [default: rtol].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "ATOL",
         help_heading = "Dynamics"
     )]
@@ -149,7 +150,7 @@ pub struct DynamicsArgs {
     /// Simulated time after the jam in s, for --series [default: 0].
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_negative_numbers = true, value_parser = parse_f64,
         value_name = "S",
         help_heading = "Dynamics"
     )]
@@ -229,23 +230,69 @@ pub struct Record<'a> {
     solution: &'a DynamicsSolution,
     #[serde(skip_serializing_if = "Option::is_none")]
     series: Option<String>,
+    /// Rows written to the series.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    series_rows: Option<usize>,
+    /// Where the series ends and why ([`series_end`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    series_end: Option<String>,
     settings: &'a DynamicsParams,
     /// What to do about a `cross_check` or `failure`, naming the flags that act on it.
     #[serde(skip_serializing_if = "Option::is_none")]
     advice: Option<String>,
 }
 
-/// The JSON keys of `s`, simulated with `settings`, its series written to `series`.
+/// The JSON keys of `s`, simulated with `config`'s `[dynamics]`, its series written to `series`.
 pub fn record<'a>(
     s: &'a DynamicsSolution,
-    settings: &'a DynamicsParams,
+    config: &'a Config,
     series: Option<&Path>,
 ) -> Record<'a> {
     Record {
         solution: s,
         series: series.map(|p| p.display().to_string()),
-        settings,
+        series_rows: series.map(|_| s.series.len()),
+        series_end: series.map(|_| series_end(config, s)),
+        settings: &config.dynamics,
         advice: advice(s),
+    }
+}
+
+/// Where the time series ends and why: the jam's confirmation, `after_jam_s` after the jam, the
+/// palm closing (theta = 0, before the time asked for), the palm's end, or the integrator
+/// giving up.
+pub fn series_end(config: &Config, s: &DynamicsSolution) -> String {
+    let t = s.simulated_s;
+    let closes_s = config.scene.start_angle_deg / config.dynamics.omega_deg_s;
+    let after = config.dynamics.after_jam_s;
+    let closed = t >= closes_s * (1.0 - 1e-9);
+    if let Some(f) = &s.failure {
+        return format!(
+            "stops at t = {t:.4} s: the integrator gave up at t = {:.4} s",
+            f.t_s()
+        );
+    }
+    match s.t_jam_s {
+        Some(jam) if closed && jam + after > t * (1.0 + 1e-9) => format!(
+            "stops at t = {t:.4} s: the palm closed (theta = 0), {:.4} s after the jam instead of \
+             the {after} s asked for (--after-jam)",
+            t - jam
+        ),
+        Some(jam) if after > 0.0 => format!(
+            "stops at t = {t:.4} s: {:.4} s after the jam, as asked (--after-jam)",
+            t - jam
+        ),
+        Some(_) => format!(
+            "stops at t = {t:.4} s: at the jam's confirmation (--after-jam S records S s more)"
+        ),
+        None if closed => {
+            format!("stops at t = {t:.4} s: the palm closed (theta = 0) with no jam")
+        }
+        None if s.status == JamStatus::BeyondReach => format!(
+            "stops at t = {t:.4} s: the disc reached the palm's end ({} mm) with no jam",
+            config.scene.palm_length_mm
+        ),
+        None => format!("stops at t = {t:.4} s ({})", s.status),
     }
 }
 
@@ -254,8 +301,14 @@ pub fn write_series(s: &DynamicsSolution, path: &Path) -> Result<()> {
     write_atomic(path, series_csv(&s.series).as_bytes())
 }
 
-/// The dynamics' own lines under the shared status lines of `solve`: jam time, trust, work.
-pub fn render_details(s: &mut String, d: &DynamicsSolution) {
+/// The dynamics' own lines under the shared status lines of `solve`: jam time, trust, work,
+/// and where the series written to `series` ends and why.
+pub fn render_details(
+    s: &mut String,
+    d: &DynamicsSolution,
+    config: &Config,
+    series: Option<&Path>,
+) {
     if d.status == JamStatus::Inaccurate
         && let (Some(t), Some(x)) = (d.theta_jam_deg, d.x_jam_mm)
     {
@@ -280,6 +333,15 @@ pub fn render_details(s: &mut String, d: &DynamicsSolution) {
         let _ = writeln!(
             s,
             "  ground contact enters stiction (slip < V_s) at x = {x:.3} mm"
+        );
+    }
+    if let Some(path) = series {
+        let _ = writeln!(
+            s,
+            "  series: {} rows in {}; it {}",
+            d.series.len(),
+            path.display(),
+            series_end(config, d)
         );
     }
     if let Some(l) = d.lock_up {

@@ -92,6 +92,7 @@ pub enum Command {
 
 /// Runs the command line and returns the process exit code: 0 success, 2 bad input or failure.
 pub fn main() -> i32 {
+    crate::atomic::install_signal_cleanup();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => return clap_exit(e),

@@ -8,7 +8,7 @@ use clap::{Args, ValueEnum};
 use indicatif::ProgressBar;
 use rayon::prelude::*;
 
-use crate::atomic::write_atomic;
+use crate::atomic::{Output, check_all, write_all};
 use crate::charts::overrides::Setting;
 use crate::charts::{self, Formats, Rendered, Scene, SceneSource};
 use crate::error::{Error, Result};
@@ -71,6 +71,11 @@ pub fn scene_sources(wanted: &[String], dir: Option<&Path>) -> Result<Vec<SceneS
             .map(SceneSource::BuiltIn)
             .collect(),
     };
+    if let Some(d) = dir
+        && known.is_empty()
+    {
+        return Err(nothing_to_render(d));
+    }
     if wanted.is_empty() {
         return Ok(known);
     }
@@ -113,7 +118,20 @@ pub fn scene_sources(wanted: &[String], dir: Option<&Path>) -> Result<Vec<SceneS
             None => unique.push(s),
         }
     }
-    Ok(unique)
+    match wanted.iter().find(|w| Path::new(w).is_dir()) {
+        Some(folder) if unique.is_empty() => Err(nothing_to_render(Path::new(folder))),
+        _ => Ok(unique),
+    }
+}
+
+/// A folder with no scene file: rendering nothing and exiting 0 would hide the mistake.
+fn nothing_to_render(dir: &Path) -> Error {
+    Error::invalid(
+        "scenes folder",
+        dir.display(),
+        "holds no scene files (NAME.toml): nothing to render; give the folder of the scenes, or \
+         leave out --scenes-dir for the built-in ones",
+    )
 }
 
 /// The scenes named in `wanted` (see [`scene_sources`]) with `settings` applied, loaded and
@@ -129,24 +147,56 @@ pub fn load_scenes(
         .collect()
 }
 
-/// Writes the rendered files of one scene into `out`; returns their paths.
-pub fn write_rendered(out: &Path, r: &Rendered) -> Result<Vec<PathBuf>> {
-    let mut files = vec![(r.data.extension, &r.data.bytes)];
-    files.extend(r.svg.as_ref().map(|b| ("svg", b)));
-    files.extend(r.png.as_ref().map(|b| ("png", b)));
+/// The files of one scene in `out`: data first, then the pictures `formats` asks for.
+pub fn output_paths(
+    out: &Path,
+    name: &str,
+    data_extension: &str,
+    formats: Formats,
+) -> Vec<PathBuf> {
+    let mut exts = vec![data_extension];
+    exts.extend(formats.svg().then_some("svg"));
+    exts.extend(formats.png().then_some("png"));
+    exts.iter()
+        .map(|ext| out.join(format!("{name}.{ext}")))
+        .collect()
+}
+
+/// Writes the rendered files of all scenes into `out` as one set (all or none); returns the
+/// paths per scene.
+pub fn write_rendered(out: &Path, rendered: &[Rendered]) -> Result<Vec<Vec<PathBuf>>> {
+    let mut files: Vec<(PathBuf, &[u8])> = Vec::new();
     let mut paths = Vec::new();
-    for (ext, bytes) in files {
-        let path = out.join(format!("{}.{ext}", r.name));
-        write_atomic(&path, bytes)?;
-        paths.push(path);
+    for r in rendered {
+        let all = [
+            (r.data.extension, Some(&r.data.bytes)),
+            ("svg", r.svg.as_ref()),
+            ("png", r.png.as_ref()),
+        ];
+        let mine: Vec<(PathBuf, &[u8])> = all
+            .into_iter()
+            .filter_map(|(ext, b)| Some((out.join(format!("{}.{ext}", r.name)), b?.as_slice())))
+            .collect();
+        paths.push(mine.iter().map(|(p, _)| p.clone()).collect());
+        files.extend(mine);
     }
+    let set: Vec<Output> = files
+        .iter()
+        .map(|(path, bytes)| Output { path, bytes })
+        .collect();
+    write_all(&set)?;
     Ok(paths)
 }
 
 pub fn run(a: &RenderArgs) -> Result<String> {
     let scenes = load_scenes(&a.scenes, a.scenes_dir.as_deref(), &a.set)?;
-    std::fs::create_dir_all(&a.out)
-        .map_err(|e| Error::io("create the output directory", &a.out, e))?;
+    let formats = Formats::from(a.format);
+    // Every output path is checked before anything is computed.
+    let planned: Vec<PathBuf> = scenes
+        .iter()
+        .flat_map(|s| output_paths(&a.out, &s.name, s.chart.data_extension(), formats))
+        .collect();
+    check_all(planned.iter().map(PathBuf::as_path))?;
     // A bar only for a person watching: not in CI logs, not into pipes.
     let show = std::io::stderr().is_terminal() && std::env::var_os("CI").is_none();
     let bar = if show {
@@ -154,19 +204,21 @@ pub fn run(a: &RenderArgs) -> Result<String> {
     } else {
         ProgressBar::hidden()
     };
-    let formats = Formats::from(a.format);
-    let written: Vec<Result<Vec<PathBuf>>> = scenes
+    let rendered: Vec<Result<Rendered>> = scenes
         .par_iter()
         .map(|s| {
-            let paths = charts::render(s, formats).and_then(|r| write_rendered(&a.out, &r));
+            let r = charts::render(s, formats);
             bar.inc(1);
-            paths
+            r
         })
         .collect();
     bar.finish_and_clear();
+    // The first failure in scene order, so the message does not depend on the thread count.
+    let rendered = rendered.into_iter().collect::<Result<Vec<Rendered>>>()?;
+    let written = write_rendered(&a.out, &rendered)?;
     let mut text = String::new();
     for (scene, paths) in scenes.iter().zip(written) {
-        let list: Vec<String> = paths?.iter().map(|p| p.display().to_string()).collect();
+        let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
         let _ = writeln!(text, "{}: {}", scene.name, list.join(" "));
     }
     Ok(text)

@@ -95,10 +95,21 @@ pub fn run(a: &SolveArgs) -> Result<String> {
         }
     })?;
     let kinds = a.model.models();
-    if a.series.is_some() && !kinds.contains(&ModelKind::Dynamics) {
-        return Err(Error::Unsupported(
-            "--series needs the dynamics: add --model dynamics".into(),
-        ));
+    if let Some(path) = &a.series {
+        if !kinds.contains(&ModelKind::Dynamics) {
+            return Err(Error::Unsupported(
+                "--series needs the dynamics: add --model dynamics".into(),
+            ));
+        }
+        // Before the simulation runs: a path that will be refused is refused now, and a series
+        // too long to hold is refused by its estimate.
+        crate::atomic::check_all([path.as_path()])?;
+        let rows = crate::limits::series_rows(
+            config.scene.start_angle_deg,
+            config.dynamics.omega_deg_s,
+            SERIES_DT_S,
+        );
+        crate::limits::check_items("--omega (omega_deg_s)", rows, crate::limits::SERIES_ROW)?;
     }
     let mut answers = Vec::new();
     for &kind in kinds {
@@ -124,7 +135,7 @@ pub fn run(a: &SolveArgs) -> Result<String> {
             };
             serde_json::to_string_pretty(&doc).expect("plain structs serialise") + "\n"
         }
-        OutputFormat::Text => render_text(&config, &answers),
+        OutputFormat::Text => render_text(&config, &answers, a.series.as_deref()),
     })
 }
 
@@ -135,7 +146,7 @@ fn record<'a>(x: &'a Answer, config: &'a Config, a: &SolveArgs) -> Record<'a> {
         Detail::Statics(d) => DetailRecord::Statics(d),
         Detail::MinNorm(d) => DetailRecord::MinNorm(min_norm::record(d, x.trace.as_ref())),
         Detail::Dynamics(d) => {
-            DetailRecord::Dynamics(dynamics::record(d, &config.dynamics, a.series.as_deref()))
+            DetailRecord::Dynamics(dynamics::record(d, config, a.series.as_deref()))
         }
         Detail::Outside(why) => DetailRecord::Outside { outside_model: why },
     };
@@ -169,7 +180,7 @@ fn render_statics(s: &mut String, d: &StaticsSolution) {
     }
 }
 
-fn render_text(config: &Config, answers: &[Answer]) -> String {
+fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::Path>) -> String {
     let p = &config.scene;
     let mut s = String::new();
     let _ = writeln!(
@@ -233,7 +244,7 @@ fn render_text(config: &Config, answers: &[Answer]) -> String {
         match &r.detail {
             Detail::Statics(d) => render_statics(&mut s, d),
             Detail::MinNorm(d) => min_norm::render_details(&mut s, d, x.trace.as_ref()),
-            Detail::Dynamics(d) => dynamics::render_details(&mut s, d),
+            Detail::Dynamics(d) => dynamics::render_details(&mut s, d, config, series),
             Detail::Outside(why) => {
                 let _ = writeln!(s, "  not run: {why}");
             }

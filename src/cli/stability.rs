@@ -9,7 +9,7 @@ use serde::Serialize;
 use super::accuracy::{fixed, model_name, sci, to_csv};
 use super::args::{SceneArgs, TableFormat};
 use super::dynamics::DynamicsArgs;
-use crate::atomic::write_atomic;
+use crate::atomic::{Output, check_all, write_all};
 use crate::error::{Error, Result};
 use crate::model::JamStatus;
 use crate::models::ModelKind;
@@ -69,9 +69,13 @@ pub fn run(a: &StabilityArgs) -> Result<String> {
             out
         }
     };
-    if let Some(dir) = &a.out_dir {
-        std::fs::create_dir_all(dir).map_err(|e| Error::io("create", dir, e))?;
-    }
+    // Checked before anything runs, written all or nothing at the end.
+    let out_paths: Vec<PathBuf> = a
+        .out_dir
+        .iter()
+        .flat_map(|d| ["stability.md", "stability.csv", "stability.json"].map(|f| d.join(f)))
+        .collect();
+    check_all(out_paths.iter().map(PathBuf::as_path))?;
     let report = stability::run(&config, &cases, &stability::methods(&config))?;
     // No NaN or infinity may reach a table: a defect, said as one.
     if let Some(r) = report
@@ -96,10 +100,14 @@ pub fn run(a: &StabilityArgs) -> Result<String> {
     let md = markdown(&report);
     let csv = csv_rows(&report)?;
     let json = serde_json::to_string_pretty(&report).expect("plain structs serialise") + "\n";
-    if let Some(dir) = &a.out_dir {
-        write_atomic(&dir.join("stability.md"), md.as_bytes())?;
-        write_atomic(&dir.join("stability.csv"), csv.as_bytes())?;
-        write_atomic(&dir.join("stability.json"), json.as_bytes())?;
+    if !out_paths.is_empty() {
+        let contents = [md.as_bytes(), csv.as_bytes(), json.as_bytes()];
+        let set: Vec<Output> = out_paths
+            .iter()
+            .zip(contents)
+            .map(|(path, bytes)| Output { path, bytes })
+            .collect();
+        write_all(&set)?;
     }
     Ok(match a.format {
         TableFormat::Text => md,

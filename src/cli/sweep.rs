@@ -7,7 +7,7 @@ use clap::Args;
 use serde::Deserialize;
 
 use super::args::SceneArgs;
-use super::render::{RenderFormat, write_rendered};
+use super::render::{RenderFormat, output_paths, write_rendered};
 use crate::charts::contour_map::ContourMapSpec;
 use crate::charts::spec::Size;
 use crate::charts::sweep::{SweepPanel, SweepSpec};
@@ -147,10 +147,20 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
 
 pub fn run(a: &SweepArgs) -> Result<String> {
     let scene = scene(a)?;
-    std::fs::create_dir_all(&a.out)
-        .map_err(|e| crate::error::Error::io("create the output directory", &a.out, e))?;
-    let rendered = charts::render(&scene, a.format.into())?;
-    let paths = write_rendered(&a.out, &rendered)?;
+    // The name is a file name: a folder in it would write outside --out.
+    if scene.name.contains('/') || scene.name.starts_with('.') || scene.name.is_empty() {
+        return Err(crate::error::Error::invalid(
+            "--name",
+            &scene.name,
+            "a file name without folders or a leading dot; --out gives the folder",
+        ));
+    }
+    let formats = a.format.into();
+    // Every output path is checked before anything is computed.
+    let planned = output_paths(&a.out, &scene.name, scene.chart.data_extension(), formats);
+    crate::atomic::check_all(planned.iter().map(PathBuf::as_path))?;
+    let rendered = charts::render(&scene, formats)?;
+    let paths = write_rendered(&a.out, std::slice::from_ref(&rendered))?.concat();
     let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
     Ok(format!("{}: {}\n", scene.name, list.join(" ")))
 }

@@ -12,6 +12,7 @@ use serde::Serialize;
 
 use super::{DynamicsParams, DynamicsSolution, Method, run};
 use crate::error::{Error, Result};
+use crate::limits::{self, MAX_RUNS, MAX_TOLERANCES};
 use crate::model::{JamStatus, SceneParams};
 
 /// What to measure.
@@ -32,6 +33,20 @@ impl Default for StudySettings {
             runs: 5,
             reference_rtol: 1e-11,
         }
+    }
+}
+
+impl StudySettings {
+    /// Checks the counts: 1 to [`MAX_TOLERANCES`] tolerances, 1 to [`MAX_RUNS`] runs (the
+    /// tolerances' values are checked point by point in [`run_study`]).
+    pub fn validate(&self) -> Result<()> {
+        limits::check_count(
+            "tolerances",
+            self.tolerances.len(),
+            MAX_TOLERANCES,
+            "the number of tolerances",
+        )?;
+        limits::check_count("runs", self.runs, MAX_RUNS, "the number of runs per point")
     }
 }
 
@@ -110,9 +125,7 @@ pub fn run_study(
     scene.validate()?;
     params.validate()?;
     params.validate_scene(scene)?;
-    if settings.runs == 0 {
-        return Err(Error::invalid("runs", 0, "at least one run per point"));
-    }
+    settings.validate()?;
     // Each point's parameters must pass `validate`; its error (about rtol, the only key `raw`
     // changes that can fail) is named after the setting that gave the tolerance.
     let named = |key: &str, e: Error| match e {

@@ -14,12 +14,14 @@
 //! that answers one scene so that charts can count the calls.
 
 mod axis;
+mod locator;
 mod margin;
 
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 pub use axis::{AxisScale, GridAxis, GridParam};
+pub use locator::LocatorParam;
 pub use margin::MarginCoeffs;
 
 use crate::error::{Error, Result};

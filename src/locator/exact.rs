@@ -144,54 +144,64 @@ impl PlaneCone {
             return None;
         }
         let mu = p.mu();
-        let mut gens: Vec<(V2, FailureMode)> = Vec::with_capacity(4);
-        match p.rotation {
+        let [n1, n2] = f.n;
+        let along = |a: V2, s: f64, d: V2| [a[0] + s * d[0], a[1] + s * d[1]];
+        let gens: [(V2, FailureMode); 4] = match p.rotation {
             Rotation::Blocked => {
-                for flank in Flank::BOTH {
-                    let i = flank.index();
-                    for s in [-1.0, 1.0] {
-                        let g = [
-                            f.n[i][0] + s * mu[i] * f.u[i][0],
-                            f.n[i][1] + s * mu[i] * f.u[i][1],
-                        ];
-                        gens.push((g, FailureMode::slides_along(flank)));
-                    }
-                }
+                let (l, r) = (
+                    FailureMode::slides_along(Flank::Left),
+                    FailureMode::slides_along(Flank::Right),
+                );
+                [
+                    (along(n1, -mu[0], f.u[0]), l),
+                    (along(n1, mu[0], f.u[0]), l),
+                    (along(n2, -mu[1], f.u[1]), r),
+                    (along(n2, mu[1], f.u[1]), r),
+                ]
             }
             Rotation::Free => {
-                for flank in Flank::BOTH {
-                    gens.push((f.n[flank.index()], FailureMode::rolls_over(flank)));
-                }
+                let roll = |fl| (f.n[Flank::index(fl)], FailureMode::rolls_over(fl));
                 if mu[0] > 0.0 && mu[1] > 0.0 {
-                    for s in [-1.0, 1.0] {
-                        let g = [
-                            f.n[0][0] / mu[0] + f.n[1][0] / mu[1] + s * (f.u[0][0] + f.u[1][0]),
-                            f.n[0][1] / mu[0] + f.n[1][1] / mu[1] + s * (f.u[0][1] + f.u[1][1]),
-                        ];
-                        gens.push((g, FailureMode::SlidesOnBoth));
-                    }
+                    let m = along([n1[0] / mu[0], n1[1] / mu[0]], 1.0 / mu[1], n2);
+                    let u = [f.u[0][0] + f.u[1][0], f.u[0][1] + f.u[1][1]];
+                    [
+                        roll(Flank::Left),
+                        roll(Flank::Right),
+                        (along(m, -1.0, u), FailureMode::SlidesOnBoth),
+                        (along(m, 1.0, u), FailureMode::SlidesOnBoth),
+                    ]
+                } else {
+                    // Without friction on a flank both frictions vanish: the normals alone.
+                    [
+                        roll(Flank::Left),
+                        roll(Flank::Right),
+                        roll(Flank::Left),
+                        roll(Flank::Right),
+                    ]
                 }
             }
-        }
-        // Angles about the bisector b (from the vertex to the centre): a cone that does not
-        // self-lock spans less than 180 deg around it.
-        let b = [f.n[0][0] + f.n[1][0], f.n[0][1] + f.n[1][1]];
-        let angle = |g: V2| cross(b, g).atan2(b[0] * g[0] + b[1] * g[1]);
-        let unit = |(g, m): (V2, FailureMode)| {
-            let l = g[0].hypot(g[1]);
-            ([g[0] / l, g[1] / l], m)
         };
-        let nonzero = gens.into_iter().filter(|(g, _)| g[0].hypot(g[1]) > 0.0);
+        // A cone that does not self-lock spans less than 180 deg, so "clockwise of" is a
+        // total order on its generators: g is clockwise of h iff g x h > 0.
+        let nonzero = gens.into_iter().filter(|(g, _)| g[0] != 0.0 || g[1] != 0.0);
         let (mut lo, mut hi) = (None::<(V2, FailureMode)>, None::<(V2, FailureMode)>);
-        for g in nonzero.map(unit) {
-            if lo.is_none_or(|l| angle(g.0) < angle(l.0)) {
+        for g in nonzero {
+            if lo.is_none_or(|l| cross(g.0, l.0) > 0.0) {
                 lo = Some(g);
             }
-            if hi.is_none_or(|h| angle(g.0) > angle(h.0)) {
+            if hi.is_none_or(|h| cross(h.0, g.0) > 0.0) {
                 hi = Some(g);
             }
         }
-        Some(PlaneCone { lo: lo?, hi: hi? })
+        let unit = |(g, m): (V2, FailureMode)| {
+            // sqrt, not hypot: the generators are of order one, and hypot costs a map's time.
+            let l = (g[0] * g[0] + g[1] * g[1]).sqrt();
+            ([g[0] / l, g[1] / l], m)
+        };
+        Some(PlaneCone {
+            lo: unit(lo?),
+            hi: unit(hi?),
+        })
     }
 
     /// The two half-plane rows a + b P >= 0 (N) of the support q0 + P q1, with their modes.
@@ -206,7 +216,7 @@ impl PlaneCone {
     /// Held at `load_n`, or how the part leaves.
     fn held_at(&self, line: &LoadLine, load_n: f64) -> Result<(), FailureMode> {
         let q = line.force_at(load_n);
-        let tol = TOL * (q[0].hypot(q[1]) + load_n + line.q0[1]);
+        let tol = TOL * (q[0].abs() + q[1].abs() + load_n + line.q0[1]);
         let [lo, hi] = self.rows(line).map(|(a, b, m)| (a + b * load_n >= -tol, m));
         match (lo, hi) {
             ((true, _), (true, _)) => Ok(()),

@@ -27,30 +27,30 @@ use crate::error::{Error, Result};
 use crate::model::JamStatus;
 use crate::models::ModelKind;
 
-/// Most values in one list of tolerances.
-pub const MAX_TOLERANCES: usize = 16;
+/// Most values in one list of tolerances or steps (the crate's limit).
+pub const MAX_TOLERANCES: usize = crate::limits::MAX_TOLERANCES;
 /// Most contact stiffnesses.
 pub const MAX_PENETRATIONS: usize = 8;
-/// Most timed runs per row.
-pub const MAX_RUNS: usize = 100;
+/// Most timed runs per row (the crate's limit).
+pub const MAX_RUNS: usize = crate::limits::MAX_RUNS;
 
 /// What the accuracy study measures.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AccuracySettings {
-    /// clarabel tolerances of the min-norm rows, each in (0, 1), at most 16 (default: 1e-2,
+    /// clarabel tolerances of the min-norm rows, each in (0, 1), at most 64 (default: 1e-2,
     /// 1e-4, 1e-6, 1e-8, 1e-10); the exact path is always a row.
     pub min_norm_tolerances: Vec<f64>,
     /// Integrators of the simulation rows (default: radau5, dopri5).
     pub methods: Vec<Method>,
-    /// rtol = atol of the simulation rows, each in (0, 1), at most 16 (default: 1e-2 ... 1e-8).
+    /// rtol = atol of the simulation rows, each in (0, 1), at most 64 (default: 1e-2 ... 1e-8).
     pub tolerances: Vec<f64>,
     /// Contact stiffnesses beside the `[dynamics]` one, as the penetration in um at the
     /// scene's push F, each in (0, 1e4), at most 8 (default: 10, 1).
     pub penetrations_um: Vec<f64>,
-    /// Steps of the nonsmooth rows in deg of palm turn, each in (0, 1), at most 16 (default:
+    /// Steps of the nonsmooth rows in deg of palm turn, each in (0, 1), at most 64 (default:
     /// 0.3, 0.1, 0.03, 0.01).
     pub nonsmooth_steps_deg: Vec<f64>,
-    /// Timed runs per row, 1..=100; the median is reported (default: 3).
+    /// Timed runs per row, 1 to 1000; the median is reported (default: 3).
     pub runs: usize,
     /// rtol of the integrators' converged answers, in (0, 1) (default: 1e-10).
     pub converged_rtol: f64,

@@ -24,14 +24,14 @@ pub const MAX_CELLS_PER_AXIS: usize = 2000;
 /// The map and each model's sampling.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MapCostSettings {
-    /// Cells per axis of the map whose time is reported, 2..=2000 (default: 400).
+    /// Cells per axis of the map whose time is reported, 2 to 2000 (default: 400).
     pub cells_per_axis: usize,
-    /// Cells per axis the statics answer, 2..=cells_per_axis (default: 400, the whole map).
+    /// Cells per axis the statics answer, 2 to cells_per_axis (default: 400, the whole map).
     pub statics_per_axis: usize,
-    /// Cells per axis the min-norm program answers by each path, 2..=cells_per_axis
+    /// Cells per axis the min-norm program answers by each path, 2 to cells_per_axis
     /// (default: 40: 1600 programs' searches, a few seconds).
     pub min_norm_per_axis: usize,
-    /// Cells per axis the simulation answers, 2..=cells_per_axis (default: 20: each cell
+    /// Cells per axis the simulation answers, 2 to cells_per_axis (default: 20: each cell
     /// simulates twice, verification included, about a millisecond with RADAU5).
     pub dynamics_per_axis: usize,
 }

@@ -397,7 +397,7 @@ pub(crate) fn check_count(key: &str, n: usize, min: usize, max: usize) -> Result
     if (min..=max).contains(&n) {
         Ok(())
     } else {
-        Err(Error::invalid(key, n, format!("must be {min}..={max}")))
+        Err(Error::invalid(key, n, format!("must be {min} to {max}")))
     }
 }
 

@@ -1,75 +1,32 @@
-//! Dense LU decomposition with partial pivoting for the small Newton systems of Radau5.
+//! The small Newton systems of RADAU5, solved by nalgebra's LU with partial pivoting.
 
-/// LU factors of a row-major n x n matrix, in place, with the row permutation.
+use nalgebra::{DMatrix, DVectorViewMut, Dyn, LU};
+
+/// LU factors of an n x n matrix, kept for the solves of one step.
 #[derive(Debug, Clone, Default)]
 pub struct Lu {
-    n: usize,
-    a: Vec<f64>,
-    piv: Vec<usize>,
+    lu: Option<LU<f64, Dyn, Dyn>>,
 }
 
 impl Lu {
-    /// Factors `a` (row-major n x n). Returns false if it is singular to working precision.
+    /// Factors `a` (row-major n x n). Returns false if it is singular or not finite.
     pub fn factor(&mut self, n: usize, a: &[f64]) -> bool {
-        self.n = n;
-        self.a.clear();
-        self.a.extend_from_slice(a);
-        self.piv.clear();
-        self.piv.extend(0..n);
-        let m = &mut self.a;
-        for k in 0..n {
-            let (mut p, mut best) = (k, m[k * n + k].abs());
-            for i in k + 1..n {
-                let v = m[i * n + k].abs();
-                if v > best {
-                    p = i;
-                    best = v;
-                }
-            }
-            if best.is_nan() || best <= 0.0 || !best.is_finite() {
-                return false;
-            }
-            if p != k {
-                for j in 0..n {
-                    m.swap(k * n + j, p * n + j);
-                }
-                self.piv.swap(k, p);
-            }
-            let d = m[k * n + k];
-            for i in k + 1..n {
-                let l = m[i * n + k] / d;
-                m[i * n + k] = l;
-                if l != 0.0 {
-                    for j in k + 1..n {
-                        m[i * n + j] -= l * m[k * n + j];
-                    }
-                }
-            }
+        if !a.iter().all(|v| v.is_finite()) {
+            self.lu = None;
+            return false;
         }
-        true
+        let lu = DMatrix::from_row_slice(n, n, a).lu();
+        let ok = lu.is_invertible();
+        self.lu = ok.then_some(lu);
+        ok
     }
 
-    /// Solves A x = b in place of `b`.
-    pub fn solve(&self, b: &mut [f64], work: &mut Vec<f64>) {
-        let n = self.n;
-        let m = &self.a;
-        work.clear();
-        work.extend(self.piv.iter().map(|&p| b[p]));
-        for i in 0..n {
-            let mut s = work[i];
-            for j in 0..i {
-                s -= m[i * n + j] * work[j];
-            }
-            work[i] = s;
+    /// Solves A x = b in place of `b` (A as last factored successfully).
+    pub fn solve(&self, b: &mut [f64]) {
+        if let Some(lu) = &self.lu {
+            let n = b.len();
+            lu.solve_mut(&mut DVectorViewMut::from_slice(b, n));
         }
-        for i in (0..n).rev() {
-            let mut s = work[i];
-            for j in i + 1..n {
-                s -= m[i * n + j] * work[j];
-            }
-            work[i] = s / m[i * n + i];
-        }
-        b.copy_from_slice(work);
     }
 }
 
@@ -86,10 +43,11 @@ mod tests {
             .collect();
         let mut lu = Lu::default();
         assert!(lu.factor(3, &a));
-        lu.solve(&mut b, &mut Vec::new());
+        lu.solve(&mut b);
         for i in 0..3 {
             assert!((b[i] - x[i]).abs() < 1e-14, "{b:?}");
         }
         assert!(!lu.factor(2, &[1.0, 2.0, 2.0, 4.0]));
+        assert!(!lu.factor(1, &[f64::NAN]));
     }
 }

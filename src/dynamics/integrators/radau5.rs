@@ -136,7 +136,7 @@ impl Radau5 {
         let mut jac = vec![0.0; n * n];
         let mut big = vec![0.0; m * m];
         let mut small = vec![0.0; n * n];
-        let (mut lu_big, mut lu_small, mut work) = (Lu::default(), Lu::default(), Vec::new());
+        let (mut lu_big, mut lu_small) = (Lu::default(), Lu::default());
         let mut z = vec![0.0; m];
         let mut dz = vec![0.0; m];
         let mut fz = vec![0.0; m];
@@ -226,7 +226,7 @@ impl Radau5 {
                         dz[k * n + i] = -z[k * n + i] + h * s;
                     }
                 }
-                lu_big.solve(&mut dz, &mut work);
+                lu_big.solve(&mut dz);
                 let dyno = (0..3)
                     .map(|k| scaled_norm(&dz[k * n..(k + 1) * n], &y_start, &y_start, &tol).powi(2))
                     .sum::<f64>();
@@ -278,7 +278,7 @@ impl Radau5 {
                 cont[i] = f0[i] + f2[i];
                 y1[i] = y0[i] + z[2 * n + i];
             }
-            lu_small.solve(&mut cont, &mut work);
+            lu_small.solve(&mut cont);
             let mut err = scaled_norm(&cont, y0, &y1, &tol);
             if err >= 1.0 && (first || lp.last_rejected) {
                 for i in 0..n {
@@ -289,7 +289,7 @@ impl Radau5 {
                 for i in 0..n {
                     cont[i] += f2[i];
                 }
-                lu_small.solve(&mut cont, &mut work);
+                lu_small.solve(&mut cont);
                 err = scaled_norm(&cont, y0, &y1, &tol);
             }
             if !err.is_finite() {

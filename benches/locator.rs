@@ -1,0 +1,70 @@
+//! The V-locator capacity map: a 200 x 200 map of P_max over (included angle, load direction)
+//! by the exact path, beside the clarabel LP per cell.
+//!
+//! `cargo bench --bench locator`; prints medians of 15 runs of the whole map (all cores and one
+//! thread) and the median clarabel time per cell over a 400-cell sample, extrapolated to the
+//! map. Goal (issue 9): the exact map in <= 10 ms on 2 cores.
+
+mod common;
+
+use common::{median, median_s};
+use jamchart::grid::{Grid, GridAxis, LocatorParam};
+use jamchart::locator::{self, LocatorParams, reference};
+
+fn map(rotation: locator::Rotation) -> Grid<LocatorParams> {
+    Grid {
+        base: LocatorParams {
+            rotation,
+            ..LocatorParams::default()
+        },
+        x: GridAxis::linear(LocatorParam::IncludedAngleDeg, 10.0, 170.0, 200),
+        y: Some(GridAxis::linear(
+            LocatorParam::LoadAngleDeg,
+            -90.0,
+            90.0,
+            200,
+        )),
+    }
+}
+
+fn main() {
+    let threads = rayon::current_num_threads();
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("a one-thread pool");
+    for rotation in [locator::Rotation::Free, locator::Rotation::Blocked] {
+        let g = map(rotation);
+        let exact = || {
+            let cells = g.map(|p| Ok(locator::capacity(p))).expect("valid grid");
+            std::hint::black_box(cells);
+        };
+        let all = median_s(15, exact);
+        let single = one.install(|| median_s(15, exact));
+        // Every 100th cell: 400 LPs, each timed alone.
+        let cells = g.map(|p| Ok(*p)).expect("valid grid").values;
+        let per_cell = median(
+            cells
+                .iter()
+                .step_by(100)
+                .map(|p| {
+                    median_s(3, || {
+                        std::hint::black_box(reference::capacity_clarabel(p));
+                    })
+                })
+                .collect(),
+        );
+        println!(
+            "{:>7} rotation, 200 x 200 capacity map: exact {:.2} ms on {threads} threads, \
+             {:.2} ms on 1 thread ({:.0} ns/cell); clarabel LP {:.1} us/cell, {:.2} s for the map \
+             on 1 thread ({:.0}x the exact path)",
+            rotation.as_str(),
+            all * 1e3,
+            single * 1e3,
+            single / 4e4 * 1e9,
+            per_cell * 1e6,
+            per_cell * 4e4,
+            per_cell * 4e4 / single,
+        );
+    }
+}

@@ -1,0 +1,192 @@
+//! Output files: written whole or not at all, as one set, never onto a special file or a link.
+//!
+//! Every command writes its files through [`write_all`]:
+//! 1. each path is checked ([`destination::check`]): a new name or a regular file is replaced,
+//!    a FIFO, terminal or /dev/null is written through, anything else is refused;
+//! 2. every regular file is written to a temporary file beside it, and synced;
+//! 3. the streams are written;
+//! 4. the temporary files are renamed over their final names, each old file kept aside (a hard
+//!    link) until all renames succeeded, and put back if one fails.
+//!
+//! So a command that fails leaves the regular files as it found them (a stream may have been
+//! written: it cannot be taken back), and a directory this set created is removed again.
+//! Temporary files are registered while they exist and removed on SIGINT, SIGTERM and SIGHUP
+//! ([`install_signal_cleanup`]); ones left by a killed process are swept by the next write
+//! into the same directory ([`cleanup::sweep_stale`]).
+//!
+//! Hand-written rather than `tempfile::NamedTempFile::persist`: tempfile creates its files with
+//! mode 0600, and charts and data are ordinary files other users should read.
+
+pub mod cleanup;
+pub mod destination;
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+pub use cleanup::install_signal_cleanup;
+pub use destination::{Destination, check_all};
+
+use crate::error::{Error, Result};
+use cleanup::Temp;
+
+/// One output: where and what.
+#[derive(Debug, Clone, Copy)]
+pub struct Output<'a> {
+    /// The final path.
+    pub path: &'a Path,
+    /// The whole content.
+    pub bytes: &'a [u8],
+}
+
+/// Writes one file atomically (see the module doc): a set of one.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
+    write_all(&[Output { path, bytes }])
+}
+
+/// Writes every output, or none of the regular files (see the module doc).
+pub fn write_all(outputs: &[Output]) -> Result<()> {
+    check_all(outputs.iter().map(|o| o.path))?;
+    let created = create_parents(outputs)?;
+    let result = stage(outputs).and_then(Staged::commit);
+    if result.is_err() {
+        // Deepest first; a directory that is not empty (someone else wrote there) stays.
+        for d in created.iter().rev() {
+            let _ = std::fs::remove_dir(d);
+        }
+    }
+    result
+}
+
+/// Creates the missing parent directories of the outputs; returns those it created, outermost
+/// first.
+fn create_parents(outputs: &[Output]) -> Result<Vec<PathBuf>> {
+    let mut created: Vec<PathBuf> = Vec::new();
+    for o in outputs {
+        let Some(parent) = o.path.parent().filter(|p| !p.as_os_str().is_empty()) else {
+            continue;
+        };
+        let missing: Vec<&Path> = parent.ancestors().take_while(|a| !a.exists()).collect();
+        for d in missing.into_iter().rev() {
+            if d.as_os_str().is_empty() {
+                continue;
+            }
+            match std::fs::create_dir(d) {
+                Ok(()) => created.push(d.to_path_buf()),
+                // `a/b/..` reads as missing until `a/b` exists: nothing new to remove later.
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists && d.is_dir() => {}
+                Err(e) => {
+                    for c in created.iter().rev() {
+                        let _ = std::fs::remove_dir(c);
+                    }
+                    return Err(Error::io("create the directory", d, e));
+                }
+            }
+        }
+    }
+    Ok(created)
+}
+
+/// A set whose regular files sit in temporary files and whose streams are written.
+struct Staged<'a> {
+    files: Vec<(Temp, &'a Path)>,
+}
+
+/// Steps 2 and 3 of the module doc. On any error the temporary files go (they are dropped).
+fn stage<'a>(outputs: &[Output<'a>]) -> Result<Staged<'a>> {
+    let mut files = Vec::new();
+    let mut streams = Vec::new();
+    let mut swept = std::collections::HashSet::new();
+    for o in outputs {
+        match destination::check(o.path)? {
+            Destination::Stream => streams.push(o),
+            Destination::New | Destination::Regular => {
+                let dir = o.path.parent().filter(|d| !d.as_os_str().is_empty());
+                if swept.insert(dir) {
+                    cleanup::sweep_stale(dir.unwrap_or(Path::new(".")));
+                }
+                let (temp, mut f) =
+                    Temp::create(o.path).map_err(|e| Error::io("write", o.path, e))?;
+                f.write_all(o.bytes)
+                    .and_then(|_| f.sync_data())
+                    .map_err(|e| Error::io("write", o.path, e))?;
+                files.push((temp, o.path));
+            }
+        }
+    }
+    for o in streams {
+        write_stream(o.path, o.bytes)?;
+    }
+    Ok(Staged { files })
+}
+
+/// Writes through a FIFO, terminal or /dev/null (never creating or truncating anything).
+fn write_stream(path: &Path, bytes: &[u8]) -> Result<()> {
+    use std::os::unix::fs::OpenOptionsExt;
+    std::fs::File::options()
+        .write(true)
+        // Never become the controlling terminal of this process.
+        .custom_flags(libc::O_NOCTTY)
+        .open(path)
+        .and_then(|mut f| f.write_all(bytes).and_then(|_| f.flush()))
+        .map_err(|e| Error::io("write", path, e))
+}
+
+impl Staged<'_> {
+    /// Step 4 of the module doc, under the registry's lock so that a signal waits for it.
+    fn commit(self) -> Result<()> {
+        let live = cleanup::lock();
+        // Per renamed file: its final path and where its old version is kept (None: it was new).
+        let mut done: Vec<(&Path, Option<PathBuf>)> = Vec::new();
+        let mut failure = None;
+        for (temp, dest) in &self.files {
+            let kept = match keep_old(dest) {
+                Ok(k) => k,
+                Err(e) => {
+                    failure = Some(e);
+                    break;
+                }
+            };
+            if let Err(e) = std::fs::rename(&temp.path, dest) {
+                if let Some(k) = kept {
+                    let _ = std::fs::remove_file(k);
+                }
+                failure = Some(Error::io("write", *dest, e));
+                break;
+            }
+            done.push((dest, kept));
+        }
+        for (dest, kept) in done {
+            match (&failure, kept) {
+                // Undo: the old version comes back (an atomic replace), a new file goes.
+                (Some(_), Some(k)) => drop(std::fs::rename(k, dest)),
+                (Some(_), None) => drop(std::fs::remove_file(dest)),
+                (None, Some(k)) => drop(std::fs::remove_file(k)),
+                (None, None) => {}
+            }
+        }
+        drop(live);
+        if let Some(e) = failure {
+            return Err(e);
+        }
+        for (temp, _) in self.files {
+            temp.keep();
+        }
+        Ok(())
+    }
+}
+
+/// Keeps the old version of `dest` under a temporary name (a hard link, or a copy where the
+/// file system has none) until the whole set is in place; None when there is no old version.
+fn keep_old(dest: &Path) -> Result<Option<PathBuf>> {
+    if !dest.is_file() {
+        return Ok(None);
+    }
+    let keep = cleanup::temp_name(dest);
+    std::fs::hard_link(dest, &keep)
+        .or_else(|_| std::fs::copy(dest, &keep).map(drop))
+        .map_err(|e| Error::io("keep the old version of", dest, e))?;
+    Ok(Some(keep))
+}
+
+#[cfg(test)]
+mod tests;

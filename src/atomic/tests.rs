@@ -1,0 +1,140 @@
+use super::*;
+
+/// The names in `dir`, sorted.
+fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn atomic_write_replaces_and_leaves_no_temp() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("a.svg");
+    write_atomic(&p, b"one").unwrap();
+    write_atomic(&p, b"two").unwrap();
+    assert_eq!(std::fs::read(&p).unwrap(), b"two");
+    assert_eq!(names(dir.path()), ["a.svg"]);
+}
+
+#[test]
+fn missing_directories_are_created_and_removed_again_on_failure() {
+    let dir = tempfile::tempdir().unwrap();
+    let ok = dir.path().join("new/deeper/a.csv");
+    write_atomic(&ok, b"x").unwrap();
+    assert_eq!(std::fs::read(&ok).unwrap(), b"x");
+    // The second output cannot be written (its name is a directory): the set's new
+    // directories go again.
+    let squat = dir.path().join("squat");
+    std::fs::create_dir(&squat).unwrap();
+    let a = dir.path().join("fresh/a.csv");
+    let err = write_all(&[
+        Output {
+            path: &a,
+            bytes: b"a",
+        },
+        Output {
+            path: &squat,
+            bytes: b"b",
+        },
+    ])
+    .unwrap_err();
+    assert!(err.to_string().contains("it is a directory"), "{err}");
+    assert_eq!(names(dir.path()), ["new", "squat"]);
+}
+
+/// Regression (issue 13, "a failed command leaves a partial set"): the second of three files
+/// fails at its rename; the first, already renamed, must get its old version back and the
+/// third must not appear.
+#[test]
+fn a_failed_command_leaves_the_output_folder_as_it_found_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let [a, b, c] = ["a.csv", "b.svg", "c.png"].map(|n| dir.path().join(n));
+    std::fs::write(&a, "old a").unwrap();
+    let outputs = [(&a, b"new a"), (&b, b"new b"), (&c, b"new c")].map(|(path, bytes)| Output {
+        path,
+        bytes: bytes.as_slice(),
+    });
+    let staged = stage(&outputs).unwrap();
+    // A directory squats b's name after the checks (as a disk filling up would fail there).
+    std::fs::create_dir(&b).unwrap();
+    std::fs::write(b.join("inside"), "x").unwrap();
+    let err = staged.commit().unwrap_err();
+    assert!(err.to_string().contains("b.svg"), "{err}");
+    assert_eq!(std::fs::read_to_string(&a).unwrap(), "old a");
+    assert!(!c.exists());
+    assert_eq!(
+        names(dir.path()),
+        ["a.csv", "b.svg"],
+        "no temporary file left"
+    );
+}
+
+#[test]
+fn a_fifo_is_written_through_and_stays_a_fifo() {
+    use std::os::unix::fs::FileTypeExt;
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("p");
+    assert!(
+        std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap()
+            .success()
+    );
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read(fifo).unwrap())
+    };
+    let file = dir.path().join("f.csv");
+    write_all(&[
+        Output {
+            path: &file,
+            bytes: b"file",
+        },
+        Output {
+            path: &fifo,
+            bytes: b"through the pipe",
+        },
+    ])
+    .unwrap();
+    assert_eq!(reader.join().unwrap(), b"through the pipe");
+    assert!(
+        std::fs::symlink_metadata(&fifo)
+            .unwrap()
+            .file_type()
+            .is_fifo()
+    );
+    assert_eq!(std::fs::read(&file).unwrap(), b"file");
+    assert_eq!(names(dir.path()), ["f.csv", "p"]);
+}
+
+#[test]
+fn a_symlink_is_refused_and_neither_it_nor_its_target_changes() {
+    let dir = tempfile::tempdir().unwrap();
+    let target = dir.path().join("target.csv");
+    std::fs::write(&target, "keep").unwrap();
+    let link = dir.path().join("link.csv");
+    std::os::unix::fs::symlink(&target, &link).unwrap();
+    let msg = write_atomic(&link, b"x").unwrap_err().to_string();
+    assert!(msg.contains("symbolic link"), "{msg}");
+    assert!(std::fs::symlink_metadata(&link).unwrap().is_symlink());
+    assert_eq!(std::fs::read_to_string(&target).unwrap(), "keep");
+}
+
+#[test]
+fn a_failed_write_names_the_file_and_leaves_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("plain");
+    std::fs::write(&file, "x").unwrap();
+    let p = file.join("a.csv");
+    let msg = write_atomic(&p, b"x").unwrap_err().to_string();
+    assert!(
+        msg.contains("plain") && msg.contains("not a directory"),
+        "{msg}"
+    );
+    assert_eq!(names(dir.path()), ["plain"]);
+}

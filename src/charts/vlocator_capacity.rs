@@ -1,0 +1,424 @@
+//! Chart kind `vlocator_capacity`: the holding capacity P_max / W of a V over its included
+//! angle and the load direction, with the self-locking (wedged) band, the region where every
+//! load is held, iso-lines of capacity and the standard 60 / 90 / 120 deg V-blocks.
+
+use contour::ContourBuilder;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use serde::{Deserialize, Serialize};
+use serde_json::json;
+
+use super::axes::{self, DrawResult, Margins, PlotAxis};
+use super::legend::{self, LegendEntry, Swatch};
+use super::spec::Scene;
+use super::style::{self, INK, LineKind, PAPER};
+use super::{DataFile, grid_lines, grid_polygons};
+use crate::error::{Error, Result};
+use crate::grid::{Grid, GridAxis, LocatorParam};
+use crate::locator::{self, LocatorParams, Rotation};
+
+/// The standard V-blocks a fixture designer buys, included angle in deg.
+pub const STANDARD_V_DEG: [f64; 3] = [60.0, 90.0, 120.0];
+
+/// Tint of the self-locking band (under its hatch).
+const WEDGED_FILL: RGBColor = RGBColor(236, 214, 214);
+
+/// A capacity standing for "unbounded" in the contoured field: above every level.
+const UNBOUNDED_OVER_W: f64 = 1e3;
+
+/// `[chart]` keys of `kind = "vlocator_capacity"`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VlocatorCapacitySpec {
+    /// The V, friction, rotation and load point (default: [`LocatorParams::default`]); the
+    /// axes set the included angle and the load direction.
+    #[serde(default)]
+    pub locator: LocatorParams,
+    /// Horizontal axis: `included_angle_deg`.
+    pub x_axis: GridAxis<LocatorParam>,
+    /// Vertical axis: `load_angle_deg`.
+    pub y_axis: GridAxis<LocatorParam>,
+    /// Capacity iso-lines, multiples of W, increasing; the bands between them are shaded.
+    pub levels_over_w: Vec<f64>,
+}
+
+impl VlocatorCapacitySpec {
+    /// Checks the axes and levels (and the locator at the grid's corners).
+    pub fn validate(&self) -> Result<()> {
+        if self.x_axis.param != LocatorParam::IncludedAngleDeg {
+            return Err(Error::invalid(
+                "chart.x_axis.param",
+                self.x_axis.param.as_str(),
+                "the capacity map has the included angle on x: use included_angle_deg",
+            ));
+        }
+        if self.y_axis.param != LocatorParam::LoadAngleDeg {
+            return Err(Error::invalid(
+                "chart.y_axis.param",
+                self.y_axis.param.as_str(),
+                "the capacity map has the load direction on y: use load_angle_deg",
+            ));
+        }
+        let l = &self.levels_over_w;
+        if l.is_empty()
+            || !l.windows(2).all(|w| w[0] < w[1])
+            || !l
+                .iter()
+                .all(|v| v.is_finite() && *v > 0.0 && *v < UNBOUNDED_OVER_W)
+        {
+            return Err(Error::invalid(
+                "chart.levels_over_w",
+                format!("{l:?}"),
+                "give increasing levels in (0, 1000) W",
+            ));
+        }
+        self.grid().validate()
+    }
+
+    fn grid(&self) -> Grid<LocatorParams> {
+        Grid {
+            base: self.locator,
+            x: self.x_axis,
+            y: Some(self.y_axis),
+        }
+    }
+}
+
+/// The computed capacity map.
+#[derive(Debug, Clone)]
+pub struct VlocatorCapacity {
+    spec: VlocatorCapacitySpec,
+    title: String,
+    x_values: Vec<f64>,
+    y_values: Vec<f64>,
+    /// P_max / W per cell (None: unbounded), index order iy * nx + ix.
+    p_max_over_w: Vec<Option<f64>>,
+    /// The included angle below which the V self-locks, deg.
+    locking_deg: f64,
+    /// Shaded bands, lowest first (the last is the unbounded region).
+    bands: Vec<Paths>,
+    /// Capacity iso-lines (level in W, paths).
+    lines: Vec<(f64, Paths)>,
+    /// The edge of the unbounded region.
+    unbounded_edge: Paths,
+}
+
+/// Polylines or rings in plot space.
+type Paths = Vec<Vec<(f64, f64)>>;
+
+impl VlocatorCapacity {
+    /// Evaluates P_max / W on every cell by the exact path, through the grid.
+    pub fn compute(scene: &Scene, spec: &VlocatorCapacitySpec) -> Result<Self> {
+        // Where the V locks every load is held; the drawn field carries the capacity just
+        // below locking there, so the iso-lines run on under the hatched band instead of
+        // piling up on its edge.
+        let cells = spec.grid().map(|p| {
+            let drawn = locator::capacity(&locator::just_unlocked(p));
+            Ok((locator::capacity(p), drawn))
+        })?;
+        let over_w = |c: &locator::Capacity| match (c.unbounded, c.p_max_over_w) {
+            (true, _) => None,
+            (false, v) => Some(v.unwrap_or(0.0)),
+        };
+        let p_max_over_w: Vec<Option<f64>> = cells.values.iter().map(|c| over_w(&c.0)).collect();
+        let field: Vec<f64> = cells
+            .values
+            .iter()
+            .map(|c| over_w(&c.1).map_or(UNBOUNDED_OVER_W, |v| v.min(UNBOUNDED_OVER_W)))
+            .collect();
+        let (nx, ny) = (cells.x_values.len(), cells.y_values.len());
+        let (xa, ya) = (&spec.x_axis, &spec.y_axis);
+        let b = ContourBuilder::new(nx, ny, true);
+        let mut edges = vec![f64::MIN];
+        edges.extend(&spec.levels_over_w);
+        edges.push(0.5 * UNBOUNDED_OVER_W);
+        edges.push(f64::MAX);
+        // Finite values and levels cannot fail; nothing is drawn if they ever did.
+        let bands = b
+            .isobands(&field, &edges)
+            .unwrap_or_default()
+            .iter()
+            .map(|band| grid_polygons(band.geometry(), xa, ya))
+            .collect();
+        let mut levels = spec.levels_over_w.clone();
+        levels.push(0.5 * UNBOUNDED_OVER_W);
+        let mut lines: Vec<(f64, Paths)> = b
+            .lines(&field, &levels)
+            .unwrap_or_default()
+            .into_iter()
+            .map(|l| (l.threshold(), grid_lines(&l.into_inner().0, xa, ya)))
+            .collect();
+        let unbounded_edge = lines.pop().map(|(_, p)| p).unwrap_or_default();
+        Ok(VlocatorCapacity {
+            spec: spec.clone(),
+            title: scene.title.clone(),
+            locking_deg: locking_angle_deg(&spec.locator),
+            x_values: cells.x_values,
+            y_values: cells.y_values,
+            p_max_over_w,
+            bands,
+            lines,
+            unbounded_edge,
+        })
+    }
+
+    /// The data behind the chart as JSON (P_max / W per cell, null where unbounded).
+    pub fn data(&self, scene: &Scene) -> DataFile {
+        DataFile::json(&json!({
+            "scene": scene.name, "title": self.title, "locator": self.spec.locator,
+            "x_axis": self.spec.x_axis, "y_axis": self.spec.y_axis,
+            "index": "iy * nx + ix (x fastest)",
+            "nx": self.x_values.len(), "ny": self.y_values.len(),
+            "weight_n": self.spec.locator.weight_n(),
+            "self_locking_below_included_angle_deg": self.locking_deg,
+            "levels_over_w": self.spec.levels_over_w,
+            "p_max_over_w": self.p_max_over_w,
+        }))
+    }
+
+    /// Draws the map on `root`.
+    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+        let (w, _) = root.dim_in_pixel();
+        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
+        let x = PlotAxis::new(xa.min, xa.max, xa.scale, "included angle γ of the V (deg)");
+        let y = PlotAxis::new(
+            ya.min,
+            ya.max,
+            ya.scale,
+            "load direction φ (deg from +x; −90 pushes into the V, 0 sideways, 90 lifts)",
+        );
+        let entries = self.legend();
+        let rows = legend::rows_needed(root, &entries, w as i32 - 120)?;
+        let m = Margins {
+            top: 70,
+            bottom: 75 + (rows * legend::ROW_PX) as u32,
+            left: 95,
+            right: 40,
+        };
+        let chart = axes::build_chart(root, &x, &y, m)?;
+        let area = chart.plotting_area();
+        // Darker = holds more; the unbounded region stays white.
+        let mut greys = style::band_greys(self.spec.levels_over_w.len() + 1);
+        greys.push(PAPER);
+        for (rings, grey) in self.bands.iter().zip(&greys) {
+            for ring in rings {
+                area.draw(&Polygon::new(ring.clone(), grey.filled()))?;
+            }
+        }
+        axes::draw_grid(&chart, &x, &y)?;
+        for p in &self.unbounded_edge {
+            style::draw_line(area, p, LineKind::Dashed, INK)?;
+        }
+        for (_, paths) in &self.lines {
+            for p in paths {
+                style::draw_line(area, p, LineKind::Solid, INK)?;
+            }
+        }
+        self.draw_wedged_band(root, &chart, &x, &y)?;
+        self.draw_standard_vs(root, &chart, &x, &y)?;
+        for (level, paths) in &self.lines {
+            // Labelled off the sideways line (the standard V-blocks are read there), right
+            // of the locking band.
+            let clear = x.to_plot(self.locking_deg) + 3.0;
+            let pt = [-25.0, -50.0, 25.0, 50.0].into_iter().find_map(|h| {
+                nearest_to_height(paths, y.to_plot(h))
+                    .filter(|p| p.0 > clear && (p.1 - y.to_plot(h)).abs() < 2.0)
+            });
+            if let Some(&(u, v)) = pt {
+                let at = chart.backend_coord(&(u, v));
+                let s = format!("{} W", level_text(*level));
+                axes::boxed_text(
+                    root,
+                    &s,
+                    at,
+                    Pos::new(HPos::Center, VPos::Center),
+                    style::TICK_PX,
+                )?;
+            }
+        }
+        axes::draw_frame(root, &chart, &x, &y)?;
+        axes::draw_header(
+            root,
+            &self.title,
+            &locator_subtitle(&self.spec.locator, "load at any angle", true),
+        )?;
+        let (_, py) = area.get_pixel_range();
+        legend::draw_legend(root, &entries, 60, py.end + 62, w as i32 - 120)
+    }
+
+    /// The self-locking band, hatched, labelled with its bound.
+    fn draw_wedged_band<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &axes::Chart<DB>,
+        x: &PlotAxis,
+        y: &PlotAxis,
+    ) -> DrawResult<DB> {
+        let (xr, yr) = (x.plot_range(), y.plot_range());
+        let right = x.to_plot(self.locking_deg).min(xr.end);
+        if right <= xr.start {
+            return Ok(());
+        }
+        chart.plotting_area().draw(&Rectangle::new(
+            [(xr.start, yr.start), (right, yr.end)],
+            WEDGED_FILL.filled(),
+        ))?;
+        // Hatch at 45 deg, every 12 px, in the root's pixels (the root sits at the origin).
+        let (l, t) = chart.backend_coord(&(xr.start, yr.end));
+        let (r, b) = chart.backend_coord(&(right, yr.start));
+        let mut k = l - (b - t);
+        while k < r {
+            let x0 = k.max(l);
+            let x1 = (k + (b - t)).min(r);
+            if x1 > x0 {
+                root.draw(&PathElement::new(
+                    vec![(x0, b - (x0 - k)), (x1, b - (x1 - k))],
+                    INK.mix(0.35).stroke_width(1),
+                ))?;
+            }
+            k += 12;
+        }
+        let label = format!("wedged: self-locks below γ = {:.1}°", self.locking_deg);
+        let font = style::text(style::TICK_PX)
+            .transform(FontTransform::Rotate270)
+            .pos(Pos::new(HPos::Center, VPos::Center));
+        let (text_w, _) = root.estimate_text_size(&label, &style::text(style::TICK_PX))?;
+        if (text_w as i32) < b - t && r - l > 24 {
+            root.draw(&Rectangle::new(
+                [
+                    ((l + r) / 2 - 11, (t + b) / 2 - text_w as i32 / 2 - 4),
+                    ((l + r) / 2 + 11, (t + b) / 2 + text_w as i32 / 2 + 4),
+                ],
+                PAPER.filled(),
+            ))?;
+            root.draw(&Text::new(label, ((l + r) / 2, (t + b) / 2), font))?;
+        }
+        Ok(())
+    }
+
+    /// Dotted verticals at the standard V-blocks, labelled at the top.
+    fn draw_standard_vs<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &axes::Chart<DB>,
+        x: &PlotAxis,
+        y: &PlotAxis,
+    ) -> DrawResult<DB> {
+        let yr = y.plot_range();
+        for g in STANDARD_V_DEG
+            .into_iter()
+            .filter(|g| (x.min..=x.max).contains(g))
+        {
+            let u = x.to_plot(g);
+            style::draw_line(
+                chart.plotting_area(),
+                &[(u, yr.start), (u, yr.end)],
+                LineKind::Dashed,
+                INK,
+            )?;
+            let at = chart.backend_coord(&(u, yr.end));
+            let s = format!("{g:.0}° V-block");
+            axes::boxed_text(
+                root,
+                &s,
+                (at.0, at.1 + 14),
+                Pos::new(HPos::Center, VPos::Center),
+                style::TICK_PX,
+            )?;
+            // The read-off a designer wants first: what it holds sideways.
+            if (y.min..=y.max).contains(&0.0) {
+                let v = locator::capacity(&self.spec.locator.with_included_angle_same_tilt(g));
+                let s = match v.p_max_over_w {
+                    Some(c) => format!("sideways: {} W", style::fmt_num(c, 2)),
+                    None => "sideways: unbounded".to_string(),
+                };
+                let p = chart.backend_coord(&(u, y.to_plot(0.0)));
+                style::draw_marker(root, style::Marker::Dot, p)?;
+                axes::boxed_text(
+                    root,
+                    &s,
+                    (p.0 + 8, p.1 - 6),
+                    Pos::new(HPos::Left, VPos::Bottom),
+                    style::TICK_PX,
+                )?;
+            }
+        }
+        Ok(())
+    }
+
+    fn legend(&self) -> Vec<LegendEntry> {
+        let greys = style::band_greys(self.spec.levels_over_w.len() + 1);
+        vec![
+            LegendEntry::new(
+                Swatch::Patch(greys[greys.len() / 2]),
+                "holding capacity P_max / W: darker holds more",
+            ),
+            LegendEntry::new(
+                Swatch::Line(LineKind::Solid),
+                "P_max iso-lines (multiples of W)",
+            ),
+            LegendEntry::new(
+                Swatch::Patch(PAPER),
+                "white beyond the dashed line: every load held (it pushes into the V)",
+            ),
+            LegendEntry::new(
+                Swatch::Patch(WEDGED_FILL),
+                "hatched: the V self-locks, the part can jam",
+            ),
+            LegendEntry::new(
+                Swatch::Line(LineKind::Dashed),
+                "standard V-blocks, with P_max / W for a sideways load (φ = 0)",
+            ),
+        ]
+    }
+}
+
+/// The included angle below which a symmetric V with `p`'s friction self-locks, deg:
+/// 2 atan(min mu) free, atan mu1 + atan mu2 blocked.
+pub fn locking_angle_deg(p: &LocatorParams) -> f64 {
+    match p.rotation {
+        Rotation::Free => 2.0 * p.mu_left.min(p.mu_right).atan().to_degrees(),
+        Rotation::Blocked => (p.mu_left.atan() + p.mu_right.atan()).to_degrees(),
+    }
+}
+
+/// One line naming the locator's parameters for under the title; `with_mu` false when the
+/// chart varies the friction itself.
+pub fn locator_subtitle(p: &LocatorParams, load: &str, with_mu: bool) -> String {
+    let mu = if !with_mu {
+        "μ on both flanks as marked".to_string()
+    } else if p.mu_left == p.mu_right {
+        format!("μ = {} on both flanks", p.mu_left)
+    } else {
+        format!("μ = {} left, {} right", p.mu_left, p.mu_right)
+    };
+    let at = p
+        .load_at_rim_deg
+        .map_or("at the centre".to_string(), |psi| {
+            format!("at the rim, ψ = {psi}°")
+        });
+    let rotation = match p.rotation {
+        Rotation::Free => "free rotation (a real V-block)",
+        Rotation::Blocked => "rotation blocked (the paper's translational model)",
+    };
+    format!(
+        "exact support-cone model: {rotation}, {mu}, W = m g = {:.3} N, {load} {at}",
+        p.weight_n()
+    )
+}
+
+/// A level as a label: at most two decimals, no trailing zeros.
+fn level_text(v: f64) -> String {
+    let s = style::fmt_num(v, 2);
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    s.to_string()
+}
+
+/// The path point whose plot-y is nearest `v`.
+fn nearest_to_height(paths: &[Vec<(f64, f64)>], v: f64) -> Option<&(f64, f64)> {
+    paths
+        .iter()
+        .flatten()
+        .min_by(|a, b| (a.1 - v).abs().total_cmp(&(b.1 - v).abs()))
+}

@@ -1,0 +1,254 @@
+//! TOML text to settings, with messages that name the key (with its section), quote the value
+//! as written (cut to a readable length) and say what is expected.
+//!
+//! Three checks serde alone does not make:
+//! - a number written beyond the range of f64 (`1e400`, `1e-400`) is refused as written, never
+//!   read as `inf` or `0`;
+//! - a wrong type names its key: the path comes from `serde_path_to_error`;
+//! - a section or nested settings table given as an array (`scene = [1, 2]`) is refused: serde
+//!   would fill the struct's fields in order. Found by serialising the result back and
+//!   looking for arrays in the input where the settings have a table.
+
+use std::ops::Range;
+use std::path::Path;
+
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+use toml::Spanned;
+use toml::de::{DeTable, DeValue};
+
+use super::float_range_problem;
+use crate::error::{Error, Result, cut};
+
+/// Parses TOML text into `T` (see the module doc); errors carry file, line and column.
+pub fn parse_toml<T: DeserializeOwned + Serialize>(text: &str, path: &Path) -> Result<T> {
+    let at = |span: Option<Range<usize>>, message: String| {
+        let (line, column) = span.map_or((1, 1), |s| line_column(text, s.start));
+        Error::Config {
+            path: path.to_path_buf(),
+            line,
+            column,
+            message: message.trim().replace('\n', " "),
+        }
+    };
+    let doc = DeTable::parse(text).map_err(|e| at(e.span(), cut_quotes(e.message())))?;
+    if let Some((key, span, problem)) = float_problems(doc.get_ref(), "") {
+        return Err(at(
+            Some(span.clone()),
+            format!("{key} = {} {problem}", cut(&text[span])),
+        ));
+    }
+    let input: toml::Value =
+        toml::from_str(text).map_err(|e| at(e.span(), cut_quotes(e.message())))?;
+    let value: T = serde_path_to_error::deserialize(toml::Deserializer::from(doc.clone()))
+        .map_err(|e| {
+            let key = e.path().to_string();
+            let inner = e.into_inner();
+            let span = inner.span();
+            let key = match key.as_str() {
+                "" | "." => span
+                    .clone()
+                    .and_then(|s| key_at(doc.get_ref(), s.start, "")),
+                _ => Some(key),
+            };
+            if let Some(k) = key.as_deref().and_then(|k| seq_for_struct::<T>(&input, k)) {
+                let span = span_of(doc.get_ref(), &k);
+                let written = span.clone().map_or(String::new(), |s| text[s].to_string());
+                return at(span, not_a_table(&k, &written));
+            }
+            let message = cut_quotes(inner.message());
+            // A table's span is its header: quote values only. (Inside `[chart]`, an internally
+            // tagged enum, serde keeps no path: the message alone names the key there.)
+            let is_table = key.as_deref().is_some_and(|k| {
+                k.split('.')
+                    .try_fold(&input, |v, part| v.get(part))
+                    .is_some_and(toml::Value::is_table)
+            });
+            let written = span
+                .clone()
+                .map(|s| text[s].trim().to_string())
+                .filter(|w| Some(w.as_str()) != key.as_deref().and_then(|k| k.rsplit('.').next()))
+                .filter(|_| !is_table);
+            at(span, keyed(key.as_deref(), written.as_deref(), &message))
+        })?;
+    if let Some(key) = array_for_table(&input, &value, "") {
+        let span = span_of(doc.get_ref(), &key);
+        let written = span.clone().map_or(String::new(), |s| text[s].to_string());
+        return Err(at(span, not_a_table(&key, &written)));
+    }
+    Ok(value)
+}
+
+/// `key = written: message`, or the parts of it that are known.
+pub fn keyed(key: Option<&str>, written: Option<&str>, message: &str) -> String {
+    match (key, written) {
+        (Some(k), Some(w)) => format!("{} = {}: {message}", cut(k), cut(w)),
+        (Some(k), None) => format!("{}: {message}", cut(k)),
+        _ => message.to_string(),
+    }
+}
+
+/// The refusal of an array where settings have a table.
+pub fn not_a_table(key: &str, written: &str) -> String {
+    format!(
+        "{key} = {}: expected a table ([{key}] with one key per line, or {key} = {{ ... }}), \
+         found an array",
+        cut(written)
+    )
+}
+
+/// Where serde failed inside an array that stands for a table: the dotted key of that array.
+///
+/// serde fills a struct's fields in order from an array (`qp = [1, 2]` fails only because 1
+/// is not a bool). Put an empty table in the array's place: if `T` then reads past that key,
+/// the key wanted a table; a key that wants an array fails at the key itself.
+pub fn seq_for_struct<T: DeserializeOwned>(input: &toml::Value, err_path: &str) -> Option<String> {
+    let key = err_path.split_once('[').map_or(err_path, |(k, _)| k);
+    let mut probe = input.clone();
+    let mut slot = &mut probe;
+    for part in key.split('.') {
+        slot = slot.as_table_mut()?.get_mut(part)?;
+    }
+    if !slot.is_array() {
+        return None;
+    }
+    *slot = toml::Value::Table(toml::Table::new());
+    match serde_path_to_error::deserialize::<_, T>(probe) {
+        Ok(_) => Some(key.to_string()),
+        // A key that wants an array refuses the table at the key itself.
+        Err(e) => {
+            let wants_array =
+                e.path().to_string() == key && e.inner().to_string().contains("invalid type: map");
+            (!wants_array).then(|| key.to_string())
+        }
+    }
+}
+
+/// The dotted path of the first array in `input` where `value`, serialised, has a table.
+pub fn array_for_table<T: Serialize>(
+    input: &toml::Value,
+    value: &T,
+    prefix: &str,
+) -> Option<String> {
+    let back = toml::Value::try_from(value).ok()?;
+    first_array_for_table(input, &back, prefix)
+}
+
+fn first_array_for_table(input: &toml::Value, back: &toml::Value, prefix: &str) -> Option<String> {
+    match (input, back) {
+        (toml::Value::Array(_), toml::Value::Table(_)) => Some(prefix.to_string()),
+        (toml::Value::Table(i), toml::Value::Table(b)) => i.iter().find_map(|(k, v)| {
+            b.get(k)
+                .and_then(|bv| first_array_for_table(v, bv, &join(prefix, k)))
+        }),
+        (toml::Value::Array(i), toml::Value::Array(b)) => i
+            .iter()
+            .zip(b)
+            .enumerate()
+            .find_map(|(n, (iv, bv))| first_array_for_table(iv, bv, &format!("{prefix}[{n}]"))),
+        _ => None,
+    }
+}
+
+/// The first float written beyond f64's range: its dotted key, span and what is wrong.
+fn float_problems(t: &DeTable, prefix: &str) -> Option<(String, Range<usize>, &'static str)> {
+    t.iter().find_map(|(k, v)| {
+        let key = join(prefix, k.get_ref());
+        value_float_problem(v, key)
+    })
+}
+
+fn value_float_problem(
+    v: &Spanned<DeValue>,
+    key: String,
+) -> Option<(String, Range<usize>, &'static str)> {
+    match v.get_ref() {
+        DeValue::Float(f) => {
+            let raw = f.as_str().replace('_', "");
+            let x: f64 = raw.parse().ok()?;
+            float_range_problem(&raw, x).map(|p| (key, v.span(), p))
+        }
+        DeValue::Table(t) => float_problems(t, &key),
+        DeValue::Array(a) => a
+            .iter()
+            .enumerate()
+            .find_map(|(n, e)| value_float_problem(e, format!("{key}[{n}]"))),
+        _ => None,
+    }
+}
+
+fn join(prefix: &str, k: &str) -> String {
+    if prefix.is_empty() {
+        k.to_string()
+    } else {
+        format!("{prefix}.{k}")
+    }
+}
+
+/// The dotted key whose key or value spans byte `offset`, innermost.
+fn key_at(t: &DeTable, offset: usize, prefix: &str) -> Option<String> {
+    t.iter().find_map(|(k, v)| {
+        let key = join(prefix, k.get_ref());
+        if k.span().contains(&offset) {
+            return Some(key);
+        }
+        if !v.span().contains(&offset) {
+            return None;
+        }
+        match v.get_ref() {
+            DeValue::Table(inner) => key_at(inner, offset, &key).or(Some(key)),
+            _ => Some(key),
+        }
+    })
+}
+
+/// The span of the value at a dotted key (array indices are not followed).
+fn span_of(t: &DeTable, key: &str) -> Option<Range<usize>> {
+    let (head, rest) = match key.split_once('.') {
+        Some((h, r)) => (h, Some(r)),
+        None => (key, None),
+    };
+    let (_, v) = t.iter().find(|(k, _)| k.get_ref() == head)?;
+    match (rest, v.get_ref()) {
+        (None, _) => Some(v.span()),
+        (Some(r), DeValue::Table(inner)) => span_of(inner, r).or(Some(v.span())),
+        (Some(_), _) => Some(v.span()),
+    }
+}
+
+/// Quoted parts of a parser's message (`"..."`, `` `...` ``) cut to a readable length, and
+/// toml's "wanted string or table" (an enum) said as what is expected.
+pub fn cut_quotes(message: &str) -> String {
+    let message = message
+        .trim()
+        .replace('\n', " ")
+        .replace("wanted string or table", "expected a string or a table");
+    let mut out = String::new();
+    let mut rest = message.as_str();
+    while let Some(start) = rest.find(['"', '`']) {
+        let q = &rest[start..start + 1];
+        out.push_str(&rest[..=start]);
+        let after = &rest[start + 1..];
+        match after.find(q) {
+            Some(end) => {
+                out.push_str(&cut(&after[..end]));
+                out.push_str(q);
+                rest = &after[end + 1..];
+            }
+            None => {
+                out.push_str(&cut(after));
+                return out;
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+/// 1-based line and column of byte `offset` in `text`.
+fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let column = before.len() - before.rfind('\n').map_or(0, |i| i + 1) + 1;
+    (line, column)
+}

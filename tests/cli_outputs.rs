@@ -1,0 +1,298 @@
+//! Output files of every command (`solve --series`, `render`, `accuracy --out-dir`): never a
+//! special file or a link replaced, all or nothing, no temporary file left behind (issue 13).
+
+use std::os::unix::fs::FileTypeExt;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+#[path = "common/cli.rs"]
+mod cli_util;
+use cli_util::{jamchart, repo, stderr};
+
+fn scenes_dir() -> String {
+    repo().join("charts").display().to_string()
+}
+
+/// The names in `dir`, sorted.
+fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
+fn mkfifo(p: &Path) {
+    assert!(Command::new("mkfifo").arg(p).status().unwrap().success());
+}
+
+/// One command per output kind, writing `target` (a path under `dir`) as one of its outputs.
+fn commands(target: &str) -> Vec<Vec<String>> {
+    let s = |v: &[&str]| v.iter().map(|x| x.to_string()).collect::<Vec<String>>();
+    let (dir, file) = target.split_once('/').unwrap();
+    vec![
+        s(&[
+            "solve",
+            "--model",
+            "dynamics",
+            "--no-verify",
+            "--series",
+            target,
+        ]),
+        s(&[
+            "render",
+            file.split('.').next().unwrap(),
+            "--out",
+            dir,
+            "--scenes-dir",
+            &scenes_dir(),
+        ]),
+        s(&[
+            "accuracy",
+            "--tolerances",
+            "1e-3",
+            "--runs",
+            "1",
+            "--min-norm-tolerances",
+            "none",
+            "--map-cells",
+            "0",
+            "--penetrations",
+            "none",
+            "--methods",
+            "radau5",
+            "--nonsmooth-steps",
+            "none",
+            "--out-dir",
+            dir,
+        ]),
+    ]
+}
+
+/// Regression (issue 13, "--series replaces a special file"): `mknod X/full c 1 7` then
+/// `solve --series X/full` left a 663 kB regular file in its place; a symlink and a directory
+/// fared no better. Every output path of every command must refuse them and leave them be.
+#[test]
+fn output_files_never_replace_a_special_file_or_a_symlink() {
+    for (cmd_index, target) in ["x/full.csv", "x/fig7b.svg", "x/accuracy.json"]
+        .into_iter()
+        .enumerate()
+    {
+        let cmd = &commands(target)[cmd_index];
+        for kind in ["char-device", "symlink", "dangling-symlink", "directory"] {
+            let dir = tempfile::tempdir().unwrap();
+            std::fs::create_dir(dir.path().join("x")).unwrap();
+            let p = dir.path().join(target);
+            let kept = dir.path().join("kept.csv");
+            std::fs::write(&kept, "keep me").unwrap();
+            match kind {
+                // /dev/full (1:7): neither a terminal nor /dev/null. Needs root, as the tests run.
+                "char-device" => assert!(
+                    Command::new("mknod")
+                        .args([p.to_str().unwrap(), "c", "1", "7"])
+                        .status()
+                        .unwrap()
+                        .success()
+                ),
+                "symlink" => std::os::unix::fs::symlink(&kept, &p).unwrap(),
+                "dangling-symlink" => std::os::unix::fs::symlink("nowhere", &p).unwrap(),
+                _ => std::fs::create_dir(&p).unwrap(),
+            }
+            let args: Vec<&str> = cmd.iter().map(String::as_str).collect();
+            let out = jamchart(dir.path(), &args);
+            let err = stderr(&out);
+            assert_eq!(out.status.code(), Some(2), "{kind} {args:?}: {err}");
+            assert!(err.contains("refusing to write"), "{kind} {args:?}: {err}");
+            let m = std::fs::symlink_metadata(&p).unwrap();
+            let same = match kind {
+                "char-device" => m.file_type().is_char_device(),
+                "directory" => m.is_dir(),
+                _ => m.file_type().is_symlink(),
+            };
+            assert!(same, "{kind} {args:?}: the node was replaced");
+            assert_eq!(std::fs::read_to_string(&kept).unwrap(), "keep me");
+            assert_eq!(
+                names(&dir.path().join("x")),
+                [target.split_once('/').unwrap().1]
+            );
+        }
+    }
+}
+
+/// FIFOs and /dev/null are streams: written through, left in place.
+#[test]
+fn output_streams_are_written_through() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("series.csv");
+    mkfifo(&fifo);
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read_to_string(fifo).unwrap())
+    };
+    let args = [
+        "solve",
+        "--model",
+        "dynamics",
+        "--no-verify",
+        "--series",
+        "series.csv",
+    ];
+    let out = jamchart(dir.path(), &args);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let csv = reader.join().unwrap();
+    assert!(csv.starts_with("t_s,theta_deg,x_mm"), "{csv:.80}");
+    assert!(csv.lines().count() > 100);
+    assert!(
+        std::fs::symlink_metadata(&fifo)
+            .unwrap()
+            .file_type()
+            .is_fifo()
+    );
+    let out = jamchart(
+        dir.path(),
+        &["solve", "--model", "dynamics", "--series", "/dev/null"],
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(
+        std::fs::metadata("/dev/null")
+            .unwrap()
+            .file_type()
+            .is_char_device()
+    );
+}
+
+/// Regression (issue 13, "a failed command leaves a partial set"): render onto a full disk
+/// failed on accuracy.svg but left complete .csv files of other scenes; accuracy --out-dir left
+/// .md and .csv when .json failed. Here a directory squats one name of the set: the command
+/// fails and the folder is as it was.
+#[test]
+fn a_failed_command_leaves_the_output_folder_as_it_found_it() {
+    let cases: [(&[&str], &str); 2] = [
+        (&["render", "fig7a", "fig7b", "--out", "o"], "o/fig7b.png"),
+        (
+            &[
+                "accuracy",
+                "--tolerances",
+                "1e-3",
+                "--runs",
+                "1",
+                "--min-norm-tolerances",
+                "none",
+                "--map-cells",
+                "0",
+                "--penetrations",
+                "none",
+                "--methods",
+                "radau5",
+                "--nonsmooth-steps",
+                "none",
+                "--out-dir",
+                "o",
+            ],
+            "o/accuracy.json",
+        ),
+    ];
+    for (args, squat) in cases {
+        let dir = tempfile::tempdir().unwrap();
+        let o = dir.path().join("o");
+        std::fs::create_dir(&o).unwrap();
+        std::fs::write(o.join("fig7a.csv"), "old").unwrap();
+        std::fs::write(o.join("accuracy.md"), "old").unwrap();
+        std::fs::create_dir(dir.path().join(squat)).unwrap();
+        let mut args = args.to_vec();
+        let sd = scenes_dir();
+        if args[0] == "render" {
+            args.extend(["--scenes-dir", &sd]);
+        }
+        let before = names(&o);
+        let out = jamchart(dir.path(), &args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(names(&o), before, "{args:?}: {}", stderr(&out));
+        assert_eq!(std::fs::read_to_string(o.join("fig7a.csv")).unwrap(), "old");
+        assert_eq!(
+            std::fs::read_to_string(o.join("accuracy.md")).unwrap(),
+            "old"
+        );
+    }
+}
+
+/// The temporary files of a render that is still writing, in `o`.
+fn temporaries(o: &Path) -> Vec<String> {
+    names(o)
+        .into_iter()
+        .filter(|n| n.starts_with('.') && n.ends_with(".tmp"))
+        .collect()
+}
+
+/// Regression (issue 13, "temporary files pile up"): a render killed by SIGTERM left
+/// `.fig3.json.5971.12.tmp` behind. A FIFO nobody reads as one output holds the render with
+/// its other files in temporaries; SIGTERM or SIGINT must remove them.
+#[test]
+fn a_killed_render_leaves_no_temporary_file() {
+    for signal in ["TERM", "INT"] {
+        let dir = tempfile::tempdir().unwrap();
+        let o = dir.path().join("o");
+        std::fs::create_dir(&o).unwrap();
+        mkfifo(&o.join("fig7b.svg"));
+        let mut child = Command::new(env!("CARGO_BIN_EXE_jamchart"))
+            .args([
+                "render",
+                "fig7b",
+                "--out",
+                "o",
+                "--scenes-dir",
+                &scenes_dir(),
+            ])
+            .current_dir(dir.path())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        let t0 = Instant::now();
+        while temporaries(&o).len() < 2 {
+            assert!(
+                t0.elapsed() < Duration::from_secs(60),
+                "no temporaries appeared"
+            );
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        let kill = Command::new("kill")
+            .args([format!("-{signal}"), child.id().to_string()])
+            .status()
+            .unwrap();
+        assert!(kill.success());
+        let status = child.wait().unwrap();
+        assert!(!status.success(), "SIG{signal}: {status:?}");
+        assert_eq!(names(&o), ["fig7b.svg"], "SIG{signal}");
+    }
+}
+
+/// Temporaries of our naming whose process is gone (killed by SIGKILL) are swept by the next
+/// write into the folder; a live process's are left alone.
+#[test]
+fn stale_temporaries_of_ours_are_swept() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = dir.path().join("o");
+    std::fs::create_dir(&o).unwrap();
+    let mut child = Command::new("true").spawn().unwrap();
+    let dead = child.id();
+    child.wait().unwrap();
+    let stale: PathBuf = o.join(format!(".fig3.json.{dead}.12.tmp"));
+    let live = o.join(format!(".fig3.json.{}.0.tmp", std::process::id()));
+    std::fs::write(&stale, "x").unwrap();
+    std::fs::write(&live, "x").unwrap();
+    let out = jamchart(
+        dir.path(),
+        &[
+            "render",
+            "fig7b",
+            "--out",
+            "o",
+            "--scenes-dir",
+            &scenes_dir(),
+        ],
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(!stale.exists() && live.exists());
+}
