@@ -197,20 +197,31 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
             &svg,
             &png,
         ];
-        let set: Vec<Output> = out_paths
-            .iter()
-            .zip(contents)
-            // Without the map (--map-cells 0) its file is not written.
-            .filter(|(path, _)| map.is_some() || !path.ends_with("accuracy_map.csv"))
-            .map(|(path, bytes)| Output { path, bytes })
-            .collect();
-        write_all(&set)?;
+        // Without the map (--map-cells 0) its file is not written.
+        write_set(&out_paths, &contents, |p| {
+            map.is_some() || !p.ends_with("accuracy_map.csv")
+        })?;
     }
     Ok(match a.format {
         TableFormat::Text => md,
         TableFormat::Csv => csv,
         TableFormat::Json => json,
     })
+}
+
+/// Writes `contents[i]` to `paths[i]` where `keep` says so, all or nothing.
+pub(crate) fn write_set(
+    paths: &[PathBuf],
+    contents: &[&[u8]],
+    keep: impl Fn(&std::path::Path) -> bool,
+) -> Result<()> {
+    let set: Vec<Output> = paths
+        .iter()
+        .zip(contents)
+        .filter(|(path, _)| keep(path))
+        .map(|(path, bytes)| Output { path, bytes })
+        .collect();
+    write_all(&set)
 }
 
 /// The serde spelling of a model (as in JSON and CSV).

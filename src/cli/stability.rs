@@ -6,10 +6,10 @@ use std::path::PathBuf;
 use clap::Args;
 use serde::Serialize;
 
-use super::accuracy::{fixed, model_name, sci, to_csv};
+use super::accuracy::{fixed, model_name, sci, to_csv, write_set};
 use super::args::{SceneArgs, TableFormat};
 use super::dynamics::DynamicsArgs;
-use crate::atomic::{Output, check_all, write_all};
+use crate::atomic::check_all;
 use crate::error::{Error, Result};
 use crate::model::JamStatus;
 use crate::models::ModelKind;
@@ -102,12 +102,7 @@ pub fn run(a: &StabilityArgs) -> Result<String> {
     let json = serde_json::to_string_pretty(&report).expect("plain structs serialise") + "\n";
     if !out_paths.is_empty() {
         let contents = [md.as_bytes(), csv.as_bytes(), json.as_bytes()];
-        let set: Vec<Output> = out_paths
-            .iter()
-            .zip(contents)
-            .map(|(path, bytes)| Output { path, bytes })
-            .collect();
-        write_all(&set)?;
+        write_set(&out_paths, &contents, |_| true)?;
     }
     Ok(match a.format {
         TableFormat::Text => md,
