@@ -108,6 +108,7 @@ mod atomic;
 pub mod charts;
 mod cli;
 pub mod config;
+pub mod csv_out;
 pub mod dynamics;
 pub mod error;
 pub mod grid;

@@ -14,7 +14,7 @@ fn solve_reads_off_the_papers_example() {
     assert!(out.contains("theta_jam = 44.646 deg"), "{out}");
     assert!(out.contains("x_jam     = 24.355 mm"), "{out}");
     assert!(
-        out.contains("x = 25.000 mm"),
+        out.contains("x_rigid   = 25.000 mm"),
         "the F -> inf limit r/mu: {out}"
     );
 }

@@ -70,7 +70,9 @@ fn series_is_written_whole_with_units_in_the_header() {
     let mut lines = csv.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "t_s,theta_deg,x_mm,x_dot_mm_s,penetration_mm,normal_n,palm_friction_n,ground_normal_n,ground_friction_n"
+        "t_s,theta_deg,x_mm,x_dot_mm_s,geometric_speed_mm_s,touching_x_mm,penetration_mm,normal_n,\
+         palm_friction_n,ground_normal_n,ground_friction_n",
+        "the columns of render's fig5.csv"
     );
     let rows: Vec<Vec<f64>> = lines
         .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
@@ -78,7 +80,7 @@ fn series_is_written_whole_with_units_in_the_header() {
     assert!(rows.len() > 7000, "{}", rows.len());
     assert!(
         rows.iter()
-            .all(|r| r.len() == 9 && r.iter().all(|v| v.is_finite()))
+            .all(|r| r.len() == 11 && r.iter().all(|v| v.is_finite()))
     );
     // Nothing but the file is left behind (the temp file was renamed).
     let names: Vec<_> = std::fs::read_dir(dir.path())

@@ -141,6 +141,13 @@ fn output_streams_are_written_through() {
     ];
     let out = jamchart(dir.path(), &args);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    // Checked before the join: a binary that replaced the FIFO would leave the reader blocked.
+    assert!(
+        std::fs::symlink_metadata(&fifo)
+            .unwrap()
+            .file_type()
+            .is_fifo()
+    );
     let csv = reader.join().unwrap();
     assert!(csv.starts_with("t_s,theta_deg,x_mm"), "{csv:.80}");
     assert!(csv.lines().count() > 100);

@@ -33,7 +33,7 @@ fn render_one_scene_writes_picture_and_data_and_nothing_else() {
         .collect();
     files.sort();
     // No temporary file is left behind, and no other scene is rendered.
-    assert_eq!(files, ["fig7b.csv", "fig7b.png", "fig7b.svg"]);
+    assert_eq!(files, ["fig7b.csv", "fig7b.png", "fig7b.svg", "index.html"]);
     let csv = std::fs::read_to_string(dir.path().join("o/fig7b.csv")).unwrap();
     assert!(
         csv.starts_with("layer,force_n,x_jam_mm,theta_jam_deg\n"),
@@ -154,7 +154,7 @@ fn a_scene_named_twice_is_rendered_once() {
         .map(|e| e.unwrap().file_name().to_string_lossy().to_string())
         .collect();
     files.sort();
-    assert_eq!(files, ["fig7a.csv", "fig7a.png", "fig7a.svg"]);
+    assert_eq!(files, ["fig7a.csv", "fig7a.png", "fig7a.svg", "index.html"]);
 }
 
 /// Scenes used to be read from ./charts, so `render` failed outside the repository and after
@@ -174,10 +174,15 @@ fn render_in_an_empty_folder_draws_every_built_in_scene() {
     );
     let out = jamchart(dir.path(), &["render"]);
     assert!(out.status.success(), "{}", stderr(&out));
+    let index = std::fs::read_to_string(dir.path().join("out/index.html")).unwrap();
     for n in &names {
         for ext in ["svg", "png"] {
             let f = dir.path().join(format!("out/{n}.{ext}"));
             assert!(f.exists(), "{} missing", f.display());
+            assert!(
+                index.contains(&format!("href=\"{n}.{ext}\"")),
+                "index.html lacks {n}.{ext}"
+            );
         }
     }
 }
@@ -201,7 +206,47 @@ fn own_scene_file_renders_from_its_path_and_set_overrides_it() {
     let b = std::fs::read_to_string(dir.path().join("b/shaft.csv")).unwrap();
     assert_eq!(a.lines().count(), b.lines().count());
     assert_ne!(a, b, "--set force_n=80 changed nothing");
+    // fig3's axis mu sets both frictions: a fixed palm friction needs a mu_ground axis.
+    let palm = ["render", "fig3", "--set", "mu_palm=0.6", "--out", "c"];
+    let refused = jamchart(dir.path(), &palm);
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(
+        stderr(&refused).contains("chart.x_axis.param=mu_ground"),
+        "{}",
+        stderr(&refused)
+    );
+    let fixed = [
+        &palm[..],
+        &["--set", "chart.x_axis.param=mu_ground", "--format", "svg"],
+    ]
+    .concat();
+    let out = jamchart(dir.path(), &fixed);
+    assert!(out.status.success(), "{}", stderr(&out));
     let bad = jamchart(dir.path(), &["render", "fig3", "--set", "radious=3"]);
     assert_eq!(bad.status.code(), Some(2));
     assert!(stderr(&bad).contains("radius_mm"), "{}", stderr(&bad));
+}
+
+/// Data files held `2.4746092876045168e1`, `4.08e-1` and `-0.00000`; a spreadsheet wants plain
+/// decimals. Every numeric cell of these CSVs is one, and no cell is a negative zero.
+#[test]
+fn csv_cells_are_plain_decimals() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = jamchart(
+        dir.path(),
+        &["render", "fig4", "fig5", "fig7b", "--format", "svg"],
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    for name in ["fig4.csv", "fig5.csv", "fig7b.csv"] {
+        let text = std::fs::read_to_string(dir.path().join("out").join(name)).unwrap();
+        for cell in text.lines().skip(1).flat_map(|l| l.split(',')) {
+            if let Ok(v) = cell.parse::<f64>() {
+                let zero_ok = v != 0.0 || cell == "0";
+                assert!(
+                    !cell.contains(['e', 'E']) && zero_ok,
+                    "{name}: cell {cell:?}"
+                );
+            }
+        }
+    }
 }

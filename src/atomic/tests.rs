@@ -101,13 +101,14 @@ fn a_fifo_is_written_through_and_stays_a_fifo() {
         },
     ])
     .unwrap();
-    assert_eq!(reader.join().unwrap(), b"through the pipe");
+    // Checked before the join: had the FIFO been replaced, the reader would stay blocked.
     assert!(
         std::fs::symlink_metadata(&fifo)
             .unwrap()
             .file_type()
             .is_fifo()
     );
+    assert_eq!(reader.join().unwrap(), b"through the pipe");
     assert_eq!(std::fs::read(&file).unwrap(), b"file");
     assert_eq!(names(dir.path()), ["f.csv", "p"]);
 }

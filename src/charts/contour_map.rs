@@ -16,9 +16,10 @@ use super::axes::{self, DrawResult, Margins, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
 use super::spec::Scene;
-use super::style::{self, INK, LineKind};
+use super::style::{self, LineKind};
 use super::{
-    DataFile, axis_label, grid_lines, grid_polygons, param_symbol, param_unit, scene_subtitle,
+    DataFile, axis_label, cells_csv, grid_lines, grid_polygons, param_symbol, param_unit,
+    scene_subtitle,
 };
 use crate::error::{Error, Result};
 use crate::grid::{self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, Quantity};
@@ -253,6 +254,21 @@ impl ContourMap {
         }))
     }
 
+    /// The cells as long-format CSV: the axis values, x_jam_mm and, where computed,
+    /// theta_jam_deg and x_gap_to_rigid_limit_pct.
+    pub fn cells(&self) -> DataFile {
+        let g = &self.grid;
+        let mut columns = Vec::new();
+        columns.extend(g.x_jam_mm.clone().map(|v| ("x_jam_mm", v)));
+        columns.extend(g.theta_jam_deg.clone().map(|v| ("theta_jam_deg", v)));
+        let gap = self
+            .gap_pct
+            .as_ref()
+            .map(|v| v.iter().copied().map(Some).collect());
+        columns.extend(gap.map(|v| ("x_gap_to_rigid_limit_pct", v)));
+        cells_csv(g, self.spec.x_axis.param, self.spec.y_axis.param, &columns)
+    }
+
     /// Draws the map on `root`.
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
         let (w, _) = root.dim_in_pixel();
@@ -270,7 +286,7 @@ impl ContourMap {
         let chart = axes::build_chart(root, &x, &y, m)?;
         let area = chart.plotting_area();
         // One band below the first level, one between each pair, one above the last.
-        let greys = style::band_greys(self.spec.x_jam_levels_mm.len() + 1);
+        let greys = style::band_colors(self.spec.x_jam_levels_mm.len() + 1);
         for (rings, grey) in self.bands.iter().zip(&greys) {
             for ring in rings {
                 area.draw(&Polygon::new(ring.clone(), grey.filled()))?;
@@ -284,7 +300,7 @@ impl ContourMap {
             .into();
         for (level, paths) in &self.x_jam_lines {
             for p in paths {
-                style::draw_line(area, p, LineKind::Solid, INK)?;
+                style::draw_line(area, p, LineKind::Solid, LineKind::Solid.color())?;
             }
             // Right of the plot where lines are flat; further left for lines that leave the
             // plot there (near an edge).
@@ -320,7 +336,12 @@ impl ContourMap {
         let levels = &self.spec.theta_jam_levels_deg;
         for (i, (level, paths)) in self.theta_lines.iter().enumerate() {
             for p in paths {
-                style::draw_line(chart.plotting_area(), p, LineKind::Dotted, INK)?;
+                style::draw_line(
+                    chart.plotting_area(),
+                    p,
+                    LineKind::Dotted,
+                    LineKind::Dotted.color(),
+                )?;
             }
             let frac = 0.95 - 0.06 * (levels.len() - 1 - i) as f64;
             if let Some((_, at)) = at_height(paths, chart, y, frac) {
@@ -346,7 +367,12 @@ impl ContourMap {
         let xa = &self.spec.x_axis;
         for paths in &self.settle_lines {
             for p in paths {
-                style::draw_line(chart.plotting_area(), p, LineKind::Dashed, INK)?;
+                style::draw_line(
+                    chart.plotting_area(),
+                    p,
+                    LineKind::Dashed,
+                    LineKind::Dashed.color(),
+                )?;
             }
             let Some(((u, _), at)) = at_height(paths, chart, y, 0.06) else {
                 continue;

@@ -14,6 +14,7 @@ use super::spec::Scene;
 use super::style::{LineKind, Marker};
 use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
 use super::{DataFile, scene_subtitle_with};
+use crate::csv_out::{Dec, to_csv};
 use crate::error::{Error, Result};
 use crate::grid::AxisScale;
 use crate::minnorm::{HoldStatus, TracePoint};
@@ -181,14 +182,23 @@ impl Convergence {
 
     /// The trace as CSV: the palm angle (deg), iteration, objective (N^2), residuals.
     pub fn data(&self, _scene: &Scene) -> DataFile {
-        let mut s = String::from("theta_deg,iteration,objective_n2,res_primal,res_dual\n");
-        for p in &self.trace {
-            s.push_str(&format!(
-                "{},{},{},{:e},{:e}\n",
-                self.theta_deg, p.iteration, p.objective_n2, p.res_primal, p.res_dual
-            ));
+        /// One interior-point iteration at theta_jam.
+        #[derive(Serialize)]
+        struct Row {
+            theta_deg: Dec,
+            iteration: usize,
+            objective_n2: Dec,
+            res_primal: Dec,
+            res_dual: Dec,
         }
-        DataFile::csv(s)
+        let rows = self.trace.iter().map(|p| Row {
+            theta_deg: Dec(self.theta_deg),
+            iteration: p.iteration as usize,
+            objective_n2: Dec(p.objective_n2),
+            res_primal: Dec(p.res_primal),
+            res_dual: Dec(p.res_dual),
+        });
+        DataFile::csv(to_csv(rows))
     }
 
     /// Draws the two panels.

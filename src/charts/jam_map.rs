@@ -18,7 +18,7 @@ use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
-use super::{DataFile, axis_label, grid_polygons, param_symbol, scene_subtitle};
+use super::{DataFile, axis_label, cells_csv, grid_polygons, param_symbol, scene_subtitle};
 use crate::error::{Error, Result};
 use crate::grid::{
     self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, Quantity,
@@ -174,6 +174,14 @@ impl JamMap {
         DataFile::json(&doc)
     }
 
+    /// The cells of the margin grid as long-format CSV (None when the regions are not drawn).
+    pub fn cells(&self) -> Option<DataFile> {
+        let g = self.grid.as_ref()?;
+        let margin = g.margin_n.as_ref()?.iter().copied().map(Some).collect();
+        let (x, y) = (self.spec.x_axis.param, self.spec.y_axis.param);
+        Some(cells_csv(g, x, y, &[("margin_n", margin)]))
+    }
+
     fn axes(&self) -> (PlotAxis, PlotAxis) {
         let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
         (
@@ -239,7 +247,7 @@ impl JamMap {
             .iter()
             .filter_map(|(v, p)| p.theta_jam_deg.map(|t| (x.to_plot(*v), y.to_plot(t))))
             .collect();
-        style::draw_line(area, &curve, LineKind::Solid, INK)?;
+        style::draw_line(area, &curve, LineKind::Solid, LineKind::Solid.color())?;
         self.draw_region_labels(root, &chart)?;
         axes::draw_frame(root, &chart, &x, &y)?;
         if self.spec.has(JamMapLayer::PositionScale) {
@@ -337,7 +345,7 @@ impl JamMap {
         let at = |a: f64, b: f64| axes::pixel(c, x, y, a, b);
         let (corner, bottom, left, right) = (at(v, t), at(v, y.min), at(x.min, t), at(x.max, t));
         for line in [[bottom, corner], [corner, left], [corner, right]] {
-            style::draw_line(root, &line, LineKind::Dashed, INK)?;
+            style::draw_line(root, &line, LineKind::Dashed, LineKind::Dashed.color())?;
         }
         root.draw(&Circle::new(corner, 5, INK.filled()))?;
         let num = |s: &str, p: (i32, i32)| {

@@ -85,10 +85,12 @@ pub fn draw_legend<DB: DrawingBackend>(
     for (e, (x, row)) in entries.iter().zip(layout(root, entries, left, width)?) {
         let y = top + row * ROW_PX + ROW_PX / 2;
         match e.swatch {
-            Swatch::Line(kind) => style::draw_line(root, &[(x, y), (x + 32, y)], kind, INK)?,
+            Swatch::Line(kind) => {
+                style::draw_line(root, &[(x, y), (x + 32, y)], kind, kind.color())?
+            }
             Swatch::Marker(m) => style::draw_marker(root, m, (x + 16, y))?,
             Swatch::LineMarker(kind, m) => {
-                style::draw_line(root, &[(x, y), (x + 32, y)], kind, INK)?;
+                style::draw_line(root, &[(x, y), (x + 32, y)], kind, kind.color())?;
                 style::draw_marker(root, m, (x + 16, y))?;
             }
             Swatch::Patch(c) => {

@@ -34,6 +34,7 @@ pub mod builtin;
 pub mod contour_map;
 pub mod convergence;
 pub mod error_time;
+pub mod gallery;
 pub mod jam_map;
 pub mod legend;
 pub mod models;
@@ -54,6 +55,7 @@ use geo_types::{MultiLineString, MultiPolygon};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use crate::csv_out::{Dec, dec, to_csv_with_header};
 use crate::error::{Error, Result};
 use crate::grid::{GridAxis, GridParam};
 use crate::model::SceneParams;
@@ -102,11 +104,11 @@ impl DataFile {
         }
     }
 
-    /// CSV text.
-    pub fn csv(text: String) -> Self {
+    /// CSV bytes (see [`crate::csv_out`]).
+    pub fn csv(bytes: Vec<u8>) -> Self {
         DataFile {
             extension: "csv",
-            bytes: text.into_bytes(),
+            bytes,
         }
     }
 }
@@ -122,6 +124,8 @@ pub struct Rendered {
     pub png: Option<Vec<u8>>,
     /// The data behind the chart.
     pub data: DataFile,
+    /// A map's cells as long-format CSV (one row per cell), beside its JSON.
+    pub cells: Option<DataFile>,
 }
 
 /// A computed chart of any kind.
@@ -188,6 +192,16 @@ impl Chart {
         }
     }
 
+    /// A map's cells as long-format CSV: the two parameters and each quantity per cell, units in
+    /// the header; None for charts whose data is CSV already.
+    pub fn cells(&self) -> Option<DataFile> {
+        match self {
+            Chart::JamMap(c) => c.cells(),
+            Chart::ContourMap(c) => Some(c.cells()),
+            _ => None,
+        }
+    }
+
     /// The data behind the chart.
     pub fn data(&self, scene: &Scene) -> DataFile {
         match self {
@@ -244,6 +258,7 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
         svg: svg?,
         png: png?,
         data: chart.data(scene),
+        cells: chart.cells(),
     })
 }
 
@@ -331,6 +346,27 @@ pub fn scene_subtitle_with(source: &str, p: &SceneParams, swept: &[GridParam]) -
         .map(|(_, s)| s)
         .collect();
     format!("{source}: {}", kept.join(", "))
+}
+
+/// The cells of `grid` as long-format CSV: one row per cell (x fastest), the two axis values then
+/// each `(column, values)` (an empty cell where a value is None).
+pub fn cells_csv(
+    grid: &crate::grid::GridResult,
+    x: GridParam,
+    y: GridParam,
+    columns: &[(&str, Vec<Option<f64>>)],
+) -> DataFile {
+    let mut header = vec![x.as_str(), y.as_str()];
+    header.extend(columns.iter().map(|(name, _)| *name));
+    let rows = grid.y_values.iter().enumerate().flat_map(|(iy, yv)| {
+        grid.x_values.iter().enumerate().map(move |(ix, xv)| {
+            let i = grid.index(ix, iy);
+            let mut row = vec![Some(Dec(*xv)), Some(Dec(*yv))];
+            row.extend(columns.iter().map(|(_, v)| dec(v[i])));
+            row
+        })
+    });
+    DataFile::csv(to_csv_with_header(&header, rows))
 }
 
 /// The exterior rings of contour polygons, mapped from the contour crate's grid coordinates to

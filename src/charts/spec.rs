@@ -39,6 +39,7 @@ use crate::config::{
 };
 use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
+use crate::grid::GridParam;
 use crate::limits;
 use crate::minnorm::MinNormSettings;
 use crate::model::SceneParams;
@@ -300,7 +301,33 @@ fn parse_scene(
 
 impl Scene {
     /// Checks the chart's settings against the scene's parameters.
+    ///
+    /// An axis `mu` sets both frictions, so it is refused when the scene's frictions differ
+    /// (say `--set mu_palm=0.6` on fig3): the chart would draw mu_palm = mu while the read-off
+    /// used 0.6.
     pub fn validate_chart(&self) -> Result<()> {
+        let axes: Vec<(&str, GridParam)> = match &self.chart {
+            ChartSpec::JamMap(s) => vec![("x_axis", s.x_axis.param), ("y_axis", s.y_axis.param)],
+            ChartSpec::Sweep(s) => vec![("axis", s.axis.param)],
+            ChartSpec::ContourMap(s) => {
+                vec![("x_axis", s.x_axis.param), ("y_axis", s.y_axis.param)]
+            }
+            _ => Vec::new(),
+        };
+        let p = &self.params;
+        if let Some((axis, _)) = axes.iter().find(|(_, q)| *q == GridParam::Mu)
+            && p.mu_ground != p.mu_palm
+        {
+            return Err(Error::invalid(
+                &format!("chart.{axis}.param"),
+                "mu",
+                format!(
+                    "a mu axis sets both frictions, but this scene has mu_ground = {} and \
+                     mu_palm = {}; vary one of them instead, e.g. --set chart.{axis}.param=mu_ground",
+                    p.mu_ground, p.mu_palm
+                ),
+            ));
+        }
         match &self.chart {
             ChartSpec::JamMap(s) => s.validate(&self.params),
             ChartSpec::Sweep(s) => s.validate(&self.params),

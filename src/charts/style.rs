@@ -1,7 +1,8 @@
-//! The one visual style of every chart: embedded font, greys, line kinds and markers.
+//! The one visual style of every chart: embedded font, colours, line kinds and markers.
 //!
-//! Everything reads in greyscale print: regions are light greys, curves are black and told apart
-//! by dash pattern and width, point sets by marker shape and fill.
+//! Colour-blind safe: curves and markers take the Okabe-Ito palette, filled bands a sequential
+//! part of viridis. Every distinction is also made without colour, so a greyscale print still
+//! reads: curves differ by dash pattern and width, point sets by marker shape and fill.
 
 use std::sync::Once;
 
@@ -42,8 +43,22 @@ pub const INK: RGBColor = RGBColor(0, 0, 0);
 pub const GRID_MAJOR: RGBColor = RGBColor(190, 190, 190);
 /// Minor grid lines.
 pub const GRID_MINOR: RGBColor = RGBColor(228, 228, 228);
-/// The jammed region of a map.
-pub const JAM_FILL: RGBColor = RGBColor(178, 178, 178);
+/// The jammed region of a map: a light tint of Okabe-Ito vermillion (#D55E00), dark enough to
+/// stay apart from white in greyscale (luma about 200).
+pub const JAM_FILL: RGBColor = RGBColor(240, 190, 160);
+
+/// The Okabe-Ito palette (Okabe and Ito, "Color Universal Design", 2008): black, orange, sky
+/// blue, bluish green, yellow, blue, vermillion, reddish purple.
+pub const OKABE_ITO: [RGBColor; 8] = [
+    RGBColor(0, 0, 0),
+    RGBColor(230, 159, 0),
+    RGBColor(86, 180, 233),
+    RGBColor(0, 158, 115),
+    RGBColor(240, 228, 66),
+    RGBColor(0, 114, 178),
+    RGBColor(213, 94, 0),
+    RGBColor(204, 121, 167),
+];
 /// The sliding region of a map.
 pub const SLIDE_FILL: RGBColor = RGBColor(255, 255, 255);
 /// Background of labels drawn over data.
@@ -54,18 +69,41 @@ pub fn text(size_px: f64) -> TextStyle<'static> {
     (FONT, size_px).into_font().color(&INK)
 }
 
-/// `n` greys from light to dark for filled bands (greyscale-safe sequential scale).
-pub fn band_greys(n: usize) -> Vec<RGBColor> {
+/// Viridis (matplotlib's perceptually uniform map) at t = 0, 1/8, ..., 1.
+const VIRIDIS: [(u8, u8, u8); 9] = [
+    (68, 1, 84),
+    (71, 44, 122),
+    (59, 81, 139),
+    (44, 113, 142),
+    (33, 144, 141),
+    (39, 173, 129),
+    (92, 200, 99),
+    (170, 220, 50),
+    (253, 231, 37),
+];
+
+/// Viridis at `t` in [0, 1], linear between its anchors.
+pub fn viridis(t: f64) -> RGBColor {
+    let x = t.clamp(0.0, 1.0) * 8.0;
+    let i = (x.floor() as usize).min(7);
+    let f = x - i as f64;
+    let (a, b) = (VIRIDIS[i], VIRIDIS[i + 1]);
+    let mix = |p: u8, q: u8| (p as f64 + (q as f64 - p as f64) * f).round() as u8;
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// `n` colours from light to dark for filled bands: viridis from yellow (t = 1) down to
+/// t = 0.35, so that black lines and labels on the darkest band still read; darker is larger,
+/// in colour and in greyscale alike.
+pub fn band_colors(n: usize) -> Vec<RGBColor> {
     (0..n)
         .map(|i| {
-            let t = if n > 1 {
+            let s = if n > 1 {
                 i as f64 / (n - 1) as f64
             } else {
                 0.0
             };
-            // 250 (near white) to 120: dark enough to separate, light enough for black lines on top.
-            let g = (250.0 - 130.0 * t).round() as u8;
-            RGBColor(g, g, g)
+            viridis(1.0 - 0.65 * s)
         })
         .collect()
 }
@@ -82,6 +120,16 @@ pub enum LineKind {
 }
 
 impl LineKind {
+    /// The colour: black for a model's curve, Okabe-Ito vermillion for limits and blue for
+    /// construction lines (black reads on every band of a filled map).
+    pub fn color(self) -> RGBColor {
+        match self {
+            LineKind::Solid => INK,
+            LineKind::Dashed => OKABE_ITO[6],
+            LineKind::Dotted => OKABE_ITO[5],
+        }
+    }
+
     /// The stroke width in px.
     pub fn width(self) -> u32 {
         match self {
@@ -147,6 +195,23 @@ pub enum Marker {
     OpenDiamond,
 }
 
+impl Marker {
+    /// The colour: an Okabe-Ito colour per shape, so a source differs by both.
+    pub fn color(self) -> RGBColor {
+        match self {
+            Marker::Circle => OKABE_ITO[5],
+            Marker::Dot => OKABE_ITO[0],
+            Marker::Triangle => OKABE_ITO[6],
+            Marker::Square => OKABE_ITO[3],
+            Marker::Cross => OKABE_ITO[7],
+            Marker::OpenSquare => OKABE_ITO[1],
+            Marker::Plus => OKABE_ITO[2],
+            Marker::Diamond => OKABE_ITO[3],
+            Marker::OpenDiamond => OKABE_ITO[7],
+        }
+    }
+}
+
 /// Draws one marker at `at` in `area`'s coordinates.
 pub fn draw_marker<DB, CT>(
     area: &DrawingArea<DB, CT>,
@@ -157,22 +222,23 @@ where
     DB: DrawingBackend,
     CT: CoordTranslate,
 {
-    let open = INK.stroke_width(2);
-    let fill = INK.filled();
+    let ink = marker.color();
+    let open = ink.stroke_width(2);
+    let fill = ink.filled();
     let anchor = EmptyElement::at(at);
     match marker {
         Marker::Circle => area.draw(&(anchor + Circle::new((0, 0), 8, open))),
         Marker::Dot => area.draw(&(anchor + Circle::new((0, 0), 4, fill))),
         Marker::Triangle => area.draw(&(anchor + TriangleMarker::new((0, 0), 5, fill))),
         Marker::Square => area.draw(&(anchor + Rectangle::new([(-5, -5), (5, 5)], fill))),
-        Marker::Cross => area.draw(&(anchor + Cross::new((0, 0), 7, INK.stroke_width(3)))),
+        Marker::Cross => area.draw(&(anchor + Cross::new((0, 0), 7, ink.stroke_width(3)))),
         Marker::OpenSquare => area.draw(&(anchor + Rectangle::new([(-11, -11), (11, 11)], open))),
         // One path over both bars (back over the centre).
         Marker::Plus => area.draw(
             &(anchor
                 + PathElement::new(
                     vec![(-7, 0), (7, 0), (0, 0), (0, -7), (0, 7)],
-                    INK.stroke_width(2),
+                    ink.stroke_width(2),
                 )),
         ),
         Marker::Diamond => {

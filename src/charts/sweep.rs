@@ -13,9 +13,10 @@ use super::axes::{self, DrawResult, Margins, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
 use super::spec::Scene;
-use super::style::{self, INK, LineKind, Marker};
+use super::style::{self, LineKind, Marker};
 use super::sweep_layers;
 use super::{DataFile, axis_label, scene_subtitle_with};
+use crate::csv_out::{Dec, dec, to_csv_with_header};
 use crate::error::{Error, Result};
 use crate::grid::{AxisScale, GridAxis, GridParam};
 use crate::model::SceneParams;
@@ -180,23 +181,18 @@ impl Sweep {
 
     /// The data behind the chart: one CSV row per point of every series.
     pub fn data(&self, _scene: &Scene) -> DataFile {
-        let opt = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
-        let mut s = format!(
-            "layer,{},x_jam_mm,theta_jam_deg\n",
-            self.spec.axis.param.as_str()
-        );
-        for ser in &self.series {
-            for p in &ser.points {
-                s.push_str(&format!(
-                    "{},{},{},{}\n",
-                    ser.layer,
-                    p.at,
-                    opt(p.x_jam_mm),
-                    opt(p.theta_jam_deg)
-                ));
-            }
-        }
-        DataFile::csv(s)
+        let header = [
+            "layer",
+            self.spec.axis.param.as_str(),
+            "x_jam_mm",
+            "theta_jam_deg",
+        ];
+        let rows = self.series.iter().flat_map(|ser| {
+            ser.points
+                .iter()
+                .map(|p| (ser.layer, Dec(p.at), dec(p.x_jam_mm), dec(p.theta_jam_deg)))
+        });
+        DataFile::csv(to_csv_with_header(&header, rows))
     }
 
     fn legend(&self) -> Vec<LegendEntry> {
@@ -259,7 +255,7 @@ impl Sweep {
                     .filter_map(|p| panel.value(p).map(|v| (x.to_plot(p.at), y.to_plot(v))))
                     .collect();
                 match s.style {
-                    SeriesStyle::Line(k) => style::draw_line(area, &pts, k, INK)?,
+                    SeriesStyle::Line(k) => style::draw_line(area, &pts, k, k.color())?,
                     SeriesStyle::Points(mk) => {
                         for p in pts {
                             style::draw_marker(area, mk, p)?;

@@ -17,10 +17,13 @@ use super::spec::Scene;
 use super::style::LineKind;
 use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, padded_axis};
 use super::{DataFile, scene_subtitle_with};
+use crate::csv_out::{Dec, to_csv};
+use crate::dynamics::DynamicsParams;
 use crate::dynamics::jam::SeriesRow;
 use crate::dynamics::scene::Scene as DynScene;
 use crate::error::{Error, Result};
 use crate::grid::AxisScale;
+use crate::model::SceneParams;
 use crate::models::{Detail, ModelSpec};
 use crate::statics;
 
@@ -63,6 +66,62 @@ struct Sample {
     touching_x_mm: f64,
 }
 
+/// One sample of the simulated time series as CSV: the same columns for `render` (Fig. 5) and
+/// `solve --series`.
+#[derive(Debug, Serialize)]
+struct SeriesCsvRow {
+    t_s: Dec,
+    theta_deg: Dec,
+    x_mm: Dec,
+    x_dot_mm_s: Dec,
+    geometric_speed_mm_s: Dec,
+    touching_x_mm: Dec,
+    penetration_mm: Dec,
+    normal_n: Dec,
+    palm_friction_n: Dec,
+    ground_normal_n: Dec,
+    ground_friction_n: Dec,
+}
+
+impl From<&Sample> for SeriesCsvRow {
+    fn from(s: &Sample) -> Self {
+        let r = &s.row;
+        SeriesCsvRow {
+            t_s: Dec(r.t_s),
+            theta_deg: Dec(r.theta_deg),
+            x_mm: Dec(r.x_mm),
+            x_dot_mm_s: Dec(r.x_dot_mm_s),
+            geometric_speed_mm_s: Dec(s.geometric_speed_mm_s),
+            touching_x_mm: Dec(s.touching_x_mm),
+            penetration_mm: Dec(r.penetration_mm),
+            normal_n: Dec(r.normal_n),
+            palm_friction_n: Dec(r.palm_friction_n),
+            ground_normal_n: Dec(r.ground_normal_n),
+            ground_friction_n: Dec(r.ground_friction_n),
+        }
+    }
+}
+
+/// The samples of `rows` with the palm's geometric speed and touching position of scene `p`.
+fn samples(p: &SceneParams, d: &DynamicsParams, rows: &[SeriesRow]) -> Vec<Sample> {
+    let sys = DynScene::new(p, d);
+    rows.iter()
+        .map(|r| {
+            let th = r.theta_deg.to_radians();
+            Sample {
+                row: *r,
+                geometric_speed_mm_s: sys.geometric_speed(th),
+                touching_x_mm: sys.touching_x(th),
+            }
+        })
+        .collect()
+}
+
+/// The time series `rows` of scene `p` as CSV, one row per sample, units in the header.
+pub fn series_csv(p: &SceneParams, d: &DynamicsParams, rows: &[SeriesRow]) -> Vec<u8> {
+    to_csv(samples(p, d, rows).iter().map(SeriesCsvRow::from))
+}
+
 /// The computed time series.
 #[derive(Debug, Clone)]
 pub struct TimeSeries {
@@ -99,19 +158,7 @@ impl TimeSeries {
                 sol.status
             )));
         }
-        let sys = DynScene::new(p, d);
-        let samples: Vec<Sample> = sol
-            .series
-            .iter()
-            .map(|r| {
-                let th = r.theta_deg.to_radians();
-                Sample {
-                    row: *r,
-                    geometric_speed_mm_s: sys.geometric_speed(th),
-                    touching_x_mm: sys.touching_x(th),
-                }
-            })
-            .collect();
+        let samples = samples(p, d, &sol.series);
         let t_end = samples.last().map_or(1.0, |s| s.row.t_s);
         let t_axis = PlotAxis::new(0.0, t_end, AxisScale::Linear, "time t (s)");
         let pick = |f: fn(&Sample) -> f64| samples.iter().map(|s| (s.row.t_s, f(s))).collect();
@@ -238,26 +285,7 @@ impl TimeSeries {
 
     /// The series as CSV, with the rigid-disc references.
     pub fn data(&self, _scene: &Scene) -> DataFile {
-        let mut s = String::from(
-            "t_s,theta_deg,x_mm,x_dot_mm_s,geometric_speed_mm_s,touching_x_mm,penetration_mm,\
-             normal_n,ground_friction_n\n",
-        );
-        for p in &self.samples {
-            let r = &p.row;
-            s.push_str(&format!(
-                "{:.7},{:.6},{:.7},{:.6},{:.6},{:.7},{:.7},{:.5},{:.5}\n",
-                r.t_s,
-                r.theta_deg,
-                r.x_mm,
-                r.x_dot_mm_s,
-                p.geometric_speed_mm_s,
-                p.touching_x_mm,
-                r.penetration_mm,
-                r.normal_n,
-                r.ground_friction_n
-            ));
-        }
-        DataFile::csv(s)
+        DataFile::csv(to_csv(self.samples.iter().map(SeriesCsvRow::from)))
     }
 
     /// Draws the two panels.

@@ -199,7 +199,7 @@ impl VlocatorCapacity {
         let chart = axes::build_chart(root, &x, &y, m)?;
         let area = chart.plotting_area();
         // Darker = holds more; the unbounded region stays white.
-        let mut greys = style::band_greys(self.spec.levels_over_w.len() + 1);
+        let mut greys = style::band_colors(self.spec.levels_over_w.len() + 1);
         greys.push(PAPER);
         for (rings, grey) in self.bands.iter().zip(&greys) {
             for ring in rings {
@@ -348,7 +348,7 @@ impl VlocatorCapacity {
     }
 
     fn legend(&self) -> Vec<LegendEntry> {
-        let greys = style::band_greys(self.spec.levels_over_w.len() + 1);
+        let greys = style::band_colors(self.spec.levels_over_w.len() + 1);
         vec![
             LegendEntry::new(
                 Swatch::Patch(greys[greys.len() / 2]),

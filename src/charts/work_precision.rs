@@ -17,10 +17,12 @@ use super::spec::Scene;
 use super::style::{LineKind, Marker};
 use super::xy::{Curve, CurveStyle, Figure, Panel, Tag, decade_axis};
 use super::{DataFile, scene_subtitle_with};
+use crate::csv_out::{Dec, dec, to_csv};
 use crate::dynamics::Method;
 use crate::dynamics::accuracy::{Study, StudyRow, StudySettings};
 use crate::error::{Error, Result};
 use crate::minnorm::tolerance::ToleranceRow;
+use crate::model::JamStatus;
 
 /// The deterministic cost on the horizontal axis.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -89,6 +91,51 @@ impl WorkPrecisionSpec {
             ));
         }
         Ok(())
+    }
+}
+
+/// One row of the chart's data: an integrator at a tolerance (error in mm) or the min-norm
+/// program at a tolerance (error in deg); each unit has its own column.
+#[derive(Debug, Serialize)]
+struct AccuracyCsvRow {
+    study: &'static str,
+    method: &'static str,
+    /// The integrator's rtol or clarabel's tolerance.
+    tol: Dec,
+    status: JamStatus,
+    x_jam_mm: Option<Dec>,
+    theta_jam_deg: Option<Dec>,
+    error_mm: Option<Dec>,
+    error_deg: Option<Dec>,
+    rel_error: Option<Dec>,
+    steps: Option<u64>,
+    rhs_evals: Option<u64>,
+    jacobian_evals: Option<u64>,
+    solves: Option<u32>,
+    qp_iterations: Option<u32>,
+    reason: Option<String>,
+}
+
+impl AccuracyCsvRow {
+    /// A row with every optional cell empty.
+    fn new(study: &'static str, method: &'static str, tol: f64, status: JamStatus) -> Self {
+        AccuracyCsvRow {
+            study,
+            method,
+            tol: Dec(tol),
+            status,
+            x_jam_mm: None,
+            theta_jam_deg: None,
+            error_mm: None,
+            error_deg: None,
+            rel_error: None,
+            steps: None,
+            rhs_evals: None,
+            jacobian_evals: None,
+            solves: None,
+            qp_iterations: None,
+            reason: None,
+        }
     }
 }
 
@@ -258,38 +305,24 @@ impl WorkPrecision {
 
     /// Both studies as one CSV: a row per point, `study` telling them apart.
     pub fn data(&self, _scene: &Scene) -> DataFile {
-        let f = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
-        let mut s = String::from(
-            "study,method,tol,status,x_jam_mm,theta_jam_deg,error,rel_error,steps,rhs_evals,\
-             jacobian_evals,qp_iterations,reason\n",
-        );
-        for r in &self.study.rows {
-            s.push_str(&format!(
-                "integrator,{},{:e},{},{},,{},{},{},{},{},,{}\n",
-                r.method.as_str(),
-                r.rtol,
-                r.status,
-                f(r.x_jam_mm),
-                f(r.error_mm),
-                f(r.rel_error),
-                r.steps,
-                r.rhs_evals,
-                r.jacobian_evals,
-                quoted(r.reason.as_deref())
-            ));
-        }
-        for r in &self.min_norm {
-            s.push_str(&format!(
-                "min_norm,clarabel,{:e},{},,{},{},,{},,,{},\n",
-                r.tol,
-                r.status,
-                f(r.theta_jam_deg),
-                f(r.error_deg),
-                r.solves,
-                r.iterations
-            ));
-        }
-        DataFile::csv(s)
+        let integrators = self.study.rows.iter().map(|r| AccuracyCsvRow {
+            x_jam_mm: dec(r.x_jam_mm),
+            error_mm: dec(r.error_mm),
+            rel_error: dec(r.rel_error),
+            steps: Some(r.steps),
+            rhs_evals: Some(r.rhs_evals),
+            jacobian_evals: Some(r.jacobian_evals),
+            reason: r.reason.clone(),
+            ..AccuracyCsvRow::new("integrator", r.method.as_str(), r.rtol, r.status)
+        });
+        let min_norm = self.min_norm.iter().map(|r| AccuracyCsvRow {
+            theta_jam_deg: dec(r.theta_jam_deg),
+            error_deg: dec(r.error_deg),
+            solves: Some(r.solves),
+            qp_iterations: Some(r.iterations),
+            ..AccuracyCsvRow::new("min_norm", "clarabel", r.tol, r.status)
+        });
+        DataFile::csv(to_csv(integrators.chain(min_norm)))
     }
 
     /// Draws the panels.
@@ -304,8 +337,4 @@ fn sci_first(v: &[f64]) -> String {
 
 fn sci_last(v: &[f64]) -> String {
     v.iter().copied().reduce(f64::min).map_or("-".into(), sci)
-}
-
-fn quoted(s: Option<&str>) -> String {
-    s.map_or(String::new(), |w| format!("\"{}\"", w.replace('"', "'")))
 }

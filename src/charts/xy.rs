@@ -8,7 +8,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axes::{self, DrawResult, Margins, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
-use super::style::{self, INK, LineKind, Marker};
+use super::style::{self, LineKind, Marker};
 use crate::grid::AxisScale;
 
 /// How a curve is drawn.
@@ -172,7 +172,7 @@ impl Figure {
                     let (lo, hi) = (panel.y.plot_range().start, panel.y.plot_range().end);
                     for run in pts.split(|p| p.1 < lo || p.1 > hi) {
                         if run.len() > 1 {
-                            style::draw_line(area, run, k, INK)?;
+                            style::draw_line(area, run, k, k.color())?;
                         }
                     }
                 }
@@ -195,7 +195,7 @@ impl Figure {
                     ],
                 ];
                 for g in guide.into_iter().filter(|_| mk.guides) {
-                    style::draw_line(area, &g, LineKind::Dotted, INK)?;
+                    style::draw_line(area, &g, LineKind::Dotted, LineKind::Dotted.color())?;
                 }
                 let px = axes::pixel(&chart, x, y, mk.at.0, mk.at.1);
                 style::draw_marker(root, Marker::Dot, px)?;

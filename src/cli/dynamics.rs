@@ -10,7 +10,6 @@ use serde::Serialize;
 use super::args::parse_f64;
 use crate::atomic::write_atomic;
 use crate::config::Config;
-use crate::dynamics::jam::SeriesRow;
 use crate::dynamics::nonsmooth::DiscMotion;
 use crate::dynamics::{
     CrossCheck, Drive, DynamicsParams, DynamicsSolution, Failure, Method, Refinement,
@@ -296,9 +295,11 @@ pub fn series_end(config: &Config, s: &DynamicsSolution) -> String {
     }
 }
 
-/// Writes the time series of `s` to `path` as CSV (atomically).
-pub fn write_series(s: &DynamicsSolution, path: &Path) -> Result<()> {
-    write_atomic(path, series_csv(&s.series).as_bytes())
+/// Writes the time series of `s`, simulated for `config`, to `path` as CSV (atomically), with
+/// the columns of render's fig5.csv.
+pub fn write_series(config: &Config, s: &DynamicsSolution, path: &Path) -> Result<()> {
+    let csv = crate::charts::time_series::series_csv(&config.scene, &config.dynamics, &s.series);
+    write_atomic(path, &csv)
 }
 
 /// The dynamics' own lines under the shared status lines of `solve`: jam time, trust, work,
@@ -455,28 +456,4 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
                 .to_string()
         }
     })
-}
-
-/// The time series as CSV, one row per sample, units in the header.
-pub fn series_csv(rows: &[SeriesRow]) -> String {
-    let mut s = String::from(
-        "t_s,theta_deg,x_mm,x_dot_mm_s,penetration_mm,normal_n,palm_friction_n,\
-         ground_normal_n,ground_friction_n\n",
-    );
-    for r in rows {
-        let _ = writeln!(
-            s,
-            "{:.7},{:.6},{:.7},{:.6},{:.7},{:.5},{:.5},{:.5},{:.5}",
-            r.t_s,
-            r.theta_deg,
-            r.x_mm,
-            r.x_dot_mm_s,
-            r.penetration_mm,
-            r.normal_n,
-            r.palm_friction_n,
-            r.ground_normal_n,
-            r.ground_friction_n
-        );
-    }
-    s
 }

@@ -36,8 +36,8 @@ pub fn guidance<'a>(
     if let Some(x) = rigid {
         let _ = writeln!(
             s,
-            "  a palm driven by motion (it pushes as hard as needed): the limit r cot((alpha_g + \
-             alpha_p)/2), x = {x:.3} mm"
+            "  a palm driven by motion (it pushes as hard as needed): the limit x_rigid = \
+             r cot((alpha_g + alpha_p)/2) = {x:.3} mm"
         );
     }
     let drive = match config.dynamics.drive {

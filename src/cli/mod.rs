@@ -50,8 +50,9 @@ pub enum Command {
     ///
     /// Each scene names its chart kind, parameters, axes and layers (`jamchart scenes` lists the
     /// built-in ones; charts/README.md documents the keys); render writes DIR/NAME.svg, NAME.png
-    /// and the data behind the chart (NAME.csv or .json), each atomically (temporary file, then
-    /// rename). The pictures are byte-identical for any thread count: the font is embedded and
+    /// and the data behind the chart (NAME.csv; maps also NAME.json), each atomically (temporary
+    /// file, then rename), and DIR/index.html, a gallery of the charts of this run with their
+    /// parameters and links. The pictures are byte-identical for any thread count: the font is embedded and
     /// the PNG carries no metadata.
     Render(render::RenderArgs),
     /// Draw x_jam and theta_jam against one or two parameters, without a scene file.

@@ -147,14 +147,16 @@ pub fn load_scenes(
         .collect()
 }
 
-/// The files of one scene in `out`: data first, then the pictures `formats` asks for.
+/// The files of one scene in `out`: data first (a map's cells CSV beside its JSON), then the
+/// pictures `formats` asks for.
 pub fn output_paths(
     out: &Path,
     name: &str,
-    data_extension: &str,
+    chart: &charts::ChartSpec,
     formats: Formats,
 ) -> Vec<PathBuf> {
-    let mut exts = vec![data_extension];
+    let mut exts = vec![chart.data_extension()];
+    exts.extend((chart.data_extension() == "json").then_some("csv"));
     exts.extend(formats.svg().then_some("svg"));
     exts.extend(formats.png().then_some("png"));
     exts.iter()
@@ -162,30 +164,42 @@ pub fn output_paths(
         .collect()
 }
 
-/// Writes the rendered files of all scenes into `out` as one set (all or none); returns the
-/// paths per scene.
-pub fn write_rendered(out: &Path, rendered: &[Rendered]) -> Result<Vec<Vec<PathBuf>>> {
-    let mut files: Vec<(PathBuf, &[u8])> = Vec::new();
-    let mut paths = Vec::new();
-    for r in rendered {
-        let all = [
-            (r.data.extension, Some(&r.data.bytes)),
-            ("svg", r.svg.as_ref()),
-            ("png", r.png.as_ref()),
-        ];
-        let mine: Vec<(PathBuf, &[u8])> = all
-            .into_iter()
-            .filter_map(|(ext, b)| Some((out.join(format!("{}.{ext}", r.name)), b?.as_slice())))
-            .collect();
-        paths.push(mine.iter().map(|(p, _)| p.clone()).collect());
-        files.extend(mine);
-    }
-    let set: Vec<Output> = files
+/// The files of rendered scene `r` in `out`: paths and bytes, data first.
+fn files_of<'a>(out: &Path, r: &'a Rendered) -> Vec<(PathBuf, &'a [u8])> {
+    let cells = r.cells.as_ref();
+    let all = [
+        (r.data.extension, Some(&r.data.bytes)),
+        (
+            cells.map_or("csv", |c| c.extension),
+            cells.map(|c| &c.bytes),
+        ),
+        ("svg", r.svg.as_ref()),
+        ("png", r.png.as_ref()),
+    ];
+    all.into_iter()
+        .filter_map(|(ext, b)| Some((out.join(format!("{}.{ext}", r.name)), b?.as_slice())))
+        .collect()
+}
+
+/// Writes the rendered files of all scenes and `extra` files into `out` as one set (all or
+/// none); returns the paths per scene.
+pub fn write_rendered(
+    out: &Path,
+    rendered: &[Rendered],
+    extra: &[(PathBuf, &[u8])],
+) -> Result<Vec<Vec<PathBuf>>> {
+    let per_scene: Vec<Vec<(PathBuf, &[u8])>> = rendered.iter().map(|r| files_of(out, r)).collect();
+    let set: Vec<Output> = per_scene
         .iter()
+        .flatten()
+        .chain(extra)
         .map(|(path, bytes)| Output { path, bytes })
         .collect();
     write_all(&set)?;
-    Ok(paths)
+    Ok(per_scene
+        .iter()
+        .map(|files| files.iter().map(|(p, _)| p.clone()).collect())
+        .collect())
 }
 
 pub fn run(a: &RenderArgs) -> Result<String> {
@@ -194,7 +208,8 @@ pub fn run(a: &RenderArgs) -> Result<String> {
     // Every output path is checked before anything is computed.
     let planned: Vec<PathBuf> = scenes
         .iter()
-        .flat_map(|s| output_paths(&a.out, &s.name, s.chart.data_extension(), formats))
+        .flat_map(|s| output_paths(&a.out, &s.name, &s.chart, formats))
+        .chain(std::iter::once(a.out.join("index.html")))
         .collect();
     check_all(planned.iter().map(PathBuf::as_path))?;
     // A bar only for a person watching: not in CI logs, not into pipes.
@@ -215,12 +230,26 @@ pub fn run(a: &RenderArgs) -> Result<String> {
     bar.finish_and_clear();
     // The first failure in scene order, so the message does not depend on the thread count.
     let rendered = rendered.into_iter().collect::<Result<Vec<Rendered>>>()?;
-    let written = write_rendered(&a.out, &rendered)?;
+    let index = a.out.join("index.html");
+    let entries: Vec<charts::gallery::Entry> = scenes
+        .iter()
+        .zip(&rendered)
+        .map(|(scene, r)| charts::gallery::Entry {
+            scene,
+            files: files_of(Path::new(""), r)
+                .iter()
+                .map(|(p, _)| p.display().to_string())
+                .collect(),
+        })
+        .collect();
+    let html = charts::gallery::index_html(&entries);
+    let written = write_rendered(&a.out, &rendered, &[(index.clone(), html.as_bytes())])?;
     let mut text = String::new();
     for (scene, paths) in scenes.iter().zip(written) {
         let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
         let _ = writeln!(text, "{}: {}", scene.name, list.join(" "));
     }
+    let _ = writeln!(text, "gallery: {}", index.display());
     Ok(text)
 }
 

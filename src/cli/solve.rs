@@ -123,7 +123,7 @@ pub fn run(a: &SolveArgs) -> Result<String> {
             _ => None,
         };
         if let (Detail::Dynamics(s), Some(path)) = (&solution.detail, &a.series) {
-            dynamics::write_series(s, path)?;
+            dynamics::write_series(&config, s, path)?;
         }
         answers.push(Answer { solution, trace });
     }
@@ -165,7 +165,8 @@ fn render_statics(s: &mut String, d: &StaticsSolution) {
     if let Some(x) = d.x_rigid_mm {
         let _ = writeln!(
             s,
-            "  unlimited push (F -> inf, a motion-driven palm): theta = {:.3} deg, x = {x:.3} mm",
+            "  x_rigid   = {x:.3} mm, theta_rigid = {:.3} deg: the limit of an unlimited push \
+             (F -> inf, a motion-driven palm)",
             d.theta_rigid_deg
         );
     }

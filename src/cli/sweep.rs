@@ -157,10 +157,10 @@ pub fn run(a: &SweepArgs) -> Result<String> {
     }
     let formats = a.format.into();
     // Every output path is checked before anything is computed.
-    let planned = output_paths(&a.out, &scene.name, scene.chart.data_extension(), formats);
+    let planned = output_paths(&a.out, &scene.name, &scene.chart, formats);
     crate::atomic::check_all(planned.iter().map(PathBuf::as_path))?;
     let rendered = charts::render(&scene, formats)?;
-    let paths = write_rendered(&a.out, std::slice::from_ref(&rendered))?.concat();
+    let paths = write_rendered(&a.out, std::slice::from_ref(&rendered), &[])?.concat();
     let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
     Ok(format!("{}: {}\n", scene.name, list.join(" ")))
 }

@@ -5,6 +5,8 @@ use std::fmt::Write;
 use clap::Args;
 use serde::Serialize;
 
+use crate::csv_out::{Dec, dec, to_csv};
+
 use super::args::TableFormat;
 use crate::error::Result;
 use crate::minnorm::{self, MinNormSettings};
@@ -91,35 +93,45 @@ pub fn run(a: &TableArgs) -> Result<String> {
         TableFormat::Json => {
             serde_json::to_string_pretty(&rows).expect("plain structs serialise") + "\n"
         }
-        TableFormat::Csv => {
-            let mut s = String::from(
-                "mu,theta_jam_deg,x_jam_mm,paper_theta_jam_deg,paper_x_jam_mm,x_rel_diff_pct,\
-                 x_of_paper_theta_mm,paper_min_norm_theta_jam_deg,paper_min_norm_x_jam_mm,erratum,\
-                 min_norm_theta_jam_deg,min_norm_x_jam_mm,min_norm_theta_diff_deg\n",
-            );
-            for r in &rows {
-                let _ = writeln!(
-                    s,
-                    "{},{:.6},{:.6},{},{},{:.4},{:.4},{},{},{},{},{},{}",
-                    r.mu,
-                    r.theta_jam_deg,
-                    r.x_jam_mm,
-                    r.paper_theta_jam_deg,
-                    r.paper_x_jam_mm,
-                    r.x_rel_diff_pct,
-                    r.x_of_paper_theta_mm,
-                    r.paper_min_norm_theta_jam_deg,
-                    r.paper_min_norm_x_jam_mm,
-                    r.erratum.map_or(String::new(), |e| format!("\"{e}\"")),
-                    opt(r.min_norm_theta_jam_deg),
-                    opt(r.min_norm_x_jam_mm),
-                    opt(r.min_norm_theta_diff_deg),
-                );
-            }
-            s
-        }
+        TableFormat::Csv => String::from_utf8(csv(&rows)).expect("CSV of UTF-8 strings"),
         TableFormat::Text => markdown(&rows),
     })
+}
+
+/// The rows as CSV, the columns of the JSON keys.
+fn csv(rows: &[TableRow]) -> Vec<u8> {
+    /// [`TableRow`] with its numbers as plain decimals.
+    #[derive(Serialize)]
+    struct Row {
+        mu: Dec,
+        theta_jam_deg: Dec,
+        x_jam_mm: Dec,
+        paper_theta_jam_deg: Dec,
+        paper_x_jam_mm: Dec,
+        x_rel_diff_pct: Dec,
+        x_of_paper_theta_mm: Dec,
+        paper_min_norm_x_jam_mm: Dec,
+        paper_min_norm_theta_jam_deg: Dec,
+        erratum: Option<&'static str>,
+        min_norm_theta_jam_deg: Option<Dec>,
+        min_norm_x_jam_mm: Option<Dec>,
+        min_norm_theta_diff_deg: Option<Dec>,
+    }
+    to_csv(rows.iter().map(|r| Row {
+        mu: Dec(r.mu),
+        theta_jam_deg: Dec(r.theta_jam_deg),
+        x_jam_mm: Dec(r.x_jam_mm),
+        paper_theta_jam_deg: Dec(r.paper_theta_jam_deg),
+        paper_x_jam_mm: Dec(r.paper_x_jam_mm),
+        x_rel_diff_pct: Dec(r.x_rel_diff_pct),
+        x_of_paper_theta_mm: Dec(r.x_of_paper_theta_mm),
+        paper_min_norm_x_jam_mm: Dec(r.paper_min_norm_x_jam_mm),
+        paper_min_norm_theta_jam_deg: Dec(r.paper_min_norm_theta_jam_deg),
+        erratum: r.erratum,
+        min_norm_theta_jam_deg: dec(r.min_norm_theta_jam_deg),
+        min_norm_x_jam_mm: dec(r.min_norm_x_jam_mm),
+        min_norm_theta_diff_deg: dec(r.min_norm_theta_diff_deg),
+    }))
 }
 
 fn markdown(rows: &[TableRow]) -> String {
@@ -165,9 +177,4 @@ fn markdown(rows: &[TableRow]) -> String {
         s.push('\n');
     }
     s
-}
-
-/// A CSV cell: the value in full precision, or empty.
-fn opt(v: Option<f64>) -> String {
-    v.map_or(String::new(), |v| v.to_string())
 }

@@ -280,15 +280,23 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
     );
     let o = &s.optimum;
     let bound = if o.at_bound {
-        format!(" (at the end of the search range {OPT_MIN_DEG}-{OPT_MAX_DEG} deg)")
+        format!(
+            " (at the end of the search range: {OPT_MIN_DEG} to {OPT_MAX_DEG} deg, or a flank \
+             at 0 deg for a tilted V)"
+        )
     } else {
         String::new()
+    };
+    let rho = if o.safety_factor.is_finite() {
+        format!("{:.3} (a factor on load and friction)", o.safety_factor)
+    } else {
+        "unbounded (no error in load or friction drops or locks the part)".to_string()
     };
     let _ = writeln!(
         out,
         "optimum included angle (balanced: survives load x rho with friction / rho, and friction \
-         x rho): {:.2} deg{bound}, safety factor rho* = {:.3} (a factor on load and friction)",
-        o.included_angle_deg, o.safety_factor
+         x rho): {:.2} deg{bound}, safety factor rho* = {rho}",
+        o.included_angle_deg
     );
     if o.safety_factor <= 1.0 {
         let _ = writeln!(
