@@ -91,6 +91,13 @@
 //!   paper's 25.58 mm at mu = 0.4 is 2.3 % above r / mu, which the 1 mm palm bar's offset
 //!   explains. Adams' friction has no true stiction, so a jammed disc still creeps.
 //!
+//! ## Reports on the models
+//!
+//! [`study`] measures the models themselves, every answer through the port: error of x_jam and
+//! theta_jam against the scene's physical reference beside wall time and integration error
+//! (`jamchart accuracy`), the cost of a design map by each model, and a matrix of stiff and
+//! extreme cases classed correct, flagged, failed or wrong (`jamchart stability`).
+//!
 //! ## Grids and charts
 //!
 //! [`grid`] evaluates a model over any two scene parameters in parallel, bit-identical for any
@@ -112,6 +119,7 @@ pub mod model;
 pub mod models;
 pub mod paper;
 pub mod statics;
+pub mod study;
 
 pub use cli::main as run_cli;
 pub use error::{Error, Result};

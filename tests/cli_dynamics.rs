@@ -1,4 +1,5 @@
-//! The `solve --model dynamics` and `accuracy` commands, run as the real binary in a temp dir.
+//! The `solve --model dynamics` command, run as the real binary in a temp dir (`accuracy` and
+//! `stability`: cli_reports.rs).
 
 use serde_json::Value;
 
@@ -146,108 +147,6 @@ fn a_loose_tolerance_is_reported_inaccurate() {
     let check = &doc["results"][0]["cross_check"];
     assert_eq!(check["reason"], "loose_tolerance", "{check}");
     assert_eq!(check["rtol"], 0.1, "{check}");
-}
-
-#[test]
-fn accuracy_writes_table_and_chart_data() {
-    let dir = tempfile::tempdir().unwrap();
-    let o = jamchart(
-        dir.path(),
-        &[
-            "accuracy",
-            "--drive",
-            "force",
-            "--tolerances",
-            "1e-3,1e-5",
-            "--runs",
-            "1",
-            "--reference-rtol",
-            "1e-9",
-            "--min-norm-tolerances",
-            "1e-3,1e-8",
-            "--format",
-            "csv",
-            "--out-dir",
-            "acc",
-        ],
-    );
-    assert!(o.status.success(), "{}", stderr(&o));
-    let csv = stdout(&o);
-    assert!(
-        csv.starts_with("method,rtol,status,x_jam_mm,error_mm,rel_error,"),
-        "{csv}"
-    );
-    assert_eq!(csv.lines().count(), 5, "{csv}");
-    for name in [
-        "accuracy.md",
-        "accuracy_integrators.csv",
-        "accuracy.json",
-        "accuracy_min_norm.csv",
-    ] {
-        assert!(dir.path().join("acc").join(name).is_file(), "{name}");
-    }
-    let json: Value = serde_json::from_str(
-        &std::fs::read_to_string(dir.path().join("acc/accuracy.json")).unwrap(),
-    )
-    .unwrap();
-    let rows = json["rows"].as_array().unwrap();
-    assert_eq!(rows.len(), 4);
-    for r in rows {
-        assert!(r["median_time_s"].as_f64().unwrap() > 0.0);
-        assert!(r["rel_error"].as_f64().unwrap() < 1e-2, "{r}");
-    }
-    // The min-norm part: clarabel at its default 1e-8 meets the closed form to 1e-5 deg.
-    let mn = json["min_norm_tolerance"].as_array().unwrap();
-    assert_eq!(mn.len(), 2);
-    let e = mn[1]["error_deg"].as_f64().unwrap();
-    assert!(e < 1e-5, "min-norm error {e} deg at tol 1e-8");
-    let md = std::fs::read_to_string(dir.path().join("acc/accuracy.md")).unwrap();
-    assert!(
-        md.contains("| radau5 |") && md.contains("| dopri5 |") && md.contains("| 1e-8 |"),
-        "{md}"
-    );
-}
-
-#[test]
-fn accuracy_refuses_a_bad_min_norm_tolerance() {
-    let dir = tempfile::tempdir().unwrap();
-    let o = jamchart(
-        dir.path(),
-        &[
-            "accuracy",
-            "--tolerances",
-            "1e-3",
-            "--min-norm-tolerances",
-            "1e-3,abc",
-        ],
-    );
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("abc"), "{}", stderr(&o));
-}
-
-#[test]
-fn accuracy_names_the_setting_of_a_bad_tolerance() {
-    let dir = tempfile::tempdir().unwrap();
-    for (args, named) in [
-        (
-            ["--tolerances", "1e-3,2"],
-            "tolerances = 2 (flag --tolerances)",
-        ),
-        (
-            ["--reference-rtol", "0"],
-            "reference_rtol = 0 (flag --reference-rtol)",
-        ),
-    ] {
-        let mut all = vec!["accuracy", "--min-norm-tolerances", "none"];
-        all.extend(args);
-        let o = jamchart(dir.path(), &all);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
-        assert!(
-            stderr(&o).contains(named) && stderr(&o).contains("strictly between 0 and 1"),
-            "{args:?}: {}",
-            stderr(&o)
-        );
-    }
 }
 
 /// Regression: at omega = 0.1 deg/s the palm drives the disc at 0.063 mm/s at the wedge, below

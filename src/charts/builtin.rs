@@ -18,6 +18,7 @@ pub const SCENES: &[(&str, &str)] = &[
     ("fig7a", include_str!("../../charts/fig7a.toml")),
     ("fig7b", include_str!("../../charts/fig7b.toml")),
     ("fig7c", include_str!("../../charts/fig7c.toml")),
+    ("stability", include_str!("../../charts/stability.toml")),
     (
         "vlocator-capacity",
         include_str!("../../charts/vlocator-capacity.toml"),

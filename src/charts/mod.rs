@@ -9,8 +9,10 @@
 //!
 //! Chart kinds, one module each: [`jam_map`] (Fig. 3), [`sweep`] (Figs. 6, 7a, 7b),
 //! [`contour_map`] (Fig. 7c), [`convergence`] (Fig. 4), [`time_series`] (Fig. 5),
-//! [`work_precision`] (the accuracy study), [`vlocator_capacity`] and [`vlocator_optimum`]
-//! (V-type locators, [`crate::locator`]). The last three draw through [`xy`], stacked x-y
+//! [`work_precision`] (the accuracy study), [`stability`] (the stability matrix),
+//! [`vlocator_capacity`] and [`vlocator_optimum`] (V-type locators, [`crate::locator`]);
+//! [`error_time`] draws `jamchart accuracy`'s wall-time chart, which is not a scene. The last
+//! three x-y kinds draw through [`xy`], stacked x-y
 //! panels. Min-norm programs and simulations are called through [`models::Models`], so a test
 //! can count them: a scene computes only what it draws.
 //!
@@ -31,6 +33,7 @@ pub mod axes;
 pub mod builtin;
 pub mod contour_map;
 pub mod convergence;
+pub mod error_time;
 pub mod gallery;
 pub mod jam_map;
 pub mod legend;
@@ -38,6 +41,7 @@ pub mod models;
 pub mod output;
 pub mod overrides;
 pub mod spec;
+pub mod stability;
 pub mod style;
 pub mod sweep;
 pub mod sweep_layers;
@@ -135,6 +139,7 @@ pub enum Chart {
     WorkPrecision(work_precision::WorkPrecision),
     VlocatorCapacity(vlocator_capacity::VlocatorCapacity),
     VlocatorOptimum(vlocator_optimum::VlocatorOptimum),
+    Stability(stability::Stability),
 }
 
 impl Chart {
@@ -166,6 +171,9 @@ impl Chart {
             ChartSpec::VlocatorOptimum(s) => {
                 Chart::VlocatorOptimum(vlocator_optimum::VlocatorOptimum::compute(scene, s)?)
             }
+            ChartSpec::Stability(s) => {
+                Chart::Stability(stability::Stability::compute(scene, s, models)?)
+            }
         })
     }
 
@@ -181,6 +189,7 @@ impl Chart {
             Chart::WorkPrecision(c) => c.draw(root),
             Chart::VlocatorCapacity(c) => c.draw(root),
             Chart::VlocatorOptimum(c) => c.draw(root),
+            Chart::Stability(c) => c.draw(root),
         }
     }
 
@@ -205,6 +214,7 @@ impl Chart {
             Chart::WorkPrecision(c) => c.data(scene),
             Chart::VlocatorCapacity(c) => c.data(scene),
             Chart::VlocatorOptimum(c) => c.data(scene),
+            Chart::Stability(c) => c.data(scene),
         }
     }
 }

@@ -28,6 +28,7 @@ use super::contour_map::ContourMapSpec;
 use super::convergence::ConvergenceSpec;
 use super::jam_map::JamMapSpec;
 use super::overrides::{self, Setting};
+use super::stability::StabilitySpec;
 use super::sweep::SweepSpec;
 use super::time_series::TimeSeriesSpec;
 use super::vlocator_capacity::VlocatorCapacitySpec;
@@ -104,11 +105,13 @@ pub enum ChartSpec {
     VlocatorCapacity(VlocatorCapacitySpec),
     /// Optimum included angle of a V-locator against load direction and load.
     VlocatorOptimum(VlocatorOptimumSpec),
+    /// The stability matrix: case by method, coloured by class.
+    Stability(StabilitySpec),
 }
 
 impl ChartSpec {
     /// The `kind` key: jam_map, sweep, contour_map, convergence, time_series, work_precision,
-    /// vlocator_capacity or vlocator_optimum.
+    /// vlocator_capacity, vlocator_optimum or stability.
     pub fn kind(&self) -> &'static str {
         match self {
             ChartSpec::JamMap(_) => "jam_map",
@@ -117,6 +120,7 @@ impl ChartSpec {
             ChartSpec::Convergence(_) => "convergence",
             ChartSpec::TimeSeries(_) => "time_series",
             ChartSpec::WorkPrecision(_) => "work_precision",
+            ChartSpec::Stability(_) => "stability",
             ChartSpec::VlocatorCapacity(_) => "vlocator_capacity",
             ChartSpec::VlocatorOptimum(_) => "vlocator_optimum",
         }
@@ -331,6 +335,7 @@ impl Scene {
             ChartSpec::Convergence(s) => s.validate(),
             ChartSpec::TimeSeries(s) => s.validate(),
             ChartSpec::WorkPrecision(s) => s.validate(),
+            ChartSpec::Stability(s) => s.validate(),
             ChartSpec::VlocatorCapacity(s) => s.validate(),
             ChartSpec::VlocatorOptimum(s) => s.validate(),
         }?;
@@ -396,6 +401,8 @@ fn check_size(scene: &Scene) -> Result<()> {
             Ok(())
         }
         ChartSpec::Convergence(_) => Ok(()),
+        // Its cases are names from the fixed matrix (checked by validate): at most its 26 rows.
+        ChartSpec::Stability(_) => Ok(()),
         // A contoured map as the contour map is (its cells hold less: two capacities).
         ChartSpec::VlocatorCapacity(s) => {
             limits::check_count(

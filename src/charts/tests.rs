@@ -94,7 +94,15 @@ fn jam_map_without_regions_evaluates_no_grid() {
 fn every_committed_scene_loads() {
     let names = scene_names(&charts_dir()).unwrap();
     for want in [
-        "accuracy", "fig3", "fig4", "fig5", "fig6", "fig7a", "fig7b", "fig7c",
+        "accuracy",
+        "fig3",
+        "fig4",
+        "fig5",
+        "fig6",
+        "fig7a",
+        "fig7b",
+        "fig7c",
+        "stability",
     ] {
         assert!(
             names.iter().any(|n| n == want),
@@ -227,6 +235,12 @@ fn every_scene_makes_only_the_model_calls_it_draws() {
             "fig5" => [0, 0, 0, 1, 0],
             "fig6" => [crate::paper::TABLE1.len(), 0, 0, sim_points, 0],
             "accuracy" => [0, 0, 1, 0, 1],
+            // Every case through the two min-norm paths, the two integrators and the nonsmooth
+            // method.
+            "stability" => {
+                let n = crate::study::stability::cases(&crate::config::Config::default()).len();
+                [2 * n, 0, 0, 3 * n, 0]
+            }
             other => panic!("add scene {other} to this test with the calls it should make"),
         }
     };

@@ -1,23 +1,23 @@
-//! `jamchart accuracy`: the work-precision report of the dynamics' integrators.
+//! `jamchart accuracy`: error against run time against the physical reference, the integration
+//! error beside it, and what a 400 x 400 map costs by each model.
 
 use std::fmt::Write as _;
 use std::io::IsTerminal;
 use std::path::PathBuf;
 
 use clap::{ArgAction, Args};
-
-use super::args::parse_f64;
-use super::args::{SceneArgs, TableFormat};
-use super::dynamics::DynamicsArgs;
 use serde::Serialize;
 
+use super::args::{SceneArgs, TableFormat, parse_f64};
+use super::dynamics::DynamicsArgs;
 use crate::atomic::{Output, check_all, write_all};
-use crate::csv_out::{Dec, dec, to_csv};
-use crate::dynamics::accuracy::{Study, StudySettings, run_study};
+use crate::dynamics::Method;
 use crate::error::{Error, Result};
-use crate::limits::MAX_TOLERANCES;
-use crate::minnorm::tolerance::{ToleranceRow, tolerance_study};
 use crate::model::JamStatus;
+use crate::models::ModelKind;
+use crate::study::ReferenceKind;
+use crate::study::accuracy::{self, AccuracyReport, AccuracyRow, AccuracySettings};
+use crate::study::map_cost::{self, MapCostReport, MapCostSettings};
 
 /// Flags of `accuracy`.
 #[derive(Debug, Clone, Args)]
@@ -26,53 +26,130 @@ pub struct AccuracyArgs {
     pub scene: SceneArgs,
     #[command(flatten)]
     pub dynamics: DynamicsArgs,
-    /// Relative tolerances to try, comma-separated, at most 64 [default: 1e-2,1e-3,...,1e-9].
-    ///
-    /// Given once: a second --tolerances is refused like any repeated flag.
+    /// Integrator tolerances rtol = atol, comma-separated, at most 64 [default: 1e-2,...,1e-8].
     #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set, value_parser = parse_f64)]
     pub tolerances: Option<Vec<f64>>,
-    /// Timed runs per point, 1 to 1000; the median is reported [default: 5].
+    /// Integrators, comma-separated [default: radau5,dopri5].
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
+    pub methods: Option<Vec<Method>>,
+    /// Contact stiffnesses beside --stiffness, as penetration in um at --force, at most 8
+    /// [default: 10,1].
+    ///
+    /// k = F / delta^e; "none" keeps only --stiffness.
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
+    pub penetrations: Option<Vec<String>>,
+    /// clarabel tolerances of the min-norm rows, comma-separated, at most 64; "none" skips them
+    /// [default: 1e-2,1e-4,1e-6,1e-8,1e-10].
+    ///
+    /// The exact path is always a row.
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
+    pub min_norm_tolerances: Option<Vec<String>>,
+    /// Steps of the nonsmooth rows in deg of palm turn, comma-separated, at most 64; "none"
+    /// skips them [default: 0.3,0.1,0.03,0.01].
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
+    pub nonsmooth_steps: Option<Vec<String>>,
+    /// Step of the nonsmooth method's converged answer in deg [default: 0.002].
+    #[arg(long, value_name = "DEG", value_parser = parse_f64)]
+    pub converged_step: Option<f64>,
+    /// Timed runs per row, 1 to 1000; the median is reported [default: 3].
     #[arg(long, value_name = "N")]
     pub runs: Option<usize>,
-    /// Tolerance of the reference solutions [default: 1e-11].
-    #[arg(long, value_name = "RTOL", value_parser = parse_f64)]
-    pub reference_rtol: Option<f64>,
+    /// Tolerance of the converged answers the integration error is measured against
+    /// [default: 1e-10].
+    #[arg(long, value_name = "RTOL", alias = "reference-rtol", value_parser = parse_f64)]
+    pub converged_rtol: Option<f64>,
+    /// Step limit of every simulation [default: 500000].
+    #[arg(long, value_name = "N")]
+    pub max_steps: Option<u64>,
+    /// Cells per axis of the map whose cost is reported, 2 to 2000; 0 skips it [default: 400].
+    ///
+    /// The map is mu 0.1-0.8 by F 20-2000 N (log); the statics answer all of it, the min-norm
+    /// program 40 x 40 cells and the simulation 20 x 20, and their time is extrapolated.
+    #[arg(long, value_name = "N")]
+    pub map_cells: Option<usize>,
     /// Output format on stdout.
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]
     pub format: TableFormat,
-    /// clarabel tolerances of the min-norm part, comma-separated, at most 64; "none" skips it
-    /// [default: 1e-2,1e-3,...,1e-10].
-    ///
-    /// The min-norm model solved by clarabel alone at each tol_feas = tol_gap = tol_infeas,
-    /// its theta_jam compared with the closed form (translational formulation).
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
-    pub min_norm_tolerances: Option<Vec<String>>,
-    /// Also write accuracy.md, accuracy_integrators.csv (the log-log chart's data), accuracy.json and
-    /// accuracy_min_norm.csv here.
+    /// Also write accuracy.md, accuracy.csv, accuracy.json, accuracy_map.csv and the chart
+    /// accuracy.svg / accuracy.png (wall time: not byte-identical) here.
     #[arg(long, value_name = "DIR")]
     pub out_dir: Option<PathBuf>,
 }
 
-/// The files of `--out-dir`.
-const OUT_FILES: [&str; 4] = [
+/// The files of `--out-dir`, in the order they are written.
+const OUT_FILES: [&str; 6] = [
     "accuracy.md",
-    // Not accuracy.csv: render's accuracy scene writes that name with another schema.
-    "accuracy_integrators.csv",
+    "accuracy.csv",
     "accuracy.json",
-    "accuracy_min_norm.csv",
+    "accuracy_map.csv",
+    "accuracy.svg",
+    "accuracy.png",
 ];
 
+/// Parses a list of numbers where "none" means an empty list.
+fn list_or_none(key: &str, arg: Option<&[String]>, default: Vec<f64>) -> Result<Vec<f64>> {
+    let Some(list) = arg else {
+        return Ok(default);
+    };
+    if list.len() == 1 && list[0].trim() == "none" {
+        return Ok(Vec::new());
+    }
+    list.iter()
+        .map(|v| {
+            parse_f64(v.trim()).map_err(|why| {
+                Error::invalid(
+                    key,
+                    v,
+                    format!("{why}; a comma-separated list of numbers, or none"),
+                )
+            })
+        })
+        .collect()
+}
+
 pub fn run(a: &AccuracyArgs) -> Result<String> {
-    // Everything is validated before anything is computed: flags, the study, the output paths.
     let config = a.scene.resolve_with(|c| a.dynamics.apply(c))?;
-    let defaults = StudySettings::default();
-    let settings = StudySettings {
-        tolerances: a.tolerances.clone().unwrap_or(defaults.tolerances),
-        runs: a.runs.unwrap_or(defaults.runs),
-        reference_rtol: a.reference_rtol.unwrap_or(defaults.reference_rtol),
+    let d = AccuracySettings::default();
+    let settings = AccuracySettings {
+        min_norm_tolerances: list_or_none(
+            "min_norm_tolerances",
+            a.min_norm_tolerances.as_deref(),
+            d.min_norm_tolerances,
+        )?,
+        methods: a.methods.clone().unwrap_or(d.methods),
+        tolerances: a.tolerances.clone().unwrap_or(d.tolerances),
+        penetrations_um: list_or_none(
+            "penetrations_um",
+            a.penetrations.as_deref(),
+            d.penetrations_um,
+        )?,
+        nonsmooth_steps_deg: list_or_none(
+            "nonsmooth_steps_deg",
+            a.nonsmooth_steps.as_deref(),
+            d.nonsmooth_steps_deg,
+        )?,
+        runs: a.runs.unwrap_or(d.runs),
+        converged_rtol: a.converged_rtol.unwrap_or(d.converged_rtol),
+        converged_step_deg: a.converged_step.unwrap_or(d.converged_step_deg),
+        max_steps: a.max_steps.unwrap_or(d.max_steps),
     };
     settings.validate()?;
-    let min_norm_tols = min_norm_tolerances(a.min_norm_tolerances.as_deref())?;
+    let map = match a.map_cells {
+        Some(0) => None,
+        n => {
+            let m = MapCostSettings::default();
+            let cells = n.unwrap_or(m.cells_per_axis);
+            let s = MapCostSettings {
+                cells_per_axis: cells,
+                statics_per_axis: m.statics_per_axis.min(cells),
+                min_norm_per_axis: m.min_norm_per_axis.min(cells),
+                dynamics_per_axis: m.dynamics_per_axis.min(cells),
+            };
+            s.validate()?;
+            Some(s)
+        }
+    };
+    // Every output is checked before anything runs and written all or nothing at the end.
     let out_paths: Vec<PathBuf> = a
         .out_dir
         .iter()
@@ -80,233 +157,339 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
         .collect();
     check_all(out_paths.iter().map(PathBuf::as_path))?;
     let bar = std::io::stderr().is_terminal().then(|| {
-        // The length comes with the first progress call.
         let b = indicatif::ProgressBar::no_length();
-        if let Ok(style) = indicatif::ProgressStyle::with_template(
-            "accuracy {bar:30} {pos}/{len} points, {elapsed}",
-        ) {
+        if let Ok(style) =
+            indicatif::ProgressStyle::with_template("accuracy {bar:30} {pos}/{len} rows, {elapsed}")
+        {
             b.set_style(style);
         }
         b
     });
-    let study = run_study(
-        &config.scene,
-        &config.dynamics,
-        &settings,
-        &mut |done, total| {
-            if let Some(b) = &bar {
-                b.set_length(total as u64);
-                b.set_position(done as u64);
-            }
-        },
-    )?;
+    let t0 = std::time::Instant::now();
+    let report = accuracy::run(&config, &settings, &mut |done, total| {
+        if let Some(b) = &bar {
+            b.set_length(total as u64);
+            b.set_position(done as u64);
+        }
+    })?;
     if let Some(b) = bar {
         b.finish_and_clear();
     }
-    let min_norm = tolerance_study(&config.scene, &config.min_norm, &min_norm_tols)?;
-    let mut md = markdown(&study, settings.runs);
-    md.push_str(&min_norm_markdown(&min_norm));
-    let csv = csv(&study);
-    let mut doc = serde_json::to_value(&study).expect("plain structs serialise");
-    doc["min_norm_tolerance"] = serde_json::to_value(&min_norm).expect("plain structs serialise");
-    let json = serde_json::to_string_pretty(&doc).expect("JSON values serialise") + "\n";
+    let map = map.map(|s| map_cost::run(&config, &s)).transpose()?;
+    let elapsed = t0.elapsed().as_secs_f64();
+    let md = markdown(&report, map.as_ref(), settings.runs, elapsed);
+    let csv = csv_rows(&report)?;
+    let json = serde_json::to_string_pretty(&serde_json::json!({
+        "accuracy": report,
+        "map_cost": map,
+        "elapsed_s": elapsed,
+    }))
+    .expect("plain structs serialise")
+        + "\n";
     if !out_paths.is_empty() {
-        let mn_csv = min_norm_csv(&min_norm);
-        let contents = [md.as_bytes(), &csv, json.as_bytes(), &mn_csv];
-        let set: Vec<Output> = out_paths
-            .iter()
-            .zip(contents)
-            .map(|(path, bytes)| Output { path, bytes })
-            .collect();
-        write_all(&set)?;
+        let map_csv = map.as_ref().map(map_csv).transpose()?.unwrap_or_default();
+        let (svg, png) = crate::charts::error_time::render(&report, &config.scene)?;
+        let contents: [&[u8]; 6] = [
+            md.as_bytes(),
+            csv.as_bytes(),
+            json.as_bytes(),
+            map_csv.as_bytes(),
+            &svg,
+            &png,
+        ];
+        // Without the map (--map-cells 0) its file is not written.
+        write_set(&out_paths, &contents, |p| {
+            map.is_some() || !p.ends_with("accuracy_map.csv")
+        })?;
     }
     Ok(match a.format {
         TableFormat::Text => md,
-        TableFormat::Csv => String::from_utf8(csv).expect("CSV of UTF-8 strings"),
+        TableFormat::Csv => csv,
         TableFormat::Json => json,
     })
 }
 
-/// The min-norm tolerances from `--min-norm-tolerances` ("none" = none; default 1e-2..1e-10),
-/// each in (0, 1), at most [`MAX_TOLERANCES`].
-fn min_norm_tolerances(arg: Option<&[String]>) -> Result<Vec<f64>> {
-    let Some(list) = arg else {
-        return Ok((2..=10).map(|k| 10f64.powi(-k)).collect());
-    };
-    if list.len() == 1 && list[0].trim() == "none" {
-        return Ok(Vec::new());
-    }
-    let key = "--min-norm-tolerances";
-    if list.len() > MAX_TOLERANCES {
-        return Err(Error::invalid(
-            key,
-            format!("{} values", list.len()),
-            format!("at most {MAX_TOLERANCES} tolerances"),
-        ));
-    }
-    list.iter()
-        .map(|v| {
-            let reason = "a comma-separated list of numbers in (0, 1), or none";
-            let t = parse_f64(v.trim())
-                .map_err(|why| Error::invalid(key, v, format!("{why}; {reason}")))?;
-            if !(t > 0.0 && t < 1.0) {
-                return Err(Error::invalid(key, v, reason));
-            }
-            Ok(t)
-        })
-        .collect()
+/// Writes `contents[i]` to `paths[i]` where `keep` says so, all or nothing.
+pub(crate) fn write_set(
+    paths: &[PathBuf],
+    contents: &[&[u8]],
+    keep: impl Fn(&std::path::Path) -> bool,
+) -> Result<()> {
+    let set: Vec<Output> = paths
+        .iter()
+        .zip(contents)
+        .filter(|(path, _)| keep(path))
+        .map(|(path, bytes)| Output { path, bytes })
+        .collect();
+    write_all(&set)
 }
 
-fn min_norm_markdown(rows: &[ToleranceRow]) -> String {
-    if rows.is_empty() {
-        return String::new();
+/// The serde spelling of a model (as in JSON and CSV).
+pub(crate) fn model_name(m: ModelKind) -> &'static str {
+    match m {
+        ModelKind::Statics => "statics",
+        ModelKind::MinNorm => "min_norm",
+        ModelKind::Dynamics => "dynamics",
     }
+}
+
+pub(crate) fn sci(v: Option<f64>) -> String {
+    v.map_or("-".into(), |v| format!("{v:.2e}"))
+}
+
+pub(crate) fn fixed(v: Option<f64>, prec: usize) -> String {
+    v.map_or("-".into(), |v| format!("{v:.prec$}"))
+}
+
+fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapsed: f64) -> String {
     let mut s = String::from(
-        "\nMin-norm program: clarabel tolerance against the error of theta_jam (closed form as \
-         reference, translational formulation, exact path off)\n\n\
-         | tol | status | theta_jam [deg] | error [deg] | solves | clarabel iterations | undetermined |\n\
-         |---:|---|---:|---:|---:|---:|---:|\n",
+        "# Error against run time, against the physical reference\n\n\
+         Each row answers \"where does it jam\" through the model port. `x error` is against the \
+         physical reference of the scene as the row poses it (closed_form: the corrected Eq. 1 \
+         at F; rigid_limit: F -> infinity, r/mu for equal frictions, for the motion drive). \
+         `integration error` is against the same regularised model at the converged tolerance \
+         (column `converged by`). Where `x error` stops falling as the tolerance tightens is the \
+         model's floor.\n\n",
     );
-    for r in rows {
+    for re in &r.references {
         let _ = writeln!(
             s,
-            "| {:.0e} | {} | {} | {} | {} | {} | {} |",
-            r.tol,
-            r.status,
-            r.theta_jam_deg.map_or("-".into(), |t| format!("{t:.9}")),
-            opt(r.error_deg, 2),
-            r.solves,
-            r.iterations,
-            r.undetermined_solves
+            "- reference {}: {} theta_jam = {} deg, x_jam = {} mm",
+            re.kind.as_str(),
+            re.status,
+            fixed(re.theta_jam_deg, 4),
+            fixed(re.x_jam_mm, 6)
         );
     }
-    s
-}
-
-/// The min-norm tolerance study as CSV, one row per tolerance.
-fn min_norm_csv(rows: &[ToleranceRow]) -> Vec<u8> {
-    /// One clarabel tolerance.
-    #[derive(Serialize)]
-    struct Row {
-        tol: Dec,
-        status: JamStatus,
-        theta_jam_deg: Option<Dec>,
-        error_deg: Option<Dec>,
-        solves: u32,
-        iterations: u32,
-        undetermined_solves: u32,
-    }
-    to_csv(rows.iter().map(|r| Row {
-        tol: Dec(r.tol),
-        status: r.status,
-        theta_jam_deg: dec(r.theta_jam_deg),
-        error_deg: dec(r.error_deg),
-        solves: r.solves,
-        iterations: r.iterations,
-        undetermined_solves: r.undetermined_solves,
-    }))
-}
-
-fn opt(v: Option<f64>, prec: usize) -> String {
-    v.map_or("-".into(), |v| format!("{v:.prec$e}"))
-}
-
-fn markdown(study: &Study, runs: usize) -> String {
-    let mut s = String::from("Work-precision of the dynamics' integrators (error of x_jam)\n\n");
-    for r in &study.references {
+    for c in &r.converged {
+        let at = match (c.rtol, c.step_deg) {
+            (Some(r), _) => format!("rtol {r:.0e}"),
+            (_, Some(h)) => format!("step {h} deg"),
+            _ => String::new(),
+        };
+        let contact = match (c.method, c.penetration_um) {
+            (Method::Nonsmooth, _) => "rigid contacts".to_string(),
+            (_, Some(p)) => format!("{p} um"),
+            (_, None) => "the [dynamics] stiffness".into(),
+        };
         let _ = writeln!(
             s,
-            "- reference {} at rtol {:e}: {} x_jam = {} mm ({} steps){}",
-            r.method.as_str(),
-            r.rtol,
-            r.status,
-            r.x_jam_mm.map_or("-".into(), |x| format!("{x:.9}")),
-            r.steps,
-            r.reason
+            "- converged {} at {at}, {contact}: {} x_jam = {} mm{}",
+            c.method.as_str(),
+            c.status,
+            fixed(c.x_jam_mm, 6),
+            c.reason
                 .as_ref()
-                .map_or(String::new(), |why| format!(": {why}"))
+                .map_or(String::new(), |w| format!(": {w}"))
         );
-    }
-    if let Some(d) = study.references_rel_diff {
-        let _ = writeln!(s, "- the two references differ by {d:.2e} (relative)");
     }
     let _ = writeln!(
         s,
-        "\nEach row is compared with the other method's reference where that one jams (column \
-         'reference'); times are medians of {runs} runs.\n\n\
-         | method | rtol | status | x_jam [mm] | reference | error [mm] | rel. error | time [ms] | steps | rejected | rhs evals | Jacobian evals |\n\
-         |---|---:|---|---:|---|---:|---:|---:|---:|---:|---:|---:|"
+        "\nWall times are medians of {runs} runs of one answer.\n\n\
+         | model | method | tolerance | penetration [um] | step [deg] | status | theta_jam [deg] | x_jam [mm] | reference | x error [mm] | rel. x error | theta error [deg] | converged by | integration error [mm] | time [ms] | steps | evaluations |\n\
+         |---|---|---:|---:|---:|---|---:|---:|---|---:|---:|---:|---|---:|---:|---:|---:|"
     );
     let mut failures = Vec::new();
-    for r in &study.rows {
+    for row in &r.rows {
         let _ = writeln!(
             s,
-            "| {} | {:.0e} | {} | {} | {} | {} | {} | {:.3} | {} | {} | {} | {} |",
-            r.method.as_str(),
-            r.rtol,
-            r.status,
-            r.x_jam_mm.map_or("-".into(), |x| format!("{x:.6}")),
-            r.reference.map_or("-", |m| m.as_str()),
-            opt(r.error_mm, 2),
-            opt(r.rel_error, 2),
-            r.median_time_s * 1e3,
-            r.steps,
-            r.rejected_steps,
-            r.rhs_evals,
-            r.jacobian_evals
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.4} | {} | {} |",
+            model_name(row.model),
+            row.method,
+            row.tolerance.map_or("-".into(), |t| format!("{t:.0e}")),
+            fixed(row.penetration_um, 2),
+            row.step_deg.map_or("-".into(), |h| h.to_string()),
+            row.status,
+            fixed(row.theta_jam_deg, 4),
+            fixed(row.x_jam_mm, 6),
+            row.reference.as_str(),
+            sci(row.x_error_mm),
+            sci(row.x_rel_error),
+            sci(row.theta_error_deg),
+            row.converged_by.map_or("-", Method::as_str),
+            sci(row.integration_error_mm),
+            row.median_time_s * 1e3,
+            row.steps,
+            row.evaluations
         );
-        if let Some(why) = r.reason.as_ref().filter(|_| r.error_mm.is_none()) {
-            failures.push(format!(
-                "- {} at rtol {:e}: {why}",
-                r.method.as_str(),
-                r.rtol
-            ));
+        if let Some(w) = &row.reason {
+            failures.push(format!("- {}: {w}", label(row)));
         }
     }
     if !failures.is_empty() {
-        s.push_str("\nFailures:\n");
+        s.push_str("\nRows without a trusted answer:\n\n");
         for f in failures {
             s.push_str(&f);
             s.push('\n');
         }
     }
+    s.push_str(&floors(r));
+    if let Some(m) = map {
+        let _ = writeln!(
+            s,
+            "\n## A {n} x {n} map (mu 0.1-0.8 by F 20-2000 N) by each model\n\n\
+             Errors against the closed form at each cell's F (the simulation with the force \
+             drive). Extrapolated rows scale the measured time by the cell count.\n\n\
+             | model | method | sampled cells | measured [s] | {n} x {n} map [s] | extrapolated | threads | max rel. x error | status mismatches | untrusted cells |\n\
+             |---|---|---:|---:|---:|---|---:|---:|---:|---:|",
+            n = m.cells_per_axis
+        );
+        for row in &m.rows {
+            let _ = writeln!(
+                s,
+                "| {} | {} | {k} x {k} | {:.3} | {:.1} | {} | {} | {} | {} | {} |",
+                model_name(row.model),
+                row.method,
+                row.measured_s,
+                row.full_map_s,
+                if row.extrapolated { "yes" } else { "no" },
+                row.threads,
+                sci(row.max_x_rel_error),
+                row.status_mismatches,
+                row.untrusted_cells,
+                k = row.sampled_per_axis
+            );
+        }
+    }
+    let _ = writeln!(s, "\nThe whole report took {elapsed:.1} s.");
     s
 }
 
-/// One row per point: the data of the log-log chart (rel_error against median_time_s).
-fn csv(study: &Study) -> Vec<u8> {
-    /// One integrator at one rtol.
-    #[derive(Serialize)]
-    struct Row<'a> {
-        method: &'static str,
-        rtol: Dec,
-        status: JamStatus,
-        x_jam_mm: Option<Dec>,
-        error_mm: Option<Dec>,
-        rel_error: Option<Dec>,
-        reference: Option<&'static str>,
-        median_time_s: Dec,
-        runs: usize,
-        steps: u64,
-        rejected_steps: u64,
-        rhs_evals: u64,
-        jacobian_evals: u64,
-        reason: Option<&'a str>,
+fn label(row: &AccuracyRow) -> String {
+    let mut s = format!("{} {}", model_name(row.model), row.method);
+    if let Some(t) = row.tolerance {
+        let _ = write!(s, " at {t:.0e}");
     }
-    to_csv(study.rows.iter().map(|r| Row {
-        method: r.method.as_str(),
-        rtol: Dec(r.rtol),
-        status: r.status,
-        x_jam_mm: dec(r.x_jam_mm),
-        error_mm: dec(r.error_mm),
-        rel_error: dec(r.rel_error),
-        reference: r.reference.map(|m| m.as_str()),
-        median_time_s: Dec(r.median_time_s),
-        runs: r.runs,
-        steps: r.steps,
-        rejected_steps: r.rejected_steps,
-        rhs_evals: r.rhs_evals,
-        jacobian_evals: r.jacobian_evals,
-        reason: r.reason.as_deref(),
-    }))
+    if let Some(p) = row.penetration_um {
+        let _ = write!(s, ", {p:.2} um");
+    }
+    if let Some(h) = row.step_deg {
+        let _ = write!(s, " at step {h} deg");
+    }
+    s
+}
+
+/// The floor of each simulated curve: its smallest error against the physics beside its
+/// integration error there.
+fn floors(r: &AccuracyReport) -> String {
+    let mut s = String::from(
+        "\n## Floors of the simulation\n\n\
+         | method | penetration [um] | reference | smallest rel. x error | at tolerance or step | integration error there [mm] |\n\
+         |---|---:|---|---:|---:|---:|\n",
+    );
+    let mut keys: Vec<(&str, u64)> = Vec::new();
+    for row in r.rows.iter().filter(|r| r.model == ModelKind::Dynamics) {
+        let k = (row.method, row.penetration_um.unwrap_or(0.0).to_bits());
+        if !keys.contains(&k) {
+            keys.push(k);
+        }
+    }
+    for (method, pen) in keys {
+        let best = r
+            .rows
+            .iter()
+            .filter(|x| x.method == method && x.penetration_um.unwrap_or(0.0).to_bits() == pen)
+            .filter(|x| x.x_rel_error.is_some())
+            .min_by(|a, b| a.x_rel_error.unwrap().total_cmp(&b.x_rel_error.unwrap()));
+        let reference = r
+            .rows
+            .iter()
+            .find(|x| x.method == method)
+            .map_or(ReferenceKind::RigidLimit, |x| x.reference);
+        let contact = if method == "nonsmooth" {
+            "rigid".to_string()
+        } else {
+            format!("{:.2}", f64::from_bits(pen))
+        };
+        let at = best.and_then(|b| {
+            b.tolerance
+                .map(|t| format!("{t:.0e}"))
+                .or(b.step_deg.map(|h| format!("{h} deg")))
+        });
+        let _ = writeln!(
+            s,
+            "| {method} | {contact} | {} | {} | {} | {} |",
+            reference.as_str(),
+            sci(best.and_then(|b| b.x_rel_error)),
+            at.unwrap_or("-".into()),
+            sci(best.and_then(|b| b.integration_error_mm))
+        );
+    }
+    s
+}
+
+/// One CSV row: the typed row with its reason as a tag and a sentence.
+#[derive(Serialize)]
+struct CsvRow<'a> {
+    model: ModelKind,
+    method: &'a str,
+    tolerance: Option<f64>,
+    penetration_um: Option<f64>,
+    step_deg: Option<f64>,
+    status: JamStatus,
+    theta_jam_deg: Option<f64>,
+    x_jam_mm: Option<f64>,
+    reference: ReferenceKind,
+    reference_status: JamStatus,
+    theta_ref_deg: Option<f64>,
+    x_ref_mm: Option<f64>,
+    x_error_mm: Option<f64>,
+    x_rel_error: Option<f64>,
+    theta_error_deg: Option<f64>,
+    converged_by: Option<Method>,
+    x_converged_mm: Option<f64>,
+    integration_error_mm: Option<f64>,
+    median_time_s: f64,
+    runs: usize,
+    steps: u64,
+    evaluations: u64,
+    reason: Option<&'static str>,
+    reason_detail: Option<String>,
+}
+
+fn csv_rows(r: &AccuracyReport) -> Result<String> {
+    let rows = r.rows.iter().map(|x| CsvRow {
+        model: x.model,
+        method: x.method,
+        tolerance: x.tolerance,
+        penetration_um: x.penetration_um,
+        step_deg: x.step_deg,
+        status: x.status,
+        theta_jam_deg: x.theta_jam_deg,
+        x_jam_mm: x.x_jam_mm,
+        reference: x.reference,
+        reference_status: x.reference_status,
+        theta_ref_deg: x.theta_ref_deg,
+        x_ref_mm: x.x_ref_mm,
+        x_error_mm: x.x_error_mm,
+        x_rel_error: x.x_rel_error,
+        theta_error_deg: x.theta_error_deg,
+        converged_by: x.converged_by,
+        x_converged_mm: x.x_converged_mm,
+        integration_error_mm: x.integration_error_mm,
+        median_time_s: x.median_time_s,
+        runs: x.runs,
+        steps: x.steps,
+        evaluations: x.evaluations,
+        reason: x.reason.as_ref().map(|w| w.tag()),
+        reason_detail: x.reason.as_ref().map(|w| w.to_string()),
+    });
+    to_csv(rows)
+}
+
+fn map_csv(m: &MapCostReport) -> Result<String> {
+    to_csv(m.rows.iter())
+}
+
+/// Rows through the csv crate (one header from the field names).
+pub(crate) fn to_csv<T: Serialize>(rows: impl Iterator<Item = T>) -> Result<String> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    for row in rows {
+        w.serialize(row)
+            .map_err(|e| Error::Unsupported(format!("writing CSV: {e}")))?;
+    }
+    let bytes = w
+        .into_inner()
+        .map_err(|e| Error::Unsupported(format!("writing CSV: {e}")))?;
+    Ok(String::from_utf8(bytes).expect("the csv crate writes UTF-8 from UTF-8 fields"))
 }

@@ -8,6 +8,7 @@ mod guidance;
 mod min_norm;
 pub mod render;
 mod solve;
+mod stability;
 mod sweep;
 mod table;
 mod vlocator;
@@ -62,12 +63,24 @@ pub enum Command {
     Sweep(sweep::SweepArgs),
     /// List the scenes render draws: name, chart kind and title, one line each.
     Scenes(render::ScenesArgs),
-    /// Error against run time of the dynamics' integrators (work-precision study).
+    /// Error against run time of every model, against the physical reference.
     ///
-    /// For each integrator and tolerance: the error of x_jam against a reference computed by the
-    /// other integrator at a tight tolerance, the median wall time of --runs runs, steps,
-    /// right-hand-side and Jacobian evaluations; failures are listed with their reason.
+    /// Every way of answering (closed form; min-norm by its exact path and by clarabel at each
+    /// tolerance; the simulation by each integrator, tolerance and contact stiffness): the error
+    /// of x_jam and theta_jam against the scene's physical reference (closed form at F, or
+    /// r/mu-like rigid limit for the motion drive), the integration error against the same
+    /// model at a tight tolerance, the median wall time of --runs answers, steps and
+    /// evaluations; a failure is a row with its reason. Then what a 400 x 400 map costs by
+    /// each model and its error against the closed form.
     Accuracy(accuracy::AccuracyArgs),
+    /// Numerical stability: a matrix of stiff and extreme cases through every method.
+    ///
+    /// Contact stiffness from 1 mm to 0.01 um of penetration, stiction velocity 1e-3 mm/s,
+    /// mu 0.01-2 and unequal or zero, radius 0.1 mm-1 m, mass 1e-6-100 kg, omega 0.1-3600
+    /// deg/s, start angles near the jam, 0 and 180 deg, a push barely able to move the disc;
+    /// each answer classed correct / inaccurate_flagged / failed_named / wrong_unflagged
+    /// against the case's physical reference. The chart is the scene `stability`.
+    Stability(stability::StabilityArgs),
     /// Hold a disc in a V-block: verdict, flank forces, holding capacity, optimum angle.
     ///
     /// A disc of weight m g in a V of two flat flanks (a symmetric V by --included-angle, any
@@ -92,6 +105,7 @@ pub fn main() -> i32 {
         Command::Scenes(a) => render::list(a),
         Command::Sweep(a) => sweep::run(a),
         Command::Accuracy(a) => accuracy::run(a),
+        Command::Stability(a) => stability::run(a),
         Command::Vlocator(a) => vlocator::run(a),
     };
     match result {

@@ -1,0 +1,204 @@
+//! Chart kind `stability` (scene `stability`): the stability matrix at a glance, one row per
+//! case and one column per model and method, each cell coloured by its class
+//! ([`crate::study::stability::Class`]) and labelled with x_jam or the status.
+//!
+//! The classes, statuses and x_jam do not depend on timing, so the picture is byte-identical;
+//! wall times are in `jamchart stability`'s table, not here.
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use serde::{Deserialize, Serialize};
+
+use super::axes::{DrawResult, draw_header};
+use super::models::Models;
+use super::spec::Scene;
+use super::{DataFile, style};
+use crate::config::Config;
+use crate::error::{Error, Result};
+use crate::model::JamStatus;
+use crate::study::stability::{self, Class, StabilityReport};
+
+/// `[chart]` keys of `kind = "stability"`.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct StabilitySpec {
+    /// Case names to draw, in the matrix's order (default: empty, every case).
+    pub cases: Vec<String>,
+}
+
+impl StabilitySpec {
+    /// Checks that every named case exists.
+    pub fn validate(&self) -> Result<()> {
+        let all = stability::cases(&Config::default());
+        for name in &self.cases {
+            if !all.iter().any(|c| &c.name == name) {
+                let known: Vec<&str> = all.iter().map(|c| c.name.as_str()).collect();
+                return Err(Error::invalid(
+                    "chart.cases",
+                    name,
+                    format!(
+                        "not a case of the matrix; the cases are {}",
+                        known.join(", ")
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The computed matrix.
+#[derive(Debug, Clone)]
+pub struct Stability {
+    title: String,
+    report: StabilityReport,
+}
+
+const FILL: [(Class, RGBColor); 4] = [
+    (Class::Correct, RGBColor(198, 230, 198)),
+    (Class::InaccurateFlagged, RGBColor(250, 214, 140)),
+    (Class::FailedNamed, RGBColor(190, 200, 225)),
+    (Class::WrongUnflagged, RGBColor(235, 80, 80)),
+];
+
+fn fill(c: Class) -> RGBColor {
+    FILL.iter().find(|f| f.0 == c).map_or(style::PAPER, |f| f.1)
+}
+
+impl Stability {
+    /// Runs the matrix of the scene's parameters through `models`.
+    pub fn compute(scene: &Scene, spec: &StabilitySpec, models: &dyn Models) -> Result<Self> {
+        let base = Config {
+            scene: scene.params,
+            min_norm: scene.min_norm,
+            dynamics: scene.dynamics,
+        };
+        spec.validate()?;
+        let all = stability::cases(&base);
+        let cases: Vec<_> = if spec.cases.is_empty() {
+            all
+        } else {
+            all.into_iter()
+                .filter(|c| spec.cases.contains(&c.name))
+                .collect()
+        };
+        let solve =
+            |s: &crate::models::ModelSpec, p: &crate::model::SceneParams| models.solve(s, p);
+        let report = stability::run_with(&solve, &base, &cases, &stability::methods(&base))?;
+        Ok(Stability {
+            title: scene.title.clone(),
+            report,
+        })
+    }
+
+    /// The classes and answers as JSON (no wall times: the picture's data is deterministic).
+    pub fn data(&self, _scene: &Scene) -> DataFile {
+        let rows: Vec<serde_json::Value> = self
+            .report
+            .rows
+            .iter()
+            .map(|r| {
+                serde_json::json!({
+                    "case": r.case,
+                    "model": r.model,
+                    "method": r.method,
+                    "status": r.status,
+                    "x_jam_mm": r.x_jam_mm,
+                    "reference": r.reference,
+                    "x_error_mm": r.x_error_mm,
+                    "allowance_mm": r.allowance_mm,
+                    "class": r.class,
+                    "reason": r.reason.as_ref().map(|w| w.tag()),
+                })
+            })
+            .collect();
+        DataFile::json(&serde_json::json!({
+            "methods": self.report.methods,
+            "cases": self.report.cases.iter().map(|c| serde_json::json!({"name": c.name, "what": c.what})).collect::<Vec<_>>(),
+            "rows": rows,
+        }))
+    }
+
+    /// Draws the matrix.
+    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+        let (w, h) = root.dim_in_pixel();
+        let (w, h) = (w as i32, h as i32);
+        let r = &self.report;
+        let n_cases = r.cases.len().max(1) as i32;
+        let n_methods = r.methods.len().max(1) as i32;
+        draw_header(
+            root,
+            &self.title,
+            "class of each answer against the case's physical reference (closed form at F; \
+             rigid limit for the motion drive)",
+        )?;
+        let (left, top, bottom_room) = (440, 110, 90);
+        let cell_w = (w - left - 20) / n_methods;
+        let cell_h = ((h - top - bottom_room) / n_cases).max(12);
+        let head = style::text(13.0).pos(Pos::new(HPos::Center, VPos::Bottom));
+        for (j, m) in r.methods.iter().enumerate() {
+            let x = left + j as i32 * cell_w + cell_w / 2;
+            // Two lines: model and the rest.
+            let (a, b) = m.split_once(' ').unwrap_or((m.as_str(), ""));
+            root.draw(&Text::new(a.to_string(), (x, top - 22), head.clone()))?;
+            root.draw(&Text::new(b.to_string(), (x, top - 6), head.clone()))?;
+        }
+        let case_font = style::text(12.0).pos(Pos::new(HPos::Right, VPos::Center));
+        let cell_font = style::text(11.0).pos(Pos::new(HPos::Center, VPos::Center));
+        for (i, c) in r.cases.iter().enumerate() {
+            let y = top + i as i32 * cell_h;
+            root.draw(&Text::new(
+                format!("{}: {}", c.name, c.what),
+                (left - 8, y + cell_h / 2),
+                case_font.clone(),
+            ))?;
+            for j in 0..r.methods.len() {
+                let Some(row) = r.rows.get(i * r.methods.len() + j) else {
+                    continue;
+                };
+                let x = left + j as i32 * cell_w;
+                root.draw(&Rectangle::new(
+                    [(x, y), (x + cell_w, y + cell_h)],
+                    fill(row.class).filled(),
+                ))?;
+                root.draw(&Rectangle::new(
+                    [(x, y), (x + cell_w, y + cell_h)],
+                    style::PAPER.stroke_width(1),
+                ))?;
+                let label = match (row.status, row.x_jam_mm) {
+                    (JamStatus::Jams, Some(x)) => format!("{} mm", style::fmt_num(x, 4)),
+                    (s, _) => s.as_str().replace('_', " "),
+                };
+                root.draw(&Text::new(
+                    label,
+                    (x + cell_w / 2, y + cell_h / 2),
+                    cell_font.clone(),
+                ))?;
+            }
+        }
+        // Legend: each class with its count (wrong_unflagged must read 0).
+        let legend_y = top + n_cases * cell_h + 30;
+        let lf = style::text(13.0).pos(Pos::new(HPos::Left, VPos::Center));
+        let mut x = left;
+        for (class, colour) in FILL {
+            let count = r.of_class(class).count();
+            root.draw(&Rectangle::new(
+                [(x, legend_y - 8), (x + 18, legend_y + 8)],
+                colour.filled(),
+            ))?;
+            let text = format!("{} ({count})", class.as_str().replace('_', " "));
+            root.draw(&Text::new(text, (x + 24, legend_y), lf.clone()))?;
+            x += 200;
+        }
+        let note = style::text(12.0).pos(Pos::new(HPos::Left, VPos::Center));
+        root.draw(&Text::new(
+            "cell: x_jam where the method says it jams, else its status; wall times and \
+             reasons: jamchart stability"
+                .to_string(),
+            (left, legend_y + 26),
+            note,
+        ))?;
+        Ok(())
+    }
+}

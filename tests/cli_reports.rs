@@ -1,0 +1,178 @@
+//! The two reports, `accuracy` and `stability`, run as the real binary in a temp dir.
+
+use serde_json::Value;
+
+#[path = "common/cli.rs"]
+mod cli_util;
+use cli_util::{jamchart, stderr, stdout};
+
+/// A small accuracy run writes its table, CSV, JSON, map CSV and wall-time chart; the CSV has
+/// one header and one row per source, every row through the port against its reference.
+#[test]
+fn accuracy_writes_every_output_with_one_schema() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &[
+            "accuracy",
+            "--drive",
+            "force",
+            "--methods",
+            "radau5",
+            "--tolerances",
+            "1e-3,1e-5",
+            "--penetrations",
+            "none",
+            "--nonsmooth-steps",
+            "0.1",
+            "--runs",
+            "1",
+            "--converged-rtol",
+            "1e-9",
+            "--min-norm-tolerances",
+            "1e-3,1e-8",
+            "--map-cells",
+            "6",
+            "--format",
+            "csv",
+            "--out-dir",
+            "acc",
+        ],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let csv = stdout(&o);
+    let header = csv.lines().next().unwrap();
+    assert!(
+        header.starts_with(
+            "model,method,tolerance,penetration_um,step_deg,status,theta_jam_deg,x_jam_mm,"
+        ),
+        "{header}"
+    );
+    // statics, exact, 2 clarabel, 2 radau5, 1 nonsmooth.
+    assert_eq!(csv.lines().count(), 1 + 7, "{csv}");
+    for name in [
+        "accuracy.md",
+        "accuracy.csv",
+        "accuracy.json",
+        "accuracy_map.csv",
+        "accuracy.svg",
+        "accuracy.png",
+    ] {
+        assert!(dir.path().join("acc").join(name).is_file(), "{name}");
+    }
+    let json: Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.path().join("acc/accuracy.json")).unwrap(),
+    )
+    .unwrap();
+    let rows = json["accuracy"]["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 7);
+    for r in rows {
+        assert!(r["median_time_s"].as_f64().unwrap() > 0.0, "{r}");
+        // A force drive is judged by the closed form at F.
+        assert_eq!(r["reference"], "closed_form", "{r}");
+    }
+    // clarabel at 1e-8 meets the closed form to 1e-6 relative.
+    let clarabel = &rows[3];
+    assert_eq!(clarabel["method"], "clarabel");
+    assert!(
+        clarabel["x_rel_error"].as_f64().unwrap() < 1e-6,
+        "{clarabel}"
+    );
+    // The force-driven simulation: within 1 % of the closed form, its integration error far
+    // smaller.
+    let sim = &rows[5];
+    assert!(sim["x_rel_error"].as_f64().unwrap() < 1e-2, "{sim}");
+    assert!(
+        sim["integration_error_mm"].as_f64().unwrap() < 1e-3,
+        "{sim}"
+    );
+    let map = json["map_cost"]["rows"].as_array().unwrap();
+    assert_eq!(map.len(), 5);
+    let md = std::fs::read_to_string(dir.path().join("acc/accuracy.md")).unwrap();
+    assert!(md.contains("## Floors of the simulation"), "{md}");
+    assert!(md.contains("A 6 x 6 map"), "{md}");
+}
+
+#[test]
+fn accuracy_refuses_bad_flags_before_computing() {
+    let dir = tempfile::tempdir().unwrap();
+    for (args, named) in [
+        (
+            vec!["--tolerances", "1e-3,2"],
+            "tolerances = 2 (flag --tolerances)",
+        ),
+        (
+            vec!["--converged-rtol", "0"],
+            "converged_rtol = 0 (flag --converged-rtol)",
+        ),
+        (vec!["--runs", "1001"], "runs = 1001 (flag --runs)"),
+        (
+            vec!["--min-norm-tolerances", "1e-3,abc"],
+            "min_norm_tolerances = abc (flag --min-norm-tolerances)",
+        ),
+        (
+            vec!["--penetrations", "0"],
+            "penetrations_um = 0 (flag --penetrations)",
+        ),
+        (
+            vec!["--map-cells", "3000"],
+            "cells_per_axis = 3000 (flag --map-cells)",
+        ),
+    ] {
+        let mut all = vec!["accuracy", "--out-dir", "never"];
+        all.extend(args.iter().copied());
+        let o = jamchart(dir.path(), &all);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(named), "{args:?}: {}", stderr(&o));
+        // Refused before anything ran or was written.
+        assert!(!dir.path().join("never").exists(), "{args:?}");
+    }
+}
+
+/// A few cases of the stability matrix through every method: the table's classes, the CSV's
+/// schema, the time it took, and an unknown case named with the list of cases.
+#[test]
+fn stability_runs_the_named_cases_and_refuses_an_unknown_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &[
+            "stability",
+            "--cases",
+            "paper,contact_0.01um,frictionless",
+            "--format",
+            "json",
+            "--out-dir",
+            "st",
+        ],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stderr(&o).contains("stability matrix of 3 cases x 6 methods took"));
+    let doc: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let rows = doc["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 18);
+    assert!(
+        rows.iter().all(|r| r["class"] != "wrong_unflagged"),
+        "{doc}"
+    );
+    let dopri = rows
+        .iter()
+        .find(|r| r["case"] == "contact_0.01um" && r["method"] == "dopri5")
+        .unwrap();
+    assert_eq!(dopri["class"], "failed_named");
+    assert_eq!(dopri["reason"]["reason"], "integrator_gave_up");
+    let csv = std::fs::read_to_string(dir.path().join("st/stability.csv")).unwrap();
+    assert!(
+        csv.starts_with("case,model,method,finished,status,x_jam_mm,"),
+        "{csv}"
+    );
+    assert!(dir.path().join("st/stability.md").is_file());
+
+    let o = jamchart(dir.path(), &["stability", "--cases", "paper,stiff"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(
+        err.contains("cases = stiff (flag --cases)") && err.contains("contact_1um"),
+        "{err}"
+    );
+}
