@@ -212,13 +212,21 @@ fn the_outcomes_that_are_not_jams() {
         drive: Drive::Force,
         ..Default::default()
     };
+    // Too heavy for the force-limited palm (F = 200 N below m g sin(atan mu) = 364 N): too
+    // weak, its own status since issue 13 (it was jammed_at_start).
     let s = run(&heavy, &force);
+    assert_eq!(s.status, JamStatus::TooWeak, "{s:?}");
+    // Started below theta_jam (44.6 deg): jammed where the push starts, within 1e-9 deg.
+    let early = SceneParams {
+        start_angle_deg: 40.0,
+        ..Default::default()
+    };
+    let s = run(&early, &force);
     assert_eq!(s.status, JamStatus::JammedAtStart, "{s:?}");
-    // Jammed where the push starts: the start angle, 90 deg, within 1e-9 deg.
     let theta = s.theta_jam_deg.expect("a jam at the start has an angle");
     assert!(
-        (theta - 90.0).abs() < 1e-9,
-        "theta_jam = {theta} deg, expected the start angle 90 deg within 1e-9 deg"
+        (theta - 40.0).abs() < 1e-9,
+        "theta_jam = {theta} deg, expected the start angle 40 deg within 1e-9 deg"
     );
     // Self-locking from the start: 2 atan(1.5) = 112.6 deg > 90 deg.
     let s = run(

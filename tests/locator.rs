@@ -101,7 +101,10 @@ proptest! {
             let scale = p.weight_n() + p.load_n;
             for (e, c) in e.iter().zip(&c) {
                 for (x, y) in [(e.normal_n, c.normal_n), (e.tangential_up_n, c.tangential_up_n)] {
-                    prop_assert!((x - y).abs() <= 1e-5 * scale, "exact {e:?} clarabel {c:?}");
+                    // clarabel stops at 1e-8 of its scaled residuals; with a flank at the edge
+                    // of its cone the least-norm point is ill-conditioned and it lands up to
+                    // 1e-5 of the load away (1.3e-4 N of 14 N, a drawn case): 1e-4 is its floor.
+                    prop_assert!((x - y).abs() <= 1e-4 * scale, "exact {e:?} clarabel {c:?}");
                 }
             }
         }

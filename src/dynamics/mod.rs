@@ -180,6 +180,28 @@ pub fn simulate(
     scene.validate()?;
     params.validate()?;
     params.validate_scene(scene)?;
+    let mut out = simulate_checked(scene, params, series_dt_s);
+    // A force-limited palm whose push is below the least push that can slide the disc at any
+    // angle, m g sin(atan mu_g) (the corrected Eq. 1 at 90 deg + alpha_g + alpha_p), cannot
+    // move it: the disc only settles into the contact (10.09 mm for a 10 mm disc at 0.95 of
+    // that push) and a jam read there is the push's weakness, not a jam.
+    if params.drive == Drive::Force
+        && scene.force_n <= crate::statics::least_push_n(scene)
+        && matches!(out.status, JamStatus::Jams | JamStatus::JammedAtStart)
+    {
+        out.status = JamStatus::TooWeak;
+        out.theta_jam_deg = None;
+        out.x_jam_mm = None;
+    }
+    Ok(out)
+}
+
+/// [`simulate`] once validated: the run, then its cross-checks and verification.
+fn simulate_checked(
+    scene: &SceneParams,
+    params: &DynamicsParams,
+    series_dt_s: Option<f64>,
+) -> DynamicsSolution {
     let mut out = run::run_once(scene, params, series_dt_s);
     let nonsmooth = params.method == Method::Nonsmooth;
     if params.rtol > LOOSEST_RTOL && !nonsmooth {
@@ -188,11 +210,11 @@ pub fn simulate(
             loosest: LOOSEST_RTOL,
         });
         out.status = JamStatus::Inaccurate;
-        return Ok(out);
+        return out;
     }
     // Nothing to verify when the run failed or already failed a cross-check.
     if !params.verify || out.status == JamStatus::IntegratorFailed || out.cross_check.is_some() {
-        return Ok(out);
+        return out;
     }
     // The time after the jam changes neither the status nor x_jam: the check stops at the jam.
     let fine = if nonsmooth {
@@ -252,12 +274,12 @@ pub fn simulate(
     if let Some(r) = reason {
         out.cross_check = Some(r);
         out.status = JamStatus::Inaccurate;
-        return Ok(out);
+        return out;
     }
     if !nonsmooth {
         compare_with_rigid(scene, params, &mut out);
     }
-    Ok(out)
+    out
 }
 
 /// Runs the rigid contact (the nonsmooth method) on the same scene and drive, reports the

@@ -561,9 +561,9 @@ mod tests {
     }
 
     /// The stiffest contacts and the extreme corners through every method: no NaN or infinity
-    /// in any number, and no trusted answer that disagrees with the physics. (The full
-    /// matrix's `too_weak` case is an open finding on the dynamics, which has no too_weak
-    /// status: its force drive says `jams` 0.09 mm from the start; it is left out here.)
+    /// in any number, and no trusted answer that disagrees with the physics. `too_weak` is the
+    /// regression of a finding: the force drive said `jams` 0.09 mm from the start where the
+    /// push can never move the disc; the dynamics now say too_weak.
     #[test]
     fn the_stiffest_and_most_extreme_corners_are_never_wrong_unflagged() {
         let base = Config::default();
@@ -576,6 +576,7 @@ mod tests {
             "mass_1e-6",
             "start_near_0",
             "barely_moves",
+            "too_weak",
         ];
         let cs = pick(&base, &names);
         assert_eq!(cs.len(), names.len());
