@@ -104,6 +104,8 @@
 //! thread count; [`charts`] turns scene files (`charts/<name>.toml`) into byte-identical SVG and
 //! PNG design charts with the data behind them (`jamchart render`).
 
+#![warn(missing_docs)]
+
 mod atomic;
 pub mod charts;
 mod cli;

@@ -13,7 +13,7 @@
 //! [`vlocator_capacity`] and [`vlocator_optimum`] (V-type locators, [`crate::locator`]);
 //! [`error_time`] draws `jamchart accuracy`'s wall-time chart, which is not a scene. The last
 //! three x-y kinds draw through [`xy`], stacked x-y
-//! panels. Min-norm programs and simulations are called through [`models::Models`], so a test
+//! panels. Min-norm programs and simulations are called through `models::Models`, so a test
 //! can count them: a scene computes only what it draws.
 //!
 //! ## Where the other models plug in
@@ -24,7 +24,7 @@
 //!   and hashes follow.
 //! - A model over a map (jam map boundary and read-off, contour map): nothing to do here. Maps
 //!   name any model of the port ([`crate::models::ModelKind`]: `model = "min_norm"`) and call
-//!   it per cell through [`models::Models::solve`].
+//!   it per cell through `models::Models::solve`.
 //! - A new chart kind: a module with a spec struct, `compute`, `data` and a backend-generic
 //!   `draw` (x-y panels through [`xy::Figure`], as [`convergence`] and [`time_series`] do), a
 //!   [`ChartSpec`] variant, a [`Chart`] variant and a scene `charts/<name>.toml`.
@@ -37,7 +37,7 @@ pub mod error_time;
 pub mod gallery;
 pub mod jam_map;
 pub mod legend;
-pub mod models;
+pub(crate) mod models;
 pub mod output;
 pub mod overrides;
 pub mod spec;
@@ -149,7 +149,7 @@ impl Chart {
     }
 
     /// [`Chart::compute`] with the min-norm and dynamics calls going through `models`.
-    pub fn compute_with(scene: &Scene, models: &dyn models::Models) -> Result<Chart> {
+    pub(crate) fn compute_with(scene: &Scene, models: &dyn models::Models) -> Result<Chart> {
         Ok(match &scene.chart {
             ChartSpec::JamMap(s) => Chart::JamMap(jam_map::JamMap::compute(scene, s, models)?),
             ChartSpec::Sweep(s) => Chart::Sweep(sweep::Sweep::compute(scene, s, models)?),

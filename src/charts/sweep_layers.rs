@@ -2,7 +2,7 @@
 //!
 //! To add a model's points: add a variant to [`SweepLayer`], say in [`validate`] which swept
 //! parameters it supports, and return its series from [`series`] by calling the model (through
-//! [`Models`]) at the points it should be drawn. Nothing else changes: panels, legend, data file
+//! `Models`) at the points it should be drawn. Nothing else changes: panels, legend, data file
 //! and hashes follow.
 //!
 //! The min-norm points sit at the Table 1 mu values, beside the paper's; the simulation points

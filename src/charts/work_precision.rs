@@ -3,7 +3,7 @@
 //!
 //! The picture must be the same bytes on every machine, so the cost is counted, not timed:
 //! right-hand-side evaluations (or accepted steps) of one run without the verification run
-//! ([`crate::dynamics::accuracy::run_study`]). Wall times are left to `jamchart accuracy`, which
+//! (`crate::dynamics::accuracy::run_study`). Wall times are left to `jamchart accuracy`, which
 //! reports their medians; neither the chart nor its data file carries one.
 
 use plotters::coord::Shift;

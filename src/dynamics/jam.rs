@@ -54,14 +54,23 @@ pub struct Instant {
 /// One row of the time series (the data of the paper's Fig. 5).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SeriesRow {
+    /// Time from the start of the push in s.
     pub t_s: f64,
+    /// Palm angle in deg.
     pub theta_deg: f64,
+    /// Disc position (hinge to ground contact) in mm.
     pub x_mm: f64,
+    /// Disc speed in mm/s.
     pub x_dot_mm_s: f64,
+    /// Penetration of the palm into the disc in mm (0 for a rigid contact).
     pub penetration_mm: f64,
+    /// Palm's normal force on the disc in N.
     pub normal_n: f64,
+    /// Palm's friction force on the disc in N.
     pub palm_friction_n: f64,
+    /// Ground's normal force in N.
     pub ground_normal_n: f64,
+    /// Ground's friction force in N.
     pub ground_friction_n: f64,
 }
 

@@ -7,8 +7,8 @@
 //! normal force. The palm, hinged at the origin, closes from the start angle at omega. Between
 //! the palm's face (offset h from the hinge line; 0 in the paper's theory) and the disc acts
 //! Adams' IMPACT force; at the palm and at the joint acts Adams' regularised Coulomb friction
-//! ([`contact`]). The state is (theta, x, v) and the equations of motion are derived in
-//! [`scene`]: in the limit of a rigid contact at constant speed they reduce to the corrected
+//! (`contact`). The state is (theta, x, v) and the equations of motion are derived in
+//! `scene`: in the limit of a rigid contact at constant speed they reduce to the corrected
 //! Eq. 1-2, so the closed form ([`crate::statics`]) is their quasi-static limit.
 //!
 //! # Drives
@@ -25,10 +25,10 @@
 //!
 //! # Integration and its trust
 //!
-//! Two integrators ([`integrators`]): RADAU5 (implicit, analytic Jacobian) and DOPRI5
+//! Two integrators (`integrators`): RADAU5 (implicit, analytic Jacobian) and DOPRI5
 //! (explicit). The problem is stiff: the friction slope at zero slip, 1.5 mu_s/V_s, gives
 //! time constants of about a microsecond under a 200 N load. The jam is read by
-//! [`jam::JamDetector`] from the dense output. Step error control does not bound the error of
+//! `jam::JamDetector` from the dense output. Step error control does not bound the error of
 //! x_jam, so every result is checked against the quasi-static limit and an error estimate:
 //!
 //! * no push can slide a disc past the self-locking wedge (theta = atan mu_g + atan mu_p); only
@@ -56,25 +56,25 @@
 //! (rtol' = 0.1 rtol^(2/3)), as Hairer's code does. A method that gives up reports
 //! `integrator_failed` with the time and the reason.
 
-pub mod accuracy;
-pub mod contact;
-pub mod integrators;
-pub mod jam;
+pub(crate) mod accuracy;
+pub(crate) mod contact;
+pub(crate) mod integrators;
+pub(crate) mod jam;
 pub mod nonsmooth;
 pub mod params;
 mod run;
-pub mod scene;
+pub(crate) mod scene;
 mod verdict;
 
 use serde::Serialize;
 
 pub use integrators::Failure;
+pub use jam::SeriesRow;
 pub use params::{Drive, DynamicsParams, Method};
 pub use verdict::{CrossCheck, Refinement};
 
 use crate::error::Result;
 use crate::model::{JamStatus, SceneParams};
-use jam::SeriesRow;
 
 /// How far past the self-locking wedge, beyond the disc's coasting distance, a jam may lie before
 /// it is called inaccurate: the contact's give (the jam sits 0.2-1 % from r/mu at the defaults).
@@ -120,7 +120,9 @@ pub struct DynamicsSolution {
     pub t_stiction_s: Option<f64>,
     /// The self-locking limit in mm: the touching position at theta = atan mu_g + atan mu_p.
     pub x_wedge_mm: Option<f64>,
+    /// The integration method that answered.
     pub method: Method,
+    /// How the palm was driven.
     pub drive: Drive,
     /// Accepted steps (of both runs when verified).
     pub steps: u64,

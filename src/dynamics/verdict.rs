@@ -12,6 +12,7 @@ use crate::model::JamStatus;
 /// JSON: the snake_case variant name under `reason`, beside its fields.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "reason", rename_all = "snake_case")]
+#[allow(missing_docs)] // each variant's doc names its fields and their units
 pub enum CrossCheck {
     /// The relative tolerance `rtol` is looser than `loosest`, beyond which no check can vouch
     /// for the answer.
@@ -80,6 +81,7 @@ pub enum CrossCheck {
 /// The second run that checks a simulation.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
+#[allow(missing_docs)] // each variant's doc names its field and its unit
 pub enum Refinement {
     /// RADAU5 or DOPRI5 at a tenth of the tolerances: this relative tolerance.
     Tolerance { rtol: f64 },

@@ -75,6 +75,7 @@ pub enum Outcome {
 /// JSON: the snake_case variant name under `reason`, beside its fields.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "reason", rename_all = "snake_case")]
+#[allow(missing_docs)] // each variant's doc names its fields (times in s)
 pub enum Failure {
     /// The step budget ran out: `steps` attempts (accepted and rejected) by simulated time `t_s`.
     StepLimit { t_s: f64, steps: u64 },

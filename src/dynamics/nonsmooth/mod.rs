@@ -33,8 +33,8 @@
 //! its normal push: theta_dot = -omega below the limit, in [-omega, 0] at it, 0 above it (the
 //! drive holds); when none of these is consistent (a rolling disc coming to rest in the wedge
 //! would, at the limit, turn the palm back) the drive stops below its limit rather than back
-//! off ([`step::DriveMode::Stalls`]). Each step's problem is small (five unknowns) and solved exactly by enumerating
-//! the contact modes ([`step`]): no relaxation of the friction cone, so a sliding contact does
+//! off (`step::DriveMode::Stalls`). Each step's problem is small (five unknowns) and solved exactly by enumerating
+//! the contact modes (`step`): no relaxation of the friction cone, so a sliding contact does
 //! not separate (the artefact of Anitescu's convex relaxation, which makes a contact sliding at
 //! speed u_T open at mu u_T, is absent). The test `the_step_is_a_fixed_point_of_clarabels_tresca_problem`
 //! checks each step against clarabel: with the friction bounds fixed at mu times the normal
@@ -95,7 +95,7 @@
 //! * Coulomb's law with a rigid body can have several consistent answers (Painleve); the first
 //!   consistent mode wins, the previous step's tried first, so the choice is deterministic.
 
-pub mod step;
+pub(crate) mod step;
 
 use serde::{Deserialize, Serialize};
 
@@ -149,7 +149,7 @@ pub struct MotionTally {
 
 /// How a nonsmooth run ended.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum End {
+pub(crate) enum End {
     /// Lock-up (motion drive).
     LockUp(LockUp),
     /// Disc and palm at rest (force drive): (t, theta, x).
@@ -166,7 +166,7 @@ pub enum End {
 
 /// The result of one nonsmooth run.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Run {
+pub(crate) struct Run {
     pub end: End,
     /// Time steps taken.
     pub steps: u64,
@@ -320,7 +320,7 @@ impl Stepper {
 /// Runs the push from the start angle with the disc at rest touching the palm and the ground,
 /// and on for `after_jam_s` after a force-driven jam (a lock-up ends the run: the rigid palm can
 /// turn no further). Parameters must be valid.
-pub fn run(scene: &SceneParams, params: &DynamicsParams, series_dt_s: Option<f64>) -> Run {
+pub(crate) fn run(scene: &SceneParams, params: &DynamicsParams, series_dt_s: Option<f64>) -> Run {
     let st = Stepper::new(scene, params);
     let dt = st.dt;
     let r = st.radius;
