@@ -20,7 +20,7 @@ use super::{DataFile, scene_subtitle_with};
 use crate::csv_out::{Dec, to_csv};
 use crate::dynamics::DynamicsParams;
 use crate::dynamics::jam::SeriesRow;
-use crate::dynamics::scene::Scene as DynScene;
+use crate::dynamics::system::System;
 use crate::error::{Error, Result};
 use crate::grid::AxisScale;
 use crate::model::SceneParams;
@@ -104,7 +104,7 @@ impl From<&Sample> for SeriesCsvRow {
 
 /// The samples of `rows` with the palm's geometric speed and touching position of scene `p`.
 fn samples(p: &SceneParams, d: &DynamicsParams, rows: &[SeriesRow]) -> Vec<Sample> {
-    let sys = DynScene::new(p, d);
+    let sys = System::new(p, d);
     rows.iter()
         .map(|r| {
             let th = r.theta_deg.to_radians();

@@ -32,7 +32,7 @@
 //! collapse of v / v_geo measures the stall and the disc's stop together.
 
 use super::integrators::{Control, DenseStep, Observer};
-use super::scene::Scene;
+use super::system::System;
 
 /// The palm turn (deg) after a candidate jam within which the disc must not recover.
 pub const CONFIRM_DEG: f64 = 0.25;
@@ -94,7 +94,7 @@ pub struct JamRule {
 /// The observer that reads the jam during the integration.
 #[derive(Debug, Clone)]
 pub struct JamDetector<'a> {
-    sys: &'a Scene,
+    sys: &'a System,
     rule: JamRule,
     /// The disc has reached the arming speed once.
     pub armed: bool,
@@ -126,7 +126,7 @@ pub struct JamDetector<'a> {
 }
 
 impl<'a> JamDetector<'a> {
-    pub fn new(sys: &'a Scene, rule: JamRule, t0: f64) -> Self {
+    pub fn new(sys: &'a System, rule: JamRule, t0: f64) -> Self {
         JamDetector {
             sys,
             rule,

@@ -63,7 +63,7 @@ pub(crate) mod jam;
 pub mod nonsmooth;
 pub mod params;
 mod run;
-pub(crate) mod scene;
+pub(crate) mod system;
 mod verdict;
 
 use serde::Serialize;

@@ -4,7 +4,7 @@ use super::integrators::Failure;
 use super::integrators::{Dopri5, Outcome, Radau5, Stats, Tolerances};
 use super::jam::{JamDetector, JamRule};
 use super::nonsmooth::{self, End};
-use super::scene::Scene;
+use super::system::System;
 use super::{
     CrossCheck, Drive, DynamicsParams, DynamicsSolution, MAX_STEP_DEG, Method, WEDGE_MARGIN,
 };
@@ -19,7 +19,7 @@ pub(super) fn run_once(
     if params.method == Method::Nonsmooth {
         return run_nonsmooth(scene, params, series_dt_s);
     }
-    let sys = Scene::new(scene, params);
+    let sys = System::new(scene, params);
     let theta0 = scene.start_angle_deg.to_radians();
     let mut y = vec![theta0, sys.touching_x(theta0), 0.0];
     let t_end = theta0 / sys.omega;
@@ -50,7 +50,7 @@ pub(super) fn run_once(
 fn conclude(
     scene: &SceneParams,
     params: &DynamicsParams,
-    sys: &Scene,
+    sys: &System,
     det: JamDetector,
     outcome: Outcome,
     stats: Stats,
@@ -186,7 +186,7 @@ fn run_nonsmooth(
     params: &DynamicsParams,
     series_dt_s: Option<f64>,
 ) -> DynamicsSolution {
-    let sys = Scene::new(scene, params);
+    let sys = System::new(scene, params);
     let wedge = scene.alpha_ground() + scene.alpha_palm();
     let x_wedge = (wedge > 0.0)
         .then(|| sys.touching_x(wedge))
@@ -263,6 +263,6 @@ fn run_nonsmooth(
     out
 }
 
-fn sys_end(scene: &SceneParams, sys: &Scene) -> f64 {
+fn sys_end(scene: &SceneParams, sys: &System) -> f64 {
     scene.start_angle_deg.to_radians() / sys.omega
 }

@@ -38,7 +38,7 @@ use crate::model::SceneParams;
 
 /// The system in the units of the state; built once per simulation.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Scene {
+pub struct System {
     /// r in mm.
     pub radius: f64,
     /// h in mm.
@@ -88,16 +88,16 @@ fn scale(a: f64, x: &Grad) -> Grad {
     [a * x[0], a * x[1], a * x[2]]
 }
 
-impl Scene {
+impl System {
     /// Builds the system from validated parameters.
-    pub fn new(scene: &SceneParams, d: &DynamicsParams) -> Scene {
+    pub fn new(scene: &SceneParams, d: &DynamicsParams) -> System {
         let law = |mu_d: f64, mu_s: Option<f64>| FrictionLaw {
             mu_static: mu_s.unwrap_or(mu_d),
             mu_dynamic: mu_d,
             v_static: d.stiction_velocity_mm_s,
             v_dynamic: d.friction_velocity_mm_s,
         };
-        Scene {
+        System {
             radius: scene.radius_mm,
             offset: d.palm_offset_mm,
             mass: scene.mass_kg,
@@ -123,7 +123,7 @@ impl Scene {
     }
 
     /// The speed (mm/s) at which the disc must move to stay in touch with the palm turning at
-    /// omega: -omega d/dtheta of [`Scene::touching_x`] = omega (r + (r + h) cos theta) / sin^2 theta,
+    /// omega: -omega d/dtheta of [`System::touching_x`] = omega (r + (r + h) cos theta) / sin^2 theta,
     /// which is r omega / (2 sin^2(theta/2)) for h = 0.
     pub fn geometric_speed(&self, theta: f64) -> f64 {
         let (s, c) = theta.sin_cos();
@@ -223,12 +223,12 @@ impl Scene {
     }
 }
 
-impl OdeSystem for Scene {
+impl OdeSystem for System {
     fn dim(&self) -> usize {
         3
     }
     fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
-        Scene::rhs(self, y, dy);
+        System::rhs(self, y, dy);
     }
     fn jacobian(&self, _t: f64, y: &[f64], jac: &mut [f64]) {
         self.evaluate(y, Some(jac));
@@ -247,7 +247,7 @@ mod tests {
                 drive,
                 ..Default::default()
             };
-            let sys = Scene::new(&scene, &d);
+            let sys = System::new(&scene, &d);
             // In contact and sliding; in contact near the force limit; in the stiction band.
             let th: f64 = 50_f64.to_radians();
             let states = [
@@ -290,7 +290,7 @@ mod tests {
                 palm_offset_mm: h,
                 ..Default::default()
             };
-            let sys = Scene::new(&SceneParams::default(), &d);
+            let sys = System::new(&SceneParams::default(), &d);
             for deg in [30.0_f64, 45.0, 80.0] {
                 let th = deg.to_radians();
                 let e = 1e-6;
@@ -313,7 +313,7 @@ mod tests {
             damping_n_s_per_mm: 0.0,
             ..Default::default()
         };
-        let sys = Scene::new(&scene, &d);
+        let sys = System::new(&scene, &d);
         let th = 60_f64.to_radians();
         let y = [th, sys.touching_x(th) - 0.05, 10.0];
         let f = sys.evaluate(&y, None);
