@@ -8,7 +8,7 @@
 //! the palm's face (offset h from the hinge line; 0 in the paper's theory) and the disc acts
 //! Adams' IMPACT force; at the palm and at the joint acts Adams' regularised Coulomb friction
 //! (`contact`). The state is (theta, x, v) and the equations of motion are derived in
-//! `scene`: in the limit of a rigid contact at constant speed they reduce to the corrected
+//! `system`: in the limit of a rigid contact at constant speed they reduce to the corrected
 //! Eq. 1-2, so the closed form ([`crate::statics`]) is their quasi-static limit.
 //!
 //! # Drives
