@@ -304,6 +304,14 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
             "  rho* <= 1: no V that does not lock can hold this load at this friction"
         );
     }
+    if o.at_bound && p.load_n == 0.0 {
+        let _ = writeln!(
+            out,
+            "  with no load but the weight, every V that does not lock holds the part, so the \
+             criterion only moves away from locking and the widest V wins: give the load the \
+             V must hold (--load, --load-angle) to size it"
+        );
+    }
     out
 }
 
