@@ -12,6 +12,7 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::legend::{self, LegendEntry};
 use super::style::{self, GRID_MAJOR, GRID_MINOR, INK, PAPER};
 use crate::grid::AxisScale;
 
@@ -406,6 +407,39 @@ pub fn draw_header<DB: DrawingBackend>(
     root.draw(&Text::new(title.to_string(), (mid, 12), title_font))?;
     let sub_font = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
     root.draw(&Text::new(subtitle.to_string(), (mid, 40), sub_font))
+}
+
+/// A filled map's chart: the standard margins with room below for `entries`' legend, each
+/// band's rings filled in its colour (`bands[i]` in `colors[i]`; extra bands stay unfilled),
+/// and the grid over them. The contour map and the V-locator capacity map share it.
+pub fn band_map<'a, 'b, DB: DrawingBackend>(
+    root: &'a DrawingArea<DB, Shift>,
+    x: &PlotAxis,
+    y: &PlotAxis,
+    entries: &[LegendEntry],
+    bands: &[Vec<Vec<(f64, f64)>>],
+    colors: &[RGBColor],
+) -> Result<Chart<'b, DB>, DrawingAreaErrorKind<DB::ErrorType>>
+where
+    'a: 'b,
+{
+    let (w, _) = root.dim_in_pixel();
+    let rows = legend::rows_needed(root, entries, w as i32 - 120)?;
+    let m = Margins {
+        top: 70,
+        bottom: 75 + (rows * legend::ROW_PX) as u32,
+        left: 95,
+        right: 40,
+    };
+    let chart = build_chart(root, x, y, m)?;
+    let area = chart.plotting_area();
+    for (rings, color) in bands.iter().zip(colors) {
+        for ring in rings {
+            area.draw(&Polygon::new(ring.clone(), color.filled()))?;
+        }
+    }
+    draw_grid(&chart, x, y)?;
+    Ok(chart)
 }
 
 #[cfg(test)]

@@ -12,7 +12,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::{Deserialize, Serialize};
 use serde_json::json;
 
-use super::axes::{self, DrawResult, Margins, PlotAxis};
+use super::axes::{self, DrawResult, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
 use super::spec::Scene;
@@ -276,23 +276,10 @@ impl ContourMap {
         let x = PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param));
         let y = PlotAxis::new(ya.min, ya.max, ya.scale, axis_label(ya.param));
         let entries = self.legend();
-        let rows = legend::rows_needed(root, &entries, w as i32 - 120)?;
-        let m = Margins {
-            top: 70,
-            bottom: 75 + (rows * legend::ROW_PX) as u32,
-            left: 95,
-            right: 40,
-        };
-        let chart = axes::build_chart(root, &x, &y, m)?;
-        let area = chart.plotting_area();
         // One band below the first level, one between each pair, one above the last.
-        let greys = style::band_colors(self.spec.x_jam_levels_mm.len() + 1);
-        for (rings, grey) in self.bands.iter().zip(&greys) {
-            for ring in rings {
-                area.draw(&Polygon::new(ring.clone(), grey.filled()))?;
-            }
-        }
-        axes::draw_grid(&chart, &x, &y)?;
+        let colors = style::band_colors(self.spec.x_jam_levels_mm.len() + 1);
+        let chart = axes::band_map(root, &x, &y, &entries, &self.bands, &colors)?;
+        let area = chart.plotting_area();
         let (px, py) = area.get_pixel_range();
         let xr = x.plot_range();
         let (label_u, mid_u, left_u) = [0.86, 0.5, 0.1]

@@ -9,7 +9,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::{Deserialize, Serialize};
 use serde_json::json;
 
-use super::axes::{self, DrawResult, Margins, PlotAxis};
+use super::axes::{self, DrawResult, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
 use super::spec::Scene;
 use super::style::{self, INK, LineKind, PAPER};
@@ -189,24 +189,11 @@ impl VlocatorCapacity {
             "load direction φ (deg from +x; −90 pushes into the V, 0 sideways, 90 lifts)",
         );
         let entries = self.legend();
-        let rows = legend::rows_needed(root, &entries, w as i32 - 120)?;
-        let m = Margins {
-            top: 70,
-            bottom: 75 + (rows * legend::ROW_PX) as u32,
-            left: 95,
-            right: 40,
-        };
-        let chart = axes::build_chart(root, &x, &y, m)?;
-        let area = chart.plotting_area();
         // Darker = holds more; the unbounded region stays white.
-        let mut greys = style::band_colors(self.spec.levels_over_w.len() + 1);
-        greys.push(PAPER);
-        for (rings, grey) in self.bands.iter().zip(&greys) {
-            for ring in rings {
-                area.draw(&Polygon::new(ring.clone(), grey.filled()))?;
-            }
-        }
-        axes::draw_grid(&chart, &x, &y)?;
+        let mut colors = style::band_colors(self.spec.levels_over_w.len() + 1);
+        colors.push(PAPER);
+        let chart = axes::band_map(root, &x, &y, &entries, &self.bands, &colors)?;
+        let area = chart.plotting_area();
         for p in &self.unbounded_edge {
             style::draw_line(area, p, LineKind::Dashed, INK)?;
         }
