@@ -46,14 +46,18 @@ pub struct PerItem {
 pub const JAM_MAP_CELL: PerItem = PerItem {
     what: "cells of the jam map",
     memory_bytes: 200,
-    output_bytes: 24,
+    // JSON 19 B and the long-format CSV 24 B per cell (fig3: 3,055,845 + 3,865,995 B for
+    // 160,801 cells), with 25 % margin.
+    output_bytes: 54,
 };
 
 /// A cell of a contour map.
 pub const CONTOUR_MAP_CELL: PerItem = PerItem {
     what: "cells of the contour map",
     memory_bytes: 280,
-    output_bytes: 48,
+    // JSON 55 B and the long-format CSV 45 B per cell (fig7c: 6,643,406 + 5,404,959 B for
+    // 120,000 cells), with 25 % margin.
+    output_bytes: 125,
 };
 
 /// A point of a sweep.
