@@ -13,7 +13,9 @@ use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
 use crate::minnorm::MinNormSettings;
 use crate::model::SceneParams;
-pub use read::{array_for_table, cut_quotes, keyed, not_a_table, parse_toml, seq_for_struct};
+pub use read::{
+    array_for_table, cut_quotes, key_line_column, keyed, not_a_table, parse_toml, seq_for_struct,
+};
 
 /// A whole parameter file. Each model's issue adds its own section.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]

@@ -59,7 +59,9 @@
 //! ([`grid`], generic over any [`grid::ParamSet`]), sweeps, charts and the reports all call it.
 //! **To add a model**, write its module and register it in [`models`] (one variant in each of
 //! `ModelKind`, `ModelSpec`, `Detail` and one arm of `solve`); **to add a chart kind**, write its
-//! module under [`charts`] and register it in `charts::spec::ChartSpec` and `charts::Chart`.
+//! module under [`charts`] (settings that implement the kind's contract, a chart that draws
+//! itself) and add one line to the list of kinds in `charts/kinds.rs`, the chart kinds' one
+//! registration point; its scene `charts/<name>.toml` is built in by `build.rs`.
 //!
 //! Outcomes are data ([`model::JamStatus`], with typed reasons in each model's solution);
 //! [`error::Error`] is only for misuse.

@@ -126,6 +126,18 @@ pub fn check_count(key: &str, count: usize, max: usize, what: &str) -> Result<()
     Err(Error::invalid(key, count, format!("{what} is 1 to {max}")))
 }
 
+/// A list of at most `max` items (it may be empty), or an error naming `key`.
+pub fn check_at_most(key: &str, count: usize, max: usize, what: &str) -> Result<()> {
+    if count <= max {
+        return Ok(());
+    }
+    Err(Error::invalid(
+        key,
+        format!("{count} {what}"),
+        format!("at most {max} {what}"),
+    ))
+}
+
 /// Bytes in a human unit: `1.26 GiB`, `640 MiB`, `12 kiB`.
 pub fn human_bytes(b: u64) -> String {
     let units = ["B", "kiB", "MiB", "GiB", "TiB", "PiB", "EiB"];

@@ -124,9 +124,11 @@ fn bad_scene_file_names_file_line_and_key() {
     let out = jamchart(dir.path(), &["render", "--scenes-dir", "charts"]);
     assert_eq!(out.status.code(), Some(2));
     let err = stderr(&out);
-    // The chart is an internally tagged table ([chart] kind = ...), whose keys serde reads
-    // without their own positions: the line is the table's, and the message names the key.
-    assert!(err.contains("bad.toml:3:") && err.contains("axs"), "{err}");
+    // The chart's own mistake comes before the missing base, named with its line and path.
+    assert!(
+        err.contains("bad.toml:5:7: chart.axs = 1: unknown field `axs`"),
+        "{err}"
+    );
 }
 
 /// Regression: `render fig7a fig7a` drew the scene twice at once, both writes went through the

@@ -1,33 +1,16 @@
 //! The scenes and the parameter set built into the binary, so that `jamchart render` works from
 //! any folder and after `cargo install`. The repository's `charts/*.toml` and
-//! `config/paper.toml` stay the source: they are compiled in here, and a test checks that every
-//! scene file is listed.
+//! `config/paper.toml` stay the source: they are compiled in here (the scene files by
+//! `build.rs`), and a test checks that every scene file is in with its text.
 
 use crate::config::{Config, parse_toml};
 
 /// The paper's parameter set, `config/paper.toml`: the base of every scene without `base`.
 pub const PAPER_TOML: &str = include_str!("../../config/paper.toml");
 
-/// The built-in scenes: name (file stem) and the text of `charts/<name>.toml`, sorted by name.
-pub const SCENES: &[(&str, &str)] = &[
-    ("accuracy", include_str!("../../charts/accuracy.toml")),
-    ("fig3", include_str!("../../charts/fig3.toml")),
-    ("fig4", include_str!("../../charts/fig4.toml")),
-    ("fig5", include_str!("../../charts/fig5.toml")),
-    ("fig6", include_str!("../../charts/fig6.toml")),
-    ("fig7a", include_str!("../../charts/fig7a.toml")),
-    ("fig7b", include_str!("../../charts/fig7b.toml")),
-    ("fig7c", include_str!("../../charts/fig7c.toml")),
-    ("stability", include_str!("../../charts/stability.toml")),
-    (
-        "vlocator-capacity",
-        include_str!("../../charts/vlocator-capacity.toml"),
-    ),
-    (
-        "vlocator-optimum",
-        include_str!("../../charts/vlocator-optimum.toml"),
-    ),
-];
+/// The built-in scenes: name (file stem) and the text of `charts/<name>.toml`, sorted by name;
+/// `build.rs` lists every file of charts/.
+pub const SCENES: &[(&str, &str)] = include!(concat!(env!("OUT_DIR"), "/scenes.rs"));
 
 /// The names of the built-in scenes, sorted.
 pub fn scene_names() -> Vec<String> {

@@ -51,9 +51,14 @@ pub struct ContourMapSpec {
     pub model: ModelKind,
 }
 
-impl ContourMapSpec {
+const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
+
+impl super::kinds::Kind for ContourMapSpec {
+    type Chart = ContourMap;
+
     /// Checks the axes and levels.
-    pub fn validate(&self, base: &SceneParams) -> Result<()> {
+    fn validate(&self, scene: &Scene) -> Result<()> {
+        let base = &scene.params;
         if [self.x_axis.param, self.y_axis.param].contains(&GridParam::ThetaDeg) {
             return Err(Error::invalid(
                 "chart.x_axis/y_axis",
@@ -98,6 +103,35 @@ impl ContourMapSpec {
         self.request(base).validate()
     }
 
+    fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridParam)> {
+        vec![("x_axis", self.x_axis.param), ("y_axis", self.y_axis.param)]
+    }
+
+    fn check_size(&self, _scene: &Scene) -> Result<()> {
+        let levels = [
+            ("chart.x_jam_levels_mm", self.x_jam_levels_mm.len()),
+            (
+                "chart.theta_jam_levels_deg",
+                self.theta_jam_levels_deg.len(),
+            ),
+        ];
+        for (key, n) in levels {
+            crate::limits::check_at_most(key, n, crate::limits::MAX_LEVELS, "levels")?;
+        }
+        let cells = self.x_axis.count as f64 * self.y_axis.count as f64;
+        crate::limits::check_items(CELLS, cells, crate::limits::CONTOUR_MAP_CELL)
+    }
+
+    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<ContourMap> {
+        ContourMap::compute(scene, self, models)
+    }
+
+    fn cells(chart: &ContourMap) -> Option<DataFile> {
+        Some(chart.cells())
+    }
+}
+
+impl ContourMapSpec {
     fn request(&self, base: &SceneParams) -> GridRequest {
         let mut quantities = vec![Quantity::XJamMm];
         if !self.theta_jam_levels_deg.is_empty() {

@@ -8,10 +8,11 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use serde::{Deserialize, Serialize};
 
-use super::axes::{DrawResult, PlotAxis, power_of_ten};
+use super::axes::{DrawResult, PlotAxis};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
+use super::ticks::power_of_ten;
 use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
 use super::{DataFile, scene_subtitle_with};
 use crate::csv_out::{Dec, to_csv};
@@ -29,9 +30,11 @@ pub struct ConvergenceSpec {
     pub theta_deg: Option<f64>,
 }
 
-impl ConvergenceSpec {
+impl super::kinds::Kind for ConvergenceSpec {
+    type Chart = Convergence;
+
     /// Checks the angle.
-    pub fn validate(&self) -> Result<()> {
+    fn validate(&self, _scene: &Scene) -> Result<()> {
         if let Some(t) = self.theta_deg
             && !(t.is_finite() && t > 0.0 && t < 180.0)
         {
@@ -42,6 +45,14 @@ impl ConvergenceSpec {
             ));
         }
         Ok(())
+    }
+
+    fn check_size(&self, _scene: &Scene) -> Result<()> {
+        Ok(())
+    }
+
+    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<Convergence> {
+        Convergence::compute(scene, self, models)
     }
 }
 

@@ -62,9 +62,18 @@ fn all_layers() -> Vec<JamMapLayer> {
     vec![Regions, Boundary, PositionScale, ReadOff]
 }
 
-impl JamMapSpec {
+const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
+
+impl super::kinds::Kind for JamMapSpec {
+    type Chart = JamMap;
+
+    fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridParam)> {
+        vec![("x_axis", self.x_axis.param), ("y_axis", self.y_axis.param)]
+    }
+
     /// Checks the axes against the scene.
-    pub fn validate(&self, base: &SceneParams) -> Result<()> {
+    fn validate(&self, scene: &Scene) -> Result<()> {
+        let base = &scene.params;
         if self.y_axis.param != GridParam::ThetaDeg {
             return Err(Error::invalid(
                 "chart.y_axis.param",
@@ -82,6 +91,21 @@ impl JamMapSpec {
         self.request(base).validate()
     }
 
+    fn check_size(&self, _scene: &Scene) -> Result<()> {
+        let cells = self.x_axis.count as f64 * self.y_axis.count as f64;
+        crate::limits::check_items(CELLS, cells, crate::limits::JAM_MAP_CELL)
+    }
+
+    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<JamMap> {
+        JamMap::compute(scene, self, models)
+    }
+
+    fn cells(chart: &JamMap) -> Option<DataFile> {
+        chart.cells()
+    }
+}
+
+impl JamMapSpec {
     fn request(&self, base: &SceneParams) -> GridRequest {
         GridRequest {
             base: *base,
@@ -304,7 +328,7 @@ impl JamMap {
                 AxisScale::Linear => len / (y.max - y.min) * dtheta.to_degrees(),
             }
         };
-        let ticks = axes::adaptive_ticks(lo, hi, density, 5.0, 24.0);
+        let ticks = super::ticks::adaptive_ticks(lo, hi, density, 5.0, 24.0);
         let right = px.end - 1;
         let row = |xmm: f64| axes::pixel(c, x, y, x.min, palm_angle_at(r, xmm).to_degrees()).1;
         for v in ticks.minor {

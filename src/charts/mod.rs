@@ -25,17 +25,28 @@
 //! - A model over a map (jam map boundary and read-off, contour map): nothing to do here. Maps
 //!   name any model of the port ([`crate::models::ModelKind`]: `model = "min_norm"`) and call
 //!   it per cell through `models::Models::solve`.
-//! - A new chart kind: a module with a spec struct, `compute`, `data` and a backend-generic
-//!   `draw` (x-y panels through [`xy::Figure`], as [`convergence`] and [`time_series`] do), a
-//!   [`ChartSpec`] variant, a [`Chart`] variant and a scene `charts/<name>.toml`.
+//! - A new chart kind: a module with its `[chart]` settings (implementing `kinds::Kind`: name,
+//!   data format, checks, `compute`) and its computed chart (implementing `kinds::Drawn`: a
+//!   backend-generic `draw` and its data; x-y panels through [`xy::Figure`], as [`convergence`]
+//!   and [`time_series`] do), then one line in the list of `kinds.rs`, which generates
+//!   [`ChartSpec`], [`Chart`] and their dispatch. A scene `charts/<name>.toml` is built in by
+//!   `build.rs`; its keys go in charts/README.md.
+//!
+//! Beside the kinds: [`axes`] draws frames and ticks that [`ticks`] places, [`labels`] words
+//! the axes and subtitles, [`contours`] maps the contour crate's geometry to plot space, and
+//! [`data`] holds the data files.
 
 pub mod axes;
 pub mod builtin;
 pub mod contour_map;
+pub mod contours;
 pub mod convergence;
+pub mod data;
 pub mod error_time;
 pub mod gallery;
 pub mod jam_map;
+mod kinds;
+pub mod labels;
 pub mod legend;
 pub(crate) mod models;
 pub mod output;
@@ -45,22 +56,23 @@ pub mod stability;
 pub mod style;
 pub mod sweep;
 pub mod sweep_layers;
+pub mod ticks;
 pub mod time_series;
 pub mod vlocator_capacity;
 pub mod vlocator_optimum;
 pub mod work_precision;
 pub mod xy;
 
-use geo_types::{MultiLineString, MultiPolygon};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use crate::csv_out::{Dec, dec, to_csv_with_header};
 use crate::error::{Error, Result};
-use crate::grid::{GridAxis, GridParam};
-use crate::model::SceneParams;
 use axes::DrawResult;
-pub use spec::{ChartSpec, Scene, SceneSource, load_scene, scene_files, scene_names};
+pub use contours::{grid_lines, grid_polygons, grid_to_plot};
+pub use data::{DataFile, cells_csv};
+pub use kinds::{Chart, ChartSpec};
+pub use labels::{axis_label, param_symbol, param_unit, scene_subtitle, scene_subtitle_with};
+pub use spec::{Scene, SceneSource, load_scene, scene_files, scene_names};
 
 /// Which pictures to produce.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -84,35 +96,6 @@ impl Formats {
     }
 }
 
-/// The data behind a chart: file extension and bytes.
-#[derive(Debug, Clone, PartialEq)]
-pub struct DataFile {
-    /// `csv` or `json`.
-    pub extension: &'static str,
-    /// The file content.
-    pub bytes: Vec<u8>,
-}
-
-impl DataFile {
-    /// Compact JSON of `doc` with a trailing newline.
-    pub fn json(doc: &serde_json::Value) -> Self {
-        let mut bytes = serde_json::to_vec(doc).expect("JSON values serialise");
-        bytes.push(b'\n');
-        DataFile {
-            extension: "json",
-            bytes,
-        }
-    }
-
-    /// CSV bytes (see [`crate::csv_out`]).
-    pub fn csv(bytes: Vec<u8>) -> Self {
-        DataFile {
-            extension: "csv",
-            bytes,
-        }
-    }
-}
-
 /// One rendered scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Rendered {
@@ -128,94 +111,16 @@ pub struct Rendered {
     pub cells: Option<DataFile>,
 }
 
-/// A computed chart of any kind.
-#[allow(missing_docs)] // one variant per chart kind, documented on its module
-pub enum Chart {
-    JamMap(jam_map::JamMap),
-    Sweep(sweep::Sweep),
-    ContourMap(contour_map::ContourMap),
-    Convergence(convergence::Convergence),
-    TimeSeries(time_series::TimeSeries),
-    WorkPrecision(work_precision::WorkPrecision),
-    VlocatorCapacity(vlocator_capacity::VlocatorCapacity),
-    VlocatorOptimum(vlocator_optimum::VlocatorOptimum),
-    Stability(stability::Stability),
-}
-
 impl Chart {
     /// Computes what `scene`'s chart draws, with the model the scene names.
     pub fn compute(scene: &Scene) -> Result<Chart> {
         Self::compute_with(scene, &models::Live)
     }
 
-    /// [`Chart::compute`] with the min-norm and dynamics calls going through `models`.
-    pub(crate) fn compute_with(scene: &Scene, models: &dyn models::Models) -> Result<Chart> {
-        Ok(match &scene.chart {
-            ChartSpec::JamMap(s) => Chart::JamMap(jam_map::JamMap::compute(scene, s, models)?),
-            ChartSpec::Sweep(s) => Chart::Sweep(sweep::Sweep::compute(scene, s, models)?),
-            ChartSpec::ContourMap(s) => {
-                Chart::ContourMap(contour_map::ContourMap::compute(scene, s, models)?)
-            }
-            ChartSpec::Convergence(s) => {
-                Chart::Convergence(convergence::Convergence::compute(scene, s, models)?)
-            }
-            ChartSpec::TimeSeries(s) => {
-                Chart::TimeSeries(time_series::TimeSeries::compute(scene, s, models)?)
-            }
-            ChartSpec::WorkPrecision(s) => {
-                Chart::WorkPrecision(work_precision::WorkPrecision::compute(scene, s, models)?)
-            }
-            ChartSpec::VlocatorCapacity(s) => {
-                Chart::VlocatorCapacity(vlocator_capacity::VlocatorCapacity::compute(scene, s)?)
-            }
-            ChartSpec::VlocatorOptimum(s) => {
-                Chart::VlocatorOptimum(vlocator_optimum::VlocatorOptimum::compute(scene, s)?)
-            }
-            ChartSpec::Stability(s) => {
-                Chart::Stability(stability::Stability::compute(scene, s, models)?)
-            }
-        })
-    }
-
     /// Draws on any plotters backend.
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
         root.fill(&WHITE)?;
-        match self {
-            Chart::JamMap(c) => c.draw(root),
-            Chart::Sweep(c) => c.draw(root),
-            Chart::ContourMap(c) => c.draw(root),
-            Chart::Convergence(c) => c.draw(root),
-            Chart::TimeSeries(c) => c.draw(root),
-            Chart::WorkPrecision(c) => c.draw(root),
-            Chart::VlocatorCapacity(c) => c.draw(root),
-            Chart::VlocatorOptimum(c) => c.draw(root),
-            Chart::Stability(c) => c.draw(root),
-        }
-    }
-
-    /// A map's cells as long-format CSV: the two parameters and each quantity per cell, units in
-    /// the header; None for charts whose data is CSV already.
-    pub fn cells(&self) -> Option<DataFile> {
-        match self {
-            Chart::JamMap(c) => c.cells(),
-            Chart::ContourMap(c) => Some(c.cells()),
-            _ => None,
-        }
-    }
-
-    /// The data behind the chart.
-    pub fn data(&self, scene: &Scene) -> DataFile {
-        match self {
-            Chart::JamMap(c) => c.data(scene),
-            Chart::Sweep(c) => c.data(scene),
-            Chart::ContourMap(c) => c.data(scene),
-            Chart::Convergence(c) => c.data(scene),
-            Chart::TimeSeries(c) => c.data(scene),
-            Chart::WorkPrecision(c) => c.data(scene),
-            Chart::VlocatorCapacity(c) => c.data(scene),
-            Chart::VlocatorOptimum(c) => c.data(scene),
-            Chart::Stability(c) => c.data(scene),
-        }
+        self.draw_kind(root)
     }
 }
 
@@ -261,175 +166,6 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
         data: chart.data(scene),
         cells: chart.cells(),
     })
-}
-
-/// The symbol of a scene parameter in labels, e.g. `F` for force_n.
-pub fn param_symbol(p: GridParam) -> &'static str {
-    match p {
-        GridParam::Mu => "μ",
-        GridParam::MuGround => "μ_ground",
-        GridParam::MuPalm => "μ_palm",
-        GridParam::RadiusMm => "r",
-        GridParam::MassKg => "m",
-        GridParam::ForceN => "F",
-        GridParam::GravityMS2 => "g",
-        GridParam::StartAngleDeg => "θ_start",
-        GridParam::PalmLengthMm => "L_palm",
-        GridParam::ThetaDeg => "θ",
-    }
-}
-
-/// The unit of a scene parameter in labels; `-` for the friction coefficients.
-pub fn param_unit(p: GridParam) -> &'static str {
-    match p {
-        GridParam::Mu | GridParam::MuGround | GridParam::MuPalm => "-",
-        GridParam::RadiusMm | GridParam::PalmLengthMm => "mm",
-        GridParam::MassKg => "kg",
-        GridParam::ForceN => "N",
-        GridParam::GravityMS2 => "m/s²",
-        GridParam::StartAngleDeg | GridParam::ThetaDeg => "deg",
-    }
-}
-
-/// Axis label of a scene parameter: quantity, symbol and unit.
-pub fn axis_label(p: GridParam) -> String {
-    let quantity = match p {
-        GridParam::Mu => "friction coefficient",
-        GridParam::MuGround => "ground friction coefficient",
-        GridParam::MuPalm => "palm friction coefficient",
-        GridParam::RadiusMm => "disc radius",
-        GridParam::MassKg => "disc mass",
-        GridParam::ForceN => "palm push",
-        GridParam::GravityMS2 => "gravity",
-        GridParam::StartAngleDeg => "start angle of the palm",
-        GridParam::PalmLengthMm => "palm length",
-        GridParam::ThetaDeg => "palm angle",
-    };
-    // One mu stands for both contacts; the label says so.
-    let symbol = match p {
-        GridParam::Mu => "μ = μ_ground = μ_palm",
-        _ => param_symbol(p),
-    };
-    format!("{quantity} {symbol} ({})", param_unit(p))
-}
-
-/// `symbol = value unit`, e.g. `F = 200 N`.
-fn param_value(p: GridParam, v: f64) -> String {
-    format!("{} = {v} {}", param_symbol(p), param_unit(p))
-}
-
-/// One line naming the scene's parameters for under the title, without the `swept` ones (they
-/// are on an axis).
-pub fn scene_subtitle(p: &SceneParams, swept: &[GridParam]) -> String {
-    scene_subtitle_with("closed-form statics (corrected Eq. 1)", p, swept)
-}
-
-/// [`scene_subtitle`] naming another source than the closed form, e.g. "simulation, ...".
-pub fn scene_subtitle_with(source: &str, p: &SceneParams, swept: &[GridParam]) -> String {
-    let mu = if p.mu_ground == p.mu_palm {
-        format!("μ = {}", p.mu_ground)
-    } else {
-        format!("μ_ground = {}, μ_palm = {}", p.mu_ground, p.mu_palm)
-    };
-    let shown = [
-        GridParam::MassKg,
-        GridParam::RadiusMm,
-        GridParam::ForceN,
-        GridParam::GravityMS2,
-    ];
-    let parts = std::iter::once((GridParam::Mu, mu)).chain(
-        shown
-            .into_iter()
-            .filter_map(|k| k.get(p).map(|v| (k, param_value(k, v)))),
-    );
-    let kept: Vec<String> = parts
-        .filter(|(k, _)| !swept.contains(k))
-        .map(|(_, s)| s)
-        .collect();
-    format!("{source}: {}", kept.join(", "))
-}
-
-/// The cells of `grid` as long-format CSV: one row per cell (x fastest), the two axis values then
-/// each `(column, values)` (an empty cell where a value is None).
-pub fn cells_csv(
-    grid: &crate::grid::GridResult,
-    x: GridParam,
-    y: GridParam,
-    columns: &[(&str, Vec<Option<f64>>)],
-) -> DataFile {
-    let mut header = vec![x.as_str(), y.as_str()];
-    header.extend(columns.iter().map(|(name, _)| *name));
-    let rows = grid.y_values.iter().enumerate().flat_map(|(iy, yv)| {
-        grid.x_values.iter().enumerate().map(move |(ix, xv)| {
-            let i = grid.index(ix, iy);
-            let mut row = vec![Some(Dec(*xv)), Some(Dec(*yv))];
-            row.extend(columns.iter().map(|(_, v)| dec(v[i])));
-            row
-        })
-    });
-    DataFile::csv(to_csv_with_header(&header, rows))
-}
-
-/// The exterior rings of contour polygons, mapped from the contour crate's grid coordinates to
-/// plot space (ln for log axes). The crate puts sample i at the centre of cell [i, i + 1].
-pub fn grid_polygons<P>(
-    mp: &MultiPolygon<f64>,
-    xa: &GridAxis<P>,
-    ya: &GridAxis<P>,
-) -> Vec<Vec<(f64, f64)>> {
-    mp.0.iter()
-        .map(|poly| {
-            poly.exterior()
-                .0
-                .iter()
-                .map(|c| (grid_to_plot(c.x, xa), grid_to_plot(c.y, ya)))
-                .collect()
-        })
-        .collect()
-}
-
-/// Plot-space coordinate of contour-crate grid coordinate `g` on axis `a`.
-pub fn grid_to_plot<P>(g: f64, a: &GridAxis<P>) -> f64 {
-    let (lo, hi) = match a.scale {
-        crate::grid::AxisScale::Linear => (a.min, a.max),
-        crate::grid::AxisScale::Log => (a.min.ln(), a.max.ln()),
-    };
-    lo + (hi - lo) * (g - 0.5) / (a.count - 1) as f64
-}
-
-/// Contour-crate polylines mapped to plot space, split where they run along the grid's border.
-///
-/// The crate closes every ring around the edge of the grid; those pieces are not iso-lines and
-/// would be drawn on the frame.
-pub fn grid_lines<P>(
-    ml: &MultiLineString<f64>,
-    xa: &GridAxis<P>,
-    ya: &GridAxis<P>,
-) -> Vec<Vec<(f64, f64)>> {
-    let (nx, ny) = (xa.count as f64, ya.count as f64);
-    let on_border =
-        |c: &geo_types::Coord<f64>| c.x <= 0.5 || c.x >= nx - 0.5 || c.y <= 0.5 || c.y >= ny - 0.5;
-    let mut out = Vec::new();
-    for ls in &ml.0 {
-        let mut cur: Vec<(f64, f64)> = Vec::new();
-        for w in ls.0.windows(2) {
-            if on_border(&w[0]) && on_border(&w[1]) {
-                if cur.len() > 1 {
-                    out.push(std::mem::take(&mut cur));
-                }
-                cur.clear();
-                continue;
-            }
-            if cur.is_empty() {
-                cur.push((grid_to_plot(w[0].x, xa), grid_to_plot(w[0].y, ya)));
-            }
-            cur.push((grid_to_plot(w[1].x, xa), grid_to_plot(w[1].y, ya)));
-        }
-        if cur.len() > 1 {
-            out.push(cur);
-        }
-    }
-    out
 }
 
 #[cfg(test)]

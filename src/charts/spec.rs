@@ -12,35 +12,26 @@
 //! width_px = 1000
 //! height_px = 900
 //! [chart]                          # the chart kind and its own keys
-//! kind = "jam_map"                 # jam_map | sweep | contour_map | convergence | time_series | work_precision
-//!                                  # | vlocator_capacity | vlocator_optimum
+//! kind = "jam_map"                 # one of ChartSpec::KINDS (charts/kinds.rs)
 //! ```
 //!
-//! The `[chart]` keys of each kind are documented on [`JamMapSpec`], [`SweepSpec`],
-//! [`ContourMapSpec`], [`ConvergenceSpec`], [`TimeSeriesSpec`] and [`WorkPrecisionSpec`].
+//! The `[chart]` keys of each kind are documented on its settings type (the variants of
+//! [`ChartSpec`]) and, for users, in charts/README.md. `[chart]` is read by its `kind` after
+//! the rest of the file, so that a wrong key inside it is named with its path and line.
 //! Unknown keys are refused everywhere.
 
 use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
-use super::contour_map::ContourMapSpec;
-use super::convergence::ConvergenceSpec;
-use super::jam_map::JamMapSpec;
+pub use super::kinds::ChartSpec;
 use super::overrides::{self, Setting};
-use super::stability::StabilitySpec;
-use super::sweep::SweepSpec;
-use super::time_series::TimeSeriesSpec;
-use super::vlocator_capacity::VlocatorCapacitySpec;
-use super::vlocator_optimum::VlocatorOptimumSpec;
-use super::work_precision::WorkPrecisionSpec;
 use crate::config::{
-    Config, array_for_table, cut_quotes, keyed, not_a_table, parse_toml, seq_for_struct,
+    self, Config, array_for_table, cut_quotes, keyed, not_a_table, parse_toml, seq_for_struct,
 };
 use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
 use crate::grid::GridParam;
-use crate::limits;
 use crate::minnorm::MinNormSettings;
 use crate::model::SceneParams;
 
@@ -84,60 +75,6 @@ impl Size {
     }
 }
 
-/// The chart kind and its settings (`[chart]`, tagged by `kind`).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum ChartSpec {
-    /// A jam/slide map over a parameter and the palm angle (Fig. 3).
-    JamMap(JamMapSpec),
-    /// theta_jam and x_jam against one parameter (Figs. 6, 7a, 7b).
-    Sweep(SweepSpec),
-    /// Iso-lines of x_jam and theta_jam over two parameters (Fig. 7c).
-    ContourMap(ContourMapSpec),
-    /// The min-norm program's convergence trace at theta_jam (Fig. 4).
-    Convergence(ConvergenceSpec),
-    /// The simulated disc speed and position against time (Fig. 5).
-    TimeSeries(TimeSeriesSpec),
-    /// Error of x_jam against cost per integrator, and the min-norm tolerance against its
-    /// error (the accuracy study).
-    WorkPrecision(WorkPrecisionSpec),
-    /// Holding capacity of a V-locator over included angle and load direction.
-    VlocatorCapacity(VlocatorCapacitySpec),
-    /// Optimum included angle of a V-locator against load direction and load.
-    VlocatorOptimum(VlocatorOptimumSpec),
-    /// The stability matrix: case by method, coloured by class.
-    Stability(StabilitySpec),
-}
-
-impl ChartSpec {
-    /// The `kind` key: jam_map, sweep, contour_map, convergence, time_series, work_precision,
-    /// vlocator_capacity, vlocator_optimum or stability.
-    pub fn kind(&self) -> &'static str {
-        match self {
-            ChartSpec::JamMap(_) => "jam_map",
-            ChartSpec::Sweep(_) => "sweep",
-            ChartSpec::ContourMap(_) => "contour_map",
-            ChartSpec::Convergence(_) => "convergence",
-            ChartSpec::TimeSeries(_) => "time_series",
-            ChartSpec::WorkPrecision(_) => "work_precision",
-            ChartSpec::Stability(_) => "stability",
-            ChartSpec::VlocatorCapacity(_) => "vlocator_capacity",
-            ChartSpec::VlocatorOptimum(_) => "vlocator_optimum",
-        }
-    }
-
-    /// The extension of the data file behind this kind of chart: `json` for maps, `csv` else.
-    pub fn data_extension(&self) -> &'static str {
-        match self {
-            ChartSpec::JamMap(_)
-            | ChartSpec::ContourMap(_)
-            | ChartSpec::VlocatorCapacity(_)
-            | ChartSpec::VlocatorOptimum(_) => "json",
-            _ => "csv",
-        }
-    }
-}
-
 /// A scene file as written.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -152,7 +89,9 @@ struct SceneFile {
     min_norm: toml::Table,
     #[serde(default)]
     size: Size,
-    chart: ChartSpec,
+    /// Read by kind after the rest ([`read_chart`]), so that a wrong key inside it is named
+    /// with its path (serde keeps none inside an internally tagged enum).
+    chart: toml::Table,
 }
 
 /// A loaded, validated scene: everything needed to compute and draw it.
@@ -275,6 +214,31 @@ fn parse_scene(
             )
         })?;
     }
+    let chart = read_chart(&file.chart).map_err(|r| {
+        let set: Vec<String> = settings
+            .iter()
+            .filter(|s| s.key.starts_with("chart."))
+            .map(Setting::to_string)
+            .collect();
+        if set.is_empty() {
+            let (line, column) = config::key_line_column(text, &r.key).unwrap_or((1, 1));
+            Error::Config {
+                path: path.to_path_buf(),
+                line,
+                column,
+                message: r.message,
+            }
+        } else {
+            Error::invalid(
+                "--set",
+                set.join(" "),
+                format!(
+                    "scene {name} does not take it: {}; its keys are in charts/README.md",
+                    r.message
+                ),
+            )
+        }
+    })?;
     let base = match &file.base {
         Some(b) => Config::load(&dir.join(b))?,
         None => super::builtin::paper_config(),
@@ -293,7 +257,7 @@ fn parse_scene(
         min_norm,
         dynamics,
         size: file.size,
-        chart: file.chart,
+        chart,
     };
     scene.validate_chart()?;
     Ok(scene)
@@ -306,16 +270,12 @@ impl Scene {
     /// (say `--set mu_palm=0.6` on fig3): the chart would draw mu_palm = mu while the read-off
     /// used 0.6.
     pub fn validate_chart(&self) -> Result<()> {
-        let axes: Vec<(&str, GridParam)> = match &self.chart {
-            ChartSpec::JamMap(s) => vec![("x_axis", s.x_axis.param), ("y_axis", s.y_axis.param)],
-            ChartSpec::Sweep(s) => vec![("axis", s.axis.param)],
-            ChartSpec::ContourMap(s) => {
-                vec![("x_axis", s.x_axis.param), ("y_axis", s.y_axis.param)]
-            }
-            _ => Vec::new(),
-        };
         let p = &self.params;
-        if let Some((axis, _)) = axes.iter().find(|(_, q)| *q == GridParam::Mu)
+        if let Some((axis, _)) = self
+            .chart
+            .param_axes()
+            .into_iter()
+            .find(|(_, q)| *q == GridParam::Mu)
             && p.mu_ground != p.mu_palm
         {
             return Err(Error::invalid(
@@ -328,102 +288,95 @@ impl Scene {
                 ),
             ));
         }
-        match &self.chart {
-            ChartSpec::JamMap(s) => s.validate(&self.params),
-            ChartSpec::Sweep(s) => s.validate(&self.params),
-            ChartSpec::ContourMap(s) => s.validate(&self.params),
-            ChartSpec::Convergence(s) => s.validate(),
-            ChartSpec::TimeSeries(s) => s.validate(),
-            ChartSpec::WorkPrecision(s) => s.validate(),
-            ChartSpec::Stability(s) => s.validate(),
-            ChartSpec::VlocatorCapacity(s) => s.validate(),
-            ChartSpec::VlocatorOptimum(s) => s.validate(),
-        }?;
-        check_size(self)
+        self.chart.validate(self)?;
+        self.chart.check_size(self)
     }
 }
 
-/// The scene's counts against [`crate::limits`]: memory and output estimated from the grid
-/// cells, sweep points or series rows, and the lengths of its lists.
-fn check_size(scene: &Scene) -> Result<()> {
-    const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
-    let cells =
-        |x: &crate::grid::GridAxis, y: &crate::grid::GridAxis| x.count as f64 * y.count as f64;
-    match &scene.chart {
-        ChartSpec::JamMap(s) => {
-            limits::check_items(CELLS, cells(&s.x_axis, &s.y_axis), limits::JAM_MAP_CELL)
+/// A refused settings table: the dotted key at fault (with its section) and the message, which
+/// names it with the value as written.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Refusal {
+    /// The dotted key, e.g. `chart.x_axis.count`; the section alone when no key is at fault.
+    pub key: String,
+    /// `key = value: what is expected`.
+    pub message: String,
+}
+
+/// `[chart]` read by its `kind` key; the kinds are those of [`super::kinds`].
+fn read_chart(table: &toml::Table) -> std::result::Result<ChartSpec, Refusal> {
+    let kinds = ChartSpec::KINDS.join(", ");
+    let refuse = |written: Option<&toml::Value>, what: String| {
+        let key = "chart.kind".to_string();
+        let written = written.map(toml::Value::to_string);
+        Refusal {
+            message: keyed(Some(&key), written.as_deref(), &what),
+            key,
         }
-        ChartSpec::ContourMap(s) => {
-            let levels = [
-                ("chart.x_jam_levels_mm", s.x_jam_levels_mm.len()),
-                ("chart.theta_jam_levels_deg", s.theta_jam_levels_deg.len()),
-            ];
-            for (key, n) in levels {
-                if n > limits::MAX_LEVELS {
-                    return Err(Error::invalid(
-                        key,
-                        format!("{n} levels"),
-                        format!("at most {} levels", limits::MAX_LEVELS),
-                    ));
-                }
-            }
-            limits::check_items(CELLS, cells(&s.x_axis, &s.y_axis), limits::CONTOUR_MAP_CELL)
+    };
+    let kind = match table.get("kind") {
+        Some(toml::Value::String(k)) => k,
+        Some(v) => return Err(refuse(Some(v), format!("expected a kind: {kinds}"))),
+        None => return Err(refuse(None, format!("missing; the kinds are {kinds}"))),
+    };
+    let mut rest = table.clone();
+    rest.remove("kind");
+    ChartSpec::read(kind, &rest).unwrap_or_else(|| {
+        Err(refuse(
+            table.get("kind"),
+            format!("not a chart kind; the kinds are {kinds}"),
+        ))
+    })
+}
+
+/// Settings `T` read from `table`, which stands at `[section]`; a refusal names the dotted key
+/// and quotes the value as `written` has it (cut to a readable length).
+///
+/// A wrong type is named by the path `serde_path_to_error` keeps; an array where `T` has a
+/// table (serde would fill the struct's fields in order) is refused.
+pub(crate) fn read_section<T>(
+    table: &toml::Table,
+    written: &toml::Table,
+    section: &str,
+) -> std::result::Result<T, Refusal>
+where
+    T: Serialize + serde::de::DeserializeOwned,
+{
+    let dotted = |k: &str| match k {
+        "" | "." => section.to_string(),
+        _ => format!("{section}.{k}"),
+    };
+    let quoted = |k: &str| {
+        value_at(written, k)
+            .filter(|v| !v.is_table())
+            .map_or(String::new(), toml::Value::to_string)
+    };
+    let merged = toml::Value::Table(table.clone());
+    let value: T = serde_path_to_error::deserialize(merged.clone()).map_err(|e| {
+        let path = e.path().to_string();
+        if let Some(k) = seq_for_struct::<T>(&merged, &path) {
+            let key = dotted(&k);
+            return Refusal {
+                message: not_a_table(&key, &quoted(&k)),
+                key,
+            };
         }
-        ChartSpec::Sweep(s) => {
-            limits::check_items("chart.axis.count", s.axis.count as f64, limits::SWEEP_POINT)
+        let key = dotted(&path);
+        let written = Some(quoted(&path)).filter(|w| !w.is_empty());
+        let message = cut_quotes(e.into_inner().message().trim());
+        Refusal {
+            message: keyed(Some(&key), written.as_deref(), &message),
+            key,
         }
-        ChartSpec::TimeSeries(s) => {
-            let rows = limits::series_rows(
-                scene.params.start_angle_deg,
-                scene.dynamics.omega_deg_s,
-                s.series_dt_s,
-            );
-            limits::check_items(
-                "chart.series_dt_s and dynamics.omega_deg_s",
-                rows,
-                limits::SERIES_ROW,
-            )
-        }
-        ChartSpec::WorkPrecision(s) => {
-            let lists = [
-                ("chart.tolerances", s.tolerances.len()),
-                ("chart.min_norm_tolerances", s.min_norm_tolerances.len()),
-            ];
-            for (key, n) in lists {
-                if n > limits::MAX_TOLERANCES {
-                    return Err(Error::invalid(
-                        key,
-                        format!("{n} tolerances"),
-                        format!("at most {} tolerances", limits::MAX_TOLERANCES),
-                    ));
-                }
-            }
-            Ok(())
-        }
-        ChartSpec::Convergence(_) => Ok(()),
-        // Its cases are names from the fixed matrix (checked by validate): at most its 26 rows.
-        ChartSpec::Stability(_) => Ok(()),
-        // A contoured map as the contour map is (its cells hold less: two capacities).
-        ChartSpec::VlocatorCapacity(s) => {
-            limits::check_count(
-                "chart.levels_over_w",
-                s.levels_over_w.len(),
-                limits::MAX_LEVELS,
-                "levels",
-            )?;
-            let n = s.x_axis.count as f64 * s.y_axis.count as f64;
-            limits::check_items(CELLS, n, limits::CONTOUR_MAP_CELL)
-        }
-        // At most five curves (one per marker) of two sweeps.
-        ChartSpec::VlocatorOptimum(s) => {
-            let n = (s.direction_axis.count + s.load_axis.count) as f64 * s.mus.len() as f64;
-            limits::check_items(
-                "chart.direction_axis.count + chart.load_axis.count",
-                n,
-                limits::SWEEP_POINT,
-            )
-        }
+    })?;
+    if let Some(key) = array_for_table(&toml::Value::Table(written.clone()), &value, section) {
+        let k = key.split_once('.').map_or("", |(_, k)| k);
+        return Err(Refusal {
+            message: not_a_table(&key, &quoted(k)),
+            key,
+        });
     }
+    Ok(value)
 }
 
 /// `base` with the keys of the override table of `[section]` replaced; unknown keys are refused.
@@ -438,28 +391,12 @@ where
     for (key, value) in overrides {
         table.insert(key.clone(), value.clone());
     }
-    let hint = format!("the keys are those of [{section}] in config/paper.toml");
-    let merged = toml::Value::Table(table);
-    let value: T = serde_path_to_error::deserialize(merged.clone()).map_err(|e| {
-        let key = e.path().to_string();
-        if let Some(k) = seq_for_struct::<T>(&merged, &key) {
-            let written = value_at(overrides, &k).map_or(String::new(), toml::Value::to_string);
-            return Error::Unsupported(not_a_table(&format!("{section}.{k}"), &written));
-        }
-        let written = value_at(overrides, &key).map(toml::Value::to_string);
-        let key = format!("{section}.{key}");
-        let message = cut_quotes(e.into_inner().message().trim());
+    read_section(&table, overrides, section).map_err(|r| {
         Error::Unsupported(format!(
-            "{}; {hint}",
-            keyed(Some(&key), written.as_deref(), &message)
+            "{}; the keys are those of [{section}] in config/paper.toml",
+            r.message
         ))
-    })?;
-    if let Some(key) = array_for_table(&toml::Value::Table(overrides.clone()), &value, section) {
-        let written = value_at(overrides, key.split_once('.').map_or("", |(_, k)| k));
-        let written = written.map_or(String::new(), toml::Value::to_string);
-        return Err(Error::Unsupported(not_a_table(&key, &written)));
-    }
-    Ok(value)
+    })
 }
 
 /// The value at a dotted key of a table (array indices are not followed).
@@ -532,12 +469,57 @@ mod tests {
         );
     }
 
+    fn scene_error(text: &str) -> String {
+        parse_scene("s".into(), text, Path::new("s.toml"), Path::new(""), &[])
+            .unwrap_err()
+            .to_string()
+    }
+
     #[test]
     fn unknown_chart_key_is_refused_with_its_line() {
-        let text = "title = \"t\"\n[chart]\nkind = \"sweep\"\npanls = []\n";
-        let msg = parse_toml::<SceneFile>(text, Path::new("s.toml"))
-            .unwrap_err()
-            .to_string();
-        assert!(msg.contains("panls"), "{msg}");
+        let msg = scene_error("title = \"t\"\n[chart]\nkind = \"sweep\"\npanls = []\n");
+        assert!(
+            msg.starts_with("s.toml:4:9: chart.panls = []: unknown field `panls`"),
+            "{msg}"
+        );
+    }
+
+    /// Regression (issue 13): inside `[chart]`, an internally tagged enum, serde kept no path,
+    /// so a wrong type named only `chart`; now every kind's keys are named with their path,
+    /// line and value, as the other sections' are.
+    #[test]
+    fn wrong_type_inside_chart_names_the_key_with_its_path() {
+        let map = "kind = \"jam_map\"\n\
+                   x_axis = { param = \"mu\", min = 0.1, max = 0.5, count = \"ten\" }\n\
+                   y_axis = { param = \"theta_deg\", min = 10.0, max = 70.0, count = 5 }\n";
+        let cases = [
+            (
+                map,
+                "s.toml:4:56: chart.x_axis.count = \"ten\": invalid type: string",
+            ),
+            (
+                "kind = \"sweep\"\naxis = [1, 2]\n",
+                "s.toml:4:8: chart.axis = [1, 2]: expected a table",
+            ),
+        ];
+        for (chart, says) in cases {
+            let msg = scene_error(&format!("title = \"t\"\n[chart]\n{chart}"));
+            assert!(msg.starts_with(says), "{msg}");
+        }
+    }
+
+    #[test]
+    fn chart_kind_missing_unknown_or_mistyped_lists_the_kinds() {
+        for (kind, says) in [
+            ("", "chart.kind: missing; the kinds are jam_map, sweep"),
+            (
+                "kind = \"jam_mop\"\n",
+                "chart.kind = \"jam_mop\": not a chart kind; the kinds are",
+            ),
+            ("kind = 3\n", "chart.kind = 3: expected a kind: jam_map"),
+        ] {
+            let msg = scene_error(&format!("title = \"t\"\n[chart]\n{kind}"));
+            assert!(msg.contains(says), "{msg}");
+        }
     }
 }

@@ -27,9 +27,11 @@ pub struct StabilitySpec {
     pub cases: Vec<String>,
 }
 
-impl StabilitySpec {
+impl super::kinds::Kind for StabilitySpec {
+    type Chart = Stability;
+
     /// Checks that every named case exists.
-    pub fn validate(&self) -> Result<()> {
+    fn validate(&self, _scene: &Scene) -> Result<()> {
         let all = stability::cases(&Config::default());
         for name in &self.cases {
             if !all.iter().any(|c| &c.name == name) {
@@ -45,6 +47,15 @@ impl StabilitySpec {
             }
         }
         Ok(())
+    }
+
+    fn check_size(&self, _scene: &Scene) -> Result<()> {
+        // Its cases are names from the fixed matrix (checked by validate): at most its 26 rows.
+        Ok(())
+    }
+
+    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<Stability> {
+        Stability::compute(scene, self, models)
     }
 }
 
@@ -74,7 +85,7 @@ impl Stability {
             min_norm: scene.min_norm,
             dynamics: scene.dynamics,
         };
-        spec.validate()?;
+        super::kinds::Kind::validate(spec, scene)?;
         let all = stability::cases(&base);
         let cases: Vec<_> = if spec.cases.is_empty() {
             all

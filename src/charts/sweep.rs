@@ -71,9 +71,16 @@ fn statics_only() -> Vec<SweepLayer> {
     vec![SweepLayer::Statics]
 }
 
-impl SweepSpec {
+impl super::kinds::Kind for SweepSpec {
+    type Chart = Sweep;
+
+    fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridParam)> {
+        vec![("axis", self.axis.param)]
+    }
+
     /// Checks the axis, panels and layers against the scene.
-    pub fn validate(&self, base: &SceneParams) -> Result<()> {
+    fn validate(&self, scene: &Scene) -> Result<()> {
+        let base = &scene.params;
         self.axis.validate("chart.axis")?;
         if self.axis.param == GridParam::ThetaDeg {
             return Err(Error::invalid(
@@ -96,6 +103,18 @@ impl SweepSpec {
             sweep_layers::validate(*l, self)?;
         }
         Ok(())
+    }
+
+    fn check_size(&self, _scene: &Scene) -> Result<()> {
+        crate::limits::check_items(
+            "chart.axis.count",
+            self.axis.count as f64,
+            crate::limits::SWEEP_POINT,
+        )
+    }
+
+    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<Sweep> {
+        Sweep::compute(scene, self, models)
     }
 }
 

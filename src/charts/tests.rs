@@ -8,6 +8,7 @@ use crate::dynamics::DynamicsParams;
 use crate::dynamics::accuracy::{Study, StudySettings};
 use crate::minnorm::tolerance::ToleranceRow;
 use crate::minnorm::{ContactSolution, MinNormSettings};
+use crate::model::SceneParams;
 use crate::models::{ModelKind, ModelSpec, Solution};
 
 fn charts_dir() -> PathBuf {

@@ -42,9 +42,11 @@ impl Default for TimeSeriesSpec {
     }
 }
 
-impl TimeSeriesSpec {
+impl super::kinds::Kind for TimeSeriesSpec {
+    type Chart = TimeSeries;
+
     /// Checks the sampling interval.
-    pub fn validate(&self) -> Result<()> {
+    fn validate(&self, _scene: &Scene) -> Result<()> {
         let dt = self.series_dt_s;
         // Below 1e-5 s a default run records over 150 000 rows for nothing a picture shows.
         if !(dt.is_finite() && (1e-5..=0.1).contains(&dt)) {
@@ -55,6 +57,23 @@ impl TimeSeriesSpec {
             ));
         }
         Ok(())
+    }
+
+    fn check_size(&self, scene: &Scene) -> Result<()> {
+        let rows = crate::limits::series_rows(
+            scene.params.start_angle_deg,
+            scene.dynamics.omega_deg_s,
+            self.series_dt_s,
+        );
+        crate::limits::check_items(
+            "chart.series_dt_s and dynamics.omega_deg_s",
+            rows,
+            crate::limits::SERIES_ROW,
+        )
+    }
+
+    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<TimeSeries> {
+        TimeSeries::compute(scene, self, models)
     }
 }
 

@@ -43,9 +43,13 @@ pub struct VlocatorCapacitySpec {
     pub levels_over_w: Vec<f64>,
 }
 
-impl VlocatorCapacitySpec {
+const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
+
+impl super::kinds::Kind for VlocatorCapacitySpec {
+    type Chart = VlocatorCapacity;
+
     /// Checks the axes and levels (and the locator at the grid's corners).
-    pub fn validate(&self) -> Result<()> {
+    fn validate(&self, _scene: &Scene) -> Result<()> {
         if self.x_axis.param != LocatorParam::IncludedAngleDeg {
             return Err(Error::invalid(
                 "chart.x_axis.param",
@@ -76,6 +80,28 @@ impl VlocatorCapacitySpec {
         self.grid().validate()
     }
 
+    fn check_size(&self, _scene: &Scene) -> Result<()> {
+        // A contoured map as the contour map is (its cells hold less: two capacities).
+        crate::limits::check_count(
+            "chart.levels_over_w",
+            self.levels_over_w.len(),
+            crate::limits::MAX_LEVELS,
+            "levels",
+        )?;
+        let cells = self.x_axis.count as f64 * self.y_axis.count as f64;
+        crate::limits::check_items(CELLS, cells, crate::limits::CONTOUR_MAP_CELL)
+    }
+
+    fn compute(
+        &self,
+        scene: &Scene,
+        _models: &dyn super::models::Models,
+    ) -> Result<VlocatorCapacity> {
+        VlocatorCapacity::compute(scene, self)
+    }
+}
+
+impl VlocatorCapacitySpec {
     fn grid(&self) -> Grid<LocatorParams> {
         Grid {
             base: self.locator,

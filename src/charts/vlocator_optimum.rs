@@ -9,6 +9,7 @@ use serde_json::json;
 
 use super::DataFile;
 use super::axes::{DrawResult, PlotAxis};
+use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
 use super::vlocator_capacity::{STANDARD_V_DEG, locator_subtitle};
@@ -35,9 +36,11 @@ pub struct VlocatorOptimumSpec {
     pub load_axis: GridAxis<LocatorParam>,
 }
 
-impl VlocatorOptimumSpec {
+impl super::kinds::Kind for VlocatorOptimumSpec {
+    type Chart = VlocatorOptimum;
+
     /// Checks the axes, the frictions and the load.
-    pub fn validate(&self) -> Result<()> {
+    fn validate(&self, _scene: &Scene) -> Result<()> {
         if self.direction_axis.param != LocatorParam::LoadAngleDeg {
             return Err(Error::invalid(
                 "chart.direction_axis.param",
@@ -79,6 +82,44 @@ impl VlocatorOptimumSpec {
         Ok(())
     }
 
+    /// The optimum at every sample of both sweeps, through the grid.
+    fn compute(&self, scene: &Scene, _models: &dyn Models) -> Result<VlocatorOptimum> {
+        let spec = self;
+        let mut curves = Vec::with_capacity(spec.mus.len());
+        let (mut directions, mut loads) = (Vec::new(), Vec::new());
+        for &mu in &spec.mus {
+            let [by_dir, by_load] = spec.grids(mu);
+            let d = by_dir.map(|p| Ok(locator::optimum(p)))?;
+            let l = by_load.map(|p| Ok(locator::optimum(p)))?;
+            directions = d.x_values;
+            loads = l.x_values;
+            curves.push(MuCurves {
+                mu,
+                by_direction: d.values,
+                by_load: l.values,
+            });
+        }
+        Ok(VlocatorOptimum {
+            spec: spec.clone(),
+            title: scene.title.clone(),
+            directions,
+            loads,
+            curves,
+        })
+    }
+
+    fn check_size(&self, _scene: &Scene) -> Result<()> {
+        // At most five curves (one per marker) of two sweeps.
+        let n = (self.direction_axis.count + self.load_axis.count) as f64 * self.mus.len() as f64;
+        crate::limits::check_items(
+            "chart.direction_axis.count + chart.load_axis.count",
+            n,
+            crate::limits::SWEEP_POINT,
+        )
+    }
+}
+
+impl VlocatorOptimumSpec {
     /// The two sweeps at friction `mu`: over the direction, over the load.
     fn grids(&self, mu: f64) -> [Grid<LocatorParams>; 2] {
         let base = self.locator.with_mu(mu);
@@ -131,31 +172,6 @@ pub struct VlocatorOptimum {
 }
 
 impl VlocatorOptimum {
-    /// The optimum at every sample of both sweeps, through the grid.
-    pub fn compute(scene: &Scene, spec: &VlocatorOptimumSpec) -> Result<Self> {
-        let mut curves = Vec::with_capacity(spec.mus.len());
-        let (mut directions, mut loads) = (Vec::new(), Vec::new());
-        for &mu in &spec.mus {
-            let [by_dir, by_load] = spec.grids(mu);
-            let d = by_dir.map(|p| Ok(locator::optimum(p)))?;
-            let l = by_load.map(|p| Ok(locator::optimum(p)))?;
-            directions = d.x_values;
-            loads = l.x_values;
-            curves.push(MuCurves {
-                mu,
-                by_direction: d.values,
-                by_load: l.values,
-            });
-        }
-        Ok(VlocatorOptimum {
-            spec: spec.clone(),
-            title: scene.title.clone(),
-            directions,
-            loads,
-            curves,
-        })
-    }
-
     /// The data behind the chart as JSON.
     pub fn data(&self, scene: &Scene) -> DataFile {
         DataFile::json(&json!({

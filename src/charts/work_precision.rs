@@ -61,9 +61,11 @@ impl Default for WorkPrecisionSpec {
     }
 }
 
-impl WorkPrecisionSpec {
+impl super::kinds::Kind for WorkPrecisionSpec {
+    type Chart = WorkPrecision;
+
     /// Checks every tolerance.
-    pub fn validate(&self) -> Result<()> {
+    fn validate(&self, _scene: &Scene) -> Result<()> {
         let lists = [
             ("chart.tolerances", &self.tolerances),
             ("chart.min_norm_tolerances", &self.min_norm_tolerances),
@@ -91,6 +93,21 @@ impl WorkPrecisionSpec {
             ));
         }
         Ok(())
+    }
+
+    fn check_size(&self, _scene: &Scene) -> Result<()> {
+        let lists = [
+            ("chart.tolerances", self.tolerances.len()),
+            ("chart.min_norm_tolerances", self.min_norm_tolerances.len()),
+        ];
+        for (key, n) in lists {
+            crate::limits::check_at_most(key, n, crate::limits::MAX_TOLERANCES, "tolerances")?;
+        }
+        Ok(())
+    }
+
+    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<WorkPrecision> {
+        WorkPrecision::compute(scene, self, models)
     }
 }
 

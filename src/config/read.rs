@@ -115,11 +115,13 @@ pub fn seq_for_struct<T: DeserializeOwned>(input: &toml::Value, err_path: &str) 
     *slot = toml::Value::Table(toml::Table::new());
     match serde_path_to_error::deserialize::<_, T>(probe) {
         Ok(_) => Some(key.to_string()),
-        // A key that wants an array refuses the table at the key itself.
+        // A key that wants an array refuses the table at the key itself, and so does a key
+        // that is not known at all.
         Err(e) => {
-            let wants_array =
-                e.path().to_string() == key && e.inner().to_string().contains("invalid type: map");
-            (!wants_array).then(|| key.to_string())
+            let message = e.inner().to_string();
+            let refused_here = e.path().to_string() == key
+                && (message.contains("invalid type: map") || message.contains("unknown field"));
+            (!refused_here).then(|| key.to_string())
         }
     }
 }
@@ -243,6 +245,13 @@ pub fn cut_quotes(message: &str) -> String {
     }
     out.push_str(rest);
     out
+}
+
+/// 1-based line and column of the value at dotted `key` in TOML `text` (of its table's header
+/// when the key is not written there); None when the text does not parse.
+pub fn key_line_column(text: &str, key: &str) -> Option<(usize, usize)> {
+    let doc = DeTable::parse(text).ok()?;
+    span_of(doc.get_ref(), key).map(|s| line_column(text, s.start))
 }
 
 /// 1-based line and column of byte `offset` in `text`.

@@ -1,0 +1,68 @@
+//! Contour-crate geometry in plot space: the bands and iso-lines that the `contour` crate
+//! traces on a grid, mapped to the chart's coordinates.
+
+use geo_types::{MultiLineString, MultiPolygon};
+
+use crate::grid::GridAxis;
+
+/// The exterior rings of contour polygons, mapped from the contour crate's grid coordinates to
+/// plot space (ln for log axes). The crate puts sample i at the centre of cell [i, i + 1].
+pub fn grid_polygons<P>(
+    mp: &MultiPolygon<f64>,
+    xa: &GridAxis<P>,
+    ya: &GridAxis<P>,
+) -> Vec<Vec<(f64, f64)>> {
+    mp.0.iter()
+        .map(|poly| {
+            poly.exterior()
+                .0
+                .iter()
+                .map(|c| (grid_to_plot(c.x, xa), grid_to_plot(c.y, ya)))
+                .collect()
+        })
+        .collect()
+}
+
+/// Plot-space coordinate of contour-crate grid coordinate `g` on axis `a`.
+pub fn grid_to_plot<P>(g: f64, a: &GridAxis<P>) -> f64 {
+    let (lo, hi) = match a.scale {
+        crate::grid::AxisScale::Linear => (a.min, a.max),
+        crate::grid::AxisScale::Log => (a.min.ln(), a.max.ln()),
+    };
+    lo + (hi - lo) * (g - 0.5) / (a.count - 1) as f64
+}
+
+/// Contour-crate polylines mapped to plot space, split where they run along the grid's border.
+///
+/// The crate closes every ring around the edge of the grid; those pieces are not iso-lines and
+/// would be drawn on the frame.
+pub fn grid_lines<P>(
+    ml: &MultiLineString<f64>,
+    xa: &GridAxis<P>,
+    ya: &GridAxis<P>,
+) -> Vec<Vec<(f64, f64)>> {
+    let (nx, ny) = (xa.count as f64, ya.count as f64);
+    let on_border =
+        |c: &geo_types::Coord<f64>| c.x <= 0.5 || c.x >= nx - 0.5 || c.y <= 0.5 || c.y >= ny - 0.5;
+    let mut out = Vec::new();
+    for ls in &ml.0 {
+        let mut cur: Vec<(f64, f64)> = Vec::new();
+        for w in ls.0.windows(2) {
+            if on_border(&w[0]) && on_border(&w[1]) {
+                if cur.len() > 1 {
+                    out.push(std::mem::take(&mut cur));
+                }
+                cur.clear();
+                continue;
+            }
+            if cur.is_empty() {
+                cur.push((grid_to_plot(w[0].x, xa), grid_to_plot(w[0].y, ya)));
+            }
+            cur.push((grid_to_plot(w[1].x, xa), grid_to_plot(w[1].y, ya)));
+        }
+        if cur.len() > 1 {
+            out.push(cur);
+        }
+    }
+    out
+}

@@ -1,0 +1,198 @@
+//! The one registration point of chart kinds: [`chart_kinds!`] lists them, and generates from
+//! that list the scene's `[chart]` settings ([`ChartSpec`]), the computed chart ([`Chart`]) and
+//! every dispatch between them.
+//!
+//! A kind is a module with two types: its `[chart]` settings, which implement [`Kind`] (checks,
+//! compute), and the computed chart, which draws itself on any backend and gives its data.
+//! Adding a kind is that module, one line in the list below (its variant, `kind` key, data
+//! format `json` for maps or `csv`, settings and chart types) and a
+//! scene `charts/<name>.toml` (compiled in by `build.rs`), with its keys in charts/README.md
+//! (`tests/scene_docs.rs` fails until they are there).
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+
+use super::axes::DrawResult;
+use super::models::Models;
+use super::spec::{Scene, read_section};
+use super::{
+    DataFile, contour_map, convergence, jam_map, stability, sweep, time_series, vlocator_capacity,
+    vlocator_optimum, work_precision,
+};
+use crate::error::Result;
+use crate::grid::GridParam;
+
+/// A chart kind's `[chart]` settings: how they are checked and how they compute their chart.
+///
+/// The computed chart draws itself and gives its data: it has the methods
+/// `draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB>` (on a
+/// white root, any backend) and `data(&self, scene: &Scene) -> DataFile`, which the list's
+/// dispatch calls.
+pub(crate) trait Kind: Sized + DeserializeOwned + Serialize {
+    /// The computed chart.
+    type Chart;
+
+    /// The axes over scene parameters, as (key under `[chart]`, parameter): the scene checks
+    /// that a `mu` axis does not hide two different frictions. None by default.
+    fn param_axes(&self) -> Vec<(&'static str, GridParam)> {
+        Vec::new()
+    }
+
+    /// Checks the settings against the scene, before anything is computed.
+    fn validate(&self, scene: &Scene) -> Result<()>;
+
+    /// Checks the chart's size against [`crate::limits`] (memory and output it would need).
+    fn check_size(&self, scene: &Scene) -> Result<()>;
+
+    /// Computes what the chart draws; min-norm programs and simulations go through `models`.
+    fn compute(&self, scene: &Scene, models: &dyn Models) -> Result<Self::Chart>;
+
+    /// A map's cells as long-format CSV, beside its JSON (None by default).
+    fn cells(_chart: &Self::Chart) -> Option<DataFile> {
+        None
+    }
+}
+
+/// Generates [`ChartSpec`], [`Chart`] and their dispatch from the list of kinds.
+macro_rules! chart_kinds {
+    ($($(#[$doc:meta])* $variant:ident($name:literal, $data:literal, $spec:ty => $chart:ty),)+) => {
+        /// The chart kind and its settings (`[chart]`, chosen by its `kind` key).
+        #[derive(Debug, Clone, PartialEq)]
+        pub enum ChartSpec {
+            $($(#[$doc])* $variant($spec),)+
+        }
+
+        /// A computed chart of any kind.
+        #[allow(missing_docs)] // one variant per kind, documented on ChartSpec
+        pub enum Chart {
+            $($variant($chart),)+
+        }
+
+        impl ChartSpec {
+            /// Every kind's `kind` key, in the order of the list.
+            pub const KINDS: &[&str] = &[$($name,)+];
+
+            /// The `kind` key.
+            pub fn kind(&self) -> &'static str {
+                match self {
+                    $(ChartSpec::$variant(_) => $name,)+
+                }
+            }
+
+            /// The extension of the data file behind this kind of chart: `json` for maps,
+            /// `csv` else.
+            pub fn data_extension(&self) -> &'static str {
+                match self {
+                    $(ChartSpec::$variant(_) => $data,)+
+                }
+            }
+
+            pub(crate) fn param_axes(&self) -> Vec<(&'static str, GridParam)> {
+                match self {
+                    $(ChartSpec::$variant(s) => Kind::param_axes(s),)+
+                }
+            }
+
+            pub(crate) fn validate(&self, scene: &Scene) -> Result<()> {
+                match self {
+                    $(ChartSpec::$variant(s) => Kind::validate(s, scene),)+
+                }
+            }
+
+            pub(crate) fn check_size(&self, scene: &Scene) -> Result<()> {
+                match self {
+                    $(ChartSpec::$variant(s) => Kind::check_size(s, scene),)+
+                }
+            }
+
+            /// The settings of kind `kind` from the rest of `[chart]`; None for an unknown
+            /// kind.
+            pub(crate) fn read(
+                kind: &str,
+                table: &toml::Table,
+            ) -> Option<std::result::Result<ChartSpec, super::spec::Refusal>> {
+                $(if kind == $name {
+                    return Some(read_section(table, table, "chart").map(ChartSpec::$variant));
+                })+
+                None
+            }
+        }
+
+        /// As written in a scene: the kind's keys and `kind`.
+        impl Serialize for ChartSpec {
+            fn serialize<S: serde::Serializer>(
+                &self,
+                serializer: S,
+            ) -> std::result::Result<S::Ok, S::Error> {
+                use serde::ser::Error as _;
+                let mut table = match self {
+                    $(ChartSpec::$variant(s) => toml::Table::try_from(s),)+
+                }
+                .map_err(S::Error::custom)?;
+                table.insert("kind".into(), self.kind().into());
+                table.serialize(serializer)
+            }
+        }
+
+        impl Chart {
+            /// Computes what `scene`'s chart draws; min-norm programs and simulations go
+            /// through `models`.
+            pub(crate) fn compute_with(
+                scene: &Scene,
+                models: &dyn Models,
+            ) -> Result<Chart> {
+                Ok(match &scene.chart {
+                    $(ChartSpec::$variant(s) => Chart::$variant(Kind::compute(s, scene, models)?),)+
+                })
+            }
+
+            pub(crate) fn draw_kind<DB: DrawingBackend>(
+                &self,
+                root: &DrawingArea<DB, Shift>,
+            ) -> DrawResult<DB> {
+                match self {
+                    $(Chart::$variant(c) => c.draw(root),)+
+                }
+            }
+
+            /// A map's cells as long-format CSV: the two parameters and each quantity per
+            /// cell, units in the header; None for charts whose data is CSV already.
+            pub fn cells(&self) -> Option<DataFile> {
+                match self {
+                    $(Chart::$variant(c) => <$spec as Kind>::cells(c),)+
+                }
+            }
+
+            /// The data behind the chart.
+            pub fn data(&self, scene: &Scene) -> DataFile {
+                match self {
+                    $(Chart::$variant(c) => c.data(scene),)+
+                }
+            }
+        }
+    };
+}
+
+chart_kinds! {
+    /// A jam/slide map over a parameter and the palm angle (Fig. 3).
+    JamMap("jam_map", "json", jam_map::JamMapSpec => jam_map::JamMap),
+    /// theta_jam and x_jam against one parameter (Figs. 6, 7a, 7b).
+    Sweep("sweep", "csv", sweep::SweepSpec => sweep::Sweep),
+    /// Iso-lines of x_jam and theta_jam over two parameters (Fig. 7c).
+    ContourMap("contour_map", "json", contour_map::ContourMapSpec => contour_map::ContourMap),
+    /// The min-norm program's convergence trace at theta_jam (Fig. 4).
+    Convergence("convergence", "csv", convergence::ConvergenceSpec => convergence::Convergence),
+    /// The simulated disc speed and position against time (Fig. 5).
+    TimeSeries("time_series", "csv", time_series::TimeSeriesSpec => time_series::TimeSeries),
+    /// Error of x_jam against cost per integrator, and the min-norm tolerance against its
+    /// error (the accuracy study).
+    WorkPrecision("work_precision", "csv", work_precision::WorkPrecisionSpec => work_precision::WorkPrecision),
+    /// Holding capacity of a V-locator over included angle and load direction.
+    VlocatorCapacity("vlocator_capacity", "json", vlocator_capacity::VlocatorCapacitySpec => vlocator_capacity::VlocatorCapacity),
+    /// Optimum included angle of a V-locator against load direction and load.
+    VlocatorOptimum("vlocator_optimum", "json", vlocator_optimum::VlocatorOptimumSpec => vlocator_optimum::VlocatorOptimum),
+    /// The stability matrix: case by method, coloured by class.
+    Stability("stability", "csv", stability::StabilitySpec => stability::Stability),
+}
