@@ -11,9 +11,13 @@
 //! Write its module (a function from `&SceneParams` and its settings to its own solution
 //! struct), then register it here, the one registration point: a [`ModelKind`] variant (its
 //! name in scene files and output), a [`ModelSpec`] variant (its settings), a [`Detail`] variant
-//! (its own solution) and the arm of [`solve`] that calls it. Every grid, sweep layer, chart
-//! scene (`model = "<name>"`) and `solve --model` then reaches it. A new method of an existing
-//! model (an integrator of the dynamics) is a setting of that model's spec, not a new model.
+//! (its own solution), the arm of [`solve`] that calls it and its line in [`ModelKind::ALL`],
+//! [`ModelKind::summary`] and [`Solution::work`]. Every grid, sweep layer, chart scene
+//! (`model = "<name>"`), report and `solve --model` (its choices follow `ModelKind::ALL`) then
+//! reaches it. The one place outside this file is presentation: `solve`'s text and JSON print
+//! each model's own detail (`src/cli/solve.rs`), and the compiler points there. A new method of
+//! an existing model (an integrator of the dynamics) is a setting of that model's spec, not a
+//! new model.
 //!
 //! # When a model cannot run a scene
 //!
@@ -50,6 +54,15 @@ pub enum ModelKind {
 impl ModelKind {
     /// Every model, in the order `solve --model all` prints them.
     pub const ALL: [ModelKind; 3] = [ModelKind::Statics, ModelKind::MinNorm, ModelKind::Dynamics];
+
+    /// One line saying what the model is, for `--help` and listings.
+    pub fn summary(self) -> &'static str {
+        match self {
+            ModelKind::Statics => "closed-form statics (corrected Eq. 1-2)",
+            ModelKind::MinNorm => "minimum-norm contact forces (convex program)",
+            ModelKind::Dynamics => "dynamic simulation (regularised or nonsmooth contact)",
+        }
+    }
 
     /// The name in `solve`'s output: `statics`, `min-norm` or `dynamics`.
     pub fn as_str(self) -> &'static str {
@@ -166,6 +179,19 @@ pub struct Solution {
     pub elapsed_s: f64,
     /// The model's own answer.
     pub detail: Detail,
+}
+
+impl Solution {
+    /// The work a solution counted: (steps, evaluations). Steps are the integrator's accepted
+    /// steps or the min-norm programs solved; evaluations are right-hand-side evaluations or
+    /// clarabel iterations (0 on the exact path).
+    pub fn work(&self) -> (u64, u64) {
+        match &self.detail {
+            Detail::Dynamics(d) => (d.steps, d.rhs_evals),
+            Detail::MinNorm(m) => (u64::from(m.solves), u64::from(m.iterations)),
+            Detail::Statics(_) | Detail::Outside(_) => (0, 0),
+        }
+    }
 }
 
 /// Solves `scene` with the model of `spec`.

@@ -128,28 +128,41 @@ pub fn parse_f64(s: &str) -> std::result::Result<f64, String> {
     }
 }
 
-/// Which model answers `solve`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+/// Which model answers `solve`: one of the port's models by its name, or all of them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ModelChoice {
-    /// Closed-form statics (corrected Eq. 1-2).
-    Statics,
-    /// Minimum-norm contact forces (convex program).
-    MinNorm,
-    /// Dynamic simulation of the Adams model.
-    Dynamics,
+    /// One model.
+    One(ModelKind),
     /// Every model that is built.
     All,
 }
 
 impl ModelChoice {
     /// The models to run, in the order they are printed.
-    pub fn models(self) -> &'static [ModelKind] {
+    pub fn models(self) -> Vec<ModelKind> {
         match self {
-            ModelChoice::Statics => &[ModelKind::Statics],
-            ModelChoice::MinNorm => &[ModelKind::MinNorm],
-            ModelChoice::Dynamics => &[ModelKind::Dynamics],
-            ModelChoice::All => &ModelKind::ALL,
+            ModelChoice::One(k) => vec![k],
+            ModelChoice::All => ModelKind::ALL.to_vec(),
         }
+    }
+}
+
+/// The choices follow [`ModelKind::ALL`], so a model registered in the port is a choice here.
+impl ValueEnum for ModelChoice {
+    fn value_variants<'a>() -> &'a [Self] {
+        static CHOICES: std::sync::LazyLock<Vec<ModelChoice>> = std::sync::LazyLock::new(|| {
+            let one = ModelKind::ALL.into_iter().map(ModelChoice::One);
+            one.chain([ModelChoice::All]).collect()
+        });
+        &CHOICES
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        let (name, help) = match self {
+            ModelChoice::One(k) => (k.as_str(), k.summary()),
+            ModelChoice::All => ("all", "every model, with a line on which to design to"),
+        };
+        Some(clap::builder::PossibleValue::new(name).help(help))
     }
 }
 

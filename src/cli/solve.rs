@@ -32,7 +32,7 @@ pub struct SolveArgs {
     #[arg(long, value_name = "FILE.csv", help_heading = "Dynamics")]
     pub series: Option<PathBuf>,
     /// Model to use.
-    #[arg(long, value_enum, default_value_t = ModelChoice::Statics)]
+    #[arg(long, value_enum, default_value_t = ModelChoice::One(ModelKind::Statics))]
     pub model: ModelChoice,
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
@@ -112,7 +112,7 @@ pub fn run(a: &SolveArgs) -> Result<String> {
         crate::limits::check_items("--omega (omega_deg_s)", rows, crate::limits::SERIES_ROW)?;
     }
     let mut answers = Vec::new();
-    for &kind in kinds {
+    for kind in kinds {
         let mut spec = kind.with(&config.min_norm, &config.dynamics);
         if let ModelSpec::Dynamics { series_dt_s, .. } = &mut spec {
             *series_dt_s = a.series.as_ref().map(|_| SERIES_DT_S);

@@ -357,7 +357,7 @@ pub fn run(
             Source::Nonsmooth { .. } => converged_x(Method::Nonsmooth, None),
             _ => None,
         };
-        let (steps, evaluations) = super::work(&s);
+        let (steps, evaluations) = s.work();
         let penetration_um = match src {
             Source::Simulation { .. } => {
                 let crate::models::ModelSpec::Dynamics { params, .. } = src.spec(base) else {

@@ -346,17 +346,6 @@ fn dynamics_why(d: &DynamicsSolution) -> Option<Why> {
     d.cross_check.map(|check| Why::CrossCheck { check })
 }
 
-/// The work a solution counted: (steps, evaluations). Steps are the integrator's accepted
-/// steps or the min-norm programs solved; evaluations are right-hand-side evaluations or
-/// clarabel iterations (0 on the exact path).
-pub fn work(s: &Solution) -> (u64, u64) {
-    match &s.detail {
-        Detail::Dynamics(d) => (d.steps, d.rhs_evals),
-        Detail::MinNorm(m) => (u64::from(m.solves), u64::from(m.iterations)),
-        Detail::Statics(_) | Detail::Outside(_) => (0, 0),
-    }
-}
-
 /// The port's signature: [`crate::models::solve`], or a wrapper that counts the calls (charts).
 pub type SolveFn<'a> = &'a (dyn Fn(&ModelSpec, &SceneParams) -> Result<Solution> + Sync);
 

@@ -450,7 +450,7 @@ fn answer(solve: SolveFn, base: &Config, c: &Case, m: &Source) -> Result<Stabili
     let (s, time_s, _) = super::solve_timed(solve, m, &cfg, &c.scene, 1)?;
     let r = reference(&c.scene, m.drive(&cfg));
     let reason = why(&s);
-    let (steps, evaluations) = super::work(&s);
+    let (steps, evaluations) = s.work();
     let stops = |st: JamStatus| matches!(st, JamStatus::Jams | JamStatus::JammedAtStart);
     let x_error = (s.x_jam_mm)
         .zip(r.x_jam_mm)
