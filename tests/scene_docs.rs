@@ -110,3 +110,22 @@ fn every_readme_example_is_a_scene_that_loads() {
     }
     assert_eq!(kinds, all_kinds, "one example per chart kind");
 }
+
+/// A kind added to the list in src/charts/kinds.rs needs a built-in scene (so `render` draws
+/// it and its hash is checked) and a section of its own in charts/README.md.
+#[test]
+fn every_chart_kind_has_a_scene_and_a_readme_section() {
+    let readme = read("charts/README.md");
+    let drawn: BTreeSet<&str> = builtin::scene_names()
+        .into_iter()
+        .map(|n| SceneSource::BuiltIn(n).load(&[]).unwrap().chart.kind())
+        .collect();
+    for kind in jamchart::charts::ChartSpec::KINDS {
+        assert!(drawn.contains(kind), "no built-in scene draws kind {kind}");
+        let heading = format!("#### `kind = \"{kind}\"`");
+        assert!(
+            readme.contains(&heading),
+            "charts/README.md lacks {heading}"
+        );
+    }
+}
