@@ -1,0 +1,723 @@
+//! Text set by us, not by plotters: glyphs at their true advance, the same in PNG and SVG, and
+//! the `[size] scale` that enlarges a whole chart.
+//!
+//! [`Typeset`] wraps a plotters backend. Every call goes to the inner backend with coordinates,
+//! line widths and radii multiplied by the scale; `draw_text` and `estimate_text_size` are
+//! answered here from the embedded DejaVu Sans with [`ab_glyph`]:
+//!
+//! - Layout is done in the font's own units (integers for DejaVu): advances plus kerning, so a
+//!   run is as wide at 15 px as at 30 px and no glyph is rounded to a whole pixel. plotters'
+//!   own path drew each glyph's ink box at the truncated pen position and dropped the glyph's
+//!   left side bearing (`rect.min.x`): narrow glyphs with a wide bearing ("i", "1") were pulled
+//!   left, which is the "fricti on" and "1 0 mm" of issue 12.
+//! - Anchors are typographic: the text box runs from the font's ascent line (`VPos::Top`) to its
+//!   descent line (`VPos::Bottom`); `VPos::Center` puts the middle of that box, which is about
+//!   the middle of the capitals and digits, on the anchor. A size is the box's height in px
+//!   (ab_glyph's `PxScale`: ascent minus descent, 1.164 em for DejaVu Sans).
+//! - PNG: each glyph is rasterised at its fractional position and its coverage blended pixel by
+//!   pixel; rotations by quarter turns map pixels onto pixels exactly.
+//! - SVG: each glyph used is written once as a `<path>` in `<defs>` (its TrueType outline in
+//!   font units, quadratic curves, exact integers) and each text run as a `<g>` of `<use>`s at
+//!   the pens' positions. The picture no longer needs DejaVu Sans on the viewer's machine and
+//!   looks the same in every browser and editor. Chosen over an embedded font subset because
+//!   no maintained subsetting crate is at hand offline, a `@font-face` is ignored by some SVG
+//!   tools (Inkscape, librsvg before 2.52), and outlines of the few glyphs a chart uses are
+//!   smaller than a font file. The text stays readable to screen readers and search through
+//!   `aria-label`. plotters' SVG backend can write only `<text>`, `<polyline>` and `<polygon>`
+//!   with integer points, so text is first written as a numbered `<text>` placeholder, in
+//!   drawing order (what is drawn later still covers it), and [`SvgText::finish`] replaces it.
+//!
+//! [`Quantise`] sits under the PNG's [`Typeset`]: every anti-aliased pixel (text, lines,
+//! polygon edges, circles) is blended at one of [`COVERAGE_LEVELS`] coverages, so that line art
+//! keeps few colours and the PNG can be stored indexed ([`super::output::encode_png`]).
+
+use std::cell::RefCell;
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::rc::Rc;
+use std::sync::OnceLock;
+
+use ab_glyph::{Font, FontRef, GlyphId, OutlineCurve, PxScale, point};
+use plotters_backend::text_anchor::{HPos, VPos};
+use plotters_backend::{
+    BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend, DrawingErrorKind,
+    FontTransform, rasterizer,
+};
+
+use super::style;
+
+/// Anti-aliasing levels of a PNG pixel: coverage is rounded to k / 8. Eight keep text and
+/// slanted lines smooth to the eye while the colours of a chart stay within a 256-entry palette.
+pub const COVERAGE_LEVELS: f64 = 8.0;
+
+/// The embedded DejaVu Sans, parsed once.
+fn font() -> &'static FontRef<'static> {
+    static FONT: OnceLock<FontRef<'static>> = OnceLock::new();
+    FONT.get_or_init(|| {
+        // The bytes are the TTF shipped in the repository: a parse failure is a build defect
+        // that every chart test catches at once.
+        FontRef::try_from_slice(style::DEJAVU_SANS).expect("the embedded DejaVu Sans parses")
+    })
+}
+
+/// A run of text laid out in font units: each glyph and its pen position, and the advance.
+struct Run {
+    glyphs: Vec<(GlyphId, f32)>,
+    advance: f32,
+}
+
+impl Run {
+    fn new(text: &str) -> Run {
+        let f = font();
+        let mut pen = 0.0f32;
+        let mut prev: Option<GlyphId> = None;
+        let glyphs = text
+            .chars()
+            .map(|c| {
+                let id = f.glyph_id(c);
+                if let Some(p) = prev {
+                    pen += f.kern_unscaled(p, id);
+                }
+                let at = pen;
+                pen += f.h_advance_unscaled(id);
+                prev = Some(id);
+                (id, at)
+            })
+            .collect();
+        Run {
+            glyphs,
+            advance: pen,
+        }
+    }
+
+    /// The anchor's offset in font units: (x of the anchor from the run's start, y of the
+    /// baseline below the anchor).
+    fn anchor(&self, h: HPos, v: VPos) -> (f32, f32) {
+        let f = font();
+        let (ascent, descent) = (f.ascent_unscaled(), f.descent_unscaled());
+        let x = match h {
+            HPos::Left => 0.0,
+            HPos::Center => self.advance / 2.0,
+            HPos::Right => self.advance,
+        };
+        let y = match v {
+            VPos::Top => ascent,
+            VPos::Center => (ascent + descent) / 2.0,
+            VPos::Bottom => descent,
+        };
+        (x, y)
+    }
+}
+
+/// px per font unit for a text `size_px` tall (ascent to descent).
+fn px_per_unit(size_px: f64) -> f64 {
+    size_px / f64::from(font().height_unscaled())
+}
+
+/// The width and height in px of `text` at `size_px` (the box [`Typeset`] anchors).
+pub fn text_size(text: &str, size_px: f64) -> (u32, u32) {
+    let run = Run::new(text);
+    let w = f64::from(run.advance) * px_per_unit(size_px);
+    (w.round() as u32, size_px.round() as u32)
+}
+
+/// A pixel cell (u, v) relative to a rotation centre on a pixel corner, turned by `t`.
+fn turn(t: &FontTransform, (u, v): (i32, i32)) -> (i32, i32) {
+    match t {
+        FontTransform::None => (u, v),
+        FontTransform::Rotate90 => (-v - 1, u),
+        FontTransform::Rotate180 => (-u - 1, -v - 1),
+        FontTransform::Rotate270 => (v, -u - 1),
+    }
+}
+
+/// The degrees of `t` in SVG's sense (clockwise on screen), as plotters' `transform` turns.
+fn degrees(t: &FontTransform) -> i32 {
+    match t {
+        FontTransform::None => 0,
+        FontTransform::Rotate90 => 90,
+        FontTransform::Rotate180 => 180,
+        FontTransform::Rotate270 => 270,
+    }
+}
+
+/// A number for SVG: at most 4 decimals, no trailing zeros, never "-0".
+fn num(v: f64) -> String {
+    let s = format!("{v:.4}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" { "0".into() } else { s.into() }
+}
+
+/// `text` escaped for an XML attribute.
+fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            _ => out.push(c),
+        }
+    }
+    out
+}
+
+/// The SVG path data of glyph `id` in font units (y up), or None for a blank glyph.
+fn glyph_path(id: GlyphId) -> Option<String> {
+    let outline = font().outline(id)?;
+    let mut d = String::new();
+    let mut at: Option<ab_glyph::Point> = None;
+    let p = |q: ab_glyph::Point| format!("{} {}", num(f64::from(q.x)), num(f64::from(q.y)));
+    for c in &outline.curves {
+        let start = match c {
+            OutlineCurve::Line(a, _) | OutlineCurve::Quad(a, _, _) | OutlineCurve::Cubic(a, ..) => {
+                *a
+            }
+        };
+        if at != Some(start) {
+            if at.is_some() {
+                d.push('Z');
+            }
+            let _ = write!(d, "M{}", p(start));
+        }
+        let end = match c {
+            OutlineCurve::Line(_, b) => {
+                let _ = write!(d, "L{}", p(*b));
+                *b
+            }
+            OutlineCurve::Quad(_, b, e) => {
+                let _ = write!(d, "Q{} {}", p(*b), p(*e));
+                *e
+            }
+            OutlineCurve::Cubic(_, b, c2, e) => {
+                let _ = write!(d, "C{} {} {}", p(*b), p(*c2), p(*e));
+                *e
+            }
+        };
+        at = Some(end);
+    }
+    if d.is_empty() {
+        return None;
+    }
+    d.push('Z');
+    Some(d)
+}
+
+/// The text runs of one SVG, collected while drawing and put in by [`SvgText::finish`].
+#[derive(Debug, Default)]
+pub struct SvgText {
+    /// Glyph id -> path data, for `<defs>` (sorted: the bytes do not depend on drawing order).
+    glyphs: BTreeMap<u16, Option<String>>,
+    /// One `<g>` element per `draw_text`, in drawing order.
+    runs: Vec<String>,
+}
+
+impl SvgText {
+    /// A shared collector for [`Typeset::outlines`].
+    pub fn shared() -> Rc<RefCell<SvgText>> {
+        Rc::new(RefCell::new(SvgText::default()))
+    }
+
+    /// Records one run and returns its placeholder number.
+    fn push(
+        &mut self,
+        text: &str,
+        size_px: f64,
+        at: (f64, f64),
+        pos: (HPos, VPos),
+        t: FontTransform,
+        color: BackendColor,
+    ) -> usize {
+        let run = Run::new(text);
+        let (ax, bl) = run.anchor(pos.0, pos.1);
+        let k = px_per_unit(size_px);
+        let (r, g, b) = color.rgb;
+        let mut s = format!(
+            "<g fill=\"#{r:02X}{g:02X}{b:02X}\" aria-label=\"{}\"",
+            escape(text)
+        );
+        if color.alpha < 1.0 {
+            let _ = write!(s, " fill-opacity=\"{}\"", num(color.alpha));
+        }
+        let _ = write!(s, " transform=\"translate({} {})", num(at.0), num(at.1));
+        if degrees(&t) != 0 {
+            let _ = write!(s, " rotate({})", degrees(&t));
+        }
+        let _ = write!(
+            s,
+            " scale({} {}) translate({} {})\">",
+            num(k),
+            num(-k),
+            num(-f64::from(ax)),
+            num(-f64::from(bl))
+        );
+        for (id, pen) in run.glyphs {
+            let path = self.glyphs.entry(id.0).or_insert_with(|| glyph_path(id));
+            if path.is_some() {
+                let _ = write!(
+                    s,
+                    "<use xlink:href=\"#g{}\" x=\"{}\"/>",
+                    id.0,
+                    num(f64::from(pen))
+                );
+            }
+        }
+        s.push_str("</g>");
+        self.runs.push(s);
+        self.runs.len() - 1
+    }
+
+    /// `svg` (as plotters wrote it) with the glyphs in `<defs>` and each placeholder `<text>`
+    /// replaced by its run; an error names a placeholder that is missing or out of order.
+    pub fn finish(&self, svg: &str) -> Result<String, String> {
+        let open = svg.find("<svg").ok_or("no <svg> element")?;
+        let open_end = open + svg[open..].find('>').ok_or("unterminated <svg> tag")?;
+        let mut out = String::with_capacity(svg.len() + 64 * self.runs.len());
+        out.push_str(&svg[..open_end]);
+        out.push_str(" xmlns:xlink=\"http://www.w3.org/1999/xlink\">\n<defs>\n");
+        for (id, d) in &self.glyphs {
+            if let Some(d) = d {
+                let _ = writeln!(out, "<path id=\"g{id}\" d=\"{d}\"/>");
+            }
+        }
+        out.push_str("</defs>");
+        let mut rest = &svg[open_end + 1..];
+        for (i, run) in self.runs.iter().enumerate() {
+            let start = rest
+                .find("<text")
+                .ok_or_else(|| format!("text placeholder {i} missing"))?;
+            let len = rest[start..]
+                .find("</text>")
+                .ok_or_else(|| format!("text placeholder {i} unterminated"))?;
+            let element = &rest[start..start + len];
+            let body = element[element.find('>').unwrap_or(0) + 1..].trim();
+            if body != i.to_string() {
+                return Err(format!("text placeholder {i} found as {body:?}"));
+            }
+            out.push_str(&rest[..start]);
+            out.push_str(run);
+            rest = &rest[start + len + "</text>".len()..];
+        }
+        if rest.contains("<text") {
+            return Err("a <text> element was not drawn through the typesetter".into());
+        }
+        out.push_str(rest);
+        Ok(out)
+    }
+}
+
+/// How [`Typeset`] puts text on its backend.
+enum TextOut {
+    /// Glyph coverage blended pixel by pixel (bitmaps).
+    Raster,
+    /// Placeholders on the backend, outlines collected here (SVG).
+    Outlines(Rc<RefCell<SvgText>>),
+}
+
+/// A style with the colour of another and a given stroke width.
+struct Restyled {
+    color: BackendColor,
+    width: u32,
+}
+
+impl BackendStyle for Restyled {
+    fn color(&self) -> BackendColor {
+        self.color
+    }
+    fn stroke_width(&self) -> u32 {
+        self.width
+    }
+}
+
+/// A backend that typesets text itself and draws everything `scale` times larger on `inner`.
+///
+/// Charts see a drawing `scale` times smaller than the picture (the logical size), so the same
+/// layout in px fills a picture of any resolution: a 2000 px wide picture at scale 2 is the
+/// 1000 px one at twice the resolution. At scale 1 every call but text reaches `inner`
+/// unchanged.
+pub struct Typeset<DB> {
+    inner: DB,
+    scale: f64,
+    text: TextOut,
+}
+
+impl<DB: DrawingBackend> Typeset<DB> {
+    /// Text rasterised onto `inner` (a bitmap).
+    pub fn raster(inner: DB, scale: f64) -> Self {
+        Typeset {
+            inner,
+            scale,
+            text: TextOut::Raster,
+        }
+    }
+
+    /// Text as outlines: `inner` (plotters' SVG backend) gets placeholders, `runs` the glyphs;
+    /// call [`SvgText::finish`] on the SVG afterwards.
+    pub fn outlines(inner: DB, scale: f64, runs: Rc<RefCell<SvgText>>) -> Self {
+        Typeset {
+            inner,
+            scale,
+            text: TextOut::Outlines(runs),
+        }
+    }
+
+    fn px(&self, p: BackendCoord) -> BackendCoord {
+        if self.scale == 1.0 {
+            return p;
+        }
+        (
+            (f64::from(p.0) * self.scale).round() as i32,
+            (f64::from(p.1) * self.scale).round() as i32,
+        )
+    }
+
+    fn style<S: BackendStyle>(&self, s: &S) -> Restyled {
+        let w = s.stroke_width();
+        let width = if w == 0 || self.scale == 1.0 {
+            w
+        } else {
+            ((f64::from(w) * self.scale).round() as u32).max(1)
+        };
+        Restyled {
+            color: s.color(),
+            width,
+        }
+    }
+
+    /// The physical cell of logical pixel `p`: its top-left and bottom-right pixels.
+    fn cell(&self, p: BackendCoord) -> (BackendCoord, BackendCoord) {
+        let a = self.px(p);
+        let b = self.px((p.0 + 1, p.1 + 1));
+        (a, (b.0 - 1, b.1 - 1))
+    }
+}
+
+impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
+    type ErrorType = DB::ErrorType;
+
+    fn get_size(&self) -> (u32, u32) {
+        let (w, h) = self.inner.get_size();
+        if self.scale == 1.0 {
+            return (w, h);
+        }
+        (
+            (f64::from(w) / self.scale).round() as u32,
+            (f64::from(h) / self.scale).round() as u32,
+        )
+    }
+
+    fn ensure_prepared(&mut self) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        self.inner.ensure_prepared()
+    }
+
+    fn present(&mut self) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        self.inner.present()
+    }
+
+    fn draw_pixel(
+        &mut self,
+        p: BackendCoord,
+        color: BackendColor,
+    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        if self.scale == 1.0 {
+            return self.inner.draw_pixel(p, color);
+        }
+        let (a, b) = self.cell(p);
+        self.inner.draw_rect(a, b, &color, true)
+    }
+
+    fn draw_line<S: BackendStyle>(
+        &mut self,
+        from: BackendCoord,
+        to: BackendCoord,
+        style: &S,
+    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        let s = self.style(style);
+        self.inner.draw_line(self.px(from), self.px(to), &s)
+    }
+
+    fn draw_rect<S: BackendStyle>(
+        &mut self,
+        upper_left: BackendCoord,
+        bottom_right: BackendCoord,
+        style: &S,
+        fill: bool,
+    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        let s = self.style(style);
+        if fill {
+            let (a, _) = self.cell(upper_left);
+            let (_, b) = self.cell(bottom_right);
+            self.inner.draw_rect(a, b, &s, true)
+        } else {
+            self.inner
+                .draw_rect(self.px(upper_left), self.px(bottom_right), &s, false)
+        }
+    }
+
+    fn draw_path<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
+        &mut self,
+        path: I,
+        style: &S,
+    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        let s = self.style(style);
+        let points: Vec<BackendCoord> = path.into_iter().map(|p| self.px(p)).collect();
+        self.inner.draw_path(points, &s)
+    }
+
+    fn draw_circle<S: BackendStyle>(
+        &mut self,
+        center: BackendCoord,
+        radius: u32,
+        style: &S,
+        fill: bool,
+    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        let s = self.style(style);
+        let r = (f64::from(radius) * self.scale).round() as u32;
+        self.inner.draw_circle(self.px(center), r, &s, fill)
+    }
+
+    fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
+        &mut self,
+        vert: I,
+        style: &S,
+    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        let s = self.style(style);
+        let points: Vec<BackendCoord> = vert.into_iter().map(|p| self.px(p)).collect();
+        self.inner.fill_polygon(points, &s)
+    }
+
+    fn blit_bitmap(
+        &mut self,
+        pos: BackendCoord,
+        (iw, ih): (u32, u32),
+        src: &[u8],
+    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        if self.scale == 1.0 {
+            return self.inner.blit_bitmap(pos, (iw, ih), src);
+        }
+        for dy in 0..ih {
+            for dx in 0..iw {
+                let i = 3 * (dy * iw + dx) as usize;
+                let color = BackendColor {
+                    alpha: 1.0,
+                    rgb: (src[i], src[i + 1], src[i + 2]),
+                };
+                self.draw_pixel((pos.0 + dx as i32, pos.1 + dy as i32), color)?;
+            }
+        }
+        Ok(())
+    }
+
+    fn draw_text<TStyle: BackendTextStyle>(
+        &mut self,
+        text: &str,
+        style: &TStyle,
+        pos: BackendCoord,
+    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        let color = style.color();
+        if color.alpha == 0.0 || text.is_empty() {
+            return Ok(());
+        }
+        let size_px = style.size() * self.scale;
+        let anchor = style.anchor();
+        let t = style.transform();
+        let at = self.px(pos);
+        match &self.text {
+            TextOut::Outlines(runs) => {
+                let i = runs.borrow_mut().push(
+                    text,
+                    size_px,
+                    (f64::from(at.0), f64::from(at.1)),
+                    (anchor.h_pos, anchor.v_pos),
+                    t,
+                    color,
+                );
+                self.inner.draw_text(&i.to_string(), style, at)
+            }
+            TextOut::Raster => {
+                let run = Run::new(text);
+                let (ax, bl) = run.anchor(anchor.h_pos, anchor.v_pos);
+                let k = px_per_unit(size_px) as f32;
+                let scale = PxScale::from(size_px as f32);
+                let f = font();
+                let mut cells = Vec::new();
+                for (id, pen) in run.glyphs {
+                    let origin = point((pen - ax) * k, bl * k);
+                    let Some(g) = f.outline_glyph(id.with_scale_and_position(scale, origin)) else {
+                        continue;
+                    };
+                    let min = g.px_bounds().min;
+                    g.draw(|x, y, c| {
+                        if c > 0.0 {
+                            let u = min.x as i32 + x as i32;
+                            let v = min.y as i32 + y as i32;
+                            cells.push((turn(&t, (u, v)), c.min(1.0)));
+                        }
+                    });
+                }
+                for ((u, v), c) in cells {
+                    let p = (at.0 + u, at.1 + v);
+                    self.inner.draw_pixel(p, color.mix(f64::from(c)))?;
+                }
+                Ok(())
+            }
+        }
+    }
+
+    fn estimate_text_size<TStyle: BackendTextStyle>(
+        &self,
+        text: &str,
+        style: &TStyle,
+    ) -> Result<(u32, u32), DrawingErrorKind<Self::ErrorType>> {
+        Ok(text_size(text, style.size()))
+    }
+}
+
+/// A bitmap backend whose anti-aliased pixels take one of [`COVERAGE_LEVELS`] coverages.
+///
+/// Lines, polygon edges and circles are rasterised by plotters' own rasteriser through this
+/// backend's `draw_pixel`, which rounds the alpha before blending; straight 1 px lines and
+/// filled rectangles go to the inner backend's fast paths with the colour's alpha rounded.
+pub struct Quantise<DB>(pub DB);
+
+fn quantised(c: BackendColor) -> BackendColor {
+    BackendColor {
+        alpha: (c.alpha.clamp(0.0, 1.0) * COVERAGE_LEVELS).round() / COVERAGE_LEVELS,
+        rgb: c.rgb,
+    }
+}
+
+impl<DB: DrawingBackend> DrawingBackend for Quantise<DB> {
+    type ErrorType = DB::ErrorType;
+
+    fn get_size(&self) -> (u32, u32) {
+        self.0.get_size()
+    }
+
+    fn ensure_prepared(&mut self) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        self.0.ensure_prepared()
+    }
+
+    fn present(&mut self) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        self.0.present()
+    }
+
+    fn draw_pixel(
+        &mut self,
+        p: BackendCoord,
+        color: BackendColor,
+    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        let c = quantised(color);
+        if c.alpha == 0.0 {
+            return Ok(());
+        }
+        self.0.draw_pixel(p, c)
+    }
+
+    fn draw_line<S: BackendStyle>(
+        &mut self,
+        from: BackendCoord,
+        to: BackendCoord,
+        style: &S,
+    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        if (from.0 == to.0 || from.1 == to.1) && style.stroke_width() == 1 {
+            let s = Restyled {
+                color: quantised(style.color()),
+                width: 1,
+            };
+            return self.0.draw_line(from, to, &s);
+        }
+        rasterizer::draw_line(self, from, to, style)
+    }
+
+    fn draw_rect<S: BackendStyle>(
+        &mut self,
+        upper_left: BackendCoord,
+        bottom_right: BackendCoord,
+        style: &S,
+        fill: bool,
+    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+        if fill {
+            let s = Restyled {
+                color: quantised(style.color()),
+                width: style.stroke_width(),
+            };
+            return self.0.draw_rect(upper_left, bottom_right, &s, true);
+        }
+        rasterizer::draw_rect(self, upper_left, bottom_right, style, false)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Regression for issue 12's "fricti on": every glyph starts where the previous one's
+    /// advance (plus kerning) ends, in font units, so the gaps do not depend on the pixel grid.
+    #[test]
+    fn glyphs_sit_at_their_advance() {
+        let f = font();
+        let run = Run::new("friction");
+        for w in run.glyphs.windows(2) {
+            let (a, pa) = w[0];
+            let (b, pb) = w[1];
+            let expected = pa + f.h_advance_unscaled(a) + f.kern_unscaled(a, b);
+            assert_eq!(pb.to_bits(), expected.to_bits());
+        }
+        // The width scales exactly with the size.
+        let (w15, h15) = text_size("friction coefficient", 15.0);
+        let (w30, _) = text_size("friction coefficient", 30.0);
+        assert!(
+            (i64::from(w30) - 2 * i64::from(w15)).abs() <= 1,
+            "{w15} {w30}"
+        );
+        assert_eq!(h15, 15);
+    }
+
+    #[test]
+    fn quarter_turns_map_cells_onto_cells() {
+        for t in [
+            FontTransform::None,
+            FontTransform::Rotate90,
+            FontTransform::Rotate180,
+            FontTransform::Rotate270,
+        ] {
+            // The four cells around the centre are permuted, never moved away.
+            let mut cells: Vec<_> = [(0, 0), (-1, 0), (0, -1), (-1, -1)]
+                .into_iter()
+                .map(|c| turn(&t, c))
+                .collect();
+            cells.sort();
+            assert_eq!(cells, [(-1, -1), (-1, 0), (0, -1), (0, 0)]);
+        }
+        assert_eq!(turn(&FontTransform::Rotate270, (5, 0)), (0, -6));
+    }
+
+    #[test]
+    fn svg_placeholders_become_glyph_runs() {
+        let runs = SvgText::shared();
+        let i = runs.borrow_mut().push(
+            "a<b",
+            15.0,
+            (10.0, 20.0),
+            (HPos::Left, VPos::Top),
+            FontTransform::None,
+            BackendColor {
+                alpha: 1.0,
+                rgb: (0, 0, 0),
+            },
+        );
+        let svg = format!(
+            "<svg width=\"4\" xmlns=\"http://www.w3.org/2000/svg\">\n<text x=\"1\">\n{i}\n</text>\n</svg>\n"
+        );
+        let out = runs.borrow().finish(&svg).unwrap();
+        assert!(out.contains("xmlns:xlink"), "{out}");
+        assert!(out.contains("aria-label=\"a&lt;b\""), "{out}");
+        assert_eq!(out.matches("<use ").count(), 3, "{out}");
+        assert_eq!(out.matches("<path id=").count(), 3, "{out}");
+        assert!(!out.contains("<text"), "{out}");
+        // A placeholder out of order is an error, not a silently wrong picture.
+        assert!(runs.borrow().finish("<svg>\n<text>7</text>").is_err());
+    }
+}
