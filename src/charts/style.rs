@@ -37,7 +37,7 @@ pub const TITLE_PX: f64 = 22.0;
 /// Axis label text size in px.
 pub const LABEL_PX: f64 = 17.0;
 /// Tick label and legend text size in px.
-pub const TICK_PX: f64 = 15.0;
+pub const TICK_PX: f64 = 16.0;
 /// Annotation text size in px.
 pub const NOTE_PX: f64 = 15.0;
 

@@ -170,6 +170,12 @@ fn glyph_path(id: GlyphId) -> Option<String> {
     let mut at: Option<ab_glyph::Point> = None;
     let p = |q: ab_glyph::Point| format!("{} {}", num(f64::from(q.x)), num(f64::from(q.y)));
     for c in &outline.curves {
+        // The outliner closes each contour with a line back to its start, often of length 0.
+        if let OutlineCurve::Line(a, b) = c {
+            if a == b {
+                continue;
+            }
+        }
         let start = match c {
             OutlineCurve::Line(a, _) | OutlineCurve::Quad(a, _, _) | OutlineCurve::Cubic(a, ..) => {
                 *a
@@ -246,9 +252,7 @@ impl SvgText {
         }
         let _ = write!(
             s,
-            " scale({} {}) translate({} {})\">",
-            num(k),
-            num(-k),
+            " scale({k:.7} -{k:.7}) translate({} {})\">",
             num(-f64::from(ax)),
             num(-f64::from(bl))
         );
@@ -719,5 +723,41 @@ mod tests {
         assert!(!out.contains("<text"), "{out}");
         // A placeholder out of order is an error, not a silently wrong picture.
         assert!(runs.borrow().finish("<svg>\n<text>7</text>").is_err());
+    }
+
+    fn fig7b(settings: &[&str]) -> crate::error::Result<crate::charts::Scene> {
+        let settings: Vec<_> = settings.iter().map(|s| s.parse().unwrap()).collect();
+        crate::charts::SceneSource::BuiltIn("fig7b".into()).load(&settings)
+    }
+
+    fn png_header(png: &[u8]) -> (u32, u32, u8) {
+        let be = |i: usize| u32::from_be_bytes(png[i..i + 4].try_into().unwrap());
+        (be(16), be(20), png[25])
+    }
+
+    /// `[size] scale = 2` on a picture twice as large is the same chart at twice the
+    /// resolution: the layout sees the default size, the PNG has the doubled one and stays
+    /// indexed; the SVG carries outlines only, no `<text>` and no font name.
+    #[test]
+    fn scale_two_doubles_the_picture_not_the_layout() {
+        let scene = fig7b(&["size.width_px=2000", "size.height_px=1800", "size.scale=2"]).unwrap();
+        let r = crate::charts::render(&scene, crate::charts::Formats::Both).unwrap();
+        assert_eq!(png_header(r.png.as_deref().unwrap()), (2000, 1800, 3));
+        let svg = String::from_utf8(r.svg.unwrap()).unwrap();
+        assert!(
+            svg.starts_with("<svg width=\"2000\" height=\"1800\""),
+            "{}",
+            &svg[..80]
+        );
+        assert!(!svg.contains("<text") && !svg.contains("font-family"));
+        assert!(svg.contains("aria-label=\"palm push F (N)\""));
+    }
+
+    #[test]
+    fn scale_leaving_too_little_room_is_refused_by_name() {
+        let e = fig7b(&["size.scale=3"]).unwrap_err().to_string();
+        assert!(e.contains("size.scale") && e.contains("333 x 300"), "{e}");
+        let e = fig7b(&["size.scale=0.25"]).unwrap_err().to_string();
+        assert!(e.contains("size.scale") && e.contains("0.5..=4"), "{e}");
     }
 }
