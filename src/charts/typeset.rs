@@ -18,7 +18,8 @@
 //!   pixel; rotations by quarter turns map pixels onto pixels exactly.
 //! - SVG: each glyph used is written once as a `<path>` in `<defs>` (its TrueType outline in
 //!   font units, quadratic curves, exact integers) and each text run as a `<g>` of `<use>`s at
-//!   the pens' positions. The picture no longer needs DejaVu Sans on the viewer's machine and
+//!   the pens' positions (a text drawn more than once, as a table's cells, is defined once and
+//!   placed by one `<use>` each). The picture no longer needs DejaVu Sans on the viewer's machine and
 //!   looks the same in every browser and editor. Chosen over an embedded font subset because
 //!   no maintained subsetting crate is at hand offline, a `@font-face` is ignored by some SVG
 //!   tools (Inkscape, librsvg before 2.52), and outlines of the few glyphs a chart uses are
@@ -215,8 +216,9 @@ fn glyph_path(id: GlyphId) -> Option<String> {
 pub struct SvgText {
     /// Glyph id -> path data, for `<defs>` (sorted: the bytes do not depend on drawing order).
     glyphs: BTreeMap<u16, Option<String>>,
-    /// One `<g>` element per `draw_text`, in drawing order.
-    runs: Vec<String>,
+    /// Per `draw_text`, in drawing order: its attributes (fill, label, transform) and its
+    /// glyphs (`<use>`s, which depend on the text alone).
+    runs: Vec<(String, String)>,
 }
 
 impl SvgText {
@@ -240,7 +242,7 @@ impl SvgText {
         let k = px_per_unit(size_px);
         let (r, g, b) = color.rgb;
         let mut s = format!(
-            "<g fill=\"#{r:02X}{g:02X}{b:02X}\" aria-label=\"{}\"",
+            "fill=\"#{r:02X}{g:02X}{b:02X}\" aria-label=\"{}\"",
             escape(text)
         );
         if color.alpha < 1.0 {
@@ -252,23 +254,23 @@ impl SvgText {
         }
         let _ = write!(
             s,
-            " scale({k:.7} -{k:.7}) translate({} {})\">",
+            " scale({k:.7} -{k:.7}) translate({} {})\"",
             num(-f64::from(ax)),
             num(-f64::from(bl))
         );
+        let mut glyphs = String::new();
         for (id, pen) in run.glyphs {
             let path = self.glyphs.entry(id.0).or_insert_with(|| glyph_path(id));
             if path.is_some() {
                 let _ = write!(
-                    s,
+                    glyphs,
                     "<use xlink:href=\"#g{}\" x=\"{}\"/>",
                     id.0,
                     num(f64::from(pen))
                 );
             }
         }
-        s.push_str("</g>");
-        self.runs.push(s);
+        self.runs.push((s, glyphs));
         self.runs.len() - 1
     }
 
@@ -285,9 +287,24 @@ impl SvgText {
                 let _ = writeln!(out, "<path id=\"g{id}\" d=\"{d}\"/>");
             }
         }
+        // A text drawn more than once (a table's repeated cells) is defined once and used.
+        let mut seen: BTreeMap<&str, (usize, usize)> = BTreeMap::new();
+        for (i, (_, glyphs)) in self.runs.iter().enumerate() {
+            seen.entry(glyphs.as_str()).or_insert((i, 0)).1 += 1;
+        }
+        let mut shared: Vec<(usize, &str)> = seen
+            .iter()
+            .filter(|(_, (_, n))| *n > 1)
+            .map(|(g, (first, _))| (*first, *g))
+            .collect();
+        shared.sort_unstable();
+        let ids: BTreeMap<&str, usize> = shared.iter().map(|(i, g)| (*g, *i)).collect();
+        for (i, glyphs) in &shared {
+            let _ = writeln!(out, "<g id=\"t{i}\">{glyphs}</g>");
+        }
         out.push_str("</defs>");
         let mut rest = &svg[open_end + 1..];
-        for (i, run) in self.runs.iter().enumerate() {
+        for (i, (attrs, glyphs)) in self.runs.iter().enumerate() {
             let start = rest
                 .find("<text")
                 .ok_or_else(|| format!("text placeholder {i} missing"))?;
@@ -300,7 +317,14 @@ impl SvgText {
                 return Err(format!("text placeholder {i} found as {body:?}"));
             }
             out.push_str(&rest[..start]);
-            out.push_str(run);
+            match ids.get(glyphs.as_str()) {
+                Some(t) => {
+                    let _ = write!(out, "<use xlink:href=\"#t{t}\" {attrs}/>");
+                }
+                None => {
+                    let _ = write!(out, "<g {attrs}>{glyphs}</g>");
+                }
+            }
             rest = &rest[start + len + "</text>".len()..];
         }
         if rest.contains("<text") {
@@ -721,6 +745,22 @@ mod tests {
         assert_eq!(out.matches("<use ").count(), 3, "{out}");
         assert_eq!(out.matches("<path id=").count(), 3, "{out}");
         assert!(!out.contains("<text"), "{out}");
+        // The same text twice is defined once.
+        let twice = SvgText::shared();
+        let black = BackendColor {
+            alpha: 1.0,
+            rgb: (0, 0, 0),
+        };
+        for at in [(0.0, 0.0), (0.0, 30.0)] {
+            let pos = (HPos::Left, VPos::Top);
+            twice
+                .borrow_mut()
+                .push("ab", 15.0, at, pos, FontTransform::None, black);
+        }
+        let svg = "<svg>\n<text>0</text>\n<text>1</text>\n</svg>";
+        let out = twice.borrow().finish(svg).unwrap();
+        assert_eq!(out.matches("<g id=\"t0\">").count(), 1, "{out}");
+        assert_eq!(out.matches("<use xlink:href=\"#t0\"").count(), 2, "{out}");
         // A placeholder out of order is an error, not a silently wrong picture.
         assert!(runs.borrow().finish("<svg>\n<text>7</text>").is_err());
     }
