@@ -47,6 +47,11 @@ use plotters_backend::{
 };
 
 pub use quantise::{COVERAGE_LEVELS, Quantise};
+
+/// A backend pixel.
+type Px = BackendCoord;
+/// What a drawing call on backend `DB` returns.
+type Drawn<DB> = Result<(), DrawingErrorKind<<DB as DrawingBackend>::ErrorType>>;
 pub use svg::SvgText;
 
 use super::style;
@@ -242,19 +247,15 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
         )
     }
 
-    fn ensure_prepared(&mut self) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    fn ensure_prepared(&mut self) -> Drawn<DB> {
         self.inner.ensure_prepared()
     }
 
-    fn present(&mut self) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    fn present(&mut self) -> Drawn<DB> {
         self.inner.present()
     }
 
-    fn draw_pixel(
-        &mut self,
-        p: BackendCoord,
-        color: BackendColor,
-    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    fn draw_pixel(&mut self, p: Px, color: BackendColor) -> Drawn<DB> {
         if self.scale == 1.0 {
             return self.inner.draw_pixel(p, color);
         }
@@ -262,31 +263,19 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
         self.inner.draw_rect(a, b, &color, true)
     }
 
-    fn draw_line<S: BackendStyle>(
-        &mut self,
-        from: BackendCoord,
-        to: BackendCoord,
-        style: &S,
-    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    fn draw_line<S: BackendStyle>(&mut self, from: Px, to: Px, style: &S) -> Drawn<DB> {
         let s = self.style(style);
         self.inner.draw_line(self.px(from), self.px(to), &s)
     }
 
-    fn draw_rect<S: BackendStyle>(
-        &mut self,
-        upper_left: BackendCoord,
-        bottom_right: BackendCoord,
-        style: &S,
-        fill: bool,
-    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    fn draw_rect<S: BackendStyle>(&mut self, ul: Px, br: Px, style: &S, fill: bool) -> Drawn<DB> {
         let s = self.style(style);
         if fill {
-            let (a, _) = self.cell(upper_left);
-            let (_, b) = self.cell(bottom_right);
+            let (a, _) = self.cell(ul);
+            let (_, b) = self.cell(br);
             self.inner.draw_rect(a, b, &s, true)
         } else {
-            self.inner
-                .draw_rect(self.px(upper_left), self.px(bottom_right), &s, false)
+            self.inner.draw_rect(self.px(ul), self.px(br), &s, false)
         }
     }
 
@@ -294,7 +283,7 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
         &mut self,
         path: I,
         style: &S,
-    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    ) -> Drawn<DB> {
         let s = self.style(style);
         let points: Vec<BackendCoord> = path.into_iter().map(|p| self.px(p)).collect();
         self.inner.draw_path(points, &s)
@@ -306,7 +295,7 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
         radius: u32,
         style: &S,
         fill: bool,
-    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    ) -> Drawn<DB> {
         let s = self.style(style);
         let r = (f64::from(radius) * self.scale).round() as u32;
         self.inner.draw_circle(self.px(center), r, &s, fill)
@@ -316,18 +305,13 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
         &mut self,
         vert: I,
         style: &S,
-    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    ) -> Drawn<DB> {
         let s = self.style(style);
         let points: Vec<BackendCoord> = vert.into_iter().map(|p| self.px(p)).collect();
         self.inner.fill_polygon(points, &s)
     }
 
-    fn blit_bitmap(
-        &mut self,
-        pos: BackendCoord,
-        (iw, ih): (u32, u32),
-        src: &[u8],
-    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    fn blit_bitmap(&mut self, pos: BackendCoord, (iw, ih): (u32, u32), src: &[u8]) -> Drawn<DB> {
         if self.scale == 1.0 {
             return self.inner.blit_bitmap(pos, (iw, ih), src);
         }
@@ -349,7 +333,7 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
         text: &str,
         style: &TStyle,
         pos: BackendCoord,
-    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    ) -> Drawn<DB> {
         let color = style.color();
         if color.alpha == 0.0 || text.is_empty() {
             return Ok(());

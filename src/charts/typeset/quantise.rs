@@ -1,10 +1,8 @@
 //! Anti-aliasing in a few levels, so that a chart's PNG keeps a palette.
 
-use plotters_backend::{
-    BackendColor, BackendCoord, BackendStyle, DrawingBackend, DrawingErrorKind, rasterizer,
-};
+use plotters_backend::{BackendColor, BackendStyle, DrawingBackend, rasterizer};
 
-use super::Restyled;
+use super::{Drawn, Px, Restyled};
 
 /// Anti-aliasing levels of a PNG pixel: coverage is rounded to k / 8. Eight keep text and
 /// slanted lines smooth to the eye while the colours of a chart stay within a 256-entry palette.
@@ -31,19 +29,15 @@ impl<DB: DrawingBackend> DrawingBackend for Quantise<DB> {
         self.0.get_size()
     }
 
-    fn ensure_prepared(&mut self) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    fn ensure_prepared(&mut self) -> Drawn<DB> {
         self.0.ensure_prepared()
     }
 
-    fn present(&mut self) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    fn present(&mut self) -> Drawn<DB> {
         self.0.present()
     }
 
-    fn draw_pixel(
-        &mut self,
-        p: BackendCoord,
-        color: BackendColor,
-    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    fn draw_pixel(&mut self, p: Px, color: BackendColor) -> Drawn<DB> {
         let c = quantised(color);
         if c.alpha == 0.0 {
             return Ok(());
@@ -51,12 +45,7 @@ impl<DB: DrawingBackend> DrawingBackend for Quantise<DB> {
         self.0.draw_pixel(p, c)
     }
 
-    fn draw_line<S: BackendStyle>(
-        &mut self,
-        from: BackendCoord,
-        to: BackendCoord,
-        style: &S,
-    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    fn draw_line<S: BackendStyle>(&mut self, from: Px, to: Px, style: &S) -> Drawn<DB> {
         if (from.0 == to.0 || from.1 == to.1) && style.stroke_width() == 1 {
             let s = Restyled {
                 color: quantised(style.color()),
@@ -67,20 +56,14 @@ impl<DB: DrawingBackend> DrawingBackend for Quantise<DB> {
         rasterizer::draw_line(self, from, to, style)
     }
 
-    fn draw_rect<S: BackendStyle>(
-        &mut self,
-        upper_left: BackendCoord,
-        bottom_right: BackendCoord,
-        style: &S,
-        fill: bool,
-    ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+    fn draw_rect<S: BackendStyle>(&mut self, ul: Px, br: Px, style: &S, fill: bool) -> Drawn<DB> {
         if fill {
             let s = Restyled {
                 color: quantised(style.color()),
                 width: style.stroke_width(),
             };
-            return self.0.draw_rect(upper_left, bottom_right, &s, true);
+            return self.0.draw_rect(ul, br, &s, true);
         }
-        rasterizer::draw_rect(self, upper_left, bottom_right, style, false)
+        rasterizer::draw_rect(self, ul, br, style, false)
     }
 }
