@@ -212,6 +212,10 @@ impl<DB: DrawingBackend> Typeset<DB> {
         )
     }
 
+    fn pxs<I: IntoIterator<Item = Px>>(&self, points: I) -> Vec<Px> {
+        points.into_iter().map(|p| self.px(p)).collect()
+    }
+
     fn style<S: BackendStyle>(&self, s: &S) -> Restyled {
         let w = s.stroke_width();
         let width = if w == 0 || self.scale == 1.0 {
@@ -279,14 +283,8 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
         }
     }
 
-    fn draw_path<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
-        &mut self,
-        path: I,
-        style: &S,
-    ) -> Drawn<DB> {
-        let s = self.style(style);
-        let points: Vec<BackendCoord> = path.into_iter().map(|p| self.px(p)).collect();
-        self.inner.draw_path(points, &s)
+    fn draw_path<S: BackendStyle, I: IntoIterator<Item = Px>>(&mut self, p: I, s: &S) -> Drawn<DB> {
+        self.inner.draw_path(self.pxs(p), &self.style(s))
     }
 
     fn draw_circle<S: BackendStyle>(
@@ -301,14 +299,12 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
         self.inner.draw_circle(self.px(center), r, &s, fill)
     }
 
-    fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
+    fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = Px>>(
         &mut self,
         vert: I,
         style: &S,
     ) -> Drawn<DB> {
-        let s = self.style(style);
-        let points: Vec<BackendCoord> = vert.into_iter().map(|p| self.px(p)).collect();
-        self.inner.fill_polygon(points, &s)
+        self.inner.fill_polygon(self.pxs(vert), &self.style(style))
     }
 
     fn blit_bitmap(&mut self, pos: BackendCoord, (iw, ih): (u32, u32), src: &[u8]) -> Drawn<DB> {
