@@ -192,20 +192,15 @@ pub fn render(report: &AccuracyReport, scene: &SceneParams) -> Result<(Vec<u8>, 
         scene: "accuracy (wall time)".into(),
         message: m,
     };
-    let mut s = String::new();
-    {
-        let root = SVGBackend::with_string(&mut s, (w, h)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| err(e.to_string()))?;
-        fig.draw(&root).map_err(|e| err(e.to_string()))?;
-        root.present().map_err(|e| err(e.to_string()))?;
-    }
-    let mut rgb = vec![0u8; w as usize * h as usize * 3];
-    {
-        let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| err(e.to_string()))?;
-        fig.draw(&root).map_err(|e| err(e.to_string()))?;
-        root.present().map_err(|e| err(e.to_string()))?;
-    }
-    let png = output::encode_png(&rgb, w, h).map_err(err)?;
-    Ok((s.into_bytes(), png))
+    let svg = output::svg(w, h, 1.0, |root| draw_on(&fig, root)).map_err(err)?;
+    let png = output::png(w, h, 1.0, |root| draw_on(&fig, root)).map_err(err)?;
+    Ok((svg, png))
+}
+
+fn draw_on<DB: DrawingBackend>(
+    fig: &Figure,
+    root: &DrawingArea<DB, plotters::coord::Shift>,
+) -> std::result::Result<(), String> {
+    root.fill(&WHITE).map_err(|e| e.to_string())?;
+    fig.draw(root).map_err(|e| e.to_string())
 }

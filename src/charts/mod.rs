@@ -3,7 +3,7 @@
 //!
 //! A scene is loaded ([`spec::load_scene`]), its chart computes only what its layers draw
 //! ([`Chart::compute`]), then one backend-generic `draw` produces both the SVG and the PNG.
-//! Bytes depend only on the scene: the font is embedded ([`style::init_fonts`]), the PNG has no
+//! Bytes depend only on the scene: the font is embedded and text set by [`typeset`], the PNG has no
 //! metadata ([`output::encode_png`]), nothing is random and every number that feeds a pixel is
 //! computed the same way for any thread count.
 //!
@@ -58,6 +58,7 @@ pub mod sweep;
 pub mod sweep_layers;
 pub mod ticks;
 pub mod time_series;
+pub mod typeset;
 pub mod vlocator_capacity;
 pub mod vlocator_optimum;
 pub mod work_precision;
@@ -133,30 +134,27 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
         scene: scene.name.clone(),
         message: m,
     };
+    let scale = scene.size.scale;
     let (svg, png) = rayon::join(
         || -> Result<Option<Vec<u8>>> {
             if !formats.svg() {
                 return Ok(None);
             }
-            let mut s = String::new();
-            {
-                let root = SVGBackend::with_string(&mut s, (w, h)).into_drawing_area();
-                chart.draw(&root).map_err(|e| draw_err(e.to_string()))?;
-                root.present().map_err(|e| draw_err(e.to_string()))?;
-            }
-            Ok(Some(s.into_bytes()))
+            output::svg(w, h, scale, |root| {
+                chart.draw(root).map_err(|e| e.to_string())
+            })
+            .map(Some)
+            .map_err(draw_err)
         },
         || -> Result<Option<Vec<u8>>> {
             if !formats.png() {
                 return Ok(None);
             }
-            let mut rgb = vec![0u8; w as usize * h as usize * 3];
-            {
-                let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
-                chart.draw(&root).map_err(|e| draw_err(e.to_string()))?;
-                root.present().map_err(|e| draw_err(e.to_string()))?;
-            }
-            output::encode_png(&rgb, w, h).map(Some).map_err(draw_err)
+            output::png(w, h, scale, |root| {
+                chart.draw(root).map_err(|e| e.to_string())
+            })
+            .map(Some)
+            .map_err(draw_err)
         },
     );
     Ok(Rendered {

@@ -1,4 +1,47 @@
-//! Chart bytes: deterministic PNG encoding (the files are written by the crate's all-or-nothing writer, `atomic`).
+//! Chart bytes: a drawing made into SVG and into deterministic PNG, through [`Typeset`] (the
+//! files are written by the crate's all-or-nothing writer, `atomic`).
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use super::typeset::{Quantise, SvgText, Typeset};
+
+/// The SVG backend as charts see it: text as outlines, everything `scale` times larger.
+pub type SvgArea<'a> = DrawingArea<Typeset<SVGBackend<'a>>, Shift>;
+/// The PNG backend as charts see it: text rasterised, anti-aliasing quantised, scaled.
+pub type PngArea<'a> = DrawingArea<Typeset<Quantise<BitMapBackend<'a>>>, Shift>;
+
+/// An SVG `width` x `height` px drawn by `draw` on a drawing `scale` times smaller.
+pub fn svg<F>(width: u32, height: u32, scale: f64, draw: F) -> Result<Vec<u8>, String>
+where
+    F: for<'a> FnOnce(&SvgArea<'a>) -> Result<(), String>,
+{
+    let runs = SvgText::shared();
+    let mut s = String::new();
+    {
+        let backend = SVGBackend::with_string(&mut s, (width, height));
+        let root = Typeset::outlines(backend, scale, runs.clone()).into_drawing_area();
+        draw(&root)?;
+        root.present().map_err(|e| e.to_string())?;
+    }
+    let svg = runs.borrow().finish(&s)?;
+    Ok(svg.into_bytes())
+}
+
+/// A PNG `width` x `height` px drawn by `draw` on a drawing `scale` times smaller.
+pub fn png<F>(width: u32, height: u32, scale: f64, draw: F) -> Result<Vec<u8>, String>
+where
+    F: for<'a> FnOnce(&PngArea<'a>) -> Result<(), String>,
+{
+    let mut rgb = vec![0u8; width as usize * height as usize * 3];
+    {
+        let backend = Quantise(BitMapBackend::with_buffer(&mut rgb, (width, height)));
+        let root = Typeset::raster(backend, scale).into_drawing_area();
+        draw(&root)?;
+        root.present().map_err(|e| e.to_string())?;
+    }
+    encode_png(&rgb, width, height)
+}
 
 /// Encodes an RGB8 buffer as PNG with only the IHDR, (PLTE,) IDAT and IEND chunks: no time, no
 /// text, no gamma, so the bytes depend on the pixels alone.

@@ -11,6 +11,7 @@
 //! [size]                           # picture size in px (default 1000 x 800)
 //! width_px = 1000
 //! height_px = 900
+//! scale = 1.0                      # text, lines, markers and margins enlarged together
 //! [chart]                          # the chart kind and its own keys
 //! kind = "jam_map"                 # one of ChartSpec::KINDS (charts/kinds.rs)
 //! ```
@@ -35,14 +36,19 @@ use crate::grid::GridParam;
 use crate::minnorm::MinNormSettings;
 use crate::model::SceneParams;
 
-/// Picture size in px.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+/// Picture size in px, and the scale of everything drawn on it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Size {
     /// Width in px, 400..=4000 (default: 1000).
     pub width_px: u32,
     /// Height in px, 300..=4000 (default: 800).
     pub height_px: u32,
+    /// Factor on every text size, line width, marker size and margin, 0.5..=4 (default: 1).
+    /// The chart is laid out on `width_px / scale` x `height_px / scale` px, which must stay
+    /// at least 400 x 300: a 2000 x 1600 px picture at scale 2 is the 1000 x 800 one at twice
+    /// the resolution.
+    pub scale: f64,
 }
 
 impl Default for Size {
@@ -50,6 +56,7 @@ impl Default for Size {
         Size {
             width_px: 1000,
             height_px: 800,
+            scale: 1.0,
         }
     }
 }
@@ -69,6 +76,24 @@ impl Size {
                 "size.height_px",
                 self.height_px,
                 "must be 300..=4000 px",
+            ));
+        }
+        // Half size still draws a 1 px line; beyond 4 nothing gains.
+        if !(0.5..=4.0).contains(&self.scale) {
+            return Err(Error::invalid("size.scale", self.scale, "must be 0.5..=4"));
+        }
+        let (w, h) = (
+            f64::from(self.width_px) / self.scale,
+            f64::from(self.height_px) / self.scale,
+        );
+        if w < 399.5 || h < 299.5 {
+            return Err(Error::invalid(
+                "size.scale",
+                self.scale,
+                format!(
+                    "leaves {w:.0} x {h:.0} px for the layout, below 400 x 300: raise width_px \
+                     and height_px or lower scale"
+                ),
             ));
         }
         Ok(())

@@ -147,7 +147,7 @@ impl Stability {
         let (left, top, bottom_room) = (440, 110, 90);
         let cell_w = (w - left - 20) / n_methods;
         let cell_h = ((h - top - bottom_room) / n_cases).max(12);
-        let head = style::text(13.0).pos(Pos::new(HPos::Center, VPos::Bottom));
+        let head = style::text(14.0).pos(Pos::new(HPos::Center, VPos::Bottom));
         for (j, m) in r.methods.iter().enumerate() {
             let x = left + j as i32 * cell_w + cell_w / 2;
             // Two lines: model and the rest.
@@ -155,8 +155,8 @@ impl Stability {
             root.draw(&Text::new(a.to_string(), (x, top - 22), head.clone()))?;
             root.draw(&Text::new(b.to_string(), (x, top - 6), head.clone()))?;
         }
-        let case_font = style::text(12.0).pos(Pos::new(HPos::Right, VPos::Center));
-        let cell_font = style::text(11.0).pos(Pos::new(HPos::Center, VPos::Center));
+        let case_font = style::text(13.0).pos(Pos::new(HPos::Right, VPos::Center));
+        let cell_font = style::text(12.0).pos(Pos::new(HPos::Center, VPos::Center));
         for (i, c) in r.cases.iter().enumerate() {
             let y = top + i as i32 * cell_h;
             root.draw(&Text::new(
@@ -190,7 +190,7 @@ impl Stability {
         }
         // Legend: each class with its count (wrong_unflagged must read 0).
         let legend_y = top + n_cases * cell_h + 30;
-        let lf = style::text(13.0).pos(Pos::new(HPos::Left, VPos::Center));
+        let lf = style::text(14.0).pos(Pos::new(HPos::Left, VPos::Center));
         let mut x = left;
         for (class, colour) in FILL {
             let count = r.of_class(class).count();
@@ -202,7 +202,7 @@ impl Stability {
             root.draw(&Text::new(text, (x + 24, legend_y), lf.clone()))?;
             x += 200;
         }
-        let note = style::text(12.0).pos(Pos::new(HPos::Left, VPos::Center));
+        let note = style::text(13.0).pos(Pos::new(HPos::Left, VPos::Center));
         root.draw(&Text::new(
             "cell: x_jam where the method says it jams, else its status; wall times and \
              reasons: jamchart stability"

@@ -10,13 +10,14 @@ use plotters::coord::CoordTranslate;
 use plotters::prelude::*;
 use plotters::style::FontStyle;
 
-/// The font family every chart uses; [`init_fonts`] binds it to the embedded DejaVu Sans, and
-/// SVG viewers that have DejaVu Sans show the text exactly as laid out.
+/// The font family every chart uses. Charts are drawn through [`super::typeset::Typeset`], which
+/// sets all text in the embedded DejaVu Sans (outlines in the SVG, so no viewer needs the font);
+/// [`init_fonts`] also binds the name for plotters' own text path.
 pub const FONT: &str = "DejaVu Sans";
 
 /// DejaVu Sans 2.37 (Debian fonts-dejavu-core), licence in `assets/fonts/LICENSE-DejaVu.txt`.
 /// Embedded so that no system font is ever looked up and the pixels are the same everywhere.
-static DEJAVU_SANS: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+pub(super) static DEJAVU_SANS: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 
 /// Registers the embedded font with plotters (once per process; later calls do nothing).
 pub fn init_fonts() {
@@ -28,12 +29,15 @@ pub fn init_fonts() {
     });
 }
 
+// Text sizes are the height in px from the font's ascent line to its descent line (1.164 em of
+// DejaVu Sans; digits and capitals are 0.63 of it), at `[size] scale = 1`.
+
 /// Title text size in px.
 pub const TITLE_PX: f64 = 22.0;
 /// Axis label text size in px.
 pub const LABEL_PX: f64 = 17.0;
 /// Tick label and legend text size in px.
-pub const TICK_PX: f64 = 15.0;
+pub const TICK_PX: f64 = 16.0;
 /// Annotation text size in px.
 pub const NOTE_PX: f64 = 15.0;
 
