@@ -52,7 +52,7 @@ fn the_push_at_lock_up_grows_as_the_step_shrinks() {
     let scene = SceneParams::default();
     let push = |step: f64| {
         let p = DynamicsParams {
-            nonsmooth_step_deg: step,
+            nonsmooth_step_deg: Some(step),
             verify: false,
             ..nonsmooth(Drive::Motion, 30.0)
         };
