@@ -114,7 +114,7 @@ pub struct DynamicsParams {
     /// Palm turn per time step of the nonsmooth method in deg, in (0, 1] (default: 0.1 with the
     /// motion drive, 0.01 with the force drive). The motion drive's lock-up is located inside
     /// its step by bisection, so at 0.1 deg x_jam lies within 3e-5 of r/mu for mu = 0.15-0.45 in
-    /// about 0.1 ms (0.2 ms verified); the force drive's rest is read at a step end and a slow
+    /// about 0.15 ms (0.25 ms verified); the force drive's rest is read at a step end and a slow
     /// push needs the finer step (at 0.5 deg/s, 0.1 deg is 0.1-0.4 % off and often flagged).
     pub nonsmooth_step_deg: Option<f64>,
     /// How the disc may move in the nonsmooth method: `slides` (the paper's translational
