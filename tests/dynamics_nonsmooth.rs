@@ -52,7 +52,7 @@ fn the_push_at_lock_up_grows_as_the_step_shrinks() {
     let scene = SceneParams::default();
     let push = |step: f64| {
         let p = DynamicsParams {
-            nonsmooth_step_deg: step,
+            nonsmooth_step_deg: Some(step),
             verify: false,
             ..nonsmooth(Drive::Motion, 30.0)
         };
@@ -222,5 +222,45 @@ fn a_rolling_disc_pushed_slowly_with_a_finite_force_jams_where_min_norm_rolling_
             rel(x, want) < 2e-3,
             "{mu_ground}/{mu_palm}: {x} vs min-norm {want}"
         );
+    }
+}
+
+/// The force drive's 1.7 % gap (mu = 0.15, 30 deg/s: nonsmooth 68.81 mm, RADAU5 at its default
+/// contact 67.81 mm) is the regularised model's jam reading, not the physics: it reads the jam
+/// when the disc's speed falls below half the geometric speed, while the disc, let go by the
+/// stalled palm, still coasts 0.6 mm; where it stops (its stiction reading `x_stiction_mm`) is
+/// the nonsmooth method's jam in the stiff limit. With a 1 um contact at rtol 1e-8 the two agree
+/// within 0.03 % (measured worst 3.0e-4 at mu 0.3, 90 deg/s) where the regularised disc's slip
+/// falls below its stiction velocity (at mu >= 0.3 and 10-30 deg/s it creeps above it and gives
+/// no stiction reading).
+#[test]
+fn force_drive_agrees_with_the_stiff_regularised_disc_where_it_stops() {
+    let stiff = 200.0 / 1e-3_f64.powf(2.2);
+    for (mu, omega) in [(0.15, 10.0), (0.15, 30.0), (0.15, 90.0), (0.3, 90.0)] {
+        let scene = SceneParams::default().with_mu(mu);
+        let ns = x_jam(&simulate(&scene, &nonsmooth(Drive::Force, omega), None).unwrap());
+        let radau = DynamicsParams {
+            stiffness_n_per_mm_e: stiff,
+            drive: Drive::Force,
+            omega_deg_s: omega,
+            rtol: 1e-8,
+            verify: false,
+            after_jam_s: 0.1,
+            ..Default::default()
+        };
+        let s = simulate(&scene, &radau, None).unwrap();
+        let read = x_jam(&s);
+        let stops = s
+            .x_stiction_mm
+            .expect("the stiff disc's slip falls below V_s");
+        let e = rel(stops, ns);
+        eprintln!(
+            "mu {mu} omega {omega}: nonsmooth {ns:.4} mm, radau5 stops at {stops:.4} mm ({:.4} %), \
+             its jam read at {read:.4} mm",
+            e * 100.0
+        );
+        assert!(e < 4e-4, "mu {mu} omega {omega}: {stops} vs nonsmooth {ns}");
+        // The reading comes while the disc still coasts.
+        assert!(read < stops, "{read} vs {stops}");
     }
 }

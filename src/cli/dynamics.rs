@@ -108,10 +108,12 @@ pub struct DynamicsArgs {
     /// the lock-up of the motion-driven palm).
     #[arg(long, value_name = "METHOD", help_heading = "Dynamics")]
     pub method: Option<Method>,
-    /// Palm turn per step of the nonsmooth method in deg, in (0, 1] [default: 0.01].
+    /// Palm turn per step of the nonsmooth method in deg, in (0, 1] [default: 0.1 motion drive,
+    /// 0.01 force drive].
     ///
-    /// x_jam converges to the rigid answer in the first order of the step: 0.01 deg puts it
-    /// within 0.1 % of r/mu for mu = 0.15-0.45 (motion drive).
+    /// The motion drive's lock-up is located inside its step: 0.1 deg puts x_jam within 3e-5 of
+    /// r/mu for mu = 0.15-0.45. The force drive's disc comes to rest at a step end, and a slow
+    /// push needs 0.01 deg for 0.1 %.
     #[arg(
         long,
         allow_negative_numbers = true,
@@ -176,6 +178,9 @@ impl DynamicsArgs {
         if let Some(v) = self.atol {
             d.atol = Some(v);
         }
+        if let Some(v) = self.nonsmooth_step {
+            d.nonsmooth_step_deg = Some(v);
+        }
         if self.no_verify {
             d.verify = false;
         }
@@ -190,7 +195,6 @@ impl DynamicsArgs {
             (self.palm_offset, &mut d.palm_offset_mm),
             (self.rtol, &mut d.rtol),
             (self.after_jam, &mut d.after_jam_s),
-            (self.nonsmooth_step, &mut d.nonsmooth_step_deg),
         ];
         for (flag, field) in overrides {
             if let Some(v) = flag {
@@ -324,7 +328,7 @@ pub fn render_details(
     let nonsmooth = d.method == Method::Nonsmooth;
     if let Some(e) = d.x_jam_error_mm {
         let how = if nonsmooth {
-            "a step of palm turn at the jam, or the change at twice the step if larger"
+            "the change at twice the step, or how finely the jam was located if larger"
         } else {
             "second run at a tenth of the tolerances"
         };

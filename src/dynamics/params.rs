@@ -111,14 +111,25 @@ pub struct DynamicsParams {
     pub after_jam_s: f64,
     /// Step limit of the integrator, >= 1 (default: 2000000).
     pub max_steps: u64,
-    /// Palm turn per time step of the nonsmooth method in deg, in (0, 1] (default: 0.01: x_jam
-    /// lands within 0.1 % of r/mu for mu = 0.15-0.45 with the motion drive, in about 0.3 ms;
-    /// the error is first order in the step).
-    pub nonsmooth_step_deg: f64,
+    /// Palm turn per time step of the nonsmooth method in deg, in (0, 1] (default: 0.1 with the
+    /// motion drive, 0.01 with the force drive). The motion drive's lock-up is located inside
+    /// its step by bisection, so at 0.1 deg x_jam lies within 3e-5 of r/mu for mu = 0.15-0.45 in
+    /// about 0.15 ms (0.25 ms verified); the force drive's rest is read at a step end and a slow
+    /// push needs the finer step (at 0.5 deg/s, 0.1 deg is 0.1-0.4 % off and often flagged).
+    pub nonsmooth_step_deg: Option<f64>,
     /// How the disc may move in the nonsmooth method: `slides` (the paper's translational
     /// joint) or `rolls` (free in the plane) (default: slides). The other methods only slide.
     pub disc: DiscMotion,
 }
+
+/// The nonsmooth method's default step with the motion drive in deg: the lock-up is located
+/// inside its step, so x_jam lies within 3e-5 of r/mu for mu = 0.15-0.45 (the palm ends each step
+/// inside the disc by the second order of the step; 0.3 deg is 3e-4 off, 1 deg 3e-3).
+pub const MOTION_STEP_DEG: f64 = 0.1;
+
+/// The nonsmooth method's default step with the force drive in deg: the disc comes to rest at a
+/// step end, and a slow push (0.5 deg/s) lands 0.1-0.4 % off at 0.1 deg, within 0.1 % at 0.01.
+pub const FORCE_STEP_DEG: f64 = 0.01;
 
 impl Default for DynamicsParams {
     fn default() -> Self {
@@ -147,7 +158,7 @@ impl Default for DynamicsParams {
             after_jam_s: 0.0,
             // DOPRI5 needs about 1e6 steps at the stiffest contacts; beyond that it is hopeless.
             max_steps: 2_000_000,
-            nonsmooth_step_deg: 0.01,
+            nonsmooth_step_deg: None,
             disc: DiscMotion::Slides,
         }
     }
@@ -235,7 +246,7 @@ impl DynamicsParams {
         if self.max_steps == 0 {
             return Err(Error::invalid("max_steps", 0, "must be >= 1"));
         }
-        let st = self.nonsmooth_step_deg;
+        let st = self.nonsmooth_step_deg();
         if !(st.is_finite() && st > 0.0 && st <= 1.0) {
             return Err(Error::invalid(
                 "nonsmooth_step_deg",
@@ -260,6 +271,15 @@ impl DynamicsParams {
             scene.mass_kg,
             "the dynamics need a disc mass > 0 kg",
         )
+    }
+
+    /// The nonsmooth method's step in use in deg of palm turn: `nonsmooth_step_deg`, or when
+    /// unset [`MOTION_STEP_DEG`] with the motion drive and [`FORCE_STEP_DEG`] with the force drive.
+    pub fn nonsmooth_step_deg(&self) -> f64 {
+        self.nonsmooth_step_deg.unwrap_or(match self.drive {
+            Drive::Motion => MOTION_STEP_DEG,
+            Drive::Force => FORCE_STEP_DEG,
+        })
     }
 
     /// The absolute tolerance in use (atol, or rtol when unset).

@@ -89,6 +89,7 @@ fn conclude(
         x_jam_rigid_mm: None,
         model_uncertainty_mm: None,
         physical_until_s: None,
+        jam_resolution_mm: None,
         series: det.series,
     };
     if det.beyond_reach.is_some() {
@@ -217,6 +218,7 @@ fn run_nonsmooth(
         x_jam_rigid_mm: None,
         model_uncertainty_mm: None,
         physical_until_s: None,
+        jam_resolution_mm: None,
         series: run.series,
     };
     let (t, theta, x) = match run.end {
@@ -248,6 +250,7 @@ fn run_nonsmooth(
     out.theta_jam_deg = Some(theta.to_degrees());
     out.x_jam_mm = Some(x);
     out.t_jam_s = Some(t);
+    out.jam_resolution_mm = Some(run.jam_resolution_mm);
     if let Some(theta_deg) = run.lift_off_deg
         && params.disc == nonsmooth::DiscMotion::Slides
     {

@@ -127,7 +127,7 @@ pub fn run(base: &Config, settings: &MapCostSettings) -> Result<MapCostReport> {
         ),
         (
             Source::Nonsmooth {
-                step_deg: base.dynamics.nonsmooth_step_deg,
+                step_deg: base.dynamics.nonsmooth_step_deg(),
                 verify: base.dynamics.verify,
             },
             settings.dynamics_per_axis,

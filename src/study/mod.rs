@@ -180,7 +180,7 @@ impl Source {
             Source::Nonsmooth { step_deg, verify } => ModelSpec::Dynamics {
                 params: DynamicsParams {
                     method: Method::Nonsmooth,
-                    nonsmooth_step_deg: step_deg,
+                    nonsmooth_step_deg: Some(step_deg),
                     verify,
                     ..base.dynamics
                 },

@@ -281,7 +281,7 @@ pub fn methods(base: &Config) -> Vec<Source> {
             verify: d.verify,
         },
         Source::Nonsmooth {
-            step_deg: d.nonsmooth_step_deg,
+            step_deg: d.nonsmooth_step_deg(),
             verify: d.verify,
         },
     ]

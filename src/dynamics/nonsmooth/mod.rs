@@ -54,11 +54,39 @@
 //! Exact Coulomb friction has true stiction: a held disc does not move, to round-off. With the
 //! motion drive the palm must turn whatever the load; past the self-locking wedge no impulse can
 //! both keep the palm out of the disc and obey the friction laws, so the step problem has no
-//! solution: a lock-up, the rigid model's jam (the push needed grows without bound). It is
-//! reported as the jam at the disc's position when it happens, with the push of the last step
-//! ([`LockUp::push_n`]), which grows as the step shrinks (it is about mu_g m g / D with D the
-//! wedge's margin at the last step). With the force drive the palm stalls at its limit and holds;
-//! the jam is the first step in which the disc and the palm are both at rest, and it lasts.
+//! solution: a lock-up, the rigid model's jam (the push needed grows without bound). Whether a
+//! step from a given state has a solution depends on the palm angle at its start (the push's
+//! forward component net of the ground's friction changes sign at the wedge), so the lock-up is
+//! located inside the step where it happens: the state moves along the last step that turned,
+//! and a bisection on the fraction of that step (16 halvings, 1.5e-5 of a step) finds where the
+//! next step stops having a solution. It is reported as the jam at the disc's position there,
+//! with the push of the last full step ([`LockUp::push_n`]), which grows as the step shrinks (it
+//! is about mu_g m g / D with D the wedge's margin at the last step). With the force drive the
+//! palm stalls at its limit and holds; the jam is the first step in which the disc and the palm
+//! are both at rest, and it lasts: it is read at that step's start, within the disc's travel in
+//! the step before (reported as `jam_resolution_mm`, part of the error estimate).
+//!
+//! # Step and accuracy
+//!
+//! The default step is 0.1 deg of palm turn with the motion drive and 0.01 deg with the force
+//! drive ([`crate::dynamics::params::MOTION_STEP_DEG`], `FORCE_STEP_DEG`). Motion drive, 30 deg/s,
+//! (x_jam - r/mu) / (r/mu) (the lock-up located inside its step; before, read at a step end, it lay up to a
+//! step's travel past r/mu, +9e-5 ... +2.7e-4 at 0.01 deg):
+//!
+//! ```text
+//! step      mu = 0.15   0.3        0.45       steps (mu 0.15)   time, verified (mu 0.15)
+//! 0.3 deg   -2.7e-4     -6.4e-5    -3.0e-5      244
+//! 0.1 deg   -2.6e-5     -9.0e-6    -3.4e-6      730             0.27 ms (at 0.01 deg: 2.0 ms)
+//! 0.01 deg  -3.0e-7     -8.0e-8    -3.2e-8     7300
+//! ```
+//!
+//! The error is of second order in the step: each step closes the palm's gap with the geometry
+//! of its start, so at its end the palm has turned into the disc by the second order of the
+//! step, and the disc lags its touching position by that much. Verification runs at twice the
+//! step; the difference (about three times the error) bounds it. The force drive's rest is not
+//! located inside its step: at 30 deg/s 0.1 deg is within 2e-5 of 0.01 deg, but a slow push
+//! (0.5 deg/s) lands 0.1-0.4 % off at 0.1 deg and is often flagged, hence its finer default (its
+//! runs take 0.9-1.6 ms, 1.3-2.5 ms verified).
 //!
 //! # The disc free to roll
 //!
@@ -67,15 +95,15 @@
 //! by the weight and the push, holds first; the palm contact reaches its cone where
 //! tan(theta/2) = mu_p; and the disc locks up where tan(theta/2) = min(mu_p, mu_g (1 + m g / N))
 //! (the min-norm rolling formulation), i.e. at r / min(mu_g, mu_p) with the motion drive's
-//! unbounded push. Measured at the defaults (motion drive, 30 deg/s, step 0.01 deg):
+//! unbounded push. Measured at the defaults (motion drive, 30 deg/s, step 0.1 deg):
 //!
 //! ```text
 //! mu_g / mu_p   slides (translational)     rolls
-//! 0.15 / 0.15   66.673 mm                  66.673 mm, rolls (ground sticks) all the way
-//! 0.25 ... 0.45 r/mu + <= 0.06 %           the same, rolls all the way
-//! 0.2 / 0.6     25.869 mm = r cot((a_g + a_p)/2)   50.022 mm: rolls while 0.6 N_B <= 0.2 N_A,
+//! 0.15 / 0.15   66.665 mm                  66.665 mm, rolls (ground sticks) all the way
+//! 0.25 ... 0.45 r/mu - <= 1e-5             the same, rolls all the way
+//! 0.2 / 0.6     25.866 mm = r cot((a_g + a_p)/2)   49.999 mm: rolls while 0.6 N_B <= 0.2 N_A,
 //!                                                  then slips on the ground, spinning
-//! 0.6 / 0.2     25.869 mm                  50.022 mm, rolls all the way
+//! 0.6 / 0.2     25.866 mm                  49.999 mm, rolls all the way
 //! ```
 //!
 //! So with equal frictions rolling changes nothing (the disc rolls instead of sliding, which is
@@ -86,10 +114,41 @@
 //! of the min-norm rolling answer (25.006 / 47.326 / 50.036 mm against 25.000 / 47.296 /
 //! 50.000 mm for 0.4/0.4, 0.2/0.6, 0.6/0.2).
 //!
+//! # Against the regularised model in the stiff limit
+//!
+//! With the motion drive both methods lock up at r/mu (`nonsmooth_and_stiff_regularised_agree`).
+//! With the force drive at mu = 0.15 and 30 deg/s the nonsmooth jam, 68.810 mm (68.8104 at steps
+//! 0.01, 0.003 and 0.001 deg), lay 1.5-1.7 % beyond RADAU5's at its default contact (67.81 mm).
+//! Neither a stiffer contact nor a lower stiction velocity closes that gap; the jam reading does.
+//! The regularised model reads the jam when the disc's speed falls below half the geometric
+//! speed, and with a force-limited palm that is while the disc, let go by the stalled palm, still
+//! coasts on the ground (`palm_lost_disc`). Where it stops, its stiction reading `x_stiction_mm`,
+//! converges to the nonsmooth jam as the contact stiffens (RADAU5, rtol 1e-6 unless noted):
+//!
+//! ```text
+//! stiffness (N/mm^2.2)       1e5 (59 um)  1e6      1e7      1e8 (rtol 1e-8)  7.96e8 (1 um, 1e-8)  1e9 (1e-8)
+//! jam reading x_jam (mm)     67.811       68.039   68.125   68.157           68.159               68.168
+//! where it stops (mm)        68.466       68.681   68.762   68.792           68.794               68.802
+//! stops vs nonsmooth         -0.50 %      -0.19 %  -0.07 %  -0.03 %          -0.02 %              -0.01 %
+//! ```
+//!
+//! The stiction velocity does not matter here (x_jam 67.8111 mm at V_s = 0.1, 0.01 and 0.001
+//! mm/s). The reading's shortfall is the rest of the coast, up to 0.6 mm (0.9 %) at 30 deg/s and
+//! 2.9 mm (3.9 %) at 90 deg/s; at mu 0.3-0.45 and 10-30 deg/s it is 0.06-0.24 %. With a 1 um
+//! contact at rtol 1e-8 the place where the regularised disc stops agrees with the nonsmooth jam
+//! within 0.03 % at mu 0.15 (10, 30, 90 deg/s) and mu 0.3 (90 deg/s), pinned by
+//! `force_drive_agrees_with_the_stiff_regularised_disc_where_it_stops`; elsewhere the
+//! regularised disc creeps above its stiction velocity and gives no such reading. So the methods
+//! agree in the stiff limit; the force drive's regularised x_jam is a reading made while the
+//! disc still moves, and the nonsmooth method's (the disc at rest) is the one to design to.
+//!
 //! # Known artefacts
 //!
-//! * The geometry (n, t, s_B, the gaps) is taken at the start of each step: the jam lands up to
-//!   a step's palm turn off, so x_jam converges to r/mu in the first order of the step.
+//! * The geometry (n, t, s_B, the gaps) is taken at the start of each step: the palm ends each
+//!   step inside the disc by the second order of the step (2e-6 mm at 0.1 deg and mu = 0.2), and
+//!   the next step gives that back. A palm at its force limit may therefore turn back by the
+//!   speed that closes that penetration over a step (with only round-off allowed, a disc coasting
+//!   into the wedge at 30 deg/s and 0.05-0.5 deg steps had no consistent mode: the run failed).
 //! * Contact is decided per step: a disc knocked ahead flies for whole steps; the palm catches
 //!   it at a step end.
 //! * Coulomb's law with a rigid body can have several consistent answers (Painleve); the first
@@ -183,7 +242,25 @@ pub(crate) struct Run {
     pub series: Vec<SeriesRow>,
     /// Simulated time in s.
     pub simulated_s: f64,
+    /// How finely the jam is located in mm: the lock-up's last bisection bracket, or the disc's
+    /// travel in its last moving step before it came to rest (0 without a jam).
+    pub jam_resolution_mm: f64,
 }
+
+/// The start of the last step solved, with the velocities it gave: a lock-up is located inside
+/// it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct LastStep {
+    q: [f64; 3],
+    v: [f64; 3],
+    theta: f64,
+    theta_dot: f64,
+    t: f64,
+}
+
+/// Halvings of the step in which the palm locks up: the lock-up is located to 2^-16 of a step
+/// (7e-6 mm at mu = 0.15 and the default 0.1 deg), far below the method's own error.
+const LOCATE_HALVINGS: u32 = 16;
 
 impl std::str::FromStr for DiscMotion {
     type Err = String;
@@ -200,7 +277,7 @@ impl std::str::FromStr for DiscMotion {
 
 /// The step length in s for a palm turn of `step_deg` at omega.
 pub fn step_s(params: &DynamicsParams) -> f64 {
-    params.nonsmooth_step_deg.to_radians() / params.omega_deg_s.to_radians()
+    params.nonsmooth_step_deg().to_radians() / params.omega_deg_s.to_radians()
 }
 
 /// The constants of one simulation, in kg, mm, s.
@@ -340,6 +417,7 @@ pub(crate) fn run(scene: &SceneParams, params: &DynamicsParams, series_dt_s: Opt
         lift_off_deg: None,
         series: Vec::new(),
         simulated_s: 0.0,
+        jam_resolution_mm: 0.0,
     };
     let series_dt = series_dt_s.filter(|d| *d > 0.0 && d.is_finite());
     let mut next_sample = 0.0;
@@ -347,6 +425,9 @@ pub(crate) fn run(scene: &SceneParams, params: &DynamicsParams, series_dt_s: Opt
     let mut last_push = 0.0;
     let mut pushed = false;
     let mut rest: Option<End> = None;
+    let mut last: Option<LastStep> = None;
+    // The disc's travel in the previous step in mm.
+    let mut travel = 0.0;
     while theta > 0.0 {
         if let Some(End::AtRest { t: t_jam, .. }) = rest
             && t >= t_jam + params.after_jam_s
@@ -363,14 +444,21 @@ pub(crate) fn run(scene: &SceneParams, params: &DynamicsParams, series_dt_s: Opt
             break;
         }
         let Some(sol) = built.problem.solve(modes) else {
-            out.end = match params.drive {
-                Drive::Motion => End::LockUp(LockUp {
+            out.end = match (params.drive, last) {
+                (Drive::Motion, Some(last)) => {
+                    let (lock, resolution, probes) = locate_lock_up(&st, &last, modes, last_push);
+                    out.mode_solves += probes;
+                    out.jam_resolution_mm = resolution;
+                    End::LockUp(lock)
+                }
+                // Locked at the start: the disc is where it started.
+                (Drive::Motion, None) => End::LockUp(LockUp {
                     t_s: t,
                     theta_deg: theta.to_degrees(),
                     x_mm: q[0],
                     push_n: last_push,
                 }),
-                Drive::Force => End::NoSolution { t },
+                (Drive::Force, _) => End::NoSolution { t },
             };
             break;
         };
@@ -423,10 +511,20 @@ pub(crate) fn run(scene: &SceneParams, params: &DynamicsParams, series_dt_s: Opt
             v.iter().all(|x| x.abs() <= REST_MM_S) && sol.theta_dot.abs() <= 1e-6 * st.omega;
         if rest.is_none() && drive != DriveMode::Runs && at_rest {
             rest = Some(End::AtRest { t, theta, x: q[0] });
+            // It came to rest during the previous step: somewhere within that step's travel.
+            out.jam_resolution_mm = travel;
         }
         if v[0] != 0.0 {
             out.moved = true;
         }
+        last = Some(LastStep {
+            q,
+            v,
+            theta,
+            theta_dot: sol.theta_dot,
+            t,
+        });
+        travel = dt * v[0].abs();
         for k in 0..3 {
             q[k] += dt * v[k];
         }
@@ -439,6 +537,42 @@ pub(crate) fn run(scene: &SceneParams, params: &DynamicsParams, series_dt_s: Opt
     }
     out.simulated_s = t;
     out
+}
+
+/// Locates a lock-up inside the last step solved by bisection: the state moves along that step
+/// (q + s dt v, theta + s dt theta_dot) and the step problem from there either has a solution
+/// (the palm can still turn) or not. Returns the lock-up at the first state found locked, the
+/// bracket's width in mm and the number of step problems solved.
+fn locate_lock_up(st: &Stepper, last: &LastStep, modes: Modes, push_n: f64) -> (LockUp, f64, u64) {
+    let at = |s: f64| {
+        let h = s * st.dt;
+        let q = [
+            last.q[0] + h * last.v[0],
+            last.q[1] + h * last.v[1],
+            last.q[2] + h * last.v[2],
+        ];
+        (q, last.theta + h * last.theta_dot, last.t + h)
+    };
+    // s = 0 is the last step's start (it turned); s = 1 its end (it did not).
+    let (mut lo, mut hi) = (0.0, 1.0);
+    for _ in 0..LOCATE_HALVINGS {
+        let mid = 0.5 * (lo + hi);
+        let (q, theta, _) = at(mid);
+        if st.build(&q, &last.v, theta).problem.solve(modes).is_some() {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let (q, theta, t) = at(hi);
+    let lock = LockUp {
+        t_s: t,
+        theta_deg: theta.to_degrees(),
+        x_mm: q[0],
+        push_n,
+    };
+    let resolution = (hi - lo) * st.dt * last.v[0].abs();
+    (lock, resolution, u64::from(LOCATE_HALVINGS))
 }
 
 #[cfg(test)]

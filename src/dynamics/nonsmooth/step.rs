@@ -208,10 +208,19 @@ impl StepProblem {
         }
         let ok = match drive {
             DriveMode::Runs => p[2] <= self.push_limit + scale_p,
-            // 1e-6 omega: a gap of round-off size closed over a step turns the palm back by far
-            // less; without the margin a disc at rest at the limit had no consistent mode.
+            // The palm may turn back by what gives back its penetration from the step before
+            // (each step closes the gap with the geometry of its start, so the palm ends a step
+            // up to the second order of the step inside the disc: 2e-6 mm at 0.1 deg), and by
+            // 1e-6 omega for round-off: without it a disc at rest at the limit had no consistent
+            // mode.
             DriveMode::AtLimit => {
-                theta_dot <= 1e-6 * self.omega && theta_dot >= -self.omega * (1.0 + 1e-6)
+                let give_back = if self.c[2] > 0.0 {
+                    (-self.gap_rate[1]).max(0.0) / self.c[2]
+                } else {
+                    0.0
+                };
+                theta_dot <= 1e-6 * self.omega + give_back * (1.0 + 1e-6)
+                    && theta_dot >= -self.omega * (1.0 + 1e-6)
             }
             DriveMode::Holds => p[2] >= self.push_limit - scale_p,
             DriveMode::Stalls => p[2] >= -scale_p && p[2] <= self.push_limit + scale_p,

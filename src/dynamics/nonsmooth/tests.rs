@@ -214,17 +214,20 @@ fn the_step_is_a_fixed_point_of_clarabels_tresca_problem() {
     assert!(modes_seen.len() >= 4, "{modes_seen:?}");
 }
 
-/// The lock-up of a motion-driven palm comes within one step of palm turn after the wedge
-/// tan(theta/2) = mu, for several frictions and steps: x_jam - r/mu lies in [0, the distance the
-/// touching position moves in one step].
+/// The lock-up of a motion-driven palm is located inside the step where it happens, at the wedge
+/// tan(theta/2) = mu: its angle lies within a 1e-4 step past the wedge, and x_jam within 1 % of
+/// a step's travel from r/mu, for several frictions and steps. (Read at step ends, before the
+/// lock-up was located, it lay anywhere in [0, one step] past r/mu.) x_jam may lie a little short
+/// of r/mu: each step closes the palm's gap with the geometry of its start, so at its end the palm
+/// has turned into the disc by the second order of the step (4e-5 of r/mu at 0.1 deg).
 #[test]
-fn the_lock_up_lies_within_a_step_past_the_wedge() {
+fn the_lock_up_is_located_at_the_wedge_inside_its_step() {
     for mu in [0.15, 0.3, 0.45] {
         for step_deg in [0.1, 0.03, 0.01, 0.003] {
             let scene = SceneParams::default().with_mu(mu);
             let params = DynamicsParams {
                 method: crate::dynamics::Method::Nonsmooth,
-                nonsmooth_step_deg: step_deg,
+                nonsmooth_step_deg: Some(step_deg),
                 ..DynamicsParams::default()
             };
             let run = run(&scene, &params, None);
@@ -235,11 +238,23 @@ fn the_lock_up_lies_within_a_step_past_the_wedge() {
             let x = |t: f64| scene.radius_mm / (0.5 * t).tan();
             let one_step = x(wedge - step_deg.to_radians()) - x(wedge);
             let off = l.x_mm - scene.radius_mm / mu;
+            let past = wedge - l.theta_deg.to_radians();
+            eprintln!(
+                "mu {mu}, step {step_deg}: x_jam - r/mu = {off:.3e} mm ({:.2e} steps), \
+                 {:.2e} steps past the wedge, resolution {:.1e} mm",
+                off / one_step,
+                past / step_deg.to_radians(),
+                run.jam_resolution_mm
+            );
             assert!(
-                off >= -1e-9 && off <= one_step + 1e-9,
+                off.abs() <= 0.01 * one_step,
                 "mu {mu}, step {step_deg}: x_jam - r/mu = {off:.3e} mm, one step {one_step:.3e}"
             );
-            assert!(l.theta_deg.to_radians() <= wedge + 1e-12);
+            assert!(
+                past >= -1e-12 && past <= 1e-4 * step_deg.to_radians(),
+                "mu {mu}, step {step_deg}: {past:.3e} rad past the wedge"
+            );
+            assert!(run.jam_resolution_mm <= 1e-4 * one_step);
         }
     }
 }
