@@ -64,7 +64,9 @@
 //! registration point; its scene `charts/<name>.toml` is built in by `build.rs`.
 //!
 //! Outcomes are data ([`model::JamStatus`], with typed reasons in each model's solution);
-//! [`error::Error`] is only for misuse.
+//! [`error::Error`] is only for misuse. A push starting above 90 deg is outside every model
+//! ([`models::OutsideModel::PalmLiftsDisc`]): the palm's push points upwards there and can lift
+//! the disc, while every model keeps it on the ground.
 //!
 //! ## Corrections to the paper
 //!

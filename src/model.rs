@@ -26,7 +26,9 @@ pub struct SceneParams {
     pub force_n: f64,
     /// Gravitational acceleration g in m/s^2 (default: 9.806, the paper's 9806 mm/s^2).
     pub gravity_m_s2: f64,
-    /// Palm angle where the push starts, in degrees, in (0, 180) (default: 90).
+    /// Palm angle where the push starts, in degrees, in (0, 180) (default: 90). Above 90 deg
+    /// the palm's push points upwards and every model answers `outside_model` through
+    /// [`crate::models::solve`].
     pub start_angle_deg: f64,
     /// Length of the palm bar in mm (default: 150, the paper's Adams bar). The contact B lies
     /// x mm from the hinge, so a jam beyond the palm's end is never reached.

@@ -24,8 +24,10 @@
 //! A model that does not represent a scene the others can answer says so in its own result,
 //! never by refusing the whole command: [`JamStatus::OutsideModel`] with a typed
 //! [`OutsideModel`] reason (the dynamics need a mass: a weightless disc has no equations of
-//! motion, while the statics and the min-norm model are defined for it). `Err` is left for
-//! misuse: parameters that no model accepts.
+//! motion, while the statics and the min-norm model are defined for it). A push starting above
+//! 90 deg is outside every model ([`OutsideModel::PalmLiftsDisc`]): the palm's push points
+//! upwards there and can lift the disc, and every model keeps it on the ground. `Err` is left
+//! for misuse: parameters that no model accepts.
 
 use std::time::Instant;
 
@@ -137,7 +139,20 @@ pub enum OutsideModel {
         /// The scene's mass in kg.
         mass_kg: f64,
     },
+    /// The push starts above 90 deg, where the palm's face leans over the disc and its normal
+    /// push n = (sin theta, -cos theta) points upwards: it can lift the disc off the ground.
+    /// Every model keeps the disc on the ground (the closed form's R_n = m g + F cos(theta -
+    /// alpha_p) and the min-norm program's ground contact assume it; the simulation lifts the
+    /// disc at once at 120 deg with mu = 1), so none answers: statics and min-norm used to jam
+    /// at 91.99 deg for `--mu 1 --start-angle 120`, a disc the palm had already lifted.
+    PalmLiftsDisc {
+        /// The scene's start angle in deg.
+        start_angle_deg: f64,
+    },
 }
+
+/// Largest start angle any model represents, in deg: above it the palm's push points upwards.
+pub const MAX_START_ANGLE_DEG: f64 = 90.0;
 
 impl std::fmt::Display for OutsideModel {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -146,6 +161,12 @@ impl std::fmt::Display for OutsideModel {
                 f,
                 "the simulation needs a disc with mass (m = {mass_kg} kg): a weightless disc has \
                  no equations of motion"
+            ),
+            OutsideModel::PalmLiftsDisc { start_angle_deg } => write!(
+                f,
+                "the push starts at {start_angle_deg} deg, above 90 deg: the palm's face leans \
+                 over the disc and its push points upwards, so it can lift the disc off the \
+                 ground, and every model here keeps the disc on the ground"
             ),
         }
     }
@@ -202,7 +223,22 @@ pub fn solve(spec: &ModelSpec, scene: &SceneParams) -> Result<Solution> {
     scene.validate()?;
     spec.validate()?;
     let t0 = Instant::now();
+    let outside = if scene.start_angle_deg > MAX_START_ANGLE_DEG {
+        Some(OutsideModel::PalmLiftsDisc {
+            start_angle_deg: scene.start_angle_deg,
+        })
+    } else if spec.kind() == ModelKind::Dynamics && scene.mass_kg <= 0.0 {
+        Some(OutsideModel::NeedsMass {
+            mass_kg: scene.mass_kg,
+        })
+    } else {
+        None
+    };
     let (status, theta_jam_deg, x_jam_mm, detail) = match spec {
+        _ if outside.is_some() => {
+            let why = outside.expect("checked");
+            (JamStatus::OutsideModel, None, None, Detail::Outside(why))
+        }
         ModelSpec::Statics => {
             let s = statics::solve(scene);
             (s.status, s.theta_jam_deg, s.x_jam_mm, Detail::Statics(s))
@@ -215,16 +251,9 @@ pub fn solve(spec: &ModelSpec, scene: &SceneParams) -> Result<Solution> {
             params,
             series_dt_s,
         } => {
-            if scene.mass_kg <= 0.0 {
-                let why = OutsideModel::NeedsMass {
-                    mass_kg: scene.mass_kg,
-                };
-                (JamStatus::OutsideModel, None, None, Detail::Outside(why))
-            } else {
-                let s = dynamics::simulate(scene, params, *series_dt_s)?;
-                let (st, t, x) = (s.status, s.theta_jam_deg, s.x_jam_mm);
-                (st, t, x, Detail::Dynamics(Box::new(s)))
-            }
+            let s = dynamics::simulate(scene, params, *series_dt_s)?;
+            let (st, t, x) = (s.status, s.theta_jam_deg, s.x_jam_mm);
+            (st, t, x, Detail::Dynamics(Box::new(s)))
         }
     };
     Ok(Solution {
@@ -252,6 +281,41 @@ mod tests {
             let x = s.x_jam_mm.unwrap();
             // Statics and min-norm: 24.355 mm; the motion-driven simulation: near r/mu = 25.
             assert!((24.3..25.1).contains(&x), "{kind}: {x}");
+        }
+    }
+
+    /// Regression: above 90 deg only the dynamics answered `outside_model` (the palm lifts the
+    /// disc); the statics and the min-norm model still jammed, e.g. at 91.99 deg for mu = 1 and
+    /// a start at 120 deg, a disc the palm had already lifted. Every model now answers
+    /// `outside_model` with the one reason, and 90 deg itself is still answered.
+    #[test]
+    fn start_angle_above_90_is_outside_every_model() {
+        for start_angle_deg in [90.001, 120.0, 179.999] {
+            let scene = SceneParams {
+                start_angle_deg,
+                ..SceneParams::default().with_mu(1.0)
+            };
+            for kind in ModelKind::ALL {
+                let spec = kind.with(&MinNormSettings::default(), &DynamicsParams::default());
+                let s = solve(&spec, &scene).unwrap();
+                assert_eq!(
+                    s.status,
+                    JamStatus::OutsideModel,
+                    "{kind} {start_angle_deg}"
+                );
+                assert_eq!(
+                    s.detail,
+                    Detail::Outside(OutsideModel::PalmLiftsDisc { start_angle_deg }),
+                    "{kind}"
+                );
+                assert_eq!((s.theta_jam_deg, s.x_jam_mm), (None, None), "{kind}");
+            }
+        }
+        let at_90 = SceneParams::default();
+        for kind in ModelKind::ALL {
+            let spec = kind.with(&MinNormSettings::default(), &DynamicsParams::default());
+            let s = solve(&spec, &at_90).unwrap();
+            assert_eq!(s.status, JamStatus::Jams, "{kind} at 90 deg");
         }
     }
 

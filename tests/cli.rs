@@ -410,3 +410,45 @@ fn all_models_come_with_guidance_and_a_flag_past_two_percent() {
         "{text}"
     );
 }
+
+/// Regression: `solve --model all --mu 1 --start-angle 120` jammed at 91.99 deg in the statics
+/// and the min-norm model (only the dynamics said `outside_model`), for a disc the palm had
+/// already lifted. Every model now answers `outside_model` with the reason `palm_lifts_disc`, the
+/// text says what it means and what to do, and the command still succeeds.
+#[test]
+fn start_angle_above_90_is_outside_every_model() {
+    let args = [
+        "solve",
+        "--model",
+        "all",
+        "--mu",
+        "1",
+        "--start-angle",
+        "120",
+    ];
+    let o = jamchart(repo(), &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert_eq!(out.matches(": outside_model").count(), 3, "{out}");
+    assert!(out.contains("above 90 deg"), "{out}");
+    assert!(
+        out.contains("advice: start the push at 90 deg or below"),
+        "{out}"
+    );
+    assert!(out.contains("outside every model"), "{out}");
+    let mut with_json = args.to_vec();
+    with_json.extend(["--format", "json"]);
+    let v = json(&jamchart(repo(), &with_json));
+    let results = v["results"].as_array().unwrap();
+    assert_eq!(results.len(), 3);
+    for r in results {
+        assert_eq!(r["status"], "outside_model", "{r}");
+        assert!(
+            r["theta_jam_deg"].is_null() && r["x_jam_mm"].is_null(),
+            "{r}"
+        );
+        let why = &r["outside_model"];
+        assert_eq!(why["reason"], "palm_lifts_disc", "{r}");
+        assert_eq!(why["start_angle_deg"], 120.0, "{r}");
+    }
+}

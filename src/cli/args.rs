@@ -45,6 +45,9 @@ pub struct SceneArgs {
     #[arg(long, value_name = "M/S^2", allow_negative_numbers = true, value_parser = parse_f64)]
     pub gravity: Option<f64>,
     /// Palm angle where the push starts, in deg, in (0, 180) [default: 90].
+    ///
+    /// Above 90 deg every model answers outside_model: the palm's push points upwards there and
+    /// can lift the disc.
     #[arg(long, value_name = "DEG", allow_negative_numbers = true, value_parser = parse_f64)]
     pub start_angle: Option<f64>,
     /// Palm length in mm; a jam beyond its end is never reached [default: 150].

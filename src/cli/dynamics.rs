@@ -204,6 +204,10 @@ impl DynamicsArgs {
     }
 }
 
+/// What to do when the palm lifts the disc (a start above 90 deg, in every model).
+pub const LIFTS_DISC_ADVICE: &str = "start the push at 90 deg or below (--start-angle): above it \
+     the palm's push points upwards and lifts the disc, which no model here represents";
+
 /// The flag that sets a `[dynamics]` key, for error messages.
 pub fn flag_for_key(key: &str) -> Option<&'static str> {
     Some(match key {
@@ -462,11 +466,7 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
                 "tighten --rtol (now {:e}) and compare the answers",
                 rtol * 10.0
             ),
-            CrossCheck::LiftsOff { .. } => {
-                "start the push at 90 deg or below (--start-angle): above it the palm lifts the \
-                 disc"
-                    .to_string()
-            }
+            CrossCheck::LiftsOff { .. } => LIFTS_DISC_ADVICE.to_string(),
             CrossCheck::KnockedAhead { x_rigid_mm, .. } => format!(
                 "design to the rigid contact's {x_rigid_mm:.3} mm (--method nonsmooth), measure \
                  the real contact's --stiffness and --damping, or close the palm slower \

@@ -4,6 +4,7 @@ use std::fmt::Write;
 
 use crate::config::Config;
 use crate::dynamics::Drive;
+use crate::model::JamStatus;
 use crate::models::{Detail, ModelKind, Solution};
 
 /// Models whose x_jam differ by more than this are flagged: 2 % of x_jam is about the spread of
@@ -52,8 +53,12 @@ pub fn guidance<'a>(
         );
     }
     let answered: Vec<(ModelKind, f64)> = results
+        .clone()
         .filter_map(|r| r.x_jam_mm.map(|x| (r.model, x)))
         .collect();
+    if results.clone().all(|r| r.status == JamStatus::OutsideModel) {
+        s.push_str("  none: the scene lies outside every model (each one's reason is above)\n");
+    }
     // Against the first answer (the closed form, the oracle, in `--model all`).
     if let Some(((a, xa), rest)) = answered.split_first() {
         for (b, xb) in rest {

@@ -248,6 +248,9 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
             Detail::Dynamics(d) => dynamics::render_details(&mut s, d, config, series),
             Detail::Outside(why) => {
                 let _ = writeln!(s, "  not run: {why}");
+                if let OutsideModel::PalmLiftsDisc { .. } = why {
+                    let _ = writeln!(s, "  advice: {}", dynamics::LIFTS_DISC_ADVICE);
+                }
             }
         }
         if r.elapsed_s < 1e-3 {
