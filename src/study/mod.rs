@@ -256,6 +256,15 @@ pub fn reference(scene: &SceneParams, drive: Option<Drive>) -> Reference {
         ),
         Some(Drive::Force) | None => (ReferenceKind::ClosedForm, *scene),
     };
+    // Above 90 deg the palm lifts the disc: outside every model, the reference's too.
+    if scene.start_angle_deg > crate::models::MAX_START_ANGLE_DEG {
+        return Reference {
+            kind,
+            status: JamStatus::OutsideModel,
+            theta_jam_deg: None,
+            x_jam_mm: None,
+        };
+    }
     let s = statics::solve(&posed);
     Reference {
         kind,

@@ -16,7 +16,8 @@
 //!   stops it too, within the allowance of x_ref (a jam 0.3 mm after a start 0.5 deg above the
 //!   wedge and a jam at the start are the same answer); where the reference has no jam point,
 //!   the same status, except that never_jams and beyond_reach agree (both lose the disc off
-//!   the palm's end; a simulation cannot tell them apart);
+//!   the palm's end; a simulation cannot tell them apart); where the scene is outside every
+//!   model (a push starting above 90 deg lifts the disc), `outside_model` is that answer;
 //! * `inaccurate_flagged`: the model said its answer is not to be trusted (a failed
 //!   cross-check or error estimate);
 //! * `failed_named`: the model gave no answer and said why (the integrator gave up, the scene
@@ -477,6 +478,8 @@ fn answer(solve: SolveFn, base: &Config, c: &Case, m: &Source) -> Result<Stabili
             }
         }
         Some(Why::CrossCheck { .. }) => Class::InaccurateFlagged,
+        // Outside every model, the reference's too (a start above 90 deg): the same answer.
+        Some(Why::Outside { .. }) if r.status == JamStatus::OutsideModel => Class::Correct,
         Some(Why::IntegratorGaveUp { .. } | Why::Outside { .. }) => Class::FailedNamed,
     };
     Ok(StabilityRow {
