@@ -49,7 +49,8 @@ fn table_csv_header_is_the_json_keys() {
 }
 
 /// The chart data names its columns as JSON does: a sweep's CSV and a map's long CSV use the
-/// quantities' JSON keys, and every map CSV column is a key of the map's JSON.
+/// quantities' JSON keys; a map's JSON lists the CSV's columns and summarises each quantity
+/// under its column name, and names its iso-lines the same way.
 #[test]
 fn chart_csv_columns_are_json_names() {
     let dir = tempfile::tempdir().unwrap();
@@ -75,10 +76,26 @@ fn chart_csv_columns_are_json_names() {
             .unwrap();
     let axes = [&doc["x_axis"]["param"], &doc["y_axis"]["param"]];
     assert_eq!(map[..2], axes.map(|a| a.as_str().unwrap().to_string()));
+    let cells = &doc["cells"];
+    assert_eq!(cells["file"], "fig7c.csv");
+    let listed: Vec<&str> = cells["columns"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c.as_str().unwrap())
+        .collect();
+    assert_eq!(
+        listed, map,
+        "fig7c.json lists other columns than fig7c.csv has"
+    );
     for column in &map[2..] {
         assert!(
-            doc.get(column).is_some(),
-            "{column} is not a key of fig7c.json"
+            cells["summary"].get(column).is_some(),
+            "{column} is not summarised in fig7c.json"
+        );
+        assert!(
+            doc["iso_lines"].get(column).is_some(),
+            "fig7c.json has no iso-lines named {column}"
         );
         assert!(
             !column.is_empty()
