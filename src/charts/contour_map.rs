@@ -274,14 +274,14 @@ impl ContourMap {
                 "point": [x.as_str(), y.as_str()],
                 "x_jam_mm": lines(&mut self.x_jam_lines.iter().map(|(l, p)| (*l, p))),
                 "theta_jam_deg": lines(&mut self.theta_lines.iter().map(|(l, p)| (*l, p))),
-                "x_gap_to_rigid_limit_pct": lines(&mut self.settle_lines.iter().map(|p| (settle, p))),
+                "gap_to_x_rigid_pct": lines(&mut self.settle_lines.iter().map(|p| (settle, p))),
             },
             "cells": cells_json(&scene.name, &self.grid, x, y, &self.columns()),
         }))
     }
 
     /// The cells as long-format CSV: the axis values, x_jam_mm and, where computed,
-    /// theta_jam_deg and x_gap_to_rigid_limit_pct.
+    /// theta_jam_deg and gap_to_x_rigid_pct.
     pub fn cells(&self) -> DataFile {
         let (x, y) = (self.spec.x_axis.param, self.spec.y_axis.param);
         cells_csv(&self.grid, x, y, &self.columns())
@@ -304,7 +304,7 @@ impl ContourMap {
         columns.extend(
             self.gap_pct
                 .as_deref()
-                .map(|v| ("x_gap_to_rigid_limit_pct", Column::Dense(v))),
+                .map(|v| ("gap_to_x_rigid_pct", Column::Dense(v))),
         );
         columns
     }

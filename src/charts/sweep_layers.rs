@@ -34,8 +34,11 @@ pub enum SweepLayer {
     /// The closed-form statics curve.
     Statics,
     /// The F -> infinity limit (a palm driven by motion): theta = atan mu_g + atan mu_p,
-    /// x = r cot(theta/2), r/mu for equal frictions; labelled when constant along the sweep.
-    RigidLimit,
+    /// x = r cot(theta/2), r/mu for equal frictions (the statics' `theta_rigid_deg`,
+    /// `x_rigid_mm`); labelled when constant along the sweep. `rigid_limit` is read as `rigid`
+    /// (its name before).
+    #[serde(alias = "rigid_limit")]
+    Rigid,
     /// The paper's Table 1 (both models as printed), the mu = 0.30 erratum marked (mu sweeps).
     PaperTable1,
     /// The paper's Adams result x_jam = 25.58 mm at mu = 0.4 (mu sweeps).
@@ -54,7 +57,7 @@ pub enum SweepLayer {
 
 /// Checks that `layer` can be drawn on `spec`'s sweep.
 pub fn validate(layer: SweepLayer, spec: &SweepSpec) -> Result<()> {
-    let at_mu = !matches!(layer, SweepLayer::Statics | SweepLayer::RigidLimit);
+    let at_mu = !matches!(layer, SweepLayer::Statics | SweepLayer::Rigid);
     if at_mu && spec.axis.param != GridParam::Mu {
         return Err(Error::invalid(
             "chart.layers",
@@ -93,7 +96,7 @@ pub fn series(
             flat_names: Some(["x_jam", "θ_jam"]),
             callout: None,
         }],
-        SweepLayer::RigidLimit => {
+        SweepLayer::Rigid => {
             let points: Vec<SeriesPoint> = spec
                 .axis
                 .values()
@@ -104,7 +107,7 @@ pub fn series(
                 })
                 .collect();
             vec![Series {
-                layer: "rigid_limit",
+                layer: "rigid",
                 label: "F → ∞ limit (palm driven by motion): x = r/μ, θ = 2·atan μ".into(),
                 style: SeriesStyle::Line(LineKind::Dashed),
                 points,

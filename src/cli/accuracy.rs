@@ -246,7 +246,7 @@ fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapse
         "# Error against run time, against the physical reference\n\n\
          Each row answers \"where does it jam\" through the model port. `x error` is against the \
          physical reference of the scene as the row poses it (closed_form: the corrected Eq. 1 \
-         at F; rigid_limit: F -> infinity, r/mu for equal frictions, for the motion drive). \
+         at F; rigid: x_rigid, F -> infinity, r/mu for equal frictions, for the motion drive). \
          `integration error` is against the same regularised model at the converged tolerance \
          (column `converged by`). Where `x error` stops falling as the tolerance tightens is the \
          model's floor.\n\n",
@@ -395,7 +395,7 @@ fn floors(r: &AccuracyReport) -> String {
             .rows
             .iter()
             .find(|x| x.method == method)
-            .map_or(ReferenceKind::RigidLimit, |x| x.reference);
+            .map_or(ReferenceKind::Rigid, |x| x.reference);
         let contact = if method == "nonsmooth" {
             "rigid".to_string()
         } else {

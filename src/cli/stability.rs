@@ -115,7 +115,7 @@ fn markdown(r: &StabilityReport) -> String {
     let mut s = format!(
         "# Numerical stability on stiff and extreme cases\n\n\
          {} cases x {} methods in {:.1} s ({} threads). Each answer against the case's \
-         physical reference (closed_form at F; rigid_limit for the motion drive); x error \
+         physical reference (closed_form at F; rigid, x_rigid, for the motion drive); x error \
          within the allowance is correct.\n\n",
         r.cases.len(),
         r.methods.len(),
