@@ -23,14 +23,103 @@ impl Serialize for Dec {
 /// `v` as a plain decimal: [`SIGNIFICANT_DIGITS`] significant digits, no exponent, trailing
 /// zeros dropped, never `-0`; empty for NaN and infinities.
 pub fn plain(v: f64) -> String {
+    let mut out = Vec::with_capacity(24);
+    push_plain(&mut out, v);
+    String::from_utf8(out).expect("digits, sign and point are ASCII")
+}
+
+/// Appends [`plain`]`(v)` to `out` without allocating.
+///
+/// The digits are those of std's exact `format!("{v:.N}")` (N decimals for
+/// [`SIGNIFICANT_DIGITS`]), which costs an allocation and a big-number fallback per call: a map's
+/// long CSV has 10^5 to 10^6 numbers. No crate does fixed significant digits without an
+/// exponent: `ryu` and `dtoa` write the shortest round-trip digits only, and `lexical`'s
+/// digit limit rounds those shortest digits a second time. So: scale by 10^N (exact for
+/// N <= 22), round to an integer and write it with `itoa`; when the scaled value lies within
+/// 1e-6 of a rounding tie (the scaling's error is below 2e-8) or out of that range, fall back
+/// to std. A property test checks the two agree byte for byte.
+pub fn push_plain(out: &mut Vec<u8>, v: f64) {
     if !v.is_finite() {
-        return String::new();
+        return;
     }
     if v == 0.0 {
-        return "0".into();
+        out.push(b'0');
+        return;
     }
-    let magnitude = v.abs().log10().floor() as i32;
-    let decimals = (SIGNIFICANT_DIGITS - 1 - magnitude).max(0) as usize;
+    if !push_fast(out, v) {
+        out.extend_from_slice(plain_std(v).as_bytes());
+    }
+}
+
+/// Exact powers of ten as f64 (10^22 is the largest).
+const POW10: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
+/// [`push_plain`] by scaled integer rounding; false (nothing written) where it could differ
+/// from std's exact rounding.
+fn push_fast(out: &mut Vec<u8>, v: f64) -> bool {
+    let a = v.abs();
+    let decimals = decimals(a);
+    let Some(&scale) = POW10.get(decimals) else {
+        return false;
+    };
+    let scaled = a * scale;
+    // 2^53: above it an f64 has no fraction, and u64 holds the integer.
+    if scaled >= 9_007_199_254_740_992.0 {
+        if decimals > 0 || a >= 1.8e19 {
+            return false;
+        }
+        if v < 0.0 {
+            out.push(b'-');
+        }
+        out.extend_from_slice(itoa::Buffer::new().format(a as u64).as_bytes());
+        return true;
+    }
+    let floor = scaled.floor();
+    if ((scaled - floor) - 0.5).abs() < 1e-6 {
+        return false;
+    }
+    let q = scaled.round() as u64;
+    if q == 0 {
+        out.push(b'0');
+        return true;
+    }
+    if v < 0.0 {
+        out.push(b'-');
+    }
+    let mut digits = itoa::Buffer::new();
+    let d = digits.format(q).as_bytes();
+    if decimals == 0 {
+        out.extend_from_slice(d);
+        return true;
+    }
+    // Integer part, then the fraction padded with leading zeros, trailing zeros dropped.
+    let int_len = d.len().saturating_sub(decimals);
+    match int_len {
+        0 => out.push(b'0'),
+        n => out.extend_from_slice(&d[..n]),
+    }
+    let frac_digits = &d[int_len..];
+    let Some(last) = frac_digits.iter().rposition(|c| *c != b'0') else {
+        return true;
+    };
+    out.push(b'.');
+    out.extend(std::iter::repeat_n(b'0', decimals - frac_digits.len()));
+    out.extend_from_slice(&frac_digits[..=last]);
+    true
+}
+
+/// Decimals that leave [`SIGNIFICANT_DIGITS`] significant digits of `a` (> 0).
+fn decimals(a: f64) -> usize {
+    let magnitude = a.log10().floor() as i32;
+    (SIGNIFICANT_DIGITS - 1 - magnitude).max(0) as usize
+}
+
+/// [`plain`] through std's exact decimal formatting: the slow path, and the oracle of the tests.
+fn plain_std(v: f64) -> String {
+    let decimals = decimals(v.abs());
     let mut s = format!("{v:.decimals$}");
     if s.contains('.') {
         s.truncate(s.trim_end_matches('0').trim_end_matches('.').len());
@@ -72,6 +161,119 @@ fn write<R: Serialize>(
         w.serialize(r).expect("rows are flat records");
     }
     w.into_inner().expect("memory takes every byte")
+}
+
+/// A column of a map's cells, in index order `iy * nx + ix` (x fastest).
+#[derive(Debug, Clone, Copy)]
+pub enum Column<'a> {
+    /// A value in every cell.
+    Dense(&'a [f64]),
+    /// An empty field where a cell has no value.
+    Sparse(&'a [Option<f64>]),
+}
+
+impl Column<'_> {
+    fn push(&self, out: &mut Vec<u8>, i: usize) {
+        match self {
+            Column::Dense(v) => push_plain(out, v[i]),
+            Column::Sparse(v) => v[i].into_iter().for_each(|x| push_plain(out, x)),
+        }
+    }
+}
+
+/// Long-format CSV of a map's cells: one row per cell (x fastest), the x value, the y value,
+/// then each column; `header` names all of them.
+///
+/// A map has 10^5 cells and more, so every number goes through one reused buffer into the
+/// writer's `write_field` (no String per cell) and each axis value is formatted once.
+pub fn grid_cells(header: &[&str], xs: &[f64], ys: &[f64], columns: &[Column]) -> Vec<u8> {
+    let fmt = |v: &f64| {
+        let mut b = Vec::with_capacity(16);
+        push_plain(&mut b, *v);
+        b
+    };
+    let (xs, ys): (Vec<Vec<u8>>, Vec<Vec<u8>>) =
+        (xs.iter().map(fmt).collect(), ys.iter().map(fmt).collect());
+    // About 10 bytes per number: the output is allocated once.
+    let capacity = xs.len() * ys.len() * (2 + columns.len()) * 10;
+    let mut w = csv::WriterBuilder::new()
+        .has_headers(false)
+        .from_writer(Vec::with_capacity(capacity));
+    // Writing to memory fails only on a bug, not on input.
+    let ok = "memory takes every byte";
+    w.write_record(header).expect(ok);
+    let mut buf = Vec::with_capacity(32);
+    for (iy, y) in ys.iter().enumerate() {
+        for (ix, x) in xs.iter().enumerate() {
+            let i = iy * xs.len() + ix;
+            w.write_field(x).expect(ok);
+            w.write_field(y).expect(ok);
+            for c in columns {
+                buf.clear();
+                c.push(&mut buf, i);
+                w.write_field(&buf).expect(ok);
+            }
+            w.write_record(None::<&[u8]>).expect(ok);
+        }
+    }
+    w.into_inner().expect(ok)
+}
+
+/// What a map's JSON says about its long CSV ([`grid_cells`]): the file, the grid's size, the
+/// columns and, per quantity column, its least and greatest value and how many cells have one.
+pub fn cells_summary(
+    file: &str,
+    header: &[&str],
+    (nx, ny): (usize, usize),
+    columns: &[Column],
+) -> serde_json::Value {
+    let summary: serde_json::Map<String, serde_json::Value> = header[2..]
+        .iter()
+        .zip(columns)
+        .map(|(name, c)| {
+            let values: Vec<f64> = match c {
+                Column::Dense(v) => v.iter().copied().filter(|x| x.is_finite()).collect(),
+                Column::Sparse(v) => v
+                    .iter()
+                    .flatten()
+                    .copied()
+                    .filter(|x| x.is_finite())
+                    .collect(),
+            };
+            let min = values.iter().copied().reduce(f64::min);
+            let max = values.iter().copied().reduce(f64::max);
+            let s = serde_json::json!({
+                "min": min.map(Num), "max": max.map(Num), "cells_with_value": values.len(),
+            });
+            (name.to_string(), s)
+        })
+        .collect();
+    serde_json::json!({
+        "file": file, "nx": nx, "ny": ny,
+        "order": "one row per cell, x fastest",
+        "columns": header, "summary": summary,
+    })
+}
+
+/// A number for JSON with the digits of [`plain`]: rounded to [`SIGNIFICANT_DIGITS`], so that
+/// serde_json's shortest form prints `24.35455`, not `24.354551362801473`; null for NaN and
+/// infinities, `0` for `-0`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Num(pub f64);
+
+impl Serialize for Num {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match plain(self.0).parse::<f64>() {
+            // A plain decimal of 7 digits parses to the f64 whose shortest form it is.
+            Ok(v) if self.0.is_finite() => s.serialize_f64(v + 0.0),
+            _ => s.serialize_none(),
+        }
+    }
+}
+
+/// Numbers as [`Num`]s, for a JSON array.
+pub fn nums(v: impl IntoIterator<Item = f64>) -> Vec<Num> {
+    v.into_iter().map(Num).collect()
 }
 
 #[cfg(test)]
@@ -118,5 +320,101 @@ mod tests {
         );
         let text = String::from_utf8(to_csv_with_header(&["mu", "x"], [[Dec(0.1), Dec(-0.0)]]));
         assert_eq!(text.unwrap(), "mu,x\n0.1,0\n");
+    }
+
+    /// The fast path writes exactly std's digits: random values over 40 decades, values on
+    /// and next to rounding ties, whole numbers and the limits of each branch.
+    #[test]
+    fn fast_digits_are_std_digits() {
+        use proptest::prelude::*;
+        let check = |v: f64| {
+            let mut fast = Vec::new();
+            push_plain(&mut fast, v);
+            let fast = String::from_utf8(fast).unwrap();
+            let want = if v.is_finite() && v != 0.0 {
+                plain_std(v)
+            } else {
+                plain(v)
+            };
+            assert_eq!(fast, want, "{v:e}");
+        };
+        let config = proptest::test_runner::Config {
+            cases: 20_000,
+            ..Default::default()
+        };
+        let mut runner = proptest::test_runner::TestRunner::new_with_rng(
+            config,
+            proptest::test_runner::TestRng::deterministic_rng(Default::default()),
+        );
+        let slow = std::cell::Cell::new(0);
+        let values = (1.0f64..10.0, -20i32..20, any::<bool>());
+        runner
+            .run(&values, |(m, e, neg)| {
+                let v = m * 10f64.powi(e) * if neg { -1.0 } else { 1.0 };
+                check(v);
+                if (-15..=15).contains(&e) {
+                    slow.set(slow.get() + usize::from(!push_fast(&mut Vec::new(), v)));
+                }
+                check(v.round());
+                check(f64::from_bits(v.to_bits() + 1));
+                Ok(())
+            })
+            .unwrap();
+        // Between 1e-15 and 1e16 the fast path is the common one: std's path takes the exact
+        // ties, rare but for values above about 1e13, whose ulp of 1/512 or more lands on x.5.
+        assert!(slow.get() <= 200, "{} of 20000 took std's path", slow.get());
+        for v in [
+            0.12345675,
+            1.2345675,
+            2.5,
+            0.5,
+            1234567.5,
+            9999999.5,
+            0.99999995,
+            999999.95,
+            1e-20,
+            1e-22,
+            1e-23,
+            1e-300,
+            5e-324,
+            9.007199254740992e15,
+            1.8e19,
+            3e19,
+            1e300,
+            f64::MAX,
+            f64::MIN_POSITIVE,
+            -0.0,
+            0.0,
+            f64::NAN,
+            f64::INFINITY,
+            100.0,
+            0.001,
+        ] {
+            check(v);
+            check(-v);
+        }
+    }
+
+    #[test]
+    fn grid_cells_write_one_row_per_cell_x_fastest() {
+        let text = grid_cells(
+            &["mu", "theta_deg", "margin_n", "x_jam_mm"],
+            &[0.1, 0.2],
+            &[10.0],
+            &[
+                Column::Dense(&[-0.0, 1.0 / 3.0]),
+                Column::Sparse(&[None, Some(24.354551362801473)]),
+            ],
+        );
+        assert_eq!(
+            String::from_utf8(text).unwrap(),
+            "mu,theta_deg,margin_n,x_jam_mm\n0.1,10,0,\n0.2,10,0.3333333,24.35455\n"
+        );
+    }
+
+    #[test]
+    fn json_numbers_have_the_csv_digits() {
+        let doc = serde_json::to_string(&nums([24.354551362801473, -0.0, 1e-9, f64::NAN, 40.0]));
+        assert_eq!(doc.unwrap(), "[24.35455,0.0,1e-9,null,40.0]");
     }
 }

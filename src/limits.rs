@@ -46,18 +46,18 @@ pub struct PerItem {
 pub const JAM_MAP_CELL: PerItem = PerItem {
     what: "cells of the jam map",
     memory_bytes: 200,
-    // JSON 19 B and the long-format CSV 24 B per cell (fig3: 3,055,845 + 3,865,995 B for
-    // 160,801 cells), with 25 % margin.
-    output_bytes: 54,
+    // The long-format CSV 24 B per cell (fig3: 3,865,995 B for 160,801 cells); the JSON beside
+    // it no longer repeats the grid (30 kB for fig3); with 25 % margin.
+    output_bytes: 31,
 };
 
 /// A cell of a contour map.
 pub const CONTOUR_MAP_CELL: PerItem = PerItem {
     what: "cells of the contour map",
     memory_bytes: 280,
-    // JSON 55 B and the long-format CSV 45 B per cell (fig7c: 6,643,406 + 5,404,959 B for
-    // 120,000 cells), with 25 % margin.
-    output_bytes: 125,
+    // The long-format CSV 45 B per cell (fig7c: 5,404,959 B for 120,000 cells); the JSON
+    // beside it holds the iso-lines, not the grid (115 kB for fig7c); with 25 % margin.
+    output_bytes: 58,
 };
 
 /// A point of a sweep.

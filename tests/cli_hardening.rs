@@ -229,26 +229,48 @@ fn render_of_an_empty_scenes_dir_fails_saying_so() {
 /// scene and the reason, and writes nothing (not even the other scenes' files).
 #[test]
 fn a_chart_whose_model_failed_fails_the_render_naming_scene_and_reason() {
+    let broken = format!("{STIFF}[chart]\nkind = \"time_series\"\n");
+    let fine = "[chart]\nkind = \"sweep\"\naxis = { param = \"force_n\", min = 50.0, max = 1e4, \
+                count = 5 }\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n";
+    render_fails_saying(
+        &[("broken", &broken), ("fine", fine)],
+        &["scene broken", "integrator gave up"],
+    );
+}
+
+/// A contact so stiff that every simulation gives up at t = 0.
+const STIFF: &str = "[dynamics]\nstiffness_n_per_mm_e = 1e300\n";
+
+/// Regression (issue 13, leftover of "a chart whose model failed"): a fig6-like sweep whose
+/// simulation layer failed at every point (`[dynamics] stiffness_n_per_mm_e = 1e300`: the
+/// integrator gives up at t = 0) exited 0 and drew the layer as nothing. The render now fails
+/// naming the scene, the model and the reason, and writes nothing.
+#[test]
+fn a_sweep_layer_whose_model_failed_at_every_point_fails_the_render() {
+    let broken = format!(
+        "{STIFF}[chart]\nkind = \"sweep\"\naxis = {{ param = \"mu\", min = 0.15, max = 0.45, \
+         count = 31 }}\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\", \"simulation_motion\"]\n"
+    );
+    let said = [
+        "scene broken",
+        "simulation (motion drive) failed",
+        "integrator gave up",
+    ];
+    render_fails_saying(&[("broken", &broken)], &said);
+}
+
+/// Renders `scenes` (name, body) into a new folder: exit 2, every one of `said` in the
+/// message, nothing written.
+fn render_fails_saying(scenes: &[(&str, &str)], said: &[&str]) {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    scene(
-        d,
-        "broken",
-        "[dynamics]\nstiffness_n_per_mm_e = 1e300\n[chart]\nkind = \"time_series\"\n",
-    );
-    scene(
-        d,
-        "fine",
-        "[chart]\nkind = \"sweep\"\naxis = { param = \"force_n\", min = 50.0, max = 1e4, \
-         count = 5 }\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n",
-    );
+    for (name, body) in scenes {
+        scene(d, name, body);
+    }
     let out = jamchart(d, &["render", "--scenes-dir", "scenes", "--out", "o"]);
     let err = stderr(&out);
     assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(
-        err.contains("scene broken") && err.contains("integrator gave up"),
-        "{err}"
-    );
+    assert!(said.iter().all(|s| err.contains(s)), "{err}");
     assert!(!d.join("o").exists(), "nothing written: {err}");
 }
 

@@ -75,10 +75,10 @@ fn a_heavy_disc_or_a_soft_contact_is_contact_model_dependent() {
     ] {
         let s = run(&scene, &p);
         assert_eq!(s.status, JamStatus::Inaccurate, "{s:?}");
-        let Some(CrossCheck::ContactModelDependent { x_rigid_mm, .. }) = s.cross_check else {
+        let Some(CrossCheck::ContactModelDependent { x_jam_rigid_mm, .. }) = s.cross_check else {
             panic!("{s:?}");
         };
-        assert!((x_rigid_mm - 25.0).abs() < 0.01, "{x_rigid_mm}");
+        assert!((x_jam_rigid_mm - 25.0).abs() < 0.01, "{x_jam_rigid_mm}");
         assert!(s.model_uncertainty_mm.unwrap() > 4.0, "{s:?}");
     }
 }

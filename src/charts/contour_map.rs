@@ -18,9 +18,10 @@ use super::models::Models;
 use super::spec::Scene;
 use super::style::{self, LineKind};
 use super::{
-    DataFile, axis_label, cells_csv, grid_lines, grid_polygons, param_symbol, param_unit,
-    scene_subtitle,
+    DataFile, axis_label, cells_csv, cells_json, grid_lines, grid_polygons, param_symbol,
+    param_unit, scene_subtitle,
 };
+use crate::csv_out::{Column, Num, nums};
 use crate::error::{Error, Result};
 use crate::grid::{self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, Quantity};
 use crate::model::SceneParams;
@@ -273,34 +274,73 @@ impl ContourMap {
         })
     }
 
-    /// The data behind the chart as JSON (grids in index order iy * nx + ix).
+    /// The data behind the chart as JSON: the scene, the levels and the iso-lines drawn, as
+    /// polylines of (x, y) axis values; the grids are in the long CSV beside it
+    /// ([`ContourMap::cells`]), described under `cells`.
     pub fn data(&self, scene: &Scene) -> DataFile {
-        let g = &self.grid;
+        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
+        let lines = |levelled: &mut dyn Iterator<Item = (f64, &Paths)>| {
+            levelled
+                .map(|(level, paths)| {
+                    let paths: Vec<Vec<[Num; 2]>> = paths
+                        .iter()
+                        .map(|p| {
+                            p.iter()
+                                .map(|&(u, v)| {
+                                    [Num(plot_to_value(u, xa)), Num(plot_to_value(v, ya))]
+                                })
+                                .collect()
+                        })
+                        .collect();
+                    json!({ "level": Num(level), "paths": paths })
+                })
+                .collect::<Vec<_>>()
+        };
+        let settle = self.spec.settle_pct.unwrap_or_default();
+        let (x, y) = (xa.param, ya.param);
         DataFile::json(&json!({
             "scene": scene.name, "title": self.title, "params": self.params,
             "x_axis": self.spec.x_axis, "y_axis": self.spec.y_axis,
-            "index": "iy * nx + ix (x fastest)", "nx": g.nx(), "ny": g.ny(),
-            "x_jam_levels_mm": self.spec.x_jam_levels_mm,
-            "theta_jam_levels_deg": self.spec.theta_jam_levels_deg,
+            "x_jam_levels_mm": nums(self.spec.x_jam_levels_mm.iter().copied()),
+            "theta_jam_levels_deg": nums(self.spec.theta_jam_levels_deg.iter().copied()),
             "settle_pct": self.spec.settle_pct,
-            "x_jam_mm": g.x_jam_mm, "theta_jam_deg": g.theta_jam_deg,
-            "x_gap_to_rigid_limit_pct": self.gap_pct,
+            "iso_lines": {
+                "point": [x.as_str(), y.as_str()],
+                "x_jam_mm": lines(&mut self.x_jam_lines.iter().map(|(l, p)| (*l, p))),
+                "theta_jam_deg": lines(&mut self.theta_lines.iter().map(|(l, p)| (*l, p))),
+                "gap_to_x_rigid_pct": lines(&mut self.settle_lines.iter().map(|p| (settle, p))),
+            },
+            "cells": cells_json(&scene.name, &self.grid, x, y, &self.columns()),
         }))
     }
 
     /// The cells as long-format CSV: the axis values, x_jam_mm and, where computed,
-    /// theta_jam_deg and x_gap_to_rigid_limit_pct.
+    /// theta_jam_deg and gap_to_x_rigid_pct.
     pub fn cells(&self) -> DataFile {
+        let (x, y) = (self.spec.x_axis.param, self.spec.y_axis.param);
+        cells_csv(&self.grid, x, y, &self.columns())
+    }
+
+    /// The quantity columns of the cells, named as in JSON.
+    fn columns(&self) -> Vec<(&'static str, Column<'_>)> {
         let g = &self.grid;
         let mut columns = Vec::new();
-        columns.extend(g.x_jam_mm.clone().map(|v| ("x_jam_mm", v)));
-        columns.extend(g.theta_jam_deg.clone().map(|v| ("theta_jam_deg", v)));
-        let gap = self
-            .gap_pct
-            .as_ref()
-            .map(|v| v.iter().copied().map(Some).collect());
-        columns.extend(gap.map(|v| ("x_gap_to_rigid_limit_pct", v)));
-        cells_csv(g, self.spec.x_axis.param, self.spec.y_axis.param, &columns)
+        columns.extend(
+            g.x_jam_mm
+                .as_deref()
+                .map(|v| ("x_jam_mm", Column::Sparse(v))),
+        );
+        columns.extend(
+            g.theta_jam_deg
+                .as_deref()
+                .map(|v| ("theta_jam_deg", Column::Sparse(v))),
+        );
+        columns.extend(
+            self.gap_pct
+                .as_deref()
+                .map(|v| ("gap_to_x_rigid_pct", Column::Dense(v))),
+        );
+        columns
     }
 
     /// Draws the map on `root`.
@@ -398,11 +438,7 @@ impl ContourMap {
             let Some(((u, _), at)) = at_height(paths, chart, y, 0.06) else {
                 continue;
             };
-            let value = if xa.scale == AxisScale::Log {
-                u.exp()
-            } else {
-                u
-            };
+            let value = plot_to_value(u, xa);
             let s = format!(
                 "{} ≈ {} {}: x_jam within {pct} % of {} →",
                 param_symbol(xa.param),
@@ -491,6 +527,14 @@ fn nearest_point(paths: &[Vec<(f64, f64)>], u: f64) -> Option<&(f64, f64)> {
         .iter()
         .flatten()
         .min_by(|a, b| (a.0 - u).abs().total_cmp(&(b.0 - u).abs()))
+}
+
+/// The axis value of plot coordinate `u` (plot space is ln of the value on a log axis).
+fn plot_to_value(u: f64, a: &GridAxis) -> f64 {
+    match a.scale {
+        AxisScale::Log => u.exp(),
+        AxisScale::Linear => u,
+    }
 }
 
 /// A level as a label: whole numbers without decimals.

@@ -1,6 +1,6 @@
 //! The data files written beside a chart: [`DataFile`], and a map's cells as long-format CSV.
 
-use crate::csv_out::{Dec, dec, to_csv_with_header};
+use crate::csv_out::{Column, cells_summary, grid_cells};
 use crate::grid::GridParam;
 
 /// The data behind a chart: file extension and bytes.
@@ -33,22 +33,37 @@ impl DataFile {
 }
 
 /// The cells of `grid` as long-format CSV: one row per cell (x fastest), the two axis values then
-/// each `(column, values)` (an empty cell where a value is None).
+/// each `(column, values)` (see [`crate::csv_out::grid_cells`]).
 pub fn cells_csv(
     grid: &crate::grid::GridResult,
     x: GridParam,
     y: GridParam,
-    columns: &[(&str, Vec<Option<f64>>)],
+    columns: &[(&str, Column)],
 ) -> DataFile {
+    let (header, values) = cells_columns(x, y, columns);
+    DataFile::csv(grid_cells(&header, &grid.x_values, &grid.y_values, &values))
+}
+
+/// What a map's JSON says about the cells [`cells_csv`] writes to `<scene>.csv` (see
+/// [`crate::csv_out::cells_summary`]): the same column names.
+pub fn cells_json(
+    scene: &str,
+    grid: &crate::grid::GridResult,
+    x: GridParam,
+    y: GridParam,
+    columns: &[(&str, Column)],
+) -> serde_json::Value {
+    let (header, values) = cells_columns(x, y, columns);
+    let file = format!("{scene}.csv");
+    cells_summary(&file, &header, (grid.nx(), grid.ny()), &values)
+}
+
+fn cells_columns<'a, 'b>(
+    x: GridParam,
+    y: GridParam,
+    columns: &[(&'a str, Column<'b>)],
+) -> (Vec<&'a str>, Vec<Column<'b>>) {
     let mut header = vec![x.as_str(), y.as_str()];
     header.extend(columns.iter().map(|(name, _)| *name));
-    let rows = grid.y_values.iter().enumerate().flat_map(|(iy, yv)| {
-        grid.x_values.iter().enumerate().map(move |(ix, xv)| {
-            let i = grid.index(ix, iy);
-            let mut row = vec![Some(Dec(*xv)), Some(Dec(*yv))];
-            row.extend(columns.iter().map(|(_, v)| dec(v[i])));
-            row
-        })
-    });
-    DataFile::csv(to_csv_with_header(&header, rows))
+    (header, columns.iter().map(|(_, c)| *c).collect())
 }

@@ -18,7 +18,10 @@ use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
-use super::{DataFile, axis_label, cells_csv, grid_polygons, param_symbol, scene_subtitle};
+use super::{
+    DataFile, axis_label, cells_csv, cells_json, grid_polygons, param_symbol, scene_subtitle,
+};
+use crate::csv_out::{Column, Num};
 use crate::error::{Error, Result};
 use crate::grid::{
     self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, Quantity,
@@ -175,11 +178,12 @@ impl JamMap {
         })
     }
 
-    /// The data behind the chart as JSON.
+    /// The data behind the chart as JSON: the scene, the boundary and the read-off; the margin
+    /// grid is in the long CSV beside it ([`JamMap::cells`]), described under `cells`.
     pub fn data(&self, scene: &Scene) -> DataFile {
         let point = |(v, p): &(f64, JamPoint)| {
-            json!({ self.spec.x_axis.param.as_str(): v, "status": p.status,
-                    "theta_jam_deg": p.theta_jam_deg, "x_jam_mm": p.x_jam_mm })
+            json!({ self.spec.x_axis.param.as_str(): Num(*v), "status": p.status,
+                    "theta_jam_deg": p.theta_jam_deg.map(Num), "x_jam_mm": p.x_jam_mm.map(Num) })
         };
         let doc = json!({
             "scene": scene.name,
@@ -189,21 +193,22 @@ impl JamMap {
             "y_axis": self.spec.y_axis,
             "read_off": self.read_off.as_ref().map(point),
             "boundary": self.boundary.iter().map(point).collect::<Vec<_>>(),
-            "margin_n": self.grid.as_ref().map(|g| json!({
-                "index": "iy * nx + ix (x fastest)",
-                "nx": g.nx(), "ny": g.ny(),
-                "values": g.margin_n,
-            })),
+            "cells": self.columns().map(|(g, c)| cells_json(&scene.name, g, self.spec.x_axis.param, self.spec.y_axis.param, &c)),
         });
         DataFile::json(&doc)
     }
 
     /// The cells of the margin grid as long-format CSV (None when the regions are not drawn).
     pub fn cells(&self) -> Option<DataFile> {
-        let g = self.grid.as_ref()?;
-        let margin = g.margin_n.as_ref()?.iter().copied().map(Some).collect();
+        let (g, columns) = self.columns()?;
         let (x, y) = (self.spec.x_axis.param, self.spec.y_axis.param);
-        Some(cells_csv(g, x, y, &[("margin_n", margin)]))
+        Some(cells_csv(g, x, y, &columns))
+    }
+
+    /// The grid and its quantity columns, named as in JSON.
+    fn columns(&self) -> Option<(&GridResult, Vec<(&'static str, Column<'_>)>)> {
+        let g = self.grid.as_ref()?;
+        Some((g, vec![("margin_n", Column::Dense(g.margin_n.as_ref()?))]))
     }
 
     fn axes(&self) -> (PlotAxis, PlotAxis) {

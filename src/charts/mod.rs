@@ -70,7 +70,7 @@ use plotters::prelude::*;
 use crate::error::{Error, Result};
 use axes::DrawResult;
 pub use contours::{grid_lines, grid_polygons, grid_to_plot};
-pub use data::{DataFile, cells_csv};
+pub use data::{DataFile, cells_csv, cells_json};
 pub use kinds::{Chart, ChartSpec};
 pub use labels::{axis_label, param_symbol, param_unit, scene_subtitle, scene_subtitle_with};
 pub use spec::{Scene, SceneSource, load_scene, scene_files, scene_names};

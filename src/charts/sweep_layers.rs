@@ -23,6 +23,7 @@ use crate::model::{JamStatus, disc_position_mm};
 use crate::models::ModelSpec;
 use crate::paper::{ADAMS_X_JAM_MM_MU_0_4, TABLE1};
 use crate::statics;
+use crate::study::{self, Why};
 
 /// The mu values of the simulation points: halfway between Table 1's 0.15, 0.20, ..., 0.45.
 pub const SIMULATION_MU: [f64; 6] = [0.175, 0.225, 0.275, 0.325, 0.375, 0.425];
@@ -34,8 +35,11 @@ pub enum SweepLayer {
     /// The closed-form statics curve.
     Statics,
     /// The F -> infinity limit (a palm driven by motion): theta = atan mu_g + atan mu_p,
-    /// x = r cot(theta/2), r/mu for equal frictions; labelled when constant along the sweep.
-    RigidLimit,
+    /// x = r cot(theta/2), r/mu for equal frictions (the statics' `theta_rigid_deg`,
+    /// `x_rigid_mm`); labelled when constant along the sweep. `rigid_limit` is read as `rigid`
+    /// (its name before).
+    #[serde(alias = "rigid_limit")]
+    Rigid,
     /// The paper's Table 1 (both models as printed), the mu = 0.30 erratum marked (mu sweeps).
     PaperTable1,
     /// The paper's Adams result x_jam = 25.58 mm at mu = 0.4 (mu sweeps).
@@ -54,7 +58,7 @@ pub enum SweepLayer {
 
 /// Checks that `layer` can be drawn on `spec`'s sweep.
 pub fn validate(layer: SweepLayer, spec: &SweepSpec) -> Result<()> {
-    let at_mu = !matches!(layer, SweepLayer::Statics | SweepLayer::RigidLimit);
+    let at_mu = !matches!(layer, SweepLayer::Statics | SweepLayer::Rigid);
     if at_mu && spec.axis.param != GridParam::Mu {
         return Err(Error::invalid(
             "chart.layers",
@@ -93,7 +97,7 @@ pub fn series(
             flat_names: Some(["x_jam", "θ_jam"]),
             callout: None,
         }],
-        SweepLayer::RigidLimit => {
+        SweepLayer::Rigid => {
             let points: Vec<SeriesPoint> = spec
                 .axis
                 .values()
@@ -104,7 +108,7 @@ pub fn series(
                 })
                 .collect();
             vec![Series {
-                layer: "rigid_limit",
+                layer: "rigid",
                 label: "F → ∞ limit (palm driven by motion): x = r/μ, θ = 2·atan μ".into(),
                 style: SeriesStyle::Line(LineKind::Dashed),
                 points,
@@ -146,21 +150,42 @@ fn jam_point(mu: f64, status: JamStatus, x: Option<f64>, theta: Option<f64>) -> 
 
 /// `spec`'s jam points at the mu values `mu`, a sweep through the grid (in parallel; each point
 /// is independent, so the result does not depend on the thread count).
+///
+/// A layer whose model failed at every point (the integrator gave up, the model does not
+/// represent the scene, a cross-check refused the answer) would be drawn as nothing: the
+/// render fails instead, naming the scene, the model (`model`) and the first point's reason, as
+/// a time series does. A layer where the model answers "no jam" is physics and stays empty.
 fn model_points(
     scene: &Scene,
     models: &dyn Models,
     spec: &ModelSpec,
     mu: &[f64],
+    model: &'static str,
 ) -> Result<Vec<SeriesPoint>> {
-    grid::at_values(&scene.params, GridParam::Mu, mu, |p| {
-        let j = models.jam_point(spec, p)?;
-        Ok(jam_point(
-            p.mu_ground,
-            j.status,
-            j.x_jam_mm,
-            j.theta_jam_deg,
-        ))
-    })
+    let answers = grid::at_values(&scene.params, GridParam::Mu, mu, |p| {
+        let s = models.solve(spec, p)?;
+        let failure = study::why(&s).filter(|w| !matches!(w, Why::NoJam { .. }));
+        let point = jam_point(p.mu_ground, s.status, s.x_jam_mm, s.theta_jam_deg);
+        Ok((point, failure))
+    })?;
+    let failed = |(p, f): &(SeriesPoint, Option<Why>)| p.x_jam_mm.is_none() && f.is_some();
+    if !answers.is_empty() && answers.iter().all(failed) {
+        let (first, why) = &answers[0];
+        let why = why.as_ref().map_or(String::new(), |w| w.to_string());
+        return Err(Error::ModelFailed {
+            scene: scene.name.clone(),
+            model,
+            reason: format!(
+                "at each of its {} points, mu = {} to {} (first, at mu = {}: {why}); its sweep \
+                 layer would be empty",
+                answers.len(),
+                mu.iter().copied().reduce(f64::min).unwrap_or_default(),
+                mu.iter().copied().reduce(f64::max).unwrap_or_default(),
+                first.at
+            ),
+        });
+    }
+    Ok(answers.into_iter().map(|(p, _)| p).collect())
 }
 
 /// Min-norm points at the Table 1 mu values.
@@ -169,7 +194,11 @@ fn min_norm(scene: &Scene, models: &dyn Models, formulation: Formulation) -> Res
         formulation,
         ..scene.min_norm
     };
-    let points = model_points(scene, models, &ModelSpec::MinNorm(s), &table1_mu())?;
+    let model = match formulation {
+        Formulation::Translational => "min-norm program",
+        Formulation::Rolling => "min-norm program (rolling)",
+    };
+    let points = model_points(scene, models, &ModelSpec::MinNorm(s), &table1_mu(), model)?;
     Ok(match formulation {
         Formulation::Translational => Series {
             layer: "min_norm",
@@ -200,7 +229,11 @@ fn simulation(scene: &Scene, models: &dyn Models, drive: Drive) -> Result<Series
         params: d,
         series_dt_s: None,
     };
-    let points = model_points(scene, models, &spec, &SIMULATION_MU)?;
+    let model = match drive {
+        Drive::Motion => "simulation (motion drive)",
+        Drive::Force => "simulation (force drive)",
+    };
+    let points = model_points(scene, models, &spec, &SIMULATION_MU, model)?;
     Ok(match drive {
         Drive::Motion => Series {
             layer: "simulation_motion",

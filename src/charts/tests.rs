@@ -38,8 +38,9 @@ fn fig3_reads_off_the_errata_values() {
     );
     assert_eq!(r["mu"].as_f64(), Some(0.4));
     // >= 400 x 400 cells, as the issue asks.
-    let m = &doc["margin_n"];
+    let m = &doc["cells"];
     assert!(m["nx"].as_u64().unwrap() >= 400 && m["ny"].as_u64().unwrap() >= 400);
+    assert_eq!(m["file"], "fig3.csv");
 }
 
 /// The margin grid's jam cells lie exactly below the closed-form boundary of their column.
@@ -87,7 +88,7 @@ fn jam_map_without_regions_evaluates_no_grid() {
         panic!("jam map")
     };
     let doc: serde_json::Value = serde_json::from_slice(&map.data(&scene).bytes).unwrap();
-    assert!(doc["margin_n"].is_null() && doc["read_off"].is_null());
+    assert!(doc["cells"].is_null() && doc["read_off"].is_null());
     assert_eq!(doc["boundary"].as_array().unwrap().len(), 401);
 }
 

@@ -10,7 +10,9 @@ use serde::Serialize;
 
 use super::args::{SceneArgs, TableFormat, parse_f64};
 use super::dynamics::DynamicsArgs;
+use super::numbers::{angle_deg, length_mm, ratio};
 use crate::atomic::{Output, check_all, write_all};
+use crate::csv_out::{Dec, dec};
 use crate::dynamics::Method;
 use crate::error::{Error, Result};
 use crate::model::JamStatus;
@@ -233,10 +235,6 @@ pub(crate) fn model_name(m: ModelKind) -> &'static str {
     }
 }
 
-pub(crate) fn sci(v: Option<f64>) -> String {
-    v.map_or("-".into(), |v| format!("{v:.2e}"))
-}
-
 pub(crate) fn fixed(v: Option<f64>, prec: usize) -> String {
     v.map_or("-".into(), |v| format!("{v:.prec$}"))
 }
@@ -246,7 +244,7 @@ fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapse
         "# Error against run time, against the physical reference\n\n\
          Each row answers \"where does it jam\" through the model port. `x error` is against the \
          physical reference of the scene as the row poses it (closed_form: the corrected Eq. 1 \
-         at F; rigid_limit: F -> infinity, r/mu for equal frictions, for the motion drive). \
+         at F; rigid: x_rigid, F -> infinity, r/mu for equal frictions, for the motion drive). \
          `integration error` is against the same regularised model at the converged tolerance \
          (column `converged by`). Where `x error` stops falling as the tolerance tightens is the \
          model's floor.\n\n",
@@ -286,7 +284,7 @@ fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapse
     let _ = writeln!(
         s,
         "\nWall times are medians of {runs} runs of one answer.\n\n\
-         | model | method | tolerance | penetration [um] | step [deg] | status | theta_jam [deg] | x_jam [mm] | reference | x error [mm] | rel. x error | theta error [deg] | converged by | integration error [mm] | time [ms] | steps | evaluations |\n\
+         | model | method | tolerance | penetration [um] | step [deg] | status | theta_jam [deg] | x_jam [mm] | reference | x error | rel. x error | theta error | converged by | integration error | time [ms] | steps | evaluations |\n\
          |---|---|---:|---:|---:|---|---:|---:|---|---:|---:|---:|---|---:|---:|---:|---:|"
     );
     let mut failures = Vec::new();
@@ -303,11 +301,11 @@ fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapse
             fixed(row.theta_jam_deg, 4),
             fixed(row.x_jam_mm, 6),
             row.reference.as_str(),
-            sci(row.x_error_mm),
-            sci(row.x_rel_error),
-            sci(row.theta_error_deg),
+            length_mm(row.x_error_mm),
+            ratio(row.x_rel_error),
+            angle_deg(row.theta_error_deg),
             row.converged_by.map_or("-", Method::as_str),
-            sci(row.integration_error_mm),
+            length_mm(row.integration_error_mm),
             row.median_time_s * 1e3,
             row.steps,
             row.evaluations
@@ -344,7 +342,7 @@ fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapse
                 row.full_map_s,
                 if row.extrapolated { "yes" } else { "no" },
                 row.threads,
-                sci(row.max_x_rel_error),
+                ratio(row.max_x_rel_error),
                 row.status_mismatches,
                 row.untrusted_cells,
                 k = row.sampled_per_axis
@@ -374,7 +372,7 @@ fn label(row: &AccuracyRow) -> String {
 fn floors(r: &AccuracyReport) -> String {
     let mut s = String::from(
         "\n## Floors of the simulation\n\n\
-         | method | penetration [um] | reference | smallest rel. x error | at tolerance or step | integration error there [mm] |\n\
+         | method | penetration [um] | reference | smallest rel. x error | at tolerance or step | integration error there |\n\
          |---|---:|---|---:|---:|---:|\n",
     );
     let mut keys: Vec<(&str, u64)> = Vec::new();
@@ -395,7 +393,7 @@ fn floors(r: &AccuracyReport) -> String {
             .rows
             .iter()
             .find(|x| x.method == method)
-            .map_or(ReferenceKind::RigidLimit, |x| x.reference);
+            .map_or(ReferenceKind::Rigid, |x| x.reference);
         let contact = if method == "nonsmooth" {
             "rigid".to_string()
         } else {
@@ -410,9 +408,9 @@ fn floors(r: &AccuracyReport) -> String {
             s,
             "| {method} | {contact} | {} | {} | {} | {} |",
             reference.as_str(),
-            sci(best.and_then(|b| b.x_rel_error)),
+            ratio(best.and_then(|b| b.x_rel_error)),
             at.unwrap_or("-".into()),
-            sci(best.and_then(|b| b.integration_error_mm))
+            length_mm(best.and_then(|b| b.integration_error_mm))
         );
     }
     s
@@ -423,23 +421,23 @@ fn floors(r: &AccuracyReport) -> String {
 struct CsvRow<'a> {
     model: ModelKind,
     method: &'a str,
-    tolerance: Option<f64>,
-    penetration_um: Option<f64>,
-    step_deg: Option<f64>,
+    tolerance: Option<Dec>,
+    penetration_um: Option<Dec>,
+    step_deg: Option<Dec>,
     status: JamStatus,
-    theta_jam_deg: Option<f64>,
-    x_jam_mm: Option<f64>,
+    theta_jam_deg: Option<Dec>,
+    x_jam_mm: Option<Dec>,
     reference: ReferenceKind,
     reference_status: JamStatus,
-    theta_ref_deg: Option<f64>,
-    x_ref_mm: Option<f64>,
-    x_error_mm: Option<f64>,
-    x_rel_error: Option<f64>,
-    theta_error_deg: Option<f64>,
+    theta_ref_deg: Option<Dec>,
+    x_ref_mm: Option<Dec>,
+    x_error_mm: Option<Dec>,
+    x_rel_error: Option<Dec>,
+    theta_error_deg: Option<Dec>,
     converged_by: Option<Method>,
-    x_converged_mm: Option<f64>,
-    integration_error_mm: Option<f64>,
-    median_time_s: f64,
+    x_converged_mm: Option<Dec>,
+    integration_error_mm: Option<Dec>,
+    median_time_s: Dec,
     runs: usize,
     steps: u64,
     evaluations: u64,
@@ -451,23 +449,23 @@ fn csv_rows(r: &AccuracyReport) -> Result<String> {
     let rows = r.rows.iter().map(|x| CsvRow {
         model: x.model,
         method: x.method,
-        tolerance: x.tolerance,
-        penetration_um: x.penetration_um,
-        step_deg: x.step_deg,
+        tolerance: dec(x.tolerance),
+        penetration_um: dec(x.penetration_um),
+        step_deg: dec(x.step_deg),
         status: x.status,
-        theta_jam_deg: x.theta_jam_deg,
-        x_jam_mm: x.x_jam_mm,
+        theta_jam_deg: dec(x.theta_jam_deg),
+        x_jam_mm: dec(x.x_jam_mm),
         reference: x.reference,
         reference_status: x.reference_status,
-        theta_ref_deg: x.theta_ref_deg,
-        x_ref_mm: x.x_ref_mm,
-        x_error_mm: x.x_error_mm,
-        x_rel_error: x.x_rel_error,
-        theta_error_deg: x.theta_error_deg,
+        theta_ref_deg: dec(x.theta_ref_deg),
+        x_ref_mm: dec(x.x_ref_mm),
+        x_error_mm: dec(x.x_error_mm),
+        x_rel_error: dec(x.x_rel_error),
+        theta_error_deg: dec(x.theta_error_deg),
         converged_by: x.converged_by,
-        x_converged_mm: x.x_converged_mm,
-        integration_error_mm: x.integration_error_mm,
-        median_time_s: x.median_time_s,
+        x_converged_mm: dec(x.x_converged_mm),
+        integration_error_mm: dec(x.integration_error_mm),
+        median_time_s: Dec(x.median_time_s),
         runs: x.runs,
         steps: x.steps,
         evaluations: x.evaluations,
@@ -477,8 +475,34 @@ fn csv_rows(r: &AccuracyReport) -> Result<String> {
     to_csv(rows)
 }
 
+/// One row of the map's CSV: the typed row with plain decimals.
+#[derive(Serialize)]
+struct MapCsvRow {
+    model: ModelKind,
+    method: &'static str,
+    sampled_per_axis: usize,
+    measured_s: Dec,
+    full_map_s: Dec,
+    extrapolated: bool,
+    threads: usize,
+    max_x_rel_error: Option<Dec>,
+    status_mismatches: usize,
+    untrusted_cells: usize,
+}
+
 fn map_csv(m: &MapCostReport) -> Result<String> {
-    to_csv(m.rows.iter())
+    to_csv(m.rows.iter().map(|x| MapCsvRow {
+        model: x.model,
+        method: x.method,
+        sampled_per_axis: x.sampled_per_axis,
+        measured_s: Dec(x.measured_s),
+        full_map_s: Dec(x.full_map_s),
+        extrapolated: x.extrapolated,
+        threads: x.threads,
+        max_x_rel_error: dec(x.max_x_rel_error),
+        status_mismatches: x.status_mismatches,
+        untrusted_cells: x.untrusted_cells,
+    }))
 }
 
 /// Rows through the csv crate (one header from the field names).

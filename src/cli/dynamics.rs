@@ -467,13 +467,13 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
                 rtol * 10.0
             ),
             CrossCheck::LiftsOff { .. } => LIFTS_DISC_ADVICE.to_string(),
-            CrossCheck::KnockedAhead { x_rigid_mm, .. } => format!(
-                "design to the rigid contact's {x_rigid_mm:.3} mm (--method nonsmooth), measure \
+            CrossCheck::KnockedAhead { x_jam_rigid_mm, .. } => format!(
+                "design to the rigid contact's {x_jam_rigid_mm:.3} mm (--method nonsmooth), measure \
                  the real contact's --stiffness and --damping, or close the palm slower \
                  (--omega) so that it does not strike the disc"
             ),
-            CrossCheck::ContactModelDependent { x_rigid_mm, .. } => format!(
-                "the rigid contact's {x_rigid_mm:.3} mm (--method nonsmooth) is the answer \
+            CrossCheck::ContactModelDependent { x_jam_rigid_mm, .. } => format!(
+                "the rigid contact's {x_jam_rigid_mm:.3} mm (--method nonsmooth) is the answer \
                  without compliance; give --stiffness of the real contact, and check --mass \
                  (a heavy disc presses a soft contact millimetres deep)"
             ),

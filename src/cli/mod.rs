@@ -6,6 +6,7 @@ mod args;
 mod dynamics;
 mod guidance;
 mod min_norm;
+mod numbers;
 pub mod render;
 mod solve;
 mod stability;

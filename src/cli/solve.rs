@@ -165,8 +165,8 @@ fn render_statics(s: &mut String, d: &StaticsSolution) {
     if let Some(x) = d.x_rigid_mm {
         let _ = writeln!(
             s,
-            "  x_rigid   = {x:.3} mm, theta_rigid = {:.3} deg: the limit of an unlimited push \
-             (F -> inf, a motion-driven palm)",
+            "  x_rigid   = {x:.3} mm, theta_rigid = {:.3} deg: the rigid limit, the jam as F -> inf \
+             (a motion-driven palm)",
             d.theta_rigid_deg
         );
     }

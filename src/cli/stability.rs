@@ -6,10 +6,12 @@ use std::path::PathBuf;
 use clap::Args;
 use serde::Serialize;
 
-use super::accuracy::{fixed, model_name, sci, to_csv, write_set};
+use super::accuracy::{fixed, model_name, to_csv, write_set};
 use super::args::{SceneArgs, TableFormat};
 use super::dynamics::DynamicsArgs;
+use super::numbers::length_mm;
 use crate::atomic::check_all;
+use crate::csv_out::{Dec, dec};
 use crate::error::{Error, Result};
 use crate::model::JamStatus;
 use crate::models::ModelKind;
@@ -115,7 +117,7 @@ fn markdown(r: &StabilityReport) -> String {
     let mut s = format!(
         "# Numerical stability on stiff and extreme cases\n\n\
          {} cases x {} methods in {:.1} s ({} threads). Each answer against the case's \
-         physical reference (closed_form at F; rigid_limit for the motion drive); x error \
+         physical reference (closed_form at F; rigid, x_rigid, for the motion drive); x error \
          within the allowance is correct.\n\n",
         r.cases.len(),
         r.methods.len(),
@@ -130,7 +132,7 @@ fn markdown(r: &StabilityReport) -> String {
         let _ = writeln!(s, "- {}: {}", c.name, c.what);
     }
     s.push_str(
-        "\n| case | model | method | finished | status | x_jam [mm] | reference | x_ref [mm] | x error [mm] | allowance [mm] | steps | evaluations | time [ms] | class | reason |\n\
+        "\n| case | model | method | finished | status | x_jam [mm] | reference | x_ref [mm] | x error | allowance | steps | evaluations | time [ms] | class | reason |\n\
          |---|---|---|---|---|---:|---|---:|---:|---:|---:|---:|---:|---|---|\n",
     );
     for row in &r.rows {
@@ -146,8 +148,8 @@ fn markdown(r: &StabilityReport) -> String {
             row.reference.kind.as_str(),
             row.reference.status,
             fixed(row.reference.x_jam_mm, 4),
-            sci(row.x_error_mm),
-            sci(row.allowance_mm),
+            length_mm(row.x_error_mm),
+            length_mm(row.allowance_mm),
             row.steps,
             row.evaluations,
             row.time_s * 1e3,
@@ -166,15 +168,15 @@ struct CsvRow<'a> {
     method: &'a str,
     finished: bool,
     status: JamStatus,
-    x_jam_mm: Option<f64>,
+    x_jam_mm: Option<Dec>,
     reference: ReferenceKind,
     reference_status: JamStatus,
-    x_ref_mm: Option<f64>,
-    x_error_mm: Option<f64>,
-    allowance_mm: Option<f64>,
+    x_ref_mm: Option<Dec>,
+    x_error_mm: Option<Dec>,
+    allowance_mm: Option<Dec>,
     steps: u64,
     evaluations: u64,
-    time_s: f64,
+    time_s: Dec,
     class: Class,
     reason: Option<&'static str>,
     reason_detail: Option<String>,
@@ -187,15 +189,15 @@ fn csv_rows(r: &StabilityReport) -> Result<String> {
         method: x.method,
         finished: x.finished,
         status: x.status,
-        x_jam_mm: x.x_jam_mm,
+        x_jam_mm: dec(x.x_jam_mm),
         reference: x.reference.kind,
         reference_status: x.reference.status,
-        x_ref_mm: x.reference.x_jam_mm,
-        x_error_mm: x.x_error_mm,
-        allowance_mm: x.allowance_mm,
+        x_ref_mm: dec(x.reference.x_jam_mm),
+        x_error_mm: dec(x.x_error_mm),
+        allowance_mm: dec(x.allowance_mm),
         steps: x.steps,
         evaluations: x.evaluations,
-        time_s: x.time_s,
+        time_s: Dec(x.time_s),
         class: x.class,
         reason: x.reason.as_ref().map(|w| w.tag()),
         reason_detail: x.reason.as_ref().map(|w| w.to_string()),

@@ -107,7 +107,7 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
             let chart = ChartSpec::Sweep(SweepSpec {
                 axis,
                 panels: vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg],
-                layers: vec![SweepLayer::Statics, SweepLayer::RigidLimit],
+                layers: vec![SweepLayer::Statics, SweepLayer::Rigid],
             });
             let title = format!("Jam point against {}", axis_label(axis.param));
             (chart, format!("sweep_{}", axis.param.as_str()), title)

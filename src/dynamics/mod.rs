@@ -118,8 +118,9 @@ pub struct DynamicsSolution {
     pub x_stiction_mm: Option<f64>,
     /// Time of the stiction reading in s.
     pub t_stiction_s: Option<f64>,
-    /// The self-locking limit in mm: the touching position at theta = atan mu_g + atan mu_p.
-    pub x_wedge_mm: Option<f64>,
+    /// The self-locking limit in mm: the touching position at theta = atan mu_g + atan mu_p
+    /// (the statics' `x_rigid_mm`, the jam as F -> infinity).
+    pub x_rigid_mm: Option<f64>,
     /// The integration method that answered.
     pub method: Method,
     /// How the palm was driven.
@@ -218,7 +219,7 @@ fn lifted_at_start(scene: &SceneParams, params: &DynamicsParams) -> DynamicsSolu
         t_jam_s: None,
         x_stiction_mm: None,
         t_stiction_s: None,
-        x_wedge_mm: None,
+        x_rigid_mm: None,
         method: params.method,
         drive: params.drive,
         steps: 0,
@@ -359,12 +360,12 @@ fn compare_with_rigid(scene: &SceneParams, params: &DynamicsParams, out: &mut Dy
     let c = if out.palm_lost_disc && (x - xr).abs() > KNOCKED_SPREAD * xr {
         CrossCheck::KnockedAhead {
             x_jam_mm: x,
-            x_rigid_mm: xr,
+            x_jam_rigid_mm: xr,
         }
     } else {
         CrossCheck::ContactModelDependent {
             x_jam_mm: x,
-            x_rigid_mm: xr,
+            x_jam_rigid_mm: xr,
             allowed_rel: MAX_MODEL_SPREAD,
         }
     };

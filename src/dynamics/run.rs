@@ -56,7 +56,7 @@ fn conclude(
     stats: Stats,
 ) -> DynamicsSolution {
     let wedge = scene.alpha_ground() + scene.alpha_palm();
-    let x_wedge = (wedge > 0.0)
+    let x_rigid = (wedge > 0.0)
         .then(|| sys.touching_x(wedge))
         .filter(|x| x.is_finite());
     let (failure, simulated) = match &outcome {
@@ -71,7 +71,7 @@ fn conclude(
         t_jam_s: None,
         x_stiction_mm: det.stiction.map(|s| s.x),
         t_stiction_s: det.stiction.map(|s| s.t),
-        x_wedge_mm: x_wedge,
+        x_rigid_mm: x_rigid,
         method: params.method,
         drive: params.drive,
         steps: stats.steps,
@@ -127,12 +127,12 @@ fn conclude(
     } else {
         f64::INFINITY
     };
-    if let Some(xw) = x_wedge
+    if let Some(xw) = x_rigid
         && jam.x > xw * (1.0 + WEDGE_MARGIN) + coast
     {
         out.cross_check = Some(CrossCheck::PastWedge {
             x_jam_mm: jam.x,
-            x_wedge_mm: xw,
+            x_rigid_mm: xw,
             coast_mm: coast,
             geometric_speed_mm_s: sys.geometric_speed(wedge),
             stiction_velocity_mm_s: params.stiction_velocity_mm_s,
@@ -189,7 +189,7 @@ fn run_nonsmooth(
 ) -> DynamicsSolution {
     let sys = System::new(scene, params);
     let wedge = scene.alpha_ground() + scene.alpha_palm();
-    let x_wedge = (wedge > 0.0)
+    let x_rigid = (wedge > 0.0)
         .then(|| sys.touching_x(wedge))
         .filter(|x| x.is_finite());
     let run = nonsmooth::run(scene, params, series_dt_s);
@@ -200,7 +200,7 @@ fn run_nonsmooth(
         t_jam_s: None,
         x_stiction_mm: None,
         t_stiction_s: None,
-        x_wedge_mm: x_wedge,
+        x_rigid_mm: x_rigid,
         method: params.method,
         drive: params.drive,
         steps: run.steps,

@@ -29,14 +29,14 @@ pub enum CrossCheck {
         allowed_rel: f64,
         check: Refinement,
     },
-    /// The jam at `x_jam_mm` lies beyond the self-locking limit `x_wedge_mm` (plus the disc's
+    /// The jam at `x_jam_mm` lies beyond the self-locking limit `x_rigid_mm` (plus the disc's
     /// coasting distance `coast_mm` and the contact's give), which no push can pass. The palm
     /// drives the disc at `geometric_speed_mm_s` at the wedge, against the stiction transition
     /// velocity `stiction_velocity_mm_s`: a palm slow against V_s lets the regularised friction
     /// slide the disc on, below the speed the jam is read at.
     PastWedge {
         x_jam_mm: f64,
-        x_wedge_mm: f64,
+        x_rigid_mm: f64,
         coast_mm: f64,
         geometric_speed_mm_s: f64,
         stiction_velocity_mm_s: f64,
@@ -68,14 +68,14 @@ pub enum CrossCheck {
     LiftsOff { theta_deg: f64 },
     /// The palm lost the disc and struck it again before the jam at `x_jam_mm`: the disc was
     /// knocked ahead, and where it jams depends on a restitution and a contact stiffness nobody
-    /// knows (the rigid, plastic contact says `x_rigid_mm`).
-    KnockedAhead { x_jam_mm: f64, x_rigid_mm: f64 },
+    /// knows (the rigid, plastic contact says `x_jam_rigid_mm`).
+    KnockedAhead { x_jam_mm: f64, x_jam_rigid_mm: f64 },
     /// The compliant contact's jam at `x_jam_mm` lies more than `allowed_rel` from the rigid
-    /// contact's `x_rigid_mm`: the answer is the contact stiffness's (or the mass's), not the
+    /// contact's `x_jam_rigid_mm`: the answer is the contact stiffness's (or the mass's), not the
     /// geometry's and friction's.
     ContactModelDependent {
         x_jam_mm: f64,
-        x_rigid_mm: f64,
+        x_jam_rigid_mm: f64,
         allowed_rel: f64,
     },
 }
@@ -137,13 +137,13 @@ impl std::fmt::Display for CrossCheck {
             ),
             CrossCheck::PastWedge {
                 x_jam_mm,
-                x_wedge_mm,
+                x_rigid_mm,
                 coast_mm,
                 geometric_speed_mm_s,
                 stiction_velocity_mm_s,
             } => write!(
                 f,
-                "x_jam = {x_jam_mm:.4} mm lies beyond the self-locking limit {x_wedge_mm:.4} mm \
+                "x_jam = {x_jam_mm:.4} mm lies beyond the self-locking limit x_rigid = {x_rigid_mm:.4} mm \
                  that no push can pass (coasting allowance {coast_mm:.3} mm; the palm drives \
                  the disc at {geometric_speed_mm_s:.3} mm/s there, against a stiction \
                  transition velocity of {stiction_velocity_mm_s} mm/s)"
@@ -178,23 +178,23 @@ impl std::fmt::Display for CrossCheck {
             ),
             CrossCheck::KnockedAhead {
                 x_jam_mm,
-                x_rigid_mm,
+                x_jam_rigid_mm,
             } => write!(
                 f,
                 "the palm lost the disc and struck it again before the jam at {x_jam_mm:.3} mm: \
                  the disc was knocked ahead, and where it jams depends on the contact's \
-                 stiffness and restitution (a rigid, plastic contact jams at {x_rigid_mm:.3} mm)"
+                 stiffness and restitution (a rigid, plastic contact jams at {x_jam_rigid_mm:.3} mm)"
             ),
             CrossCheck::ContactModelDependent {
                 x_jam_mm,
-                x_rigid_mm,
+                x_jam_rigid_mm,
                 allowed_rel,
             } => write!(
                 f,
-                "x_jam = {x_jam_mm:.3} mm lies {:.1} % from the rigid contact's {x_rigid_mm:.3} mm \
+                "x_jam = {x_jam_mm:.3} mm lies {:.1} % from the rigid contact's {x_jam_rigid_mm:.3} mm \
                  (more than {:.1} %): the compliant contact, not the geometry and friction, sets \
                  the answer",
-                100.0 * (x_jam_mm - x_rigid_mm) / x_rigid_mm,
+                100.0 * (x_jam_mm - x_jam_rigid_mm) / x_jam_rigid_mm,
                 100.0 * allowed_rel
             ),
         }

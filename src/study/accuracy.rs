@@ -452,7 +452,7 @@ mod tests {
                 .unwrap()
         };
         let (soft, stiff) = (at(false), at(true));
-        assert_eq!(soft.reference, ReferenceKind::RigidLimit);
+        assert_eq!(soft.reference, ReferenceKind::Rigid);
         assert_eq!(soft.x_ref_mm, Some(25.0));
         // Adams' default contact: the disc lags the palm, about 1 % short of r/mu.
         let e_soft = soft.x_rel_error.unwrap();

@@ -215,8 +215,9 @@ pub fn penetration_mm(force_n: f64, stiffness: f64, exponent: f64) -> f64 {
 pub enum ReferenceKind {
     /// The closed form at the scene's push F (corrected Eq. 1).
     ClosedForm,
-    /// The closed form at F -> infinity: the self-locking wedge, r / mu for equal frictions.
-    RigidLimit,
+    /// The closed form at F -> infinity, the rigid limit x_rigid (`x_rigid_mm` in the statics'
+    /// JSON): the self-locking wedge, r / mu for equal frictions.
+    Rigid,
 }
 
 impl ReferenceKind {
@@ -224,7 +225,7 @@ impl ReferenceKind {
     pub fn as_str(self) -> &'static str {
         match self {
             ReferenceKind::ClosedForm => "closed_form",
-            ReferenceKind::RigidLimit => "rigid_limit",
+            ReferenceKind::Rigid => "rigid",
         }
     }
 }
@@ -246,7 +247,7 @@ pub struct Reference {
 pub fn reference(scene: &SceneParams, drive: Option<Drive>) -> Reference {
     let (kind, posed) = match drive {
         Some(Drive::Motion) => (
-            ReferenceKind::RigidLimit,
+            ReferenceKind::Rigid,
             // The largest finite push: m g sin(alpha_g) / F underflows to 0, so theta_jam is
             // the wedge, and the closed form decides reach and start as for any push.
             SceneParams {
