@@ -18,6 +18,9 @@ pub enum Swatch {
     LineMarker(LineKind, Marker),
     /// A filled patch of a region colour.
     Patch(RGBColor),
+    /// A line sample with a line kind's dashes in another colour and width (px) than its own
+    /// (e.g. black on a filled map).
+    Stroke(LineKind, RGBColor, u32),
 }
 
 /// One legend entry.
@@ -89,6 +92,9 @@ pub fn draw_legend<DB: DrawingBackend>(
         match e.swatch {
             Swatch::Line(kind) => {
                 style::draw_line(root, &[(x, y), (x + 32, y)], kind, kind.color())?
+            }
+            Swatch::Stroke(kind, c, px) => {
+                style::draw_line_px(root, &[(x, y), (x + 32, y)], kind, c, px)?
             }
             Swatch::Marker(m) => style::draw_marker(root, m, (x + 16, y))?,
             Swatch::LineMarker(kind, m) => {

@@ -32,12 +32,14 @@
 //!   [`ChartSpec`], [`Chart`] and their dispatch. A scene `charts/<name>.toml` is built in by
 //!   `build.rs`; its keys go in charts/README.md.
 //!
-//! Beside the kinds: [`axes`] draws frames and ticks that [`ticks`] places, [`labels`] words
+//! Beside the kinds: [`axes`] draws frames and ticks that [`ticks`] places, [`colorbar`] the colour bar of a
+//! filled map, [`labels`] words
 //! the axes and subtitles, [`contours`] maps the contour crate's geometry to plot space, and
 //! [`data`] holds the data files.
 
 pub mod axes;
 pub mod builtin;
+pub mod colorbar;
 pub mod contour_map;
 pub mod contours;
 pub mod convergence;
@@ -51,6 +53,7 @@ pub mod legend;
 pub(crate) mod models;
 pub mod output;
 pub mod overrides;
+pub mod print;
 pub mod spec;
 pub mod stability;
 pub mod style;
@@ -140,9 +143,8 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
             }
             let mut s = String::new();
             {
-                let root = SVGBackend::with_string(&mut s, (w, h)).into_drawing_area();
-                chart.draw(&root).map_err(|e| draw_err(e.to_string()))?;
-                root.present().map_err(|e| draw_err(e.to_string()))?;
+                let backend = SVGBackend::with_string(&mut s, (w, h));
+                paint(&chart, backend, scene.style).map_err(draw_err)?;
             }
             Ok(Some(s.into_bytes()))
         },
@@ -152,9 +154,8 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
             }
             let mut rgb = vec![0u8; w as usize * h as usize * 3];
             {
-                let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
-                chart.draw(&root).map_err(|e| draw_err(e.to_string()))?;
-                root.present().map_err(|e| draw_err(e.to_string()))?;
+                let backend = BitMapBackend::with_buffer(&mut rgb, (w, h));
+                paint(&chart, backend, scene.style).map_err(draw_err)?;
             }
             output::encode_png(&rgb, w, h).map(Some).map_err(draw_err)
         },
@@ -166,6 +167,24 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
         data: chart.data(scene),
         cells: chart.cells(),
     })
+}
+
+/// Draws `chart` on `backend` in `ink` (through [`print::Grey`] for the print style) and
+/// presents it.
+fn paint<DB: DrawingBackend>(
+    chart: &Chart,
+    backend: DB,
+    ink: print::Ink,
+) -> std::result::Result<(), String> {
+    fn on<DB: DrawingBackend>(chart: &Chart, root: DrawingArea<DB, Shift>) -> DrawResult<DB> {
+        chart.draw(&root)?;
+        root.present()
+    }
+    match ink {
+        print::Ink::Colour => on(chart, backend.into_drawing_area()),
+        print::Ink::Print => on(chart, print::Grey(backend).into_drawing_area()),
+    }
+    .map_err(|e| e.to_string())
 }
 
 #[cfg(test)]

@@ -160,16 +160,7 @@ where
     CT: CoordTranslate,
     CT::From: Clone,
 {
-    let style = color.stroke_width(kind.width());
-    match kind.dashes() {
-        None => area.draw(&PathElement::new(points.to_vec(), style)),
-        Some((dash, gap)) => {
-            for e in DashedLineSeries::new(points.iter().cloned(), dash, gap, style) {
-                area.draw(&e)?;
-            }
-            Ok(())
-        }
-    }
+    draw_line_px(area, points, kind, color, kind.width())
 }
 
 /// Marker shapes for point sets; open and filled variants tell sources apart in greyscale.
@@ -258,5 +249,31 @@ pub fn fmt_num(v: f64, decimals: usize) -> String {
         s[1..].to_string()
     } else {
         s
+    }
+}
+
+/// Draws a polyline like [`draw_line`] with `kind`'s dashes but `width_px` wide (a line that
+/// must stay visible where it runs on a wider one).
+pub fn draw_line_px<DB, CT>(
+    area: &DrawingArea<DB, CT>,
+    points: &[CT::From],
+    kind: LineKind,
+    color: RGBColor,
+    width_px: u32,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>>
+where
+    DB: DrawingBackend,
+    CT: CoordTranslate,
+    CT::From: Clone,
+{
+    let style = color.stroke_width(width_px);
+    match kind.dashes() {
+        None => area.draw(&PathElement::new(points.to_vec(), style)),
+        Some((dash, gap)) => {
+            for e in DashedLineSeries::new(points.iter().cloned(), dash, gap, style) {
+                area.draw(&e)?;
+            }
+            Ok(())
+        }
     }
 }
