@@ -195,7 +195,9 @@ impl Marker {
             Marker::Triangle => OKABE_ITO[6],
             Marker::Square => OKABE_ITO[3],
             Marker::Cross => OKABE_ITO[7],
-            Marker::OpenSquare => OKABE_ITO[1],
+            // Black: around the Table 1 circle and triangle (blue, vermillion) at the same
+            // point, a third hue apart from both.
+            Marker::OpenSquare => OKABE_ITO[0],
             Marker::Plus => OKABE_ITO[2],
             Marker::Diamond => OKABE_ITO[3],
             Marker::OpenDiamond => OKABE_ITO[7],
