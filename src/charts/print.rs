@@ -66,7 +66,10 @@ impl BackendStyle for Recoloured {
     }
 }
 
-fn recolour<S: BackendStyle>(s: &S, grey: fn((u8, u8, u8)) -> (u8, u8, u8)) -> Recoloured {
+/// A colour-to-grey map: [`fill_grey`] or [`stroke_grey`].
+type ToGrey = fn((u8, u8, u8)) -> (u8, u8, u8);
+
+fn recolour<S: BackendStyle>(s: &S, grey: ToGrey) -> Recoloured {
     let c = s.color();
     Recoloured {
         color: BackendColor {
@@ -77,7 +80,7 @@ fn recolour<S: BackendStyle>(s: &S, grey: fn((u8, u8, u8)) -> (u8, u8, u8)) -> R
     }
 }
 
-fn by_fill(fill: bool) -> fn((u8, u8, u8)) -> (u8, u8, u8) {
+fn by_fill(fill: bool) -> ToGrey {
     if fill { fill_grey } else { stroke_grey }
 }
 

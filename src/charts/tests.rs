@@ -327,9 +327,10 @@ fn print_style_draws_greys_only() {
         assert_eq!(scene.style, print::Ink::Print);
         let r = render(&scene, Formats::Both).unwrap();
         let png = r.png.unwrap();
-        let mut reader = png::Decoder::new(std::io::Cursor::new(png))
-            .read_info()
-            .unwrap();
+        let mut decoder = png::Decoder::new(std::io::Cursor::new(png));
+        // An indexed PNG (output::encode_png's smaller form) decoded to RGB.
+        decoder.set_transformations(png::Transformations::EXPAND);
+        let mut reader = decoder.read_info().unwrap();
         let mut buf = vec![0; reader.output_buffer_size()];
         let info = reader.next_frame(&mut buf).unwrap();
         let px = &buf[..info.buffer_size()];
