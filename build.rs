@@ -5,7 +5,10 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 fn main() {
-    let charts = Path::new(env!("CARGO_MANIFEST_DIR")).join("charts");
+    // Read when the script runs, not when it is compiled: a build script compiled in another
+    // checkout (a target/ copied or shared between worktrees) must still read this one's scenes.
+    let manifest_dir = std::env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR");
+    let charts = Path::new(&manifest_dir).join("charts");
     println!("cargo::rerun-if-changed={}", charts.display());
     let mut scenes: Vec<(String, String)> = std::fs::read_dir(&charts)
         .expect("charts/ is readable")

@@ -59,7 +59,8 @@ fn every_scene_key_is_documented() {
     }
     documented_here.extend(
         [
-            "title", "base", "scene", "dynamics", "min_norm", "size", "chart",
+            "title", "base", "style", "colour", "print", "scene", "dynamics", "min_norm", "size",
+            "chart",
         ]
         .map(String::from),
     );

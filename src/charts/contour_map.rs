@@ -13,6 +13,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
+use super::colorbar::ColorBar;
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
 use super::spec::Scene;
@@ -191,6 +192,10 @@ pub struct ContourMap {
     settle_lines: Vec<Paths>,
 }
 
+/// Width of the theta_jam iso-lines in px: as wide as the settle line they may run on
+/// ([`LineKind::Dashed`]), so that drawn over it they stay visible.
+const THETA_LINE_PX: u32 = 2;
+
 /// Polylines or rings in plot space (ln for log axes).
 type Paths = Vec<Vec<(f64, f64)>>;
 
@@ -352,7 +357,17 @@ impl ContourMap {
         let entries = self.legend();
         // One band below the first level, one between each pair, one above the last.
         let colors = style::band_colors(self.spec.x_jam_levels_mm.len() + 1);
-        let chart = axes::band_map(root, &x, &y, &entries, &self.bands, &colors)?;
+        let bar = ColorBar {
+            colors: colors.clone(),
+            levels: self
+                .spec
+                .x_jam_levels_mm
+                .iter()
+                .map(|v| level_text(*v))
+                .collect(),
+            title: "jam position x_jam (mm)".into(),
+        };
+        let chart = axes::band_map(root, &x, &y, &entries, &self.bands, &colors, &bar)?;
         let area = chart.plotting_area();
         let (px, py) = area.get_pixel_range();
         let xr = x.plot_range();
@@ -379,8 +394,10 @@ impl ContourMap {
                 )?;
             }
         }
-        self.draw_theta_lines(root, &chart, &y)?;
+        // The theta_jam lines over the settle line and as wide: near the F -> infinity limit
+        // they run on it (fig7c: 44 deg on the 1 % line) and their dots show on its dashes.
         self.draw_settle_line(root, &chart, &y)?;
+        self.draw_theta_lines(root, &chart, &y)?;
         axes::draw_frame(root, &chart, &x, &y)?;
         let sub = scene_subtitle(&self.params, &[xa.param, ya.param]);
         axes::draw_header(root, &self.title, &sub)?;
@@ -397,11 +414,12 @@ impl ContourMap {
         let levels = &self.spec.theta_jam_levels_deg;
         for (i, (level, paths)) in self.theta_lines.iter().enumerate() {
             for p in paths {
-                style::draw_line(
+                style::draw_line_px(
                     chart.plotting_area(),
                     p,
                     LineKind::Dotted,
                     LineKind::Dotted.color(),
+                    THETA_LINE_PX,
                 )?;
             }
             let frac = 0.95 - 0.06 * (levels.len() - 1 - i) as f64;
@@ -474,11 +492,11 @@ impl ContourMap {
     fn legend(&self) -> Vec<LegendEntry> {
         let mut e = vec![LegendEntry::new(
             Swatch::Line(LineKind::Solid),
-            "x_jam iso-lines (mm), darker = larger x_jam",
+            "x_jam iso-lines (mm), bands as in the colour bar",
         )];
         if !self.spec.theta_jam_levels_deg.is_empty() {
             e.push(LegendEntry::new(
-                Swatch::Line(LineKind::Dotted),
+                Swatch::Stroke(LineKind::Dotted, LineKind::Dotted.color(), THETA_LINE_PX),
                 "θ_jam iso-lines (deg)",
             ));
         }

@@ -8,6 +8,7 @@
 
 use plotters::prelude::*;
 
+use super::print::Ink;
 use super::style::{self, LineKind, Marker};
 use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
 use super::{output, scene_subtitle_with};
@@ -192,8 +193,8 @@ pub fn render(report: &AccuracyReport, scene: &SceneParams) -> Result<(Vec<u8>, 
         scene: "accuracy (wall time)".into(),
         message: m,
     };
-    let svg = output::svg(w, h, 1.0, |root| draw_on(&fig, root)).map_err(err)?;
-    let png = output::png(w, h, 1.0, |root| draw_on(&fig, root)).map_err(err)?;
+    let svg = output::svg(w, h, 1.0, Ink::Colour, |root| draw_on(&fig, root)).map_err(err)?;
+    let png = output::png(w, h, 1.0, Ink::Colour, |root| draw_on(&fig, root)).map_err(err)?;
     Ok((svg, png))
 }
 

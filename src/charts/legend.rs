@@ -18,6 +18,9 @@ pub enum Swatch {
     LineMarker(LineKind, Marker),
     /// A filled patch of a region colour.
     Patch(RGBColor),
+    /// A line sample with a line kind's dashes in another colour and width (px) than its own
+    /// (e.g. black on a filled map).
+    Stroke(LineKind, RGBColor, u32),
 }
 
 /// One legend entry.
@@ -90,6 +93,9 @@ pub fn draw_legend<DB: DrawingBackend>(
             Swatch::Line(kind) => {
                 style::draw_line(root, &[(x, y), (x + 32, y)], kind, kind.color())?
             }
+            Swatch::Stroke(kind, c, px) => {
+                style::draw_line_px(root, &[(x, y), (x + 32, y)], kind, c, px)?
+            }
             Swatch::Marker(m) => style::draw_marker(root, m, (x + 16, y))?,
             Swatch::LineMarker(kind, m) => {
                 style::draw_line(root, &[(x, y), (x + 32, y)], kind, kind.color())?;
@@ -104,6 +110,96 @@ pub fn draw_legend<DB: DrawingBackend>(
             }
         }
         root.draw(&Text::new(e.label.clone(), (x + 40, y), font.clone()))?;
+    }
+    Ok(())
+}
+
+/// Legend entries under a heading, e.g. the paper's numbers apart from the tool's models.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LegendGroup {
+    /// The heading, drawn above the entries and underlined.
+    pub heading: String,
+    /// The entries, one per row.
+    pub entries: Vec<LegendEntry>,
+}
+
+/// Space between two columns of a grouped legend, in px.
+const COLUMN_GAP_PX: i32 = 24;
+
+/// Where each group goes: (x of its column, first row), side by side in columns one entry a
+/// row when they fit in `width` px, one group under the other else.
+fn group_layout<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    groups: &[LegendGroup],
+    width: i32,
+) -> Result<Vec<(i32, i32)>, DrawingAreaErrorKind<DB::ErrorType>> {
+    let font = style::text(style::TICK_PX);
+    let mut widths = Vec::with_capacity(groups.len());
+    for g in groups {
+        let mut w = root.estimate_text_size(&g.heading, &font)?.0 as i32;
+        for e in &g.entries {
+            w = w.max(40 + root.estimate_text_size(&e.label, &font)?.0 as i32);
+        }
+        widths.push(w);
+    }
+    let total = widths.iter().sum::<i32>() + COLUMN_GAP_PX * (groups.len() as i32 - 1);
+    let mut out = Vec::with_capacity(groups.len());
+    let (mut x, mut row) = (0, 0);
+    for (g, w) in groups.iter().zip(widths) {
+        if total <= width {
+            out.push((x, 0));
+            x += w + COLUMN_GAP_PX;
+        } else {
+            out.push((0, row));
+            row += 1 + g.entries.len() as i32;
+        }
+    }
+    Ok(out)
+}
+
+/// Number of rows `groups` take in `width` px (for reserving space).
+pub fn grouped_rows_needed<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    groups: &[LegendGroup],
+    width: i32,
+) -> Result<i32, DrawingAreaErrorKind<DB::ErrorType>> {
+    let at = group_layout(root, groups, width)?;
+    Ok(groups
+        .iter()
+        .zip(at)
+        .map(|(g, (_, row))| row + 1 + g.entries.len() as i32)
+        .max()
+        .unwrap_or(0))
+}
+
+/// Draws `groups` from (left, top) within `width` px: each group's heading, underlined, then
+/// its entries one a row.
+pub fn draw_grouped_legend<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    groups: &[LegendGroup],
+    left: i32,
+    top: i32,
+    width: i32,
+) -> DrawResult<DB> {
+    let font = style::text(style::TICK_PX).pos(Pos::new(HPos::Left, VPos::Center));
+    for (g, (x, row)) in groups.iter().zip(group_layout(root, groups, width)?) {
+        let (x, y) = (left + x, top + row * ROW_PX);
+        root.draw(&Text::new(
+            g.heading.clone(),
+            (x, y + ROW_PX / 2),
+            font.clone(),
+        ))?;
+        let (w, _) = root.estimate_text_size(&g.heading, &style::text(style::TICK_PX))?;
+        let rule = y + ROW_PX / 2 + style::TICK_PX as i32 / 2 + 2;
+        root.draw(&PathElement::new(
+            vec![(x, rule), (x + w as i32, rule)],
+            INK,
+        ))?;
+        for (k, e) in g.entries.iter().enumerate() {
+            // One entry a row: its own wrapped legend of one, as wide as anything.
+            let entry_top = y + (k as i32 + 1) * ROW_PX;
+            draw_legend(root, std::slice::from_ref(e), x, entry_top, i32::MAX / 2)?;
+        }
     }
     Ok(())
 }

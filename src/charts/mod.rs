@@ -32,12 +32,14 @@
 //!   [`ChartSpec`], [`Chart`] and their dispatch. A scene `charts/<name>.toml` is built in by
 //!   `build.rs`; its keys go in charts/README.md.
 //!
-//! Beside the kinds: [`axes`] draws frames and ticks that [`ticks`] places, [`labels`] words
+//! Beside the kinds: [`axes`] draws frames and ticks that [`ticks`] places, [`colorbar`] the colour bar of a
+//! filled map, [`labels`] words
 //! the axes and subtitles, [`contours`] maps the contour crate's geometry to plot space, and
 //! [`data`] holds the data files.
 
 pub mod axes;
 pub mod builtin;
+pub mod colorbar;
 pub mod contour_map;
 pub mod contours;
 pub mod convergence;
@@ -51,6 +53,7 @@ pub mod legend;
 pub(crate) mod models;
 pub mod output;
 pub mod overrides;
+pub mod print;
 pub mod spec;
 pub mod stability;
 pub mod style;
@@ -140,7 +143,7 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
             if !formats.svg() {
                 return Ok(None);
             }
-            output::svg(w, h, scale, |root| {
+            output::svg(w, h, scale, scene.style, |root| {
                 chart.draw(root).map_err(|e| e.to_string())
             })
             .map(Some)
@@ -150,7 +153,7 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
             if !formats.png() {
                 return Ok(None);
             }
-            output::png(w, h, scale, |root| {
+            output::png(w, h, scale, scene.style, |root| {
                 chart.draw(root).map_err(|e| e.to_string())
             })
             .map(Some)

@@ -4,15 +4,18 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use super::print::{Grey, Ink};
 use super::typeset::{Quantise, SvgText, Typeset};
 
-/// The SVG backend as charts see it: text as outlines, everything `scale` times larger.
-pub type SvgArea<'a> = DrawingArea<Typeset<SVGBackend<'a>>, Shift>;
-/// The PNG backend as charts see it: text rasterised, anti-aliasing quantised, scaled.
-pub type PngArea<'a> = DrawingArea<Typeset<Quantise<BitMapBackend<'a>>>, Shift>;
+/// The SVG backend as charts see it: text as outlines, everything `scale` times larger, in the
+/// scene's ink.
+pub type SvgArea<'a> = DrawingArea<Typeset<Grey<SVGBackend<'a>>>, Shift>;
+/// The PNG backend as charts see it: text rasterised, anti-aliasing quantised, scaled, in the
+/// scene's ink.
+pub type PngArea<'a> = DrawingArea<Typeset<Grey<Quantise<BitMapBackend<'a>>>>, Shift>;
 
 /// An SVG `width` x `height` px drawn by `draw` on a drawing `scale` times smaller.
-pub fn svg<F>(width: u32, height: u32, scale: f64, draw: F) -> Result<Vec<u8>, String>
+pub fn svg<F>(width: u32, height: u32, scale: f64, ink: Ink, draw: F) -> Result<Vec<u8>, String>
 where
     F: for<'a> FnOnce(&SvgArea<'a>) -> Result<(), String>,
 {
@@ -20,7 +23,7 @@ where
     let mut s = String::new();
     {
         let backend = SVGBackend::with_string(&mut s, (width, height));
-        let root = Typeset::outlines(backend, scale, runs.clone()).into_drawing_area();
+        let root = Typeset::outlines(Grey(backend, ink), scale, runs.clone()).into_drawing_area();
         draw(&root)?;
         root.present().map_err(|e| e.to_string())?;
     }
@@ -29,14 +32,14 @@ where
 }
 
 /// A PNG `width` x `height` px drawn by `draw` on a drawing `scale` times smaller.
-pub fn png<F>(width: u32, height: u32, scale: f64, draw: F) -> Result<Vec<u8>, String>
+pub fn png<F>(width: u32, height: u32, scale: f64, ink: Ink, draw: F) -> Result<Vec<u8>, String>
 where
     F: for<'a> FnOnce(&PngArea<'a>) -> Result<(), String>,
 {
     let mut rgb = vec![0u8; width as usize * height as usize * 3];
     {
         let backend = Quantise(BitMapBackend::with_buffer(&mut rgb, (width, height)));
-        let root = Typeset::raster(backend, scale).into_drawing_area();
+        let root = Typeset::raster(Grey(backend, ink), scale).into_drawing_area();
         draw(&root)?;
         root.present().map_err(|e| e.to_string())?;
     }

@@ -2,7 +2,7 @@
 //!
 //! A dotted key names its section (`chart.x_axis.count=51`, `dynamics.after_jam_s=0.3`,
 //! `size.width_px=2000`); a bare key is a `[scene]`, `[dynamics]` or `[min_norm]` key, found in
-//! that order (`mu_palm=0.6`), or a top-level key (`title`, `base`). `mu` sets both frictions,
+//! that order (`mu_palm=0.6`), or a top-level key (`title`, `base`, `style`). `mu` sets both frictions,
 //! as the paper's single mu. The value is TOML (`0.6`, `51`, `"log"`, `[1.0, 2.0]`); a bare word
 //! is a string (`scale=log`).
 
@@ -63,7 +63,7 @@ impl std::fmt::Display for Setting {
 }
 
 /// The top-level keys of a scene file that are values, not sections.
-const TOP_LEVEL: &[&str] = &["title", "base"];
+const TOP_LEVEL: &[&str] = &["title", "base", "style"];
 
 /// The full paths a setting writes, e.g. `["scene", "mu_palm"]`.
 fn paths(key: &str, value: &toml::Value) -> Result<Vec<Vec<String>>> {

@@ -27,6 +27,7 @@ use serde::{Deserialize, Serialize};
 
 pub use super::kinds::ChartSpec;
 use super::overrides::{self, Setting};
+use super::print::Ink;
 use crate::config::{
     self, Config, array_for_table, cut_quotes, keyed, not_a_table, parse_toml, seq_for_struct,
 };
@@ -114,6 +115,9 @@ struct SceneFile {
     min_norm: toml::Table,
     #[serde(default)]
     size: Size,
+    /// `style = "colour" | "print"`: the ink (default: colour).
+    #[serde(default)]
+    style: Ink,
     /// Read by kind after the rest ([`read_chart`]), so that a wrong key inside it is named
     /// with its path (serde keeps none inside an internally tagged enum).
     chart: toml::Table,
@@ -136,6 +140,8 @@ pub struct Scene {
     pub dynamics: DynamicsParams,
     /// Picture size.
     pub size: Size,
+    /// The ink: colour, or greys for a black-and-white print (default: colour).
+    pub style: Ink,
     /// Chart kind and settings.
     pub chart: ChartSpec,
 }
@@ -282,6 +288,7 @@ fn parse_scene(
         min_norm,
         dynamics,
         size: file.size,
+        style: file.style,
         chart,
     };
     scene.validate_chart()?;

@@ -66,10 +66,12 @@ pub struct Stability {
     report: StabilityReport,
 }
 
+/// Each class's tint; their greys (luma about 230, 198, 172, 126) differ too, so the classes
+/// stay apart in the print style (`style = "print"`), lightest for correct.
 const FILL: [(Class, RGBColor); 4] = [
-    (Class::Correct, RGBColor(198, 230, 198)),
-    (Class::InaccurateFlagged, RGBColor(250, 214, 140)),
-    (Class::FailedNamed, RGBColor(190, 200, 225)),
+    (Class::Correct, RGBColor(215, 240, 215)),
+    (Class::InaccurateFlagged, RGBColor(230, 165, 60)),
+    (Class::FailedNamed, RGBColor(185, 198, 228)),
     (Class::WrongUnflagged, RGBColor(235, 80, 80)),
 ];
 

@@ -164,16 +164,7 @@ where
     CT: CoordTranslate,
     CT::From: Clone,
 {
-    let style = color.stroke_width(kind.width());
-    match kind.dashes() {
-        None => area.draw(&PathElement::new(points.to_vec(), style)),
-        Some((dash, gap)) => {
-            for e in DashedLineSeries::new(points.iter().cloned(), dash, gap, style) {
-                area.draw(&e)?;
-            }
-            Ok(())
-        }
-    }
+    draw_line_px(area, points, kind, color, kind.width())
 }
 
 /// Marker shapes for point sets; open and filled variants tell sources apart in greyscale.
@@ -208,7 +199,9 @@ impl Marker {
             Marker::Triangle => OKABE_ITO[6],
             Marker::Square => OKABE_ITO[3],
             Marker::Cross => OKABE_ITO[7],
-            Marker::OpenSquare => OKABE_ITO[1],
+            // Black: around the Table 1 circle and triangle (blue, vermillion) at the same
+            // point, a third hue apart from both.
+            Marker::OpenSquare => OKABE_ITO[0],
             Marker::Plus => OKABE_ITO[2],
             Marker::Diamond => OKABE_ITO[3],
             Marker::OpenDiamond => OKABE_ITO[7],
@@ -262,5 +255,31 @@ pub fn fmt_num(v: f64, decimals: usize) -> String {
         s[1..].to_string()
     } else {
         s
+    }
+}
+
+/// Draws a polyline like [`draw_line`] with `kind`'s dashes but `width_px` wide (a line that
+/// must stay visible where it runs on a wider one).
+pub fn draw_line_px<DB, CT>(
+    area: &DrawingArea<DB, CT>,
+    points: &[CT::From],
+    kind: LineKind,
+    color: RGBColor,
+    width_px: u32,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>>
+where
+    DB: DrawingBackend,
+    CT: CoordTranslate,
+    CT::From: Clone,
+{
+    let style = color.stroke_width(width_px);
+    match kind.dashes() {
+        None => area.draw(&PathElement::new(points.to_vec(), style)),
+        Some((dash, gap)) => {
+            for e in DashedLineSeries::new(points.iter().cloned(), dash, gap, style) {
+                area.draw(&e)?;
+            }
+            Ok(())
+        }
     }
 }

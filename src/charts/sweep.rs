@@ -10,7 +10,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::{Deserialize, Serialize};
 
 use super::axes::{self, DrawResult, Margins, PlotAxis};
-use super::legend::{self, LegendEntry, Swatch};
+use super::legend::{self, LegendEntry, LegendGroup, Swatch};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{self, LineKind, Marker};
@@ -156,6 +156,17 @@ pub struct Series {
     pub callout: Option<String>,
 }
 
+impl Series {
+    /// The series' legend entry: its line or marker and its label.
+    fn legend_entry(&self) -> LegendEntry {
+        let sw = match self.style {
+            SeriesStyle::Line(k) => Swatch::Line(k),
+            SeriesStyle::Points(m) => Swatch::Marker(m),
+        };
+        LegendEntry::new(sw, self.label.clone())
+    }
+}
+
 /// The computed sweep.
 #[derive(Debug, Clone)]
 pub struct Sweep {
@@ -215,16 +226,27 @@ impl Sweep {
     }
 
     fn legend(&self) -> Vec<LegendEntry> {
-        self.series
+        self.series.iter().map(Series::legend_entry).collect()
+    }
+
+    /// The legend in two groups when the paper's numbers are drawn beside the models: the
+    /// paper's (layers `paper_*`) and the tool's; None with one group (a plain legend).
+    fn legend_groups(&self) -> Option<Vec<LegendGroup>> {
+        let (paper, ours): (Vec<&Series>, Vec<&Series>) = self
+            .series
             .iter()
-            .map(|s| {
-                let sw = match s.style {
-                    SeriesStyle::Line(k) => Swatch::Line(k),
-                    SeriesStyle::Points(m) => Swatch::Marker(m),
-                };
-                LegendEntry::new(sw, s.label.clone())
-            })
-            .collect()
+            .partition(|s| s.layer.starts_with("paper_"));
+        if paper.is_empty() || ours.is_empty() {
+            return None;
+        }
+        let group = |heading: &str, series: Vec<&Series>| LegendGroup {
+            heading: heading.into(),
+            entries: series.into_iter().map(Series::legend_entry).collect(),
+        };
+        Some(vec![
+            group("this tool's models", ours),
+            group("the paper's numbers", paper),
+        ])
     }
 
     fn panel_axis(&self, panel: SweepPanel) -> PlotAxis {
@@ -250,7 +272,12 @@ impl Sweep {
         let (w, h) = root.dim_in_pixel();
         let (w, h) = (w as i32, h as i32);
         let entries = self.legend();
-        let legend_top = h - 12 - legend::rows_needed(root, &entries, w - 120)? * legend::ROW_PX;
+        let groups = self.legend_groups();
+        let rows = match &groups {
+            Some(g) => legend::grouped_rows_needed(root, g, w - 120)?,
+            None => legend::rows_needed(root, &entries, w - 120)?,
+        };
+        let legend_top = h - 12 - rows * legend::ROW_PX;
         let a = &self.spec.axis;
         let x = PlotAxis::new(a.min, a.max, a.scale, axis_label(a.param));
         let (top, gap, n) = (72, 78, self.spec.panels.len() as i32);
@@ -287,7 +314,10 @@ impl Sweep {
         }
         let sub = scene_subtitle_with(self.source(), &self.params, &[a.param]);
         axes::draw_header(root, &self.title, &sub)?;
-        legend::draw_legend(root, &entries, 60, legend_top, w - 120)
+        match &groups {
+            Some(g) => legend::draw_grouped_legend(root, g, 60, legend_top, w - 120),
+            None => legend::draw_legend(root, &entries, 60, legend_top, w - 120),
+        }
     }
 }
 

@@ -119,9 +119,7 @@ pub fn series(
         SweepLayer::PaperTable1 => table1(),
         SweepLayer::PaperAdams => vec![Series {
             layer: "paper_adams",
-            label: format!(
-                "paper's Adams simulation: x_jam = {ADAMS_X_JAM_MM_MU_0_4} mm at μ = 0.4"
-            ),
+            label: format!("Adams simulation: x_jam = {ADAMS_X_JAM_MM_MU_0_4} mm at μ = 0.4"),
             style: SeriesStyle::Points(Marker::Square),
             // The paper prints x only; its theta would be 2 atan(r/x), not a printed number.
             points: vec![point(0.4, Some(ADAMS_X_JAM_MM_MU_0_4), None)],
@@ -202,7 +200,7 @@ fn min_norm(scene: &Scene, models: &dyn Models, formulation: Formulation) -> Res
     Ok(match formulation {
         Formulation::Translational => Series {
             layer: "min_norm",
-            label: "min-norm model, translational joint (paper's formulation)".into(),
+            label: "min-norm model, translational joint (as the paper)".into(),
             style: SeriesStyle::Points(Marker::OpenSquare),
             points,
             flat_names: None,
@@ -286,7 +284,7 @@ fn table1() -> Vec<Series> {
     let mut out = vec![
         Series {
             layer: "paper_table1_force_analysis",
-            label: "paper Table 1, force analysis".into(),
+            label: "Table 1, force analysis".into(),
             style: SeriesStyle::Points(Marker::Circle),
             points: force,
             flat_names: None,
@@ -294,7 +292,7 @@ fn table1() -> Vec<Series> {
         },
         Series {
             layer: "paper_table1_min_norm",
-            label: "paper Table 1, minimum norm".into(),
+            label: "Table 1, minimum norm".into(),
             style: SeriesStyle::Points(Marker::Triangle),
             points: min_norm,
             flat_names: None,
@@ -311,14 +309,17 @@ fn table1() -> Vec<Series> {
         out.push(Series {
             layer: "paper_table1_erratum",
             label: format!(
-                "Table 1 erratum at μ = {:.2}: x = {:.2} mm printed, r·cot({theta}°/2) = {consistent:.2} mm",
+                "Table 1 erratum at μ = {:.2}: x = {:.2} mm printed",
                 e.at,
                 e.x_jam_mm.unwrap_or(0.0)
             ),
             style: SeriesStyle::Points(Marker::Cross),
             points: erratum,
             flat_names: None,
-            callout: Some(format!("erratum: printed {:.2} mm, consistent {consistent:.2} mm", e.x_jam_mm.unwrap_or(0.0))),
+            callout: Some(format!(
+                "erratum: printed {:.2} mm, consistent {consistent:.2} mm",
+                e.x_jam_mm.unwrap_or(0.0)
+            )),
         });
     }
     out

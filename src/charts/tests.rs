@@ -317,3 +317,36 @@ fn rolling_points_lie_on_the_rigid_limit() {
     assert_eq!(series[0].points.len(), crate::paper::TABLE1.len());
     assert!(worst < 1e-6, "worst difference {worst:e} (mm or deg)");
 }
+
+/// `style = "print"` draws in greys only: every pixel of the PNG has r = g = b, and the SVG
+/// names no colour but greys (the capacity map has bands, hatching, dashed and dotted lines).
+#[test]
+fn print_style_draws_greys_only() {
+    let settings = ["style=print".parse().unwrap()];
+    for name in ["fig7b", "vlocator-capacity"] {
+        let scene = SceneSource::BuiltIn(name.into()).load(&settings).unwrap();
+        assert_eq!(scene.style, print::Ink::Print);
+        let r = render(&scene, Formats::Both).unwrap();
+        let png = r.png.unwrap();
+        let mut decoder = png::Decoder::new(std::io::Cursor::new(png));
+        // An indexed PNG (output::encode_png's smaller form) decoded to RGB.
+        decoder.set_transformations(png::Transformations::EXPAND);
+        let mut reader = decoder.read_info().unwrap();
+        let mut buf = vec![0; reader.output_buffer_size()];
+        let info = reader.next_frame(&mut buf).unwrap();
+        let px = &buf[..info.buffer_size()];
+        assert!(
+            px.chunks_exact(3).all(|p| p[0] == p[1] && p[1] == p[2]),
+            "{name}: a pixel is not grey"
+        );
+        let svg = String::from_utf8(r.svg.unwrap()).unwrap();
+        for rgb in svg.split("#").skip(1).filter_map(|s| s.get(..6)) {
+            if rgb.chars().all(|c| c.is_ascii_hexdigit()) {
+                assert!(
+                    rgb[..2] == rgb[2..4] && rgb[2..4] == rgb[4..],
+                    "{name}: colour #{rgb}"
+                );
+            }
+        }
+    }
+}

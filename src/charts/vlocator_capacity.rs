@@ -10,6 +10,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
+use super::colorbar::ColorBar;
 use super::legend::{self, LegendEntry, Swatch};
 use super::spec::Scene;
 use super::style::{self, INK, LineKind, PAPER};
@@ -217,8 +218,18 @@ impl VlocatorCapacity {
         let entries = self.legend();
         // Darker = holds more; the unbounded region stays white.
         let mut colors = style::band_colors(self.spec.levels_over_w.len() + 1);
+        let bar = ColorBar {
+            colors: colors.clone(),
+            levels: self
+                .spec
+                .levels_over_w
+                .iter()
+                .map(|v| level_text(*v))
+                .collect(),
+            title: "holding capacity P_max (multiples of W)".into(),
+        };
         colors.push(PAPER);
-        let chart = axes::band_map(root, &x, &y, &entries, &self.bands, &colors)?;
+        let chart = axes::band_map(root, &x, &y, &entries, &self.bands, &colors, &bar)?;
         let area = chart.plotting_area();
         for p in &self.unbounded_edge {
             style::draw_line(area, p, LineKind::Dashed, INK)?;
@@ -361,12 +372,7 @@ impl VlocatorCapacity {
     }
 
     fn legend(&self) -> Vec<LegendEntry> {
-        let greys = style::band_colors(self.spec.levels_over_w.len() + 1);
         vec![
-            LegendEntry::new(
-                Swatch::Patch(greys[greys.len() / 2]),
-                "holding capacity P_max / W: darker holds more",
-            ),
             LegendEntry::new(
                 Swatch::Line(LineKind::Solid),
                 "P_max iso-lines (multiples of W)",
@@ -380,7 +386,7 @@ impl VlocatorCapacity {
                 "hatched: the V self-locks, the part can jam",
             ),
             LegendEntry::new(
-                Swatch::Line(LineKind::Dashed),
+                Swatch::Stroke(LineKind::Dashed, INK, LineKind::Dashed.width()),
                 "standard V-blocks, with P_max / W for a sideways load (φ = 0)",
             ),
         ]

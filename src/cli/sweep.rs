@@ -139,6 +139,7 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
         min_norm: config.min_norm,
         dynamics: config.dynamics,
         size: Size::default(),
+        style: Default::default(),
         chart,
     };
     scene.validate_chart()?;
