@@ -17,6 +17,8 @@ use plotters_backend::{
 };
 use serde::{Deserialize, Serialize};
 
+use super::typeset::Restyled;
+
 /// The scene's top-level `style`: the ink every part of the chart is drawn in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -62,27 +64,12 @@ pub fn stroke_grey(c: (u8, u8, u8)) -> (u8, u8, u8) {
     (v, v, v)
 }
 
-/// A style with its colour replaced.
-struct Recoloured {
-    color: BackendColor,
-    width: u32,
-}
-
-impl BackendStyle for Recoloured {
-    fn color(&self) -> BackendColor {
-        self.color
-    }
-    fn stroke_width(&self) -> u32 {
-        self.width
-    }
-}
-
 /// A colour-to-grey map: [`fill_grey`] or [`stroke_grey`].
 type ToGrey = fn((u8, u8, u8)) -> (u8, u8, u8);
 
-fn recolour<S: BackendStyle>(s: &S, grey: ToGrey) -> Recoloured {
+fn recolour<S: BackendStyle>(s: &S, grey: ToGrey) -> Restyled {
     let c = s.color();
-    Recoloured {
+    Restyled {
         color: BackendColor {
             alpha: c.alpha,
             rgb: grey(c.rgb),

@@ -155,10 +155,12 @@ enum TextOut {
     Outlines(Rc<RefCell<SvgText>>),
 }
 
-/// A style with the colour of another and a given stroke width.
-struct Restyled {
-    color: BackendColor,
-    width: u32,
+/// A style with a given colour and stroke width (also the print style's recoloured strokes).
+pub(super) struct Restyled {
+    /// The colour.
+    pub color: BackendColor,
+    /// The stroke width in px.
+    pub width: u32,
 }
 
 impl BackendStyle for Restyled {
