@@ -93,7 +93,7 @@ fn unknown_scene_exits_2_and_lists_the_known_ones() {
         "{err}"
     );
     assert!(
-        err.contains("accuracy, fig3, fig4, fig5, fig6, fig7a, fig7b, fig7c, stability"),
+        err.contains("fig3, fig4, fig5, fig6, fig7a, fig7b, fig7c, integration-error, stability"),
         "{err}"
     );
     assert!(

@@ -60,6 +60,17 @@ fn accuracy_writes_every_output_with_one_schema() {
     ] {
         assert!(dir.path().join("acc").join(name).is_file(), "{name}");
     }
+    // Regression (issue 12): the built-in scene of the integrators' work-precision chart was
+    // named `accuracy`, so `render` wrote an accuracy.csv of another schema than this one.
+    let scenes = stdout(&jamchart(dir.path(), &["scenes"]));
+    for entry in std::fs::read_dir(dir.path().join("acc")).unwrap() {
+        let name = entry.unwrap().file_name().into_string().unwrap();
+        let stem = name.split('.').next().unwrap();
+        assert!(
+            !scenes.lines().any(|l| l.split_whitespace().next() == Some(stem)),
+            "a scene writes {stem}.* too:\n{scenes}"
+        );
+    }
     let json: Value = serde_json::from_str(
         &std::fs::read_to_string(dir.path().join("acc/accuracy.json")).unwrap(),
     )

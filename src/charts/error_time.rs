@@ -4,7 +4,7 @@
 //! Wall time differs from machine to machine and run to run, so this chart is drawn from the
 //! measured table by `jamchart accuracy --out-dir` and is not a scene: it is kept out of the
 //! byte-identity check (`charts/SHA256SUMS`). The counted-cost chart of the integrators is the
-//! scene `accuracy` ([`super::work_precision`]).
+//! scene `integration-error` ([`super::work_precision`]).
 
 use plotters::prelude::*;
 
@@ -125,7 +125,7 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
     };
     let mut notes = vec![
         "Wall time is measured (median of the runs), so this picture differs between machines \
-         and is not hash-checked; the counted-cost chart is the scene 'accuracy'."
+         and is not hash-checked; the counted-cost chart is the scene 'integration-error'."
             .to_string(),
     ];
     for r in &report.references {

@@ -96,7 +96,6 @@ fn jam_map_without_regions_evaluates_no_grid() {
 fn every_committed_scene_loads() {
     let names = scene_names(&charts_dir()).unwrap();
     for want in [
-        "accuracy",
         "fig3",
         "fig4",
         "fig5",
@@ -104,6 +103,7 @@ fn every_committed_scene_loads() {
         "fig7a",
         "fig7b",
         "fig7c",
+        "integration-error",
         "stability",
     ] {
         assert!(
@@ -236,7 +236,7 @@ fn every_scene_makes_only_the_model_calls_it_draws() {
             "fig4" => [1, 1, 0, 0, 0],
             "fig5" => [0, 0, 0, 1, 0],
             "fig6" => [crate::paper::TABLE1.len(), 0, 0, sim_points, 0],
-            "accuracy" => [0, 0, 1, 0, 1],
+            "integration-error" => [0, 0, 1, 0, 1],
             // Every case through the two min-norm paths, the two integrators and the nonsmooth
             // method.
             "stability" => {
