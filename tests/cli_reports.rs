@@ -67,7 +67,9 @@ fn accuracy_writes_every_output_with_one_schema() {
         let name = entry.unwrap().file_name().into_string().unwrap();
         let stem = name.split('.').next().unwrap();
         assert!(
-            !scenes.lines().any(|l| l.split_whitespace().next() == Some(stem)),
+            !scenes
+                .lines()
+                .any(|l| l.split_whitespace().next() == Some(stem)),
             "a scene writes {stem}.* too:\n{scenes}"
         );
     }

@@ -225,3 +225,49 @@ fn the_rigid_limit_has_one_name_everywhere() {
         "{x_rigid:?}"
     );
 }
+
+/// The longest array anywhere in `v`.
+fn longest_array(v: &serde_json::Value) -> usize {
+    match v {
+        serde_json::Value::Array(a) => a.iter().map(longest_array).max().unwrap_or(0).max(a.len()),
+        serde_json::Value::Object(o) => o.values().map(longest_array).max().unwrap_or(0),
+        _ => 0,
+    }
+}
+
+/// Every map writes its cells once, as long CSV (one row per cell, the columns its JSON lists),
+/// and its JSON does not repeat the grid. Regression (issue 12): vlocator-capacity.json held a
+/// flat `iy * nx + ix` grid of 115,239 numbers and had no CSV.
+#[test]
+fn every_map_writes_its_cells_as_long_csv_listed_in_its_json() {
+    let dir = tempfile::tempdir().unwrap();
+    let maps = ["fig3", "fig7c", "vlocator-capacity"];
+    let mut args = vec!["render", "--format", "svg"];
+    args.extend(maps);
+    let out = jamchart(dir.path(), &args);
+    assert!(out.status.success(), "{}", stderr(&out));
+    for name in maps {
+        let read = |ext: &str| {
+            std::fs::read_to_string(dir.path().join("out").join(format!("{name}.{ext}"))).unwrap()
+        };
+        let doc: serde_json::Value = serde_json::from_str(&read("json")).unwrap();
+        let csv = read("csv");
+        let cells = &doc["cells"];
+        assert_eq!(cells["file"], format!("{name}.csv"));
+        let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+        let listed: Vec<&str> = cells["columns"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| c.as_str().unwrap())
+            .collect();
+        assert_eq!(listed, header, "{name}");
+        let (nx, ny) = (cells["nx"].as_u64().unwrap(), cells["ny"].as_u64().unwrap());
+        assert_eq!(csv.lines().count() as u64, 1 + nx * ny, "{name}");
+        let longest = longest_array(&doc);
+        assert!(
+            longest < (nx * ny / 4) as usize,
+            "{name}.json has an array of {longest}"
+        );
+    }
+}

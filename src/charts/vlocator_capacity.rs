@@ -11,10 +11,12 @@ use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
 use super::colorbar::ColorBar;
+use super::data::{CellAxes, axis_cells_csv, axis_cells_json};
 use super::legend::{self, LegendEntry, Swatch};
 use super::spec::Scene;
 use super::style::{self, INK, LineKind, PAPER};
 use super::{DataFile, grid_lines, grid_polygons};
+use crate::csv_out::Column;
 use crate::error::{Error, Result};
 use crate::grid::{Grid, GridAxis, LocatorParam};
 use crate::locator::{self, LocatorParams, Rotation};
@@ -99,6 +101,10 @@ impl super::kinds::Kind for VlocatorCapacitySpec {
         _models: &dyn super::models::Models,
     ) -> Result<VlocatorCapacity> {
         VlocatorCapacity::compute(scene, self)
+    }
+
+    fn cells(chart: &VlocatorCapacity) -> Option<DataFile> {
+        Some(chart.cells())
     }
 }
 
@@ -195,13 +201,28 @@ impl VlocatorCapacity {
         DataFile::json(&json!({
             "scene": scene.name, "title": self.title, "locator": self.spec.locator,
             "x_axis": self.spec.x_axis, "y_axis": self.spec.y_axis,
-            "index": "iy * nx + ix (x fastest)",
-            "nx": self.x_values.len(), "ny": self.y_values.len(),
             "weight_n": self.spec.locator.weight_n(),
             "self_locking_below_included_angle_deg": self.locking_deg,
             "levels_over_w": self.spec.levels_over_w,
-            "p_max_over_w": self.p_max_over_w,
+            "cells": axis_cells_json(&scene.name, self.axes(), &self.columns()),
         }))
+    }
+
+    /// The cells as long-format CSV: the two locator parameters and P_max / W (empty where
+    /// every load is held).
+    pub fn cells(&self) -> DataFile {
+        axis_cells_csv(self.axes(), &self.columns())
+    }
+
+    fn axes(&self) -> CellAxes<'_> {
+        [
+            (self.spec.x_axis.param.as_str(), &self.x_values[..]),
+            (self.spec.y_axis.param.as_str(), &self.y_values[..]),
+        ]
+    }
+
+    fn columns(&self) -> Vec<(&'static str, Column<'_>)> {
+        vec![("p_max_over_w", Column::Sparse(&self.p_max_over_w))]
     }
 
     /// Draws the map on `root`.
