@@ -80,12 +80,7 @@ fn chart_csv_columns_are_json_names() {
     assert_eq!(map[..2], axes.map(|a| a.as_str().unwrap().to_string()));
     let cells = &doc["cells"];
     assert_eq!(cells["file"], "fig7c.csv");
-    let listed: Vec<&str> = cells["columns"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|c| c.as_str().unwrap())
-        .collect();
+    let listed = listed_columns(cells);
     assert_eq!(
         listed, map,
         "fig7c.json lists other columns than fig7c.csv has"
@@ -226,6 +221,12 @@ fn the_rigid_limit_has_one_name_everywhere() {
     );
 }
 
+/// The columns a map's JSON says its cells CSV has.
+fn listed_columns(cells: &serde_json::Value) -> Vec<&str> {
+    let columns = cells["columns"].as_array().unwrap();
+    columns.iter().map(|c| c.as_str().unwrap()).collect()
+}
+
 /// The longest array anywhere in `v`.
 fn longest_array(v: &serde_json::Value) -> usize {
     match v {
@@ -255,13 +256,7 @@ fn every_map_writes_its_cells_as_long_csv_listed_in_its_json() {
         let cells = &doc["cells"];
         assert_eq!(cells["file"], format!("{name}.csv"));
         let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
-        let listed: Vec<&str> = cells["columns"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|c| c.as_str().unwrap())
-            .collect();
-        assert_eq!(listed, header, "{name}");
+        assert_eq!(listed_columns(cells), header, "{name}");
         let (nx, ny) = (cells["nx"].as_u64().unwrap(), cells["ny"].as_u64().unwrap());
         assert_eq!(csv.lines().count() as u64, 1 + nx * ny, "{name}");
         let longest = longest_array(&doc);
