@@ -30,7 +30,12 @@ fn render_all(threads: usize) -> Vec<Rendered> {
             .iter()
             .map(|n| {
                 let scene = charts::load_scene(&dir, n).expect("scene loads");
-                charts::render(&scene, Formats::Both).expect("scene renders")
+                let r = charts::render(&scene, Formats::Both).expect("scene renders");
+                // `render` checks the paths it plans before computing: they are the ones written.
+                let mut written = vec![r.data.extension];
+                written.extend(r.cells.as_ref().map(|c| c.extension));
+                assert_eq!(written, scene.chart.data_extensions(), "{n}");
+                r
             })
             .collect()
     })

@@ -93,7 +93,9 @@ fn unknown_scene_exits_2_and_lists_the_known_ones() {
         "{err}"
     );
     assert!(
-        err.contains("fig3, fig4, fig5, fig6, fig7a, fig7b, fig7c, integration-error, stability"),
+        err.contains(
+            "fig3, fig4, fig5, fig6, fig7a, fig7b, fig7c, integration-error, stability-matrix"
+        ),
         "{err}"
     );
     assert!(

@@ -6,6 +6,23 @@ use serde_json::Value;
 mod cli_util;
 use cli_util::{jamchart, stderr, stdout};
 
+/// Regression (issue 12): the built-in scenes of the integrators' work-precision chart and of
+/// the stability matrix were named `accuracy` and `stability`, so `render` wrote an
+/// accuracy.csv and a stability.json of other schemas than the reports' files of those names.
+fn no_scene_writes_a_file_of(dir: &std::path::Path, report_dir: &str) {
+    let scenes = stdout(&jamchart(dir, &["scenes"]));
+    for entry in std::fs::read_dir(dir.join(report_dir)).unwrap() {
+        let name = entry.unwrap().file_name().into_string().unwrap();
+        let stem = name.split('.').next().unwrap();
+        assert!(
+            !scenes
+                .lines()
+                .any(|l| l.split_whitespace().next() == Some(stem)),
+            "a scene writes {stem}.* too:\n{scenes}"
+        );
+    }
+}
+
 /// A small accuracy run writes its table, CSV, JSON, map CSV and wall-time chart; the CSV has
 /// one header and one row per source, every row through the port against its reference.
 #[test]
@@ -60,19 +77,7 @@ fn accuracy_writes_every_output_with_one_schema() {
     ] {
         assert!(dir.path().join("acc").join(name).is_file(), "{name}");
     }
-    // Regression (issue 12): the built-in scene of the integrators' work-precision chart was
-    // named `accuracy`, so `render` wrote an accuracy.csv of another schema than this one.
-    let scenes = stdout(&jamchart(dir.path(), &["scenes"]));
-    for entry in std::fs::read_dir(dir.path().join("acc")).unwrap() {
-        let name = entry.unwrap().file_name().into_string().unwrap();
-        let stem = name.split('.').next().unwrap();
-        assert!(
-            !scenes
-                .lines()
-                .any(|l| l.split_whitespace().next() == Some(stem)),
-            "a scene writes {stem}.* too:\n{scenes}"
-        );
-    }
+    no_scene_writes_a_file_of(dir.path(), "acc");
     let json: Value = serde_json::from_str(
         &std::fs::read_to_string(dir.path().join("acc/accuracy.json")).unwrap(),
     )
@@ -180,6 +185,7 @@ fn stability_runs_the_named_cases_and_refuses_an_unknown_one() {
         "{csv}"
     );
     assert!(dir.path().join("st/stability.md").is_file());
+    no_scene_writes_a_file_of(dir.path(), "st");
 
     let o = jamchart(dir.path(), &["stability", "--cases", "paper,stiff"]);
     assert_eq!(o.status.code(), Some(2));

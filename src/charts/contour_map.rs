@@ -56,6 +56,7 @@ pub struct ContourMapSpec {
 const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
 
 impl super::kinds::Kind for ContourMapSpec {
+    const CELLS: bool = true;
     type Chart = ContourMap;
 
     /// Checks the axes and levels.

@@ -68,6 +68,7 @@ fn all_layers() -> Vec<JamMapLayer> {
 const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
 
 impl super::kinds::Kind for JamMapSpec {
+    const CELLS: bool = true;
     type Chart = JamMap;
 
     fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridParam)> {

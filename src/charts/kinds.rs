@@ -49,6 +49,9 @@ pub(crate) trait Kind: Sized + DeserializeOwned + Serialize {
     /// Computes what the chart draws; min-norm programs and simulations go through `models`.
     fn compute(&self, scene: &Scene, models: &dyn Models) -> Result<Self::Chart>;
 
+    /// Whether the chart may write its cells as long-format CSV beside its JSON (a map).
+    const CELLS: bool = false;
+
     /// A map's cells as long-format CSV, beside its JSON (None by default).
     fn cells(_chart: &Self::Chart) -> Option<DataFile> {
         None
@@ -87,6 +90,17 @@ macro_rules! chart_kinds {
                 match self {
                     $(ChartSpec::$variant(_) => $data,)+
                 }
+            }
+
+            /// The extensions of the data files the chart may write: its data, then a
+            /// map's cells (`csv` beside `json`).
+            pub fn data_extensions(&self) -> Vec<&'static str> {
+                let cells = match self {
+                    $(ChartSpec::$variant(_) => <$spec as Kind>::CELLS,)+
+                };
+                let mut exts = vec![self.data_extension()];
+                exts.extend(cells.then_some("csv"));
+                exts
             }
 
             pub(crate) fn param_axes(&self) -> Vec<(&'static str, GridParam)> {
@@ -194,5 +208,5 @@ chart_kinds! {
     /// Optimum included angle of a V-locator against load direction and load.
     VlocatorOptimum("vlocator_optimum", "json", vlocator_optimum::VlocatorOptimumSpec => vlocator_optimum::VlocatorOptimum),
     /// The stability matrix: case by method, coloured by class.
-    Stability("stability", "csv", stability::StabilitySpec => stability::Stability),
+    Stability("stability", "json", stability::StabilitySpec => stability::Stability),
 }

@@ -104,7 +104,7 @@ fn every_committed_scene_loads() {
         "fig7b",
         "fig7c",
         "integration-error",
-        "stability",
+        "stability-matrix",
     ] {
         assert!(
             names.iter().any(|n| n == want),
@@ -239,7 +239,7 @@ fn every_scene_makes_only_the_model_calls_it_draws() {
             "integration-error" => [0, 0, 1, 0, 1],
             // Every case through the two min-norm paths, the two integrators and the nonsmooth
             // method.
-            "stability" => {
+            "stability-matrix" => {
                 let n = crate::study::stability::cases(&crate::config::Config::default()).len();
                 [2 * n, 0, 0, 3 * n, 0]
             }

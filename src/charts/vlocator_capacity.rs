@@ -49,6 +49,7 @@ pub struct VlocatorCapacitySpec {
 const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
 
 impl super::kinds::Kind for VlocatorCapacitySpec {
+    const CELLS: bool = true;
     type Chart = VlocatorCapacity;
 
     /// Checks the axes and levels (and the locator at the grid's corners).

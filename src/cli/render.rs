@@ -155,8 +155,7 @@ pub fn output_paths(
     chart: &charts::ChartSpec,
     formats: Formats,
 ) -> Vec<PathBuf> {
-    let mut exts = vec![chart.data_extension()];
-    exts.extend((chart.data_extension() == "json").then_some("csv"));
+    let mut exts = chart.data_extensions();
     exts.extend(formats.svg().then_some("svg"));
     exts.extend(formats.png().then_some("png"));
     exts.iter()

@@ -38,7 +38,7 @@ pub struct StabilityArgs {
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]
     pub format: TableFormat,
     /// Also write stability.md, stability.csv and stability.json here (the chart is the scene
-    /// `stability`: jamchart render stability).
+    /// `stability-matrix`: jamchart render stability-matrix).
     #[arg(long, value_name = "DIR")]
     pub out_dir: Option<PathBuf>,
 }
