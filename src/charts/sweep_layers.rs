@@ -153,13 +153,15 @@ fn jam_point(mu: f64, status: JamStatus, x: Option<f64>, theta: Option<f64>) -> 
 /// represent the scene, a cross-check refused the answer) would be drawn as nothing: the
 /// render fails instead, naming the scene, the model (`model`) and the first point's reason, as
 /// a time series does. A layer where the model answers "no jam" is physics and stays empty.
+/// Where it failed at some points only, the second value is a note for the chart naming them,
+/// so that a gap is never read as "no jam".
 fn model_points(
     scene: &Scene,
     models: &dyn Models,
     spec: &ModelSpec,
     mu: &[f64],
     model: &'static str,
-) -> Result<Vec<SeriesPoint>> {
+) -> Result<(Vec<SeriesPoint>, Option<String>)> {
     let answers = grid::at_values(&scene.params, GridParam::Mu, mu, |p| {
         let s = models.solve(spec, p)?;
         let failure = study::why(&s).filter(|w| !matches!(w, Why::NoJam { .. }));
@@ -183,7 +185,18 @@ fn model_points(
             ),
         });
     }
-    Ok(answers.into_iter().map(|(p, _)| p).collect())
+    let missing: Vec<String> = answers
+        .iter()
+        .filter(|a| failed(a))
+        .map(|(p, _)| p.at.to_string())
+        .collect();
+    let note = (!missing.is_empty()).then(|| {
+        format!(
+            "{model}: no answer at μ = {} (jamchart solve says why)",
+            missing.join(", ")
+        )
+    });
+    Ok((answers.into_iter().map(|(p, _)| p).collect(), note))
 }
 
 /// Min-norm points at the Table 1 mu values.
@@ -196,7 +209,8 @@ fn min_norm(scene: &Scene, models: &dyn Models, formulation: Formulation) -> Res
         Formulation::Translational => "min-norm program",
         Formulation::Rolling => "min-norm program (rolling)",
     };
-    let points = model_points(scene, models, &ModelSpec::MinNorm(s), &table1_mu(), model)?;
+    let (points, callout) =
+        model_points(scene, models, &ModelSpec::MinNorm(s), &table1_mu(), model)?;
     Ok(match formulation {
         Formulation::Translational => Series {
             layer: "min_norm",
@@ -204,7 +218,7 @@ fn min_norm(scene: &Scene, models: &dyn Models, formulation: Formulation) -> Res
             style: SeriesStyle::Points(Marker::OpenSquare),
             points,
             flat_names: None,
-            callout: None,
+            callout,
         },
         Formulation::Rolling => Series {
             layer: "min_norm_rolling",
@@ -212,7 +226,7 @@ fn min_norm(scene: &Scene, models: &dyn Models, formulation: Formulation) -> Res
             style: SeriesStyle::Points(Marker::Plus),
             points,
             flat_names: None,
-            callout: None,
+            callout,
         },
     })
 }
@@ -231,7 +245,7 @@ fn simulation(scene: &Scene, models: &dyn Models, drive: Drive) -> Result<Series
         Drive::Motion => "simulation (motion drive)",
         Drive::Force => "simulation (force drive)",
     };
-    let points = model_points(scene, models, &spec, &SIMULATION_MU, model)?;
+    let (points, callout) = model_points(scene, models, &spec, &SIMULATION_MU, model)?;
     Ok(match drive {
         Drive::Motion => Series {
             layer: "simulation_motion",
@@ -239,7 +253,7 @@ fn simulation(scene: &Scene, models: &dyn Models, drive: Drive) -> Result<Series
             style: SeriesStyle::Points(Marker::Diamond),
             points,
             flat_names: None,
-            callout: None,
+            callout,
         },
         Drive::Force => Series {
             layer: "simulation_force",
@@ -247,7 +261,7 @@ fn simulation(scene: &Scene, models: &dyn Models, drive: Drive) -> Result<Series
             style: SeriesStyle::Points(Marker::OpenDiamond),
             points,
             flat_names: None,
-            callout: None,
+            callout,
         },
     })
 }

@@ -155,7 +155,9 @@ fn settle_line_without_force_on_x_is_refused() {
     load_scene(dir.path(), "good").unwrap();
 }
 
-/// Counts the model calls of a chart, delegating to the models themselves.
+/// Counts the model calls of a chart, delegating to the models themselves; with
+/// `fail_dynamics_below_mu`, every simulation below that mu answers that it cannot run the
+/// scene instead.
 #[derive(Default)]
 struct Counting {
     min_norm: AtomicUsize,
@@ -163,6 +165,7 @@ struct Counting {
     tolerance_studies: AtomicUsize,
     simulations: AtomicUsize,
     accuracy_studies: AtomicUsize,
+    fail_dynamics_below_mu: Option<f64>,
 }
 
 impl Counting {
@@ -186,7 +189,24 @@ impl Models for Counting {
     fn solve(&self, spec: &ModelSpec, p: &SceneParams) -> Result<Solution> {
         match spec.kind() {
             ModelKind::MinNorm => bump(&self.min_norm),
-            ModelKind::Dynamics => bump(&self.simulations),
+            ModelKind::Dynamics => {
+                bump(&self.simulations);
+                if self
+                    .fail_dynamics_below_mu
+                    .is_some_and(|mu| p.mu_ground < mu)
+                {
+                    return Ok(Solution {
+                        model: ModelKind::Dynamics,
+                        status: crate::model::JamStatus::OutsideModel,
+                        theta_jam_deg: None,
+                        x_jam_mm: None,
+                        elapsed_s: 0.0,
+                        detail: crate::models::Detail::Outside(
+                            crate::models::OutsideModel::NeedsMass { mass_kg: 0.0 },
+                        ),
+                    });
+                }
+            }
             // The closed form is cheap; it is not what the scene principle guards.
             ModelKind::Statics => {}
         }
@@ -349,4 +369,32 @@ fn print_style_draws_greys_only() {
             }
         }
     }
+}
+
+/// Regression: a sweep layer whose model failed at some of its points drew a gap that read as
+/// "no jam there". The chart now names those points beside the layer.
+#[test]
+fn a_sweep_layer_that_failed_at_some_points_names_them() {
+    let scene = load_scene(&charts_dir(), "fig6").unwrap();
+    let ChartSpec::Sweep(spec) = &scene.chart else {
+        panic!("fig6 is a sweep")
+    };
+    use sweep::SweepLayer::{SimulationForce, SimulationMotion};
+    let failing = Counting {
+        fail_dynamics_below_mu: Some(0.2),
+        ..Counting::default()
+    };
+    for layer in [SimulationMotion, SimulationForce] {
+        let s = &sweep_layers::series(layer, spec, &scene, &failing).unwrap()[0];
+        let note = s.callout.as_deref().unwrap_or_default();
+        assert!(
+            note.contains("no answer at μ = 0.175 ("),
+            "{}: {note}",
+            s.layer
+        );
+        assert!(s.points.iter().any(|p| p.x_jam_mm.is_some()), "{}", s.layer);
+    }
+    // Where the model answers everywhere there is no note.
+    let s = &sweep_layers::series(SimulationMotion, spec, &scene, &Live).unwrap()[0];
+    assert_eq!(s.callout, None);
 }
