@@ -215,6 +215,23 @@ impl Solution {
     }
 }
 
+/// Why model `kind` does not represent `scene`, if it does not: a push starting above
+/// [`MAX_START_ANGLE_DEG`] lifts the disc (every model), and the dynamics need a mass. The one
+/// rule [`solve`] and the reports' references apply.
+pub fn outside(kind: ModelKind, scene: &SceneParams) -> Option<OutsideModel> {
+    if scene.start_angle_deg > MAX_START_ANGLE_DEG {
+        Some(OutsideModel::PalmLiftsDisc {
+            start_angle_deg: scene.start_angle_deg,
+        })
+    } else if kind == ModelKind::Dynamics && scene.mass_kg <= 0.0 {
+        Some(OutsideModel::NeedsMass {
+            mass_kg: scene.mass_kg,
+        })
+    } else {
+        None
+    }
+}
+
 /// Solves `scene` with the model of `spec`.
 ///
 /// Validates the scene and the model's settings first; `Err` only for invalid input. A model
@@ -223,20 +240,8 @@ pub fn solve(spec: &ModelSpec, scene: &SceneParams) -> Result<Solution> {
     scene.validate()?;
     spec.validate()?;
     let t0 = Instant::now();
-    let outside = if scene.start_angle_deg > MAX_START_ANGLE_DEG {
-        Some(OutsideModel::PalmLiftsDisc {
-            start_angle_deg: scene.start_angle_deg,
-        })
-    } else if spec.kind() == ModelKind::Dynamics && scene.mass_kg <= 0.0 {
-        Some(OutsideModel::NeedsMass {
-            mass_kg: scene.mass_kg,
-        })
-    } else {
-        None
-    };
     let (status, theta_jam_deg, x_jam_mm, detail) = match spec {
-        _ if outside.is_some() => {
-            let why = outside.expect("checked");
+        _ if let Some(why) = outside(spec.kind(), scene) => {
             (JamStatus::OutsideModel, None, None, Detail::Outside(why))
         }
         ModelSpec::Statics => {

@@ -257,8 +257,9 @@ pub fn reference(scene: &SceneParams, drive: Option<Drive>) -> Reference {
         ),
         Some(Drive::Force) | None => (ReferenceKind::ClosedForm, *scene),
     };
-    // Above 90 deg the palm lifts the disc: outside every model, the reference's too.
-    if scene.start_angle_deg > crate::models::MAX_START_ANGLE_DEG {
+    // Where the scene is outside the closed form (a push above 90 deg lifts the disc), the
+    // reference is outside too.
+    if crate::models::outside(ModelKind::Statics, scene).is_some() {
         return Reference {
             kind,
             status: JamStatus::OutsideModel,
