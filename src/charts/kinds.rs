@@ -84,21 +84,13 @@ macro_rules! chart_kinds {
                 }
             }
 
-            /// The extension of the data file behind this kind of chart: `json` for maps,
-            /// `csv` else.
-            pub fn data_extension(&self) -> &'static str {
-                match self {
-                    $(ChartSpec::$variant(_) => $data,)+
-                }
-            }
-
-            /// The extensions of the data files the chart may write: its data, then a
-            /// map's cells (`csv` beside `json`).
+            /// The extensions of the data files the chart may write: its data (`json` for
+            /// maps and tables, `csv` else), then a map's cells (`csv` beside `json`).
             pub fn data_extensions(&self) -> Vec<&'static str> {
-                let cells = match self {
-                    $(ChartSpec::$variant(_) => <$spec as Kind>::CELLS,)+
+                let (data, cells) = match self {
+                    $(ChartSpec::$variant(_) => ($data, <$spec as Kind>::CELLS),)+
                 };
-                let mut exts = vec![self.data_extension()];
+                let mut exts = vec![data];
                 exts.extend(cells.then_some("csv"));
                 exts
             }
