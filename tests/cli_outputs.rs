@@ -28,6 +28,25 @@ fn mkfifo(p: &Path) {
     assert!(Command::new("mkfifo").arg(p).status().unwrap().success());
 }
 
+/// `accuracy` at its smallest: one tolerance of one integrator, one run, no map.
+const SMALL_ACCURACY: &[&str] = &[
+    "accuracy",
+    "--tolerances",
+    "1e-3",
+    "--runs",
+    "1",
+    "--min-norm-tolerances",
+    "none",
+    "--map-cells",
+    "0",
+    "--penetrations",
+    "none",
+    "--methods",
+    "radau5",
+    "--nonsmooth-steps",
+    "none",
+];
+
 /// One command per output kind, writing `target` (a path under `dir`) as one of its outputs.
 fn commands(target: &str) -> Vec<Vec<String>> {
     let s = |v: &[&str]| v.iter().map(|x| x.to_string()).collect::<Vec<String>>();
@@ -49,25 +68,7 @@ fn commands(target: &str) -> Vec<Vec<String>> {
             "--scenes-dir",
             &scenes_dir(),
         ]),
-        s(&[
-            "accuracy",
-            "--tolerances",
-            "1e-3",
-            "--runs",
-            "1",
-            "--min-norm-tolerances",
-            "none",
-            "--map-cells",
-            "0",
-            "--penetrations",
-            "none",
-            "--methods",
-            "radau5",
-            "--nonsmooth-steps",
-            "none",
-            "--out-dir",
-            dir,
-        ]),
+        s(&[SMALL_ACCURACY, &["--out-dir", dir]].concat()),
     ]
 }
 
@@ -176,30 +177,10 @@ fn output_streams_are_written_through() {
 /// fails and the folder is as it was.
 #[test]
 fn a_failed_command_leaves_the_output_folder_as_it_found_it() {
+    let accuracy = [SMALL_ACCURACY, &["--out-dir", "o"]].concat();
     let cases: [(&[&str], &str); 2] = [
         (&["render", "fig7a", "fig7b", "--out", "o"], "o/fig7b.png"),
-        (
-            &[
-                "accuracy",
-                "--tolerances",
-                "1e-3",
-                "--runs",
-                "1",
-                "--min-norm-tolerances",
-                "none",
-                "--map-cells",
-                "0",
-                "--penetrations",
-                "none",
-                "--methods",
-                "radau5",
-                "--nonsmooth-steps",
-                "none",
-                "--out-dir",
-                "o",
-            ],
-            "o/accuracy.json",
-        ),
+        (&accuracy, "o/accuracy.json"),
     ];
     for (args, squat) in cases {
         let dir = tempfile::tempdir().unwrap();
