@@ -206,8 +206,7 @@ pub fn band_map<'a, 'b, DB: DrawingBackend>(
 where
     'a: 'b,
 {
-    let (w, _) = root.dim_in_pixel();
-    let rows = legend::rows_needed(root, entries, w as i32 - 120)?;
+    let rows = legend::rows_needed(root, entries)?;
     let m = Margins {
         top: 70,
         bottom: 75 + (rows * legend::ROW_PX) as u32,

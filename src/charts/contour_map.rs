@@ -351,7 +351,6 @@ impl ContourMap {
 
     /// Draws the map on `root`.
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
-        let (w, _) = root.dim_in_pixel();
         let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
         let x = PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param));
         let y = PlotAxis::new(ya.min, ya.max, ya.scale, axis_label(ya.param));
@@ -402,7 +401,7 @@ impl ContourMap {
         axes::draw_frame(root, &chart, &x, &y)?;
         let sub = scene_subtitle(&self.params, &[xa.param, ya.param]);
         axes::draw_header(root, &self.title, &sub)?;
-        legend::draw_legend(root, &entries, 60, py.end + 62, w as i32 - 120)
+        legend::draw_legend(root, &entries, py.end + 62)
     }
 
     /// Dotted theta_jam iso-lines, labelled near the top, staggered so close lines stay legible.

@@ -252,9 +252,8 @@ impl JamMap {
     /// Draws the map on `root`.
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
         let (x, y) = self.axes();
-        let (w, _) = root.dim_in_pixel();
         let entries = self.legend();
-        let rows = legend::rows_needed(root, &entries, w as i32 - 120)?;
+        let rows = legend::rows_needed(root, &entries)?;
         let right = if self.spec.has(JamMapLayer::PositionScale) {
             110
         } else {
@@ -287,7 +286,7 @@ impl JamMap {
         let sub = scene_subtitle(&self.params, &[self.spec.x_axis.param]);
         axes::draw_header(root, &self.title, &sub)?;
         let (_, py) = chart.plotting_area().get_pixel_range();
-        legend::draw_legend(root, &entries, 60, py.end + 62, w as i32 - 120)
+        legend::draw_legend(root, &entries, py.end + 62)
     }
 
     /// "SLIDE" top left and "JAM" bottom right: where each region lies for every map whose

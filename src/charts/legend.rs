@@ -45,13 +45,20 @@ impl LegendEntry {
 /// Height in px of one legend row.
 pub const ROW_PX: i32 = 24;
 
-/// Number of rows `entries` take when wrapped into `width` px (for reserving space).
+/// Legends (and notes) sit under the plot, inset this far from each side of the picture, in px.
+pub const INSET_PX: i32 = 60;
+
+/// The width a legend under the plot wraps in: the picture's width less the two insets.
+pub fn wrap_width<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>) -> i32 {
+    root.dim_in_pixel().0 as i32 - 2 * INSET_PX
+}
+
+/// Number of rows `entries` take under the plot (for reserving space).
 pub fn rows_needed<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     entries: &[LegendEntry],
-    width: i32,
 ) -> Result<i32, DrawingAreaErrorKind<DB::ErrorType>> {
-    Ok(layout(root, entries, 0, width)?
+    Ok(layout(root, entries, 0, wrap_width(root))?
         .last()
         .map_or(0, |p| p.1 + 1))
 }
@@ -78,8 +85,17 @@ fn layout<DB: DrawingBackend>(
     Ok(out)
 }
 
-/// Draws `entries` wrapped in rows starting at (left, top), within `width` px.
+/// Draws `entries` under the plot from `top` (px), inset [`INSET_PX`] on each side, wrapped in rows.
 pub fn draw_legend<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    entries: &[LegendEntry],
+    top: i32,
+) -> DrawResult<DB> {
+    draw_at(root, entries, INSET_PX, top, wrap_width(root))
+}
+
+/// Draws `entries` wrapped in rows starting at (left, top), within `width` px.
+fn draw_at<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     entries: &[LegendEntry],
     left: i32,
@@ -161,9 +177,8 @@ fn group_layout<DB: DrawingBackend>(
 pub fn grouped_rows_needed<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     groups: &[LegendGroup],
-    width: i32,
 ) -> Result<i32, DrawingAreaErrorKind<DB::ErrorType>> {
-    let at = group_layout(root, groups, width)?;
+    let at = group_layout(root, groups, wrap_width(root))?;
     Ok(groups
         .iter()
         .zip(at)
@@ -177,10 +192,9 @@ pub fn grouped_rows_needed<DB: DrawingBackend>(
 pub fn draw_grouped_legend<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     groups: &[LegendGroup],
-    left: i32,
     top: i32,
-    width: i32,
 ) -> DrawResult<DB> {
+    let (left, width) = (INSET_PX, wrap_width(root));
     let font = style::text(style::TICK_PX).pos(Pos::new(HPos::Left, VPos::Center));
     for (g, (x, row)) in groups.iter().zip(group_layout(root, groups, width)?) {
         let (x, y) = (left + x, top + row * ROW_PX);
@@ -198,7 +212,7 @@ pub fn draw_grouped_legend<DB: DrawingBackend>(
         for (k, e) in g.entries.iter().enumerate() {
             // One entry a row: its own wrapped legend of one, as wide as anything.
             let entry_top = y + (k as i32 + 1) * ROW_PX;
-            draw_legend(root, std::slice::from_ref(e), x, entry_top, i32::MAX / 2)?;
+            draw_at(root, std::slice::from_ref(e), x, entry_top, i32::MAX / 2)?;
         }
     }
     Ok(())

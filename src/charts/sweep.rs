@@ -269,13 +269,12 @@ impl Sweep {
 
     /// Draws the panels on `root`.
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
-        let (w, h) = root.dim_in_pixel();
-        let (w, h) = (w as i32, h as i32);
+        let h = root.dim_in_pixel().1 as i32;
         let entries = self.legend();
         let groups = self.legend_groups();
         let rows = match &groups {
-            Some(g) => legend::grouped_rows_needed(root, g, w - 120)?,
-            None => legend::rows_needed(root, &entries, w - 120)?,
+            Some(g) => legend::grouped_rows_needed(root, g)?,
+            None => legend::rows_needed(root, &entries)?,
         };
         let legend_top = h - 12 - rows * legend::ROW_PX;
         let a = &self.spec.axis;
@@ -315,8 +314,8 @@ impl Sweep {
         let sub = scene_subtitle_with(self.source(), &self.params, &[a.param]);
         axes::draw_header(root, &self.title, &sub)?;
         match &groups {
-            Some(g) => legend::draw_grouped_legend(root, g, 60, legend_top, w - 120),
-            None => legend::draw_legend(root, &entries, 60, legend_top, w - 120),
+            Some(g) => legend::draw_grouped_legend(root, g, legend_top),
+            None => legend::draw_legend(root, &entries, legend_top),
         }
     }
 }

@@ -228,7 +228,6 @@ impl VlocatorCapacity {
 
     /// Draws the map on `root`.
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
-        let (w, _) = root.dim_in_pixel();
         let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
         let x = PlotAxis::new(xa.min, xa.max, xa.scale, "included angle γ of the V (deg)");
         let y = PlotAxis::new(
@@ -290,7 +289,7 @@ impl VlocatorCapacity {
             &locator_subtitle(&self.spec.locator, "load at any angle", true),
         )?;
         let (_, py) = area.get_pixel_range();
-        legend::draw_legend(root, &entries, 60, py.end + 62, w as i32 - 120)
+        legend::draw_legend(root, &entries, py.end + 62)
     }
 
     /// The self-locking band, hatched, labelled with its bound.

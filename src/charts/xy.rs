@@ -137,12 +137,11 @@ impl Figure {
 
     /// Draws the figure on `root`.
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
-        let (w, h) = root.dim_in_pixel();
-        let (w, h) = (w as i32, h as i32);
+        let h = root.dim_in_pixel().1 as i32;
         let entries = self.legend();
-        let legend_top = h - 12 - legend::rows_needed(root, &entries, w - 120)? * legend::ROW_PX;
+        let legend_top = h - 12 - legend::rows_needed(root, &entries)? * legend::ROW_PX;
         let note_px = style::NOTE_PX as i32 + 6;
-        let notes = wrap(root, &self.notes, w - 120)?;
+        let notes = wrap(root, &self.notes, legend::wrap_width(root))?;
         let notes_top = legend_top - 6 - notes.len() as i32 * note_px;
         let (top, n) = (72, self.panels.len().max(1) as i32);
         let panel_h = (notes_top - 64 - top - GAP_PX * (n - 1)) / n;
@@ -228,7 +227,7 @@ impl Figure {
             let y = notes_top + i as i32 * note_px;
             root.draw(&Text::new(line.clone(), (60, y), note.clone()))?;
         }
-        legend::draw_legend(root, &entries, 60, legend_top, w - 120)
+        legend::draw_legend(root, &entries, legend_top)
     }
 }
 
