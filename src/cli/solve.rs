@@ -253,10 +253,13 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
                 }
             }
         }
-        if r.elapsed_s < 1e-3 {
-            let _ = writeln!(s, "  took {:.1} us", r.elapsed_s * 1e6);
-        } else {
-            let _ = writeln!(s, "  took {:.1} ms", r.elapsed_s * 1e3);
+        // A model that did not run took no time worth a line.
+        if !matches!(r.detail, Detail::Outside(_)) {
+            let (t, unit) = match r.elapsed_s {
+                t if t < 1e-3 => (t * 1e6, "us"),
+                t => (t * 1e3, "ms"),
+            };
+            let _ = writeln!(s, "  took {t:.1} {unit}");
         }
     }
     if answers.len() > 1 {
