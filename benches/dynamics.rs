@@ -11,7 +11,7 @@ mod common;
 
 use jamchart::JamStatus;
 use jamchart::dynamics::{Drive, DynamicsParams, Method, simulate};
-use jamchart::model::SceneParams;
+use jamchart::scene::SceneParams;
 
 const TARGET: f64 = 1e-4;
 const RUNS: usize = 21;
@@ -50,16 +50,25 @@ fn main() {
     println!("|---|---|---:|---:|---|---:|---:|---:|");
     for (name, k) in scenarios {
         let base = DynamicsParams {
-            stiffness_n_per_mm_e: k,
-            verify: false,
+            contact: jamchart::dynamics::ContactLaw {
+                stiffness_n_per_mm_e: k,
+                ..Default::default()
+            },
+            verification: jamchart::dynamics::Verification {
+                verify: false,
+                ..Default::default()
+            },
             ..Default::default()
         };
         let reference = |m: Method| {
             x_jam(
                 &scene,
                 &DynamicsParams {
-                    method: m,
-                    rtol: 1e-10,
+                    integrator: jamchart::dynamics::IntegratorSettings {
+                        method: m,
+                        rtol: 1e-10,
+                        ..base.integrator
+                    },
                     ..base
                 },
             )
@@ -83,8 +92,11 @@ fn main() {
                     x_jam(
                         &scene,
                         &DynamicsParams {
-                            method,
-                            rtol,
+                            integrator: jamchart::dynamics::IntegratorSettings {
+                                method,
+                                rtol,
+                                ..base.integrator
+                            },
                             ..base
                         },
                     )
@@ -102,12 +114,24 @@ fn main() {
                 continue;
             };
             let p = DynamicsParams {
-                method,
-                rtol: LADDER[i],
+                integrator: jamchart::dynamics::IntegratorSettings {
+                    method,
+                    rtol: LADDER[i],
+                    ..base.integrator
+                },
                 ..base
             };
             let t = median_ms(&scene, &p);
-            let tv = median_ms(&scene, &DynamicsParams { verify: true, ..p });
+            let tv = median_ms(
+                &scene,
+                &DynamicsParams {
+                    verification: jamchart::dynamics::Verification {
+                        verify: true,
+                        ..p.verification
+                    },
+                    ..p
+                },
+            );
             let x = x_jam(&scene, &p).unwrap_or(f64::NAN);
             println!(
                 "| {name} | {} | {:e} | {x:.6} | {} at 1e-10 | {:.1e} | {t:.3} | {tv:.3} |",
@@ -137,9 +161,18 @@ fn nonsmooth() {
         for mu in [0.15, 0.3, 0.45] {
             let scene = SceneParams::default().with_mu(mu);
             let p = DynamicsParams {
-                method: Method::Nonsmooth,
-                drive,
-                verify: false,
+                drive: jamchart::dynamics::DriveSettings {
+                    mode: drive,
+                    ..Default::default()
+                },
+                integrator: jamchart::dynamics::IntegratorSettings {
+                    method: Method::Nonsmooth,
+                    ..Default::default()
+                },
+                verification: jamchart::dynamics::Verification {
+                    verify: false,
+                    ..Default::default()
+                },
                 ..Default::default()
             };
             let s = simulate(&scene, &p, None).expect("valid");
@@ -151,7 +184,16 @@ fn nonsmooth() {
             };
             let x = s.x_jam_mm.unwrap_or(f64::NAN);
             let t = median_ms(&scene, &p);
-            let tv = median_ms(&scene, &DynamicsParams { verify: true, ..p });
+            let tv = median_ms(
+                &scene,
+                &DynamicsParams {
+                    verification: jamchart::dynamics::Verification {
+                        verify: true,
+                        ..p.verification
+                    },
+                    ..p
+                },
+            );
             println!(
                 "| default step {} deg | {mu} | {} | {} | {x:.4} | {reference:.4} | {:+.2e} | {t:.3} | {tv:.3} |",
                 p.nonsmooth_step_deg(),

@@ -9,8 +9,8 @@ mod common;
 use jamchart::minnorm::{
     Formulation, HoldStatus, MinNormSettings, QpSettings, palm, palm_problem, solve,
 };
-use jamchart::model::SceneParams;
 use jamchart::paper::TABLE1;
+use jamchart::scene::SceneParams;
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::TestRunner;
 use rayon::prelude::*;

@@ -3,6 +3,7 @@
 //! Every section is optional and every key has a default, so a partial file works; an unknown key
 //! is refused with the file, line and column.
 
+mod merge;
 mod read;
 
 use std::path::Path;
@@ -12,7 +13,8 @@ use serde::{Deserialize, Serialize};
 use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
 use crate::minnorm::MinNormSettings;
-use crate::model::SceneParams;
+use crate::scene::SceneParams;
+pub(crate) use merge::{Refusal, overlay, read_section};
 pub use read::{
     array_for_table, cut_quotes, key_line_column, keyed, not_a_table, parse_toml, seq_for_struct,
 };
@@ -36,6 +38,12 @@ impl Config {
         self.scene.validate()?;
         self.min_norm.validate()?;
         self.dynamics.validate()
+    }
+
+    /// This config with `over` (shaped like a parameter file: `{scene: {...}, dynamics:
+    /// {contact: {...}}}`) merged in: what flags and `--set` change. Not validated here.
+    pub fn overlay(&self, over: &toml::Table) -> Result<Config> {
+        overlay(self, over, "")
     }
 
     /// Reads and parses a TOML file (it is not validated here: flags may still override it).
@@ -112,14 +120,17 @@ mod tests {
                 "c.toml:2:13: scene.radius_mm = \"ten\": ",
             ),
             (
-                "[dynamics]\ndrive = 3\n",
-                "c.toml:2:9: dynamics.drive = 3: ",
+                "[dynamics.drive]\nmode = 3\n",
+                "c.toml:2:8: dynamics.drive.mode = 3: ",
             ),
             (
                 "[min_norm.qp]\nmax_iter = -1\n",
                 "min_norm.qp.max_iter = -1: ",
             ),
-            ("[dynamics]\nverify = 1.5\n", "dynamics.verify = 1.5: "),
+            (
+                "[dynamics.verification]\nverify = 1.5\n",
+                "dynamics.verification.verify = 1.5: ",
+            ),
         ] {
             let msg = err(text);
             assert!(

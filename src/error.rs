@@ -49,6 +49,16 @@ pub enum Error {
         limit_bytes: u64,
     },
 
+    /// A settings table (a scene file's section, `--set`, a flag) the settings refuse: an unknown
+    /// key, a wrong type, an array for a table.
+    #[error("{message}")]
+    Refused {
+        /// The dotted key at fault, e.g. `dynamics.contact.stiffness_n_per_mm_e`.
+        key: String,
+        /// `key = value: what is expected`, naming the key's right place when it is misplaced.
+        message: String,
+    },
+
     /// A file could not be read or written; `action` says which ("read", "write", ...).
     #[error("cannot {action} {path}: {source}")]
     Io {

@@ -63,7 +63,7 @@
 //! itself) and add one line to the list of kinds in `charts/kinds.rs`, the chart kinds' one
 //! registration point; its scene `charts/<name>.toml` is built in by `build.rs`.
 //!
-//! Outcomes are data ([`model::JamStatus`], with typed reasons in each model's solution);
+//! Outcomes are data ([`scene::JamStatus`], with typed reasons in each model's solution);
 //! [`error::Error`] is only for misuse. A push starting above 90 deg is outside every model
 //! ([`models::OutsideModel::PalmLiftsDisc`]): the palm's push points upwards there and can lift
 //! the disc, while every model keeps it on the ground.
@@ -110,6 +110,9 @@
 
 #![warn(missing_docs)]
 
+#[macro_use]
+mod settings;
+
 mod atomic;
 pub mod charts;
 mod cli;
@@ -121,12 +124,12 @@ pub mod grid;
 pub mod limits;
 pub mod locator;
 pub mod minnorm;
-pub mod model;
 pub mod models;
 pub mod paper;
+pub mod scene;
 pub mod statics;
 pub mod study;
 
 pub use cli::main as run_cli;
 pub use error::{Error, Result};
-pub use model::{JamStatus, SceneParams};
+pub use scene::{JamStatus, SceneParams};

@@ -36,7 +36,7 @@ use serde::{Deserialize, Serialize};
 use crate::dynamics::{self, DynamicsParams, DynamicsSolution};
 use crate::error::Result;
 use crate::minnorm::{MinNormSettings, PalmSolution, palm};
-use crate::model::{JamStatus, SceneParams};
+use crate::scene::{JamStatus, SceneParams};
 use crate::statics::{self, StaticsSolution};
 
 /// Which model answers: its name in scene files (`model = "min_norm"`), flags and output.

@@ -17,12 +17,28 @@
 //! ```text
 //! theta_jam = alpha_g + alpha_p + asin(m g sin(alpha_g) / F),   x_jam = r cot(theta_jam / 2).
 //! ```
+//!
+//! ## The palm's thickness
+//!
+//! A real palm's contact face lies h off the hinge line (half the bar's thickness,
+//! `palm_offset_mm`). The face is parallel to the hinge line, so the push, its friction and
+//! the ground reaction keep their directions at every palm angle: Eq. 1 and theta_jam do not
+//! change. Only where the disc sits does: its centre (x, r) lies r + h from the hinge line,
+//! x sin(theta) - r cos(theta) = r + h, so
+//!
+//! ```text
+//! x = r cot(theta / 2) + h / sin(theta),   s_B = x cos(theta) + r sin(theta) = x - h tan(theta / 2)
+//! ```
+//!
+//! with s_B the contact's distance from the hinge along the palm, on which the palm's reach is
+//! judged. For mu = 0.4 and h = 0.5 mm the rigid limit moves from r / mu = 25.000 mm to
+//! 25.725 mm; the paper's Adams reading with its 1 mm bars, 25.58 mm, lies between.
 
 use std::f64::consts::FRAC_PI_2;
 
 use serde::Serialize;
 
-use crate::model::{JamStatus, SceneParams, disc_position_mm};
+use crate::scene::{JamStatus, SceneParams};
 
 /// Ground reaction at contact A for a palm angle, from the corrected Eq. 1.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -67,13 +83,15 @@ pub struct StaticsSolution {
     /// or the jam is beyond reach).
     #[serde(skip)] // shared by every model: the record carries it
     pub theta_jam_deg: Option<f64>,
-    /// Disc position at the jam in mm, r cot(theta_jam/2) (None as for `theta_jam_deg`).
+    /// Disc position at the jam in mm, r cot(theta_jam/2) + h / sin(theta_jam) (None as for
+    /// `theta_jam_deg`).
     #[serde(skip)] // shared by every model: the record carries it
     pub x_jam_mm: Option<f64>,
     /// The F -> infinity limit of theta_jam in degrees, alpha_g + alpha_p: what a palm driven by
     /// prescribed motion reaches (the classic self-locking wedge).
     pub theta_rigid_deg: f64,
-    /// The F -> infinity limit of x_jam in mm, r cot((alpha_g + alpha_p)/2); r/mu for equal frictions.
+    /// The F -> infinity limit of x_jam in mm, r cot(theta_rigid/2) + h / sin(theta_rigid); r/mu
+    /// for equal frictions and no palm offset.
     pub x_rigid_mm: Option<f64>,
     /// Palm angle in degrees above which R_n < 0 (the palm lifts the disc), None if it never does.
     pub lift_off_above_deg: Option<f64>,
@@ -95,12 +113,13 @@ pub fn theta_jam_rad(p: &SceneParams) -> f64 {
 
 /// The F -> infinity limit of the jam: `(theta_rigid_deg, x_rigid_mm)`.
 ///
-/// theta_rigid = alpha_g + alpha_p (the self-locking wedge), x_rigid = r cot(theta_rigid / 2)
-/// in mm (r/mu for equal frictions); None when the wedge is closed (frictionless) or x_rigid is
-/// not finite. Depends on mu_ground, mu_palm and radius_mm only.
+/// theta_rigid = alpha_g + alpha_p (the self-locking wedge), x_rigid = r cot(theta_rigid / 2) +
+/// h / sin(theta_rigid) in mm (r/mu for equal frictions and h = 0); None when the wedge is
+/// closed (frictionless) or x_rigid is not finite. Depends on mu_ground, mu_palm, radius_mm and
+/// palm_offset_mm only.
 pub fn rigid_limit(p: &SceneParams) -> (f64, Option<f64>) {
     let wedge = p.alpha_ground() + p.alpha_palm();
-    let x_rigid = finite_or_none(disc_position_mm(p.radius_mm, wedge)).filter(|_| wedge > 0.0);
+    let x_rigid = finite_or_none(p.disc_position_mm(wedge)).filter(|_| wedge > 0.0);
     (wedge.to_degrees(), x_rigid)
 }
 
@@ -122,7 +141,7 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
     };
 
     // A disc that starts beyond the palm's end is never touched, whatever the friction.
-    if disc_position_mm(p.radius_mm, start) > p.palm_length_mm {
+    if p.contact_distance_mm(start) > p.palm_length_mm {
         out.status = JamStatus::BeyondReach;
         return out;
     }
@@ -143,12 +162,13 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
     if theta_jam >= start || margin_n(p, start) >= 0.0 {
         out.status = JamStatus::JammedAtStart;
         out.theta_jam_deg = Some(p.start_angle_deg);
-        out.x_jam_mm = finite_or_none(disc_position_mm(p.radius_mm, start));
+        out.x_jam_mm = finite_or_none(p.disc_position_mm(start));
         return out;
     }
-    let x_jam = disc_position_mm(p.radius_mm, theta_jam);
+    let x_jam = p.disc_position_mm(theta_jam);
     // x_jam may overflow to +inf for a vanishing wedge angle; that is beyond any palm.
-    if x_jam.is_nan() || x_jam > p.palm_length_mm {
+    let s_b = p.contact_distance_mm(theta_jam);
+    if x_jam.is_nan() || s_b.is_nan() || s_b > p.palm_length_mm {
         out.status = JamStatus::BeyondReach;
         return out;
     }

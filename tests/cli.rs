@@ -194,7 +194,7 @@ fn help_answers_with_units_and_defaults() {
     let h = stdout(&o);
     for needle in [
         "--radius <MM>",
-        "[default: 10]",
+        "[default: 10 mm]",
         "--force <N>",
         "--model",
         "min-norm",

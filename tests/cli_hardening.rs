@@ -72,7 +72,7 @@ fn scene_limits_are_found_by_estimate_not_by_allocation_failure() {
     scene(
         d,
         "series",
-        "[dynamics]\nomega_deg_s = 1e-6\n[chart]\nkind = \"time_series\"\nseries_dt_s = 1e-5\n",
+        "[dynamics.drive]\nomega_deg_s = 1e-6\n[chart]\nkind = \"time_series\"\nseries_dt_s = 1e-5\n",
     );
     for (name, key) in [
         ("map", "chart.x_axis.count * chart.y_axis.count"),
@@ -239,7 +239,7 @@ fn a_chart_whose_model_failed_fails_the_render_naming_scene_and_reason() {
 }
 
 /// A contact so stiff that every simulation gives up at t = 0.
-const STIFF: &str = "[dynamics]\nstiffness_n_per_mm_e = 1e300\n";
+const STIFF: &str = "[dynamics.contact]\nstiffness_n_per_mm_e = 1e300\n";
 
 /// Regression (issue 13, leftover of "a chart whose model failed"): a fig6-like sweep whose
 /// simulation layer failed at every point (`[dynamics] stiffness_n_per_mm_e = 1e300`: the

@@ -1,18 +1,17 @@
 //! The nonsmooth method (rigid contacts, exact Coulomb friction) against the closed form and
 //! against the regularised model in its stiff limit (issue 10).
 
-use jamchart::dynamics::nonsmooth::DiscMotion;
+use jamchart::dynamics::DiscMotion;
 use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Method, simulate};
-use jamchart::model::SceneParams;
+use jamchart::scene::SceneParams;
 use jamchart::{JamStatus, statics};
 
 fn nonsmooth(drive: Drive, omega_deg_s: f64) -> DynamicsParams {
-    DynamicsParams {
-        method: Method::Nonsmooth,
-        drive,
-        omega_deg_s,
-        ..Default::default()
-    }
+    let mut p = DynamicsParams::default();
+    p.integrator.method = Method::Nonsmooth;
+    p.drive.mode = drive;
+    p.drive.omega_deg_s = omega_deg_s;
+    p
 }
 
 fn x_jam(s: &DynamicsSolution) -> f64 {
@@ -52,8 +51,14 @@ fn the_push_at_lock_up_grows_as_the_step_shrinks() {
     let scene = SceneParams::default();
     let push = |step: f64| {
         let p = DynamicsParams {
-            nonsmooth_step_deg: Some(step),
-            verify: false,
+            integrator: jamchart::dynamics::IntegratorSettings {
+                nonsmooth_step_deg: Some(step),
+                ..nonsmooth(Drive::Motion, 30.0).integrator
+            },
+            verification: jamchart::dynamics::Verification {
+                verify: false,
+                ..nonsmooth(Drive::Motion, 30.0).verification
+            },
             ..nonsmooth(Drive::Motion, 30.0)
         };
         simulate(&scene, &p, None).unwrap().lock_up.unwrap().push_n
@@ -91,7 +96,7 @@ fn force_drive_at_slow_omega_jams_at_the_closed_form() {
 #[test]
 fn a_jammed_disc_does_not_creep() {
     let p = DynamicsParams {
-        after_jam_s: 0.5,
+        series: jamchart::dynamics::SeriesSettings { after_jam_s: 0.5 },
         ..nonsmooth(Drive::Force, 30.0)
     };
     let s = simulate(&SceneParams::default(), &p, Some(1e-3)).unwrap();
@@ -129,9 +134,15 @@ fn nonsmooth_and_stiff_regularised_agree() {
         let scene = SceneParams::default().with_mu(mu);
         let ns = x_jam(&simulate(&scene, &nonsmooth(drive, omega), None).unwrap());
         let radau = DynamicsParams {
-            stiffness_n_per_mm_e: stiff,
-            drive,
-            omega_deg_s: omega,
+            drive: jamchart::dynamics::DriveSettings {
+                mode: drive,
+                omega_deg_s: omega,
+                ..Default::default()
+            },
+            contact: jamchart::dynamics::ContactLaw {
+                stiffness_n_per_mm_e: stiff,
+                ..Default::default()
+            },
             ..Default::default()
         };
         let rg = x_jam(&simulate(&scene, &radau, None).unwrap());
@@ -153,10 +164,9 @@ fn nonsmooth_and_stiff_regularised_agree() {
 }
 
 fn rolling(drive: Drive, omega_deg_s: f64) -> DynamicsParams {
-    DynamicsParams {
-        disc: DiscMotion::Rolls,
-        ..nonsmooth(drive, omega_deg_s)
-    }
+    let mut p = nonsmooth(drive, omega_deg_s);
+    p.integrator.disc = DiscMotion::Rolls;
+    p
 }
 
 /// The disc free to roll (issue 10): with equal frictions mu = 0.15 ... 0.45 it rolls on the
@@ -240,12 +250,24 @@ fn force_drive_agrees_with_the_stiff_regularised_disc_where_it_stops() {
         let scene = SceneParams::default().with_mu(mu);
         let ns = x_jam(&simulate(&scene, &nonsmooth(Drive::Force, omega), None).unwrap());
         let radau = DynamicsParams {
-            stiffness_n_per_mm_e: stiff,
-            drive: Drive::Force,
-            omega_deg_s: omega,
-            rtol: 1e-8,
-            verify: false,
-            after_jam_s: 0.1,
+            drive: jamchart::dynamics::DriveSettings {
+                mode: Drive::Force,
+                omega_deg_s: omega,
+                ..Default::default()
+            },
+            contact: jamchart::dynamics::ContactLaw {
+                stiffness_n_per_mm_e: stiff,
+                ..Default::default()
+            },
+            integrator: jamchart::dynamics::IntegratorSettings {
+                rtol: 1e-8,
+                ..Default::default()
+            },
+            verification: jamchart::dynamics::Verification {
+                verify: false,
+                ..Default::default()
+            },
+            series: jamchart::dynamics::SeriesSettings { after_jam_s: 0.1 },
             ..Default::default()
         };
         let s = simulate(&scene, &radau, None).unwrap();

@@ -1,7 +1,7 @@
 //! The dynamic simulation against the closed form, where physics says they agree (issue 4).
 
 use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Failure, Method, simulate};
-use jamchart::model::SceneParams;
+use jamchart::scene::SceneParams;
 use jamchart::{JamStatus, statics};
 
 /// k such that the IMPACT force k delta^2.2 reaches 200 N at penetration `delta_mm`.
@@ -45,7 +45,10 @@ fn motion_drive_at_the_defaults_jams_within_1_5_percent_of_r_over_mu() {
 fn motion_drive_with_a_stiff_contact_jams_within_0_5_percent_of_r_over_mu() {
     // Penetration 0.01 mm at 200 N.
     let p = DynamicsParams {
-        stiffness_n_per_mm_e: stiffness_for(0.01),
+        contact: jamchart::dynamics::ContactLaw {
+            stiffness_n_per_mm_e: stiffness_for(0.01),
+            ..Default::default()
+        },
         ..Default::default()
     };
     let s = run(&SceneParams::default(), &p);
@@ -58,7 +61,10 @@ fn force_drive_at_200_n_jams_within_1_percent_of_the_closed_form() {
     let closed = statics::solve(&scene).x_jam_mm.unwrap();
     assert!((closed - 24.355).abs() < 1e-3);
     let p = DynamicsParams {
-        drive: Drive::Force,
+        drive: jamchart::dynamics::DriveSettings {
+            mode: Drive::Force,
+            ..Default::default()
+        },
         ..Default::default()
     };
     let s = run(&scene, &p);
@@ -72,7 +78,10 @@ fn force_drive_at_200_n_jams_within_1_percent_of_the_closed_form() {
     };
     let closed_weak = statics::solve(&weak).x_jam_mm.unwrap();
     let slow = DynamicsParams {
-        omega_deg_s: 10.0,
+        drive: jamchart::dynamics::DriveSettings {
+            omega_deg_s: 10.0,
+            ..p.drive
+        },
         ..p
     };
     assert_rel(
@@ -102,11 +111,14 @@ fn x_jam_barely_depends_on_mass_and_omega_at_low_omega() {
                     ..Default::default()
                 };
                 let mut p = DynamicsParams {
-                    omega_deg_s: omega,
+                    drive: jamchart::dynamics::DriveSettings {
+                        omega_deg_s: omega,
+                        ..Default::default()
+                    },
                     ..Default::default()
                 };
                 if let Some(d) = delta {
-                    p.stiffness_n_per_mm_e = stiffness_for(d);
+                    p.contact.stiffness_n_per_mm_e = stiffness_for(d);
                 }
                 xs.push((omega, mass, x_jam(&run(&scene, &p))));
             }
@@ -129,16 +141,28 @@ fn both_integrators_agree_at_a_tight_tolerance() {
     let scene = SceneParams::default();
     for drive in [Drive::Force, Drive::Motion] {
         let p = DynamicsParams {
-            drive,
-            rtol: 1e-9,
-            verify: false,
+            drive: jamchart::dynamics::DriveSettings {
+                mode: drive,
+                ..Default::default()
+            },
+            integrator: jamchart::dynamics::IntegratorSettings {
+                rtol: 1e-9,
+                ..Default::default()
+            },
+            verification: jamchart::dynamics::Verification {
+                verify: false,
+                ..Default::default()
+            },
             ..Default::default()
         };
         let a = x_jam(&run(&scene, &p));
         let b = x_jam(&run(
             &scene,
             &DynamicsParams {
-                method: Method::Dopri5,
+                integrator: jamchart::dynamics::IntegratorSettings {
+                    method: Method::Dopri5,
+                    ..p.integrator
+                },
                 ..p
             },
         ));
@@ -166,18 +190,39 @@ fn loose_tolerances_never_give_a_trusted_wrong_answer() {
     ];
     for (drive, k, method) in cases {
         let base = DynamicsParams {
-            drive,
-            stiffness_n_per_mm_e: k,
-            max_steps: 100_000,
+            drive: jamchart::dynamics::DriveSettings {
+                mode: drive,
+                ..Default::default()
+            },
+            contact: jamchart::dynamics::ContactLaw {
+                stiffness_n_per_mm_e: k,
+                ..Default::default()
+            },
+            integrator: jamchart::dynamics::IntegratorSettings {
+                max_steps: 100_000,
+                ..Default::default()
+            },
             ..Default::default()
         };
-        let truth = x_jam(&run(&scene, &DynamicsParams { rtol: 1e-9, ..base }));
+        let truth = x_jam(&run(
+            &scene,
+            &DynamicsParams {
+                integrator: jamchart::dynamics::IntegratorSettings {
+                    rtol: 1e-9,
+                    ..base.integrator
+                },
+                ..base
+            },
+        ));
         for rtol in [0.5, 0.2, 0.1, 0.05, 0.01, 3e-3, 1e-3] {
             let s = run(
                 &scene,
                 &DynamicsParams {
-                    rtol,
-                    method,
+                    integrator: jamchart::dynamics::IntegratorSettings {
+                        rtol,
+                        method,
+                        ..base.integrator
+                    },
                     ..base
                 },
             );
@@ -209,7 +254,10 @@ fn the_outcomes_that_are_not_jams() {
         ..Default::default()
     };
     let force = DynamicsParams {
-        drive: Drive::Force,
+        drive: jamchart::dynamics::DriveSettings {
+            mode: Drive::Force,
+            ..Default::default()
+        },
         ..Default::default()
     };
     // Too heavy for the force-limited palm (F = 200 N below m g sin(atan mu) = 364 N): too
@@ -242,7 +290,10 @@ fn the_outcomes_that_are_not_jams() {
     assert_eq!(s.status, JamStatus::BeyondReach, "{s:?}");
     // A step budget too small is a status with the time and the reason, not a panic.
     let p = DynamicsParams {
-        max_steps: 20,
+        integrator: jamchart::dynamics::IntegratorSettings {
+            max_steps: 20,
+            ..Default::default()
+        },
         ..Default::default()
     };
     let s = run(&SceneParams::default(), &p);
@@ -257,7 +308,7 @@ fn the_outcomes_that_are_not_jams() {
 #[test]
 fn the_series_ends_at_the_jam_and_shows_the_disc_stop() {
     let p = DynamicsParams {
-        after_jam_s: 0.02,
+        series: jamchart::dynamics::SeriesSettings { after_jam_s: 0.02 },
         ..Default::default()
     };
     let s = simulate(&SceneParams::default(), &p, Some(1e-3)).unwrap();
@@ -281,11 +332,11 @@ fn the_papers_1_mm_bar_brings_the_jam_near_its_adams_result() {
     // hinge line; the paper reads x_jam = 25.58 mm (Section 5). Our model gives 25.47 mm with the
     // offset (24.75 mm without): within 1 % of the paper's number, which the paper's own reading
     // of "an instability of the velocity" off a plot cannot beat.
-    let p = DynamicsParams {
+    let scene = SceneParams {
         palm_offset_mm: 0.5,
         ..Default::default()
     };
-    let x = x_jam(&run(&SceneParams::default(), &p));
+    let x = x_jam(&run(&scene, &DynamicsParams::default()));
     assert_rel(
         "x_jam with a 0.5 mm offset",
         x,
@@ -309,7 +360,10 @@ fn a_rounding_sliver_before_the_end_is_not_an_integrator_failure() {
     for scene in [tiny, heavy] {
         for method in [Method::Radau5, Method::Dopri5] {
             let p = DynamicsParams {
-                method,
+                integrator: jamchart::dynamics::IntegratorSettings {
+                    method,
+                    ..Default::default()
+                },
                 ..Default::default()
             };
             let s = run(&scene, &p);
@@ -332,7 +386,10 @@ fn low_friction_jams_are_confirmed_by_both_integrators() {
         let dopri = x_jam(&run(
             &scene,
             &DynamicsParams {
-                method: Method::Dopri5,
+                integrator: jamchart::dynamics::IntegratorSettings {
+                    method: Method::Dopri5,
+                    ..Default::default()
+                },
                 ..Default::default()
             },
         ));
@@ -349,8 +406,11 @@ fn low_friction_jams_are_confirmed_by_both_integrators() {
 fn a_bouncing_disc_is_not_taken_for_jammed() {
     let scene = SceneParams::default().with_mu(0.1);
     let p = DynamicsParams {
-        stiffness_n_per_mm_e: 1e3,
-        damping_n_s_per_mm: 0.0,
+        contact: jamchart::dynamics::ContactLaw {
+            stiffness_n_per_mm_e: 1e3,
+            damping_n_s_per_mm: 0.0,
+            ..Default::default()
+        },
         ..Default::default()
     };
     let s = run(&scene, &p);
@@ -365,7 +425,10 @@ fn a_bouncing_disc_is_not_taken_for_jammed() {
 fn coasting_past_the_wedge_is_not_called_inaccurate() {
     let scene = SceneParams::default().with_mu(0.1);
     let p = DynamicsParams {
-        drive: Drive::Force,
+        drive: jamchart::dynamics::DriveSettings {
+            mode: Drive::Force,
+            ..Default::default()
+        },
         ..Default::default()
     };
     let x = x_jam(&run(&scene, &p));

@@ -2,7 +2,7 @@
 //! range (the integrator may give up, which is a status).
 
 use jamchart::dynamics::{Drive, DynamicsParams, simulate};
-use jamchart::model::SceneParams;
+use jamchart::scene::SceneParams;
 use proptest::prelude::*;
 
 proptest! {
@@ -19,16 +19,8 @@ proptest! {
         offset in 0.0..1.0f64,
         force_drive in any::<bool>(),
     ) {
-        let scene = SceneParams { radius_mm: radius, mass_kg: mass, force_n: force, ..SceneParams::default().with_mu(mu) };
-        let p = DynamicsParams {
-            omega_deg_s: omega,
-            stiffness_n_per_mm_e: 10f64.powf(log_k),
-            exponent,
-            palm_offset_mm: offset,
-            drive: if force_drive { Drive::Force } else { Drive::Motion },
-            max_steps: 20_000,
-            ..Default::default()
-        };
+        let scene = SceneParams { radius_mm: radius, mass_kg: mass, force_n: force, palm_offset_mm: offset, ..SceneParams::default().with_mu(mu) };
+        let p = DynamicsParams { drive: jamchart::dynamics::DriveSettings { omega_deg_s: omega, mode: if force_drive { Drive::Force } else { Drive::Motion }, ..Default::default() }, contact: jamchart::dynamics::ContactLaw { stiffness_n_per_mm_e: 10f64.powf(log_k), exponent, ..Default::default() }, integrator: jamchart::dynamics::IntegratorSettings { max_steps: 20_000, ..Default::default() }, ..Default::default() };
         let s = simulate(&scene, &p, None).unwrap();
         for v in [s.theta_jam_deg, s.x_jam_mm, s.t_jam_s, s.x_stiction_mm, s.x_jam_error_mm].into_iter().flatten() {
             prop_assert!(v.is_finite(), "{s:?}");

@@ -3,7 +3,7 @@
 
 use jamchart::JamStatus;
 use jamchart::dynamics::{CrossCheck, DynamicsParams, DynamicsSolution, Method, simulate};
-use jamchart::model::SceneParams;
+use jamchart::scene::SceneParams;
 
 fn run(scene: &SceneParams, p: &DynamicsParams) -> DynamicsSolution {
     simulate(scene, p, None).expect("valid parameters")
@@ -20,7 +20,10 @@ fn a_frictionless_ground_and_a_stiff_contact_is_a_knocked_ahead_disc() {
         ..SceneParams::default()
     };
     let p = DynamicsParams {
-        stiffness_n_per_mm_e: 1e8,
+        contact: jamchart::dynamics::ContactLaw {
+            stiffness_n_per_mm_e: 1e8,
+            ..Default::default()
+        },
         ..Default::default()
     };
     let s = run(&scene, &p);
@@ -41,8 +44,14 @@ fn a_frictionless_ground_and_a_stiff_contact_is_a_knocked_ahead_disc() {
 fn a_palm_at_3600_deg_s_never_says_jams() {
     for k in [1e3, 1e5, 1e7, 1e9, 1e11] {
         let p = DynamicsParams {
-            omega_deg_s: 3600.0,
-            stiffness_n_per_mm_e: k,
+            drive: jamchart::dynamics::DriveSettings {
+                omega_deg_s: 3600.0,
+                ..Default::default()
+            },
+            contact: jamchart::dynamics::ContactLaw {
+                stiffness_n_per_mm_e: k,
+                ..Default::default()
+            },
             ..Default::default()
         };
         let s = run(&SceneParams::default(), &p);
@@ -66,7 +75,10 @@ fn a_heavy_disc_or_a_soft_contact_is_contact_model_dependent() {
         ..SceneParams::default()
     };
     let soft = DynamicsParams {
-        stiffness_n_per_mm_e: 1.0,
+        contact: jamchart::dynamics::ContactLaw {
+            stiffness_n_per_mm_e: 1.0,
+            ..Default::default()
+        },
         ..Default::default()
     };
     for (scene, p) in [
@@ -103,7 +115,10 @@ fn a_palm_that_lifts_the_disc_is_outside_the_model() {
     for scene in cases {
         for method in [Method::Radau5, Method::Nonsmooth] {
             let p = DynamicsParams {
-                method,
+                integrator: jamchart::dynamics::IntegratorSettings {
+                    method,
+                    ..Default::default()
+                },
                 ..Default::default()
             };
             let s = run(&scene, &p);
@@ -121,7 +136,10 @@ fn a_palm_that_lifts_the_disc_is_outside_the_model() {
     // At 90 deg and below the palm presses the disc down: no lift-off.
     for mu in [0.15, 0.6, 1.0] {
         let p = DynamicsParams {
-            method: Method::Nonsmooth,
+            integrator: jamchart::dynamics::IntegratorSettings {
+                method: Method::Nonsmooth,
+                ..Default::default()
+            },
             ..Default::default()
         };
         let s = run(&SceneParams::default().with_mu(mu), &p);
@@ -149,7 +167,7 @@ fn the_model_uncertainty_is_reported_beside_the_integrator_error() {
 #[test]
 fn the_series_says_where_it_stops_being_physical() {
     let p = DynamicsParams {
-        after_jam_s: 0.02,
+        series: jamchart::dynamics::SeriesSettings { after_jam_s: 0.02 },
         ..Default::default()
     };
     let s = simulate(&SceneParams::default(), &p, Some(1e-3)).unwrap();
@@ -160,8 +178,11 @@ fn the_series_says_where_it_stops_being_physical() {
     let last = s.series.last().unwrap();
     assert!(last.t_s > until && last.normal_n > 1000.0, "{last:?}");
     let p = DynamicsParams {
-        method: Method::Nonsmooth,
-        after_jam_s: 0.02,
+        integrator: jamchart::dynamics::IntegratorSettings {
+            method: Method::Nonsmooth,
+            ..Default::default()
+        },
+        series: jamchart::dynamics::SeriesSettings { after_jam_s: 0.02 },
         ..Default::default()
     };
     let s = simulate(&SceneParams::default(), &p, Some(1e-3)).unwrap();

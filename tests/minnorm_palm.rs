@@ -2,8 +2,8 @@
 //! closed form (formulation b), on Table 1 and on random scenes across the foundation's ranges.
 
 use jamchart::minnorm::{Formulation, MinNormSettings, QpSettings, palm, palm_problem};
-use jamchart::model::{JamStatus, SceneParams, disc_position_mm, palm_angle_at};
 use jamchart::paper::TABLE1;
+use jamchart::scene::{JamStatus, SceneParams, disc_position_mm, palm_angle_at};
 use jamchart::statics::{self, margin_n};
 use proptest::prelude::*;
 
@@ -59,7 +59,7 @@ fn agree_with_statics(p: &SceneParams, fast_path: bool) -> Result<f64, String> {
         theta_deg.is_some_and(|t| margin_n(p, t.to_radians()).abs() <= tol * scale)
     };
     if s.status != m.status {
-        let reach_deg = palm_angle_at(p.radius_mm, p.palm_length_mm).to_degrees();
+        let reach_deg = palm_angle_at(p.radius_mm, 0.0, p.palm_length_mm).to_degrees();
         let closed_deg = statics::theta_jam_rad(p).to_degrees();
         let near = (closed_deg - p.start_angle_deg).abs() < AGREE_DEG
             || (closed_deg - reach_deg).abs() < AGREE_DEG;
@@ -266,16 +266,16 @@ proptest! {
         let m = palm::solve(&p, &settings(Formulation::Rolling, true)).unwrap();
         let t = rolling_theta_jam(&p);
         let start = p.start_angle_deg.to_radians();
-        let expected = if disc_position_mm(p.radius_mm, start) > p.palm_length_mm {
+        let expected = if disc_position_mm(p.radius_mm, 0.0, start) > p.palm_length_mm {
             JamStatus::BeyondReach
         } else if t >= start {
             JamStatus::JammedAtStart
-        } else if disc_position_mm(p.radius_mm, t) > p.palm_length_mm {
+        } else if disc_position_mm(p.radius_mm, 0.0, t) > p.palm_length_mm {
             JamStatus::BeyondReach
         } else {
             JamStatus::Jams
         };
-        let reach = palm_angle_at(p.radius_mm, p.palm_length_mm);
+        let reach = palm_angle_at(p.radius_mm, 0.0, p.palm_length_mm);
         let near = (t - start).abs().min((t - reach).abs()).to_degrees() < AGREE_DEG;
         // As for the statics: a disagreement passes only where the margin is at tolerance level.
         let at_tolerance = m

@@ -75,6 +75,7 @@ fn every_scene_key_is_documented() {
             !readme.contains(&format!("`{k}`"))
                 && !paper.contains(&format!("{k} ="))
                 && !paper.contains(&format!("[min_norm.{k}]"))
+                && !paper.contains(&format!("[dynamics.{k}]"))
         })
         .collect();
     assert!(

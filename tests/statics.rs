@@ -1,7 +1,7 @@
 //! The closed-form statics against the corrected Table 1, hand derivations and its invariants.
 
-use jamchart::model::{JamStatus, SceneParams, disc_position_mm};
 use jamchart::paper::TABLE1;
+use jamchart::scene::{JamStatus, SceneParams, disc_position_mm};
 use jamchart::statics::{self, margin_n};
 use proptest::prelude::*;
 
@@ -46,7 +46,7 @@ fn paper_table1_is_our_theta_truncated_and_x_of_that_theta() {
             ((theta * 10.0).floor() / 10.0 - paper_theta).abs() < 1e-9,
             "mu = {mu}"
         );
-        let x_of_printed = disc_position_mm(10.0, paper_theta.to_radians());
+        let x_of_printed = disc_position_mm(10.0, 0.0, paper_theta.to_radians());
         let printed_ok = (x_of_printed - paper_x).abs() < 0.006;
         assert_eq!(
             printed_ok,

@@ -25,8 +25,8 @@ use super::{
 use crate::csv_out::{Column, Num, nums};
 use crate::error::{Error, Result};
 use crate::grid::{self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, Quantity};
-use crate::model::SceneParams;
 use crate::models::ModelKind;
+use crate::scene::SceneParams;
 
 /// `[chart]` keys of `kind = "contour_map"`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -13,8 +13,8 @@ use super::style::{self, LineKind, Marker};
 use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
 use super::{output, scene_subtitle_with};
 use crate::error::{Error, Result};
-use crate::model::SceneParams;
 use crate::models::ModelKind;
+use crate::scene::SceneParams;
 use crate::study::accuracy::{AccuracyReport, AccuracyRow};
 
 /// Picture size in px.

@@ -26,8 +26,8 @@ use crate::error::{Error, Result};
 use crate::grid::{
     self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, Quantity,
 };
-use crate::model::{SceneParams, disc_position_mm, palm_angle_at};
 use crate::models::ModelKind;
+use crate::scene::{SceneParams, disc_position_mm, palm_angle_at};
 
 /// What a jam map draws (`layers`, default all).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -317,25 +317,33 @@ impl JamMap {
         x: &PlotAxis,
         y: &PlotAxis,
     ) -> DrawResult<DB> {
-        let r = self.params.radius_mm;
+        let (r, h) = (self.params.radius_mm, self.params.palm_offset_mm);
         let (lo, hi) = (
-            disc_position_mm(r, y.max.to_radians()),
-            disc_position_mm(r, y.min.to_radians()),
+            disc_position_mm(r, h, y.max.to_radians()),
+            disc_position_mm(r, h, y.min.to_radians()),
         );
         let (px, py) = c.plotting_area().get_pixel_range();
-        // Pixels per mm of x at position x, from d theta/dx = -2r/(x^2 + r^2) (rad/mm) with
-        // theta = 2 atan(r/x), and the theta axis' pixels per rad (log: per ln unit / theta).
+        // Pixels per mm of x at position x, from |d theta/dx| (rad/mm): 2r/(x^2 + r^2) with
+        // theta = 2 atan(r/x) for h = 0, else 1 / |dx/dtheta| with
+        // dx/dtheta = -r / (2 sin^2(theta/2)) - h cos(theta) / sin^2(theta); and the theta axis'
+        // pixels per rad (log: per ln unit / theta).
         let len = py.len() as f64;
         let density = |xmm: f64| {
-            let dtheta = 2.0 * r / (xmm * xmm + r * r);
+            let theta = palm_angle_at(r, h, xmm);
+            let dtheta = if h == 0.0 {
+                2.0 * r / (xmm * xmm + r * r)
+            } else {
+                let (s, half) = (theta.sin(), (0.5 * theta).sin());
+                1.0 / (r / (2.0 * half * half) + h * theta.cos() / (s * s))
+            };
             match y.scale {
-                AxisScale::Log => len / (y.max / y.min).ln() * dtheta / (2.0 * (r / xmm).atan()),
+                AxisScale::Log => len / (y.max / y.min).ln() * dtheta / theta,
                 AxisScale::Linear => len / (y.max - y.min) * dtheta.to_degrees(),
             }
         };
         let ticks = super::ticks::adaptive_ticks(lo, hi, density, 5.0, 24.0);
         let right = px.end - 1;
-        let row = |xmm: f64| axes::pixel(c, x, y, x.min, palm_angle_at(r, xmm).to_degrees()).1;
+        let row = |xmm: f64| axes::pixel(c, x, y, x.min, palm_angle_at(r, h, xmm).to_degrees()).1;
         for v in ticks.minor {
             root.draw(&PathElement::new(
                 vec![(right, row(v)), (right + 4, row(v))],
@@ -348,10 +356,18 @@ impl JamMap {
             root.draw(&PathElement::new(vec![(right, w), (right + 8, w)], INK))?;
             root.draw(&Text::new(s, (right + 11, w), font.clone()))?;
         }
-        let label = format!(
-            "disc position x = r·cot(θ/2) (mm), r = {} mm",
-            style::fmt_num(r, 1)
-        );
+        let label = if h == 0.0 {
+            format!(
+                "disc position x = r·cot(θ/2) (mm), r = {} mm",
+                style::fmt_num(r, 1)
+            )
+        } else {
+            format!(
+                "disc position x = r·cot(θ/2) + h/sin θ (mm), r = {} mm, h = {} mm",
+                style::fmt_num(r, 1),
+                style::fmt_num(h, 2)
+            )
+        };
         axes::draw_vertical_label(root, &label, px.end + 62, (py.start + py.end) / 2)
     }
 

@@ -16,11 +16,12 @@ use serde::de::DeserializeOwned;
 
 use super::axes::DrawResult;
 use super::models::Models;
-use super::spec::{Scene, read_section};
+use super::spec::Scene;
 use super::{
     DataFile, contour_map, convergence, jam_map, stability, sweep, time_series, vlocator_capacity,
     vlocator_optimum, work_precision,
 };
+use crate::config::read_section;
 use crate::error::Result;
 use crate::grid::GridParam;
 
@@ -118,7 +119,7 @@ macro_rules! chart_kinds {
             pub(crate) fn read(
                 kind: &str,
                 table: &toml::Table,
-            ) -> Option<std::result::Result<ChartSpec, super::spec::Refusal>> {
+            ) -> Option<std::result::Result<ChartSpec, crate::config::Refusal>> {
                 $(if kind == $name {
                     return Some(read_section(table, table, "chart").map(ChartSpec::$variant));
                 })+

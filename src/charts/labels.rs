@@ -2,56 +2,29 @@
 //! line naming a scene's parameters.
 
 use crate::grid::GridParam;
-use crate::model::SceneParams;
+use crate::scene::SceneParams;
 
-/// The symbol of a scene parameter in labels, e.g. `F` for force_n.
+/// The symbol of a scene parameter in labels, e.g. `F` for force_n (its declaration's).
 pub fn param_symbol(p: GridParam) -> &'static str {
-    match p {
-        GridParam::Mu => "μ",
-        GridParam::MuGround => "μ_ground",
-        GridParam::MuPalm => "μ_palm",
-        GridParam::RadiusMm => "r",
-        GridParam::MassKg => "m",
-        GridParam::ForceN => "F",
-        GridParam::GravityMS2 => "g",
-        GridParam::StartAngleDeg => "θ_start",
-        GridParam::PalmLengthMm => "L_palm",
-        GridParam::ThetaDeg => "θ",
-    }
+    p.decl().symbol
 }
 
 /// The unit of a scene parameter in labels; `-` for the friction coefficients.
 pub fn param_unit(p: GridParam) -> &'static str {
-    match p {
-        GridParam::Mu | GridParam::MuGround | GridParam::MuPalm => "-",
-        GridParam::RadiusMm | GridParam::PalmLengthMm => "mm",
-        GridParam::MassKg => "kg",
-        GridParam::ForceN => "N",
-        GridParam::GravityMS2 => "m/s²",
-        GridParam::StartAngleDeg | GridParam::ThetaDeg => "deg",
-    }
+    p.decl().unit
 }
 
-/// Axis label of a scene parameter: quantity, symbol and unit.
+/// Axis label of a scene parameter: quantity, symbol and unit. An alias names what it sets
+/// (`μ = μ_ground = μ_palm`).
 pub fn axis_label(p: GridParam) -> String {
-    let quantity = match p {
-        GridParam::Mu => "friction coefficient",
-        GridParam::MuGround => "ground friction coefficient",
-        GridParam::MuPalm => "palm friction coefficient",
-        GridParam::RadiusMm => "disc radius",
-        GridParam::MassKg => "disc mass",
-        GridParam::ForceN => "palm push",
-        GridParam::GravityMS2 => "gravity",
-        GridParam::StartAngleDeg => "start angle of the palm",
-        GridParam::PalmLengthMm => "palm length",
-        GridParam::ThetaDeg => "palm angle",
-    };
-    // One mu stands for both contacts; the label says so.
-    let symbol = match p {
-        GridParam::Mu => "μ = μ_ground = μ_palm",
-        _ => param_symbol(p),
-    };
-    format!("{quantity} {symbol} ({})", param_unit(p))
+    let d = p.decl();
+    let mut symbol = d.symbol.to_string();
+    for k in d.sets {
+        if let Some(set) = GridParam::named(k) {
+            symbol = format!("{symbol} = {}", param_symbol(set));
+        }
+    }
+    format!("{} {symbol} ({})", d.quantity, d.unit)
 }
 
 /// `symbol = value unit`, e.g. `F = 200 N`.
@@ -78,9 +51,12 @@ pub fn scene_subtitle_with(source: &str, p: &SceneParams, swept: &[GridParam]) -
         GridParam::ForceN,
         GridParam::GravityMS2,
     ];
+    // The palm's offset only where it is not the paper's 0.
+    let offset = (p.palm_offset_mm != 0.0).then_some(GridParam::PalmOffsetMm);
     let parts = std::iter::once((GridParam::Mu, mu)).chain(
         shown
             .into_iter()
+            .chain(offset)
             .filter_map(|k| k.get(p).map(|v| (k, param_value(k, v)))),
     );
     let kept: Vec<String> = parts

@@ -13,8 +13,8 @@ use crate::error::Result;
 use crate::grid::JamPoint;
 use crate::minnorm::tolerance::{ToleranceRow, tolerance_study};
 use crate::minnorm::{ContactSolution, MinNormSettings, palm};
-use crate::model::SceneParams;
 use crate::models::{self, ModelSpec, Solution};
+use crate::scene::SceneParams;
 
 /// The model calls of charts; implementations must be callable from several threads.
 pub trait Models: Sync {

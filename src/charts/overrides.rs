@@ -1,6 +1,6 @@
 //! `--set key=value`: one key of a scene file replaced before the scene is read.
 //!
-//! A dotted key names its section (`chart.x_axis.count=51`, `dynamics.after_jam_s=0.3`,
+//! A dotted key names its section (`chart.x_axis.count=51`, `dynamics.series.after_jam_s=0.3`,
 //! `size.width_px=2000`); a bare key is a `[scene]`, `[dynamics]` or `[min_norm]` key, found in
 //! that order (`mu_palm=0.6`), or a top-level key (`title`, `base`, `style`). `mu` sets both frictions,
 //! as the paper's single mu. The value is TOML (`0.6`, `51`, `"log"`, `[1.0, 2.0]`); a bare word
@@ -8,12 +8,8 @@
 
 use std::str::FromStr;
 
-use serde::Serialize;
-
-use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
-use crate::minnorm::MinNormSettings;
-use crate::model::SceneParams;
+use crate::settings;
 
 /// One `key=value` override.
 #[derive(Debug, Clone, PartialEq)]
@@ -65,46 +61,44 @@ impl std::fmt::Display for Setting {
 /// The top-level keys of a scene file that are values, not sections.
 const TOP_LEVEL: &[&str] = &["title", "base", "style"];
 
-/// The full paths a setting writes, e.g. `["scene", "mu_palm"]`.
+/// The full paths a setting writes, e.g. `["scene", "mu_palm"]`: a dotted key as written, a
+/// bare key at its declared section (an alias at each key it sets).
 fn paths(key: &str, value: &toml::Value) -> Result<Vec<Vec<String>>> {
     if key.contains('.') || TOP_LEVEL.contains(&key) {
         return Ok(vec![key.split('.').map(str::to_string).collect()]);
     }
-    if key == "mu" {
-        return Ok(["mu_ground", "mu_palm"]
-            .iter()
-            .map(|k| vec!["scene".to_string(), k.to_string()])
-            .collect());
-    }
-    let sections = [
-        ("scene", keys_of(SceneParams::default())),
-        ("dynamics", keys_of(DynamicsParams::default())),
-        ("min_norm", keys_of(MinNormSettings::default())),
-    ];
-    for (section, keys) in &sections {
-        if keys.iter().any(|k| k == key) {
-            return Ok(vec![vec![section.to_string(), key.to_string()]]);
-        }
-    }
-    Err(Error::invalid(
-        &format!("--set {key}"),
-        value,
-        format!(
-            "not a scene key; bare keys are mu, {}, {}, and the [dynamics] and [min_norm] keys; \
-             other keys take their section, e.g. chart.x_axis.count or dynamics.atol",
-            sections[0].1.join(", "),
-            TOP_LEVEL.join(", ")
-        ),
-    ))
-}
-
-/// The keys a settings struct writes (its optional keys left unset are not among them).
-fn keys_of<T: Serialize>(t: T) -> Vec<String> {
-    toml::Table::try_from(t)
-        .expect("settings serialise to a table")
-        .keys()
-        .cloned()
-        .collect()
+    let Some(decl) = settings::find(key) else {
+        let bare: Vec<&str> = settings::palm_family()
+            .filter(|d| d.section == "scene")
+            .map(|d| d.key)
+            .collect();
+        return Err(Error::invalid(
+            &format!("--set {key}"),
+            value,
+            format!(
+                "not a scene key; bare keys are {}, {}, and the keys of [dynamics.*] and \
+                 [min_norm] (jamchart settings lists them); other keys take their section, \
+                 e.g. chart.x_axis.count",
+                bare.join(", "),
+                TOP_LEVEL.join(", ")
+            ),
+        ));
+    };
+    let keys = if decl.sets.is_empty() {
+        vec![decl.key]
+    } else {
+        decl.sets.to_vec()
+    };
+    Ok(keys
+        .into_iter()
+        .map(|k| {
+            decl.section
+                .split('.')
+                .chain([k])
+                .map(str::to_string)
+                .collect()
+        })
+        .collect())
 }
 
 /// Applies `settings` in order to a scene file's table; sections and inline tables on the way
@@ -164,7 +158,7 @@ mod tests {
         apply(&mut t, &sets).unwrap();
         assert_eq!(t["scene"]["mu_ground"].as_float(), Some(0.3));
         assert_eq!(t["scene"]["mu_palm"].as_float(), Some(0.3));
-        assert_eq!(t["dynamics"]["after_jam_s"].as_float(), Some(0.1));
+        assert_eq!(t["dynamics"]["series"]["after_jam_s"].as_float(), Some(0.1));
         assert_eq!(t["chart"]["x_axis"]["count"].as_integer(), Some(51));
         assert_eq!(t["title"].as_str(), Some("hello"));
     }

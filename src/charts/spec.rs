@@ -28,14 +28,12 @@ use serde::{Deserialize, Serialize};
 pub use super::kinds::ChartSpec;
 use super::overrides::{self, Setting};
 use super::print::Ink;
-use crate::config::{
-    self, Config, array_for_table, cut_quotes, keyed, not_a_table, parse_toml, seq_for_struct,
-};
+use crate::config::{self, Config, Refusal, keyed, parse_toml};
 use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
 use crate::grid::GridParam;
 use crate::minnorm::MinNormSettings;
-use crate::model::SceneParams;
+use crate::scene::SceneParams;
 
 /// Picture size in px, and the scale of everything drawn on it.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -274,11 +272,11 @@ fn parse_scene(
         Some(b) => Config::load(&dir.join(b))?,
         None => super::builtin::paper_config(),
     };
-    let params: SceneParams = apply_overrides(base.scene, &file.scene, "scene")?;
+    let params: SceneParams = config::overlay(&base.scene, &file.scene, "scene")?;
     params.validate()?;
-    let min_norm: MinNormSettings = apply_overrides(base.min_norm, &file.min_norm, "min_norm")?;
+    let min_norm: MinNormSettings = config::overlay(&base.min_norm, &file.min_norm, "min_norm")?;
     min_norm.validate()?;
-    let dynamics: DynamicsParams = apply_overrides(base.dynamics, &file.dynamics, "dynamics")?;
+    let dynamics: DynamicsParams = config::overlay(&base.dynamics, &file.dynamics, "dynamics")?;
     dynamics.validate()?;
     file.size.validate()?;
     let scene = Scene {
@@ -325,16 +323,6 @@ impl Scene {
     }
 }
 
-/// A refused settings table: the dotted key at fault (with its section) and the message, which
-/// names it with the value as written.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Refusal {
-    /// The dotted key, e.g. `chart.x_axis.count`; the section alone when no key is at fault.
-    pub key: String,
-    /// `key = value: what is expected`.
-    pub message: String,
-}
-
 /// `[chart]` read by its `kind` key; the kinds are those of [`super::kinds`].
 fn read_chart(table: &toml::Table) -> std::result::Result<ChartSpec, Refusal> {
     let kinds = ChartSpec::KINDS.join(", ");
@@ -361,145 +349,9 @@ fn read_chart(table: &toml::Table) -> std::result::Result<ChartSpec, Refusal> {
     })
 }
 
-/// Settings `T` read from `table`, which stands at `[section]`; a refusal names the dotted key
-/// and quotes the value as `written` has it (cut to a readable length).
-///
-/// A wrong type is named by the path `serde_path_to_error` keeps; an array where `T` has a
-/// table (serde would fill the struct's fields in order) is refused.
-pub(crate) fn read_section<T>(
-    table: &toml::Table,
-    written: &toml::Table,
-    section: &str,
-) -> std::result::Result<T, Refusal>
-where
-    T: Serialize + serde::de::DeserializeOwned,
-{
-    let dotted = |k: &str| match k {
-        "" | "." => section.to_string(),
-        _ => format!("{section}.{k}"),
-    };
-    let quoted = |k: &str| {
-        value_at(written, k)
-            .filter(|v| !v.is_table())
-            .map_or(String::new(), toml::Value::to_string)
-    };
-    let merged = toml::Value::Table(table.clone());
-    let value: T = serde_path_to_error::deserialize(merged.clone()).map_err(|e| {
-        let path = e.path().to_string();
-        if let Some(k) = seq_for_struct::<T>(&merged, &path) {
-            let key = dotted(&k);
-            return Refusal {
-                message: not_a_table(&key, &quoted(&k)),
-                key,
-            };
-        }
-        let key = dotted(&path);
-        let written = Some(quoted(&path)).filter(|w| !w.is_empty());
-        let message = cut_quotes(e.into_inner().message().trim());
-        Refusal {
-            message: keyed(Some(&key), written.as_deref(), &message),
-            key,
-        }
-    })?;
-    if let Some(key) = array_for_table(&toml::Value::Table(written.clone()), &value, section) {
-        let k = key.split_once('.').map_or("", |(_, k)| k);
-        return Err(Refusal {
-            message: not_a_table(&key, &quoted(k)),
-            key,
-        });
-    }
-    Ok(value)
-}
-
-/// `base` with the keys of the override table of `[section]` replaced; unknown keys are refused.
-///
-/// Keys the base leaves out (optional settings such as `dynamics.atol`) are known by the
-/// section's struct, which refuses typos when the merged table is read back.
-fn apply_overrides<T>(base: T, overrides: &toml::Table, section: &str) -> Result<T>
-where
-    T: Serialize + serde::de::DeserializeOwned,
-{
-    let mut table = toml::Table::try_from(base).expect("settings serialise to a table");
-    for (key, value) in overrides {
-        table.insert(key.clone(), value.clone());
-    }
-    read_section(&table, overrides, section).map_err(|r| {
-        Error::Unsupported(format!(
-            "{}; the keys are those of [{section}] in config/paper.toml",
-            r.message
-        ))
-    })
-}
-
-/// The value at a dotted key of a table (array indices are not followed).
-fn value_at<'a>(t: &'a toml::Table, key: &str) -> Option<&'a toml::Value> {
-    let (head, rest) = match key.split_once('.') {
-        Some((h, r)) => (h, Some(r)),
-        None => (key, None),
-    };
-    match (t.get(head)?, rest) {
-        (v, None) => Some(v),
-        (toml::Value::Table(inner), Some(r)) => value_at(inner, r),
-        (v, Some(_)) => Some(v),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn overrides_replace_only_their_keys_and_refuse_typos() {
-        let mut t = toml::Table::new();
-        t.insert("force_n".into(), toml::Value::Float(50.0));
-        let p = apply_overrides(SceneParams::default(), &t, "scene").unwrap();
-        assert_eq!(p.force_n, 50.0);
-        assert_eq!(p.radius_mm, 10.0);
-        t.insert("radus_mm".into(), toml::Value::Float(5.0));
-        let msg = apply_overrides(SceneParams::default(), &t, "scene")
-            .unwrap_err()
-            .to_string();
-        assert!(msg.contains("scene") && msg.contains("radus_mm"), "{msg}");
-    }
-
-    #[test]
-    fn dynamics_override_replaces_its_key_and_refuses_typos() {
-        let mut t = toml::Table::new();
-        t.insert("after_jam_s".into(), toml::Value::Float(0.2));
-        let d = apply_overrides(DynamicsParams::default(), &t, "dynamics").unwrap();
-        assert!((d.after_jam_s - 0.2).abs() < 1e-15);
-        // An optional key the base leaves out is still known.
-        t.insert("atol".into(), toml::Value::Float(1e-7));
-        let d = apply_overrides(DynamicsParams::default(), &t, "dynamics").unwrap();
-        assert_eq!(d.atol, Some(1e-7));
-        t.insert("after_jam".into(), toml::Value::Float(0.2));
-        let msg = apply_overrides(DynamicsParams::default(), &t, "dynamics")
-            .unwrap_err()
-            .to_string();
-        assert!(
-            msg.contains("dynamics") && msg.contains("after_jam"),
-            "{msg}"
-        );
-    }
-
-    /// Regression (issue 13): a `[dynamics]` override of the wrong type said `invalid dynamics
-    /// = invalid type: unit variant, expected string only`; an array stood in for a table.
-    #[test]
-    fn overrides_of_the_wrong_type_name_the_key_and_value() {
-        let t: toml::Table = toml::from_str("rtol = \"x\"\n").unwrap();
-        let msg = apply_overrides(DynamicsParams::default(), &t, "dynamics")
-            .unwrap_err()
-            .to_string();
-        assert!(msg.starts_with("dynamics.rtol = \"x\": "), "{msg}");
-        let t: toml::Table = toml::from_str("qp = [1, 2]\n").unwrap();
-        let msg = apply_overrides(MinNormSettings::default(), &t, "min_norm")
-            .unwrap_err()
-            .to_string();
-        assert!(
-            msg.contains("min_norm.qp = [1, 2]: expected a table"),
-            "{msg}"
-        );
-    }
 
     fn scene_error(text: &str) -> String {
         parse_scene("s".into(), text, Path::new("s.toml"), Path::new(""), &[])

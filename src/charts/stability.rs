@@ -16,7 +16,7 @@ use super::spec::Scene;
 use super::{DataFile, style};
 use crate::config::Config;
 use crate::error::{Error, Result};
-use crate::model::JamStatus;
+use crate::scene::JamStatus;
 use crate::study::stability::{self, Class, StabilityReport};
 
 /// `[chart]` keys of `kind = "stability"`.
@@ -97,7 +97,7 @@ impl Stability {
                 .collect()
         };
         let solve =
-            |s: &crate::models::ModelSpec, p: &crate::model::SceneParams| models.solve(s, p);
+            |s: &crate::models::ModelSpec, p: &crate::scene::SceneParams| models.solve(s, p);
         let report = stability::run_with(&solve, &base, &cases, &stability::methods(&base))?;
         Ok(Stability {
             title: scene.title.clone(),

@@ -19,7 +19,7 @@ use super::{DataFile, axis_label, scene_subtitle_with};
 use crate::csv_out::{Dec, dec, to_csv_with_header};
 use crate::error::{Error, Result};
 use crate::grid::{AxisScale, GridAxis, GridParam};
-use crate::model::SceneParams;
+use crate::scene::SceneParams;
 
 pub use super::sweep_layers::SweepLayer;
 

@@ -19,9 +19,9 @@ use crate::dynamics::{Drive, DynamicsParams};
 use crate::error::{Error, Result};
 use crate::grid::{self, GridParam, statics_point};
 use crate::minnorm::{Formulation, MinNormSettings};
-use crate::model::{JamStatus, disc_position_mm};
 use crate::models::ModelSpec;
 use crate::paper::{ADAMS_X_JAM_MM_MU_0_4, TABLE1};
+use crate::scene::{JamStatus, disc_position_mm};
 use crate::statics;
 use crate::study::{self, Why};
 
@@ -234,7 +234,10 @@ fn min_norm(scene: &Scene, models: &dyn Models, formulation: Formulation) -> Res
 /// Simulated jams at [`SIMULATION_MU`] with the scene's `[dynamics]` settings and `drive`.
 fn simulation(scene: &Scene, models: &dyn Models, drive: Drive) -> Result<Series> {
     let d = DynamicsParams {
-        drive,
+        drive: crate::dynamics::DriveSettings {
+            mode: drive,
+            ..scene.dynamics.drive
+        },
         ..scene.dynamics
     };
     let spec = ModelSpec::Dynamics {
@@ -249,7 +252,7 @@ fn simulation(scene: &Scene, models: &dyn Models, drive: Drive) -> Result<Series
     Ok(match drive {
         Drive::Motion => Series {
             layer: "simulation_motion",
-            label: format!("simulation, motion drive ω = {} deg/s", d.omega_deg_s),
+            label: format!("simulation, motion drive ω = {} deg/s", d.drive.omega_deg_s),
             style: SeriesStyle::Points(Marker::Diamond),
             points,
             flat_names: None,
@@ -319,7 +322,7 @@ fn table1() -> Vec<Series> {
             .find(|r| r.erratum.is_some())
             .map_or(0.0, |r| r.statics_theta_jam_deg);
         // Table 1 is for the paper's r = 10 mm.
-        let consistent = disc_position_mm(10.0, theta.to_radians());
+        let consistent = disc_position_mm(10.0, 0.0, theta.to_radians());
         out.push(Series {
             layer: "paper_table1_erratum",
             label: format!(

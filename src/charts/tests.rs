@@ -8,8 +8,8 @@ use crate::dynamics::DynamicsParams;
 use crate::dynamics::accuracy::{Study, StudySettings};
 use crate::minnorm::tolerance::ToleranceRow;
 use crate::minnorm::{ContactSolution, MinNormSettings};
-use crate::model::SceneParams;
 use crate::models::{ModelKind, ModelSpec, Solution};
+use crate::scene::SceneParams;
 
 fn charts_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("charts")
@@ -197,7 +197,7 @@ impl Models for Counting {
                 {
                     return Ok(Solution {
                         model: ModelKind::Dynamics,
-                        status: crate::model::JamStatus::OutsideModel,
+                        status: crate::scene::JamStatus::OutsideModel,
                         theta_jam_deg: None,
                         x_jam_mm: None,
                         elapsed_s: 0.0,

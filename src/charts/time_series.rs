@@ -23,8 +23,8 @@ use crate::dynamics::jam::SeriesRow;
 use crate::dynamics::system::System;
 use crate::error::{Error, Result};
 use crate::grid::AxisScale;
-use crate::model::SceneParams;
 use crate::models::{Detail, ModelSpec};
+use crate::scene::SceneParams;
 use crate::statics;
 
 /// `[chart]` keys of `kind = "time_series"`.
@@ -62,11 +62,11 @@ impl super::kinds::Kind for TimeSeriesSpec {
     fn check_size(&self, scene: &Scene) -> Result<()> {
         let rows = crate::limits::series_rows(
             scene.params.start_angle_deg,
-            scene.dynamics.omega_deg_s,
+            scene.dynamics.drive.omega_deg_s,
             self.series_dt_s,
         );
         crate::limits::check_items(
-            "chart.series_dt_s and dynamics.omega_deg_s",
+            "chart.series_dt_s and dynamics.drive.omega_deg_s",
             rows,
             crate::limits::SERIES_ROW,
         )
@@ -181,7 +181,7 @@ impl TimeSeries {
         let t_end = samples.last().map_or(1.0, |s| s.row.t_s);
         let t_axis = PlotAxis::new(0.0, t_end, AxisScale::Linear, "time t (s)");
         let pick = |f: fn(&Sample) -> f64| samples.iter().map(|s| (s.row.t_s, f(s))).collect();
-        let ratio = d.jam_speed_ratio;
+        let ratio = d.jam_reading.jam_speed_ratio;
         let speed_curves = vec![
             Curve {
                 label: "simulated disc (speed ẋ, position x)".into(),
@@ -275,10 +275,10 @@ impl TimeSeries {
             subtitle: scene_subtitle_with(
                 &format!(
                     "simulation, {} drive at ω = {} deg/s, {} rtol {:e}",
-                    d.drive.as_str(),
-                    d.omega_deg_s,
-                    d.method.as_str(),
-                    d.rtol
+                    d.drive.mode.as_str(),
+                    d.drive.omega_deg_s,
+                    d.integrator.method.as_str(),
+                    d.integrator.rtol
                 ),
                 p,
                 &[],

@@ -27,7 +27,7 @@ use crate::dynamics::Method;
 use crate::dynamics::accuracy::{Study, StudyRow, StudySettings};
 use crate::error::{Error, Result};
 use crate::minnorm::tolerance::ToleranceRow;
-use crate::model::JamStatus;
+use crate::scene::JamStatus;
 
 /// The deterministic cost on the horizontal axis.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -282,7 +282,7 @@ impl WorkPrecision {
                 .to_string(),
         ];
         // The physics the report judges by: the rigid limit (motion drive) or the closed form.
-        let physical = crate::study::reference(p, Some(d.drive));
+        let physical = crate::study::reference(p, Some(d.drive.mode));
         for r in &study.references {
             let off = match (r.x_jam_mm, physical.x_jam_mm) {
                 (Some(x), Some(xp)) => format!(
@@ -321,7 +321,7 @@ impl WorkPrecision {
             subtitle: scene_subtitle_with(
                 &format!(
                     "simulation, {} drive, against the other integrator at rtol {}",
-                    d.drive.as_str(),
+                    d.drive.mode.as_str(),
                     sci(spec.reference_rtol)
                 ),
                 p,

@@ -15,8 +15,8 @@ use crate::atomic::{Output, check_all, write_all};
 use crate::csv_out::{Dec, dec};
 use crate::dynamics::Method;
 use crate::error::{Error, Result};
-use crate::model::JamStatus;
 use crate::models::ModelKind;
+use crate::scene::JamStatus;
 use crate::study::ReferenceKind;
 use crate::study::accuracy::{self, AccuracyReport, AccuracyRow, AccuracySettings};
 use crate::study::map_cost::{self, MapCostReport, MapCostSettings};
@@ -110,7 +110,7 @@ fn list_or_none(key: &str, arg: Option<&[String]>, default: Vec<f64>) -> Result<
 }
 
 pub fn run(a: &AccuracyArgs) -> Result<String> {
-    let config = a.scene.resolve_with(|c| a.dynamics.apply(c))?;
+    let config = a.scene.resolve(&[a.dynamics.overrides()])?;
     let d = AccuracySettings::default();
     let settings = AccuracySettings {
         min_norm_tolerances: list_or_none(

@@ -7,99 +7,48 @@ use clap::{Args, ValueEnum};
 use crate::config::Config;
 use crate::error::Result;
 use crate::models::ModelKind;
+pub use crate::settings::flags::parse_f64;
+use crate::settings::flags::{Flags, SceneSet};
 
-/// Scene flags: each overrides the same key of `--config FILE` (or of the defaults).
+/// Scene flags over `--config FILE`: each flag is a declared setting of `[scene]`
+/// ([`crate::settings`]), and overrides the same key of the file (or of the defaults).
 #[derive(Debug, Clone, Default, Args)]
 pub struct SceneArgs {
     /// TOML parameter file (e.g. config/paper.toml); flags override it.
     ///
-    /// Sections and keys as in config/paper.toml; unknown keys are refused. Without it the
-    /// defaults (the paper's parameters) apply.
+    /// Sections and keys as in config/paper.toml (`jamchart settings` lists them); unknown keys
+    /// are refused. Without it the defaults (the paper's parameters) apply.
     #[arg(long, value_name = "FILE")]
     pub config: Option<PathBuf>,
-    /// Friction coefficient at both contacts (sets --mu-ground and --mu-palm).
-    ///
-    /// The paper's single mu; --mu-ground or --mu-palm given as well take precedence for their
-    /// contact. Dimensionless, >= 0 [default: 0.4]
-    #[arg(long, value_name = "MU", allow_negative_numbers = true, value_parser = parse_f64)]
-    pub mu: Option<f64>,
-    /// Friction coefficient at the ground contact A [default: 0.4].
-    #[arg(long, value_name = "MU", allow_negative_numbers = true, value_parser = parse_f64)]
-    pub mu_ground: Option<f64>,
-    /// Friction coefficient at the palm contact B [default: 0.4].
-    #[arg(long, value_name = "MU", allow_negative_numbers = true, value_parser = parse_f64)]
-    pub mu_palm: Option<f64>,
-    /// Disc radius r in mm [default: 10].
-    #[arg(long, value_name = "MM", allow_negative_numbers = true, value_parser = parse_f64)]
-    pub radius: Option<f64>,
-    /// Palm push F in N [default: 200].
-    ///
-    /// The magnitude of the palm's force on the disc while it slides; F -> infinity is a palm
-    /// driven by prescribed motion.
-    #[arg(long, value_name = "N", allow_negative_numbers = true, value_parser = parse_f64)]
-    pub force: Option<f64>,
-    /// Disc mass m in kg [default: 1].
-    #[arg(long, value_name = "KG", allow_negative_numbers = true, value_parser = parse_f64)]
-    pub mass: Option<f64>,
-    /// Gravitational acceleration g in m/s^2 [default: 9.806].
-    #[arg(long, value_name = "M/S^2", allow_negative_numbers = true, value_parser = parse_f64)]
-    pub gravity: Option<f64>,
-    /// Palm angle where the push starts, in deg, in (0, 180) [default: 90].
-    ///
-    /// Above 90 deg every model answers outside_model: the palm's push points upwards there and
-    /// can lift the disc.
-    #[arg(long, value_name = "DEG", allow_negative_numbers = true, value_parser = parse_f64)]
-    pub start_angle: Option<f64>,
-    /// Palm length in mm; a jam beyond its end is never reached [default: 150].
-    #[arg(long, value_name = "MM", allow_negative_numbers = true, value_parser = parse_f64)]
-    pub palm_length: Option<f64>,
+    #[command(flatten)]
+    pub flags: Flags<SceneSet>,
 }
 
 impl SceneArgs {
-    /// Defaults, then the file, then these flags, then the other flags of the command (`more`);
-    /// validated before anything is computed.
-    pub fn resolve_with(&self, more: impl FnOnce(&mut Config)) -> Result<Config> {
-        let mut config = match &self.config {
+    /// Defaults, then the file, then these flags, then the `more` flags of the command (each a
+    /// table shaped like a parameter file); validated before anything is computed.
+    pub fn resolve(&self, more: &[toml::Table]) -> Result<Config> {
+        let base = match &self.config {
             Some(path) => Config::load(path)?,
             None => Config::default(),
         };
-        let s = &mut config.scene;
-        if let Some(mu) = self.mu {
-            s.mu_ground = mu;
-            s.mu_palm = mu;
+        let mut over = self.flags.overrides();
+        for m in more {
+            crate::settings::merge(&mut over, m);
         }
-        let overrides = [
-            (self.mu_ground, &mut s.mu_ground),
-            (self.mu_palm, &mut s.mu_palm),
-            (self.radius, &mut s.radius_mm),
-            (self.force, &mut s.force_n),
-            (self.mass, &mut s.mass_kg),
-            (self.gravity, &mut s.gravity_m_s2),
-            (self.start_angle, &mut s.start_angle_deg),
-            (self.palm_length, &mut s.palm_length_mm),
-        ];
-        for (flag, field) in overrides {
-            if let Some(v) = flag {
-                *field = v;
-            }
-        }
-        more(&mut config);
+        let config = base.overlay(&over)?;
         config.validate()?;
         Ok(config)
     }
 }
 
-/// The flag that sets a TOML key, for error messages.
-pub fn flag_for_key(key: &str) -> Option<&'static str> {
-    Some(match key {
-        "mu_ground" => "--mu-ground or --mu",
-        "mu_palm" => "--mu-palm or --mu",
-        "radius_mm" => "--radius",
-        "force_n" => "--force",
-        "mass_kg" => "--mass",
-        "gravity_m_s2" => "--gravity",
-        "start_angle_deg" => "--start-angle",
-        "palm_length_mm" => "--palm-length",
+/// The flag that sets a key, for error messages: a declared setting's flags
+/// ([`crate::settings::flag_for`]), or a report's own flag.
+pub fn flag_for_key(key: &str) -> Option<String> {
+    if let Some(flags) = crate::settings::flag_for(key) {
+        return Some(flags);
+    }
+    let flag = match key {
         "tolerances" => "--tolerances",
         "converged_rtol" => "--converged-rtol",
         "min_norm_tolerances" => "--min-norm-tolerances",
@@ -111,24 +60,9 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
         "cells_per_axis" => "--map-cells",
         "cases" => "--cases",
         "runs" => "--runs",
-        key => return super::dynamics::flag_for_key(key),
-    })
-}
-
-/// Parses a number flag, refusing text that overflows to infinity or underflows to zero, so that
-/// a message quotes what was written (`1e400`), never what it became (`inf`).
-///
-/// The words `inf`, `infinity` and `nan` are passed on: each setting's `validate` says whether
-/// it takes them.
-pub fn parse_f64(s: &str) -> std::result::Result<f64, String> {
-    let v: f64 = s
-        .trim()
-        .parse()
-        .map_err(|_| format!("{} is not a number", crate::error::cut(s)))?;
-    match crate::config::float_range_problem(s.trim(), v) {
-        Some(problem) => Err(format!("{} {problem}", crate::error::cut(s))),
-        None => Ok(v),
-    }
+        _ => return None,
+    };
+    Some(flag.to_string())
 }
 
 /// Which model answers `solve`: one of the port's models by its name, or all of them.

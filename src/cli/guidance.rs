@@ -4,8 +4,8 @@ use std::fmt::Write;
 
 use crate::config::Config;
 use crate::dynamics::Drive;
-use crate::model::JamStatus;
 use crate::models::{Detail, ModelKind, Solution};
+use crate::scene::JamStatus;
 
 /// Models whose x_jam differ by more than this are flagged: 2 % of x_jam is about the spread of
 /// the paper's own two models and Adams run (0.6 % and 2.3 %).
@@ -41,7 +41,7 @@ pub fn guidance<'a>(
              r cot((alpha_g + alpha_p)/2) = {x:.3} mm"
         );
     }
-    let drive = match config.dynamics.drive {
+    let drive = match config.dynamics.drive.mode {
         Drive::Motion => "motion drive: it tends to the driven-palm limit",
         Drive::Force => "force drive: it tends to the statics at F",
     };

@@ -2,31 +2,12 @@
 
 use std::fmt::Write;
 
-use clap::ValueEnum;
 use serde::Serialize;
 
 use crate::config::Config;
 use crate::error::Result;
 use crate::minnorm::qp::{Backend, ContactSolution, HoldStatus, TracePoint};
-use crate::minnorm::{Formulation, PalmSolution, palm};
-
-/// `--formulation`: how the min-norm model carries the disc's moment.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum FormulationArg {
-    /// The paper's: a translational joint carries the moment; the palm blocks the way back.
-    Translational,
-    /// The disc may rotate: friction at the ground and the palm carries the moment.
-    Rolling,
-}
-
-impl From<FormulationArg> for Formulation {
-    fn from(f: FormulationArg) -> Self {
-        match f {
-            FormulationArg::Translational => Formulation::Translational,
-            FormulationArg::Rolling => Formulation::Rolling,
-        }
-    }
-}
+use crate::minnorm::{PalmSolution, palm};
 
 /// The min-norm model's own JSON keys in `solve`'s record.
 #[derive(Debug, Serialize)]

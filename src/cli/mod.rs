@@ -64,6 +64,11 @@ pub enum Command {
     Sweep(sweep::SweepArgs),
     /// List the scenes render draws: name, chart kind and title, one line each.
     Scenes(render::ScenesArgs),
+    /// List every setting: flag, TOML key, unit, default, valid values and meaning.
+    ///
+    /// The keys of a parameter file (--config) and of a scene file's [scene], [min_norm] and
+    /// [dynamics.*] sections, as a Markdown table; `--set KEY=VALUE` takes the bare key.
+    Settings,
     /// Error against run time of every model, against the physical reference.
     ///
     /// Every way of answering (closed form; min-norm by its exact path and by clarabel at each
@@ -104,6 +109,7 @@ pub fn main() -> i32 {
         Command::Table(a) => table::run(a),
         Command::Render(a) => render::run(a),
         Command::Scenes(a) => render::list(a),
+        Command::Settings => Ok(crate::settings::reference_table()),
         Command::Sweep(a) => sweep::run(a),
         Command::Accuracy(a) => accuracy::run(a),
         Command::Stability(a) => stability::run(a),
@@ -165,7 +171,8 @@ fn one_line(rendered: &str) -> String {
 fn describe(e: &Error) -> String {
     match e {
         Error::InvalidValue { key, value, reason } => {
-            match args::flag_for_key(key).or_else(|| vlocator::flag_for_key(key)) {
+            match args::flag_for_key(key).or_else(|| vlocator::flag_for_key(key).map(String::from))
+            {
                 Some(flag) => format!("invalid {key} = {value} (flag {flag}): {reason}"),
                 None => e.to_string(),
             }

@@ -12,8 +12,9 @@ use super::dynamics::{self, DynamicsArgs};
 use super::min_norm;
 use crate::config::Config;
 use crate::error::{Error, Result};
-use crate::model::{JamStatus, SceneParams};
 use crate::models::{self, Detail, ModelKind, ModelSpec, OutsideModel, Solution};
+use crate::scene::{JamStatus, SceneParams};
+use crate::settings::flags::{Flags, MinNormSet};
 use crate::statics::{self, StaticsSolution};
 
 /// Sampling interval of `--series` in s: 0.2 ms resolves the collapse at the jam (a few ms).
@@ -37,13 +38,8 @@ pub struct SolveArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
     pub format: OutputFormat,
-    /// Min-norm formulation: how the disc's moment is carried.
-    ///
-    /// translational (the paper's): the disc rides a translational joint that carries the
-    /// moment; rolling: the disc may rotate and friction at the ground and the palm carries it.
-    /// Overrides [min_norm] formulation of --config [default: translational]
-    #[arg(long, value_enum, value_name = "FORMULATION")]
-    pub formulation: Option<min_norm::FormulationArg>,
+    #[command(flatten)]
+    pub min_norm: Flags<MinNormSet>,
     /// Print the min-norm solver's convergence trace at theta_jam (the paper's Fig. 4).
     ///
     /// clarabel's objective phi^2 (N^2) and relative primal and dual residuals per
@@ -88,12 +84,9 @@ struct Document<'a> {
 }
 
 pub fn run(a: &SolveArgs) -> Result<String> {
-    let config = a.scene.resolve_with(|c| {
-        a.dynamics.apply(c);
-        if let Some(f) = a.formulation {
-            c.min_norm.formulation = f.into();
-        }
-    })?;
+    let config = a
+        .scene
+        .resolve(&[a.dynamics.overrides(), a.min_norm.overrides()])?;
     let kinds = a.model.models();
     if let Some(path) = &a.series {
         if !kinds.contains(&ModelKind::Dynamics) {
@@ -106,7 +99,7 @@ pub fn run(a: &SolveArgs) -> Result<String> {
         crate::atomic::check_all([path.as_path()])?;
         let rows = crate::limits::series_rows(
             config.scene.start_angle_deg,
-            config.dynamics.omega_deg_s,
+            config.dynamics.drive.omega_deg_s,
             SERIES_DT_S,
         );
         crate::limits::check_items("--omega (omega_deg_s)", rows, crate::limits::SERIES_ROW)?;

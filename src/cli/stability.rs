@@ -13,8 +13,8 @@ use super::numbers::length_mm;
 use crate::atomic::check_all;
 use crate::csv_out::{Dec, dec};
 use crate::error::{Error, Result};
-use crate::model::JamStatus;
 use crate::models::ModelKind;
+use crate::scene::JamStatus;
 use crate::study::ReferenceKind;
 use crate::study::stability::{self, Class, StabilityReport};
 
@@ -44,7 +44,7 @@ pub struct StabilityArgs {
 }
 
 pub fn run(a: &StabilityArgs) -> Result<String> {
-    let config = a.scene.resolve_with(|c| a.dynamics.apply(c))?;
+    let config = a.scene.resolve(&[a.dynamics.overrides()])?;
     let all = stability::cases(&config);
     let cases = match &a.cases {
         None => all,

@@ -10,8 +10,8 @@ use crate::csv_out::{Dec, dec, to_csv};
 use super::args::TableFormat;
 use crate::error::Result;
 use crate::minnorm::{self, MinNormSettings};
-use crate::model::{SceneParams, disc_position_mm};
 use crate::paper::TABLE1;
+use crate::scene::SceneParams;
 use crate::statics;
 
 /// Flags of `table`.
@@ -72,10 +72,7 @@ pub fn rows() -> Vec<TableRow> {
                 paper_theta_jam_deg: row.statics_theta_jam_deg,
                 paper_x_jam_mm: row.statics_x_jam_mm,
                 x_rel_diff_pct: 100.0 * (row.statics_x_jam_mm - x) / x,
-                x_of_paper_theta_mm: disc_position_mm(
-                    p.radius_mm,
-                    row.statics_theta_jam_deg.to_radians(),
-                ),
+                x_of_paper_theta_mm: p.disc_position_mm(row.statics_theta_jam_deg.to_radians()),
                 paper_min_norm_x_jam_mm: row.min_norm_x_jam_mm,
                 paper_min_norm_theta_jam_deg: row.min_norm_theta_jam_deg,
                 erratum: row.erratum,

@@ -80,7 +80,23 @@ pub fn parse_toml<T: DeserializeOwned + Serialize>(text: &str, path: &Path) -> R
 }
 
 /// `key = written: message`, or the parts of it that are known.
+///
+/// An unknown key that is a key of another section says where it belongs: a file written before
+/// the dynamics settings were grouped by role (`[dynamics] stiffness_n_per_mm_e = ...`) is told
+/// `dynamics.contact.stiffness_n_per_mm_e`.
 pub fn keyed(key: Option<&str>, written: Option<&str>, message: &str) -> String {
+    let moved = key
+        .filter(|_| message.starts_with("unknown field"))
+        .and_then(|k| {
+            let (section, last) = k.rsplit_once('.').unwrap_or(("", k));
+            crate::settings::moved(section, last)
+        });
+    let message = match moved {
+        Some(place) => format!("{message}; it belongs in [{}]: {place}", {
+            place.rsplit_once('.').map_or("", |(s, _)| s)
+        }),
+        None => message.to_string(),
+    };
     match (key, written) {
         (Some(k), Some(w)) => format!("{} = {}: {message}", cut(k), cut(w)),
         (Some(k), None) => format!("{}: {message}", cut(k)),

@@ -13,7 +13,7 @@ use serde::Serialize;
 use super::{DynamicsParams, DynamicsSolution, Method, run};
 use crate::error::{Error, Result};
 use crate::limits::{self, MAX_RUNS, MAX_TOLERANCES};
-use crate::model::{JamStatus, SceneParams};
+use crate::scene::{JamStatus, SceneParams};
 
 /// What to measure.
 #[derive(Debug, Clone, PartialEq)]
@@ -98,13 +98,12 @@ pub struct Study {
 const METHODS: [Method; 2] = [Method::Radau5, Method::Dopri5];
 
 fn raw(params: &DynamicsParams, method: Method, rtol: f64) -> DynamicsParams {
-    DynamicsParams {
-        method,
-        rtol,
-        atol: Some(rtol),
-        verify: false,
-        ..*params
-    }
+    let mut raw = *params;
+    raw.integrator.method = method;
+    raw.integrator.rtol = rtol;
+    raw.integrator.atol = Some(rtol);
+    raw.verification.verify = false;
+    raw
 }
 
 fn reason_of(s: &DynamicsSolution) -> Option<String> {

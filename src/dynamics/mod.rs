@@ -70,11 +70,14 @@ use serde::Serialize;
 
 pub use integrators::Failure;
 pub use jam::SeriesRow;
-pub use params::{Drive, DynamicsParams, Method};
+pub use params::{
+    ContactLaw, DiscMotion, Drive, DriveSettings, DynamicsParams, FrictionLaw, IntegratorSettings,
+    JamReading, Method, SeriesSettings, Verification,
+};
 pub use verdict::{CrossCheck, Refinement};
 
 use crate::error::Result;
-use crate::model::{JamStatus, SceneParams};
+use crate::scene::{JamStatus, SceneParams};
 
 /// How far past the self-locking wedge, beyond the disc's coasting distance, a jam may lie before
 /// it is called inaccurate: the contact's give (the jam sits 0.2-1 % from r/mu at the defaults).
@@ -190,7 +193,7 @@ pub fn simulate(
     // angle, m g sin(atan mu_g) (the corrected Eq. 1 at 90 deg + alpha_g + alpha_p), cannot
     // move it: the disc only settles into the contact (10.09 mm for a 10 mm disc at 0.95 of
     // that push) and a jam read there is the push's weakness, not a jam.
-    if params.drive == Drive::Force
+    if params.drive.mode == Drive::Force
         && scene.force_n <= crate::statics::least_push_n(scene)
         && matches!(out.status, JamStatus::Jams | JamStatus::JammedAtStart)
     {
@@ -220,8 +223,8 @@ fn lifted_at_start(scene: &SceneParams, params: &DynamicsParams) -> DynamicsSolu
         x_stiction_mm: None,
         t_stiction_s: None,
         x_rigid_mm: None,
-        method: params.method,
-        drive: params.drive,
+        method: params.integrator.method,
+        drive: params.drive.mode,
         steps: 0,
         rejected_steps: 0,
         rhs_evals: 0,
@@ -249,42 +252,45 @@ fn simulate_checked(
     series_dt_s: Option<f64>,
 ) -> DynamicsSolution {
     let mut out = run::run_once(scene, params, series_dt_s);
-    let nonsmooth = params.method == Method::Nonsmooth;
-    if params.rtol > LOOSEST_RTOL && !nonsmooth {
+    let nonsmooth = params.integrator.method == Method::Nonsmooth;
+    if params.integrator.rtol > LOOSEST_RTOL && !nonsmooth {
         out.cross_check = Some(CrossCheck::LooseTolerance {
-            rtol: params.rtol,
+            rtol: params.integrator.rtol,
             loosest: LOOSEST_RTOL,
         });
         out.status = JamStatus::Inaccurate;
         return out;
     }
     // Nothing to verify when the run failed or already failed a cross-check.
-    if !params.verify || out.status == JamStatus::IntegratorFailed || out.cross_check.is_some() {
+    if !params.verification.verify
+        || out.status == JamStatus::IntegratorFailed
+        || out.cross_check.is_some()
+    {
         return out;
     }
     // The time after the jam changes neither the status nor x_jam: the check stops at the jam.
     let fine = if nonsmooth {
-        DynamicsParams {
-            // Twice the step: the method is of first order, so |x(h) - x(2h)| estimates the
-            // error of x(h), at half the cost of a run at half the step.
-            nonsmooth_step_deg: Some((2.0 * params.nonsmooth_step_deg()).min(1.0)),
-            after_jam_s: 0.0,
-            ..*params
-        }
+        let mut fine = *params;
+        // Twice the step: the method is of first order, so |x(h) - x(2h)| estimates the
+        // error of x(h), at half the cost of a run at half the step.
+        fine.integrator.nonsmooth_step_deg = Some((2.0 * params.nonsmooth_step_deg()).min(1.0));
+        fine.series.after_jam_s = 0.0;
+        fine
     } else {
-        DynamicsParams {
-            rtol: params.rtol / 10.0,
-            atol: Some(params.atol() / 10.0),
-            after_jam_s: 0.0,
-            ..*params
-        }
+        let mut fine = *params;
+        fine.integrator.rtol = params.integrator.rtol / 10.0;
+        fine.integrator.atol = Some(params.atol() / 10.0);
+        fine.series.after_jam_s = 0.0;
+        fine
     };
     let refinement = if nonsmooth {
         Refinement::Step {
             step_deg: fine.nonsmooth_step_deg(),
         }
     } else {
-        Refinement::Tolerance { rtol: fine.rtol }
+        Refinement::Tolerance {
+            rtol: fine.integrator.rtol,
+        }
     };
     let check = run::run_once(scene, &fine, None);
     out.steps += check.steps;
@@ -302,9 +308,9 @@ fn simulate_checked(
             // was located to, whatever the second run says.
             let e = (a - b).abs().max(out.jam_resolution_mm.unwrap_or(0.0));
             out.x_jam_error_mm = Some(e);
-            (e > params.max_jam_error * b.abs()).then_some(CrossCheck::ErrorEstimate {
+            (e > params.verification.max_jam_error * b.abs()).then_some(CrossCheck::ErrorEstimate {
                 error_mm: e,
-                allowed_rel: params.max_jam_error,
+                allowed_rel: params.verification.max_jam_error,
                 check: refinement,
             })
         }
@@ -329,9 +335,12 @@ fn compare_with_rigid(scene: &SceneParams, params: &DynamicsParams, out: &mut Dy
     let rigid = run::run_once(
         scene,
         &DynamicsParams {
-            method: Method::Nonsmooth,
-            disc: nonsmooth::DiscMotion::Slides,
-            after_jam_s: 0.0,
+            integrator: crate::dynamics::IntegratorSettings {
+                method: Method::Nonsmooth,
+                disc: crate::dynamics::DiscMotion::Slides,
+                ..params.integrator
+            },
+            series: crate::dynamics::SeriesSettings { after_jam_s: 0.0 },
             ..*params
         },
         None,

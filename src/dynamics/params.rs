@@ -1,125 +1,227 @@
-//! Settings of the dynamic simulation (TOML section `[dynamics]`).
+//! Settings of the dynamic simulation, one struct per role, one TOML section each:
+//! `[dynamics.drive]`, `[dynamics.contact]`, `[dynamics.friction]`, `[dynamics.integrator]`,
+//! `[dynamics.verification]`, `[dynamics.jam_reading]`, `[dynamics.series]`.
+//!
+//! Defaults are the paper's Adams model (Section 4) with Adams' documented IMPACT defaults where
+//! the paper's printed contact parameters are garbled (crate docs, Corrections to the paper).
+//! Files written before the roles (flat `[dynamics]` keys) are refused with each key's new
+//! place named, e.g. `dynamics.contact.stiffness_n_per_mm_e`.
 
 use serde::{Deserialize, Serialize};
 
-use super::nonsmooth::DiscMotion;
 use crate::error::{Error, Result};
-use crate::model::{SceneParams, finite_at_least, finite_positive};
+use crate::scene::{SceneParams, finite_positive};
+use crate::settings::{Check, Decl, Kind};
 
-/// How the palm is driven.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Drive {
-    /// Prescribed angular velocity omega (the paper's Adams model): pushes with any force, so the
-    /// jam tends to the rigid limit r/mu.
-    Motion,
-    /// A speed drive with a force limit: turns at omega until the palm's elastic push reaches
-    /// F cos(atan mu_palm), then stalls without backing off, so the jam tends to the closed form
-    /// at finite F.
-    Force,
-}
-
-impl Drive {
-    /// The JSON spelling.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Drive::Motion => "motion",
-            Drive::Force => "force",
-        }
+choice! {
+    /// How the palm is driven.
+    pub enum Drive {
+        /// Prescribed angular velocity omega (the paper's Adams model): pushes with any force, so
+        /// the jam tends to the rigid limit r/mu.
+        Motion = "motion",
+        /// A speed drive with a force limit: turns at omega until the palm's elastic push reaches
+        /// F cos(atan mu_palm), then stalls without backing off, so the jam tends to the closed
+        /// form at finite F.
+        Force = "force",
     }
 }
 
-/// The time integrator.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Method {
-    /// Radau IIA of order 5 (Hairer's RADAU5): implicit, L-stable, analytic Jacobian.
-    Radau5,
-    /// Dormand-Prince 5(4) (Hairer's DOPRI5): explicit, adaptive, dense output of order 4.
-    Dopri5,
-    /// Rigid contacts with exact Coulomb friction, time-stepped at the velocity-impulse level
-    /// (Moreau-Jean); no contact stiffness, true stiction ([`super::nonsmooth`]).
-    Nonsmooth,
-}
-
-impl Method {
-    /// The JSON spelling.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Method::Radau5 => "radau5",
-            Method::Dopri5 => "dopri5",
-            Method::Nonsmooth => "nonsmooth",
-        }
+choice! {
+    /// The time integrator.
+    pub enum Method {
+        /// Radau IIA of order 5 (Hairer's RADAU5): implicit, L-stable, analytic Jacobian.
+        Radau5 = "radau5",
+        /// Dormand-Prince 5(4) (Hairer's DOPRI5): explicit, adaptive, dense output of order 4.
+        Dopri5 = "dopri5",
+        /// Rigid contacts with exact Coulomb friction, time-stepped at the velocity-impulse level
+        /// (Moreau-Jean); no contact stiffness, true stiction ([`super::nonsmooth`]).
+        Nonsmooth = "nonsmooth",
     }
 }
 
-/// Parameters of the Adams-like model and of its integration (section `[dynamics]`).
-///
-/// Defaults are the paper's Adams model (Section 4) with Adams' documented IMPACT defaults where
-/// the paper's printed contact parameters are garbled (crate docs, Corrections to the paper).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+choice! {
+    /// How the disc may move in the nonsmooth method.
+    pub enum DiscMotion {
+        /// The paper's: on a translational joint, no rotation (the joint takes the moment).
+        Slides = "slides",
+        /// Free in the plane: x, y and rotation, unilateral contacts at the ground and the palm.
+        Rolls = "rolls",
+    }
+}
+
+settings! {
+    /// How the palm is driven.
+    section = "dynamics.drive";
+    pub struct DriveSettings {
+        /// Palm drive: motion or force.
+        ///
+        /// motion: prescribed omega, pushes as hard as needed (the paper's Adams model; jams near
+        /// r/mu). force: turns at omega until its push reaches --force, then stalls (jams near
+        /// the closed form at that force).
+        mode: Drive = Drive::Motion, flag: Some("drive"), value_name: "DRIVE";
+        /// Palm closing speed omega (the paper's 30 deg/s).
+        omega_deg_s: f64 = 30.0, flag: Some("omega"), symbol: "ω", quantity: "palm speed",
+            unit: "deg/s", check: Check::Above(0.0);
+        /// Width of the force drive's limit band, as a fraction of the limit.
+        ///
+        /// The speed falls from omega to 0 while the push rises from 99 % to 100 % of the limit.
+        force_band: f64 = 0.01, quantity: "force band", unit: "-", check: Check::Open(0.0, 1.0);
+    }
+}
+
+settings! {
+    /// The palm-disc contact: Adams' IMPACT law, force k delta^e with damping up to c_max.
+    section = "dynamics.contact";
+    pub struct ContactLaw {
+        /// IMPACT contact stiffness k.
+        ///
+        /// The penetration at a force P is (P/k)^(1/e): about 60 um at 200 N with Adams' default.
+        stiffness_n_per_mm_e: f64 = 1e5, flag: Some("stiffness"), symbol: "k",
+            quantity: "contact stiffness", unit: "N/mm^e", check: Check::Above(0.0);
+        /// IMPACT force exponent e (Adams' default).
+        exponent: f64 = 2.2, flag: Some("exponent"), symbol: "e", quantity: "IMPACT exponent",
+            unit: "-", check: Check::AtLeast(1.0), value_name: "E";
+        /// IMPACT maximum damping c_max (Adams' default).
+        damping_n_s_per_mm: f64 = 10.0, flag: Some("damping"), symbol: "c_max",
+            quantity: "contact damping", unit: "N s/mm", check: Check::AtLeast(0.0),
+            value_name: "N*S/MM";
+        /// Penetration at which the damping reaches c_max.
+        // 0.01 mm: Adams' default penetration depth of full damping.
+        damping_depth_mm: f64 = 0.01, flag: Some("damping-depth"), symbol: "d",
+            quantity: "damping depth", unit: "mm", check: Check::Above(0.0);
+    }
+}
+
+settings! {
+    /// Adams' regularised Coulomb friction at both contacts; the dynamic coefficients are the
+    /// scene's mu_ground and mu_palm.
+    section = "dynamics.friction";
+    pub struct FrictionLaw {
+        /// Static friction coefficient at the ground (unset: the scene's mu_ground).
+        mu_static_ground: Option<f64> = None, quantity: "static ground friction", unit: "-",
+            check: Check::AtLeast(0.0);
+        /// Static friction coefficient at the palm (unset: the scene's mu_palm).
+        mu_static_palm: Option<f64> = None, quantity: "static palm friction", unit: "-",
+            check: Check::AtLeast(0.0);
+        /// Stiction transition velocity V_s (the paper's).
+        stiction_velocity_mm_s: f64 = 0.1, flag: Some("stiction-velocity"), symbol: "V_s",
+            quantity: "stiction velocity", unit: "mm/s", check: Check::Above(0.0);
+        /// Friction transition velocity V_d, above V_s (the paper's).
+        friction_velocity_mm_s: f64 = 0.2, flag: Some("friction-velocity"), symbol: "V_d",
+            quantity: "friction velocity", unit: "mm/s", check: Check::Above(0.0);
+    }
+}
+
+/// The friction law's alias: `mu_static` sets both static coefficients.
+pub(crate) const FRICTION_ALIASES: &[Decl] = &[Decl {
+    key: "mu_static",
+    section: "dynamics.friction",
+    flag: Some("mu-static"),
+    quantity: "static friction coefficient",
+    unit: "-",
+    doc: "Static friction coefficient at both contacts (unset: the dynamic mu).",
+    check: Check::AtLeast(0.0),
+    kind: Kind::Derived,
+    sets: &["mu_static_ground", "mu_static_palm"],
+    value_name: "MU",
+    ..Decl::BASE
+}];
+
+settings! {
+    /// The time integrator and its tolerances.
+    section = "dynamics.integrator";
+    pub struct IntegratorSettings {
+        /// Method: radau5 (implicit), dopri5 (explicit) or nonsmooth (rigid).
+        ///
+        /// radau5 and dopri5 integrate the compliant IMPACT contact with regularised friction;
+        /// nonsmooth time-steps rigid contacts with exact Coulomb friction (true stiction; the
+        /// jam is the lock-up of the motion-driven palm).
+        method: Method = Method::Radau5, flag: Some("method"), value_name: "METHOD";
+        /// Relative tolerance per step. Looser than 1e-2 is always reported inaccurate.
+        rtol: f64 = 1e-6, flag: Some("rtol"), quantity: "relative tolerance", unit: "-",
+            check: Check::Open(0.0, 1.0), value_name: "RTOL";
+        /// Absolute tolerance per step in the state's units: rad, mm, mm/s (unset: rtol).
+        atol: Option<f64> = None, flag: Some("atol"), quantity: "absolute tolerance",
+            unit: "-", check: Check::Open(0.0, 1.0), value_name: "ATOL";
+        /// Step limit of the integrator.
+        // DOPRI5 needs about 1e6 steps at the stiffest contacts; beyond that it is hopeless.
+        max_steps: u64 = 2_000_000, quantity: "step limit", check: Check::CountAtLeast(1);
+        /// Palm turn per step of the nonsmooth method, in (0, 1] (unset: 0.1 deg with the motion
+        /// drive, 0.01 deg with the force drive).
+        ///
+        /// The motion drive's lock-up is located inside its step, so 0.1 deg puts x_jam within
+        /// 3e-5 of r/mu for mu = 0.15-0.45. The force drive's disc comes to rest at a step end,
+        /// and a slow push needs 0.01 deg for 0.1 %.
+        nonsmooth_step_deg: Option<f64> = None, flag: Some("nonsmooth-step"),
+            quantity: "nonsmooth step", unit: "deg", check: Check::OpenClosed(0.0, 1.0);
+        /// How the disc moves in the nonsmooth method: slides or rolls.
+        ///
+        /// slides: the paper's translational joint (no rotation); rolls: free in the plane (x,
+        /// y, rotation) with unilateral contacts at the ground and the palm. The other methods
+        /// only slide.
+        disc: DiscMotion = DiscMotion::Slides, flag: Some("disc"), value_name: "MOTION";
+    }
+}
+
+settings! {
+    /// The second run that estimates the error of x_jam.
+    section = "dynamics.verification";
+    pub struct Verification {
+        /// Run a second time at a tenth of rtol and atol to estimate the error of x_jam.
+        ///
+        /// --no-verify skips it.
+        verify: bool = true, flag: Some("no-verify");
+        /// Largest estimated relative error of x_jam before the answer is called inaccurate
+        /// (1e-3: 25 um at the default jam).
+        max_jam_error: f64 = 1e-3, quantity: "largest jam error", unit: "-",
+            check: Check::Open(0.0, 1.0);
+    }
+}
+
+settings! {
+    /// How the regularised simulation reads the jam off the disc's speed.
+    section = "dynamics.jam_reading";
+    pub struct JamReading {
+        /// Jam when the disc's speed falls below this fraction of the geometric speed
+        /// r omega / (2 sin^2(theta/2)), in (0, arm_speed_ratio).
+        // Half the geometric speed: the collapse is steep, so the reading barely depends on it.
+        jam_speed_ratio: f64 = 0.5, quantity: "jam speed ratio", unit: "-",
+            check: Check::Open(0.0, 1.0);
+        /// The jam detector arms once the disc's speed has reached this fraction of the
+        /// geometric speed, in (jam_speed_ratio, 1].
+        arm_speed_ratio: f64 = 0.9, quantity: "arming speed ratio", unit: "-",
+            check: Check::OpenClosed(0.0, 1.0);
+    }
+}
+
+settings! {
+    /// The time series the simulation records.
+    section = "dynamics.series";
+    pub struct SeriesSettings {
+        /// Simulated time after the jam, for the time series.
+        after_jam_s: f64 = 0.0, flag: Some("after-jam"), quantity: "time after the jam",
+            unit: "s", check: Check::AtLeast(0.0);
+    }
+}
+
+/// Parameters of the Adams-like model and of its integration (section `[dynamics]`), by role.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct DynamicsParams {
-    /// Palm drive, `motion` or `force` (default: motion, the paper's).
-    pub drive: Drive,
-    /// Palm closing speed omega in deg/s, > 0 (default: 30, the paper's).
-    pub omega_deg_s: f64,
-    /// IMPACT stiffness k in N/mm^e, > 0 (default: 1e5, Adams' default: about 60 um of
-    /// penetration at 200 N).
-    pub stiffness_n_per_mm_e: f64,
-    /// IMPACT force exponent e, >= 1 (default: 2.2, Adams' default).
-    pub exponent: f64,
-    /// IMPACT maximum damping c_max in N s/mm, >= 0 (default: 10, Adams' default).
-    pub damping_n_s_per_mm: f64,
-    /// IMPACT penetration at which the damping reaches c_max, in mm, > 0 (default: 0.01,
-    /// Adams' default).
-    pub damping_depth_mm: f64,
-    /// Static friction coefficient at the ground (default: the scene's mu_ground).
-    pub mu_static_ground: Option<f64>,
-    /// Static friction coefficient at the palm (default: the scene's mu_palm).
-    pub mu_static_palm: Option<f64>,
-    /// Stiction transition velocity V_s in mm/s, > 0 (default: 0.1, the paper's).
-    pub stiction_velocity_mm_s: f64,
-    /// Friction transition velocity V_d in mm/s, > V_s (default: 0.2, the paper's).
-    pub friction_velocity_mm_s: f64,
-    /// Offset of the palm's contact face from the hinge line in mm (the bar's half thickness),
-    /// >= 0 (default: 0, the paper's theory; its 1 mm bars would give 0.5).
-    pub palm_offset_mm: f64,
-    /// Width of the force drive's limit band as a fraction of the limit, in (0, 1) (default: 0.01:
-    /// the speed falls from omega to 0 while the push rises from 99 % to 100 % of the limit).
-    pub force_band: f64,
-    /// Time integrator (default: radau5).
-    pub method: Method,
-    /// Relative tolerance per step, in (0, 1) (default: 1e-6).
-    pub rtol: f64,
-    /// Absolute tolerance per step in the state's units (rad, mm, mm/s), in (0, 1) (default: the
-    /// value of rtol).
-    pub atol: Option<f64>,
-    /// Run a second time at a tenth of rtol and atol to estimate the error of x_jam (default:
-    /// true).
-    pub verify: bool,
-    /// Largest estimated relative error of x_jam before the answer is called inaccurate, in
-    /// (0, 1) (default: 1e-3, 25 um at the default jam).
-    pub max_jam_error: f64,
-    /// Jam when the disc's speed falls below this fraction of the geometric speed
-    /// r omega / (2 sin^2(theta/2)), in (0, arm_ratio) (default: 0.5).
-    pub jam_speed_ratio: f64,
-    /// The jam detector arms once the disc's speed has reached this fraction of the geometric
-    /// speed, in (jam_speed_ratio, 1] (default: 0.9).
-    pub arm_speed_ratio: f64,
-    /// Simulated time after the jam in s, >= 0, for the time series (default: 0).
-    pub after_jam_s: f64,
-    /// Step limit of the integrator, >= 1 (default: 2000000).
-    pub max_steps: u64,
-    /// Palm turn per time step of the nonsmooth method in deg, in (0, 1] (default: 0.1 with the
-    /// motion drive, 0.01 with the force drive). The motion drive's lock-up is located inside
-    /// its step by bisection, so at 0.1 deg x_jam lies within 3e-5 of r/mu for mu = 0.15-0.45 in
-    /// about 0.15 ms (0.25 ms verified); the force drive's rest is read at a step end and a slow
-    /// push needs the finer step (at 0.5 deg/s, 0.1 deg is 0.1-0.4 % off and often flagged).
-    pub nonsmooth_step_deg: Option<f64>,
-    /// How the disc may move in the nonsmooth method: `slides` (the paper's translational
-    /// joint) or `rolls` (free in the plane) (default: slides). The other methods only slide.
-    pub disc: DiscMotion,
+    /// How the palm is driven (`[dynamics.drive]`).
+    pub drive: DriveSettings,
+    /// The palm-disc contact law (`[dynamics.contact]`).
+    pub contact: ContactLaw,
+    /// The friction law at both contacts (`[dynamics.friction]`).
+    pub friction: FrictionLaw,
+    /// The integrator (`[dynamics.integrator]`).
+    pub integrator: IntegratorSettings,
+    /// The error estimate by a second run (`[dynamics.verification]`).
+    pub verification: Verification,
+    /// Where the jam is read (`[dynamics.jam_reading]`).
+    pub jam_reading: JamReading,
+    /// The time series (`[dynamics.series]`).
+    pub series: SeriesSettings,
 }
 
 /// The nonsmooth method's default step with the motion drive in deg: the lock-up is located
@@ -131,132 +233,40 @@ pub const MOTION_STEP_DEG: f64 = 0.1;
 /// step end, and a slow push (0.5 deg/s) lands 0.1-0.4 % off at 0.1 deg, within 0.1 % at 0.01.
 pub const FORCE_STEP_DEG: f64 = 0.01;
 
-impl Default for DynamicsParams {
-    fn default() -> Self {
-        DynamicsParams {
-            drive: Drive::Motion,
-            omega_deg_s: 30.0,
-            stiffness_n_per_mm_e: 1e5,
-            exponent: 2.2,
-            damping_n_s_per_mm: 10.0,
-            // 0.01 mm: Adams' default penetration depth of full damping.
-            damping_depth_mm: 0.01,
-            mu_static_ground: None,
-            mu_static_palm: None,
-            stiction_velocity_mm_s: 0.1,
-            friction_velocity_mm_s: 0.2,
-            palm_offset_mm: 0.0,
-            force_band: 0.01,
-            method: Method::Radau5,
-            rtol: 1e-6,
-            atol: None,
-            verify: true,
-            max_jam_error: 1e-3,
-            // Half the geometric speed: the collapse is steep, so the reading barely depends on it.
-            jam_speed_ratio: 0.5,
-            arm_speed_ratio: 0.9,
-            after_jam_s: 0.0,
-            // DOPRI5 needs about 1e6 steps at the stiffest contacts; beyond that it is hopeless.
-            max_steps: 2_000_000,
-            nonsmooth_step_deg: None,
-            disc: DiscMotion::Slides,
-        }
-    }
-}
-
 impl DynamicsParams {
-    /// Checks every field; the error names the TOML key and the offending value.
+    /// Checks every field (each against its declared range, then the relations between them);
+    /// the error names the TOML key and the offending value.
     pub fn validate(&self) -> Result<()> {
-        finite_positive(
-            "omega_deg_s",
-            self.omega_deg_s,
-            "the palm speed must be > 0 deg/s",
-        )?;
-        finite_positive(
-            "stiffness_n_per_mm_e",
-            self.stiffness_n_per_mm_e,
-            "the contact stiffness must be > 0 N/mm^e",
-        )?;
-        finite_at_least(
-            "exponent",
-            self.exponent,
-            1.0,
-            "the IMPACT exponent must be >= 1 (a smaller one has infinite stiffness at first touch)",
-        )?;
-        finite_at_least(
-            "damping_n_s_per_mm",
-            self.damping_n_s_per_mm,
-            0.0,
-            "damping must be >= 0",
-        )?;
-        finite_positive(
-            "damping_depth_mm",
-            self.damping_depth_mm,
-            "the damping depth must be > 0 mm",
-        )?;
-        for (key, mu) in [
-            ("mu_static_ground", self.mu_static_ground),
-            ("mu_static_palm", self.mu_static_palm),
-        ] {
-            if let Some(mu) = mu {
-                finite_at_least(key, mu, 0.0, "friction coefficients are >= 0")?;
-            }
-        }
-        let vs = self.stiction_velocity_mm_s;
-        finite_positive("stiction_velocity_mm_s", vs, "V_s must be > 0 mm/s")?;
-        let vd = self.friction_velocity_mm_s;
-        if !(vd.is_finite() && vd > vs) {
+        self.drive.check_declared()?;
+        self.contact.check_declared()?;
+        self.friction.check_declared()?;
+        self.integrator.check_declared()?;
+        self.verification.check_declared()?;
+        self.jam_reading.check_declared()?;
+        self.series.check_declared()?;
+        let (vs, vd) = (
+            self.friction.stiction_velocity_mm_s,
+            self.friction.friction_velocity_mm_s,
+        );
+        if vd <= vs {
             return Err(Error::invalid(
-                "friction_velocity_mm_s",
+                "dynamics.friction.friction_velocity_mm_s",
                 vd,
-                format!("V_d must be finite and above the stiction velocity V_s = {vs} mm/s"),
+                format!("V_d must be above the stiction velocity V_s = {vs} mm/s"),
             ));
         }
-        finite_at_least(
-            "palm_offset_mm",
-            self.palm_offset_mm,
-            0.0,
-            "the offset must be >= 0 mm",
-        )?;
-        open_unit("force_band", self.force_band)?;
-        open_unit("rtol", self.rtol)?;
-        if let Some(atol) = self.atol {
-            open_unit("atol", atol)?;
-        }
-        open_unit("max_jam_error", self.max_jam_error)?;
-        open_unit("arm_speed_ratio", self.arm_speed_ratio).or_else(|e| {
-            if self.arm_speed_ratio == 1.0 {
-                Ok(())
-            } else {
-                Err(e)
-            }
-        })?;
-        let j = self.jam_speed_ratio;
-        if !(j.is_finite() && j > 0.0 && j < self.arm_speed_ratio) {
+        let j = &self.jam_reading;
+        if j.jam_speed_ratio >= j.arm_speed_ratio {
             return Err(Error::invalid(
-                "jam_speed_ratio",
-                j,
-                format!(
-                    "must lie in (0, arm_speed_ratio = {})",
-                    self.arm_speed_ratio
-                ),
+                "dynamics.jam_reading.jam_speed_ratio",
+                j.jam_speed_ratio,
+                format!("must lie in (0, arm_speed_ratio = {})", j.arm_speed_ratio),
             ));
         }
-        finite_at_least("after_jam_s", self.after_jam_s, 0.0, "must be >= 0 s")?;
-        if self.max_steps == 0 {
-            return Err(Error::invalid("max_steps", 0, "must be >= 1"));
-        }
-        let st = self.nonsmooth_step_deg();
-        if !(st.is_finite() && st > 0.0 && st <= 1.0) {
+        if self.integrator.disc == DiscMotion::Rolls && self.integrator.method != Method::Nonsmooth
+        {
             return Err(Error::invalid(
-                "nonsmooth_step_deg",
-                st,
-                "the palm turn per step must lie in (0, 1] deg",
-            ));
-        }
-        if self.disc == DiscMotion::Rolls && self.method != Method::Nonsmooth {
-            return Err(Error::invalid(
-                "disc",
+                "dynamics.integrator.disc",
                 "rolls",
                 "only the nonsmooth method lets the disc roll",
             ));
@@ -276,48 +286,17 @@ impl DynamicsParams {
     /// The nonsmooth method's step in use in deg of palm turn: `nonsmooth_step_deg`, or when
     /// unset [`MOTION_STEP_DEG`] with the motion drive and [`FORCE_STEP_DEG`] with the force drive.
     pub fn nonsmooth_step_deg(&self) -> f64 {
-        self.nonsmooth_step_deg.unwrap_or(match self.drive {
-            Drive::Motion => MOTION_STEP_DEG,
-            Drive::Force => FORCE_STEP_DEG,
-        })
+        self.integrator
+            .nonsmooth_step_deg
+            .unwrap_or(match self.drive.mode {
+                Drive::Motion => MOTION_STEP_DEG,
+                Drive::Force => FORCE_STEP_DEG,
+            })
     }
 
     /// The absolute tolerance in use (atol, or rtol when unset).
     pub fn atol(&self) -> f64 {
-        self.atol.unwrap_or(self.rtol)
-    }
-}
-
-impl std::str::FromStr for Drive {
-    type Err = String;
-    fn from_str(s: &str) -> std::result::Result<Self, String> {
-        match s {
-            "motion" => Ok(Drive::Motion),
-            "force" => Ok(Drive::Force),
-            _ => Err(format!("unknown drive '{s}' (expected motion or force)")),
-        }
-    }
-}
-
-impl std::str::FromStr for Method {
-    type Err = String;
-    fn from_str(s: &str) -> std::result::Result<Self, String> {
-        match s {
-            "radau5" => Ok(Method::Radau5),
-            "dopri5" => Ok(Method::Dopri5),
-            "nonsmooth" => Ok(Method::Nonsmooth),
-            _ => Err(format!(
-                "unknown method '{s}' (expected radau5, dopri5 or nonsmooth)"
-            )),
-        }
-    }
-}
-
-fn open_unit(key: &str, v: f64) -> Result<()> {
-    if v.is_finite() && v > 0.0 && v < 1.0 {
-        Ok(())
-    } else {
-        Err(Error::invalid(key, v, "must lie strictly between 0 and 1"))
+        self.integrator.atol.unwrap_or(self.integrator.rtol)
     }
 }
 
@@ -333,64 +312,100 @@ mod tests {
             (
                 "stiffness_n_per_mm_e",
                 DynamicsParams {
-                    stiffness_n_per_mm_e: 0.0,
+                    contact: crate::dynamics::ContactLaw {
+                        stiffness_n_per_mm_e: 0.0,
+                        ..d.contact
+                    },
                     ..d
                 },
             ),
             (
                 "exponent",
                 DynamicsParams {
-                    exponent: -2.0,
+                    contact: crate::dynamics::ContactLaw {
+                        exponent: -2.0,
+                        ..d.contact
+                    },
                     ..d
                 },
             ),
             (
                 "stiction_velocity_mm_s",
                 DynamicsParams {
-                    stiction_velocity_mm_s: 0.0,
+                    friction: crate::dynamics::FrictionLaw {
+                        stiction_velocity_mm_s: 0.0,
+                        ..d.friction
+                    },
                     ..d
                 },
             ),
             (
                 "friction_velocity_mm_s",
                 DynamicsParams {
-                    friction_velocity_mm_s: 0.1,
+                    friction: crate::dynamics::FrictionLaw {
+                        friction_velocity_mm_s: 0.1,
+                        ..d.friction
+                    },
                     ..d
                 },
             ),
             (
                 "omega_deg_s",
                 DynamicsParams {
-                    omega_deg_s: 0.0,
+                    drive: crate::dynamics::DriveSettings {
+                        omega_deg_s: 0.0,
+                        ..d.drive
+                    },
                     ..d
                 },
             ),
-            ("rtol", DynamicsParams { rtol: 1.0, ..d }),
+            (
+                "rtol",
+                DynamicsParams {
+                    integrator: crate::dynamics::IntegratorSettings {
+                        rtol: 1.0,
+                        ..d.integrator
+                    },
+                    ..d
+                },
+            ),
             (
                 "atol",
                 DynamicsParams {
-                    atol: Some(0.0),
+                    integrator: crate::dynamics::IntegratorSettings {
+                        atol: Some(0.0),
+                        ..d.integrator
+                    },
                     ..d
                 },
             ),
             (
                 "damping_depth_mm",
                 DynamicsParams {
-                    damping_depth_mm: f64::NAN,
+                    contact: crate::dynamics::ContactLaw {
+                        damping_depth_mm: f64::NAN,
+                        ..d.contact
+                    },
                     ..d
                 },
             ),
             (
                 "mu_static_palm",
                 DynamicsParams {
-                    mu_static_palm: Some(-0.1),
+                    friction: crate::dynamics::FrictionLaw {
+                        mu_static_palm: Some(-0.1),
+                        ..d.friction
+                    },
                     ..d
                 },
             ),
             (
                 "jam_speed_ratio",
                 DynamicsParams {
-                    jam_speed_ratio: 0.95,
+                    jam_reading: crate::dynamics::JamReading {
+                        jam_speed_ratio: 0.95,
+                        ..d.jam_reading
+                    },
                     ..d
                 },
             ),

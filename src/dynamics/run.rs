@@ -8,7 +8,7 @@ use super::system::System;
 use super::{
     CrossCheck, Drive, DynamicsParams, DynamicsSolution, MAX_STEP_DEG, Method, WEDGE_MARGIN,
 };
-use crate::model::{JamStatus, SceneParams};
+use crate::scene::{JamStatus, SceneParams};
 
 /// One run at the given tolerances, without the verification run. Parameters must be valid.
 pub(super) fn run_once(
@@ -16,7 +16,7 @@ pub(super) fn run_once(
     params: &DynamicsParams,
     series_dt_s: Option<f64>,
 ) -> DynamicsSolution {
-    if params.method == Method::Nonsmooth {
+    if params.integrator.method == Method::Nonsmooth {
         return run_nonsmooth(scene, params, series_dt_s);
     }
     let sys = System::new(scene, params);
@@ -24,22 +24,22 @@ pub(super) fn run_once(
     let mut y = vec![theta0, sys.touching_x(theta0), 0.0];
     let t_end = theta0 / sys.omega;
     let tol = Tolerances {
-        rtol: params.rtol,
+        rtol: params.integrator.rtol,
         atol: params.atol(),
         max_step: MAX_STEP_DEG.to_radians() / sys.omega,
-        max_steps: params.max_steps,
+        max_steps: params.integrator.max_steps,
     };
     let rule = JamRule {
-        jam_ratio: params.jam_speed_ratio,
-        arm_ratio: params.arm_speed_ratio,
-        v_stiction: params.stiction_velocity_mm_s,
+        jam_ratio: params.jam_reading.jam_speed_ratio,
+        arm_ratio: params.jam_reading.arm_speed_ratio,
+        v_stiction: params.friction.stiction_velocity_mm_s,
         palm_length: scene.palm_length_mm,
-        after_jam: params.after_jam_s,
+        after_jam: params.series.after_jam_s,
         ground_decel: scene.mu_ground * scene.gravity_m_s2 * 1000.0,
         series_dt: series_dt_s.filter(|dt| *dt > 0.0 && dt.is_finite()),
     };
     let mut det = JamDetector::new(&sys, rule, 0.0);
-    let (outcome, stats) = match params.method {
+    let (outcome, stats) = match params.integrator.method {
         Method::Radau5 => Radau5.integrate(&sys, 0.0, &mut y, t_end, &tol, &mut det),
         Method::Dopri5 => Dopri5.integrate(&sys, 0.0, &mut y, t_end, &tol, &mut det),
         Method::Nonsmooth => unreachable!("dispatched above"),
@@ -72,8 +72,8 @@ fn conclude(
         x_stiction_mm: det.stiction.map(|s| s.x),
         t_stiction_s: det.stiction.map(|s| s.t),
         x_rigid_mm: x_rigid,
-        method: params.method,
-        drive: params.drive,
+        method: params.integrator.method,
+        drive: params.drive.mode,
         steps: stats.steps,
         rejected_steps: stats.rejected,
         rhs_evals: stats.rhs_evals,
@@ -116,7 +116,7 @@ fn conclude(
     out.x_jam_mm = Some(jam.x);
     out.t_jam_s = Some(jam.t);
     // A motion-driven palm against a jammed disc is a lock-up: a real palm stops there.
-    if params.drive == Drive::Motion {
+    if params.drive.mode == Drive::Motion {
         out.physical_until_s = Some(jam.t);
     }
     // A disc reaching the wedge at the palm's speed v_geo coasts on, braked by the ground, for
@@ -135,11 +135,11 @@ fn conclude(
             x_rigid_mm: xw,
             coast_mm: coast,
             geometric_speed_mm_s: sys.geometric_speed(wedge),
-            stiction_velocity_mm_s: params.stiction_velocity_mm_s,
+            stiction_velocity_mm_s: params.friction.stiction_velocity_mm_s,
         });
     }
-    let stalled = det.push_after_jam >= (1.0 - 2.0 * params.force_band) * sys.normal_limit;
-    if params.drive == Drive::Force && jam.theta > wedge + 0.1_f64.to_radians() && !stalled {
+    let stalled = det.push_after_jam >= (1.0 - 2.0 * params.drive.force_band) * sys.normal_limit;
+    if params.drive.mode == Drive::Force && jam.theta > wedge + 0.1_f64.to_radians() && !stalled {
         out.cross_check = Some(CrossCheck::StoppedBelowForceLimit {
             theta_deg: jam.theta.to_degrees(),
             push_n: det.push_after_jam,
@@ -155,7 +155,7 @@ fn conclude(
                 push_n: push,
                 needed_n: needed,
                 geometric_speed_mm_s: sys.geometric_speed(jam.theta),
-                stiction_velocity_mm_s: params.stiction_velocity_mm_s,
+                stiction_velocity_mm_s: params.friction.stiction_velocity_mm_s,
             });
         }
     }
@@ -169,8 +169,8 @@ fn conclude(
 /// frictions at both contacts (the corrected Eq. 1 solved for the push), infinite at and below
 /// the self-locking wedge.
 fn sliding_push_n(scene: &SceneParams, params: &DynamicsParams, theta: f64) -> f64 {
-    let mg = params.mu_static_ground.unwrap_or(scene.mu_ground);
-    let mp = params.mu_static_palm.unwrap_or(scene.mu_palm);
+    let mg = params.friction.mu_static_ground.unwrap_or(scene.mu_ground);
+    let mp = params.friction.mu_static_palm.unwrap_or(scene.mu_palm);
     let (s, c) = theta.sin_cos();
     let denom = s * (1.0 - mg * mp) - c * (mg + mp);
     if denom > 0.0 {
@@ -201,8 +201,8 @@ fn run_nonsmooth(
         x_stiction_mm: None,
         t_stiction_s: None,
         x_rigid_mm: x_rigid,
-        method: params.method,
-        drive: params.drive,
+        method: params.integrator.method,
+        drive: params.drive.mode,
         steps: run.steps,
         rejected_steps: 0,
         rhs_evals: run.mode_solves,
@@ -239,7 +239,7 @@ fn run_nonsmooth(
             out.failure = Some(match run.end {
                 End::StepLimit { .. } => Failure::StepLimit {
                     t_s: t,
-                    steps: params.max_steps,
+                    steps: params.integrator.max_steps,
                 },
                 _ => Failure::NoConsistentContact { t_s: t },
             });
@@ -252,7 +252,7 @@ fn run_nonsmooth(
     out.t_jam_s = Some(t);
     out.jam_resolution_mm = Some(run.jam_resolution_mm);
     if let Some(theta_deg) = run.lift_off_deg
-        && params.disc == nonsmooth::DiscMotion::Slides
+        && params.integrator.disc == crate::dynamics::DiscMotion::Slides
     {
         let c = CrossCheck::LiftsOff { theta_deg };
         out.cross_check = Some(c);

@@ -34,7 +34,7 @@
 use super::contact::{FrictionLaw, ImpactLaw, step};
 use super::integrators::OdeSystem;
 use super::params::{Drive, DynamicsParams};
-use crate::model::SceneParams;
+use crate::scene::SceneParams;
 
 /// The system in the units of the state; built once per simulation.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -94,26 +94,26 @@ impl System {
         let law = |mu_d: f64, mu_s: Option<f64>| FrictionLaw {
             mu_static: mu_s.unwrap_or(mu_d),
             mu_dynamic: mu_d,
-            v_static: d.stiction_velocity_mm_s,
-            v_dynamic: d.friction_velocity_mm_s,
+            v_static: d.friction.stiction_velocity_mm_s,
+            v_dynamic: d.friction.friction_velocity_mm_s,
         };
         System {
             radius: scene.radius_mm,
-            offset: d.palm_offset_mm,
+            offset: scene.palm_offset_mm,
             mass: scene.mass_kg,
             weight: scene.weight_n(),
-            omega: d.omega_deg_s.to_radians(),
-            drive: d.drive,
+            omega: d.drive.omega_deg_s.to_radians(),
+            drive: d.drive.mode,
             normal_limit: scene.force_n * scene.alpha_palm().cos(),
-            band: d.force_band,
+            band: d.drive.force_band,
             impact: ImpactLaw {
-                stiffness: d.stiffness_n_per_mm_e,
-                exponent: d.exponent,
-                damping: d.damping_n_s_per_mm,
-                depth: d.damping_depth_mm,
+                stiffness: d.contact.stiffness_n_per_mm_e,
+                exponent: d.contact.exponent,
+                damping: d.contact.damping_n_s_per_mm,
+                depth: d.contact.damping_depth_mm,
             },
-            palm_friction: law(scene.mu_palm, d.mu_static_palm),
-            ground_friction: law(scene.mu_ground, d.mu_static_ground),
+            palm_friction: law(scene.mu_palm, d.friction.mu_static_palm),
+            ground_friction: law(scene.mu_ground, d.friction.mu_static_ground),
         }
     }
 
@@ -244,7 +244,10 @@ mod tests {
         let scene = SceneParams::default();
         for drive in [Drive::Motion, Drive::Force] {
             let d = DynamicsParams {
-                drive,
+                drive: crate::dynamics::DriveSettings {
+                    mode: drive,
+                    ..Default::default()
+                },
                 ..Default::default()
             };
             let sys = System::new(&scene, &d);
@@ -286,11 +289,11 @@ mod tests {
     #[test]
     fn geometric_speed_is_the_rate_of_the_touching_position() {
         for h in [0.0, 0.5] {
-            let d = DynamicsParams {
+            let scene = SceneParams {
                 palm_offset_mm: h,
                 ..Default::default()
             };
-            let sys = System::new(&SceneParams::default(), &d);
+            let sys = System::new(&scene, &DynamicsParams::default());
             for deg in [30.0_f64, 45.0, 80.0] {
                 let th = deg.to_radians();
                 let e = 1e-6;
@@ -310,7 +313,10 @@ mod tests {
         // Palm sliding (u_B >> V_d), no damping: the ground reaction is the corrected Eq. 1.
         let scene = SceneParams::default();
         let d = DynamicsParams {
-            damping_n_s_per_mm: 0.0,
+            contact: crate::dynamics::ContactLaw {
+                damping_n_s_per_mm: 0.0,
+                ..Default::default()
+            },
             ..Default::default()
         };
         let sys = System::new(&scene, &d);

@@ -5,7 +5,7 @@
 
 use serde::Serialize;
 
-use crate::model::JamStatus;
+use crate::scene::JamStatus;
 
 /// A reason to distrust a simulated jam, with the numbers needed to act.
 ///

@@ -5,82 +5,124 @@ use serde::{Deserialize, Serialize};
 
 use super::ParamSet;
 use crate::error::{Error, Result};
-use crate::model::SceneParams;
+use crate::scene::SceneParams;
+use crate::settings::{self, Check, Decl, Kind};
 
-/// A scene parameter a grid axis can vary. TOML/JSON spellings are the snake_case names.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum GridParam {
+/// A scene parameter a grid axis can vary: any number of `[scene]`, the alias `mu` (both
+/// frictions) or the palm angle `theta_deg`, named by its TOML key. Its symbol, unit and axis
+/// label come from its declaration ([`crate::settings`]), so a new scene parameter is an axis
+/// with no edit here.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct GridParam {
+    key: &'static str,
+}
+
+/// The palm angle theta in deg at which the margin is evaluated: not a scene parameter but the
+/// state of the push, so it only feeds [`super::Quantity::MarginN`].
+const THETA: Decl = Decl {
+    key: "theta_deg",
+    section: "scene",
+    symbol: "θ",
+    quantity: "palm angle",
+    unit: "deg",
+    doc: "The palm angle at which the jam margin is evaluated.",
+    check: Check::Open(0.0, 180.0),
+    ..Decl::BASE
+};
+
+/// The parameters code names; any other declared one is reached by [`GridParam::named`].
+#[allow(non_upper_case_globals)]
+impl GridParam {
     /// The paper's single mu: sets mu_ground and mu_palm together.
-    Mu,
+    pub const Mu: GridParam = GridParam { key: "mu" };
     /// Friction coefficient at the ground contact A.
-    MuGround,
+    pub const MuGround: GridParam = GridParam { key: "mu_ground" };
     /// Friction coefficient at the palm contact B.
-    MuPalm,
+    pub const MuPalm: GridParam = GridParam { key: "mu_palm" };
     /// Disc radius r in mm (the mass stays as set: the paper's Fig. 7a).
-    RadiusMm,
+    pub const RadiusMm: GridParam = GridParam { key: "radius_mm" };
     /// Disc mass m in kg.
-    MassKg,
+    pub const MassKg: GridParam = GridParam { key: "mass_kg" };
     /// Palm push F in N.
-    ForceN,
+    pub const ForceN: GridParam = GridParam { key: "force_n" };
     /// Gravitational acceleration g in m/s^2.
-    GravityMS2,
-    /// Palm angle where the push starts, in deg.
-    StartAngleDeg,
-    /// Palm length in mm.
-    PalmLengthMm,
-    /// The palm angle theta in deg at which the margin is evaluated: not a scene parameter but the
-    /// state of the push, so it only feeds [`super::Quantity::MarginN`].
-    ThetaDeg,
+    pub const GravityMS2: GridParam = GridParam {
+        key: "gravity_m_s2",
+    };
+    /// Offset h of the palm's face from the hinge line in mm.
+    pub const PalmOffsetMm: GridParam = GridParam {
+        key: "palm_offset_mm",
+    };
+    /// The palm angle theta in deg (margin maps only).
+    pub const ThetaDeg: GridParam = GridParam { key: "theta_deg" };
 }
 
 impl GridParam {
+    /// The parameter named `key`: a number of `[scene]`, an alias of it, or `theta_deg`.
+    pub fn named(key: &str) -> Option<GridParam> {
+        Self::all().find(|p| p.key == key)
+    }
+
+    /// Every parameter an axis can vary, in declaration order.
+    pub fn all() -> impl Iterator<Item = GridParam> {
+        settings::palm_family()
+            .filter(|d| d.section == "scene")
+            .filter(|d| matches!(d.kind, Kind::Real) || !d.sets.is_empty())
+            .chain([&THETA])
+            .map(|d| GridParam { key: d.key })
+    }
+
+    /// The declaration: symbol, unit, quantity.
+    pub(crate) fn decl(self) -> &'static Decl {
+        if self.key == THETA.key {
+            return &THETA;
+        }
+        settings::find(self.key).expect("a GridParam names a declared setting")
+    }
+
     /// The snake_case name, as in TOML and in CSV headers.
     pub fn as_str(self) -> &'static str {
-        match self {
-            GridParam::Mu => "mu",
-            GridParam::MuGround => "mu_ground",
-            GridParam::MuPalm => "mu_palm",
-            GridParam::RadiusMm => "radius_mm",
-            GridParam::MassKg => "mass_kg",
-            GridParam::ForceN => "force_n",
-            GridParam::GravityMS2 => "gravity_m_s2",
-            GridParam::StartAngleDeg => "start_angle_deg",
-            GridParam::PalmLengthMm => "palm_length_mm",
-            GridParam::ThetaDeg => "theta_deg",
-        }
+        self.key
     }
 
-    /// The value of this parameter in `p` (mu reads mu_ground); None for [`GridParam::ThetaDeg`].
+    /// The value of this parameter in `p` (an alias reads its first key); None for
+    /// [`GridParam::ThetaDeg`].
     pub fn get(self, p: &SceneParams) -> Option<f64> {
-        Some(match self {
-            GridParam::Mu | GridParam::MuGround => p.mu_ground,
-            GridParam::MuPalm => p.mu_palm,
-            GridParam::RadiusMm => p.radius_mm,
-            GridParam::MassKg => p.mass_kg,
-            GridParam::ForceN => p.force_n,
-            GridParam::GravityMS2 => p.gravity_m_s2,
-            GridParam::StartAngleDeg => p.start_angle_deg,
-            GridParam::PalmLengthMm => p.palm_length_mm,
-            GridParam::ThetaDeg => return None,
-        })
+        let d = self.decl();
+        p.real(d.sets.first().copied().unwrap_or(d.key))
     }
 
-    /// `p` with this parameter set to `v`; [`GridParam::ThetaDeg`] leaves `p` unchanged.
+    /// `p` with this parameter set to `v` (an alias sets each of its keys);
+    /// [`GridParam::ThetaDeg`] leaves `p` unchanged.
     pub fn apply(self, mut p: SceneParams, v: f64) -> SceneParams {
-        match self {
-            GridParam::Mu => return p.with_mu(v),
-            GridParam::MuGround => p.mu_ground = v,
-            GridParam::MuPalm => p.mu_palm = v,
-            GridParam::RadiusMm => p.radius_mm = v,
-            GridParam::MassKg => p.mass_kg = v,
-            GridParam::ForceN => p.force_n = v,
-            GridParam::GravityMS2 => p.gravity_m_s2 = v,
-            GridParam::StartAngleDeg => p.start_angle_deg = v,
-            GridParam::PalmLengthMm => p.palm_length_mm = v,
-            GridParam::ThetaDeg => {}
+        let d = self.decl();
+        if d.sets.is_empty() {
+            p.set_real(d.key, v);
+        }
+        for k in d.sets {
+            p.set_real(k, v);
         }
         p
+    }
+}
+
+impl Serialize for GridParam {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.serialize_str(self.key)
+    }
+}
+
+impl<'de> Deserialize<'de> for GridParam {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        let name = String::deserialize(d)?;
+        GridParam::named(&name).ok_or_else(|| {
+            let names: Vec<&str> = GridParam::all().map(GridParam::as_str).collect();
+            serde::de::Error::custom(format!(
+                "unknown variant `{}`, expected one of {}",
+                crate::error::cut(&name),
+                names.join(", ")
+            ))
+        })
     }
 }
 

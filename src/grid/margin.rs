@@ -15,7 +15,7 @@
 use rayon::prelude::*;
 
 use super::{GridParam, GridRequest};
-use crate::model::SceneParams;
+use crate::scene::SceneParams;
 
 /// The margin of one scene as a function of theta: `c0_n + a_n cos(theta) + b_n sin(theta)`.
 ///

@@ -25,8 +25,8 @@ pub use locator::LocatorParam;
 pub use margin::MarginCoeffs;
 
 use crate::error::{Error, Result};
-use crate::model::{JamStatus, SceneParams};
 use crate::models::Solution;
+use crate::scene::{JamStatus, SceneParams};
 use crate::statics;
 
 /// A set of parameters a grid can vary, one named parameter per axis.

@@ -3,7 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
-use crate::model::{finite_at_least, finite_positive};
+use crate::scene::{finite_at_least, finite_positive};
 
 /// How the V carries the moment about the disc centre.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]

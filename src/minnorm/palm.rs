@@ -2,35 +2,29 @@
 //! bisection on the held / not-held boundary. The physics is derived in the module docs of
 //! [`crate::minnorm`].
 
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 use super::contact::{Contact, ContactProblem, Joint, Space, Wrench};
 use super::qp::{self, Backend, ContactSolution, HoldStatus, QpSettings};
-use crate::error::{Error, Result};
-use crate::model::{JamStatus, SceneParams, disc_position_mm, palm_angle_at};
+use crate::error::Result;
+use crate::scene::{JamStatus, SceneParams};
+use crate::settings::Check;
 
-/// How the disc's moment is carried.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Formulation {
-    /// The paper's: contact A at the ground; the disc rides a translational joint that carries
-    /// the moment; the palm's push is a known load on the edge of its friction cone, and the
-    /// closing palm blocks the disc's way back to the hinge (a frictionless one-way stop along +X).
-    Translational,
-    /// Beyond the paper: the disc may rotate; contacts at A and at the palm B, whose normal push
-    /// F cos(atan mu_palm) is given and whose friction is unknown. Rolling is possible.
-    Rolling,
+choice! {
+    /// How the disc's moment is carried.
+    pub enum Formulation {
+        /// The paper's: contact A at the ground; the disc rides a translational joint that
+        /// carries the moment; the palm's push is a known load on the edge of its friction cone,
+        /// and the closing palm blocks the disc's way back to the hinge (a frictionless one-way
+        /// stop along +X).
+        Translational = "translational",
+        /// Beyond the paper: the disc may rotate; contacts at A and at the palm B, whose normal
+        /// push F cos(atan mu_palm) is given and whose friction is unknown. Rolling is possible.
+        Rolling = "rolling",
+    }
 }
 
 impl Formulation {
-    /// The spelling used in JSON, TOML and on the command line.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Formulation::Translational => "translational",
-            Formulation::Rolling => "rolling",
-        }
-    }
-
     /// Whether this formulation holds the disc at some palm angle > 0: with any friction when
     /// a joint carries the moment; with friction at both contacts when the disc may roll
     /// (held iff tan(theta/2) <= min(mu_p, mu_g (1 + m g / N)), module docs).
@@ -50,43 +44,29 @@ impl Formulation {
     }
 }
 
-/// Settings of the minimum-norm model (TOML section `[min_norm]`).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct MinNormSettings {
-    /// How the disc's moment is carried: "translational" (the paper's) or "rolling"
-    /// (default: translational).
-    pub formulation: Formulation,
-    /// Width in rad at which the bisection on the held / not-held boundary stops
-    /// (default: 1e-9).
-    pub bisection_tol_rad: f64,
-    /// The program's settings (section `[min_norm.qp]`).
-    pub qp: QpSettings,
-}
-
-impl Default for MinNormSettings {
-    fn default() -> Self {
-        MinNormSettings {
-            formulation: Formulation::Translational,
-            bisection_tol_rad: 1e-9,
-            qp: QpSettings::default(),
-        }
+settings! {
+    /// Settings of the minimum-norm model.
+    section = "min_norm";
+    pub struct MinNormSettings {
+        /// Min-norm formulation: how the disc's moment is carried.
+        ///
+        /// translational (the paper's): the disc rides a translational joint that carries the
+        /// moment; rolling: the disc may rotate and friction at the ground and the palm carries it.
+        formulation: Formulation = Formulation::Translational, flag: Some("formulation"),
+            value_name: "FORMULATION";
+        /// Width at which the bisection on the held / not-held boundary stops.
+        // Not below 1e-15 rad: there the bisection of an angle of order one stalls in f64.
+        bisection_tol_rad: f64 = 1e-9, quantity: "bisection tolerance", unit: "rad",
+            check: Check::Closed(1e-15, 0.1);
+        /// The program's settings (section `[min_norm.qp]`).
+        qp: QpSettings = QpSettings::default();
     }
 }
 
 impl MinNormSettings {
     /// Checks every field; the error names the TOML key and the value.
     pub fn validate(&self) -> Result<()> {
-        let t = self.bisection_tol_rad;
-        // 1e-15 rad: below it the bisection of an angle of order one stalls in f64.
-        if !(t.is_finite() && (1e-15..=0.1).contains(&t)) {
-            return Err(Error::invalid(
-                "min_norm.bisection_tol_rad",
-                t,
-                "the bisection tolerance lies in [1e-15, 0.1] rad, e.g. 1e-9",
-            ));
-        }
-        self.qp.validate()
+        self.check_declared()
     }
 }
 
@@ -189,7 +169,7 @@ impl Search<'_> {
     fn jam_at(mut self, status: JamStatus, theta: f64, sol: ContactSolution) -> PalmSolution {
         self.out.status = status;
         self.out.theta_jam_deg = Some(theta.to_degrees());
-        let x = disc_position_mm(self.p.radius_mm, theta);
+        let x = self.p.disc_position_mm(theta);
         self.out.x_jam_mm = x.is_finite().then_some(x);
         self.out.at_jam = Some(sol);
         self.out
@@ -222,7 +202,7 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
         },
     };
     let start = p.start_angle_deg.to_radians();
-    let reach = palm_angle_at(p.radius_mm, p.palm_length_mm);
+    let reach = p.reach_angle();
     // A disc that starts beyond the palm's end is never touched.
     if start < reach {
         search.out.status = JamStatus::BeyondReach;

@@ -16,61 +16,45 @@ use serde::{Deserialize, Serialize};
 use super::contact::{ConeKind, ContactProblem, Lowered, Space};
 use super::exact;
 use crate::error::{Error, Result};
+use crate::settings::Check;
 
-/// Settings of the minimum-norm program (TOML section `[min_norm.qp]`).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct QpSettings {
-    /// Use the exact active-set path for small planar problems (at most 8 friction rows), and
-    /// clarabel for everything else (default: true). The exact path is tested against clarabel.
-    pub fast_path: bool,
-    /// clarabel's iteration limit (default: 50; the palm scene needs about 8-12).
-    pub max_iter: u32,
-    /// clarabel's primal and dual feasibility tolerance, relative (default: 1e-8).
-    pub tol_feas: f64,
-    /// clarabel's duality-gap tolerance, absolute and relative (default: 1e-8).
-    pub tol_gap: f64,
-    /// clarabel's infeasibility-certificate tolerance, absolute and relative (default: 1e-8).
-    pub tol_infeas: f64,
-}
-
-impl Default for QpSettings {
-    fn default() -> Self {
-        QpSettings {
-            fast_path: true,
-            max_iter: 50,
-            // clarabel's own defaults: the problem is scaled to forces and lever arms of order one.
-            tol_feas: 1e-8,
-            tol_gap: 1e-8,
-            tol_infeas: 1e-8,
-        }
+settings! {
+    /// Settings of the minimum-norm program.
+    section = "min_norm.qp";
+    pub struct QpSettings {
+        /// Use the exact active-set path for small planar problems (at most 8 friction rows),
+        /// and clarabel for everything else. The exact path is tested against clarabel.
+        fast_path: bool = true;
+        /// clarabel's iteration limit (the palm scene needs about 8-12).
+        max_iter: u32 = 50, quantity: "iteration limit", check: Check::CountAtLeast(1);
+        /// clarabel's primal and dual feasibility tolerance, relative.
+        // clarabel's own defaults: the problem is scaled to forces and lever arms of order one.
+        tol_feas: f64 = 1e-8, quantity: "feasibility tolerance", unit: "-",
+            check: Check::Open(0.0, 1.0);
+        /// clarabel's duality-gap tolerance, absolute and relative.
+        tol_gap: f64 = 1e-8, quantity: "duality-gap tolerance", unit: "-",
+            check: Check::Open(0.0, 1.0);
+        /// clarabel's infeasibility-certificate tolerance, absolute and relative.
+        tol_infeas: f64 = 1e-8, quantity: "infeasibility tolerance", unit: "-",
+            check: Check::Open(0.0, 1.0);
     }
 }
 
 impl QpSettings {
     /// Checks every field; the error names the TOML key and the value.
     pub fn validate(&self) -> Result<()> {
-        if self.max_iter == 0 {
-            return Err(Error::invalid(
-                "min_norm.qp.max_iter",
-                self.max_iter,
-                "at least one iteration is needed",
-            ));
-        }
-        for (key, v) in [
-            ("min_norm.qp.tol_feas", self.tol_feas),
-            ("min_norm.qp.tol_gap", self.tol_gap),
-            ("min_norm.qp.tol_infeas", self.tol_infeas),
-        ] {
-            if !(v.is_finite() && v > 0.0 && v < 1.0) {
-                return Err(Error::invalid(
-                    key,
-                    v,
-                    "a tolerance lies in (0, 1), e.g. 1e-8",
-                ));
-            }
-        }
-        Ok(())
+        self.check_declared()
+    }
+}
+
+/// The program's settings are a section inside `[min_norm]`: checked with it, never a flag.
+impl crate::settings::Value for QpSettings {
+    const KIND: crate::settings::Kind = crate::settings::Kind::Section;
+    fn check(&self, _decl: &crate::settings::Decl) -> Result<()> {
+        self.check_declared()
+    }
+    fn text(&self) -> String {
+        String::new()
     }
 }
 

@@ -12,7 +12,7 @@ use serde::Serialize;
 use super::palm::{self, Formulation, MinNormSettings};
 use super::qp::QpSettings;
 use crate::error::{Error, Result};
-use crate::model::{JamStatus, SceneParams};
+use crate::scene::{JamStatus, SceneParams};
 use crate::statics;
 
 /// One tolerance of the study.

@@ -24,8 +24,8 @@ use super::{Reference, ReferenceKind, Source, Why, check_count, check_list, refe
 use crate::config::Config;
 use crate::dynamics::Method;
 use crate::error::{Error, Result};
-use crate::model::JamStatus;
 use crate::models::ModelKind;
+use crate::scene::JamStatus;
 
 /// Most values in one list of tolerances or steps (the crate's limit).
 pub const MAX_TOLERANCES: usize = crate::limits::MAX_TOLERANCES;
@@ -264,7 +264,10 @@ pub fn run(
     settings.validate()?;
     let base = &Config {
         dynamics: crate::dynamics::DynamicsParams {
-            max_steps: settings.max_steps,
+            integrator: crate::dynamics::IntegratorSettings {
+                max_steps: settings.max_steps,
+                ..base.dynamics.integrator
+            },
             ..base.dynamics
         },
         ..base.clone()
@@ -366,8 +369,8 @@ pub fn run(
                 Some(
                     super::penetration_mm(
                         scene.force_n,
-                        params.stiffness_n_per_mm_e,
-                        params.exponent,
+                        params.contact.stiffness_n_per_mm_e,
+                        params.contact.exponent,
                     ) * 1e3,
                 )
             }

@@ -15,8 +15,8 @@ use crate::config::Config;
 use crate::dynamics::{Drive, DynamicsParams, Method};
 use crate::error::Result;
 use crate::grid::{Grid, GridAxis, GridParam};
-use crate::model::JamStatus;
 use crate::models::{self, ModelKind};
+use crate::scene::JamStatus;
 
 /// Most cells per axis of the full map.
 pub const MAX_CELLS_PER_AXIS: usize = 2000;
@@ -103,7 +103,10 @@ pub fn run(base: &Config, settings: &MapCostSettings) -> Result<MapCostReport> {
     settings.validate()?;
     let base = &Config {
         dynamics: DynamicsParams {
-            drive: Drive::Force,
+            drive: crate::dynamics::DriveSettings {
+                mode: Drive::Force,
+                ..base.dynamics.drive
+            },
             ..base.dynamics
         },
         ..base.clone()
@@ -119,16 +122,16 @@ pub fn run(base: &Config, settings: &MapCostSettings) -> Result<MapCostReport> {
         (
             Source::Simulation {
                 method: Method::Radau5,
-                rtol: base.dynamics.rtol,
+                rtol: base.dynamics.integrator.rtol,
                 penetration_um: None,
-                verify: base.dynamics.verify,
+                verify: base.dynamics.verification.verify,
             },
             settings.dynamics_per_axis,
         ),
         (
             Source::Nonsmooth {
                 step_deg: base.dynamics.nonsmooth_step_deg(),
-                verify: base.dynamics.verify,
+                verify: base.dynamics.verification.verify,
             },
             settings.dynamics_per_axis,
         ),

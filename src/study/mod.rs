@@ -36,8 +36,8 @@ use crate::dynamics::{CrossCheck, Drive, DynamicsParams, DynamicsSolution, Failu
 use crate::error::{Error, Result};
 use crate::minnorm::palm::MinNormSettings;
 use crate::minnorm::qp::QpSettings;
-use crate::model::{JamStatus, SceneParams};
 use crate::models::{Detail, ModelKind, ModelSpec, OutsideModel, Solution};
+use crate::scene::{JamStatus, SceneParams};
 use crate::statics;
 
 /// A way of answering "where does it jam": a model with the settings a report varies.
@@ -162,16 +162,25 @@ impl Source {
                 verify,
             } => {
                 let d = &base.dynamics;
-                let stiffness = penetration_um.map_or(d.stiffness_n_per_mm_e, |um| {
-                    stiffness_for_penetration(base.scene.force_n, um * 1e-3, d.exponent)
+                let stiffness = penetration_um.map_or(d.contact.stiffness_n_per_mm_e, |um| {
+                    stiffness_for_penetration(base.scene.force_n, um * 1e-3, d.contact.exponent)
                 });
                 ModelSpec::Dynamics {
                     params: DynamicsParams {
-                        method,
-                        rtol,
-                        atol: Some(rtol),
-                        verify,
-                        stiffness_n_per_mm_e: stiffness,
+                        contact: crate::dynamics::ContactLaw {
+                            stiffness_n_per_mm_e: stiffness,
+                            ..d.contact
+                        },
+                        integrator: crate::dynamics::IntegratorSettings {
+                            method,
+                            rtol,
+                            atol: Some(rtol),
+                            ..d.integrator
+                        },
+                        verification: crate::dynamics::Verification {
+                            verify,
+                            ..d.verification
+                        },
                         ..*d
                     },
                     series_dt_s: None,
@@ -179,9 +188,15 @@ impl Source {
             }
             Source::Nonsmooth { step_deg, verify } => ModelSpec::Dynamics {
                 params: DynamicsParams {
-                    method: Method::Nonsmooth,
-                    nonsmooth_step_deg: Some(step_deg),
-                    verify,
+                    integrator: crate::dynamics::IntegratorSettings {
+                        method: Method::Nonsmooth,
+                        nonsmooth_step_deg: Some(step_deg),
+                        ..base.dynamics.integrator
+                    },
+                    verification: crate::dynamics::Verification {
+                        verify,
+                        ..base.dynamics.verification
+                    },
                     ..base.dynamics
                 },
                 series_dt_s: None,
@@ -192,7 +207,7 @@ impl Source {
     /// The drive this source poses the scene with: the simulation's, none for a finite push.
     pub fn drive(&self, base: &Config) -> Option<Drive> {
         match self {
-            Source::Simulation { .. } | Source::Nonsmooth { .. } => Some(base.dynamics.drive),
+            Source::Simulation { .. } | Source::Nonsmooth { .. } => Some(base.dynamics.drive.mode),
             _ => None,
         }
     }

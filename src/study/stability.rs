@@ -40,8 +40,8 @@ use super::{Reference, SolveFn, Source, Why, reference, why};
 use crate::config::Config;
 use crate::dynamics::{Drive, DynamicsParams, Method};
 use crate::error::Result;
-use crate::model::{JamStatus, SceneParams};
 use crate::models::ModelKind;
+use crate::scene::{JamStatus, SceneParams};
 use crate::statics;
 
 /// Allowance of the closed form and the min-norm program against the closed form, relative:
@@ -76,11 +76,14 @@ pub struct Case {
 pub fn cases(base: &Config) -> Vec<Case> {
     let s0 = base.scene;
     let d0 = DynamicsParams {
-        max_steps: STABILITY_MAX_STEPS,
+        integrator: crate::dynamics::IntegratorSettings {
+            max_steps: STABILITY_MAX_STEPS,
+            ..base.dynamics.integrator
+        },
         ..base.dynamics
     };
     let f = s0.force_n;
-    let k_at = |um: f64| super::stiffness_for_penetration(f, um * 1e-3, d0.exponent);
+    let k_at = |um: f64| super::stiffness_for_penetration(f, um * 1e-3, d0.contact.exponent);
     let mut out = Vec::new();
     let mut add = |name: &str, what: &str, scene: SceneParams, dynamics: DynamicsParams| {
         out.push(Case {
@@ -100,7 +103,10 @@ pub fn cases(base: &Config) -> Vec<Case> {
     ] {
         let what = format!("contact stiffness: {um} um of penetration at F");
         let d = DynamicsParams {
-            stiffness_n_per_mm_e: k_at(um),
+            contact: crate::dynamics::ContactLaw {
+                stiffness_n_per_mm_e: k_at(um),
+                ..d0.contact
+            },
             ..d0
         };
         add(name, &what, s0, d);
@@ -110,8 +116,11 @@ pub fn cases(base: &Config) -> Vec<Case> {
         "stiction velocity 1e-3 mm/s (friction velocity 2e-3)",
         s0,
         DynamicsParams {
-            stiction_velocity_mm_s: 1e-3,
-            friction_velocity_mm_s: 2e-3,
+            friction: crate::dynamics::FrictionLaw {
+                stiction_velocity_mm_s: 1e-3,
+                friction_velocity_mm_s: 2e-3,
+                ..d0.friction
+            },
             ..d0
         },
     );
@@ -199,7 +208,10 @@ pub fn cases(base: &Config) -> Vec<Case> {
             &what,
             s0,
             DynamicsParams {
-                omega_deg_s: w,
+                drive: crate::dynamics::DriveSettings {
+                    omega_deg_s: w,
+                    ..d0.drive
+                },
                 ..d0
             },
         );
@@ -234,7 +246,10 @@ pub fn cases(base: &Config) -> Vec<Case> {
         d0,
     );
     let force = DynamicsParams {
-        drive: Drive::Force,
+        drive: crate::dynamics::DriveSettings {
+            mode: Drive::Force,
+            ..d0.drive
+        },
         ..d0
     };
     add("force_drive", "force-limited drive at F", s0, force);
@@ -271,19 +286,19 @@ pub fn methods(base: &Config) -> Vec<Source> {
         },
         Source::Simulation {
             method: Method::Radau5,
-            rtol: d.rtol,
+            rtol: d.integrator.rtol,
             penetration_um: None,
-            verify: d.verify,
+            verify: d.verification.verify,
         },
         Source::Simulation {
             method: Method::Dopri5,
-            rtol: d.rtol,
+            rtol: d.integrator.rtol,
             penetration_um: None,
-            verify: d.verify,
+            verify: d.verification.verify,
         },
         Source::Nonsmooth {
             step_deg: d.nonsmooth_step_deg(),
-            verify: d.verify,
+            verify: d.verification.verify,
         },
     ]
 }
@@ -524,14 +539,14 @@ fn allowance_mm(
     // The push the contact carries at the jam: the force drive's limit F; the motion drive
     // pushes as hard as sliding the disc needs at the angle it stopped at, by the corrected
     // Eq. 1, m g sin(alpha_g) / sin(theta - alpha_g - alpha_p), and at least F.
-    let push = match (d.drive, theta_deg) {
+    let push = match (d.drive.mode, theta_deg) {
         (Drive::Motion, Some(t)) if t.to_radians() > wedge => {
             let need = p.weight_n() * p.alpha_ground().sin() / (t.to_radians() - wedge).sin();
             need.max(p.force_n)
         }
         _ => p.force_n,
     };
-    let delta = super::penetration_mm(push, d.stiffness_n_per_mm_e, d.exponent);
+    let delta = super::penetration_mm(push, d.contact.stiffness_n_per_mm_e, d.contact.exponent);
     let theta_ref = r.theta_jam_deg.unwrap_or(90.0).to_radians();
     let give = if compliant {
         4.0 * delta / theta_ref.sin().max(1e-3)
@@ -543,8 +558,8 @@ fn allowance_mm(
     let decel = p.mu_ground * p.gravity_m_s2 * 1000.0;
     let coast = match x_mm {
         Some(x) if x > x_ref && decel > 0.0 => {
-            let v =
-                p.radius_mm * d.omega_deg_s.to_radians() / (2.0 * (0.5 * theta_ref).sin().powi(2));
+            let v = p.radius_mm * d.drive.omega_deg_s.to_radians()
+                / (2.0 * (0.5 * theta_ref).sin().powi(2));
             v * v / (2.0 * decel)
         }
         _ => 0.0,

@@ -156,12 +156,12 @@
 
 pub(crate) mod step;
 
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 use self::step::{ContactMode, DriveMode, Modes, StepProblem};
 use super::jam::SeriesRow;
-use super::{Drive, DynamicsParams};
-use crate::model::SceneParams;
+use super::{DiscMotion, Drive, DynamicsParams};
+use crate::scene::SceneParams;
 
 /// Speed (mm/s, and rad/s for the rotation) below which the disc is at rest: the speeds that
 /// close gaps of round-off size (1e-11 mm) over a step are around 1e-7 mm/s.
@@ -169,16 +169,6 @@ const REST_MM_S: f64 = 1e-6;
 
 /// Height (mm) above the ground beyond which the disc has left it: far above round-off.
 const LIFT_MM: f64 = 1e-9;
-
-/// How the disc may move in the nonsmooth method.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum DiscMotion {
-    /// The paper's: on a translational joint, no rotation (the joint takes the moment).
-    Slides,
-    /// Free in the plane: x, y and rotation, unilateral contacts at the ground and the palm.
-    Rolls,
-}
 
 /// A lock-up: the motion-driven palm cannot turn any further without entering the disc.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -262,22 +252,9 @@ struct LastStep {
 /// (7e-6 mm at mu = 0.15 and the default 0.1 deg), far below the method's own error.
 const LOCATE_HALVINGS: u32 = 16;
 
-impl std::str::FromStr for DiscMotion {
-    type Err = String;
-    fn from_str(s: &str) -> std::result::Result<Self, String> {
-        match s {
-            "slides" => Ok(DiscMotion::Slides),
-            "rolls" => Ok(DiscMotion::Rolls),
-            _ => Err(format!(
-                "unknown disc motion '{s}' (expected slides or rolls)"
-            )),
-        }
-    }
-}
-
 /// The step length in s for a palm turn of `step_deg` at omega.
 pub fn step_s(params: &DynamicsParams) -> f64 {
-    params.nonsmooth_step_deg().to_radians() / params.omega_deg_s.to_radians()
+    params.nonsmooth_step_deg().to_radians() / params.drive.omega_deg_s.to_radians()
 }
 
 /// The constants of one simulation, in kg, mm, s.
@@ -323,24 +300,24 @@ impl Stepper {
         let mu = [scene.mu_ground, scene.mu_palm];
         Stepper {
             radius: r,
-            offset: params.palm_offset_mm,
+            offset: scene.palm_offset_mm,
             gravity: scene.gravity_m_s2 * 1000.0,
             inv_mass: [
                 1.0 / m,
                 1.0 / m,
-                match params.disc {
+                match params.integrator.disc {
                     DiscMotion::Slides => 0.0,
                     DiscMotion::Rolls => 2.0 / (m * r * r),
                 },
             ],
             mu,
             mu_static: [
-                params.mu_static_ground.unwrap_or(mu[0]),
-                params.mu_static_palm.unwrap_or(mu[1]),
+                params.friction.mu_static_ground.unwrap_or(mu[0]),
+                params.friction.mu_static_palm.unwrap_or(mu[1]),
             ],
-            omega: params.omega_deg_s.to_radians(),
+            omega: params.drive.omega_deg_s.to_radians(),
             // N_max in kg mm/s^2 (1 N = 1000 kg mm/s^2), as an impulse over one step.
-            push_limit: match params.drive {
+            push_limit: match params.drive.mode {
                 Drive::Motion => f64::INFINITY,
                 Drive::Force => scene.force_n * scene.alpha_palm().cos() * 1000.0 * dt,
             },
@@ -430,11 +407,11 @@ pub(crate) fn run(scene: &SceneParams, params: &DynamicsParams, series_dt_s: Opt
     let mut travel = 0.0;
     while theta > 0.0 {
         if let Some(End::AtRest { t: t_jam, .. }) = rest
-            && t >= t_jam + params.after_jam_s
+            && t >= t_jam + params.series.after_jam_s
         {
             break;
         }
-        if out.steps >= params.max_steps {
+        if out.steps >= params.integrator.max_steps {
             out.end = End::StepLimit { t };
             break;
         }
@@ -444,7 +421,7 @@ pub(crate) fn run(scene: &SceneParams, params: &DynamicsParams, series_dt_s: Opt
             break;
         }
         let Some(sol) = built.problem.solve(modes) else {
-            out.end = match (params.drive, last) {
+            out.end = match (params.drive.mode, last) {
                 (Drive::Motion, Some(last)) => {
                     let (lock, resolution, probes) = locate_lock_up(&st, &last, modes, last_push);
                     out.mode_solves += probes;

@@ -138,25 +138,31 @@ fn the_step_is_a_fixed_point_of_clarabels_tresca_problem() {
             mu_ground: rng.range(0.0, 0.8),
             mu_palm: rng.range(0.0, 0.8),
             mass_kg: rng.range(0.1, 5.0),
+            palm_offset_mm: if i % 3 == 0 { 0.5 } else { 0.0 },
             ..SceneParams::default()
         };
         let params = DynamicsParams {
-            drive,
-            disc: if slides {
-                DiscMotion::Slides
-            } else {
-                DiscMotion::Rolls
+            drive: crate::dynamics::DriveSettings {
+                mode: drive,
+                omega_deg_s: rng.range(1.0, 90.0),
+                ..Default::default()
             },
-            method: crate::dynamics::Method::Nonsmooth,
-            omega_deg_s: rng.range(1.0, 90.0),
-            palm_offset_mm: if i % 3 == 0 { 0.5 } else { 0.0 },
+            integrator: crate::dynamics::IntegratorSettings {
+                disc: if slides {
+                    DiscMotion::Slides
+                } else {
+                    DiscMotion::Rolls
+                },
+                method: crate::dynamics::Method::Nonsmooth,
+                ..Default::default()
+            },
             ..DynamicsParams::default()
         };
         let st = Stepper::new(&scene, &params);
         let theta = rng.range(20.0, 88.0).to_radians();
         let (s, c) = theta.sin_cos();
         let r = scene.radius_mm;
-        let touching = (r * (1.0 + c) + params.palm_offset_mm) / s;
+        let touching = (r * (1.0 + c) + scene.palm_offset_mm) / s;
         let q = [
             touching + rng.range(-1e-3, 2e-3),
             r + rng.range(-1e-4, 1e-3),
@@ -226,8 +232,11 @@ fn the_lock_up_is_located_at_the_wedge_inside_its_step() {
         for step_deg in [0.1, 0.03, 0.01, 0.003] {
             let scene = SceneParams::default().with_mu(mu);
             let params = DynamicsParams {
-                method: crate::dynamics::Method::Nonsmooth,
-                nonsmooth_step_deg: Some(step_deg),
+                integrator: crate::dynamics::IntegratorSettings {
+                    method: crate::dynamics::Method::Nonsmooth,
+                    nonsmooth_step_deg: Some(step_deg),
+                    ..Default::default()
+                },
                 ..DynamicsParams::default()
             };
             let run = run(&scene, &params, None);

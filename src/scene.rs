@@ -1,0 +1,281 @@
+//! The scene shared by all models: parameters, geometry (Eq. 2) and the jam status.
+//!
+//! Frame (Fig. 1): hinge at the origin, ground on y = 0, palm the ray from the origin at angle
+//! theta above +X. The disc of radius r touches both; its centre is (x, r) with
+//! x = r cot(theta/2), which is also the distance from the hinge to both contact points. A palm
+//! whose face lies h off the hinge line (its thickness) puts the disc at
+//! x = r cot(theta/2) + h / sin(theta) ([`disc_position_mm`]).
+
+use crate::error::{Error, Result};
+use crate::settings::{Check, Decl, Kind};
+
+settings! {
+    /// Parameters of the palm-and-disc scene.
+    ///
+    /// Units are in the names; defaults are the paper's (Section 3.1 and Fig. 3 caption).
+    section = "scene";
+    pub struct SceneParams {
+        /// Coulomb friction coefficient at the ground contact A.
+        mu_ground: f64 = 0.4, flag: Some("mu-ground"), symbol: "μ_ground",
+            quantity: "ground friction coefficient", unit: "-", check: Check::AtLeast(0.0),
+            value_name: "MU";
+        /// Coulomb friction coefficient at the palm contact B.
+        mu_palm: f64 = 0.4, flag: Some("mu-palm"), symbol: "μ_palm",
+            quantity: "palm friction coefficient", unit: "-", check: Check::AtLeast(0.0),
+            value_name: "MU";
+        /// Disc radius r.
+        radius_mm: f64 = 10.0, flag: Some("radius"), symbol: "r", quantity: "disc radius",
+            unit: "mm", check: Check::Above(0.0);
+        /// Disc mass m; 0 is a weightless disc.
+        mass_kg: f64 = 1.0, flag: Some("mass"), symbol: "m", quantity: "disc mass",
+            unit: "kg", check: Check::AtLeast(0.0);
+        /// Palm push F: the magnitude of the palm's force on the disc while it slides.
+        ///
+        /// F -> infinity is a palm driven by prescribed motion.
+        force_n: f64 = 200.0, flag: Some("force"), symbol: "F", quantity: "palm push",
+            unit: "N", check: Check::Above(0.0);
+        /// Gravitational acceleration g (the paper's 9806 mm/s^2).
+        // 9.806, not 9.81: the paper's Adams model has 9806 mm/s^2, which keeps x_jam = 24.355 mm.
+        gravity_m_s2: f64 = 9.806, flag: Some("gravity"), symbol: "g", quantity: "gravity",
+            unit: "m/s²", check: Check::AtLeast(0.0), value_name: "M/S^2";
+        /// Palm angle where the push starts, in (0, 180).
+        ///
+        /// Above 90 deg the palm's push points upwards and can lift the disc: every model
+        /// answers outside_model there.
+        start_angle_deg: f64 = 90.0, flag: Some("start-angle"), symbol: "θ_start",
+            quantity: "start angle of the palm", unit: "deg", check: Check::Open(0.0, 180.0);
+        /// Length of the palm bar: a jam beyond its end is never reached.
+        ///
+        /// The contact B lies x mm from the hinge along the palm (x - h tan(theta/2) with a palm
+        /// offset h).
+        /// The paper's Adams bar is 150 mm.
+        palm_length_mm: f64 = 150.0, flag: Some("palm-length"), symbol: "L_palm",
+            quantity: "palm length", unit: "mm", check: Check::Above(0.0);
+        /// Offset h of the palm's contact face from the hinge line (half the bar's thickness).
+        ///
+        /// The forces keep their directions, so theta_jam does not change; the disc sits
+        /// h / sin(theta) further out: x = r cot(theta/2) + h / sin(theta). 0 is the paper's
+        /// theory; its 1 mm bars give 0.5.
+        palm_offset_mm: f64 = 0.0, flag: Some("palm-offset"), symbol: "h",
+            quantity: "palm offset", unit: "mm", check: Check::AtLeast(0.0);
+    }
+}
+
+/// The scene's aliases: `mu` sets both frictions (the paper's single mu).
+pub(crate) const SCENE_ALIASES: &[Decl] = &[Decl {
+    key: "mu",
+    section: "scene",
+    flag: Some("mu"),
+    symbol: "μ",
+    quantity: "friction coefficient",
+    unit: "-",
+    doc: "Friction coefficient at both contacts (the paper's single mu).\n\n\
+          --mu-ground or --mu-palm given as well take precedence for their contact.",
+    check: Check::AtLeast(0.0),
+    kind: Kind::Derived,
+    default: || "0.4".to_string(),
+    sets: &["mu_ground", "mu_palm"],
+    value_name: "MU",
+}];
+
+impl SceneParams {
+    /// Checks every field; the error names the TOML key and the offending value.
+    pub fn validate(&self) -> Result<()> {
+        self.check_declared()
+    }
+
+    /// Weight m g of the disc in N.
+    pub fn weight_n(&self) -> f64 {
+        self.mass_kg * self.gravity_m_s2
+    }
+
+    /// Friction angle at the ground, atan(mu_ground), in rad.
+    pub fn alpha_ground(&self) -> f64 {
+        self.mu_ground.atan()
+    }
+
+    /// Friction angle at the palm, atan(mu_palm), in rad.
+    pub fn alpha_palm(&self) -> f64 {
+        self.mu_palm.atan()
+    }
+
+    /// Sets both friction coefficients (the paper's single mu).
+    pub fn with_mu(mut self, mu: f64) -> Self {
+        self.mu_ground = mu;
+        self.mu_palm = mu;
+        self
+    }
+
+    /// Disc position x in mm (hinge to the ground contact A) where the disc touches the palm
+    /// at palm angle `theta` (rad): x = r cot(theta/2) + h / sin(theta) ([`disc_position_mm`]
+    /// with this scene's radius and palm offset).
+    pub fn disc_position_mm(&self, theta: f64) -> f64 {
+        disc_position_mm(self.radius_mm, self.palm_offset_mm, theta)
+    }
+
+    /// The palm angle (rad) at which the disc sits at `x_mm`: the inverse of
+    /// [`SceneParams::disc_position_mm`] ([`palm_angle_at`]).
+    pub fn palm_angle_at(&self, x_mm: f64) -> f64 {
+        palm_angle_at(self.radius_mm, self.palm_offset_mm, x_mm)
+    }
+
+    /// The palm angle (rad) below which the contact B lies past the palm's end: where
+    /// s_B = r cot(theta/2) + h cot(theta) = L. With t = tan(theta/2) that is
+    /// h t^2 + 2 L t - (2 r + h) = 0, so t = (2 r + h) / (L + sqrt(L^2 + h (2 r + h))), which
+    /// is r / L for h = 0.
+    pub fn reach_angle(&self) -> f64 {
+        let (r, h, l) = (self.radius_mm, self.palm_offset_mm, self.palm_length_mm);
+        2.0 * ((2.0 * r + h) / (l + (l * l + h * (2.0 * r + h)).sqrt())).atan()
+    }
+
+    /// Distance in mm from the hinge along the palm to the contact B at palm angle `theta`
+    /// (rad), [`contact_distance_mm`].
+    pub fn contact_distance_mm(&self, theta: f64) -> f64 {
+        contact_distance_mm(self.radius_mm, self.palm_offset_mm, theta)
+    }
+}
+
+pub(crate) fn finite_positive(key: &str, v: f64, reason: &str) -> Result<()> {
+    if v.is_finite() && v > 0.0 {
+        Ok(())
+    } else {
+        Err(Error::invalid(key, v, reason))
+    }
+}
+
+pub(crate) fn finite_at_least(key: &str, v: f64, min: f64, reason: &str) -> Result<()> {
+    if v.is_finite() && v >= min {
+        Ok(())
+    } else {
+        Err(Error::invalid(key, v, reason))
+    }
+}
+
+/// Disc position x in mm (hinge to the ground contact A) where a disc of radius `radius_mm`
+/// touches a palm at angle `theta` (rad) whose face lies `offset_mm` off the hinge line:
+///
+/// ```text
+/// x = r cot(theta/2) + h / sin(theta)            (Eq. 2, simplified, plus the palm's offset)
+/// ```
+///
+/// The centre (x, r) lies r + h from the hinge line: x sin(theta) - r cos(theta) = r + h, and
+/// r (1 + cos t) / sin t = r cot(t/2). With h = 0, x is also the distance from the hinge to B.
+pub fn disc_position_mm(radius_mm: f64, offset_mm: f64, theta: f64) -> f64 {
+    let base = radius_mm / (0.5 * theta).tan();
+    if offset_mm == 0.0 {
+        base
+    } else {
+        base + offset_mm / theta.sin()
+    }
+}
+
+/// Palm angle (rad) at which the disc sits at position `x_mm`: the inverse of
+/// [`disc_position_mm`], theta = atan2(r, x) + asin((r + h) / hypot(x, r)) (from
+/// x sin(theta) - r cos(theta) = r + h), which is 2 atan(r / x) for h = 0.
+pub fn palm_angle_at(radius_mm: f64, offset_mm: f64, x_mm: f64) -> f64 {
+    if offset_mm == 0.0 {
+        return 2.0 * (radius_mm / x_mm).atan();
+    }
+    let reach = ((radius_mm + offset_mm) / x_mm.hypot(radius_mm)).min(1.0);
+    radius_mm.atan2(x_mm) + reach.asin()
+}
+
+/// Distance in mm from the hinge along the palm to the contact B at palm angle `theta` (rad):
+/// s_B = x cos(theta) + r sin(theta) = r cot(theta/2) + h cot(theta), which is x for h = 0
+/// (equal tangents) and x - h tan(theta/2) for an offset palm. The palm's reach is judged on it.
+pub fn contact_distance_mm(radius_mm: f64, offset_mm: f64, theta: f64) -> f64 {
+    let x = disc_position_mm(radius_mm, offset_mm, theta);
+    if offset_mm == 0.0 {
+        x
+    } else {
+        x * theta.cos() + radius_mm * theta.sin()
+    }
+}
+
+choice! {
+    /// What a model concludes about one push, as data a chart can colour.
+    ///
+    /// The statics decide them in the order listed.
+    pub enum JamStatus {
+        /// theta_jam <= 0: both frictions are zero and the disc slides to the hinge's far side.
+        NeverJams = "never_jams",
+        /// The push is too weak ever to move the disc: F <= m g sin(atan mu_ground), the least
+        /// push that slides it (the palm's push must overcome the ground friction it adds itself).
+        TooWeak = "too_weak",
+        /// The disc is held already at the start angle: it jams as soon as the palm touches it.
+        JammedAtStart = "jammed_at_start",
+        /// The jam point lies beyond the palm's end, so the palm loses the disc first.
+        BeyondReach = "beyond_reach",
+        /// The disc slides, then jams at theta_jam.
+        Jams = "jams",
+        /// A simulation's answer failed its cross-check against the quasi-static limit or its
+        /// error estimate (too loose a tolerance); its numbers are reported but must not be
+        /// trusted.
+        Inaccurate = "inaccurate",
+        /// A simulation's integrator gave up before the jam (the time and reason are reported).
+        IntegratorFailed = "integrator_failed",
+        /// The scene lies outside what this model represents (a typed reason says why); the
+        /// other models may still answer it.
+        OutsideModel = "outside_model",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn equal_tangents_eq2_simplifies() {
+        // Eq. 2 as printed: r(1 + cos t)/tan t + r sin t; the crate docs say it equals r cot(t/2).
+        for deg in [10.0_f64, 30.0, 44.646, 60.0, 89.0, 120.0] {
+            let t = deg.to_radians();
+            let r = 10.0;
+            let eq2 = r * (1.0 + t.cos()) / t.tan() + r * t.sin();
+            let x = disc_position_mm(r, 0.0, t);
+            assert!(
+                (eq2 - x).abs() < 1e-12 * x.abs().max(1.0),
+                "{deg}: {eq2} vs {x}"
+            );
+            assert!((palm_angle_at(r, 0.0, x) - t).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn status_text_is_its_json_spelling() {
+        assert_eq!(JamStatus::ALL.len(), 8);
+        for &s in JamStatus::ALL {
+            assert_eq!(serde_json::to_value(s).unwrap(), s.as_str(), "{s:?}");
+        }
+    }
+
+    #[test]
+    fn validate_names_the_key() {
+        let p = SceneParams {
+            radius_mm: -1.0,
+            ..Default::default()
+        };
+        let msg = p.validate().unwrap_err().to_string();
+        assert!(msg.contains("radius_mm") && msg.contains("-1"), "{msg}");
+        let p = SceneParams {
+            start_angle_deg: 180.0,
+            ..Default::default()
+        };
+        assert!(
+            p.validate()
+                .unwrap_err()
+                .to_string()
+                .contains("start_angle_deg")
+        );
+        let p = SceneParams {
+            mu_palm: f64::NAN,
+            ..Default::default()
+        };
+        assert!(
+            p.validate()
+                .unwrap_err()
+                .to_string()
+                .contains("mu_palm = NaN")
+        );
+        assert!(SceneParams::default().validate().is_ok());
+    }
+}
