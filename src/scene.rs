@@ -143,14 +143,6 @@ pub(crate) fn finite_positive(key: &str, v: f64, reason: &str) -> Result<()> {
     }
 }
 
-pub(crate) fn finite_at_least(key: &str, v: f64, min: f64, reason: &str) -> Result<()> {
-    if v.is_finite() && v >= min {
-        Ok(())
-    } else {
-        Err(Error::invalid(key, v, reason))
-    }
-}
-
 /// Disc position x in mm (hinge to the ground contact A) where a disc of radius `radius_mm`
 /// touches a palm at angle `theta` (rad) whose face lies `offset_mm` off the hinge line:
 ///

@@ -134,8 +134,8 @@ fn help_names_units_and_defaults() {
     let t = stdout(&o);
     for s in [
         "--flank-angles <A1,A2>",
-        "[default: 90]",
-        "m/s^2",
+        "[default: 90 deg]",
+        "m/s²",
         "--load-at-rim",
         "blocked",
     ] {

@@ -109,7 +109,7 @@ pub fn main() -> i32 {
         Command::Table(a) => table::run(a),
         Command::Render(a) => render::run(a),
         Command::Scenes(a) => render::list(a),
-        Command::Settings => Ok(crate::settings::reference_table()),
+        Command::Settings => Ok(crate::settings::reference()),
         Command::Sweep(a) => sweep::run(a),
         Command::Accuracy(a) => accuracy::run(a),
         Command::Stability(a) => stability::run(a),

@@ -2,34 +2,28 @@
 
 use std::fmt::Write;
 
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 
-use super::args::OutputFormat;
+use super::args::{OutputFormat, parse_f64};
 use crate::error::{Error, Result};
 use crate::locator::{
     self, Capacity, FlankForce, LocatorParams, LocatorSolution, OPT_MAX_DEG, OPT_MIN_DEG, Optimum,
-    Rotation, Verdict,
+    Verdict,
 };
+use crate::settings::flags::{Flags, LocatorSet};
 
-/// `--rotation`: whether the disc may turn in the V.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum RotationArg {
-    /// The disc may rotate: the flank frictions carry the moment (a real V-block).
-    Free,
-    /// A joint carries the moment (the paper's translational formulation).
-    Blocked,
-}
-
-/// Flags of `vlocator`.
+/// Flags of `vlocator`: the V's geometry, then the declared locator settings
+/// ([`crate::settings`]: frictions, disc, load, rotation).
 #[derive(Debug, Clone, Args)]
 pub struct VlocatorArgs {
-    /// Included angle of a symmetric V in deg, in (0, 180) [default: 90].
+    /// Included angle of a symmetric V in deg, in (0, 180) [default: 90 deg].
     #[arg(
         long,
         value_name = "DEG",
         allow_negative_numbers = true,
-        conflicts_with = "flank_angles"
+        conflicts_with = "flank_angles",
+        value_parser = parse_f64
     )]
     pub included_angle: Option<f64>,
     /// Flank angles a1,a2 above the horizontal in deg (left, right).
@@ -41,42 +35,12 @@ pub struct VlocatorArgs {
         value_name = "A1,A2",
         value_delimiter = ',',
         // "-5,40" is not a number: without this clap reads it as a flag.
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_parser = parse_f64
     )]
     pub flank_angles: Option<Vec<f64>>,
-    /// Friction coefficient on both flanks [default: 0.3].
-    ///
-    /// --mu-left or --mu-right given as well take precedence for their flank. Dimensionless, >= 0
-    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
-    pub mu: Option<f64>,
-    /// Friction coefficient on the left flank [default: 0.3].
-    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
-    pub mu_left: Option<f64>,
-    /// Friction coefficient on the right flank [default: 0.3].
-    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
-    pub mu_right: Option<f64>,
-    /// Disc mass m in kg [default: 1].
-    #[arg(long, value_name = "KG", allow_negative_numbers = true)]
-    pub mass: Option<f64>,
-    /// Gravitational acceleration g in m/s^2 [default: 9.806].
-    #[arg(long, value_name = "M/S^2", allow_negative_numbers = true)]
-    pub gravity: Option<f64>,
-    /// External force P in N, >= 0 [default: 0].
-    #[arg(long, value_name = "N", allow_negative_numbers = true)]
-    pub load: Option<f64>,
-    /// Direction of the external force in deg from +x, counter-clockwise [default: 0].
-    ///
-    /// 0 pushes sideways towards the right flank, -90 straight down into the V, 90 lifts.
-    #[arg(long, value_name = "DEG", allow_negative_numbers = true)]
-    pub load_angle: Option<f64>,
-    /// Apply the force at the rim point at this angle (deg from +x about the centre).
-    ///
-    /// It then adds the moment r P sin(phi - psi). Free rotation only. Omitted: at the centre.
-    #[arg(long, value_name = "DEG", allow_negative_numbers = true)]
-    pub load_at_rim: Option<f64>,
-    /// Whether the disc may rotate in the V.
-    #[arg(long, value_enum, default_value_t = RotationArg::Free)]
-    pub rotation: RotationArg,
+    #[command(flatten)]
+    pub locator: Flags<LocatorSet>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
     pub format: OutputFormat,
@@ -108,33 +72,20 @@ impl VlocatorArgs {
             p.flank_left_deg = a1;
             p.flank_right_deg = a2;
         }
-        if let Some(mu) = self.mu {
-            p = p.with_mu(mu);
-        }
-        let overrides = [
-            (self.mu_left, &mut p.mu_left),
-            (self.mu_right, &mut p.mu_right),
-            (self.mass, &mut p.mass_kg),
-            (self.gravity, &mut p.gravity_m_s2),
-            (self.load, &mut p.load_n),
-            (self.load_angle, &mut p.load_angle_deg),
-        ];
-        for (flag, field) in overrides {
-            if let Some(v) = flag {
-                *field = v;
-            }
-        }
-        p.load_at_rim_deg = self.load_at_rim;
-        p.rotation = match self.rotation {
-            RotationArg::Free => Rotation::Free,
-            RotationArg::Blocked => Rotation::Blocked,
-        };
+        let over = self.locator.overrides();
+        let over = over
+            .get("locator")
+            .and_then(toml::Value::as_table)
+            .cloned()
+            .unwrap_or_default();
+        let p: LocatorParams = crate::config::overlay(&p, &over, "locator")?;
         p.validate()?;
         Ok(p)
     }
 }
 
-/// The flag that sets a locator key, for error messages.
+/// The flag of a locator key that is not a declared flag, for error messages: the flanks are set
+/// by the V's geometry flags.
 pub fn flag_for_key(key: &str) -> Option<&'static str> {
     Some(match key {
         "included_angle_deg" => "--included-angle",
@@ -142,11 +93,6 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
         "flank_left_deg" | "flank_right_deg" | "flank_left_deg + flank_right_deg" => {
             "--flank-angles or --included-angle"
         }
-        "mu_left" => "--mu-left or --mu",
-        "mu_right" => "--mu-right or --mu",
-        "load_n" => "--load",
-        "load_angle_deg" => "--load-angle",
-        "load_at_rim_deg" => "--load-at-rim",
         _ => return None,
     })
 }

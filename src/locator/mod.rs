@@ -119,7 +119,7 @@
 
 mod exact;
 mod optimum;
-mod params;
+pub(crate) mod params;
 pub mod reference;
 mod solve;
 

@@ -1,29 +1,18 @@
 //! The V-locator's parameters (TOML section `[locator]`) and the V's unit vectors.
 
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 use crate::error::{Error, Result};
-use crate::scene::{finite_at_least, finite_positive};
+use crate::settings::{Check, Decl, Kind};
 
-/// How the V carries the moment about the disc centre.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Rotation {
-    /// The disc may rotate: the flank frictions carry the moment (the physical V-block; three
-    /// equations Fx, Fy, Mz).
-    #[default]
-    Free,
-    /// A joint carries the moment (the paper's translational formulation; two equations).
-    Blocked,
-}
-
-impl Rotation {
-    /// The TOML and flag spelling.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Rotation::Free => "free",
-            Rotation::Blocked => "blocked",
-        }
+choice! {
+    /// How the V carries the moment about the disc centre.
+    pub enum Rotation {
+        /// The disc may rotate: the flank frictions carry the moment (the physical V-block;
+        /// three equations Fx, Fy, Mz).
+        Free = "free",
+        /// A joint carries the moment (the paper's translational formulation; two equations).
+        Blocked = "blocked",
     }
 }
 
@@ -63,56 +52,71 @@ impl Flank {
     }
 }
 
-/// A disc of weight W = m g in a V of two flat flanks, loaded by P at direction phi.
-///
-/// Angles in deg; the disc's radius does not enter (every moment about the centre is r times a
-/// force), so it is not a parameter.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct LocatorParams {
-    /// Left flank angle a1 above the horizontal in deg, in [0, 180) (default: 45, a 90 deg V).
-    /// Above 90 the flank overhangs.
-    pub flank_left_deg: f64,
-    /// Right flank angle a2 above the horizontal in deg, in [0, 180), with a1 + a2 in (0, 180)
-    /// (default: 45).
-    pub flank_right_deg: f64,
-    /// Coulomb friction coefficient on the left flank, >= 0 (default: 0.3, dry steel on steel).
-    pub mu_left: f64,
-    /// Coulomb friction coefficient on the right flank, >= 0 (default: 0.3).
-    pub mu_right: f64,
-    /// Disc mass m in kg, > 0 (default: 1).
-    pub mass_kg: f64,
-    /// Gravitational acceleration g in m/s^2, > 0 (default: 9.806).
-    pub gravity_m_s2: f64,
-    /// Magnitude P of the external force in N, >= 0 (default: 0, no load).
-    pub load_n: f64,
-    /// Direction phi of the external force in deg from +x, counter-clockwise (default: 0,
-    /// sideways towards the right flank; -90 pushes straight down).
-    pub load_angle_deg: f64,
-    /// Where the force acts: at the rim point at angle psi (deg from +x about the centre),
-    /// adding the moment r P sin(phi - psi); absent, at the centre (default: centre). Only
-    /// with free rotation: a blocked V's joint carries every moment.
-    pub load_at_rim_deg: Option<f64>,
-    /// Free or blocked rotation (default: free).
-    pub rotation: Rotation,
-}
-
-impl Default for LocatorParams {
-    fn default() -> Self {
-        LocatorParams {
-            flank_left_deg: 45.0,
-            flank_right_deg: 45.0,
-            mu_left: 0.3,
-            mu_right: 0.3,
-            mass_kg: 1.0,
-            gravity_m_s2: 9.806,
-            load_n: 0.0,
-            load_angle_deg: 0.0,
-            load_at_rim_deg: None,
-            rotation: Rotation::Free,
-        }
+settings! {
+    /// A disc of weight W = m g in a V of two flat flanks, loaded by P at direction phi.
+    ///
+    /// Angles in deg; the disc's radius does not enter (every moment about the centre is r
+    /// times a force), so it is not a parameter.
+    section = "locator";
+    pub struct LocatorParams {
+        /// Left flank angle a1 above the horizontal, in [0, 180); above 90 the flank overhangs
+        /// (45: a 90 deg V).
+        flank_left_deg: f64 = 45.0, symbol: "a1", quantity: "left flank angle", unit: "deg",
+            check: Check::CloseOpen(0.0, 180.0);
+        /// Right flank angle a2 above the horizontal, in [0, 180), with a1 + a2 in (0, 180).
+        flank_right_deg: f64 = 45.0, symbol: "a2", quantity: "right flank angle", unit: "deg",
+            check: Check::CloseOpen(0.0, 180.0);
+        /// Coulomb friction coefficient on the left flank (0.3: dry steel on steel).
+        mu_left: f64 = 0.3, flag: Some("mu-left"), symbol: "μ_left",
+            quantity: "left flank friction coefficient", unit: "-", check: Check::AtLeast(0.0),
+            value_name: "MU";
+        /// Coulomb friction coefficient on the right flank.
+        mu_right: f64 = 0.3, flag: Some("mu-right"), symbol: "μ_right",
+            quantity: "right flank friction coefficient", unit: "-", check: Check::AtLeast(0.0),
+            value_name: "MU";
+        /// Disc mass m.
+        mass_kg: f64 = 1.0, flag: Some("mass"), symbol: "m", quantity: "disc mass", unit: "kg",
+            check: Check::Above(0.0);
+        /// Gravitational acceleration g (capacities are given per weight, so > 0).
+        gravity_m_s2: f64 = 9.806, flag: Some("gravity"), symbol: "g", quantity: "gravity",
+            unit: "m/s²", check: Check::Above(0.0), value_name: "M/S^2";
+        /// Magnitude P of the external force (0: no load); turn it with --load-angle.
+        load_n: f64 = 0.0, flag: Some("load"), symbol: "P", quantity: "load", unit: "N",
+            check: Check::AtLeast(0.0);
+        /// Direction phi of the external force from +x, counter-clockwise.
+        ///
+        /// 0 pushes sideways towards the right flank, -90 straight down into the V, 90 lifts.
+        load_angle_deg: f64 = 0.0, flag: Some("load-angle"), symbol: "φ",
+            quantity: "load direction", unit: "deg", check: Check::Finite;
+        /// Apply the force at the rim point at this angle from +x about the centre (unset: at
+        /// the centre).
+        ///
+        /// It then adds the moment r P sin(phi - psi). Free rotation only: a blocked V's joint
+        /// carries every moment.
+        load_at_rim_deg: Option<f64> = None, flag: Some("load-at-rim"), symbol: "ψ",
+            quantity: "rim point", unit: "deg", check: Check::Finite;
+        /// Whether the disc may rotate in the V: free (a real V-block) or blocked (a joint
+        /// carries the moment).
+        rotation: Rotation = Rotation::Free, flag: Some("rotation"), value_name: "ROTATION";
     }
 }
+
+/// The locator's aliases: `mu` sets both flank frictions.
+pub(crate) const LOCATOR_ALIASES: &[Decl] = &[Decl {
+    key: "mu",
+    section: "locator",
+    flag: Some("mu"),
+    symbol: "μ",
+    quantity: "flank friction coefficient",
+    unit: "-",
+    doc: "Friction coefficient on both flanks.\n\n\
+          --mu-left or --mu-right given as well take precedence for their flank.",
+    check: Check::AtLeast(0.0),
+    kind: Kind::Derived,
+    default: || "0.3".to_string(),
+    sets: &["mu_left", "mu_right"],
+    value_name: "MU",
+}];
 
 impl LocatorParams {
     /// A symmetric V of included angle `gamma_deg` (a1 = a2 = 90 - gamma/2), other fields kept.
@@ -153,20 +157,10 @@ impl LocatorParams {
         [self.mu_left, self.mu_right]
     }
 
-    /// Checks every field; the error names the TOML key and the offending value.
+    /// Checks every field (each against its declared range, then the V's geometry); the
+    /// error names the TOML key and the offending value.
     pub fn validate(&self) -> Result<()> {
-        for (key, a) in [
-            ("flank_left_deg", self.flank_left_deg),
-            ("flank_right_deg", self.flank_right_deg),
-        ] {
-            if !(a.is_finite() && (0.0..180.0).contains(&a)) {
-                return Err(Error::invalid(
-                    key,
-                    a,
-                    "a flank angle lies in [0, 180) deg above the horizontal",
-                ));
-            }
-        }
+        self.check_declared()?;
         let sum = self.flank_left_deg + self.flank_right_deg;
         if !(sum > 0.0 && sum < 180.0) {
             return Err(Error::invalid(
@@ -176,53 +170,13 @@ impl LocatorParams {
                  180 - a1 - a2 in (0, 180))",
             ));
         }
-        for (key, mu) in [("mu_left", self.mu_left), ("mu_right", self.mu_right)] {
-            finite_at_least(
-                key,
-                mu,
-                0.0,
-                "a friction coefficient is a finite number >= 0",
-            )?;
-        }
-        finite_positive(
-            "mass_kg",
-            self.mass_kg,
-            "the mass is a finite number > 0 kg",
-        )?;
-        finite_positive(
-            "gravity_m_s2",
-            self.gravity_m_s2,
-            "gravity is a finite number > 0 m/s^2 (capacities are given per weight)",
-        )?;
-        finite_at_least(
-            "load_n",
-            self.load_n,
-            0.0,
-            "the load is a finite number >= 0 N; turn it with load_angle_deg",
-        )?;
-        if !self.load_angle_deg.is_finite() {
+        if let (Some(psi), Rotation::Blocked) = (self.load_at_rim_deg, self.rotation) {
             return Err(Error::invalid(
-                "load_angle_deg",
-                self.load_angle_deg,
-                "the load direction is a finite angle in deg",
+                "load_at_rim_deg",
+                psi,
+                "a blocked V carries every moment in its joint, so the load acts as if at \
+                 the centre; leave the rim point out or use rotation = free",
             ));
-        }
-        if let Some(psi) = self.load_at_rim_deg {
-            if !psi.is_finite() {
-                return Err(Error::invalid(
-                    "load_at_rim_deg",
-                    psi,
-                    "the rim point is a finite angle in deg",
-                ));
-            }
-            if self.rotation == Rotation::Blocked {
-                return Err(Error::invalid(
-                    "load_at_rim_deg",
-                    psi,
-                    "a blocked V carries every moment in its joint, so the load acts as if at \
-                     the centre; leave the rim point out or use rotation = free",
-                ));
-            }
         }
         Ok(())
     }

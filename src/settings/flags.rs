@@ -7,7 +7,7 @@ use std::marker::PhantomData;
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Arg, ArgAction, ArgMatches, Command};
 
-use super::{Decl, Kind, palm_family};
+use super::{Decl, Kind, all};
 
 /// Which declared sections a command's flags come from, and their help heading.
 pub(crate) trait FlagSet {
@@ -41,6 +41,14 @@ impl FlagSet for MinNormSet {
     const HEADING: Option<&'static str> = Some("Min-norm");
 }
 
+/// The flags of the V-locator.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct LocatorSet;
+impl FlagSet for LocatorSet {
+    const SECTIONS: &'static [&'static str] = &["locator"];
+    const HEADING: Option<&'static str> = None;
+}
+
 /// The declared flags of one set, as given on the command line.
 #[derive(Debug, Clone)]
 pub(crate) struct Flags<S> {
@@ -61,7 +69,7 @@ impl<S> Default for Flags<S> {
 
 /// The declarations that are flags of `S`.
 fn decls<S: FlagSet>() -> impl Iterator<Item = &'static Decl> {
-    palm_family().filter(|d| {
+    all().filter(|d| {
         d.flag.is_some()
             && S::SECTIONS
                 .iter()

@@ -22,6 +22,8 @@ use crate::error::{Error, Result};
 /// What values a setting takes, for its flag's parser, its help and its range check.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Check {
+    /// Any finite number.
+    Finite,
     /// A finite number >= the bound.
     AtLeast(f64),
     /// A finite number > the bound.
@@ -32,6 +34,8 @@ pub(crate) enum Check {
     OpenClosed(f64, f64),
     /// A finite number in the closed interval.
     Closed(f64, f64),
+    /// A finite number >= the first bound and < the second.
+    CloseOpen(f64, f64),
     /// A whole number >= the bound.
     CountAtLeast(u64),
     /// Not a number (a choice or a switch): serde checks it.
@@ -43,12 +47,13 @@ impl Check {
     pub(crate) fn refuse(&self, v: f64) -> Option<String> {
         let ok = v.is_finite()
             && match *self {
-                Check::Typed => true,
+                Check::Finite | Check::Typed => true,
                 Check::AtLeast(lo) => v >= lo,
                 Check::Above(lo) => v > lo,
                 Check::Open(lo, hi) => v > lo && v < hi,
                 Check::OpenClosed(lo, hi) => v > lo && v <= hi,
                 Check::Closed(lo, hi) => v >= lo && v <= hi,
+                Check::CloseOpen(lo, hi) => v >= lo && v < hi,
                 Check::CountAtLeast(lo) => v >= lo as f64,
             };
         (!ok).then(|| format!("must be {}", self.describe()))
@@ -57,6 +62,7 @@ impl Check {
     /// The valid values in words, e.g. `a finite number > 0`.
     pub(crate) fn describe(&self) -> String {
         match *self {
+            Check::Finite => "a finite number".into(),
             Check::AtLeast(lo) => format!("a finite number >= {}", number_text(lo)),
             Check::Above(lo) => format!("a finite number > {}", number_text(lo)),
             Check::Open(lo, hi) => {
@@ -67,6 +73,9 @@ impl Check {
             }
             Check::Closed(lo, hi) => {
                 format!("a number in [{}, {}]", number_text(lo), number_text(hi))
+            }
+            Check::CloseOpen(lo, hi) => {
+                format!("a number in [{}, {})", number_text(lo), number_text(hi))
             }
             Check::CountAtLeast(lo) => format!("a whole number >= {lo}"),
             Check::Typed => "one of the values listed".into(),
@@ -141,10 +150,10 @@ impl Decl {
         value_name: "",
     };
 
-    /// The name an error message uses: the bare key in `[scene]` (the scene's parameters are
-    /// also the names of grid axes), the dotted path elsewhere.
+    /// The name an error message uses: the bare key of a family's parameters (`[scene]`, the
+    /// locator; also the names of grid axes), the dotted path elsewhere.
     pub(crate) fn path(&self) -> String {
-        if self.section == "scene" || self.section.is_empty() {
+        if matches!(self.section, "scene" | "locator" | "") {
             self.key.to_string()
         } else {
             format!("{}.{}", self.section, self.key)
@@ -321,6 +330,17 @@ pub(crate) fn palm_family() -> impl Iterator<Item = &'static Decl> {
         .filter(|d| d.kind != Kind::Section)
 }
 
+/// The V-locator's family: `vlocator`'s flags and the `locator` tables of its chart scenes.
+pub(crate) fn locator_family() -> impl Iterator<Item = &'static Decl> {
+    use crate::locator::params as l;
+    l::LOCATOR_ALIASES.iter().chain(l::LocatorParams::DECLS)
+}
+
+/// Every declaration of both families.
+pub(crate) fn all() -> impl Iterator<Item = &'static Decl> {
+    palm_family().chain(locator_family())
+}
+
 /// The declaration of a key of the palm family, by its bare key or its dotted path.
 pub(crate) fn find(key: &str) -> Option<&'static Decl> {
     palm_family().find(|d| d.key == key || d.path() == key)
@@ -329,9 +349,9 @@ pub(crate) fn find(key: &str) -> Option<&'static Decl> {
 /// The flags that set `key` (a bare key or a dotted path), e.g. `--mu-ground or --mu`: its own
 /// and those of the aliases that set it.
 pub(crate) fn flag_for(key: &str) -> Option<String> {
-    let decl = find(key)?;
+    let decl = find(key).or_else(|| locator_family().find(|d| d.key == key))?;
     let own = decl.flag.map(|f| format!("--{f}"));
-    let aliases = palm_family()
+    let aliases = all()
         .filter(|a| a.sets.contains(&decl.key) && a.section == decl.section)
         .filter_map(|a| a.flag.map(|f| format!("--{f}")));
     let all: Vec<String> = own.into_iter().chain(aliases).collect();
@@ -362,7 +382,7 @@ pub(crate) fn merge(table: &mut toml::Table, over: &toml::Table) {
 /// `over`'s aliases replaced by the keys they set (`mu = 0.3` in `[scene]` sets `mu_ground` and
 /// `mu_palm`, unless they are given too), at the section `section` of the family.
 pub(crate) fn expand_aliases(section: &str, over: &mut toml::Table) {
-    for alias in palm_family().filter(|d| d.section == section && !d.sets.is_empty()) {
+    for alias in all().filter(|d| d.section == section && !d.sets.is_empty()) {
         if let Some(v) = over.remove(alias.key) {
             for k in alias.sets {
                 over.entry(k.to_string()).or_insert_with(|| v.clone());
@@ -383,7 +403,17 @@ pub(crate) fn expand_aliases(section: &str, over: &mut toml::Table) {
 
 /// The key reference as a Markdown table: flag, TOML key, unit, default, valid values, doc.
 pub(crate) fn reference_table() -> String {
-    reference_rows(|_| true)
+    reference_rows(|s| s != "locator")
+}
+
+/// What `jamchart settings` prints: the palm scene's reference, then the V-locator's.
+pub(crate) fn reference() -> String {
+    format!(
+        "Settings of solve, sweep, render, accuracy and stability (TOML file, scene files, \
+         --set):\n\n{}\nSettings of vlocator (a chart scene's [chart] locator table):\n\n{}",
+        reference_table(),
+        reference_rows(|s| s == "locator")
+    )
 }
 
 /// The reference of the sections whose name passes `keep` (charts/README.md holds `[scene]`'s).
@@ -391,7 +421,7 @@ pub(crate) fn reference_rows(keep: impl Fn(&str) -> bool) -> String {
     let mut out = String::from(
         "| flag | TOML key | unit | default | valid | meaning |\n|---|---|---|---|---|---|\n",
     );
-    for d in palm_family().filter(|d| keep(d.section)) {
+    for d in all().filter(|d| keep(d.section)) {
         let flag = d
             .flag
             .map_or_else(|| "-".to_string(), |f| format!("`--{f}`"));

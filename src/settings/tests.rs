@@ -95,6 +95,11 @@ fn the_readme_holds_the_reference_table() {
     let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
         .expect("README.md");
     let table = reference_table();
+    let locator = reference_rows(|s| s == "locator");
+    assert!(
+        readme.contains(&locator),
+        "README.md's V-locator settings table is not `jamchart settings`' second table:\n{locator}"
+    );
     assert!(
         readme.contains(&table),
         "README.md's settings table is not `jamchart settings`' output:\n{table}"
