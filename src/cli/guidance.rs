@@ -35,10 +35,15 @@ pub fn guidance<'a>(
         _ => None,
     });
     if let Some(x) = rigid {
+        let offset = if config.scene.palm_offset_mm > 0.0 {
+            " + h / sin(alpha_g + alpha_p)"
+        } else {
+            ""
+        };
         let _ = writeln!(
             s,
             "  a palm driven by motion (it pushes as hard as needed): the limit x_rigid = \
-             r cot((alpha_g + alpha_p)/2) = {x:.3} mm"
+             r cot((alpha_g + alpha_p)/2){offset} = {x:.3} mm"
         );
     }
     let drive = match config.dynamics.drive.mode {

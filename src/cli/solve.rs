@@ -180,7 +180,7 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
     let _ = writeln!(
         s,
         "scene: mu_ground = {}, mu_palm = {}, r = {} mm, m = {} kg, F = {} N, g = {} m/s^2, \
-         start at {} deg, palm {} mm",
+         start at {} deg, palm {} mm{}",
         p.mu_ground,
         p.mu_palm,
         p.radius_mm,
@@ -188,7 +188,12 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
         p.force_n,
         p.gravity_m_s2,
         p.start_angle_deg,
-        p.palm_length_mm
+        p.palm_length_mm,
+        if p.palm_offset_mm > 0.0 {
+            format!(", palm face {} mm off the hinge line", p.palm_offset_mm)
+        } else {
+            String::new()
+        }
     );
     for x in answers {
         let r = &x.solution;
