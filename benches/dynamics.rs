@@ -10,8 +10,8 @@
 mod common;
 
 use jamchart::JamStatus;
+use jamchart::SceneParams;
 use jamchart::dynamics::{Drive, DynamicsParams, Method, simulate};
-use jamchart::scene::SceneParams;
 
 const TARGET: f64 = 1e-4;
 const RUNS: usize = 21;

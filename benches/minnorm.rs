@@ -6,11 +6,11 @@
 
 mod common;
 
+use jamchart::SceneParams;
 use jamchart::minnorm::{
     Formulation, HoldStatus, MinNormSettings, QpSettings, palm, palm_problem, solve,
 };
 use jamchart::paper::TABLE1;
-use jamchart::scene::SceneParams;
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::TestRunner;
 use rayon::prelude::*;

@@ -32,7 +32,7 @@ pub enum Error {
         message: String,
     },
 
-    /// A request whose estimated memory or output exceeds its limit ([`crate::limits`]).
+    /// A request whose estimated memory or output exceeds its limit (`crate::limits`).
     #[error(
         "{what} would take about {}, over the limit of {} (set by {key})",
         crate::limits::human_bytes(*estimate_bytes),

@@ -97,7 +97,7 @@
 //!
 //! ## Reports on the models
 //!
-//! [`study`] measures the models themselves, every answer through the port: error of x_jam and
+//! `study` measures the models themselves, every answer through the port: error of x_jam and
 //! theta_jam against the scene's physical reference beside wall time and integration error
 //! (`jamchart accuracy`), the cost of a design map by each model, and a matrix of stiff and
 //! extreme cases classed correct, flagged, failed or wrong (`jamchart stability`).
@@ -116,20 +116,22 @@ mod settings;
 mod atomic;
 pub mod charts;
 mod cli;
-pub mod config;
-pub mod csv_out;
+mod config;
+mod csv_out;
 pub mod dynamics;
-pub mod error;
+mod error;
 pub mod grid;
-pub mod limits;
+mod limits;
 pub mod locator;
 pub mod minnorm;
 pub mod models;
 pub mod paper;
-pub mod scene;
+mod scene;
 pub mod statics;
-pub mod study;
+mod study;
 
 pub use cli::main as run_cli;
+pub use config::Config;
 pub use error::{Error, Result};
-pub use scene::{JamStatus, SceneParams};
+pub use models::{ModelKind, ModelSpec, Solution, solve};
+pub use scene::{JamStatus, SceneParams, disc_position_mm, palm_angle_at};

@@ -152,7 +152,7 @@ pub enum OutsideModel {
 }
 
 /// Largest start angle any model represents, in deg: above it the palm's push points upwards.
-pub const MAX_START_ANGLE_DEG: f64 = 90.0;
+pub(crate) const MAX_START_ANGLE_DEG: f64 = 90.0;
 
 impl std::fmt::Display for OutsideModel {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -218,7 +218,7 @@ impl Solution {
 /// Why model `kind` does not represent `scene`, if it does not: a push starting above
 /// [`MAX_START_ANGLE_DEG`] lifts the disc (every model), and the dynamics need a mass. The one
 /// rule [`solve`] and the reports' references apply.
-pub fn outside(kind: ModelKind, scene: &SceneParams) -> Option<OutsideModel> {
+pub(crate) fn outside(kind: ModelKind, scene: &SceneParams) -> Option<OutsideModel> {
     if scene.start_angle_deg > MAX_START_ANGLE_DEG {
         Some(OutsideModel::PalmLiftsDisc {
             start_angle_deg: scene.start_angle_deg,

@@ -129,7 +129,7 @@ impl SceneParams {
     }
 
     /// Distance in mm from the hinge along the palm to the contact B at palm angle `theta`
-    /// (rad), [`contact_distance_mm`].
+    /// (rad), `contact_distance_mm`.
     pub fn contact_distance_mm(&self, theta: f64) -> f64 {
         contact_distance_mm(self.radius_mm, self.palm_offset_mm, theta)
     }

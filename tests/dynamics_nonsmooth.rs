@@ -1,9 +1,9 @@
 //! The nonsmooth method (rigid contacts, exact Coulomb friction) against the closed form and
 //! against the regularised model in its stiff limit (issue 10).
 
+use jamchart::SceneParams;
 use jamchart::dynamics::DiscMotion;
 use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Method, simulate};
-use jamchart::scene::SceneParams;
 use jamchart::{JamStatus, statics};
 
 fn nonsmooth(drive: Drive, omega_deg_s: f64) -> DynamicsParams {

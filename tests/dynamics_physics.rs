@@ -1,7 +1,7 @@
 //! The dynamic simulation against the closed form, where physics says they agree (issue 4).
 
+use jamchart::SceneParams;
 use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Failure, Method, simulate};
-use jamchart::scene::SceneParams;
 use jamchart::{JamStatus, statics};
 
 /// k such that the IMPACT force k delta^2.2 reaches 200 N at penetration `delta_mm`.

@@ -1,8 +1,8 @@
 //! Property: the simulation never panics and never returns NaN or infinity, for any input in
 //! range (the integrator may give up, which is a status).
 
+use jamchart::SceneParams;
 use jamchart::dynamics::{Drive, DynamicsParams, simulate};
-use jamchart::scene::SceneParams;
 use proptest::prelude::*;
 
 proptest! {

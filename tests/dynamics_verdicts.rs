@@ -2,8 +2,8 @@
 //! answer `jams` with a number it could not stand behind, pinned with the verdict it gets now.
 
 use jamchart::JamStatus;
+use jamchart::SceneParams;
 use jamchart::dynamics::{CrossCheck, DynamicsParams, DynamicsSolution, Method, simulate};
-use jamchart::scene::SceneParams;
 
 fn run(scene: &SceneParams, p: &DynamicsParams) -> DynamicsSolution {
     simulate(scene, p, None).expect("valid parameters")

@@ -3,8 +3,8 @@
 
 use jamchart::minnorm::{Formulation, MinNormSettings, QpSettings, palm, palm_problem};
 use jamchart::paper::TABLE1;
-use jamchart::scene::{JamStatus, SceneParams, disc_position_mm, palm_angle_at};
 use jamchart::statics::{self, margin_n};
+use jamchart::{JamStatus, SceneParams, disc_position_mm, palm_angle_at};
 use proptest::prelude::*;
 
 /// The agreement: 1e-5 deg between min-norm and closed-form theta_jam.

@@ -5,7 +5,7 @@
 use std::collections::BTreeSet;
 use std::path::Path;
 
-use jamchart::charts::{SceneSource, builtin};
+use jamchart::charts::{SceneSource, builtin_scene_names};
 
 fn read(rel: &str) -> String {
     std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(rel)).unwrap()
@@ -49,7 +49,7 @@ fn every_scene_key_is_documented() {
     let paper = read("config/paper.toml");
     let mut documented_here = BTreeSet::new();
     let mut documented_in_paper = BTreeSet::new();
-    for name in builtin::scene_names() {
+    for name in builtin_scene_names() {
         let scene = SceneSource::BuiltIn(name).load(&[]).unwrap();
         names(&table(&scene.chart), &mut documented_here);
         names(&table(&scene.params), &mut documented_here);
@@ -93,7 +93,7 @@ fn every_readme_example_is_a_scene_that_loads() {
         .skip(1)
         .map(|b| b.split("```").next().unwrap())
         .collect();
-    let all_kinds: BTreeSet<&str> = builtin::scene_names()
+    let all_kinds: BTreeSet<&str> = builtin_scene_names()
         .into_iter()
         .map(|n| SceneSource::BuiltIn(n).load(&[]).unwrap().chart.kind())
         .collect();
@@ -118,7 +118,7 @@ fn every_readme_example_is_a_scene_that_loads() {
 #[test]
 fn every_chart_kind_has_a_scene_and_a_readme_section() {
     let readme = read("charts/README.md");
-    let drawn: BTreeSet<&str> = builtin::scene_names()
+    let drawn: BTreeSet<&str> = builtin_scene_names()
         .into_iter()
         .map(|n| SceneSource::BuiltIn(n).load(&[]).unwrap().chart.kind())
         .collect();

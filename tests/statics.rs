@@ -1,8 +1,8 @@
 //! The closed-form statics against the corrected Table 1, hand derivations and its invariants.
 
 use jamchart::paper::TABLE1;
-use jamchart::scene::{JamStatus, SceneParams, disc_position_mm};
 use jamchart::statics::{self, margin_n};
+use jamchart::{JamStatus, SceneParams, disc_position_mm};
 use proptest::prelude::*;
 
 /// Rows of tests/golden/table1.csv: (mu, theta_deg, x_mm, paper_theta_deg, paper_x_mm).

@@ -18,7 +18,8 @@ use super::{DataFile, scene_subtitle_with};
 use crate::csv_out::{Dec, to_csv};
 use crate::error::{Error, Result};
 use crate::grid::AxisScale;
-use crate::minnorm::{HoldStatus, TracePoint};
+use crate::minnorm::HoldStatus;
+use crate::minnorm::qp::TracePoint;
 use crate::models::ModelSpec;
 
 /// `[chart]` keys of `kind = "convergence"`.

@@ -1,4 +1,4 @@
-//! The one registration point of chart kinds: [`chart_kinds!`] lists them, and generates from
+//! The one registration point of chart kinds: `chart_kinds!` lists them, and generates from
 //! that list the scene's `[chart]` settings ([`ChartSpec`]), the computed chart ([`Chart`]) and
 //! every dispatch between them.
 //!

@@ -2,81 +2,87 @@
 //! plotters to byte-identical SVG and PNG, with the data behind each chart.
 //!
 //! A scene is loaded ([`spec::load_scene`]), its chart computes only what its layers draw
-//! ([`Chart::compute`]), then one backend-generic `draw` produces both the SVG and the PNG.
-//! Bytes depend only on the scene: the font is embedded and text set by [`typeset`], the PNG has no
-//! metadata ([`output::encode_png`]), nothing is random and every number that feeds a pixel is
+//! (`Chart::compute`), then one backend-generic `draw` produces both the SVG and the PNG.
+//! Bytes depend only on the scene: the font is embedded and text set by `typeset`, the PNG has no
+//! metadata (`output::encode_png`), nothing is random and every number that feeds a pixel is
 //! computed the same way for any thread count.
 //!
-//! Chart kinds, one module each: [`jam_map`] (Fig. 3), [`sweep`] (Figs. 6, 7a, 7b),
-//! [`contour_map`] (Fig. 7c), [`convergence`] (Fig. 4), [`time_series`] (Fig. 5),
-//! [`work_precision`] (the accuracy study), [`stability`] (the stability matrix),
-//! [`vlocator_capacity`] and [`vlocator_optimum`] (V-type locators, [`crate::locator`]);
-//! [`error_time`] draws `jamchart accuracy`'s wall-time chart, which is not a scene. The last
-//! three x-y kinds draw through [`xy`], stacked x-y
+//! Chart kinds, one module each: `jam_map` (Fig. 3), `sweep` (Figs. 6, 7a, 7b),
+//! `contour_map` (Fig. 7c), `convergence` (Fig. 4), `time_series` (Fig. 5),
+//! `work_precision` (the accuracy study), `stability` (the stability matrix),
+//! `vlocator_capacity` and `vlocator_optimum` (V-type locators, [`crate::locator`]);
+//! `error_time` draws `jamchart accuracy`'s wall-time chart, which is not a scene. The last
+//! three x-y kinds draw through `xy`, stacked x-y
 //! panels. Min-norm programs and simulations are called through `models::Models`, so a test
 //! can count them: a scene computes only what it draws.
 //!
 //! ## Where the other models plug in
 //!
 //! - Points of a model on a sweep (Fig. 6: min-norm points, simulation points with motion and
-//!   force drive): one [`sweep_layers::SweepLayer`] variant and its arm in
-//!   [`sweep_layers::series`], returning [`sweep::Series`] of markers; legend, panels, data file
+//!   force drive): one `sweep_layers::SweepLayer` variant and its arm in
+//!   `sweep_layers::series`, returning `sweep::Series` of markers; legend, panels, data file
 //!   and hashes follow.
 //! - A model over a map (jam map boundary and read-off, contour map): nothing to do here. Maps
 //!   name any model of the port ([`crate::models::ModelKind`]: `model = "min_norm"`) and call
 //!   it per cell through `models::Models::solve`.
 //! - A new chart kind: a module with its `[chart]` settings (implementing `kinds::Kind`: name,
 //!   data format, checks, `compute`) and its computed chart (implementing `kinds::Drawn`: a
-//!   backend-generic `draw` and its data; x-y panels through [`xy::Figure`], as [`convergence`]
-//!   and [`time_series`] do), then one line in the list of `kinds.rs`, which generates
-//!   [`ChartSpec`], [`Chart`] and their dispatch. A scene `charts/<name>.toml` is built in by
+//!   backend-generic `draw` and its data; x-y panels through `xy::Figure`, as `convergence`
+//!   and `time_series` do), then one line in the list of `kinds.rs`, which generates
+//!   [`ChartSpec`], `Chart` and their dispatch. A scene `charts/<name>.toml` is built in by
 //!   `build.rs`; its keys go in charts/README.md.
 //!
-//! Beside the kinds: [`axes`] draws frames and ticks that [`ticks`] places, [`colorbar`] the colour bar of a
-//! filled map, [`labels`] words
-//! the axes and subtitles, [`contours`] maps the contour crate's geometry to plot space, and
-//! [`data`] holds the data files.
+//! Beside the kinds: `axes` draws frames and ticks that `ticks` places, `colorbar` the colour bar of a
+//! filled map, `labels` words
+//! the axes and subtitles, `contours` maps the contour crate's geometry to plot space, and
+//! `data` holds the data files.
 
-pub mod axes;
-pub mod builtin;
-pub mod colorbar;
-pub mod contour_map;
-pub mod contours;
-pub mod convergence;
-pub mod data;
-pub mod error_time;
-pub mod gallery;
-pub mod jam_map;
+pub(crate) mod axes;
+pub(crate) mod builtin;
+pub(crate) mod colorbar;
+pub(crate) mod contour_map;
+pub(crate) mod contours;
+pub(crate) mod convergence;
+pub(crate) mod data;
+pub(crate) mod error_time;
+pub(crate) mod gallery;
+pub(crate) mod jam_map;
 mod kinds;
-pub mod labels;
-pub mod legend;
+pub(crate) mod labels;
+pub(crate) mod legend;
 pub(crate) mod models;
-pub mod output;
-pub mod overrides;
-pub mod print;
-pub mod spec;
-pub mod stability;
-pub mod style;
-pub mod sweep;
-pub mod sweep_layers;
-pub mod ticks;
-pub mod time_series;
-pub mod typeset;
-pub mod vlocator_capacity;
-pub mod vlocator_optimum;
-pub mod work_precision;
-pub mod xy;
+pub(crate) mod output;
+pub(crate) mod overrides;
+pub(crate) mod print;
+pub(crate) mod spec;
+pub(crate) mod stability;
+pub(crate) mod style;
+pub(crate) mod sweep;
+pub(crate) mod sweep_layers;
+pub(crate) mod ticks;
+pub(crate) mod time_series;
+pub(crate) mod typeset;
+pub(crate) mod vlocator_capacity;
+pub(crate) mod vlocator_optimum;
+pub(crate) mod work_precision;
+pub(crate) mod xy;
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use crate::error::{Error, Result};
 use axes::DrawResult;
-pub use contours::{grid_lines, grid_polygons, grid_to_plot};
-pub use data::{DataFile, cells_csv, cells_json};
-pub use kinds::{Chart, ChartSpec};
-pub use labels::{axis_label, param_symbol, param_unit, scene_subtitle, scene_subtitle_with};
-pub use spec::{Scene, SceneSource, load_scene, scene_files, scene_names};
+pub use builtin::scene_names as builtin_scene_names;
+pub(crate) use contours::{grid_lines, grid_polygons};
+pub(crate) use data::DataFile;
+pub(crate) use data::{cells_csv, cells_json};
+pub(crate) use kinds::Chart;
+pub use kinds::ChartSpec;
+pub(crate) use labels::{
+    axis_label, param_symbol, param_unit, scene_subtitle, scene_subtitle_with,
+};
+pub(crate) use spec::scene_files;
+pub use spec::{Scene, SceneSource, load_scene, scene_names};
 
 /// Which pictures to produce.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -147,7 +147,7 @@ pub struct Scene {
 /// Where a scene comes from: built into the binary, or a file of the user's.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum SceneSource {
-    /// A built-in scene ([`super::builtin::SCENES`]), by name.
+    /// A built-in scene (`super::builtin::SCENES`), by name.
     BuiltIn(String),
     /// A scene file; the scene is named after the file stem.
     File(PathBuf),

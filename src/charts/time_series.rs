@@ -146,6 +146,8 @@ pub fn series_csv(p: &SceneParams, d: &DynamicsParams, rows: &[SeriesRow]) -> Ve
 pub struct TimeSeries {
     figure: Figure,
     samples: Vec<Sample>,
+    /// Read by the tests; the drawing marks the jam from the samples.
+    #[cfg_attr(not(test), allow(dead_code))]
     jam: Option<(f64, f64)>,
 }
 
@@ -298,6 +300,7 @@ impl TimeSeries {
     }
 
     /// The marked jam point (t_jam in s, x_jam in mm), if the simulation jams.
+    #[cfg(test)]
     pub fn jam(&self) -> Option<(f64, f64)> {
         self.jam
     }

@@ -49,12 +49,6 @@ pub struct Mark {
 /// Where a mark's label sits relative to its point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum LabelSide {
-    /// Up and to the left.
-    AboveLeft,
-    /// Up and to the right.
-    AboveRight,
-    /// Down and to the right.
-    BelowRight,
     /// At the left end of the horizontal guide, just above it (true) or below it (false): the
     /// guide leads the eye from the label to the point.
     GuideStart {
@@ -69,9 +63,6 @@ impl LabelSide {
         match self {
             LabelSide::GuideStart { above: true } => ((8, -4), Pos::new(HPos::Left, VPos::Bottom)),
             LabelSide::GuideStart { above: false } => ((8, 5), Pos::new(HPos::Left, VPos::Top)),
-            LabelSide::AboveLeft => ((-14, -14), Pos::new(HPos::Right, VPos::Bottom)),
-            LabelSide::AboveRight => ((14, -14), Pos::new(HPos::Left, VPos::Bottom)),
-            LabelSide::BelowRight => ((14, 14), Pos::new(HPos::Left, VPos::Top)),
         }
     }
 }
@@ -202,10 +193,8 @@ impl Figure {
                 let px = axes::pixel(&chart, x, y, mk.at.0, mk.at.1);
                 style::draw_marker(root, Marker::Dot, px)?;
                 let (off, anchor) = mk.side.place();
-                let from = match mk.side {
-                    LabelSide::GuideStart { .. } => axes::pixel(&chart, x, y, x.min, mk.at.1),
-                    _ => px,
-                };
+                // The label sits at the start of the horizontal guide.
+                let from = axes::pixel(&chart, x, y, x.min, mk.at.1);
                 let at = (from.0 + off.0, from.1 + off.1);
                 axes::boxed_text(root, &mk.text, at, anchor, style::NOTE_PX)?;
             }

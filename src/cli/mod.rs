@@ -66,8 +66,8 @@ pub enum Command {
     Scenes(render::ScenesArgs),
     /// List every setting: flag, TOML key, unit, default, valid values and meaning.
     ///
-    /// The keys of a parameter file (--config) and of a scene file's [scene], [min_norm] and
-    /// [dynamics.*] sections, as a Markdown table; `--set KEY=VALUE` takes the bare key.
+    /// The keys of a parameter file (--config) and of a scene file's scene, min_norm and
+    /// dynamics.* sections, as a Markdown table; `--set KEY=VALUE` takes the bare key.
     Settings,
     /// Error against run time of every model, against the physical reference.
     ///

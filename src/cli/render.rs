@@ -30,9 +30,10 @@ pub struct RenderArgs {
     pub format: RenderFormat,
     /// Override a scene key in every scene rendered, e.g. mu_palm=0.6 (repeatable).
     ///
-    /// A bare key is a [scene], [dynamics] or [min_norm] key (mu sets both frictions); other
-    /// keys take their section: chart.x_axis.count=51, size.width_px=2000, title="...". The
-    /// value is TOML; a bare word is a string.
+    /// A bare key is a key of the scene, min_norm or dynamics sections (`jamchart settings`
+    /// lists them; mu sets both frictions); other keys take their section:
+    /// chart.x_axis.count=51, size.width_px=2000, title="...". The value is TOML; a bare word
+    /// is a string.
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<Setting>,
     /// Folder whose scene files replace the built-in scenes (names then refer to its files).

@@ -60,8 +60,8 @@ pub(crate) mod accuracy;
 pub(crate) mod contact;
 pub(crate) mod integrators;
 pub(crate) mod jam;
-pub mod nonsmooth;
-pub mod params;
+pub(crate) mod nonsmooth;
+pub(crate) mod params;
 mod run;
 pub(crate) mod system;
 mod verdict;
@@ -69,12 +69,13 @@ mod verdict;
 use serde::Serialize;
 
 pub use integrators::Failure;
-pub use jam::SeriesRow;
+pub(crate) use jam::SeriesRow;
 pub use params::{
     ContactLaw, DiscMotion, Drive, DriveSettings, DynamicsParams, FrictionLaw, IntegratorSettings,
     JamReading, Method, SeriesSettings, Verification,
 };
-pub use verdict::{CrossCheck, Refinement};
+pub use verdict::CrossCheck;
+pub(crate) use verdict::Refinement;
 
 use crate::error::Result;
 use crate::scene::{JamStatus, SceneParams};

@@ -34,7 +34,7 @@ choice! {
         /// Dormand-Prince 5(4) (Hairer's DOPRI5): explicit, adaptive, dense output of order 4.
         Dopri5 = "dopri5",
         /// Rigid contacts with exact Coulomb friction, time-stepped at the velocity-impulse level
-        /// (Moreau-Jean); no contact stiffness, true stiction ([`super::nonsmooth`]).
+        /// (Moreau-Jean); no contact stiffness, true stiction (`super::nonsmooth`).
         Nonsmooth = "nonsmooth",
     }
 }
@@ -284,7 +284,7 @@ impl DynamicsParams {
     }
 
     /// The nonsmooth method's step in use in deg of palm turn: `nonsmooth_step_deg`, or when
-    /// unset [`MOTION_STEP_DEG`] with the motion drive and [`FORCE_STEP_DEG`] with the force drive.
+    /// unset `MOTION_STEP_DEG` with the motion drive and `FORCE_STEP_DEG` with the force drive.
     pub fn nonsmooth_step_deg(&self) -> f64 {
         self.integrator
             .nonsmooth_step_deg

@@ -10,7 +10,7 @@ use crate::settings::{self, Check, Decl, Kind};
 
 /// A scene parameter a grid axis can vary: any number of `[scene]`, the alias `mu` (both
 /// frictions) or the palm angle `theta_deg`, named by its TOML key. Its symbol, unit and axis
-/// label come from its declaration ([`crate::settings`]), so a new scene parameter is an axis
+/// label come from its declaration (`crate::settings`), so a new scene parameter is an axis
 /// with no edit here.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct GridParam {

@@ -3,13 +3,13 @@
 //! [`Grid`] is generic over the [`ParamSet`] it varies (the palm scene's [`SceneParams`], a
 //! V-locator's parameters, ...): [`Grid::map`] evaluates a function of the cell's parameters in
 //! parallel (rayon) and returns the cells in index order `iy * nx + ix` (x fastest); a sweep is
-//! a one-axis grid and [`at_values`] the same at a list of values. Each cell is computed by the
+//! a one-axis grid and `at_values` the same at a list of values. Each cell is computed by the
 //! same instructions whatever thread runs it and whatever the chunking, so the result is
 //! bit-identical for any thread count (a test says so): no reductions across cells, no fused
 //! multiply-adds chosen by the compiler.
 //!
 //! For the palm scene a [`GridRequest`] names the [`Quantity`]s wanted and [`evaluate`] computes
-//! only those: the statics margin by a fast kernel ([`MarginCoeffs`]), the jam point (status,
+//! only those: the statics margin by a fast kernel (`margin::MarginCoeffs`), the jam point (status,
 //! theta_jam, x_jam) by any model of the port ([`crate::models`]), passed in as the function
 //! that answers one scene so that charts can count the calls.
 
@@ -22,7 +22,6 @@ use serde::{Deserialize, Serialize};
 
 pub use axis::{AxisScale, GridAxis, GridParam};
 pub use locator::LocatorParam;
-pub use margin::MarginCoeffs;
 
 use crate::error::{Error, Result};
 use crate::models::Solution;
@@ -43,7 +42,7 @@ pub trait ParamSet: Copy + Send + Sync {
 
 /// At most this many cells in one grid: 2^26, 512 MiB per quantity, far beyond any chart's
 /// resolution; an axis alone may have up to 2^24 samples.
-pub const MAX_CELLS: usize = 1 << 26;
+pub(crate) const MAX_CELLS: usize = 1 << 26;
 
 /// A parameter set varied over one axis (a sweep) or two.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -141,7 +140,7 @@ impl<S: ParamSet> Grid<S> {
 
 /// `f` at `base` with `param` set to each of `values`, in parallel, in order: a sweep at given
 /// points (e.g. the paper's Table 1 mu values). The first error in order is returned.
-pub fn at_values<S: ParamSet, T: Send>(
+pub(crate) fn at_values<S: ParamSet, T: Send>(
     base: &S,
     param: S::Param,
     values: &[f64],

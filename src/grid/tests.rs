@@ -201,7 +201,7 @@ proptest! {
         let s = statics::solve(&p);
         prop_assume!(s.status == JamStatus::Jams);
         let tj = s.theta_jam_deg.unwrap();
-        let k = MarginCoeffs::new(&p);
+        let k = margin::MarginCoeffs::new(&p);
         let at = |deg: f64| { let (sn, c) = deg.to_radians().sin_cos(); k.at(c, sn) };
         // 1e-6 deg either side: far beyond rounding, far below any chart's resolution.
         prop_assert!(at(tj - 1e-6) > 0.0, "below: {}", at(tj - 1e-6));

@@ -231,7 +231,7 @@ impl PlaneCone {
     }
 }
 
-/// Capacity from rows c[0] P + c[1] >= 0 in one unknown P >= 0 (N); `weight_n` scales the
+/// Capacity from rows c\[0\] P + c\[1\] >= 0 in one unknown P >= 0 (N); `weight_n` scales the
 /// tolerance and P_max / W.
 fn interval_capacity(rows: &[([f64; 2], FailureMode)], weight_n: f64) -> Capacity {
     let tol = TOL * weight_n;
@@ -304,7 +304,7 @@ fn mode_of(a: Row, b: Row) -> FailureMode {
     }
 }
 
-/// An affine expression c[0] t + c[1] P + c[2] in the free LP's unknowns: t = T_1 (N) and
+/// An affine expression c\[0\] t + c\[1\] P + c\[2\] in the free LP's unknowns: t = T_1 (N) and
 /// the load P (N).
 type Affine = [f64; 3];
 
@@ -457,7 +457,8 @@ pub fn capacity(p: &LocatorParams) -> Capacity {
 }
 
 /// The capacity under free rotation by vertex enumeration of the LP, whatever the load point
-/// (the closed form's check).
+/// (the closed form's check, in the tests).
+#[cfg(test)]
 pub fn capacity_by_enumeration(p: &LocatorParams) -> Capacity {
     let f = p.frame();
     let mut q = *p;

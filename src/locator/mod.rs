@@ -60,7 +60,7 @@
 //! 2. `slips`: no equilibrium; the [`FailureMode`] says how the part leaves (rolls out over a
 //!    flank, slides along one, slips on both, or is pulled off both).
 //! 3. `lifts_off`: held, but one flank's normal force is zero at the minimum-norm solution,
-//!    to [`solve::LIFT_OFF_RTOL`] of the largest load.
+//!    to `solve::LIFT_OFF_RTOL` of the largest load.
 //! 4. `held`.
 //!
 //! Flags: `friction_held` (held, but with mu = 0 on both flanks it would not be) and
@@ -71,7 +71,7 @@
 //!
 //! The held part's forces are the least-norm point of the feasible set (unique when it is not
 //! empty), solved by the general contact solver ([`crate::minnorm`]): two planar contacts,
-//! and a moment joint under blocked rotation ([`contact_problem`]).
+//! and a moment joint under blocked rotation (`contact_problem`).
 //!
 //! # Holding capacity
 //!
@@ -83,20 +83,20 @@
 //! lies in it iff e_lo x q >= 0 and q x e_hi >= 0: two rows a + b P >= 0, so P_max is the
 //! least -a/b over rows with b < 0 (unbounded if none), and the binding ray names the failure
 //! mode. Under free rotation with a rim load, T2 = T1 + m P makes the rows affine in (T1, P):
-//! P_max is the best vertex of that polygon ([`capacity_by_enumeration`], which also checks
+//! P_max is the best vertex of that polygon (`capacity_by_enumeration`, which also checks
 //! the closed form). Both are checked against clarabel ([`reference::capacity_clarabel`]).
 //!
 //! # The optimum included angle
 //!
 //! Maximising capacity alone is degenerate: capacity never grows with gamma, so it picks the
 //! self-locking bound (2 atan mu under free rotation) with no margin. The balanced
-//! criterion ([`optimum`]) asks for the V that survives the largest common proportional error
+//! criterion ([`fn@optimum`]) asks for the V that survives the largest common proportional error
 //! rho in load and friction before it either drops the part (held at load rho P with friction
 //! mu / rho, the friction capped just below locking) or locks it (self-locking at friction
 //! rho mu): rho* = min(rho_hold, rho_lock), gamma* maximises it. rho_lock grows with gamma
-//! ([`rho_lock`]; free: tan(gamma/2) / min(mu)), rho_hold falls, so gamma* is their crossing.
+//! (`rho_lock`; free: tan(gamma/2) / min(mu)), rho_hold falls, so gamma* is their crossing.
 //! rho* <= 1 means no V that does not lock can hold the load. Closed form for free
-//! rotation, equal mu and a centre load ([`closed_form_free_centre`]): with x = tan(gamma/2),
+//! rotation, equal mu and a centre load (`closed_form_free_centre`): with x = tan(gamma/2),
 //! rho_hold = W / (P (|cos phi| x + sin phi)) and rho_lock = x / mu cross at
 //!
 //! ```text
@@ -122,13 +122,19 @@ mod optimum;
 pub(crate) mod params;
 pub mod reference;
 mod solve;
+#[cfg(test)]
+mod tests;
 
-pub use exact::{Capacity, FailureMode, capacity, capacity_by_enumeration, held_at, self_locking};
-pub use optimum::{
-    Criterion, OPT_MAX_DEG, OPT_MIN_DEG, Optimum, balanced_rho, closed_form_free_centre,
-    just_unlocked, optimum, rho_hold, rho_lock,
-};
+pub use exact::{Capacity, FailureMode, capacity, self_locking};
+#[cfg(test)]
+use exact::{capacity_by_enumeration, held_at};
+#[cfg(test)]
+use optimum::closed_form_free_centre;
+pub(crate) use optimum::{OPT_MAX_DEG, OPT_MIN_DEG, just_unlocked};
+pub use optimum::{Optimum, optimum};
+#[cfg(test)]
+use optimum::{balanced_rho, rho_lock};
 pub use params::{Flank, LocatorParams, Rotation};
-pub use solve::{
-    FlankForce, LIFT_OFF_RTOL, LocatorSolution, Verdict, contact_problem, min_norm_forces, solve,
-};
+pub use solve::{FlankForce, LocatorSolution, Verdict, solve};
+#[cfg(test)]
+use solve::{contact_problem, min_norm_forces};

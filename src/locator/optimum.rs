@@ -29,14 +29,14 @@ pub enum Criterion {
 /// The optimum included angle of a V for a load, flank tilt and friction.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Optimum {
-    /// Always [`Criterion::Balanced`].
+    /// Always `Criterion::Balanced`.
     pub criterion: Criterion,
     /// gamma* in deg.
     pub included_angle_deg: f64,
     /// rho* at gamma*: the common factor on load and friction the V survives (<= 1: no V
     /// that does not lock can hold the load).
     pub safety_factor: f64,
-    /// gamma* lies at the end of the search range [`OPT_MIN_DEG`], [`OPT_MAX_DEG`] (e.g.
+    /// gamma* lies at the end of the search range `OPT_MIN_DEG`, `OPT_MAX_DEG` (e.g.
     /// no load: the widest V is safest).
     pub at_bound: bool,
 }
@@ -166,6 +166,7 @@ pub fn optimum(p: &LocatorParams) -> Optimum {
 ///
 /// For a sideways load (phi = 0): gamma* = 2 atan sqrt(mu W / P), so a 90 deg V is optimal
 /// when P / W = mu.
+#[cfg(test)]
 pub fn closed_form_free_centre(mu: f64, p_over_w: f64, phi_deg: f64) -> Option<(f64, f64)> {
     let (s, c) = phi_deg.to_radians().sin_cos();
     let c = c.abs();

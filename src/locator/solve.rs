@@ -31,7 +31,7 @@ pub enum Verdict {
         mode: FailureMode,
     },
     /// Held, but `flank`'s normal force is zero at the minimum-norm solution (to
-    /// [`LIFT_OFF_RTOL`] of the largest load): the part rests on one flank.
+    /// `LIFT_OFF_RTOL` of the largest load): the part rests on one flank.
     LiftsOff {
         /// The flank that carries nothing.
         flank: Flank,

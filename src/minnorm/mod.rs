@@ -27,7 +27,7 @@
 //! negative friction, no contacts, a NaN load) is [`crate::Error::InvalidValue`], naming the
 //! contact index and the value.
 //!
-//! [`qp`] solves it with clarabel (P = 2I, so clarabel's objective is phi^2 and its per-iteration
+//! `qp` solves it with clarabel (P = 2I, so clarabel's objective is phi^2 and its per-iteration
 //! trace is the data of the paper's Fig. 4). A private exact path (active-set enumeration with
 //! dense KKT solves, `exact.rs`) answers small planar problems, at most 8 cone rows, when
 //! [`QpSettings::fast_path`] is set; it is tested against clarabel. Both work on a scaled copy
@@ -128,12 +128,11 @@
 mod contact;
 mod exact;
 pub mod palm;
-pub mod qp;
-pub mod tolerance;
+pub(crate) mod qp;
+pub(crate) mod tolerance;
 
 pub use contact::{Contact, ContactProblem, Joint, Space, Wrench};
 pub use palm::{Formulation, MinNormSettings, PalmSolution, palm_problem};
 pub use qp::{
-    Backend, ContactForce, ContactSolution, HoldStatus, QpSettings, TracePoint, solve,
-    solve_clarabel,
+    Backend, ContactForce, ContactSolution, HoldStatus, QpSettings, solve, solve_clarabel,
 };

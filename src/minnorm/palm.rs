@@ -142,7 +142,7 @@ pub struct PalmSolution {
 /// Below 0.1 rad the bisection stops at this fraction of the angle instead of
 /// `bisection_tol_rad` (default 1e-9 rad, itself 1e-8 of 0.1 rad): the agreement with the
 /// closed form stays within 1e-6 relative for any mu > 0.
-pub const RELATIVE_RESOLUTION: f64 = 1e-8;
+pub(crate) const RELATIVE_RESOLUTION: f64 = 1e-8;
 
 struct Search<'a> {
     p: &'a SceneParams,
@@ -179,7 +179,7 @@ impl Search<'_> {
 /// Solves the palm scene by the minimum-norm model. The held angles below the start are one
 /// interval, [0, theta_jam] (module docs), so: held at the start angle -> jammed at start; held
 /// at the palm's reach (x = palm length) -> bisect [reach, start] to `bisection_tol_rad`
-/// (relative below 0.1 rad, [`RELATIVE_RESOLUTION`]); otherwise beyond reach if the formulation
+/// (relative below 0.1 rad, `RELATIVE_RESOLUTION`); otherwise beyond reach if the formulation
 /// can jam at all, else never jams. A disc starting past the palm's end is beyond reach; one held
 /// at the start and at 90 deg + alpha_g + alpha_p (below 180 deg) is too weak to move. `p` and `s` are validated
 /// here.
@@ -254,7 +254,11 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
 
 /// The palm scene at one angle `theta_deg` solved by clarabel, with its convergence trace
 /// (the data of the paper's Fig. 4).
-pub fn trace_at(p: &SceneParams, theta_deg: f64, s: &MinNormSettings) -> Result<ContactSolution> {
+pub(crate) fn trace_at(
+    p: &SceneParams,
+    theta_deg: f64,
+    s: &MinNormSettings,
+) -> Result<ContactSolution> {
     p.validate()?;
     s.validate()?;
     qp::solve_clarabel(

@@ -1,4 +1,4 @@
-//! The two declaration macros: [`settings!`] for a settings struct, [`choice!`] for the enum of
+//! The two declaration macros: `settings!` for a settings struct, `choice!` for the enum of
 //! a setting that takes one of several names.
 
 /// Declares a settings struct, one line per field: its doc (first line: the short help), type,

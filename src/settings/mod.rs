@@ -1,5 +1,5 @@
 //! Every setting declared once: its TOML key, flag, chart symbol, unit, default, valid range and
-//! doc, in the struct that holds it ([`settings!`]).
+//! doc, in the struct that holds it (`settings!`).
 //!
 //! From that one declaration come the struct with its serde keys and `Default`, the range check
 //! of `validate`, the clap flag and both registers of its help ([`flags`]), `--set` and the
@@ -103,7 +103,7 @@ pub(crate) enum Kind {
     Derived,
 }
 
-/// One declared setting. Built by [`settings!`]; written by hand only for aliases and derived
+/// One declared setting. Built by `settings!`; written by hand only for aliases and derived
 /// grid parameters.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Decl {

@@ -29,7 +29,7 @@
 //!   drawing order (what is drawn later still covers it), and [`SvgText::finish`] replaces it.
 //!
 //! [`Quantise`] sits under the PNG's [`Typeset`]: every anti-aliased pixel (text, lines,
-//! polygon edges, circles) is blended at one of [`COVERAGE_LEVELS`] coverages, so that line art
+//! polygon edges, circles) is blended at one of [`quantise::COVERAGE_LEVELS`] coverages, so that line art
 //! keeps few colours and the PNG can be stored indexed ([`super::output::encode_png`]).
 
 mod quantise;
@@ -46,7 +46,7 @@ use plotters_backend::{
     FontTransform,
 };
 
-pub use quantise::{COVERAGE_LEVELS, Quantise};
+pub use quantise::Quantise;
 
 /// A backend pixel.
 type Px = BackendCoord;

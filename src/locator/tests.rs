@@ -1,13 +1,13 @@
-//! V-type locators: the closed forms against numerical searches, the exact path against
+//! V-type locators (unit tests, beside the internals they check): the closed forms against numerical searches, the exact path against
 //! clarabel, the verdicts, and the palm scene seen as a V.
 
-use jamchart::SceneParams;
-use jamchart::locator::{
+use crate::SceneParams;
+use crate::locator::{
     self, FailureMode, Flank, LocatorParams, Rotation, Verdict, capacity, capacity_by_enumeration,
     closed_form_free_centre, held_at, reference,
 };
-use jamchart::minnorm::{HoldStatus, QpSettings, solve_clarabel};
-use jamchart::statics;
+use crate::minnorm::{HoldStatus, QpSettings, solve_clarabel};
+use crate::statics;
 use proptest::prelude::*;
 
 fn free_v(gamma: f64, mu: f64) -> LocatorParams {
