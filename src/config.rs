@@ -180,6 +180,18 @@ mod tests {
         assert!(c.scene.force_n.is_infinite());
     }
 
+    /// `[scene] mu` sets both frictions, as `--mu` and `--set mu` do (issue 18 found it refused
+    /// in a file); a key given as well wins, and a mistake in it is named on its line.
+    #[test]
+    fn scene_mu_in_a_file_sets_both_frictions() {
+        let c: Config =
+            parse_toml("[scene]\nmu = 0.3\nmu_palm = 0.5\n", Path::new("m.toml")).unwrap();
+        assert_eq!((c.scene.mu_ground, c.scene.mu_palm), (0.3, 0.5));
+        let msg = err("[scene]\nmu = \"high\"\n");
+        assert!(msg.starts_with("c.toml:2:"), "{msg}");
+        assert!(msg.contains("mu_"), "{msg}");
+    }
+
     #[test]
     fn partial_file_keeps_defaults() {
         let c: Config = parse_toml("[scene]\nforce_n = 50.0\n", Path::new("p.toml")).unwrap();

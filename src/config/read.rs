@@ -31,15 +31,19 @@ pub fn parse_toml<T: DeserializeOwned + Serialize>(text: &str, path: &Path) -> R
             message: message.trim().replace('\n', " "),
         }
     };
-    let doc = DeTable::parse(text).map_err(|e| at(e.span(), cut_quotes(e.message())))?;
+    let mut doc = DeTable::parse(text).map_err(|e| at(e.span(), cut_quotes(e.message())))?;
+    expand_aliases(doc.get_mut(), "");
     if let Some((key, span, problem)) = float_problems(doc.get_ref(), "") {
         return Err(at(
             Some(span.clone()),
             format!("{key} = {} {problem}", cut(&text[span])),
         ));
     }
-    let input: toml::Value =
+    let mut input: toml::Value =
         toml::from_str(text).map_err(|e| at(e.span(), cut_quotes(e.message())))?;
+    if let toml::Value::Table(t) = &mut input {
+        crate::settings::expand_aliases("", t);
+    }
     let value: T = serde_path_to_error::deserialize(toml::Deserializer::from(doc.clone()))
         .map_err(|e| {
             let key = e.path().to_string();
@@ -77,6 +81,30 @@ pub fn parse_toml<T: DeserializeOwned + Serialize>(text: &str, path: &Path) -> R
         return Err(at(span, not_a_table(&key, &written)));
     }
     Ok(value)
+}
+
+/// A declared alias in `t` (at the dotted `section`) replaced by the keys it sets, each with the
+/// alias' span (`[scene] mu = 0.3` sets mu_ground and mu_palm, a key given as well wins), as
+/// [`crate::settings::expand_aliases`] does for tables without spans.
+fn expand_aliases(t: &mut DeTable, section: &str) {
+    for alias in crate::settings::all().filter(|d| d.section == section && !d.sets.is_empty()) {
+        let Some(k) = t.keys().find(|k| k.get_ref() == alias.key).cloned() else {
+            continue;
+        };
+        let v = t.remove(&k).expect("the key was just found");
+        for set in alias.sets {
+            if !t.keys().any(|k| k.get_ref() == set) {
+                let key = Spanned::new(k.span(), std::borrow::Cow::Borrowed(*set));
+                t.insert(key, v.clone());
+            }
+        }
+    }
+    for (k, v) in t.iter_mut() {
+        if let DeValue::Table(inner) = v.get_mut() {
+            let path = join(section, k.get_ref());
+            expand_aliases(inner, &path);
+        }
+    }
 }
 
 /// `key = written: message`, or the parts of it that are known.
