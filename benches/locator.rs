@@ -9,7 +9,7 @@ mod common;
 
 use common::{median, median_s};
 use jamchart::grid::{Grid, GridAxis, LocatorParam};
-use jamchart::locator::{self, LocatorParams, reference};
+use jamchart::locator::{self, LocatorParams};
 
 fn map(rotation: locator::Rotation) -> Grid<LocatorParams> {
     Grid {
@@ -49,7 +49,7 @@ fn main() {
                 .step_by(100)
                 .map(|p| {
                     median_s(3, || {
-                        std::hint::black_box(reference::capacity_clarabel(p));
+                        std::hint::black_box(locator::capacity_clarabel(p));
                     })
                 })
                 .collect(),

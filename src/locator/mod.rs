@@ -84,7 +84,7 @@
 //! least -a/b over rows with b < 0 (unbounded if none), and the binding ray names the failure
 //! mode. Under free rotation with a rim load, T2 = T1 + m P makes the rows affine in (T1, P):
 //! P_max is the best vertex of that polygon (`capacity_by_enumeration`, which also checks
-//! the closed form). Both are checked against clarabel ([`reference::capacity_clarabel`]).
+//! the closed form). Both are checked against clarabel ([`capacity_clarabel`]).
 //!
 //! # The optimum included angle
 //!
@@ -120,7 +120,7 @@
 mod exact;
 mod optimum;
 pub(crate) mod params;
-pub mod reference;
+mod reference;
 mod solve;
 #[cfg(test)]
 mod tests;
@@ -135,6 +135,7 @@ pub use optimum::{Optimum, optimum};
 #[cfg(test)]
 use optimum::{balanced_rho, rho_lock};
 pub use params::{Flank, LocatorParams, Rotation};
+pub use reference::{ReferenceCapacity, capacity_clarabel};
 pub use solve::{FlankForce, LocatorSolution, Verdict, solve};
 #[cfg(test)]
 use solve::{contact_problem, min_norm_forces};

@@ -3,8 +3,8 @@
 
 use crate::SceneParams;
 use crate::locator::{
-    self, FailureMode, Flank, LocatorParams, Rotation, Verdict, capacity, capacity_by_enumeration,
-    closed_form_free_centre, held_at, reference,
+    self, FailureMode, Flank, LocatorParams, ReferenceCapacity, Rotation, Verdict, capacity,
+    capacity_by_enumeration, capacity_clarabel, closed_form_free_centre, held_at,
 };
 use crate::minnorm::{HoldStatus, QpSettings, solve_clarabel};
 use crate::statics;
@@ -52,8 +52,8 @@ proptest! {
     #[test]
     fn exact_capacity_matches_clarabel(p in any_v()) {
         let c = capacity(&p);
-        let r = reference::capacity_clarabel(&p);
-        prop_assume!(r != reference::ReferenceCapacity::Undetermined);
+        let r = capacity_clarabel(&p);
+        prop_assume!(r != ReferenceCapacity::Undetermined);
         // clarabel's 1e-8 tolerances on a problem scaled by W.
         prop_assert!(r.agrees(&c, p.weight_n(), 1e-6), "exact {c:?}, clarabel {r:?}, {p:?}");
     }

@@ -133,6 +133,4 @@ pub(crate) mod tolerance;
 
 pub use contact::{Contact, ContactProblem, Joint, Space, Wrench};
 pub use palm::{Formulation, MinNormSettings, PalmSolution, palm_problem};
-pub use qp::{
-    Backend, ContactForce, ContactSolution, HoldStatus, QpSettings, solve, solve_clarabel,
-};
+pub use qp::{Backend, ContactSolution, HoldStatus, QpSettings, solve, solve_clarabel};
