@@ -11,7 +11,7 @@ pub enum Error {
     /// A parameter is out of its valid range. `key` is the TOML key (the CLI adds the flag).
     #[error("invalid {key} = {value}: {reason}")]
     InvalidValue {
-        /// The TOML key, with its section where it has one (e.g. `dynamics.rtol`).
+        /// The TOML key, with its section where it has one (e.g. `dynamics.integrator.rtol`).
         key: String,
         /// The value as given, cut to a readable length.
         value: String,

@@ -1,8 +1,8 @@
 //! `--set key=value`: one key of a scene file replaced before the scene is read.
 //!
 //! A dotted key names its section (`chart.x_axis.count=51`, `dynamics.series.after_jam_s=0.3`,
-//! `size.width_px=2000`); a bare key is a `[scene]`, `[dynamics]` or `[min_norm]` key, found in
-//! that order (`mu_palm=0.6`), or a top-level key (`title`, `base`, `style`). `mu` sets both frictions,
+//! `size.width_px=2000`); a bare key is a declared setting of `[scene]`, `[min_norm]` or
+//! `[dynamics.*]` (keys are unique: `mu_palm=0.6`), or a top-level key (`title`, `base`, `style`). `mu` sets both frictions,
 //! as the paper's single mu. The value is TOML (`0.6`, `51`, `"log"`, `[1.0, 2.0]`); a bare word
 //! is a string (`scale=log`).
 

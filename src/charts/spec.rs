@@ -5,7 +5,7 @@
 //! base = "my-params.toml"          # parameter set, relative to this file (default: built-in paper set)
 //! [scene]                          # overrides of the base's [scene] keys
 //! force_n = 200.0
-//! [dynamics]                       # overrides of the base's [dynamics] keys (scenes that simulate)
+//! [dynamics.series]                # overrides of the base's [dynamics.*] keys (scenes that simulate)
 //! after_jam_s = 0.3
 //! [min_norm]                       # overrides of the base's [min_norm] keys (scenes that solve QPs)
 //! [size]                           # picture size in px (default 1000 x 800)

@@ -2,7 +2,7 @@
 //! time, the jam point P_jam marked with t_jam and x_jam.
 //!
 //! One simulation ([`crate::dynamics::simulate`]) with the scene's `[dynamics]` settings records
-//! the series every `series_dt_s`; set `after_jam_s` in the scene's `[dynamics]` so the collapse
+//! the series every `series_dt_s`; set `after_jam_s` in the scene's `[dynamics.series]` so the collapse
 //! after the jam is visible. Beside the motion: the speed a rigid disc touching the turning palm
 //! would have, r omega / (2 sin^2(theta/2)) (the jam is read where x_dot falls below
 //! `jam_speed_ratio` of it), and that disc's position r cot(theta/2).
