@@ -144,34 +144,40 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
         message: m,
     };
     let scale = scene.size.scale;
-    let (svg, png) = rayon::join(
-        || -> Result<Option<Vec<u8>>> {
-            if !formats.svg() {
-                return Ok(None);
-            }
-            output::svg(w, h, scale, scene.style, |root| {
-                chart.draw(root).map_err(|e| e.to_string())
-            })
-            .map(Some)
-            .map_err(draw_err)
+    // The data (a map's cells CSV is megabytes) is built beside the pictures, not after them.
+    let ((svg, png), (data, cells)) = rayon::join(
+        || {
+            rayon::join(
+                || -> Result<Option<Vec<u8>>> {
+                    if !formats.svg() {
+                        return Ok(None);
+                    }
+                    output::svg(w, h, scale, scene.style, |root| {
+                        chart.draw(root).map_err(|e| e.to_string())
+                    })
+                    .map(Some)
+                    .map_err(draw_err)
+                },
+                || -> Result<Option<Vec<u8>>> {
+                    if !formats.png() {
+                        return Ok(None);
+                    }
+                    output::png(w, h, scale, scene.style, |root| {
+                        chart.draw(root).map_err(|e| e.to_string())
+                    })
+                    .map(Some)
+                    .map_err(draw_err)
+                },
+            )
         },
-        || -> Result<Option<Vec<u8>>> {
-            if !formats.png() {
-                return Ok(None);
-            }
-            output::png(w, h, scale, scene.style, |root| {
-                chart.draw(root).map_err(|e| e.to_string())
-            })
-            .map(Some)
-            .map_err(draw_err)
-        },
+        || (chart.data(scene), chart.cells()),
     );
     Ok(Rendered {
         name: scene.name.clone(),
         svg: svg?,
         png: png?,
-        data: chart.data(scene),
-        cells: chart.cells(),
+        data,
+        cells,
     })
 }
 
