@@ -19,9 +19,10 @@
 //!   defaults, 24.94 mm with 10 um of penetration at 200 N, 25.00 mm with 1 um).
 //! * `force`: a speed drive with a force limit. The palm turns at omega until its elastic push
 //!   reaches N_max = F cos(atan mu_palm) (a total push F while the palm slides), then stalls and
-//!   holds. At slow omega the disc jams where the closed form at finite F says (within 0.2 % at
-//!   1 deg/s), and Fig. 7b's force dependence can be simulated; at 30 deg/s the disc's inertia
-//!   carries it past the closed form, by up to +7.9 % (mu = 0.15, F = 50 N).
+//!   holds. At slow omega the disc jams near where the closed form at finite F says, short of
+//!   it by the contact's compliance, and Fig. 7b's force dependence can be simulated; at
+//!   30 deg/s the disc's inertia carries it past the closed form, most at low mu and low F.
+//!   (No figure is given here: none is printed by a test or bench yet, see issue 20.)
 //!
 //! # Integration and its trust
 //!

@@ -98,14 +98,20 @@ pub fn solve(p: &LocatorParams) -> Result<LocatorSolution> {
     p.validate()?;
     let self_locking = exact::self_locking(p);
     let held = exact::held_at(p, p.load_n);
+    let scale = p.weight_n().max(p.load_n);
+    let unloaded = net_load_is_zero(p, scale);
     let forces = match held {
+        // No net load: the minimum-norm forces are zero (the solver reports no verdict for a
+        // zero right-hand side, which printed "no equilibrium" beside `held`).
+        Ok(()) if unloaded => Some(zero_forces()),
         Ok(()) => min_norm_forces(p, &QpSettings::default())?,
         Err(_) => None,
     };
-    let scale = p.weight_n().max(p.load_n);
     let verdict = match (self_locking, held, &forces) {
         (true, _, _) => Verdict::Wedged,
         (false, Err(mode), _) => Verdict::Slips { mode },
+        // Zero forces on both flanks is not a lift-off from one of them.
+        (false, Ok(()), Some(_)) if unloaded => Verdict::Held,
         (false, Ok(()), Some(f)) => Flank::BOTH
             .into_iter()
             .find(|fl| f[fl.index()].normal_n <= LIFT_OFF_RTOL * scale)
@@ -126,6 +132,27 @@ pub fn solve(p: &LocatorParams) -> Result<LocatorSolution> {
         forces,
         capacity: exact::capacity(p),
         optimum: optimum::optimum(p),
+    })
+}
+
+/// Whether weight and load cancel (force and moment about the centre, relative to `scale` in
+/// N and N mm at the unit radius, to [`LIFT_OFF_RTOL`]).
+fn net_load_is_zero(p: &LocatorParams, scale: f64) -> bool {
+    let w = contact_problem(p).load;
+    let tol = LIFT_OFF_RTOL * scale;
+    w.force_n.iter().all(|c| c.abs() <= tol)
+        && w.moment_nmm.iter().all(|c| c.abs() <= tol * UNIT_RADIUS_MM)
+}
+
+/// Both flanks carrying nothing.
+fn zero_forces() -> [FlankForce; 2] {
+    Flank::BOTH.map(|flank| FlankForce {
+        flank,
+        normal_n: 0.0,
+        tangential_up_n: 0.0,
+        fx_n: 0.0,
+        fy_n: 0.0,
+        utilisation: 0.0,
     })
 }
 

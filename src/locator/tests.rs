@@ -457,3 +457,27 @@ fn bad_input_names_the_key_and_value() {
         assert!(msg.contains(key) && msg.contains(value), "{msg}");
     }
 }
+
+/// Regression (issue 20, item 7): a load that cancels the weight (`vlocator --mu 0.3 --load
+/// 9.806 --load-angle 90`) printed `held` next to "flank forces: none (no equilibrium)". With no
+/// net load the equilibrium is the trivial one: both flank forces are zero, and the verdict and
+/// the forces must say the same thing.
+#[test]
+fn zero_net_load_is_held_with_zero_forces_not_no_equilibrium() {
+    let p = LocatorParams {
+        load_n: 9.806,
+        load_angle_deg: 90.0,
+        ..free_v(90.0, 0.3)
+    };
+    let s = locator::solve(&p).unwrap();
+    assert_eq!(s.verdict, Verdict::Held);
+    let forces = s
+        .forces
+        .expect("zero net load has an equilibrium: zero flank forces");
+    for f in forces {
+        assert!(
+            f.normal_n.abs() < 1e-9 && f.tangential_up_n.abs() < 1e-9,
+            "{f:?}"
+        );
+    }
+}
