@@ -128,11 +128,49 @@ impl SceneParams {
         2.0 * ((2.0 * r + h) / (l + (l * l + h * (2.0 * r + h)).sqrt())).atan()
     }
 
+    /// Values that are valid but likely a unit mistake, one sentence each naming the key (and
+    /// its flag): a friction coefficient above 2 (a percentage?), a radius under 0.5 mm (metres?), a start angle under 3 deg
+    /// (radians?). The caller prints them as warnings; the answer is still computed.
+    pub fn unit_warnings(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        for (key, mu) in [("mu_ground", self.mu_ground), ("mu_palm", self.mu_palm)] {
+            if mu > 2.0 {
+                out.push(likely_mistake(
+                    key,
+                    mu,
+                    "is above 2, unusual for a friction coefficient; is it a percentage?",
+                ));
+            }
+        }
+        if self.radius_mm < 0.5 {
+            out.push(likely_mistake(
+                "radius_mm",
+                self.radius_mm,
+                "mm is under 0.5 mm; the radius is in mm, not metres",
+            ));
+        }
+        if self.start_angle_deg < 3.0 {
+            out.push(likely_mistake(
+                "start_angle_deg",
+                self.start_angle_deg,
+                "deg is under 3 deg; the angle is in degrees, not radians",
+            ));
+        }
+        out
+    }
+
     /// Distance in mm from the hinge along the palm to the contact B at palm angle `theta`
     /// (rad), `contact_distance_mm`.
     pub fn contact_distance_mm(&self, theta: f64) -> f64 {
         contact_distance_mm(self.radius_mm, self.palm_offset_mm, theta)
     }
+}
+
+/// A warning that `key` = `value` looks like a unit mistake: "mu_palm (--mu-palm or --mu) =
+/// 40 is above 2, ...".
+pub(crate) fn likely_mistake(key: &str, value: f64, why: &str) -> String {
+    let flag = crate::settings::flag_for(key).map_or(String::new(), |f| format!(" ({f})"));
+    format!("{key}{flag} = {value} {why}")
 }
 
 pub(crate) fn finite_positive(key: &str, v: f64, reason: &str) -> Result<()> {

@@ -97,6 +97,25 @@ pub struct StaticsSolution {
     pub lift_off_above_deg: Option<f64>,
     /// The push passes through the lift-off region between the start angle and the jam.
     pub lifts_off: bool,
+    /// For `beyond_reach` with a jam past the palm's end: where it would jam on a longer palm
+    /// and what would bring it onto this one (None otherwise).
+    pub past_palm: Option<PastPalm>,
+}
+
+/// A jam that lies past the palm's end: where it would be and what would bring it onto the palm.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PastPalm {
+    /// The palm angle in deg where the disc would jam on a long enough palm.
+    pub theta_jam_deg: f64,
+    /// The disc position in mm at that jam, r cot(theta_jam/2) + h / sin(theta_jam).
+    pub x_jam_mm: f64,
+    /// The least palm length in mm that reaches the jam: the contact's distance from the hinge
+    /// along the palm there, x - h tan(theta_jam / 2).
+    pub palm_length_needed_mm: f64,
+    /// The least factor on both friction coefficients that brings the jam onto this palm
+    /// (theta_jam grows with either friction, so the jam moves towards the hinge); None when no
+    /// factor up to 1e6 does, or the push then becomes too weak first.
+    pub friction_factor_needed: Option<f64>,
 }
 
 /// The closed-form jam angle in rad, alpha_g + alpha_p + asin(m g sin(alpha_g) / F), before the
@@ -138,6 +157,7 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
         x_rigid_mm,
         lift_off_above_deg: lift_off_above.map(f64::to_degrees),
         lifts_off,
+        past_palm: None,
     };
 
     // A disc that starts beyond the palm's end is never touched, whatever the friction.
@@ -170,11 +190,47 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
     let s_b = p.contact_distance_mm(theta_jam);
     if x_jam.is_nan() || s_b.is_nan() || s_b > p.palm_length_mm {
         out.status = JamStatus::BeyondReach;
+        out.past_palm = (x_jam.is_finite() && s_b.is_finite()).then(|| PastPalm {
+            theta_jam_deg: theta_jam.to_degrees(),
+            x_jam_mm: x_jam,
+            palm_length_needed_mm: s_b,
+            friction_factor_needed: friction_factor_to_reach(p),
+        });
         return out;
     }
     out.theta_jam_deg = Some(theta_jam.to_degrees());
     out.x_jam_mm = Some(x_jam);
     out
+}
+
+/// The least factor k >= 1 on both frictions for which the jam lies on the palm (the contact
+/// within `palm_length_mm` of the hinge), by bisection to 1e-9 relative: theta_jam grows
+/// monotonically with k (alpha_g, alpha_p and asin(m g sin(alpha_g) / F) all do), so the
+/// contact distance falls with k. None if even k = 1e6 leaves the jam past the palm or the push
+/// becomes too weak before the jam reaches the palm.
+fn friction_factor_to_reach(p: &SceneParams) -> Option<f64> {
+    let scaled = |k: f64| SceneParams {
+        mu_ground: k * p.mu_ground,
+        mu_palm: k * p.mu_palm,
+        ..*p
+    };
+    let on_palm = |k: f64| {
+        let q = scaled(k);
+        let t = theta_jam_rad(&q);
+        t.is_finite() && q.contact_distance_mm(t) <= p.palm_length_mm
+    };
+    let (mut lo, mut hi) = (1.0, 2.0);
+    while !on_palm(hi) {
+        if hi > 1e6 || theta_jam_rad(&scaled(hi)).is_infinite() {
+            return None;
+        }
+        (lo, hi) = (hi, 2.0 * hi);
+    }
+    while hi - lo > 1e-9 * hi {
+        let mid = 0.5 * (lo + hi);
+        if on_palm(mid) { hi = mid } else { lo = mid }
+    }
+    Some(hi)
 }
 
 /// Palm angle (rad) above which R_n = m g + F cos(theta - alpha_p) < 0, if below 180 deg.
@@ -229,6 +285,61 @@ mod tests {
             };
             assert_eq!(solve(&p).status, JamStatus::BeyondReach, "mu = {mu}");
         }
+    }
+
+    /// Regression (issue 18): a jam past the palm's end said `beyond_reach` with no number; the
+    /// user needed `--palm-length 200` to find where it would jam. The shaft of the issue: r =
+    /// 12.5 mm, m = 0.4 kg, F = 40 N, mu = 0.12, an 80 mm palm.
+    #[test]
+    fn a_jam_past_the_palm_says_where_and_what_brings_it_on() {
+        let p = SceneParams {
+            radius_mm: 12.5,
+            mass_kg: 0.4,
+            force_n: 40.0,
+            palm_length_mm: 80.0,
+            ..SceneParams::default().with_mu(0.12)
+        };
+        let s = solve(&p);
+        assert_eq!(s.status, JamStatus::BeyondReach);
+        let past = s.past_palm.expect("a finite jam past the palm");
+        // The same jam as on a palm long enough to reach it.
+        let long = solve(&SceneParams {
+            palm_length_mm: 1000.0,
+            ..p
+        });
+        assert_eq!(long.status, JamStatus::Jams);
+        assert!((long.x_jam_mm.unwrap() - past.x_jam_mm).abs() < 1e-9);
+        assert!((long.theta_jam_deg.unwrap() - past.theta_jam_deg).abs() < 1e-9);
+        // h = 0: the contact distance is the position.
+        assert!((past.palm_length_needed_mm - past.x_jam_mm).abs() < 1e-9);
+        // The palm length needed puts the jam just on the palm, a hair less does not.
+        let just = |l: f64| {
+            solve(&SceneParams {
+                palm_length_mm: l,
+                ..p
+            })
+            .status
+        };
+        assert_eq!(
+            just(past.palm_length_needed_mm * (1.0 + 1e-12)),
+            JamStatus::Jams
+        );
+        assert_eq!(
+            just(past.palm_length_needed_mm * (1.0 - 1e-9)),
+            JamStatus::BeyondReach
+        );
+        // The friction factor needed brings it onto the 80 mm palm, 1e-6 less does not.
+        let k = past
+            .friction_factor_needed
+            .expect("more friction reaches the palm");
+        let with = |k: f64| {
+            solve(&SceneParams {
+                ..p.with_mu(0.12 * k)
+            })
+            .status
+        };
+        assert_eq!(with(k * (1.0 + 1e-8)), JamStatus::Jams);
+        assert_eq!(with(k * (1.0 - 1e-6)), JamStatus::BeyondReach);
     }
 
     #[test]

@@ -452,3 +452,76 @@ fn start_angle_above_90_is_outside_every_model() {
         assert_eq!(why["start_angle_deg"], 120.0, "{r}");
     }
 }
+
+/// Regression (issue 18): `solve` said `beyond_reach` with no number; the user of the shaft job
+/// (r 12.5 mm, 0.4 kg, 40 N, mu 0.12, 80 mm palm) needed `--palm-length 200` to find 99.3 mm.
+#[test]
+fn beyond_reach_says_where_it_would_jam_and_what_brings_it_on_the_palm() {
+    let shaft = [
+        "solve",
+        "--radius",
+        "12.5",
+        "--mass",
+        "0.4",
+        "--force",
+        "40",
+        "--mu",
+        "0.12",
+        "--palm-length",
+        "80",
+    ];
+    let o = jamchart(repo(), &shaft);
+    assert_eq!(o.status.code(), Some(0));
+    let out = stdout(&o);
+    assert!(out.contains("x = 99.261 mm"), "{out}");
+    assert!(
+        out.contains("a palm of at least 99.261 mm (--palm-length)"),
+        "{out}"
+    );
+    assert!(out.contains("mu >= 0.1489 (--mu)"), "{out}");
+    // The numbers it names work: that mu, or that palm, puts the jam on the palm.
+    for (flag, value) in [("--mu", "0.149"), ("--palm-length", "99.262")] {
+        let args: Vec<&str> = shaft
+            .iter()
+            .zip(std::iter::once(&"").chain(&shaft))
+            .map(|(a, before)| if *before == flag { value } else { a })
+            .collect();
+        let out = stdout(&jamchart(repo(), &args));
+        assert!(out.contains("statics: jams"), "{flag} {value}: {out}");
+    }
+}
+
+/// Regression (issue 18): mu = 40, a radius of 0.0125 (metres?) and a start angle of 1.57
+/// (radians?) were accepted without a word. They are still answered, with a warning each.
+#[test]
+fn likely_unit_mistakes_are_answered_with_a_warning() {
+    let o = jamchart(
+        repo(),
+        &[
+            "solve",
+            "--mu",
+            "40",
+            "--radius",
+            "0.0125",
+            "--start-angle",
+            "1.57",
+        ],
+    );
+    assert_eq!(o.status.code(), Some(0));
+    let err = stderr(&o);
+    for needle in [
+        "warning: mu_ground (--mu-ground or --mu) = 40 is above 2",
+        "warning: radius_mm (--radius) = 0.0125 mm is under 0.5 mm",
+        "warning: start_angle_deg (--start-angle) = 1.57 deg is under 3 deg",
+    ] {
+        assert!(err.contains(needle), "{needle}: {err}");
+    }
+    let o = jamchart(
+        repo(),
+        &["vlocator", "--included-angle", "1.5", "--load", "5"],
+    );
+    assert!(stderr(&o).contains("included angle (--included-angle) = 1.500 deg"));
+    // The paper's scene draws none.
+    let o = jamchart(repo(), &["solve"]);
+    assert!(!stderr(&o).contains("warning"), "{}", stderr(&o));
+}

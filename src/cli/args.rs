@@ -38,6 +38,7 @@ impl SceneArgs {
         }
         let config = base.overlay(&over)?;
         config.validate()?;
+        super::warn(&config.scene.unit_warnings());
         Ok(config)
     }
 }

@@ -129,6 +129,14 @@ pub fn main() -> i32 {
     }
 }
 
+/// Prints each line as `jamchart: warning: <line>` on stderr: for values that are valid but
+/// likely a mistake, where the answer still follows.
+pub(crate) fn warn(lines: &[String]) {
+    for l in lines {
+        eprintln!("jamchart: warning: {l}");
+    }
+}
+
 /// Help and version go to stdout as clap prints them; usage errors become one line.
 fn clap_exit(e: clap::Error) -> i32 {
     use clap::error::ErrorKind;

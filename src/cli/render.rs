@@ -204,6 +204,12 @@ pub fn write_rendered(
 
 pub fn run(a: &RenderArgs) -> Result<String> {
     let scenes = load_scenes(&a.scenes, a.scenes_dir.as_deref(), &a.set)?;
+    for s in &scenes {
+        let named: Vec<String> = (s.params.unit_warnings().into_iter())
+            .map(|w| format!("scene {}: {w}", s.name))
+            .collect();
+        super::warn(&named);
+    }
     let formats = Formats::from(a.format);
     // Every output path is checked before anything is computed.
     let planned: Vec<PathBuf> = scenes

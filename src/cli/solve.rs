@@ -153,14 +153,40 @@ fn record<'a>(x: &'a Answer, config: &'a Config, a: &SolveArgs) -> Record<'a> {
     }
 }
 
+/// A statics answer that knows where the jam past the palm's end would be.
+fn has_past_palm(d: &Detail) -> bool {
+    matches!(d, Detail::Statics(d) if d.past_palm.is_some())
+}
+
 /// The statics' own lines: the F -> inf limit and a lift-off warning.
-fn render_statics(s: &mut String, d: &StaticsSolution) {
+fn render_statics(s: &mut String, d: &StaticsSolution, p: &SceneParams) {
     if let Some(x) = d.x_rigid_mm {
         let _ = writeln!(
             s,
             "  x_rigid   = {x:.3} mm, theta_rigid = {:.3} deg: the rigid limit, the jam as F -> inf \
              (a motion-driven palm)",
             d.theta_rigid_deg
+        );
+    }
+    if let Some(past) = &d.past_palm {
+        let _ = writeln!(
+            s,
+            "  on a long enough palm it would jam at theta = {:.3} deg, x = {:.3} mm: that needs \
+             a palm of at least {:.3} mm (--palm-length)",
+            past.theta_jam_deg, past.x_jam_mm, past.palm_length_needed_mm
+        );
+        let more = match past.friction_factor_needed {
+            Some(k) if p.mu_ground == p.mu_palm => format!("mu >= {:.4} (--mu)", k * p.mu_ground),
+            Some(k) => format!(
+                "mu_ground >= {:.4} and mu_palm >= {:.4} (both scaled by {k:.4})",
+                k * p.mu_ground,
+                k * p.mu_palm
+            ),
+            None => "no friction within a factor 1e6 does".into(),
+        };
+        let _ = writeln!(
+            s,
+            "  or more friction brings the jam onto this palm: {more}"
         );
     }
     if d.lifts_off
@@ -230,6 +256,13 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
                     "  the disc never jams: without friction it slides for as long as the palm pushes"
                 );
             }
+            (JamStatus::BeyondReach, ..) if has_past_palm(&r.detail) => {
+                let _ = writeln!(
+                    s,
+                    "  the jam lies past the palm's end ({} mm): the palm loses the disc first",
+                    p.palm_length_mm
+                );
+            }
             (JamStatus::BeyondReach, ..) => {
                 let _ = writeln!(
                     s,
@@ -241,7 +274,7 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
             _ => {}
         }
         match &r.detail {
-            Detail::Statics(d) => render_statics(&mut s, d),
+            Detail::Statics(d) => render_statics(&mut s, d, p),
             Detail::MinNorm(d) => min_norm::render_details(&mut s, d, x.trace.as_ref()),
             Detail::Dynamics(d) => dynamics::render_details(&mut s, d, config, series),
             Detail::Outside(why) => {

@@ -80,6 +80,7 @@ impl VlocatorArgs {
             .unwrap_or_default();
         let p: LocatorParams = crate::config::overlay(&p, &over, "locator")?;
         p.validate()?;
+        super::warn(&p.unit_warnings());
         Ok(p)
     }
 }

@@ -157,6 +157,31 @@ impl LocatorParams {
         [self.mu_left, self.mu_right]
     }
 
+    /// Values that are valid but likely a unit mistake (see
+    /// [`crate::scene::SceneParams::unit_warnings`]): a friction above 2, an included angle
+    /// under 3 deg (radians?).
+    pub fn unit_warnings(&self) -> Vec<String> {
+        use crate::scene::likely_mistake;
+        let mut out = Vec::new();
+        for (key, mu) in [("mu_left", self.mu_left), ("mu_right", self.mu_right)] {
+            if mu > 2.0 {
+                out.push(likely_mistake(
+                    key,
+                    mu,
+                    "is above 2, unusual for a friction coefficient; is it a percentage?",
+                ));
+            }
+        }
+        let gamma = self.included_angle_deg();
+        if gamma < 3.0 {
+            out.push(format!(
+                "the included angle (--included-angle) = {gamma:.3} deg is under 3 deg; angles \
+                 are in degrees, not radians"
+            ));
+        }
+        out
+    }
+
     /// Checks every field (each against its declared range, then the V's geometry); the
     /// error names the TOML key and the offending value.
     pub fn validate(&self) -> Result<()> {
