@@ -170,6 +170,8 @@ pub enum Column<'a> {
     Dense(&'a [f64]),
     /// An empty field where a cell has no value.
     Sparse(&'a [Option<f64>]),
+    /// A word per cell, e.g. the status.
+    Text(&'a [&'static str]),
 }
 
 impl Column<'_> {
@@ -177,6 +179,7 @@ impl Column<'_> {
         match self {
             Column::Dense(v) => push_plain(out, v[i]),
             Column::Sparse(v) => v[i].into_iter().for_each(|x| push_plain(out, x)),
+            Column::Text(v) => out.extend_from_slice(v[i].as_bytes()),
         }
     }
 }
@@ -231,6 +234,21 @@ pub fn cells_summary(
         .iter()
         .zip(columns)
         .map(|(name, c)| {
+            if let Column::Text(words) = c {
+                // How many cells say each word, in the order they first appear.
+                let mut counts: Vec<(&str, usize)> = Vec::new();
+                for w in words.iter() {
+                    match counts.iter_mut().find(|(k, _)| k == w) {
+                        Some((_, n)) => *n += 1,
+                        None => counts.push((w, 1)),
+                    }
+                }
+                let counts: serde_json::Map<String, serde_json::Value> = counts
+                    .into_iter()
+                    .map(|(k, n)| (k.into(), n.into()))
+                    .collect();
+                return (name.to_string(), serde_json::json!({ "cells": counts }));
+            }
             let values: Vec<f64> = match c {
                 Column::Dense(v) => v.iter().copied().filter(|x| x.is_finite()).collect(),
                 Column::Sparse(v) => v
@@ -239,6 +257,7 @@ pub fn cells_summary(
                     .copied()
                     .filter(|x| x.is_finite())
                     .collect(),
+                Column::Text(_) => unreachable!("summarised above"),
             };
             let min = values.iter().copied().reduce(f64::min);
             let max = values.iter().copied().reduce(f64::max);

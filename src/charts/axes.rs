@@ -143,6 +143,21 @@ pub fn draw_vertical_label<DB: DrawingBackend>(
     root.draw(&Text::new(s.to_string(), (cx, cy), style))
 }
 
+/// A short label (a step number, a level) on a white box centred at `at`, tick-label size.
+pub fn tag<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    s: &str,
+    at: (i32, i32),
+) -> DrawResult<DB> {
+    boxed_text(
+        root,
+        s,
+        at,
+        Pos::new(HPos::Center, VPos::Center),
+        style::TICK_PX,
+    )
+}
+
 /// Text on a white box (for labels over data); `pos` anchors the box like a text anchor.
 pub fn boxed_text<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,

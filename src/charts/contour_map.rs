@@ -198,7 +198,7 @@ pub struct ContourMap {
 const THETA_LINE_PX: u32 = 2;
 
 /// Polylines or rings in plot space (ln for log axes).
-type Paths = Vec<Vec<(f64, f64)>>;
+pub(super) type Paths = Vec<Vec<(f64, f64)>>;
 
 /// A value for cells where a model gives no jam: below every level, so they stay unshaded.
 const NO_JAM: f64 = -1.0;
@@ -524,7 +524,7 @@ fn nearest_x<DB: DrawingBackend>(
 }
 
 /// The plot-space point and backend pixel of the path point nearest the height `frac` (0 bottom, 1 top) of the plot.
-fn at_height<DB: DrawingBackend>(
+pub(super) fn at_height<DB: DrawingBackend>(
     paths: &[Vec<(f64, f64)>],
     chart: &axes::Chart<DB>,
     y: &PlotAxis,
@@ -548,7 +548,7 @@ fn nearest_point(paths: &[Vec<(f64, f64)>], u: f64) -> Option<&(f64, f64)> {
 }
 
 /// The axis value of plot coordinate `u` (plot space is ln of the value on a log axis).
-fn plot_to_value(u: f64, a: &GridAxis) -> f64 {
+pub(super) fn plot_to_value(u: f64, a: &GridAxis) -> f64 {
     match a.scale {
         AxisScale::Log => u.exp(),
         AxisScale::Linear => u,
@@ -556,7 +556,7 @@ fn plot_to_value(u: f64, a: &GridAxis) -> f64 {
 }
 
 /// A level as a label: whole numbers without decimals.
-fn level_text(v: f64) -> String {
+pub(super) fn level_text(v: f64) -> String {
     style::fmt_num(v, if v.fract() == 0.0 { 0 } else { 1 })
 }
 

@@ -393,15 +393,7 @@ impl JamMap {
             style::draw_line(root, &line, LineKind::Dashed, LineKind::Dashed.color())?;
         }
         root.draw(&Circle::new(corner, 5, INK.filled()))?;
-        let num = |s: &str, p: (i32, i32)| {
-            axes::boxed_text(
-                root,
-                s,
-                p,
-                Pos::new(HPos::Center, VPos::Center),
-                style::TICK_PX,
-            )
-        };
+        let num = |s: &str, p: (i32, i32)| axes::tag(root, s, p);
         num(
             "1",
             ((bottom.0 + corner.0) / 2 + 12, (bottom.1 + corner.1) / 2),

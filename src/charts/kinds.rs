@@ -18,8 +18,8 @@ use super::axes::DrawResult;
 use super::models::Models;
 use super::spec::Scene;
 use super::{
-    DataFile, contour_map, convergence, jam_map, stability, sweep, time_series, vlocator_capacity,
-    vlocator_optimum, work_precision,
+    DataFile, contour_map, convergence, jam_map, stability, sweep, time_series, universal,
+    vlocator_capacity, vlocator_optimum, work_precision,
 };
 use crate::config::read_section;
 use crate::error::Result;
@@ -187,6 +187,8 @@ chart_kinds! {
     JamMap("jam_map", "json", jam_map::JamMapSpec => jam_map::JamMap),
     /// theta_jam and x_jam against one parameter (Figs. 6, 7a, 7b).
     Sweep("sweep", "csv", sweep::SweepSpec => sweep::Sweep),
+    /// theta_jam and x_jam / r over a friction and F / (m g): one chart for any part.
+    Universal("universal", "json", universal::UniversalSpec => universal::Universal),
     /// Iso-lines of x_jam and theta_jam over two parameters (Fig. 7c).
     ContourMap("contour_map", "json", contour_map::ContourMapSpec => contour_map::ContourMap),
     /// The min-norm program's convergence trace at theta_jam (Fig. 4).

@@ -4,7 +4,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::axes::DrawResult;
+use super::axes::{self, DrawResult};
 use super::style::{self, INK, LineKind, Marker};
 
 /// What a legend entry shows beside its text.
@@ -21,6 +21,8 @@ pub enum Swatch {
     /// A line sample with a line kind's dashes in another colour and width (px) than its own
     /// (e.g. black on a filled map).
     Stroke(LineKind, RGBColor, u32),
+    /// A step's number in a box, for instructions ("how to read").
+    Step(u8),
 }
 
 /// One legend entry.
@@ -117,6 +119,7 @@ fn draw_at<DB: DrawingBackend>(
                 style::draw_line(root, &[(x, y), (x + 32, y)], kind, kind.color())?;
                 style::draw_marker(root, m, (x + 16, y))?;
             }
+            Swatch::Step(n) => axes::tag(root, &n.to_string(), (x + 16, y))?,
             Swatch::Patch(c) => {
                 root.draw(&Rectangle::new([(x, y - 8), (x + 32, y + 8)], c.filled()))?;
                 root.draw(&Rectangle::new(

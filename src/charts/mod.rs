@@ -8,7 +8,8 @@
 //! computed the same way for any thread count.
 //!
 //! Chart kinds, one module each: `jam_map` (Fig. 3), `sweep` (Figs. 6, 7a, 7b),
-//! `contour_map` (Fig. 7c), `convergence` (Fig. 4), `time_series` (Fig. 5),
+//! `contour_map` (Fig. 7c), `universal` (theta_jam and x_jam / r over mu and F / (m g), for any
+//! part), `convergence` (Fig. 4), `time_series` (Fig. 5),
 //! `work_precision` (the accuracy study), `stability` (the stability matrix),
 //! `vlocator_capacity` and `vlocator_optimum` (V-type locators, [`crate::locator`]);
 //! `error_time` draws `jamchart accuracy`'s wall-time chart, which is not a scene. The last
@@ -62,6 +63,7 @@ pub(crate) mod sweep_layers;
 pub(crate) mod ticks;
 pub(crate) mod time_series;
 pub(crate) mod typeset;
+pub(crate) mod universal;
 pub(crate) mod vlocator_capacity;
 pub(crate) mod vlocator_optimum;
 pub(crate) mod work_precision;

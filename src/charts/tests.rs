@@ -250,7 +250,7 @@ fn every_scene_makes_only_the_model_calls_it_draws() {
     let sim_points = 2 * sweep_layers::SIMULATION_MU.len();
     let expected = |name: &str| -> [usize; 5] {
         match name {
-            "fig3" | "fig7a" | "fig7b" | "fig7c" => [0; 5],
+            "fig3" | "fig7a" | "fig7b" | "fig7c" | "universal" => [0; 5],
             // The V-locator scenes use the locator's exact path, no palm-scene model.
             "vlocator-capacity" | "vlocator-optimum" => [0; 5],
             "fig4" => [1, 1, 0, 0, 0],
@@ -397,4 +397,106 @@ fn a_sweep_layer_that_failed_at_some_points_names_them() {
     // Where the model answers everywhere there is no note.
     let s = &sweep_layers::series(SimulationMotion, spec, &scene, &Live).unwrap()[0];
     assert_eq!(s.callout, None);
+}
+
+/// Where the polyline `path` (points (mu, F/(m g))) crosses the height `ratio`: its mu there,
+/// interpolated in ln(ratio) as the chart's log axis draws it.
+fn mu_at(path: &[serde_json::Value], ratio: f64) -> Option<f64> {
+    let pt = |v: &serde_json::Value| (v[0].as_f64().unwrap(), v[1].as_f64().unwrap().ln());
+    let y = ratio.ln();
+    path.windows(2).find_map(|w| {
+        let ((x0, y0), (x1, y1)) = (pt(&w[0]), pt(&w[1]));
+        ((y0 - y) * (y1 - y) <= 0.0 && y0 != y1).then(|| x0 + (x1 - x0) * (y - y0) / (y1 - y0))
+    })
+}
+
+/// Issue 18: the universal chart read as a designer reads it, from its iso-lines alone: the
+/// shaft of the issue (mu 0.27, r 12 mm, F 150 N, m 1 kg) lies between two 1-degree lines;
+/// interpolating between them gives theta_jam within 0.1 deg of the closed form (31.2 deg) and
+/// x_jam = r cot(theta_jam / 2) within 1 % (43.0 mm). The same chart serves another part with
+/// the same mu and F / (m g): the lines do not move.
+#[test]
+fn the_universal_chart_reads_back_the_closed_form_for_any_part() {
+    let set = |pairs: &[(&str, f64)]| -> Vec<overrides::Setting> {
+        pairs
+            .iter()
+            .map(|(k, v)| format!("{k}={v}").parse().unwrap())
+            .collect()
+    };
+    let read = |pairs: &[(&str, f64)]| {
+        let scene = SceneSource::BuiltIn("universal".into())
+            .load(&set(pairs))
+            .unwrap();
+        let Chart::Universal(u) = Chart::compute(&scene).unwrap() else {
+            panic!("a universal chart")
+        };
+        let doc: serde_json::Value = serde_json::from_slice(&u.data(&scene).bytes).unwrap();
+        (scene.params, doc)
+    };
+    let shaft = [
+        ("mu", 0.27),
+        ("radius_mm", 12.0),
+        ("force_n", 150.0),
+        ("mass_kg", 1.0),
+    ];
+    let (p, doc) = read(&shaft);
+    let ratio = p.force_n / p.weight_n();
+    // Each 1-degree line's mu at the shaft's F / (m g).
+    let crossings: Vec<(f64, f64)> = doc["iso_lines"]["lines"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|l| {
+            let t = l["theta_jam_deg"].as_f64().unwrap();
+            let mu = l["paths"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find_map(|path| mu_at(path.as_array().unwrap(), ratio))?;
+            Some((t, mu))
+        })
+        .collect();
+    let below = crossings
+        .iter()
+        .filter(|(_, mu)| *mu <= 0.27)
+        .max_by(|a, b| a.1.total_cmp(&b.1));
+    let above = crossings
+        .iter()
+        .filter(|(_, mu)| *mu > 0.27)
+        .min_by(|a, b| a.1.total_cmp(&b.1));
+    let (&(t0, m0), &(t1, m1)) = (below.unwrap(), above.unwrap());
+    assert_eq!(
+        (t0, t1),
+        (31.0, 32.0),
+        "the shaft lies between the 31 and 32 deg lines"
+    );
+    let theta = t0 + (t1 - t0) * (0.27 - m0) / (m1 - m0);
+    let x = p.radius_mm / (0.5 * theta.to_radians()).tan();
+    let exact = crate::statics::solve(&p);
+    let (te, xe) = (exact.theta_jam_deg.unwrap(), exact.x_jam_mm.unwrap());
+    assert!(
+        (te - 31.2).abs() < 0.05 && (xe - 43.0).abs() < 0.05,
+        "{te} deg, {xe} mm"
+    );
+    assert!(
+        (theta - te).abs() < 0.1,
+        "read {theta} deg, closed form {te} deg"
+    );
+    assert!(
+        ((x - xe) / xe).abs() < 0.01,
+        "read {x} mm, closed form {xe} mm"
+    );
+    // Another part with the same mu and F / (m g): twice the mass and push, another radius.
+    let other = [
+        ("mu", 0.27),
+        ("radius_mm", 30.0),
+        ("force_n", 300.0),
+        ("mass_kg", 2.0),
+    ];
+    let (_, doc2) = read(&other);
+    assert_eq!(doc["iso_lines"], doc2["iso_lines"]);
+    assert_eq!(
+        doc2["read_off"]["push_ratio"],
+        doc["read_off"]["push_ratio"]
+    );
 }

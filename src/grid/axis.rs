@@ -30,6 +30,21 @@ const THETA: Decl = Decl {
     ..Decl::BASE
 };
 
+/// The push over the disc's weight, F / (m g): not a field of the scene but the one number
+/// through which the push and the weight enter the closed form (`m g sin(alpha_g) / F`), so
+/// an axis of it makes a chart that holds for any part. Setting it sets `force_n` from the
+/// cell's mass and gravity.
+const PUSH_RATIO: Decl = Decl {
+    key: "push_ratio",
+    section: "scene",
+    symbol: "F/(m g)",
+    quantity: "push over weight",
+    unit: "-",
+    doc: "The palm push over the disc's weight, F / (m g): sets force_n = push_ratio m g.",
+    check: Check::Above(0.0),
+    ..Decl::BASE
+};
+
 /// The parameters code names; any other declared one is reached by [`GridParam::named`].
 #[allow(non_upper_case_globals)]
 impl GridParam {
@@ -55,6 +70,8 @@ impl GridParam {
     };
     /// The palm angle theta in deg (margin maps only).
     pub const ThetaDeg: GridParam = GridParam { key: "theta_deg" };
+    /// The push over the weight, F / (m g); sets force_n.
+    pub const PushRatio: GridParam = GridParam { key: "push_ratio" };
 }
 
 impl GridParam {
@@ -68,7 +85,7 @@ impl GridParam {
         settings::palm_family()
             .filter(|d| d.section == "scene")
             .filter(|d| matches!(d.kind, Kind::Real) || !d.sets.is_empty())
-            .chain([&THETA])
+            .chain([&THETA, &PUSH_RATIO])
             .map(|d| GridParam { key: d.key })
     }
 
@@ -76,6 +93,9 @@ impl GridParam {
     pub(crate) fn decl(self) -> &'static Decl {
         if self.key == THETA.key {
             return &THETA;
+        }
+        if self.key == PUSH_RATIO.key {
+            return &PUSH_RATIO;
         }
         settings::find(self.key).expect("a GridParam names a declared setting")
     }
@@ -85,16 +105,24 @@ impl GridParam {
         self.key
     }
 
-    /// The value of this parameter in `p` (an alias reads its first key); None for
-    /// [`GridParam::ThetaDeg`].
+    /// The value of this parameter in `p` (an alias reads its first key; `push_ratio` is
+    /// F / (m g), None for a weightless disc); None for [`GridParam::ThetaDeg`].
     pub fn get(self, p: &SceneParams) -> Option<f64> {
+        if self == GridParam::PushRatio {
+            let w = p.weight_n();
+            return (w > 0.0).then(|| p.force_n / w);
+        }
         let d = self.decl();
         p.real(d.sets.first().copied().unwrap_or(d.key))
     }
 
-    /// `p` with this parameter set to `v` (an alias sets each of its keys);
-    /// [`GridParam::ThetaDeg`] leaves `p` unchanged.
+    /// `p` with this parameter set to `v` (an alias sets each of its keys; `push_ratio` sets
+    /// force_n = v m g); [`GridParam::ThetaDeg`] leaves `p` unchanged.
     pub fn apply(self, mut p: SceneParams, v: f64) -> SceneParams {
+        if self == GridParam::PushRatio {
+            p.force_n = v * p.weight_n();
+            return p;
+        }
         let d = self.decl();
         if d.sets.is_empty() {
             p.set_real(d.key, v);
@@ -139,6 +167,23 @@ impl ParamSet for SceneParams {
 
     fn param_name(param: GridParam) -> &'static str {
         param.as_str()
+    }
+
+    /// `push_ratio` sets the push from the cell's weight, so it cannot share a grid with the
+    /// push, the mass or gravity: the order of the axes would decide the cell.
+    fn check_axes(x: GridParam, y: GridParam) -> Result<()> {
+        let derived = [GridParam::ForceN, GridParam::MassKg, GridParam::GravityMS2];
+        for (a, b) in [(x, y), (y, x)] {
+            if a == GridParam::PushRatio && derived.contains(&b) {
+                return Err(Error::invalid(
+                    "x_axis/y_axis",
+                    format!("push_ratio with {}", b.as_str()),
+                    "push_ratio sets force_n from the mass and gravity; vary it against \
+                     another parameter",
+                ));
+            }
+        }
+        Ok(())
     }
 }
 

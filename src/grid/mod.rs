@@ -38,6 +38,11 @@ pub trait ParamSet: Copy + Send + Sync {
     fn validate(&self) -> Result<()>;
     /// The snake_case name of `param`, for messages and data files.
     fn param_name(param: Self::Param) -> &'static str;
+    /// Checks that two axes can vary `x` and `y` together (they differ already), e.g. that
+    /// neither is derived from the other; Ok by default.
+    fn check_axes(_x: Self::Param, _y: Self::Param) -> Result<()> {
+        Ok(())
+    }
 }
 
 /// At most this many cells in one grid: 2^26, 512 MiB per quantity, far beyond any chart's
@@ -82,6 +87,7 @@ impl<S: ParamSet> Grid<S> {
                     "the two axes must vary different parameters",
                 ));
             }
+            S::check_axes(self.x.param, y.param)?;
         }
         if cells > MAX_CELLS {
             return Err(Error::invalid(
