@@ -135,6 +135,13 @@ pub struct JamMap {
     /// The jam region (margin >= 0) as rings in plot space (ln for log axes), traced once here
     /// so that drawing, once per format, only fills them.
     jam_rings: Vec<Vec<(f64, f64)>>,
+    /// Per cell, with the regions: the palm cannot reach the disc there (its contact would lie
+    /// past the palm's end), whatever the margin.
+    beyond: Vec<bool>,
+    /// The region beyond the palm's reach as rings in plot space.
+    beyond_rings: Vec<Vec<(f64, f64)>>,
+    /// The region's cell status as written in the CSV: jam, slide or beyond_reach.
+    region: Vec<&'static str>,
     /// The closed-form jam point at each x sample, (value, point).
     boundary: Vec<(f64, JamPoint)>,
     /// The read-off at the scene's own x value.
@@ -155,6 +162,24 @@ impl JamMap {
             .as_ref()
             .map(|g| jam_rings(g, spec))
             .unwrap_or_default();
+        let beyond = grid
+            .as_ref()
+            .map(|g| beyond_reach(g, &p, spec.x_axis.param))
+            .unwrap_or_default();
+        let beyond_rings = grid
+            .as_ref()
+            .map(|g| mask_rings(g, &beyond, spec))
+            .unwrap_or_default();
+        let margins = grid.as_ref().and_then(|g| g.margin_n.as_deref());
+        let region = beyond
+            .iter()
+            .zip(margins.unwrap_or_default())
+            .map(|(b, m)| match (b, *m >= 0.0) {
+                (true, _) => "beyond_reach",
+                (false, true) => "jam",
+                (false, false) => "slide",
+            })
+            .collect();
         let param = spec.x_axis.param;
         let boundary = match spec.has(JamMapLayer::Boundary) {
             true => {
@@ -174,6 +199,9 @@ impl JamMap {
             title: scene.title.clone(),
             grid,
             jam_rings,
+            beyond,
+            beyond_rings,
+            region,
             boundary,
             read_off,
         })
@@ -209,7 +237,13 @@ impl JamMap {
     /// The grid and its quantity columns, named as in JSON.
     fn columns(&self) -> Option<(&GridResult, Vec<(&'static str, Column<'_>)>)> {
         let g = self.grid.as_ref()?;
-        Some((g, vec![("margin_n", Column::Dense(g.margin_n.as_ref()?))]))
+        Some((
+            g,
+            vec![
+                ("region", Column::Text(&self.region)),
+                ("margin_n", Column::Dense(g.margin_n.as_ref()?)),
+            ],
+        ))
     }
 
     fn axes(&self) -> (PlotAxis, PlotAxis) {
@@ -231,6 +265,13 @@ impl JamMap {
                 Swatch::Patch(SLIDE_FILL),
                 "slide: the palm moves the disc",
             ));
+            if self.beyond.contains(&true) {
+                let s = format!(
+                    "beyond the palm's end (L = {} mm): the palm cannot reach the disc there",
+                    self.params.palm_length_mm
+                );
+                e.push(LegendEntry::new(Swatch::Patch(BEYOND_FILL), s));
+            }
         }
         if self.spec.has(JamMapLayer::Boundary) {
             e.push(LegendEntry::new(
@@ -238,7 +279,7 @@ impl JamMap {
                 "boundary θ_jam (closed form)",
             ));
         }
-        if let Some((v, _)) = self.read_off {
+        if let Some((v, _)) = self.read_off.filter(|_| self.read_off_drawn()) {
             let s = format!(
                 "read-off lines 1-2-3 at {} = {}",
                 param_symbol(self.spec.x_axis.param),
@@ -247,6 +288,18 @@ impl JamMap {
             e.push(LegendEntry::new(Swatch::Line(LineKind::Dashed), s));
         }
         e
+    }
+
+    /// Whether the read-off lines are drawn: the scene's value lies on the x axis and its jam
+    /// on the theta axis (a legend never names a line that is not drawn).
+    fn read_off_drawn(&self) -> bool {
+        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
+        self.read_off.is_some_and(|(v, p)| {
+            (xa.min..=xa.max).contains(&v)
+                && p.x_jam_mm.is_some()
+                && p.theta_jam_deg
+                    .is_some_and(|t| (ya.min..=ya.max).contains(&t))
+        })
     }
 
     /// Draws the map on `root`.
@@ -269,6 +322,9 @@ impl JamMap {
         let area = chart.plotting_area();
         for ring in &self.jam_rings {
             area.draw(&Polygon::new(ring.clone(), JAM_FILL.filled()))?;
+        }
+        for ring in &self.beyond_rings {
+            area.draw(&Polygon::new(ring.clone(), BEYOND_FILL.filled()))?;
         }
         axes::draw_grid(&chart, &x, &y)?;
         let curve: Vec<(f64, f64)> = self
@@ -306,8 +362,30 @@ impl JamMap {
             (u as i32, v as i32)
         };
         let pos = Pos::new(HPos::Center, VPos::Center);
-        axes::boxed_text(root, "SLIDE", at(0.2, 0.12), pos, style::LABEL_PX)?;
-        axes::boxed_text(root, "JAM", at(0.8, 0.88), pos, style::LABEL_PX)
+        for (label, region, fx, fy) in [("SLIDE", "slide", 0.2, 0.12), ("JAM", "jam", 0.8, 0.88)] {
+            if let Some(fy) = self.label_height(region, fx, fy) {
+                axes::boxed_text(root, label, at(fx, fy), pos, style::LABEL_PX)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// Where a region's label goes in the column at `fx` (fractions of the plot, `fy` from the
+    /// top): at `fy` if that cell lies in the region, else in the middle of the region's cells
+    /// of that column (the palm's reach may cover the default place); None if the column has
+    /// none.
+    fn label_height(&self, region: &str, fx: f64, fy: f64) -> Option<f64> {
+        let g = self.grid.as_ref()?;
+        let (nx, ny) = (g.nx(), g.ny());
+        let ix = (fx * (nx - 1) as f64).round() as usize;
+        let row = |fy: f64| ((1.0 - fy) * (ny - 1) as f64).round() as usize;
+        let is = |iy: usize| self.region.get(g.index(ix, iy)) == Some(&region);
+        if is(row(fy)) {
+            return Some(fy);
+        }
+        let rows: Vec<usize> = (0..ny).filter(|iy| is(*iy)).collect();
+        let mid = *rows.get(rows.len() / 2)?;
+        Some(1.0 - mid as f64 / (ny - 1) as f64)
     }
 
     fn draw_position_scale<DB: DrawingBackend>(
@@ -378,15 +456,12 @@ impl JamMap {
         x: &PlotAxis,
         y: &PlotAxis,
     ) -> DrawResult<DB> {
-        let Some((v, p)) = self.read_off else {
+        let Some((v, p)) = self.read_off.filter(|_| self.read_off_drawn()) else {
             return Ok(());
         };
         let (Some(t), Some(xj)) = (p.theta_jam_deg, p.x_jam_mm) else {
             return Ok(());
         };
-        if !(x.min..=x.max).contains(&v) || !(y.min..=y.max).contains(&t) {
-            return Ok(());
-        }
         let at = |a: f64, b: f64| axes::pixel(c, x, y, a, b);
         let (corner, bottom, left, right) = (at(v, t), at(v, y.min), at(x.min, t), at(x.max, t));
         for line in [[bottom, corner], [corner, left], [corner, right]] {
@@ -424,6 +499,38 @@ impl JamMap {
             big,
         )
     }
+}
+
+/// Shading of the cells beyond the palm's reach: grey, apart from both jam and slide.
+const BEYOND_FILL: RGBColor = RGBColor(200, 200, 200);
+
+/// Per cell of `g` (x: `param`, y: the palm angle in deg): whether the palm's contact there
+/// would lie past its end, theta below the reach angle of the column's scene.
+fn beyond_reach(g: &GridResult, base: &SceneParams, param: GridParam) -> Vec<bool> {
+    let reach_deg: Vec<f64> = g
+        .x_values
+        .iter()
+        .map(|v| param.apply(*base, *v).reach_angle().to_degrees())
+        .collect();
+    g.y_values
+        .iter()
+        .flat_map(|t| reach_deg.iter().map(move |r| t < r))
+        .collect()
+}
+
+/// The rings of the cells where `mask` holds, in plot space (none when no cell does).
+fn mask_rings(g: &GridResult, mask: &[bool], spec: &JamMapSpec) -> Vec<Vec<(f64, f64)>> {
+    if !mask.contains(&true) {
+        return Vec::new();
+    }
+    let values: Vec<f64> = mask.iter().map(|b| *b as u8 as f64).collect();
+    let builder = ContourBuilder::new(g.nx(), g.ny(), true);
+    // A single threshold on a finite grid cannot fail; no polygon is drawn if it ever did.
+    let rings = builder.contours(&values, &[0.5]).unwrap_or_default();
+    rings
+        .iter()
+        .flat_map(|c| grid_polygons(c.geometry(), &spec.x_axis, &spec.y_axis))
+        .collect()
 }
 
 /// The rings of the region where the margin grid `g` is >= 0, in plot space.

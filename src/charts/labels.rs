@@ -59,9 +59,13 @@ pub fn scene_subtitle_with(source: &str, p: &SceneParams, swept: &[GridParam]) -
             .chain(offset)
             .filter_map(|k| k.get(p).map(|v| (k, param_value(k, v)))),
     );
+    // The palm's length: where its reach ends curves and shades maps.
+    let palm = (!swept.contains(&GridParam::PalmLengthMm))
+        .then(|| format!("palm L = {} mm", p.palm_length_mm));
     let kept: Vec<String> = parts
         .filter(|(k, _)| !swept.contains(k))
         .map(|(_, s)| s)
+        .chain(palm)
         .collect();
     format!("{source}: {}", kept.join(", "))
 }

@@ -500,3 +500,40 @@ fn the_universal_chart_reads_back_the_closed_form_for_any_part() {
         doc["read_off"]["push_ratio"]
     );
 }
+
+/// Regression (issue 18): a jam map shaded the cells the palm cannot reach as JAM. On a 40 mm
+/// palm (r = 10 mm) every palm angle below 2 atan(r / L) = 28.07 deg puts the contact past the
+/// palm's end: those cells are `beyond_reach` in the CSV, the others jam or slide by the
+/// margin's sign.
+#[test]
+fn jam_map_cells_beyond_the_palms_reach_are_their_own_class() {
+    let set: Vec<overrides::Setting> = [
+        "palm_length_mm=40",
+        "chart.x_axis.count=21",
+        "chart.y_axis.count=31",
+    ]
+    .iter()
+    .map(|s| s.parse().unwrap())
+    .collect();
+    let scene = SceneSource::BuiltIn("fig3".into()).load(&set).unwrap();
+    let chart = Chart::compute(&scene).unwrap();
+    let csv = String::from_utf8(chart.cells().unwrap().bytes).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(lines.next(), Some("mu,theta_deg,region,margin_n"));
+    let reach = 2.0 * (10.0_f64 / 40.0).atan().to_degrees();
+    let mut seen = std::collections::BTreeSet::new();
+    for row in lines {
+        let f: Vec<&str> = row.split(',').collect();
+        let (theta, margin): (f64, f64) = (f[1].parse().unwrap(), f[3].parse().unwrap());
+        let want = if theta < reach {
+            "beyond_reach"
+        } else if margin >= 0.0 {
+            "jam"
+        } else {
+            "slide"
+        };
+        assert_eq!(f[2], want, "{row}");
+        seen.insert(f[2].to_string());
+    }
+    assert_eq!(seen.len(), 3, "all three classes on this map: {seen:?}");
+}

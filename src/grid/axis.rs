@@ -64,6 +64,10 @@ impl GridParam {
     pub const GravityMS2: GridParam = GridParam {
         key: "gravity_m_s2",
     };
+    /// Length of the palm in mm.
+    pub const PalmLengthMm: GridParam = GridParam {
+        key: "palm_length_mm",
+    };
     /// Offset h of the palm's face from the hinge line in mm.
     pub const PalmOffsetMm: GridParam = GridParam {
         key: "palm_offset_mm",
