@@ -5,6 +5,7 @@ mod accuracy;
 mod args;
 mod dynamics;
 mod guidance;
+mod manifest;
 mod min_norm;
 mod numbers;
 pub mod render;
@@ -54,7 +55,8 @@ pub enum Command {
     /// and the data behind the chart (NAME.csv; maps also NAME.json), each atomically (temporary
     /// file, then rename), and DIR/index.html, a gallery of the charts of this run with their
     /// parameters and links. The pictures are byte-identical for any thread count: the font is embedded and
-    /// the PNG carries no metadata.
+    /// the PNG carries no metadata. --bless writes DIR/SHA256SUMS of the pictures; --check
+    /// re-renders and exits 1 naming each picture whose bytes differ from it.
     Render(render::RenderArgs),
     /// Draw x_jam and theta_jam against one or two parameters, without a scene file.
     ///
@@ -97,30 +99,58 @@ pub enum Command {
     Vlocator(vlocator::VlocatorArgs),
 }
 
-/// Runs the command line and returns the process exit code: 0 success, 2 bad input or failure.
+/// What a command ends with: its text for stdout, and whether what it checks was found broken.
+pub enum Done {
+    /// The work is done (exit 0).
+    Ok(String),
+    /// The work is done and what it checks did not hold (`render --check`: charts changed),
+    /// exit 1; `summary` goes to stderr as the one-line `jamchart: ...` message.
+    Failed {
+        /// The full report, for stdout.
+        text: String,
+        /// One line naming what failed.
+        summary: String,
+    },
+}
+
+impl From<String> for Done {
+    fn from(text: String) -> Self {
+        Done::Ok(text)
+    }
+}
+
+/// Runs the command line and returns the process exit code: 0 success, 1 a check that found
+/// changes (`render --check`), 2 bad input or failure.
 pub fn main() -> i32 {
     crate::atomic::install_signal_cleanup();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => return clap_exit(e),
     };
-    let result = match &cli.command {
-        Command::Solve(a) => solve::run(a),
-        Command::Table(a) => table::run(a),
+    let result: crate::error::Result<Done> = match &cli.command {
+        Command::Solve(a) => solve::run(a).map(Done::from),
+        Command::Table(a) => table::run(a).map(Done::from),
         Command::Render(a) => render::run(a),
-        Command::Scenes(a) => render::list(a),
-        Command::Settings => Ok(crate::settings::reference()),
-        Command::Sweep(a) => sweep::run(a),
-        Command::Accuracy(a) => accuracy::run(a),
-        Command::Stability(a) => stability::run(a),
-        Command::Vlocator(a) => vlocator::run(a),
+        Command::Scenes(a) => render::list(a).map(Done::from),
+        Command::Settings => Ok(Done::from(crate::settings::reference())),
+        Command::Sweep(a) => sweep::run(a).map(Done::from),
+        Command::Accuracy(a) => accuracy::run(a).map(Done::from),
+        Command::Stability(a) => stability::run(a).map(Done::from),
+        Command::Vlocator(a) => vlocator::run(a).map(Done::from),
     };
     match result {
-        Ok(text) => {
+        Ok(done) => {
+            let (text, code) = match &done {
+                Done::Ok(text) => (text, 0),
+                Done::Failed { text, .. } => (text, 1),
+            };
             let mut out = std::io::stdout().lock();
             // A closed pipe (`| head`) is not an error worth a message.
             let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
-            0
+            if let Done::Failed { summary, .. } = &done {
+                eprintln!("jamchart: {summary}");
+            }
+            code
         }
         Err(e) => {
             eprintln!("jamchart: {}", describe(&e));
