@@ -27,10 +27,21 @@ use crate::error::Error;
 /// angle theta_jam (deg) and disc position x_jam (mm) at which the disc jams. Lengths in mm, forces
 /// in N, mass in kg, gravity in m/s^2, angles in degrees.
 #[derive(Debug, Parser)]
-#[command(name = "jamchart", version, propagate_version = true)]
+#[command(name = "jamchart", version = version(), propagate_version = true)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
+}
+
+/// `--version`: the crate version, the git commit it was built from ("unknown" without git)
+/// and the chart format ([`crate::charts::CHART_FORMAT`]): together they decide a chart's bytes.
+fn version() -> String {
+    format!(
+        "{} (commit {}, chart format {})",
+        env!("CARGO_PKG_VERSION"),
+        env!("JAMCHART_GIT_COMMIT"),
+        crate::charts::CHART_FORMAT
+    )
 }
 
 /// The subcommands.
