@@ -5,6 +5,8 @@ mod accuracy;
 mod args;
 mod dynamics;
 mod guidance;
+#[cfg(test)]
+mod help_tests;
 mod manifest;
 mod min_norm;
 mod numbers;
@@ -98,7 +100,7 @@ pub enum Command {
     /// mu 0.01-2 and unequal or zero, radius 0.1 mm-1 m, mass 1e-6-100 kg, omega 0.1-3600
     /// deg/s, start angles near the jam, 0 and 180 deg, a push barely able to move the disc;
     /// each answer classed correct / inaccurate_flagged / failed_named / wrong_unflagged
-    /// against the case's physical reference. The chart is the scene `stability`.
+    /// against the case's physical reference. The chart is the scene `stability-matrix`.
     Stability(stability::StabilityArgs),
     /// Hold a disc in a V-block: verdict, flank forces, holding capacity, optimum angle.
     ///
