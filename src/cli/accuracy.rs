@@ -2,7 +2,6 @@
 //! error beside it, and what a 400 x 400 map costs by each model.
 
 use std::fmt::Write as _;
-use std::io::IsTerminal;
 use std::path::PathBuf;
 
 use clap::{ArgAction, Args};
@@ -11,6 +10,7 @@ use serde::Serialize;
 use super::args::{SceneArgs, TableFormat, parse_f64};
 use super::dynamics::DynamicsArgs;
 use super::numbers::{angle_deg, length_mm, ratio};
+use super::progress::{self, Quiet};
 use crate::atomic::{Output, check_all, write_all};
 use crate::csv_out::{Dec, dec};
 use crate::dynamics::Method;
@@ -81,6 +81,8 @@ pub struct AccuracyArgs {
     /// accuracy.svg / accuracy.png (wall time: not byte-identical) here.
     #[arg(long, value_name = "DIR")]
     pub out_dir: Option<PathBuf>,
+    #[command(flatten)]
+    pub quiet: Quiet,
 }
 
 /// The files of `--out-dir`, in the order they are written.
@@ -163,25 +165,13 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
         .flat_map(|d| OUT_FILES.map(|f| d.join(f)))
         .collect();
     check_all(out_paths.iter().map(PathBuf::as_path))?;
-    let bar = std::io::stderr().is_terminal().then(|| {
-        let b = indicatif::ProgressBar::no_length();
-        if let Ok(style) =
-            indicatif::ProgressStyle::with_template("accuracy {bar:30} {pos}/{len} rows, {elapsed}")
-        {
-            b.set_style(style);
-        }
-        b
-    });
+    let bar = progress::bar(a.quiet, 0, "accuracy {bar:30} {pos}/{len} rows, {elapsed}");
     let t0 = std::time::Instant::now();
     let report = accuracy::run(&config, &settings, &mut |done, total| {
-        if let Some(b) = &bar {
-            b.set_length(total as u64);
-            b.set_position(done as u64);
-        }
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
     })?;
-    if let Some(b) = bar {
-        b.finish_and_clear();
-    }
+    bar.finish_and_clear();
     let map = map.map(|s| map_cost::run(&config, &s)).transpose()?;
     let elapsed = t0.elapsed().as_secs_f64();
     let md = markdown(&report, map.as_ref(), settings.runs, elapsed);

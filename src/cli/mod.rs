@@ -10,7 +10,9 @@ mod help_tests;
 mod manifest;
 mod min_norm;
 mod numbers;
+mod progress;
 pub mod render;
+mod shell;
 mod solve;
 mod stability;
 mod sweep;
@@ -110,6 +112,17 @@ pub enum Command {
     /// minimum-norm flank forces (N), the largest load P_max (N) held in that direction and
     /// the included angle that best survives errors in load and friction.
     Vlocator(vlocator::VlocatorArgs),
+    /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
+    ///
+    /// bash: `jamchart completions bash > ~/.local/share/bash-completion/completions/jamchart`;
+    /// zsh: `jamchart completions zsh > ~/.zfunc/_jamchart` with ~/.zfunc in $fpath before
+    /// compinit; fish: `jamchart completions fish > ~/.config/fish/completions/jamchart.fish`.
+    Completions(shell::CompletionsArgs),
+    /// Print the man page (roff), made from these help texts.
+    ///
+    /// `jamchart man > jamchart.1 && man ./jamchart.1`; `--out-dir DIR` writes jamchart.1 and a
+    /// page per subcommand (jamchart-render.1, ...) for a man1 folder of $MANPATH.
+    Man(shell::ManArgs),
 }
 
 /// What a command ends with: its text for stdout, and whether what it checks was found broken.
@@ -150,6 +163,8 @@ pub fn main() -> i32 {
         Command::Accuracy(a) => accuracy::run(a).map(Done::from),
         Command::Stability(a) => stability::run(a).map(Done::from),
         Command::Vlocator(a) => vlocator::run(a).map(Done::from),
+        Command::Completions(a) => shell::completions(a).map(Done::from),
+        Command::Man(a) => shell::man(a).map(Done::from),
     };
     match result {
         Ok(done) => {

@@ -1,11 +1,9 @@
 //! `jamchart render`: scenes to SVG, PNG and data files.
 
 use std::fmt::Write;
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
-use indicatif::ProgressBar;
 use rayon::prelude::*;
 
 use crate::atomic::{Output, check_all, write_all};
@@ -15,6 +13,7 @@ use crate::error::{Error, Result};
 
 use super::Done;
 use super::manifest;
+use super::progress::{self, Quiet};
 
 /// Flags of `render`.
 #[derive(Debug, Clone, Args)]
@@ -56,6 +55,8 @@ pub struct RenderArgs {
     /// report) to look at. Exit 2 for bad input (no manifest, an unknown scene).
     #[arg(long)]
     pub check: bool,
+    #[command(flatten)]
+    pub quiet: Quiet,
 }
 
 /// Picture formats of `render`.
@@ -221,14 +222,12 @@ pub fn write_rendered(
 
 /// Renders every scene in parallel, with a progress bar for a person watching; the first
 /// failure in scene order, so the message does not depend on the thread count.
-fn render_scenes(scenes: &[Scene], formats: Formats) -> Result<Vec<Rendered>> {
-    // A bar only for a person watching: not in CI logs, not into pipes.
-    let show = std::io::stderr().is_terminal() && std::env::var_os("CI").is_none();
-    let bar = if show {
-        ProgressBar::new(scenes.len() as u64)
-    } else {
-        ProgressBar::hidden()
-    };
+fn render_scenes(scenes: &[Scene], formats: Formats, quiet: Quiet) -> Result<Vec<Rendered>> {
+    let bar = progress::bar(
+        quiet,
+        scenes.len() as u64,
+        "render {bar:30} {pos}/{len} scenes",
+    );
     let rendered: Vec<Result<Rendered>> = scenes
         .par_iter()
         .map(|s| {
@@ -256,7 +255,7 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
             }
             Err(e) => return Err(Error::io("read", manifest_path, e)),
         };
-        let rendered = render_scenes(&scenes, formats)?;
+        let rendered = render_scenes(&scenes, formats, a.quiet)?;
         return check(&manifest_path, &blessed, &rendered);
     }
     // Every output path is checked before anything is computed.
@@ -267,7 +266,7 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
         .chain(a.bless.then(|| manifest_path.clone()))
         .collect();
     check_all(planned.iter().map(PathBuf::as_path))?;
-    let rendered = render_scenes(&scenes, formats)?;
+    let rendered = render_scenes(&scenes, formats, a.quiet)?;
     let index = a.out.join("index.html");
     let entries: Vec<charts::gallery::Entry> = scenes
         .iter()
