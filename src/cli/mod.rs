@@ -68,8 +68,8 @@ pub enum Command {
     /// Each scene names its chart kind, parameters, axes and layers (`jamchart scenes` lists the
     /// built-in ones; charts/README.md documents the keys); render writes DIR/NAME.svg, NAME.png
     /// and the data behind the chart (NAME.csv; maps also NAME.json), each atomically (temporary
-    /// file, then rename), and DIR/index.html, a gallery of the charts of this run with their
-    /// parameters and links. The pictures are byte-identical for any thread count: the font is embedded and
+    /// file, then rename), and DIR/index.html, a gallery of every chart in DIR (this run's and
+    /// earlier ones') with the parameters it was drawn with and links. The pictures are byte-identical for any thread count: the font is embedded and
     /// the PNG carries no metadata. --bless writes DIR/SHA256SUMS of the pictures; --check
     /// re-renders and exits 1 naming each picture whose bytes differ from it.
     Render(render::RenderArgs),

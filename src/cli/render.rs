@@ -279,7 +279,24 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
                 .collect(),
         })
         .collect();
-    let html = charts::gallery::index_html(&entries);
+    // The page lists every chart in the folder: the previous page's sections of charts not
+    // drawn now, and the pictures of other runs.
+    let previous = match std::fs::read_to_string(&index) {
+        Ok(text) => Some(text),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
+        Err(e) => return Err(Error::io("read", index.clone(), e)),
+    };
+    let mut files: Vec<String> = std::fs::read_dir(&a.out)
+        .map(|dir| {
+            dir.filter_map(|e| Some(e.ok()?.file_name().to_str()?.to_string()))
+                .filter(|n| !n.starts_with('.'))
+                .collect()
+        })
+        .unwrap_or_default();
+    files.extend(entries.iter().flat_map(|e| e.files.iter().cloned()));
+    files.sort();
+    files.dedup();
+    let html = charts::gallery::index_html(&entries, previous.as_deref(), &files);
     let hashes = manifest::hashes(&rendered);
     let manifest_text = manifest::text(&hashes);
     let mut extra = vec![(index.clone(), html.as_bytes())];
