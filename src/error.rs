@@ -103,6 +103,16 @@ pub enum Error {
         message: String,
     },
 
+    /// `render --check` without a manifest to check against.
+    #[error(
+        "no manifest {path} to check against: write it first with the same scenes and --out, \
+         adding --bless instead of --check"
+    )]
+    NoManifest {
+        /// Where the manifest was looked for (`<out>/SHA256SUMS`).
+        path: PathBuf,
+    },
+
     /// A request the tool cannot serve (yet), e.g. a model that is not built.
     #[error("{0}")]
     Unsupported(String),

@@ -7,6 +7,9 @@
 //! ```text
 //! JAMCHART_BLESS=1 cargo test --release --test chart_hashes
 //! ```
+//!
+//! and set `jamchart::charts::CHART_FORMAT` (src/charts/mod.rs) to the new manifest's hash prefix,
+//! as `chart_format_is_the_manifest_hash_prefix` says.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -101,7 +104,22 @@ fn chart_bytes_match_the_manifest_for_any_thread_count() {
     assert!(
         problems.is_empty(),
         "chart bytes changed:\n  {}\nlook at the PNGs (jamchart render), then re-bless with \
-         JAMCHART_BLESS=1 cargo test --release --test chart_hashes",
+         JAMCHART_BLESS=1 cargo test --release --test chart_hashes and set CHART_FORMAT in \
+         src/charts/mod.rs to the new manifest's hash prefix",
         problems.join("\n  ")
+    );
+}
+
+/// `--version`'s chart format must change whenever a built-in chart's bytes do: it is the hash
+/// prefix of the manifest, so a re-bless that leaves it alone fails here.
+#[test]
+fn chart_format_is_the_manifest_hash_prefix() {
+    let manifest = std::fs::read(charts_dir().join("SHA256SUMS")).expect("manifest reads");
+    let prefix = &hex(&manifest)[..12];
+    assert_eq!(
+        charts::CHART_FORMAT,
+        prefix,
+        "charts/SHA256SUMS changed: set CHART_FORMAT in src/charts/mod.rs to \"{prefix}\" \
+         (sha256sum charts/SHA256SUMS | cut -c1-12)"
     );
 }

@@ -254,3 +254,28 @@ fn csv_cells_are_plain_decimals() {
         }
     }
 }
+
+/// A second `render` of one scene into the same folder replaced index.html with that scene
+/// alone: the gallery lists every chart in the folder, however many renders wrote it.
+#[test]
+fn second_render_into_the_folder_keeps_the_other_charts_in_the_gallery() {
+    let dir = tempfile::tempdir().unwrap();
+    for scene in ["fig7a", "fig7b"] {
+        let out = jamchart(
+            dir.path(),
+            &["render", scene, "--out", "o", "--scenes-dir", &scenes_dir()],
+        );
+        assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    }
+    let index = std::fs::read_to_string(dir.path().join("o/index.html")).unwrap();
+    for scene in ["fig7a", "fig7b"] {
+        assert!(
+            index.contains(&format!("<section id=\"{scene}\">")),
+            "{scene} missing from index.html"
+        );
+        assert!(
+            index.contains(&format!("<img src=\"{scene}.png\"")),
+            "{scene}"
+        );
+    }
+}

@@ -1,6 +1,10 @@
 //! `index.html` beside the rendered charts: each chart with its title, the parameters that made
 //! it and links to its pictures and data. Plain HTML with inline CSS, no scripts, nothing fetched:
 //! it opens from the folder in any browser.
+//!
+//! The page lists every chart in the folder, however many renders wrote it: each chart's section
+//! sits between `<!-- chart NAME -->` and `<!-- /chart -->`, and a render keeps the sections of
+//! the previous page whose pictures are still in the folder ([`index_html`]).
 
 use std::fmt::Write;
 
@@ -14,12 +18,52 @@ pub struct Entry<'a> {
     pub files: Vec<String>,
 }
 
-/// The gallery page of `entries`, in their order.
-pub fn index_html(entries: &[Entry]) -> String {
+/// Opens a chart's section: `<!-- chart NAME -->`.
+const OPEN: &str = "<!-- chart ";
+/// Closes a chart's section.
+const CLOSE: &str = "<!-- /chart -->\n";
+
+/// The gallery page: the sections of `entries` (this render), those of `previous` (the page
+/// this render replaces) for charts not rendered now whose picture is still among `files` (the
+/// file names in the folder), and a bare section for any other picture in `files`; by name.
+pub fn index_html(entries: &[Entry], previous: Option<&str>, files: &[String]) -> String {
+    let mut sections: Vec<(String, String)> = entries
+        .iter()
+        .map(|e| {
+            let mut s = String::new();
+            section(&mut s, e);
+            (e.scene.name.clone(), s)
+        })
+        .collect();
+    let has_picture = |name: &str| {
+        ["png", "svg"]
+            .iter()
+            .any(|ext| files.contains(&format!("{name}.{ext}")))
+    };
+    for (name, html) in previous.map(sections_of).unwrap_or_default() {
+        if has_picture(&name) && !sections.iter().any(|(n, _)| *n == name) {
+            sections.push((name, html));
+        }
+    }
+    let mut bare: Vec<&str> = files
+        .iter()
+        .filter_map(|f| f.strip_suffix(".png").or_else(|| f.strip_suffix(".svg")))
+        .filter(|n| !sections.iter().any(|(s, _)| s == n))
+        .collect();
+    bare.dedup();
+    for name in bare {
+        let mine: Vec<&String> = files
+            .iter()
+            .filter(|f| f.rsplit_once('.').is_some_and(|(stem, _)| stem == name))
+            .collect();
+        sections.push((name.to_string(), bare_section(name, &mine)));
+    }
+    sections.sort_by(|a, b| a.0.cmp(&b.0));
     let mut s = String::from(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
          <title>jamchart charts</title>\n<style>\n\
-         body { font-family: sans-serif; margin: 2em auto; max-width: 1100px; color: #222; }\n\
+         body { font-family: sans-serif; margin: 2em auto; max-width: 1100px; color: #222; padding: 0 0.5em; }\n\
          nav a { margin-right: 1em; }\n\
          section { border-top: 1px solid #ccc; padding: 1em 0; }\n\
          img { max-width: 100%; border: 1px solid #ddd; }\n\
@@ -30,15 +74,63 @@ pub fn index_html(entries: &[Entry]) -> String {
          <p>Lengths in mm, forces in N, mass in kg, angles in degrees. Each chart's data is \
          beside it (CSV; maps also JSON).</p>\n<nav>",
     );
-    for e in entries {
-        let n = escape(&e.scene.name);
+    for (name, _) in &sections {
+        let n = escape(name);
         let _ = write!(s, "<a href=\"#{n}\">{n}</a>");
     }
     s.push_str("</nav>\n");
-    for e in entries {
-        section(&mut s, e);
+    for (_, html) in &sections {
+        s.push_str(html);
     }
     s.push_str("</body>\n</html>\n");
+    s
+}
+
+/// The chart sections of a page written by [`index_html`]: name and HTML, markers included.
+fn sections_of(page: &str) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    let mut rest = page;
+    while let Some(i) = rest.find(OPEN) {
+        let from = &rest[i..];
+        let Some(end) = from.find(CLOSE) else { break };
+        let html = &from[..end + CLOSE.len()];
+        let name = html[OPEN.len()..]
+            .split_once(" -->")
+            .map(|(n, _)| unescape(n))
+            .unwrap_or_default();
+        if !name.is_empty() {
+            out.push((name, html.to_string()));
+        }
+        rest = &from[end + CLOSE.len()..];
+    }
+    out
+}
+
+/// A section for a picture in the folder that no render of this gallery recorded (written by
+/// `sweep`, or by an older jamchart): its name and files, no parameters.
+fn bare_section(name: &str, files: &[&String]) -> String {
+    let n = escape(name);
+    let mut s = format!("{OPEN}{n} -->\n<section id=\"{n}\">\n<h2>{n}</h2>\n");
+    let picture = ["png", "svg"]
+        .iter()
+        .find_map(|ext| files.iter().find(|f| f.ends_with(&format!(".{ext}"))));
+    if let Some(p) = picture {
+        let p = escape(p);
+        let _ = writeln!(
+            s,
+            "<a href=\"{p}\"><img src=\"{p}\" alt=\"{n}\" loading=\"lazy\"></a>"
+        );
+    }
+    let links: Vec<String> = files
+        .iter()
+        .map(|f| format!("<a href=\"{0}\">{0}</a>", escape(f)))
+        .collect();
+    let _ = write!(
+        s,
+        "<p>Files: {}</p>\n<p>Not drawn by <code>jamchart render</code> into this folder: its \
+         parameters are not recorded here.</p>\n</section>\n{CLOSE}",
+        links.join(" · ")
+    );
     s
 }
 
@@ -47,7 +139,7 @@ fn section(s: &mut String, e: &Entry) {
     let name = escape(&sc.name);
     let _ = writeln!(
         s,
-        "<section id=\"{name}\">\n<h2>{}</h2>\n<p><code>{name}</code>, chart kind <code>{}</code></p>",
+        "{OPEN}{name} -->\n<section id=\"{name}\">\n<h2>{}</h2>\n<p><code>{name}</code>, chart kind <code>{}</code></p>",
         escape(&sc.title),
         sc.chart.kind()
     );
@@ -68,22 +160,39 @@ fn section(s: &mut String, e: &Entry) {
         .map(|f| format!("<a href=\"{0}\">{0}</a>", escape(f)))
         .collect();
     let _ = writeln!(s, "<p>Files: {}</p>", links.join(" · "));
-    s.push_str("<table>\n<tr><th>parameter</th><th>value</th></tr>\n");
-    let p = &sc.params;
-    let rows = [
-        ("mu_ground", p.mu_ground),
-        ("mu_palm", p.mu_palm),
-        ("radius_mm", p.radius_mm),
-        ("mass_kg", p.mass_kg),
-        ("force_n", p.force_n),
-        ("gravity_m_s2", p.gravity_m_s2),
-        ("start_angle_deg", p.start_angle_deg),
-        ("palm_length_mm", p.palm_length_mm),
-    ];
-    for (k, v) in rows {
-        let _ = writeln!(s, "<tr><td><code>{k}</code></td><td>{v}</td></tr>");
+    // The parameters the chart was drawn with, by their TOML keys: a V-locator chart's V-block,
+    // else the palm scene's.
+    let (what, table) = match sc.chart.locator() {
+        Some(l) => ("V-block", toml::Table::try_from(l)),
+        None => ("scene", toml::Table::try_from(sc.params)),
+    };
+    let _ = writeln!(
+        s,
+        "<table>\n<tr><th>{what} parameter</th><th>value</th></tr>"
+    );
+    for (k, v) in table.unwrap_or_default() {
+        let v = match v {
+            toml::Value::String(t) => t,
+            toml::Value::Float(f) => crate::settings::number_text(f),
+            other => other.to_string(),
+        };
+        let _ = writeln!(
+            s,
+            "<tr><td><code>{}</code></td><td>{}</td></tr>",
+            escape(&k),
+            escape(&v)
+        );
     }
     s.push_str("</table>\n</section>\n");
+    s.push_str(CLOSE);
+}
+
+/// `t` with the escapes of [`escape`] undone.
+fn unescape(t: &str) -> String {
+    t.replace("&quot;", "\"")
+        .replace("&gt;", ">")
+        .replace("&lt;", "<")
+        .replace("&amp;", "&")
 }
 
 /// `t` with the HTML metacharacters escaped.
@@ -113,7 +222,7 @@ mod tests {
             scene: &scene,
             files: vec!["x.csv".into(), "x.svg".into(), "x.png".into()],
         };
-        let html = index_html(&[e]);
+        let html = index_html(&[e], None, &[]);
         assert!(html.contains("a &lt;b&gt; &amp; c"), "{html}");
         assert!(html.contains("<img src=\"x.png\""), "{html}");
         for f in ["x.csv", "x.svg", "x.png"] {
@@ -123,5 +232,69 @@ mod tests {
             html.contains("<code>force_n</code></td><td>200</td>"),
             "{html}"
         );
+    }
+
+    fn built_in(name: &str) -> Scene {
+        crate::charts::SceneSource::BuiltIn(name.into())
+            .load(&[])
+            .unwrap()
+    }
+
+    fn entry<'a>(scene: &'a Scene) -> Entry<'a> {
+        Entry {
+            scene,
+            files: ["csv", "svg", "png"]
+                .map(|ext| format!("{}.{ext}", scene.name))
+                .into(),
+        }
+    }
+
+    /// A second `render fig3` into the same folder replaced index.html with fig3 alone: the
+    /// page keeps the sections of the charts still in the folder, adds a bare one for a
+    /// picture no render recorded, and drops a chart whose pictures are gone.
+    #[test]
+    fn a_second_render_keeps_every_chart_of_the_folder_in_the_page() {
+        let (fig3, fig7a, fig7b) = (built_in("fig3"), built_in("fig7a"), built_in("fig7b"));
+        let first = index_html(&[entry(&fig7a), entry(&fig7b)], None, &[]);
+        let files: Vec<String> = ["fig3.png", "fig7a.png", "fig7a.csv", "sweep_mu.svg"]
+            .map(String::from)
+            .into();
+        let second = index_html(&[entry(&fig3)], Some(&first), &files);
+        for name in ["fig3", "fig7a", "sweep_mu"] {
+            assert!(
+                second.contains(&format!("<section id=\"{name}\">")),
+                "{name} missing:\n{second}"
+            );
+        }
+        // fig7b's pictures are no longer in the folder.
+        assert!(!second.contains("id=\"fig7b\""), "{second}");
+        // The kept section is the one the first render wrote, parameters and all.
+        let kept = &sections_of(&first)[0];
+        assert_eq!(kept.0, "fig7a");
+        assert!(second.contains(&kept.1));
+        // A third render keeps them again: the page is stable under re-rendering.
+        let third = index_html(&[entry(&fig3)], Some(&second), &files);
+        assert_eq!(third, second);
+    }
+
+    /// The V-block charts' sections listed the palm scene's parameters (mu 0.4, 1 kg, 200 N)
+    /// while the charts show a V-block: they list the V-block's own.
+    #[test]
+    fn v_block_sections_show_the_v_blocks_parameters() {
+        for name in ["vlocator-capacity", "vlocator-optimum"] {
+            let scene = built_in(name);
+            let html = index_html(&[entry(&scene)], None, &[]);
+            let want = scene.chart.locator().unwrap();
+            assert!(html.contains("V-block parameter"), "{html}");
+            assert!(
+                html.contains(&format!(
+                    "<code>mu_left</code></td><td>{}</td>",
+                    want.mu_left
+                )),
+                "{html}"
+            );
+            assert!(html.contains("<code>flank_left_deg</code>"), "{html}");
+            assert!(!html.contains("force_n"), "{html}");
+        }
     }
 }

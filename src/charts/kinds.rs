@@ -205,3 +205,15 @@ chart_kinds! {
     /// The stability matrix: case by method, coloured by class.
     Stability("stability", "json", stability::StabilitySpec => stability::Stability),
 }
+
+impl ChartSpec {
+    /// The V-block a V-locator chart is drawn for (its `locator` table); None for the charts of
+    /// the palm scene, whose parameters are the scene's.
+    pub fn locator(&self) -> Option<&crate::locator::LocatorParams> {
+        match self {
+            ChartSpec::VlocatorCapacity(s) => Some(&s.locator),
+            ChartSpec::VlocatorOptimum(s) => Some(&s.locator),
+            _ => None,
+        }
+    }
+}

@@ -86,6 +86,13 @@ pub(crate) use labels::{
 pub(crate) use spec::scene_files;
 pub use spec::{Scene, SceneSource, load_scene, scene_names};
 
+/// The chart format: the first 12 hex digits of the SHA-256 of `charts/SHA256SUMS`, the built-in
+/// charts' hashes. `jamchart --version` prints it; it changes whenever the bytes of any built-in
+/// chart do (a drawing, font, encoder or scene change), so a user whose own charts' hashes
+/// changed can tell whether jamchart's drawing did. `tests/chart_hashes.rs` fails until it is
+/// set to the manifest's hash after a re-bless (`sha256sum charts/SHA256SUMS | cut -c1-12`).
+pub const CHART_FORMAT: &str = "25cce11e5c2d";
+
 /// Which pictures to produce.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Formats {

@@ -2,7 +2,6 @@
 //! error beside it, and what a 400 x 400 map costs by each model.
 
 use std::fmt::Write as _;
-use std::io::IsTerminal;
 use std::path::PathBuf;
 
 use clap::{ArgAction, Args};
@@ -11,12 +10,14 @@ use serde::Serialize;
 use super::args::{SceneArgs, TableFormat, parse_f64};
 use super::dynamics::DynamicsArgs;
 use super::numbers::{angle_deg, length_mm, ratio};
+use super::progress::{self, Quiet};
 use crate::atomic::{Output, check_all, write_all};
 use crate::csv_out::{Dec, dec};
 use crate::dynamics::Method;
 use crate::error::{Error, Result};
 use crate::models::ModelKind;
 use crate::scene::JamStatus;
+use crate::settings::number_text;
 use crate::study::ReferenceKind;
 use crate::study::accuracy::{self, AccuracyReport, AccuracyRow, AccuracySettings};
 use crate::study::map_cost::{self, MapCostReport, MapCostSettings};
@@ -28,47 +29,51 @@ pub struct AccuracyArgs {
     pub scene: SceneArgs,
     #[command(flatten)]
     pub dynamics: DynamicsArgs,
-    /// Integrator tolerances rtol = atol, comma-separated, at most 64 [default: 1e-2,...,1e-8].
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set, value_parser = parse_f64)]
-    pub tolerances: Option<Vec<f64>>,
-    /// Integrators, comma-separated [default: radau5,dopri5].
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
-    pub methods: Option<Vec<Method>>,
-    /// Contact stiffnesses beside --stiffness, as penetration in um at --force, at most 8
-    /// [default: 10,1].
+    /// Integrator tolerances rtol = atol, comma-separated, at most 64.
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+          value_parser = parse_f64, default_value = list(&defaults().tolerances))]
+    pub tolerances: Vec<f64>,
+    /// Integrators, comma-separated.
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+          default_value = defaults().methods.iter().map(|m| m.as_str()).collect::<Vec<_>>().join(","))]
+    pub methods: Vec<Method>,
+    /// Contact stiffnesses beside --stiffness, as penetration in um at --force, at most 8.
     ///
     /// k = F / delta^e; "none" keeps only --stiffness.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
-    pub penetrations: Option<Vec<String>>,
-    /// clarabel tolerances of the min-norm rows, comma-separated, at most 64; "none" skips them
-    /// [default: 1e-2,1e-4,1e-6,1e-8,1e-10].
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+          default_value = list(&defaults().penetrations_um))]
+    pub penetrations: Vec<String>,
+    /// clarabel tolerances of the min-norm rows, comma-separated, at most 64; "none" skips them.
     ///
     /// The exact path is always a row.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
-    pub min_norm_tolerances: Option<Vec<String>>,
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+          default_value = list(&defaults().min_norm_tolerances))]
+    pub min_norm_tolerances: Vec<String>,
     /// Steps of the nonsmooth rows in deg of palm turn, comma-separated, at most 64; "none"
-    /// skips them [default: 0.3,0.1,0.03,0.01].
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set)]
-    pub nonsmooth_steps: Option<Vec<String>>,
-    /// Step of the nonsmooth method's converged answer in deg [default: 0.002].
-    #[arg(long, value_name = "DEG", value_parser = parse_f64)]
-    pub converged_step: Option<f64>,
-    /// Timed runs per row, 1 to 1000; the median is reported [default: 3].
-    #[arg(long, value_name = "N")]
-    pub runs: Option<usize>,
-    /// Tolerance of the converged answers the integration error is measured against
-    /// [default: 1e-10].
-    #[arg(long, value_name = "RTOL", alias = "reference-rtol", value_parser = parse_f64)]
-    pub converged_rtol: Option<f64>,
-    /// Step limit of every simulation [default: 500000].
-    #[arg(long, value_name = "N")]
-    pub max_steps: Option<u64>,
-    /// Cells per axis of the map whose cost is reported, 2 to 2000; 0 skips it [default: 400].
+    /// skips them.
+    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+          default_value = list(&defaults().nonsmooth_steps_deg))]
+    pub nonsmooth_steps: Vec<String>,
+    /// Step of the nonsmooth method's converged answer in deg.
+    #[arg(long, value_name = "DEG", value_parser = parse_f64,
+          default_value = number_text(defaults().converged_step_deg))]
+    pub converged_step: f64,
+    /// Timed runs per row, 1 to 1000; the median is reported.
+    #[arg(long, value_name = "N", default_value_t = defaults().runs)]
+    pub runs: usize,
+    /// Tolerance of the converged answers the integration error is measured against.
+    #[arg(long, value_name = "RTOL", alias = "reference-rtol", value_parser = parse_f64,
+          default_value = number_text(defaults().converged_rtol))]
+    pub converged_rtol: f64,
+    /// Step limit of every simulation.
+    #[arg(long, value_name = "N", default_value_t = defaults().max_steps)]
+    pub max_steps: u64,
+    /// Cells per axis of the map whose cost is reported, 2 to 2000; 0 skips it.
     ///
     /// The map is mu 0.1-0.8 by F 20-2000 N (log); the statics answer all of it, the min-norm
     /// program 40 x 40 cells and the simulation 20 x 20, and their time is extrapolated.
-    #[arg(long, value_name = "N")]
-    pub map_cells: Option<usize>,
+    #[arg(long, value_name = "N", default_value_t = MapCostSettings::default().cells_per_axis)]
+    pub map_cells: usize,
     /// Output format on stdout.
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]
     pub format: TableFormat,
@@ -76,6 +81,8 @@ pub struct AccuracyArgs {
     /// accuracy.svg / accuracy.png (wall time: not byte-identical) here.
     #[arg(long, value_name = "DIR")]
     pub out_dir: Option<PathBuf>,
+    #[command(flatten)]
+    pub quiet: Quiet,
 }
 
 /// The files of `--out-dir`, in the order they are written.
@@ -88,11 +95,19 @@ const OUT_FILES: [&str; 6] = [
     "accuracy.png",
 ];
 
+/// The settings the flags default to: their help shows these, derived, never written by hand.
+fn defaults() -> AccuracySettings {
+    AccuracySettings::default()
+}
+
+/// A list default as a flag takes it: `1e-2,1e-4`.
+fn list(values: &[f64]) -> String {
+    let text: Vec<String> = values.iter().map(|v| number_text(*v)).collect();
+    text.join(",")
+}
+
 /// Parses a list of numbers where "none" means an empty list.
-fn list_or_none(key: &str, arg: Option<&[String]>, default: Vec<f64>) -> Result<Vec<f64>> {
-    let Some(list) = arg else {
-        return Ok(default);
-    };
+fn list_or_none(key: &str, list: &[String]) -> Result<Vec<f64>> {
     if list.len() == 1 && list[0].trim() == "none" {
         return Ok(Vec::new());
     }
@@ -109,38 +124,24 @@ fn list_or_none(key: &str, arg: Option<&[String]>, default: Vec<f64>) -> Result<
         .collect()
 }
 
-pub fn run(a: &AccuracyArgs) -> Result<String> {
-    let config = a.scene.resolve(&[a.dynamics.overrides()])?;
-    let d = AccuracySettings::default();
+/// The report's settings and the map's (None: skipped) from the flags, validated.
+fn settings(a: &AccuracyArgs) -> Result<(AccuracySettings, Option<MapCostSettings>)> {
     let settings = AccuracySettings {
-        min_norm_tolerances: list_or_none(
-            "min_norm_tolerances",
-            a.min_norm_tolerances.as_deref(),
-            d.min_norm_tolerances,
-        )?,
-        methods: a.methods.clone().unwrap_or(d.methods),
-        tolerances: a.tolerances.clone().unwrap_or(d.tolerances),
-        penetrations_um: list_or_none(
-            "penetrations_um",
-            a.penetrations.as_deref(),
-            d.penetrations_um,
-        )?,
-        nonsmooth_steps_deg: list_or_none(
-            "nonsmooth_steps_deg",
-            a.nonsmooth_steps.as_deref(),
-            d.nonsmooth_steps_deg,
-        )?,
-        runs: a.runs.unwrap_or(d.runs),
-        converged_rtol: a.converged_rtol.unwrap_or(d.converged_rtol),
-        converged_step_deg: a.converged_step.unwrap_or(d.converged_step_deg),
-        max_steps: a.max_steps.unwrap_or(d.max_steps),
+        min_norm_tolerances: list_or_none("min_norm_tolerances", &a.min_norm_tolerances)?,
+        methods: a.methods.clone(),
+        tolerances: a.tolerances.clone(),
+        penetrations_um: list_or_none("penetrations_um", &a.penetrations)?,
+        nonsmooth_steps_deg: list_or_none("nonsmooth_steps_deg", &a.nonsmooth_steps)?,
+        runs: a.runs,
+        converged_rtol: a.converged_rtol,
+        converged_step_deg: a.converged_step,
+        max_steps: a.max_steps,
     };
     settings.validate()?;
     let map = match a.map_cells {
-        Some(0) => None,
-        n => {
+        0 => None,
+        cells => {
             let m = MapCostSettings::default();
-            let cells = n.unwrap_or(m.cells_per_axis);
             let s = MapCostSettings {
                 cells_per_axis: cells,
                 statics_per_axis: m.statics_per_axis.min(cells),
@@ -151,6 +152,12 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
             Some(s)
         }
     };
+    Ok((settings, map))
+}
+
+pub fn run(a: &AccuracyArgs) -> Result<String> {
+    let config = a.scene.resolve(&[a.dynamics.overrides()])?;
+    let (settings, map) = settings(a)?;
     // Every output is checked before anything runs and written all or nothing at the end.
     let out_paths: Vec<PathBuf> = a
         .out_dir
@@ -158,25 +165,13 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
         .flat_map(|d| OUT_FILES.map(|f| d.join(f)))
         .collect();
     check_all(out_paths.iter().map(PathBuf::as_path))?;
-    let bar = std::io::stderr().is_terminal().then(|| {
-        let b = indicatif::ProgressBar::no_length();
-        if let Ok(style) =
-            indicatif::ProgressStyle::with_template("accuracy {bar:30} {pos}/{len} rows, {elapsed}")
-        {
-            b.set_style(style);
-        }
-        b
-    });
+    let bar = progress::bar(a.quiet, 0, "accuracy {bar:30} {pos}/{len} rows, {elapsed}");
     let t0 = std::time::Instant::now();
     let report = accuracy::run(&config, &settings, &mut |done, total| {
-        if let Some(b) = &bar {
-            b.set_length(total as u64);
-            b.set_position(done as u64);
-        }
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
     })?;
-    if let Some(b) = bar {
-        b.finish_and_clear();
-    }
+    bar.finish_and_clear();
     let map = map.map(|s| map_cost::run(&config, &s)).transpose()?;
     let elapsed = t0.elapsed().as_secs_f64();
     let md = markdown(&report, map.as_ref(), settings.runs, elapsed);
@@ -516,4 +511,24 @@ pub(crate) fn to_csv<T: Serialize>(rows: impl Iterator<Item = T>) -> Result<Stri
         .into_inner()
         .map_err(|e| Error::Unsupported(format!("writing CSV: {e}")))?;
     Ok(String::from_utf8(bytes).expect("the csv crate writes UTF-8 from UTF-8 fields"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser;
+
+    /// The accuracy report's flags carried hand-written `[default: ..]` texts beside the
+    /// defaults in `AccuracySettings::default()`; now clap's defaults are made from it, and with
+    /// no flag the report runs exactly the default settings.
+    #[test]
+    fn accuracy_flags_default_to_the_settings_default() {
+        let cli = crate::cli::Cli::try_parse_from(["jamchart", "accuracy"]).unwrap();
+        let crate::cli::Command::Accuracy(a) = cli.command else {
+            panic!("parsed as accuracy");
+        };
+        let (settings, map) = settings(&a).unwrap();
+        assert_eq!(settings, AccuracySettings::default());
+        assert_eq!(map, Some(MapCostSettings::default()));
+    }
 }

@@ -5,9 +5,14 @@ mod accuracy;
 mod args;
 mod dynamics;
 mod guidance;
+#[cfg(test)]
+mod help_tests;
+mod manifest;
 mod min_norm;
 mod numbers;
+mod progress;
 pub mod render;
+mod shell;
 mod solve;
 mod stability;
 mod sweep;
@@ -26,10 +31,21 @@ use crate::error::Error;
 /// angle theta_jam (deg) and disc position x_jam (mm) at which the disc jams. Lengths in mm, forces
 /// in N, mass in kg, gravity in m/s^2, angles in degrees.
 #[derive(Debug, Parser)]
-#[command(name = "jamchart", version, propagate_version = true)]
+#[command(name = "jamchart", version = version(), propagate_version = true)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
+}
+
+/// `--version`: the crate version, the git commit it was built from ("unknown" without git)
+/// and the chart format ([`crate::charts::CHART_FORMAT`]): together they decide a chart's bytes.
+fn version() -> String {
+    format!(
+        "{} (commit {}, chart format {})",
+        env!("CARGO_PKG_VERSION"),
+        env!("JAMCHART_GIT_COMMIT"),
+        crate::charts::CHART_FORMAT
+    )
 }
 
 /// The subcommands.
@@ -52,9 +68,10 @@ pub enum Command {
     /// Each scene names its chart kind, parameters, axes and layers (`jamchart scenes` lists the
     /// built-in ones; charts/README.md documents the keys); render writes DIR/NAME.svg, NAME.png
     /// and the data behind the chart (NAME.csv; maps also NAME.json), each atomically (temporary
-    /// file, then rename), and DIR/index.html, a gallery of the charts of this run with their
-    /// parameters and links. The pictures are byte-identical for any thread count: the font is embedded and
-    /// the PNG carries no metadata.
+    /// file, then rename), and DIR/index.html, a gallery of every chart in DIR (this run's and
+    /// earlier ones') with the parameters it was drawn with and links. The pictures are byte-identical for any thread count: the font is embedded and
+    /// the PNG carries no metadata. --bless writes DIR/SHA256SUMS of the pictures; --check
+    /// re-renders and exits 1 naming each picture whose bytes differ from it.
     Render(render::RenderArgs),
     /// Draw x_jam and theta_jam against one or two parameters, without a scene file.
     ///
@@ -85,7 +102,7 @@ pub enum Command {
     /// mu 0.01-2 and unequal or zero, radius 0.1 mm-1 m, mass 1e-6-100 kg, omega 0.1-3600
     /// deg/s, start angles near the jam, 0 and 180 deg, a push barely able to move the disc;
     /// each answer classed correct / inaccurate_flagged / failed_named / wrong_unflagged
-    /// against the case's physical reference. The chart is the scene `stability`.
+    /// against the case's physical reference. The chart is the scene `stability-matrix`.
     Stability(stability::StabilityArgs),
     /// Hold a disc in a V-block: verdict, flank forces, holding capacity, optimum angle.
     ///
@@ -95,32 +112,73 @@ pub enum Command {
     /// minimum-norm flank forces (N), the largest load P_max (N) held in that direction and
     /// the included angle that best survives errors in load and friction.
     Vlocator(vlocator::VlocatorArgs),
+    /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
+    ///
+    /// bash: `jamchart completions bash > ~/.local/share/bash-completion/completions/jamchart`;
+    /// zsh: `jamchart completions zsh > ~/.zfunc/_jamchart` with ~/.zfunc in $fpath before
+    /// compinit; fish: `jamchart completions fish > ~/.config/fish/completions/jamchart.fish`.
+    Completions(shell::CompletionsArgs),
+    /// Print the man page (roff), made from these help texts.
+    ///
+    /// `jamchart man > jamchart.1 && man ./jamchart.1`; `--out-dir DIR` writes jamchart.1 and a
+    /// page per subcommand (jamchart-render.1, ...) for a man1 folder of $MANPATH.
+    Man(shell::ManArgs),
 }
 
-/// Runs the command line and returns the process exit code: 0 success, 2 bad input or failure.
+/// What a command ends with: its text for stdout, and whether what it checks was found broken.
+pub enum Done {
+    /// The work is done (exit 0).
+    Ok(String),
+    /// The work is done and what it checks did not hold (`render --check`: charts changed),
+    /// exit 1; `summary` goes to stderr as the one-line `jamchart: ...` message.
+    Failed {
+        /// The full report, for stdout.
+        text: String,
+        /// One line naming what failed.
+        summary: String,
+    },
+}
+
+impl From<String> for Done {
+    fn from(text: String) -> Self {
+        Done::Ok(text)
+    }
+}
+
+/// Runs the command line and returns the process exit code: 0 success, 1 a check that found
+/// changes (`render --check`), 2 bad input or failure.
 pub fn main() -> i32 {
     crate::atomic::install_signal_cleanup();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => return clap_exit(e),
     };
-    let result = match &cli.command {
-        Command::Solve(a) => solve::run(a),
-        Command::Table(a) => table::run(a),
+    let result: crate::error::Result<Done> = match &cli.command {
+        Command::Solve(a) => solve::run(a).map(Done::from),
+        Command::Table(a) => table::run(a).map(Done::from),
         Command::Render(a) => render::run(a),
-        Command::Scenes(a) => render::list(a),
-        Command::Settings => Ok(crate::settings::reference()),
-        Command::Sweep(a) => sweep::run(a),
-        Command::Accuracy(a) => accuracy::run(a),
-        Command::Stability(a) => stability::run(a),
-        Command::Vlocator(a) => vlocator::run(a),
+        Command::Scenes(a) => render::list(a).map(Done::from),
+        Command::Settings => Ok(Done::from(crate::settings::reference())),
+        Command::Sweep(a) => sweep::run(a).map(Done::from),
+        Command::Accuracy(a) => accuracy::run(a).map(Done::from),
+        Command::Stability(a) => stability::run(a).map(Done::from),
+        Command::Vlocator(a) => vlocator::run(a).map(Done::from),
+        Command::Completions(a) => shell::completions(a).map(Done::from),
+        Command::Man(a) => shell::man(a).map(Done::from),
     };
     match result {
-        Ok(text) => {
+        Ok(done) => {
+            let (text, code) = match &done {
+                Done::Ok(text) => (text, 0),
+                Done::Failed { text, .. } => (text, 1),
+            };
             let mut out = std::io::stdout().lock();
             // A closed pipe (`| head`) is not an error worth a message.
             let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
-            0
+            if let Done::Failed { summary, .. } = &done {
+                eprintln!("jamchart: {summary}");
+            }
+            code
         }
         Err(e) => {
             eprintln!("jamchart: {}", describe(&e));

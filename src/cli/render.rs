@@ -1,17 +1,19 @@
 //! `jamchart render`: scenes to SVG, PNG and data files.
 
 use std::fmt::Write;
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
-use indicatif::ProgressBar;
 use rayon::prelude::*;
 
 use crate::atomic::{Output, check_all, write_all};
 use crate::charts::overrides::Setting;
 use crate::charts::{self, Formats, Rendered, Scene, SceneSource};
 use crate::error::{Error, Result};
+
+use super::Done;
+use super::manifest;
+use super::progress::{self, Quiet};
 
 /// Flags of `render`.
 #[derive(Debug, Clone, Args)]
@@ -39,6 +41,22 @@ pub struct RenderArgs {
     /// Folder whose scene files replace the built-in scenes (names then refer to its files).
     #[arg(long, value_name = "DIR")]
     pub scenes_dir: Option<PathBuf>,
+    /// Also write DIR/SHA256SUMS, the SHA-256 of each picture, to lock them (see --check).
+    ///
+    /// In sha256sum's format (like charts/SHA256SUMS), listing this run's pictures and no
+    /// others. Commit it beside your scenes, then run the same command with --check in CI.
+    #[arg(long, conflicts_with = "check")]
+    pub bless: bool,
+    /// Re-render and compare with DIR/SHA256SUMS, writing nothing into DIR.
+    ///
+    /// Exit 0 when every picture has its blessed bytes. Exit 1 naming each picture that
+    /// changed, that is in the manifest but was not rendered, or that was rendered but is not
+    /// in the manifest; the new renders are then written to a temporary folder (named in the
+    /// report) to look at. Exit 2 for bad input (no manifest, an unknown scene).
+    #[arg(long)]
+    pub check: bool,
+    #[command(flatten)]
+    pub quiet: Quiet,
 }
 
 /// Picture formats of `render`.
@@ -202,29 +220,14 @@ pub fn write_rendered(
         .collect())
 }
 
-pub fn run(a: &RenderArgs) -> Result<String> {
-    let scenes = load_scenes(&a.scenes, a.scenes_dir.as_deref(), &a.set)?;
-    for s in &scenes {
-        let named: Vec<String> = (s.params.unit_warnings().into_iter())
-            .map(|w| format!("scene {}: {w}", s.name))
-            .collect();
-        super::warn(&named);
-    }
-    let formats = Formats::from(a.format);
-    // Every output path is checked before anything is computed.
-    let planned: Vec<PathBuf> = scenes
-        .iter()
-        .flat_map(|s| output_paths(&a.out, &s.name, &s.chart, formats))
-        .chain(std::iter::once(a.out.join("index.html")))
-        .collect();
-    check_all(planned.iter().map(PathBuf::as_path))?;
-    // A bar only for a person watching: not in CI logs, not into pipes.
-    let show = std::io::stderr().is_terminal() && std::env::var_os("CI").is_none();
-    let bar = if show {
-        ProgressBar::new(scenes.len() as u64)
-    } else {
-        ProgressBar::hidden()
-    };
+/// Renders every scene in parallel, with a progress bar for a person watching; the first
+/// failure in scene order, so the message does not depend on the thread count.
+fn render_scenes(scenes: &[Scene], formats: Formats, quiet: Quiet) -> Result<Vec<Rendered>> {
+    let bar = progress::bar(
+        quiet,
+        scenes.len() as u64,
+        "render {bar:30} {pos}/{len} scenes",
+    );
     let rendered: Vec<Result<Rendered>> = scenes
         .par_iter()
         .map(|s| {
@@ -234,8 +237,42 @@ pub fn run(a: &RenderArgs) -> Result<String> {
         })
         .collect();
     bar.finish_and_clear();
-    // The first failure in scene order, so the message does not depend on the thread count.
-    let rendered = rendered.into_iter().collect::<Result<Vec<Rendered>>>()?;
+    rendered.into_iter().collect()
+}
+
+pub fn run(a: &RenderArgs) -> Result<Done> {
+    let scenes = load_scenes(&a.scenes, a.scenes_dir.as_deref(), &a.set)?;
+    for s in &scenes {
+        let named: Vec<String> = (s.params.unit_warnings().into_iter())
+            .map(|w| format!("scene {}: {w}", s.name))
+            .collect();
+        super::warn(&named);
+    }
+    let formats = Formats::from(a.format);
+    let manifest_path = a.out.join(manifest::MANIFEST);
+    if a.check {
+        // The manifest is read before anything is computed.
+        let blessed = match std::fs::read_to_string(&manifest_path) {
+            Ok(text) => manifest::parse(&text),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                return Err(Error::NoManifest {
+                    path: manifest_path,
+                });
+            }
+            Err(e) => return Err(Error::io("read", manifest_path, e)),
+        };
+        let rendered = render_scenes(&scenes, formats, a.quiet)?;
+        return check(&manifest_path, &blessed, &rendered);
+    }
+    // Every output path is checked before anything is computed.
+    let planned: Vec<PathBuf> = scenes
+        .iter()
+        .flat_map(|s| output_paths(&a.out, &s.name, &s.chart, formats))
+        .chain(std::iter::once(a.out.join("index.html")))
+        .chain(a.bless.then(|| manifest_path.clone()))
+        .collect();
+    check_all(planned.iter().map(PathBuf::as_path))?;
+    let rendered = render_scenes(&scenes, formats, a.quiet)?;
     let index = a.out.join("index.html");
     let entries: Vec<charts::gallery::Entry> = scenes
         .iter()
@@ -248,15 +285,87 @@ pub fn run(a: &RenderArgs) -> Result<String> {
                 .collect(),
         })
         .collect();
-    let html = charts::gallery::index_html(&entries);
-    let written = write_rendered(&a.out, &rendered, &[(index.clone(), html.as_bytes())])?;
+    // The page lists every chart in the folder: the previous page's sections of charts not
+    // drawn now, and the pictures of other runs.
+    let previous = match std::fs::read_to_string(&index) {
+        Ok(text) => Some(text),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
+        Err(e) => return Err(Error::io("read", index.clone(), e)),
+    };
+    let mut files: Vec<String> = std::fs::read_dir(&a.out)
+        .map(|dir| {
+            dir.filter_map(|e| Some(e.ok()?.file_name().to_str()?.to_string()))
+                .filter(|n| !n.starts_with('.'))
+                .collect()
+        })
+        .unwrap_or_default();
+    files.extend(entries.iter().flat_map(|e| e.files.iter().cloned()));
+    files.sort();
+    files.dedup();
+    let html = charts::gallery::index_html(&entries, previous.as_deref(), &files);
+    let hashes = manifest::hashes(&rendered);
+    let manifest_text = manifest::text(&hashes);
+    let mut extra = vec![(index.clone(), html.as_bytes())];
+    if a.bless {
+        extra.push((manifest_path.clone(), manifest_text.as_bytes()));
+    }
+    let written = write_rendered(&a.out, &rendered, &extra)?;
     let mut text = String::new();
     for (scene, paths) in scenes.iter().zip(written) {
         let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
         let _ = writeln!(text, "{}: {}", scene.name, list.join(" "));
     }
     let _ = writeln!(text, "gallery: {}", index.display());
-    Ok(text)
+    if a.bless {
+        let _ = writeln!(
+            text,
+            "manifest: {} ({} pictures blessed)",
+            manifest_path.display(),
+            hashes.len()
+        );
+    }
+    Ok(Done::Ok(text))
+}
+
+/// `render --check`: the pictures rendered now against the blessed manifest.
+fn check(manifest_path: &Path, blessed: &manifest::Hashes, rendered: &[Rendered]) -> Result<Done> {
+    let now = manifest::hashes(rendered);
+    let diffs = manifest::compare(blessed, &now);
+    let shown = manifest_path.display();
+    if diffs.is_empty() {
+        return Ok(Done::Ok(format!("{} pictures match {shown}\n", now.len())));
+    }
+    let mut text = String::new();
+    for d in &diffs {
+        let _ = match d {
+            manifest::Difference::Changed { file, blessed, now } => writeln!(
+                text,
+                "{file}: changed (blessed {}, now {})",
+                &blessed[..blessed.len().min(12)],
+                &now[..now.len().min(12)]
+            ),
+            manifest::Difference::Missing { file } => {
+                writeln!(text, "{file}: missing (in the manifest, not rendered now)")
+            }
+            manifest::Difference::NotBlessed { file } => writeln!(
+                text,
+                "{file}: not in the manifest (rendered now; --bless adds it)"
+            ),
+        };
+    }
+    // The new renders, to look at beside the old ones; nothing is written into the checked folder.
+    let dir = std::env::temp_dir().join(format!("jamchart-check-{}", std::process::id()));
+    write_rendered(&dir, rendered, &[])?;
+    let _ = writeln!(text, "the new renders are in {}", dir.display());
+    let names: Vec<&str> = diffs.iter().map(manifest::Difference::file).collect();
+    Ok(Done::Failed {
+        text,
+        summary: format!(
+            "{} pictures differ from {shown}: {}",
+            diffs.len(),
+            names.join(", ")
+        ),
+    })
 }
 
 /// Flags of `scenes`.

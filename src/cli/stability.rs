@@ -41,6 +41,8 @@ pub struct StabilityArgs {
     /// `stability-matrix`: jamchart render stability-matrix).
     #[arg(long, value_name = "DIR")]
     pub out_dir: Option<PathBuf>,
+    #[command(flatten)]
+    pub quiet: super::progress::Quiet,
 }
 
 pub fn run(a: &StabilityArgs) -> Result<String> {
@@ -92,13 +94,15 @@ pub fn run(a: &StabilityArgs) -> Result<String> {
             r.method
         )));
     }
-    eprintln!(
-        "jamchart: stability matrix of {} cases x {} methods took {:.1} s on {} threads",
-        report.cases.len(),
-        report.methods.len(),
-        report.elapsed_s,
-        rayon::current_num_threads()
-    );
+    if !a.quiet.quiet {
+        eprintln!(
+            "jamchart: stability matrix of {} cases x {} methods took {:.1} s on {} threads",
+            report.cases.len(),
+            report.methods.len(),
+            report.elapsed_s,
+            rayon::current_num_threads()
+        );
+    }
     let md = markdown(&report);
     let csv = csv_rows(&report)?;
     let json = serde_json::to_string_pretty(&report).expect("plain structs serialise") + "\n";

@@ -5,7 +5,7 @@ use std::fmt::Write;
 use clap::Args;
 use serde::Serialize;
 
-use super::args::{OutputFormat, parse_f64};
+use super::args::parse_f64;
 use crate::error::{Error, Result};
 use crate::locator::{
     self, Capacity, FlankForce, LocatorParams, LocatorSolution, OPT_MAX_DEG, OPT_MIN_DEG, Optimum,
@@ -42,8 +42,18 @@ pub struct VlocatorArgs {
     #[command(flatten)]
     pub locator: Flags<LocatorSet>,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
-    pub format: OutputFormat,
+    #[arg(long, value_enum, default_value_t = VlocatorFormat::Text)]
+    pub format: VlocatorFormat,
+}
+
+/// Output of `vlocator`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum VlocatorFormat {
+    /// A short human summary with units.
+    Text,
+    /// One JSON object: {"verdict", "self_locking", "locking_needed", "friction_held",
+    /// "forces", "capacity", "optimum", "inputs"}.
+    Json,
 }
 
 impl VlocatorArgs {
@@ -116,7 +126,7 @@ pub fn run(args: &VlocatorArgs) -> Result<String> {
     let p = args.params()?;
     let s = locator::solve(&p)?;
     Ok(match args.format {
-        OutputFormat::Json => {
+        VlocatorFormat::Json => {
             let report = Report {
                 verdict: s.verdict.as_str(),
                 self_locking: s.self_locking,
@@ -131,7 +141,7 @@ pub fn run(args: &VlocatorArgs) -> Result<String> {
             text.push('\n');
             text
         }
-        OutputFormat::Text => text(&p, &s),
+        VlocatorFormat::Text => text(&p, &s),
     })
 }
 

@@ -290,7 +290,7 @@ impl Value for bool {
 }
 
 /// `1e5` for 100000, `0.4` for 0.4: a default as it is written in the docs.
-fn number_text(v: f64) -> String {
+pub(crate) fn number_text(v: f64) -> String {
     let plain = v.to_string();
     let sci = format!("{v:e}");
     if plain.len() > sci.len() + 1 {

@@ -1,0 +1,48 @@
+//! Progress on stderr for the long commands (`render`, `accuracy`) and `--quiet`, which
+//! silences it and the other notes they write there (`stability`'s timing line).
+
+use std::io::IsTerminal;
+
+use clap::Args;
+use indicatif::{ProgressBar, ProgressStyle};
+
+/// `--quiet` of a long command.
+#[derive(Debug, Clone, Copy, Default, Args)]
+pub struct Quiet {
+    /// Print no progress bar or notes on stderr (errors are still printed).
+    #[arg(long, short = 'q')]
+    pub quiet: bool,
+}
+
+/// Whether to draw a bar: only for a person watching, so not with --quiet, not into a pipe or
+/// file, not in CI logs (`CI` set).
+fn shown(quiet: bool, terminal: bool, ci: bool) -> bool {
+    !quiet && terminal && !ci
+}
+
+/// A bar of `len` steps (0: its length is set later) with `template` (indicatif's syntax), or a
+/// hidden one when nobody watches ([`shown`]).
+pub fn bar(quiet: Quiet, len: u64, template: &str) -> ProgressBar {
+    let terminal = std::io::stderr().is_terminal();
+    if !shown(quiet.quiet, terminal, std::env::var_os("CI").is_some()) {
+        return ProgressBar::hidden();
+    }
+    let b = ProgressBar::new(len);
+    if let Ok(style) = ProgressStyle::with_template(template) {
+        b.set_style(style);
+    }
+    b
+}
+
+#[cfg(test)]
+mod tests {
+    use super::shown;
+
+    #[test]
+    fn a_bar_only_for_a_person_watching_and_never_with_quiet() {
+        assert!(shown(false, true, false));
+        assert!(!shown(true, true, false));
+        assert!(!shown(false, false, false));
+        assert!(!shown(false, true, true));
+    }
+}
