@@ -2,7 +2,7 @@
 
 #[path = "common/cli.rs"]
 mod cli_util;
-use cli_util::{jamchart, repo, stderr};
+use cli_util::{jamchart, repo, stderr, stdout};
 
 fn scenes_dir() -> String {
     repo().join("charts").display().to_string()
@@ -278,4 +278,58 @@ fn second_render_into_the_folder_keeps_the_other_charts_in_the_gallery() {
             "{scene}"
         );
     }
+}
+
+/// Regression (issue 18): a wrong or invalid `[scene]` key in a scene file named no file or
+/// line (the `--config` path did), and with one bad file in a folder the error did not say
+/// which file.
+#[test]
+fn a_bad_scene_key_names_its_file_and_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let scenes = dir.path().join("scenes");
+    std::fs::create_dir(&scenes).unwrap();
+    let sweep = "[chart]\nkind = \"sweep\"\naxis = { param = \"force_n\", min = 50.0, max = 1000.0, count = 5 }\n";
+    std::fs::write(
+        scenes.join("good.toml"),
+        format!("title = \"good\"\n[scene]\nmu = 0.2\n{sweep}"),
+    )
+    .unwrap();
+    std::fs::write(
+        scenes.join("typo.toml"),
+        format!("title = \"typo\"\n[scene]\nradus_mm = 3\n{sweep}"),
+    )
+    .unwrap();
+    let o = jamchart(dir.path(), &["render", "scenes"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(err.contains("typo.toml:3:"), "{err}");
+    assert!(err.contains("radus_mm"), "{err}");
+    std::fs::write(
+        scenes.join("typo.toml"),
+        format!("title = \"typo\"\n[scene]\nradius_mm = -3\n{sweep}"),
+    )
+    .unwrap();
+    let err = stderr(&jamchart(dir.path(), &["render", "scenes"]));
+    assert!(
+        err.contains("typo.toml:3:") && err.contains("radius_mm = -3"),
+        "{err}"
+    );
+    // `[scene] mu` works as `--set mu` does.
+    std::fs::remove_file(scenes.join("typo.toml")).unwrap();
+    assert_eq!(
+        jamchart(dir.path(), &["render", "scenes"]).status.code(),
+        Some(0)
+    );
+}
+
+/// Issue 18: the key reference lived in charts/README.md, which an installed binary does not
+/// have; `jamchart scenes --keys` prints it.
+#[test]
+fn scenes_keys_prints_the_key_reference() {
+    let o = jamchart(repo(), &["scenes", "--keys"]);
+    assert_eq!(o.status.code(), Some(0));
+    let out = stdout(&o);
+    let readme = std::fs::read_to_string(repo().join("charts/README.md")).unwrap();
+    assert_eq!(out, readme);
+    assert!(out.contains("#### `kind = \"universal\"`"));
 }

@@ -8,6 +8,10 @@ use crate::config::{Config, parse_toml};
 /// The paper's parameter set, `config/paper.toml`: the base of every scene without `base`.
 pub const PAPER_TOML: &str = include_str!("../../config/paper.toml");
 
+/// The reference of every scene key, `charts/README.md`: what `jamchart scenes --keys` prints,
+/// so an installed binary has it.
+pub const SCENE_KEYS: &str = include_str!("../../charts/README.md");
+
 /// The built-in scenes: name (file stem) and the text of `charts/<name>.toml`, sorted by name;
 /// `build.rs` lists every file of charts/.
 pub const SCENES: &[(&str, &str)] = include!(concat!(env!("OUT_DIR"), "/scenes.rs"));

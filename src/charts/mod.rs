@@ -74,6 +74,7 @@ use plotters::prelude::*;
 
 use crate::error::{Error, Result};
 use axes::DrawResult;
+pub use builtin::SCENE_KEYS;
 pub use builtin::scene_names as builtin_scene_names;
 pub(crate) use contours::{grid_lines, grid_polygons};
 pub(crate) use data::DataFile;

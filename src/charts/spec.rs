@@ -237,7 +237,7 @@ fn parse_scene(
                 "--set",
                 typed.join(" "),
                 format!(
-                    "scene {name} does not take it: {}; its keys are in charts/README.md",
+                    "scene {name} does not take it: {}; its keys: jamchart scenes --keys",
                     e.message().trim()
                 ),
             )
@@ -262,7 +262,7 @@ fn parse_scene(
                 "--set",
                 set.join(" "),
                 format!(
-                    "scene {name} does not take it: {}; its keys are in charts/README.md",
+                    "scene {name} does not take it: {}; its keys: jamchart scenes --keys",
                     r.message
                 ),
             )
@@ -272,13 +272,45 @@ fn parse_scene(
         Some(b) => Config::load(&dir.join(b))?,
         None => super::builtin::paper_config(),
     };
-    let params: SceneParams = config::overlay(&base.scene, &file.scene, "scene")?;
-    params.validate()?;
-    let min_norm: MinNormSettings = config::overlay(&base.min_norm, &file.min_norm, "min_norm")?;
-    min_norm.validate()?;
-    let dynamics: DynamicsParams = config::overlay(&base.dynamics, &file.dynamics, "dynamics")?;
-    dynamics.validate()?;
-    file.size.validate()?;
+    // A refused or invalid key written in this file is named with its file, line and column
+    // (a key from --set or the base file keeps its own message).
+    let locate = |section: &str, e: Error| -> Error {
+        let key = match &e {
+            Error::Refused { key, .. } | Error::InvalidValue { key, .. } => key.clone(),
+            _ => return e,
+        };
+        // A value from --set is not in the file: its own message names it.
+        if settings
+            .iter()
+            .any(|s| s.key == key || s.key == format!("{section}.{key}"))
+        {
+            return e;
+        }
+        let dotted = if key.contains('.') {
+            key
+        } else {
+            format!("{section}.{key}")
+        };
+        match config::key_line_column(text, &dotted) {
+            Some((line, column)) => Error::Config {
+                path: path.to_path_buf(),
+                line,
+                column,
+                message: e.to_string(),
+            },
+            None => e,
+        }
+    };
+    let params: SceneParams = config::overlay(&base.scene, &file.scene, "scene")
+        .and_then(|p: SceneParams| p.validate().map(|_| p))
+        .map_err(|e| locate("scene", e))?;
+    let min_norm: MinNormSettings = config::overlay(&base.min_norm, &file.min_norm, "min_norm")
+        .and_then(|m: MinNormSettings| m.validate().map(|_| m))
+        .map_err(|e| locate("min_norm", e))?;
+    let dynamics: DynamicsParams = config::overlay(&base.dynamics, &file.dynamics, "dynamics")
+        .and_then(|d: DynamicsParams| d.validate().map(|_| d))
+        .map_err(|e| locate("dynamics", e))?;
+    file.size.validate().map_err(|e| locate("size", e))?;
     let scene = Scene {
         name,
         title: file.title,

@@ -66,7 +66,7 @@ pub enum Command {
     /// Draw the design charts (built-in scenes or your own) as SVG, PNG and data.
     ///
     /// Each scene names its chart kind, parameters, axes and layers (`jamchart scenes` lists the
-    /// built-in ones; charts/README.md documents the keys); render writes DIR/NAME.svg, NAME.png
+    /// built-in ones; `jamchart scenes --keys` documents the keys); render writes DIR/NAME.svg, NAME.png
     /// and the data behind the chart (NAME.csv; maps also NAME.json), each atomically (temporary
     /// file, then rename), and DIR/index.html, a gallery of every chart in DIR (this run's and
     /// earlier ones') with the parameters it was drawn with and links. The pictures are byte-identical for any thread count: the font is embedded and

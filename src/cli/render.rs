@@ -21,7 +21,7 @@ pub struct RenderArgs {
     /// Scenes: built-in names, scene files or folders of them (default: every built-in scene).
     ///
     /// `jamchart scenes` lists the built-in ones (fig3, fig6, ...). A path to NAME.toml adds a
-    /// scene of your own (its keys are in charts/README.md); a folder adds every *.toml in it.
+    /// scene of your own (its keys: `jamchart scenes --keys`); a folder adds every *.toml in it.
     #[arg(value_name = "SCENE")]
     pub scenes: Vec<String>,
     /// Output directory (created if missing).
@@ -374,10 +374,17 @@ pub struct ScenesArgs {
     /// Scenes to list: names, scene files or folders (default: every built-in scene).
     #[arg(value_name = "SCENE")]
     pub scenes: Vec<String>,
+    /// Print the reference of every scene key instead (charts/README.md, built in): the
+    /// top-level keys, `[scene]`, `[size]` and each chart kind's `[chart]` keys with an example.
+    #[arg(long, conflicts_with = "scenes")]
+    pub keys: bool,
 }
 
 /// One line per scene: name, chart kind, title.
 pub fn list(a: &ScenesArgs) -> Result<String> {
+    if a.keys {
+        return Ok(charts::SCENE_KEYS.to_string());
+    }
     let scenes = load_scenes(&a.scenes, None, &[])?;
     let name_w = scenes.iter().map(|s| s.name.len()).max().unwrap_or(0);
     let kind_w = scenes
