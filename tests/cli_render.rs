@@ -333,3 +333,38 @@ fn scenes_keys_prints_the_key_reference() {
     assert_eq!(out, readme);
     assert!(out.contains("#### `kind = \"universal\"`"));
 }
+
+/// Issue 18: `render --set KEY=VALUE` applies to every scene it can; a scene that cannot show
+/// the key says so on stderr (a V-block chart has its own parameters; an axis that varies the
+/// key hides it), while a chart that marks the value (read-off lines) stays quiet.
+#[test]
+fn a_scene_that_cannot_show_a_set_key_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &[
+            "render",
+            "fig7a",
+            "vlocator-optimum",
+            "universal",
+            "--set",
+            "radius_mm=12",
+            "--set",
+            "mu=0.27",
+            "--format",
+            "svg",
+        ],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.contains("scene fig7a varies radius_mm along chart.axis, so --set radius_mm=12"),
+        "{err}"
+    );
+    assert!(
+        err.contains("scene vlocator-optimum does not take --set mu=0.27"),
+        "{err}"
+    );
+    assert!(!err.contains("scene universal"), "{err}");
+    assert!(!err.contains("fig7a varies mu"), "{err}");
+}

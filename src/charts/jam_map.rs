@@ -75,6 +75,11 @@ impl super::kinds::Kind for JamMapSpec {
         vec![("x_axis", self.x_axis.param), ("y_axis", self.y_axis.param)]
     }
 
+    /// The read-off lines mark the scene's value of the x parameter.
+    fn marks_scene_value(&self) -> bool {
+        self.has(JamMapLayer::ReadOff)
+    }
+
     /// Checks the axes against the scene.
     fn validate(&self, scene: &Scene) -> Result<()> {
         let base = &scene.params;

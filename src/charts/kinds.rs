@@ -41,6 +41,18 @@ pub(crate) trait Kind: Sized + DeserializeOwned + Serialize {
         Vec::new()
     }
 
+    /// Whether the chart reads the palm scene's `[scene]` parameters (a V-locator's chart has
+    /// its own, under `[chart.locator]`). True by default.
+    fn takes_scene(&self) -> bool {
+        true
+    }
+
+    /// Whether the chart marks the scene's own value of its x axis' parameter (read-off lines),
+    /// so that setting it shows although the axis varies it. False by default.
+    fn marks_scene_value(&self) -> bool {
+        false
+    }
+
     /// Checks the settings against the scene, before anything is computed.
     fn validate(&self, scene: &Scene) -> Result<()>;
 
@@ -99,6 +111,18 @@ macro_rules! chart_kinds {
             pub(crate) fn param_axes(&self) -> Vec<(&'static str, GridParam)> {
                 match self {
                     $(ChartSpec::$variant(s) => Kind::param_axes(s),)+
+                }
+            }
+
+            pub(crate) fn takes_scene(&self) -> bool {
+                match self {
+                    $(ChartSpec::$variant(s) => Kind::takes_scene(s),)+
+                }
+            }
+
+            pub(crate) fn marks_scene_value(&self) -> bool {
+                match self {
+                    $(ChartSpec::$variant(s) => Kind::marks_scene_value(s),)+
                 }
             }
 

@@ -326,6 +326,39 @@ fn parse_scene(
 }
 
 impl Scene {
+    /// What `--set` changed that this scene does not show, one sentence per key: a `[scene]`
+    /// key of a V-locator chart (it has its own parameters) or a key the chart varies along an
+    /// axis.
+    pub fn unused_settings(&self, settings: &[Setting]) -> Vec<String> {
+        let axes = self.chart.param_axes();
+        settings
+            .iter()
+            .filter_map(|s| {
+                let param = GridParam::named(&s.key)?;
+                if !self.chart.takes_scene() {
+                    return Some(format!(
+                        "scene {} does not take --set {s}: a V-block chart has its own \
+                         parameters (--set chart.locator.KEY=VALUE)",
+                        self.name
+                    ));
+                }
+                if self.chart.marks_scene_value() {
+                    return None;
+                }
+                let (axis, _) = axes.iter().find(|(_, q)| {
+                    *q == param
+                        || q.decl().sets.contains(&param.as_str())
+                        || param.decl().sets.contains(&q.as_str())
+                })?;
+                Some(format!(
+                    "scene {} varies {} along chart.{axis}, so --set {s} does not show on it",
+                    self.name,
+                    param.as_str()
+                ))
+            })
+            .collect()
+    }
+
     /// Checks the chart's settings against the scene's parameters.
     ///
     /// An axis `mu` sets both frictions, so it is refused when the scene's frictions differ

@@ -79,6 +79,11 @@ impl super::kinds::Kind for UniversalSpec {
         vec![("x_axis", self.x_axis.param), ("y_axis", self.y_axis.param)]
     }
 
+    /// The read-off lines mark the scene's friction and F / (m g).
+    fn marks_scene_value(&self) -> bool {
+        true
+    }
+
     fn validate(&self, scene: &Scene) -> Result<()> {
         if !FRICTIONS.contains(&self.x_axis.param) {
             return Err(Error::invalid(

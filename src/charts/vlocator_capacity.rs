@@ -49,6 +49,11 @@ pub struct VlocatorCapacitySpec {
 const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
 
 impl super::kinds::Kind for VlocatorCapacitySpec {
+    /// The V-block's parameters are `[chart.locator]`'s, not the palm scene's.
+    fn takes_scene(&self) -> bool {
+        false
+    }
+
     const CELLS: bool = true;
     type Chart = VlocatorCapacity;
 

@@ -37,6 +37,11 @@ pub struct VlocatorOptimumSpec {
 }
 
 impl super::kinds::Kind for VlocatorOptimumSpec {
+    /// The V-block's parameters are `[chart.locator]`'s, not the palm scene's.
+    fn takes_scene(&self) -> bool {
+        false
+    }
+
     type Chart = VlocatorOptimum;
 
     /// Checks the axes, the frictions and the load.

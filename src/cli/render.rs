@@ -247,6 +247,7 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
             .map(|w| format!("scene {}: {w}", s.name))
             .collect();
         super::warn(&named);
+        super::warn(&s.unused_settings(&a.set));
     }
     let formats = Formats::from(a.format);
     let manifest_path = a.out.join(manifest::MANIFEST);
