@@ -127,7 +127,8 @@ pub fn draw_frame<DB: DrawingBackend>(
         (mid_x, py.end + 30),
         label.pos(pos),
     ))?;
-    draw_vertical_label(root, &y.label, px.start - 62, (py.start + py.end) / 2)
+    let span = py.len() as i32;
+    draw_vertical_label_within(root, &y.label, px.start - 62, (py.start + py.end) / 2, span)
 }
 
 /// A label rotated to read bottom-up, centred on (cx, cy).
@@ -137,10 +138,53 @@ pub fn draw_vertical_label<DB: DrawingBackend>(
     cx: i32,
     cy: i32,
 ) -> DrawResult<DB> {
-    let style = style::text(style::LABEL_PX)
-        .transform(FontTransform::Rotate270)
-        .pos(Pos::new(HPos::Center, VPos::Center));
-    root.draw(&Text::new(s.to_string(), (cx, cy), style))
+    draw_vertical_label_within(root, s, cx, cy, i32::MAX)
+}
+
+/// [`draw_vertical_label`] within `span` px of height (a short panel of a stacked chart): a
+/// label longer than that is broken into two lines at the space nearest its middle, and set
+/// smaller if a line is still too long, so that it never runs into its neighbours' labels.
+pub fn draw_vertical_label_within<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    s: &str,
+    cx: i32,
+    cy: i32,
+    span: i32,
+) -> DrawResult<DB> {
+    let set = |size: f64, text: &str, x: i32| {
+        let style = style::text(size)
+            .transform(FontTransform::Rotate270)
+            .pos(Pos::new(HPos::Center, VPos::Center));
+        root.draw(&Text::new(text.to_string(), (x, cy), style))
+    };
+    let width = |text: &str, size: f64| -> Result<i32, DrawingAreaErrorKind<DB::ErrorType>> {
+        Ok(root.estimate_text_size(text, &style::text(size))?.0 as i32)
+    };
+    if width(s, style::LABEL_PX)? <= span {
+        return set(style::LABEL_PX, s, cx);
+    }
+    let middle = s.len() / 2;
+    let cut = s
+        .char_indices()
+        .filter(|(_, c)| *c == ' ')
+        .map(|(i, _)| i)
+        .min_by_key(|i| i.abs_diff(middle));
+    let lines: Vec<&str> = match cut {
+        Some(i) => vec![&s[..i], &s[i + 1..]],
+        None => vec![s],
+    };
+    let mut widest = 0;
+    for l in &lines {
+        widest = widest.max(width(l, style::LABEL_PX)?);
+    }
+    // Smaller until the longest line fits, but never below a legible 9 px.
+    let size = (style::LABEL_PX * span as f64 / widest.max(1) as f64).clamp(9.0, style::LABEL_PX);
+    let step = (size * 1.15).round() as i32;
+    let first = cx - step * (lines.len() as i32 - 1) / 2;
+    for (k, l) in lines.iter().enumerate() {
+        set(size, l, first + step * k as i32)?;
+    }
+    Ok(())
 }
 
 /// A short label (a step number, a level) on a white box centred at `at`, tick-label size.

@@ -194,9 +194,11 @@ impl VlocatorOptimum {
 
     fn figure(&self) -> Figure {
         let dir_label = "load direction φ (deg from +x; 0 sideways, 90 lifts, −90 pushes in)";
+        // The load in N too: P = (P / W) W, with this chart's weight.
         let load_label = format!(
-            "load P / W at φ = {}° (dimensionless)",
-            self.spec.locator.load_angle_deg
+            "load P / W at φ = {}° (-; P in N = value × W = {} N)",
+            self.spec.locator.load_angle_deg,
+            super::style::fmt_num(self.spec.locator.weight_n(), 3)
         );
         let (da, la) = (&self.spec.direction_axis, &self.spec.load_axis);
         let gamma_axis = |label: &str| PlotAxis::new(0.0, 180.0, AxisScale::Linear, label);
