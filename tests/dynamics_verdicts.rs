@@ -3,7 +3,7 @@
 
 use jamchart::JamStatus;
 use jamchart::SceneParams;
-use jamchart::dynamics::{CrossCheck, DynamicsParams, DynamicsSolution, Method, simulate};
+use jamchart::dynamics::{CrossCheck, DynamicsParams, DynamicsSolution, Failure, Method, simulate};
 
 fn run(scene: &SceneParams, p: &DynamicsParams) -> DynamicsSolution {
     simulate(scene, p, None).expect("valid parameters")
@@ -191,4 +191,35 @@ fn the_series_says_where_it_stops_being_physical() {
         s.series.iter().all(|r| r.t_s <= t_jam + 1e-3),
         "ends at the lock-up"
     );
+}
+
+/// Regression (issue 20, item 8): DOPRI5 on a stiff contact (`solve --method dopri5
+/// --stiffness 7.96e8`) ground on to its step limit (1.5 s) before it advised RADAU5. Hairer's
+/// stiffness test now stops it early with a typed reason, `Failure::Stiff`, well before the
+/// step limit; the command line turns the reason into the advice "use --method radau5".
+#[test]
+fn dopri5_on_a_stiff_contact_stops_early_as_stiff() {
+    let p = DynamicsParams {
+        contact: jamchart::dynamics::ContactLaw {
+            stiffness_n_per_mm_e: 7.96e8,
+            ..Default::default()
+        },
+        integrator: jamchart::dynamics::IntegratorSettings {
+            method: Method::Dopri5,
+            ..Default::default()
+        },
+        ..Default::default()
+    };
+    let s = run(&SceneParams::default(), &p);
+    let max_steps = p.integrator.max_steps;
+    match s.failure {
+        Some(Failure::Stiff { t_s, steps }) => {
+            assert!(t_s > 0.0 && t_s.is_finite(), "{t_s}");
+            // Stopped once the pace held at the stability limit cannot reach the jam's
+            // confirmation within the budget: 16014 steps when written, of 2e6.
+            assert!(steps < max_steps / 100, "{steps} of {max_steps} steps");
+            assert!(s.steps < max_steps / 100, "{s:?}");
+        }
+        other => panic!("expected Failure::Stiff, got {other:?} ({s:?})"),
+    }
 }

@@ -280,6 +280,9 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
             "raise max_steps in the [dynamics] section of --config (now {steps}), or use \
              --method radau5, which takes far fewer steps on this stiff problem"
         ),
+        Failure::Stiff { .. } => "use --method radau5, an implicit method built for stiff \
+             problems (an explicit method's step is limited by the stiffness, not the accuracy)"
+            .to_string(),
         Failure::NoConsistentContact { .. } => {
             "this is a defect of the nonsmooth method: please report the scene; --method \
              radau5 simulates it with a compliant contact"

@@ -326,4 +326,16 @@ impl Observer for JamDetector<'_> {
             Control::Continue
         }
     }
+
+    /// With a candidate jam and the palm touching the disc: the end of its confirmation
+    /// window, or `after_jam_s` after it if later (where the run stops unless the disc
+    /// recovers).
+    fn horizon(&self) -> Option<f64> {
+        let jam = self.jam?;
+        let confirmed_by = match self.at_confirmation {
+            Some(_) => jam.t,
+            None => self.touching_since? + self.confirm_time(jam.theta),
+        };
+        Some(confirmed_by.max(jam.t + self.rule.after_jam))
+    }
 }
