@@ -223,3 +223,36 @@ fn dopri5_on_a_stiff_contact_stops_early_as_stiff() {
         other => panic!("expected Failure::Stiff, got {other:?} ({s:?})"),
     }
 }
+
+/// Regression (issue 20, item 3): the force limit sensed only the elastic part of the palm's
+/// push. `solve --model dynamics --drive force --force 3.8239538 --after-jam 0.02`: at first
+/// contact the damping part pushed 10.1 N against the 3.55 N limit N_max = F cos(atan mu_p),
+/// the disc moved 0.11 mm and the answer was `jams` at 10.113 mm where the push cannot move it
+/// (the closed form: jammed at the start). The drive now senses the whole contact force: the
+/// push stays at the limit and the answer is `jammed_at_start`.
+#[test]
+fn the_force_limit_senses_the_whole_contact_force() {
+    let scene = SceneParams {
+        force_n: 3.8239538,
+        ..Default::default()
+    };
+    let p = DynamicsParams {
+        drive: jamchart::dynamics::DriveSettings {
+            mode: jamchart::dynamics::Drive::Force,
+            ..Default::default()
+        },
+        series: jamchart::dynamics::SeriesSettings { after_jam_s: 0.02 },
+        ..Default::default()
+    };
+    let s = simulate(&scene, &p, Some(1e-3)).expect("valid parameters");
+    assert_eq!(s.status, JamStatus::JammedAtStart, "{s:?}");
+    let limit_n = scene.force_n * scene.alpha_palm().cos();
+    let most = s.series.iter().map(|r| r.normal_n).fold(0.0, f64::max);
+    assert!(most > 0.5 * limit_n, "the palm never pushed: {most} N");
+    // The band below the limit is where the drive slows; 1e-3 N: the bisection's round-off
+    // is far below it.
+    assert!(
+        most <= limit_n + 1e-3,
+        "push {most} N against a limit of {limit_n} N"
+    );
+}

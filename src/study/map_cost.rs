@@ -221,9 +221,14 @@ mod tests {
         assert!(sim.untrusted_cells <= 1, "{sim:?}");
         let e = sim.max_x_rel_error.unwrap();
         assert!(e < 0.2, "{sim:?}");
+        // The nonsmooth method at mu = 0.8, F = 20 N says jammed_at_start with the closed form
+        // (the disc moves by round-off), but its run at twice the step moves the disc
+        // 0.008 mm and says jams: since statuses are compared as they are (issue 20, item 1)
+        // that corner is flagged, the only untrusted cell.
         let ns = &report.rows[4];
         assert_eq!(ns.method, "nonsmooth");
-        assert_eq!(ns.untrusted_cells + ns.status_mismatches, 0, "{ns:?}");
+        assert_eq!(ns.status_mismatches, 0, "{ns:?}");
+        assert!(ns.untrusted_cells <= 1, "{ns:?}");
     }
 
     #[test]
