@@ -256,3 +256,31 @@ fn the_force_limit_senses_the_whole_contact_force() {
         "push {most} N against a limit of {limit_n} N"
     );
 }
+
+/// Regression (issue 20, item 2): a motion-driven palm started 0.5 deg above the wedge
+/// (`solve --model all --start-angle 44.10281897270362`). The compliant contact said the disc
+/// does not move (jammed_at_start at 24.687 mm) where the palm pushes a rigid disc on to the
+/// lock-up at 25.000 mm (-1.25 %), unflagged because the rigid cross-check was skipped when
+/// the statuses differed. It now runs and flags the answer.
+#[test]
+fn a_motion_drive_started_near_the_wedge_is_checked_against_the_rigid_contact() {
+    let scene = SceneParams {
+        start_angle_deg: 44.10281897270362,
+        ..Default::default()
+    };
+    let s = run(&scene, &DynamicsParams::default());
+    match s.cross_check {
+        Some(CrossCheck::RigidDisagrees {
+            status,
+            rigid_status,
+            x_jam_rigid_mm: Some(xr),
+            ..
+        }) => {
+            assert_eq!(status, JamStatus::JammedAtStart, "{s:?}");
+            assert_eq!(rigid_status, JamStatus::Jams, "{s:?}");
+            assert!((xr - 25.0).abs() < 1e-3, "{xr}");
+        }
+        other => panic!("expected RigidDisagrees, got {other:?} ({s:?})"),
+    }
+    assert_eq!(s.status, JamStatus::Inaccurate);
+}

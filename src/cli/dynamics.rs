@@ -263,6 +263,21 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
                  the real contact's --stiffness and --damping, or close the palm slower \
                  (--omega) so that it does not strike the disc"
             ),
+            CrossCheck::RigidDisagrees {
+                rigid_status,
+                x_jam_rigid_mm,
+                ..
+            } => match x_jam_rigid_mm {
+                Some(x) => format!(
+                    "the rigid contact's answer ({rigid_status} at {x:.3} mm, --method \
+                     nonsmooth) holds without compliance; give --stiffness of the real contact \
+                     and compare"
+                ),
+                None => format!(
+                    "the rigid contact's answer ({rigid_status}, --method nonsmooth) holds \
+                     without compliance; give --stiffness of the real contact and compare"
+                ),
+            },
             CrossCheck::ContactModelDependent { x_jam_rigid_mm, .. } => format!(
                 "the rigid contact's {x_jam_rigid_mm:.3} mm (--method nonsmooth) is the answer \
                  without compliance; give --stiffness of the real contact, and check --mass \
