@@ -219,3 +219,33 @@ fn a_model_that_cannot_run_a_scene_says_so_and_the_others_answer() {
         stdout(&o)
     );
 }
+
+/// Regression (issue 20, item 2): `solve --model all --start-angle 44.10281897270362` listed
+/// the compliant contact's 24.687 mm under "which to design to" as the motion-driven answer,
+/// unflagged, where the palm pushes a rigid disc on to 25.000 mm. The answer is now flagged by
+/// the rigid cross-check, and the block says the figure is untrusted.
+#[test]
+fn which_to_design_to_does_not_list_an_untrusted_figure_unflagged() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &[
+            "solve",
+            "--model",
+            "all",
+            "--start-angle",
+            "44.10281897270362",
+        ],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(
+        out.contains("the rigid contact says jams at 25.000 mm"),
+        "{out}"
+    );
+    let line = out
+        .lines()
+        .find(|l| l.contains("a fast push where inertia"))
+        .unwrap_or_else(|| panic!("{out}"));
+    assert!(line.contains("24.687 mm, untrusted (inaccurate"), "{line}");
+}

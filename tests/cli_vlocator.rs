@@ -102,10 +102,6 @@ fn bad_input_exits_2_naming_the_flag_and_value() {
         (&["--load-angle", "nan"], &["--load-angle", "NaN"]),
         (&["--mass", "0"], &["--mass", "0"]),
         (
-            &["--rotation", "blocked", "--load-at-rim", "30"],
-            &["--load-at-rim", "30", "rotation"],
-        ),
-        (
             &["--included-angle", "60", "--flank-angles", "30,30"],
             &["--included-angle", "--flank-angles"],
         ),

@@ -368,7 +368,22 @@ fn a_rounding_sliver_before_the_end_is_not_an_integrator_failure() {
             };
             let s = run(&scene, &p);
             assert!(s.failure.is_none(), "{method:?} {scene:?}: {:?}", s.failure);
-            assert_eq!(s.status, JamStatus::JammedAtStart, "{method:?} {scene:?}");
+            // The compliant contact reads jammed_at_start where the motion-driven rigid contact
+            // pushes the disc on to the lock-up (the 1 um disc sinks deeper into the contact
+            // than it is big; the 1e6 kg disc is too heavy for the contact's push): since
+            // issue 20 (item 2) that disagreement is flagged instead of trusted.
+            let flagged = matches!(
+                s.cross_check,
+                Some(jamchart::dynamics::CrossCheck::RigidDisagrees {
+                    status: JamStatus::JammedAtStart,
+                    ..
+                })
+            );
+            assert!(
+                s.status == JamStatus::JammedAtStart
+                    || (s.status == JamStatus::Inaccurate && flagged),
+                "{method:?} {scene:?}: {s:?}"
+            );
         }
     }
 }

@@ -263,6 +263,21 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
                  the real contact's --stiffness and --damping, or close the palm slower \
                  (--omega) so that it does not strike the disc"
             ),
+            CrossCheck::RigidDisagrees {
+                rigid_status,
+                x_jam_rigid_mm,
+                ..
+            } => match x_jam_rigid_mm {
+                Some(x) => format!(
+                    "the rigid contact's answer ({rigid_status} at {x:.3} mm, --method \
+                     nonsmooth) holds without compliance; give --stiffness of the real contact \
+                     and compare"
+                ),
+                None => format!(
+                    "the rigid contact's answer ({rigid_status}, --method nonsmooth) holds \
+                     without compliance; give --stiffness of the real contact and compare"
+                ),
+            },
             CrossCheck::ContactModelDependent { x_jam_rigid_mm, .. } => format!(
                 "the rigid contact's {x_jam_rigid_mm:.3} mm (--method nonsmooth) is the answer \
                  without compliance; give --stiffness of the real contact, and check --mass \
@@ -280,6 +295,9 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
             "raise max_steps in the [dynamics] section of --config (now {steps}), or use \
              --method radau5, which takes far fewer steps on this stiff problem"
         ),
+        Failure::Stiff { .. } => "use --method radau5, an implicit method built for stiff \
+             problems (an explicit method's step is limited by the stiffness, not the accuracy)"
+            .to_string(),
         Failure::NoConsistentContact { .. } => {
             "this is a defect of the nonsmooth method: please report the scene; --method \
              radau5 simulates it with a compliant contact"

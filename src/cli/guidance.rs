@@ -50,11 +50,17 @@ pub fn guidance<'a>(
         Drive::Motion => "motion drive: it tends to the driven-palm limit",
         Drive::Force => "force drive: it tends to the statics at F",
     };
-    if let Some(x) = x_of(ModelKind::Dynamics) {
+    let dynamics = results.clone().find(|r| r.model == ModelKind::Dynamics);
+    if let Some((x, status)) = dynamics.and_then(|r| r.x_jam_mm.map(|x| (x, r.status))) {
+        // An answer its model does not stand behind is not a figure to design to.
+        let trust = match status {
+            JamStatus::Jams | JamStatus::JammedAtStart => String::new(),
+            other => format!(", untrusted ({other}: see its reason above)"),
+        };
         let _ = writeln!(
             s,
             "  a fast push where inertia and contact stiffness matter: dynamics ({drive}), \
-             x_jam = {x:.3} mm"
+             x_jam = {x:.3} mm{trust}"
         );
     }
     let answered: Vec<(ModelKind, f64)> = results

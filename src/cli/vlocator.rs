@@ -249,16 +249,27 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
     } else {
         "unbounded (no error in load or friction drops or locks the part)".to_string()
     };
-    let _ = writeln!(
-        out,
-        "optimum included angle (balanced: survives load x rho with friction / rho, and friction \
-         x rho): {:.2} deg{bound}, safety factor rho* = {rho}",
-        o.included_angle_deg
-    );
-    if o.safety_factor <= 1.0 {
+    if o.no_v_holds {
         let _ = writeln!(
             out,
-            "  rho* <= 1: no V that does not lock can hold this load at this friction"
+            "optimum included angle: none: no V that does not self-lock holds this load at this \
+             friction (the least bad, {:.2} deg, self-locks at it and survives only rho* = {rho})",
+            o.included_angle_deg
+        );
+    } else {
+        let _ = writeln!(
+            out,
+            "optimum included angle (balanced: survives load x rho with friction / rho, and \
+             friction x rho): {:.2} deg{bound}, safety factor rho* = {rho}",
+            o.included_angle_deg
+        );
+    }
+    if let Some(widest) = o.plateau_to_deg.filter(|_| !o.no_v_holds) {
+        let _ = writeln!(
+            out,
+            "  not unique: every V from {:.2} to {widest:.2} deg survives the same rho* (the \
+             holding does not depend on the angle for this load)",
+            o.included_angle_deg
         );
     }
     if o.at_bound && p.load_n == 0.0 {

@@ -109,8 +109,9 @@ pub struct JamDetector<'a> {
     pub discarded: u32,
     /// The palm lost the disc (no penetration at a step end) after it first pushed it to speed.
     pub separated: bool,
-    /// Largest elastic palm push (N) from the candidate jam to its confirmation; it stops
-    /// updating once the jam is confirmed (the run-on after it does not count).
+    /// Largest palm push (N, the whole contact force, which the force drive's limit senses)
+    /// from the candidate jam to its confirmation; it stops updating once the jam is confirmed
+    /// (the run-on after it does not count).
     pub push_after_jam: f64,
     /// Palm angle (rad) and elastic push (N) when the jam was confirmed.
     pub at_confirmation: Option<(f64, f64)>,
@@ -289,7 +290,8 @@ impl Observer for JamDetector<'_> {
             }
         }
         let jam = self.jam.expect("set above");
-        let penetration = sys.evaluate(&y, None).penetration;
+        let forces = sys.evaluate(&y, None);
+        let penetration = forces.penetration;
         let (elastic_push, _) = sys.impact.elastic(penetration);
         if !self.confirmed {
             if self.ratio_margin(&y, rule.arm_ratio) >= 0.0 {
@@ -299,7 +301,8 @@ impl Observer for JamDetector<'_> {
                 self.discarded += 1;
                 return Control::Continue;
             }
-            self.push_after_jam = self.push_after_jam.max(elastic_push);
+            // The whole contact force, which the force drive's limit senses.
+            self.push_after_jam = self.push_after_jam.max(forces.normal);
         }
         if self.stiction.is_none() && y[2] < rule.v_stiction {
             let a = t0.max(jam.t);
@@ -325,5 +328,17 @@ impl Observer for JamDetector<'_> {
         } else {
             Control::Continue
         }
+    }
+
+    /// With a candidate jam and the palm touching the disc: the end of its confirmation
+    /// window, or `after_jam_s` after it if later (where the run stops unless the disc
+    /// recovers).
+    fn horizon(&self) -> Option<f64> {
+        let jam = self.jam?;
+        let confirmed_by = match self.at_confirmation {
+            Some(_) => jam.t,
+            None => self.touching_since? + self.confirm_time(jam.theta),
+        };
+        Some(confirmed_by.max(jam.t + self.rule.after_jam))
     }
 }

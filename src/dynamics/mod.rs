@@ -355,6 +355,35 @@ fn compare_with_rigid(scene: &SceneParams, params: &DynamicsParams, out: &mut Dy
         out.status = c.status();
         return;
     }
+    // Where the two contacts answer differently (a status of their own, not a failure), the
+    // compliant answer is flagged: skipping the check there let a disc read as never moving
+    // stand against a rigid disc pushed on to the lock-up (issue 20, item 2).
+    let answers = |s: JamStatus| {
+        matches!(
+            s,
+            JamStatus::Jams
+                | JamStatus::JammedAtStart
+                | JamStatus::NeverJams
+                | JamStatus::BeyondReach
+        )
+    };
+    let leaves = |s: JamStatus| matches!(s, JamStatus::NeverJams | JamStatus::BeyondReach);
+    if answers(rigid.status)
+        && answers(out.status)
+        && rigid.status != out.status
+        && !(leaves(rigid.status) && leaves(out.status))
+    {
+        let c = CrossCheck::RigidDisagrees {
+            status: out.status,
+            x_jam_mm: out.x_jam_mm,
+            rigid_status: rigid.status,
+            x_jam_rigid_mm: rigid.x_jam_mm,
+        };
+        out.x_jam_rigid_mm = rigid.x_jam_mm;
+        out.cross_check = Some(c);
+        out.status = c.status();
+        return;
+    }
     let (Some(x), Some(xr)) = (out.x_jam_mm, rigid.x_jam_mm) else {
         return;
     };

@@ -260,7 +260,14 @@ fn run_nonsmooth(
         return out;
     }
     // Held where it started: the jam is at the start (as the regularised model's "never armed").
-    if !run.moved {
+    // A disc that moved by round-off, or (motion drive) by no more than the lock-up is located
+    // to, did not move (issue 20, item 1: `jams` at 10.0000 mm where nothing moved). A force
+    // drive's first step or two of travel is kept: it halves with the step.
+    let x_start = sys.touching_x(scene.start_angle_deg.to_radians());
+    let moved_mm = (x - x_start).abs();
+    let still = moved_mm <= 1e-12 * x_start.abs().max(1.0)
+        || (out.lock_up.is_some() && moved_mm <= run.jam_resolution_mm);
+    if !run.moved || still {
         out.status = JamStatus::JammedAtStart;
     }
     out

@@ -24,12 +24,14 @@
 //! sticking. The drive sets theta_dot:
 //!
 //! * motion: theta_dot = -omega;
-//! * force: theta_dot = -omega (1 - STEP(N_el, (1 - b) N_max, 0, N_max, 1)) with the elastic push
-//!   N_el = k delta^e and N_max = F cos(atan mu_palm). This is a massless palm on a self-locking
+//! * force: theta_dot = -omega (1 - STEP(N, (1 - b) N_max, 0, N_max, 1)) with the contact's
+//!   normal force N (IMPACT, below) and N_max = F cos(atan mu_palm). This is a massless palm on a self-locking
 //!   speed drive with a force limit: it turns at omega until the push reaches the limit, then
 //!   stalls without backing off. The limit is on the normal force, so the palm's total push
-//!   N / cos(alpha_p) saturates at F while it slides, as in the closed form. It senses the elastic
-//!   part of the force only (the damping part would make theta_dot depend on itself).
+//!   N / cos(alpha_p) saturates at F while it slides, as in the closed form. It senses the whole
+//!   contact force, damping included (issue 20, item 3: sensing the elastic part alone let the
+//!   first impact push 10 N against a 3.55 N limit); since the damping part depends on
+//!   theta_dot, theta_dot solves that equation at each evaluation (`force_drive`).
 
 use super::contact::{FrictionLaw, ImpactLaw, step};
 use super::integrators::OdeSystem;
@@ -149,15 +151,7 @@ impl System {
         let elastic = self.impact.elastic(delta);
         let (theta_dot, g_td) = match self.drive {
             Drive::Motion => (-self.omega, [0.0; 3]),
-            Drive::Force => {
-                let (el, d_el) = elastic;
-                let lim = self.normal_limit;
-                let (w, dw) = step(el, (1.0 - self.band) * lim, 0.0, lim, 1.0);
-                (
-                    -self.omega * (1.0 - w),
-                    scale(self.omega * dw * d_el, &g_delta),
-                )
-            }
+            Drive::Force => self.force_drive(elastic, delta, &g_delta, v, s, c, s_b, &g_sb),
         };
         let rate = -(v * s + s_b * theta_dot);
         // d rate = -(v c dtheta + s dv + theta_dot d s_B + s_B d theta_dot)
@@ -212,6 +206,68 @@ impl System {
             ground_friction: f_a,
             accel,
         }
+    }
+
+    /// The force drive's palm rate theta_dot and its gradient d theta_dot / d y.
+    ///
+    /// The drive senses the whole normal force N = k delta^e + c(delta) delta_dot, whose
+    /// damping part depends on theta_dot through delta_dot = -(v sin theta + s_B theta_dot):
+    /// theta_dot solves theta_dot = -omega (1 - w(N(theta_dot))). The right side falls as
+    /// theta_dot grows (a slower palm closes the contact slower), so the root in [-omega, 0] is
+    /// unique; it is found by bisection to round-off, and its gradient by the implicit
+    /// function theorem, d theta_dot (1 + omega w' c s_B) = omega w' dN|theta_dot.
+    #[allow(clippy::too_many_arguments)]
+    fn force_drive(
+        &self,
+        (el, d_el): (f64, f64),
+        delta: f64,
+        g_delta: &Grad,
+        v: f64,
+        s: f64,
+        c: f64,
+        s_b: f64,
+        g_sb: &Grad,
+    ) -> (f64, Grad) {
+        let lim = self.normal_limit;
+        let (damp, d_damp) = if delta > 0.0 {
+            step(delta, 0.0, 0.0, self.impact.depth, self.impact.damping)
+        } else {
+            (0.0, 0.0)
+        };
+        let normal = |td: f64| el + damp * -(v * s + s_b * td);
+        let limit = |n: f64| step(n.max(0.0), (1.0 - self.band) * lim, 0.0, lim, 1.0);
+        let residual = |td: f64| td + self.omega * (1.0 - limit(normal(td)).0);
+        let (mut lo, mut hi) = (-self.omega, 0.0);
+        let mut td = if residual(lo) >= 0.0 {
+            lo
+        } else if residual(hi) <= 0.0 {
+            hi
+        } else {
+            loop {
+                let mid = 0.5 * (lo + hi);
+                if mid <= lo || mid >= hi {
+                    break mid;
+                }
+                if residual(mid) < 0.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+        };
+        let n = normal(td);
+        let (w, dw) = limit(n);
+        td = -self.omega * (1.0 - w);
+        if n <= 0.0 || dw == 0.0 {
+            return (td, [0.0; 3]);
+        }
+        // dN at fixed theta_dot: the elastic part, the damping ramp and delta_dot's own terms.
+        let rate = -(v * s + s_b * td);
+        let mut g_n = scale(d_el + d_damp * rate, g_delta);
+        let g_rate = [-(v * c + td * g_sb[0]), -td * g_sb[1], -s - td * g_sb[2]];
+        g_n = axpy(damp, &g_rate, &g_n);
+        let k = self.omega * dw;
+        (td, scale(k / (1.0 + k * damp * s_b), &g_n))
     }
 
     /// The right-hand side f(y) = (theta_dot, v, v_dot).

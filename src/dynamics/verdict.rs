@@ -70,6 +70,16 @@ pub enum CrossCheck {
     /// knocked ahead, and where it jams depends on a restitution and a contact stiffness nobody
     /// knows (the rigid, plastic contact says `x_jam_rigid_mm`).
     KnockedAhead { x_jam_mm: f64, x_jam_rigid_mm: f64 },
+    /// The rigid contact (the nonsmooth method) answers `rigid_status` (at `x_jam_rigid_mm`,
+    /// if it stops the disc) where the compliant contact says `status` (at `x_jam_mm`): e.g.
+    /// a motion-driven palm started near the wedge pushes a rigid disc on to the lock-up,
+    /// which the compliant contact reads as a disc that never moved.
+    RigidDisagrees {
+        status: JamStatus,
+        x_jam_mm: Option<f64>,
+        rigid_status: JamStatus,
+        x_jam_rigid_mm: Option<f64>,
+    },
     /// The compliant contact's jam at `x_jam_mm` lies more than `allowed_rel` from the rigid
     /// contact's `x_jam_rigid_mm`: the answer is the contact stiffness's (or the mass's), not the
     /// geometry's and friction's.
@@ -185,6 +195,21 @@ impl std::fmt::Display for CrossCheck {
                  the disc was knocked ahead, and where it jams depends on the contact's \
                  stiffness and restitution (a rigid, plastic contact jams at {x_jam_rigid_mm:.3} mm)"
             ),
+            CrossCheck::RigidDisagrees {
+                status,
+                x_jam_mm,
+                rigid_status,
+                x_jam_rigid_mm,
+            } => {
+                let at = |x: Option<f64>| x.map(|x| format!(" at {x:.3} mm")).unwrap_or_default();
+                write!(
+                    f,
+                    "the rigid contact says {rigid_status}{} where the compliant contact says \
+                     {status}{}",
+                    at(x_jam_rigid_mm),
+                    at(x_jam_mm)
+                )
+            }
             CrossCheck::ContactModelDependent {
                 x_jam_mm,
                 x_jam_rigid_mm,

@@ -27,7 +27,8 @@
 //!   T2 - T1 = M / r (M the load's moment about C): for a centre load the two frictions are
 //!   equal, T1 = T2 = T, both up or both down their flanks.
 //! - **Blocked** (the paper's translational formulation): a joint carries the moment; only Fx,
-//!   Fy, and T1, T2 are independent. A rim point changes nothing, so it is refused.
+//!   Fy, and T1, T2 are independent. The joint carries the moment of a load at a rim point,
+//!   so such a load acts as if at the centre.
 //!
 //! With b the bisector (vertex to centre) and beta = gamma/2, u1 + u2 = 2 cos(beta) b and
 //! n1 + n2 = 2 sin(beta) b. For a centre load under free rotation the support the flanks can
@@ -94,8 +95,11 @@
 //! rho in load and friction before it either drops the part (held at load rho P with friction
 //! mu / rho, the friction capped just below locking) or locks it (self-locking at friction
 //! rho mu): rho* = min(rho_hold, rho_lock), gamma* maximises it. rho_lock grows with gamma
-//! (`rho_lock`; free: tan(gamma/2) / min(mu)), rho_hold falls, so gamma* is their crossing.
-//! rho* <= 1 means no V that does not lock can hold the load. Closed form for free
+//! (`rho_lock`; free: tan(gamma/2) / min(mu)), rho_hold never grows (it falls for a load with
+//! a sideways part and is constant for a pure lift, where every V wider than the crossing
+//! survives the same rho*: the optimum then reports that plateau), so gamma* is their
+//! crossing. rho* <= 1 means no V that does not lock can hold the load: the optimum says so
+//! (`no_v_holds`) rather than offer a V that self-locks at the nominal friction. Closed form for free
 //! rotation, equal mu and a centre load (`closed_form_free_centre`): with x = tan(gamma/2),
 //! rho_hold = W / (P (|cos phi| x + sin phi)) and rho_lock = x / mu cross at
 //!

@@ -39,7 +39,19 @@ pub struct Optimum {
     /// gamma* lies at the end of the search range `OPT_MIN_DEG`, `OPT_MAX_DEG` (e.g.
     /// no load: the widest V is safest).
     pub at_bound: bool,
+    /// rho* <= 1: every V that does not self-lock drops the load at the nominal friction, so
+    /// no V works; `included_angle_deg` is then only the least bad compromise (one that
+    /// self-locks at the nominal friction), not an answer.
+    pub no_v_holds: bool,
+    /// The widest V (deg) that survives the same rho* when the optimum is not unique: rho_hold
+    /// is constant (a pure lift, where every V holds the same) and every V from gamma* up to
+    /// this angle does as well. None when gamma* is the only optimum.
+    pub plateau_to_deg: Option<f64>,
 }
+
+/// Relative tolerance within which another V's rho* counts as the optimum's: the bisections
+/// resolve rho to far below it, so a difference this small is not a better V.
+const PLATEAU_RTOL: f64 = 1e-9;
 
 /// `p` with both frictions multiplied by `k`.
 fn friction_scaled(p: &LocatorParams, k: f64) -> LocatorParams {
@@ -114,8 +126,10 @@ pub fn balanced_rho(p: &LocatorParams) -> f64 {
 /// The balanced optimum: gamma* maximising rho* over the included angle, the V turned about
 /// its bisector (tilt kept).
 ///
-/// rho_lock grows with gamma and rho_hold does not (a wider V holds less), so gamma* is where
-/// they cross, found by bisection; without a crossing it is an end of the range.
+/// rho_lock grows with gamma and rho_hold does not (a wider V holds less, or, for a pure
+/// lift, the same), so gamma* is where they cross, found by bisection; without a crossing it
+/// is an end of the range. Where rho_hold is constant every wider V survives the same rho*:
+/// `plateau_to_deg` says so.
 pub fn optimum(p: &LocatorParams) -> Optimum {
     let tilt = 0.5 * (p.flank_left_deg - p.flank_right_deg).abs();
     let hi = OPT_MAX_DEG.min(180.0 - 2.0 * tilt);
@@ -126,11 +140,18 @@ pub fn optimum(p: &LocatorParams) -> Optimum {
         let v = at(g);
         rho_hold(&v) >= rho_lock(&v)
     };
-    let done = |g: f64, at_bound| Optimum {
-        criterion: Criterion::Balanced,
-        included_angle_deg: g,
-        safety_factor: balanced_rho(&at(g)),
-        at_bound,
+    let done = |g: f64, at_bound| {
+        let rho = balanced_rho(&at(g));
+        let widest = balanced_rho(&at(hi));
+        let plateau = g < hi && rho.is_finite() && widest >= rho * (1.0 - PLATEAU_RTOL);
+        Optimum {
+            criterion: Criterion::Balanced,
+            included_angle_deg: g,
+            safety_factor: rho,
+            at_bound,
+            no_v_holds: rho <= 1.0,
+            plateau_to_deg: plateau.then_some(hi),
+        }
     };
     if wider(hi) {
         return done(hi, true);

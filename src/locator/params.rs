@@ -91,8 +91,8 @@ settings! {
         /// Apply the force at the rim point at this angle from +x about the centre (unset: at
         /// the centre).
         ///
-        /// It then adds the moment r P sin(phi - psi). Free rotation only: a blocked V's joint
-        /// carries every moment.
+        /// It then adds the moment r P sin(phi - psi). Under blocked rotation the joint carries
+        /// that moment, so the load acts as if at the centre.
         load_at_rim_deg: Option<f64> = None, flag: Some("load-at-rim"), symbol: "ψ",
             quantity: "rim point", unit: "deg", check: Check::Finite;
         /// Whether the disc may rotate in the V: free (a real V-block) or blocked (a joint
@@ -193,14 +193,6 @@ impl LocatorParams {
                 sum,
                 "two flanks hold a disc only if a1 + a2 lies in (0, 180) deg (included angle \
                  180 - a1 - a2 in (0, 180))",
-            ));
-        }
-        if let (Some(psi), Rotation::Blocked) = (self.load_at_rim_deg, self.rotation) {
-            return Err(Error::invalid(
-                "load_at_rim_deg",
-                psi,
-                "a blocked V carries every moment in its joint, so the load acts as if at \
-                 the centre; leave the rim point out or use rotation = free",
             ));
         }
         Ok(())

@@ -442,15 +442,6 @@ fn bad_input_names_the_key_and_value() {
             "load_n",
             "NaN",
         ),
-        (
-            LocatorParams {
-                rotation: Rotation::Blocked,
-                load_at_rim_deg: Some(30.0),
-                ..LocatorParams::default()
-            },
-            "load_at_rim_deg",
-            "30",
-        ),
     ];
     for (p, key, value) in cases {
         let msg = locator::solve(&p).unwrap_err().to_string();
@@ -480,4 +471,87 @@ fn zero_net_load_is_held_with_zero_forces_not_no_equilibrium() {
             "{f:?}"
         );
     }
+}
+
+/// Regression (issue 20, item 7): blocked rotation with a load at a rim point was refused,
+/// though the joint carries the load's moment and the answer is well defined: the load acts
+/// as if at the centre. The verdict, forces and capacity now equal the centre load's.
+#[test]
+fn blocked_rotation_with_a_rim_load_acts_as_at_the_centre() {
+    let centre = LocatorParams {
+        rotation: Rotation::Blocked,
+        load_n: 5.0,
+        load_angle_deg: 20.0,
+        ..LocatorParams::default()
+    };
+    let rim = LocatorParams {
+        load_at_rim_deg: Some(30.0),
+        ..centre
+    };
+    let (a, b) = (
+        locator::solve(&centre).unwrap(),
+        locator::solve(&rim).unwrap(),
+    );
+    assert_eq!(a.verdict, b.verdict);
+    assert_eq!(a.capacity, b.capacity);
+    let (fa, fb) = (a.forces.unwrap(), b.forces.unwrap());
+    for i in 0..2 {
+        assert!(
+            (fa[i].normal_n - fb[i].normal_n).abs() <= 1e-6 * centre.weight_n(),
+            "{fa:?} {fb:?}"
+        );
+        assert!(
+            (fa[i].tangential_up_n - fb[i].tangential_up_n).abs() <= 1e-6 * centre.weight_n(),
+            "{fa:?} {fb:?}"
+        );
+    }
+}
+
+/// Regression (issue 20, item 7): when no V that does not self-lock holds the load
+/// (rho* <= 1), the optimum offered a V that self-locks at the nominal friction (17.06 deg at
+/// mu 0.15) as if it were an answer. It now says no V works.
+#[test]
+fn no_v_that_does_not_lock_holds_a_heavy_sideways_load() {
+    let p = LocatorParams {
+        mu_left: 0.15,
+        mu_right: 0.15,
+        load_n: 1000.0,
+        load_angle_deg: 0.0,
+        ..LocatorParams::default()
+    };
+    let o = locator::optimum(&p);
+    assert!(o.safety_factor <= 1.0, "{o:?}");
+    assert!(o.no_v_holds, "{o:?}");
+    let light = LocatorParams { load_n: 1.0, ..p };
+    assert!(!locator::optimum(&light).no_v_holds);
+}
+
+/// Regression (issue 20, item 7): for a pure lift rho_hold does not depend on the angle (the
+/// docs said it falls), so every V wider than the crossing survives the same rho*; the
+/// optimum reported the narrowest with `at_bound: false` as if it were the only one. It now
+/// reports the plateau up to the widest V.
+#[test]
+fn a_pure_lift_reports_the_plateau_of_equally_good_vs() {
+    let p = LocatorParams {
+        mu_left: 0.3,
+        mu_right: 0.3,
+        load_n: 5.0,
+        load_angle_deg: 90.0,
+        ..LocatorParams::default()
+    };
+    let o = locator::optimum(&p);
+    let widest = o.plateau_to_deg.unwrap_or_else(|| panic!("{o:?}"));
+    assert!(widest > o.included_angle_deg + 10.0, "{o:?}");
+    let wide = p.with_included_angle_same_tilt(widest);
+    let rho_wide = locator::balanced_rho(&wide);
+    assert!(
+        (rho_wide - o.safety_factor).abs() <= 1e-6 * o.safety_factor,
+        "{rho_wide} {o:?}"
+    );
+    // A sideways load has a unique optimum.
+    let side = LocatorParams {
+        load_angle_deg: 0.0,
+        ..p
+    };
+    assert_eq!(locator::optimum(&side).plateau_to_deg, None);
 }

@@ -214,16 +214,24 @@ mod tests {
         // mu = 0.1 and F = 20 N inertia, which the closed form lacks, carries the disc 16 %
         // further (93.4 mm against 80.2 mm: it reaches the wedge at the palm's speed and
         // coasts), and there the regularised and the rigid (nonsmooth) simulations differ by
-        // more than 3.5 %: that corner is flagged inaccurate (contact-model dependent), the
-        // only untrusted cell; the other three agree with the closed form within 3 %.
+        // more than 3.5 %: that corner is flagged inaccurate (contact-model dependent). At
+        // mu = 0.8 and F = 20 N the compliant contact says jams at 10.186 mm where the rigid
+        // contact and the closed form say jammed_at_start: flagged since issue 20 (item 2)
+        // checks differing statuses against the rigid contact. The other two agree with the
+        // closed form within 3 %.
         let sim = &report.rows[3];
         assert_eq!(sim.status_mismatches, 0, "{sim:?}");
-        assert!(sim.untrusted_cells <= 1, "{sim:?}");
+        assert!(sim.untrusted_cells <= 2, "{sim:?}");
         let e = sim.max_x_rel_error.unwrap();
         assert!(e < 0.2, "{sim:?}");
+        // The nonsmooth method at mu = 0.8, F = 20 N says jammed_at_start with the closed form
+        // (the disc moves by round-off), but its run at twice the step moves the disc
+        // 0.008 mm and says jams: since statuses are compared as they are (issue 20, item 1)
+        // that corner is flagged, the only untrusted cell.
         let ns = &report.rows[4];
         assert_eq!(ns.method, "nonsmooth");
-        assert_eq!(ns.untrusted_cells + ns.status_mismatches, 0, "{ns:?}");
+        assert_eq!(ns.status_mismatches, 0, "{ns:?}");
+        assert!(ns.untrusted_cells <= 1, "{ns:?}");
     }
 
     #[test]

@@ -13,8 +13,7 @@
 //! Each answer is put in one [`Class`]:
 //!
 //! * `correct`: where the reference stops the disc (jams, or jams at the start), the answer
-//!   stops it too, within the allowance of x_ref (a jam 0.3 mm after a start 0.5 deg above the
-//!   wedge and a jam at the start are the same answer); where the reference has no jam point,
+//!   stops it the same way (the same status), within the allowance of x_ref; where the reference has no jam point,
 //!   the same status, except that never_jams and beyond_reach agree (both lose the disc off
 //!   the palm's end; a simulation cannot tell them apart); where the scene is outside every
 //!   model (a push starting above 90 deg lifts the disc), `outside_model` is that answer;
@@ -28,10 +27,14 @@
 //! error: `SIM_ALLOWANCE_REL` of x_ref, plus the contact's give, 4 delta / sin(theta_ref) with
 //! delta = (P / k)^(1/e) the penetration under the push P at the jam (F for the force drive;
 //! for the motion drive what sliding the disc needs at the angle it stopped at, by the
-//! corrected Eq. 1: 0.88 mm at the defaults against a measured 0.25 mm), plus, beyond x_ref,
-//! the distance inertia can carry the disc from the palm's speed against the ground's friction
-//! (the dynamics' own wedge allowance; the quasi-static reference has no inertia). The closed
-//! form and the min-norm program must meet the closed form to `STATICS_ALLOWANCE_REL`.
+//! corrected Eq. 1), plus, for the force drive and beyond x_ref, the distance inertia can carry
+//! the disc from the palm's speed against the ground's friction (the dynamics' own wedge
+//! allowance; the quasi-static reference has no inertia). A motion-driven palm gets no coast:
+//! a rigid disc locks at the wedge without one. The closed form and the min-norm program must
+//! meet the closed form to `STATICS_ALLOWANCE_REL`. Each constant's doc says why its value.
+//!
+//! Statuses are compared as they are: `jams` where the reference says `jammed_at_start` (or
+//! the other way round) is wrong however close the positions (issue 20, item 1).
 
 use rayon::prelude::*;
 use serde::Serialize;
@@ -50,13 +53,23 @@ use crate::statics;
 pub const STATICS_ALLOWANCE_REL: f64 = 1e-4;
 
 /// Allowance of a simulated jam against its reference beyond the contact's give, relative: the
-/// paper's own Adams answer is 2.3 % above r / mu (ERRATA), and inertia carries a disc on
-/// (the coasting distance the dynamics' wedge check allows).
+/// regularised friction's floor. Its stiction band lets a held disc creep (module docs of
+/// `dynamics::jam`: 0.03 mm at the defaults) and the speed-ratio reading stops it short of
+/// the rigid lock; the paper's own Adams answer is 2.3 % above r / mu (ERRATA), so a tighter
+/// allowance would call the paper's reference simulation wrong. Inertia is allowed apart,
+/// for the force drive only (`allowance_mm`).
 pub const SIM_ALLOWANCE_REL: f64 = 0.03;
 
+/// Multiple of delta / sin(theta_ref) a compliant contact may shift the jam by, delta the
+/// penetration under the push at the jam: a palm face sunk delta into the disc lets it sit
+/// delta / sin(theta) further along the ground; both contacts give (x2), and the push the
+/// motion drive builds while the jam is confirmed runs up to twice the sliding push the
+/// penetration is computed from (x2, the factor of the dynamics' `HeldBelowSlidingPush` check).
+pub const GIVE_FACTOR: f64 = 4.0;
+
 /// Step limit of every simulation in the matrix (default 2000000 in `solve`): the slowest
-/// converging case here needs about 1e5 steps, so a run that reaches it is an explicit
-/// integrator on stiff contact, and it fails in a fraction of a second instead of seconds.
+/// converging case here needs about 1e5 steps. An explicit integrator on stiff contact stops
+/// before it by its stiffness test (issue 20, item 8) once its pace cannot finish within it.
 pub const STABILITY_MAX_STEPS: u64 = 200_000;
 
 /// One case of the matrix.
@@ -480,8 +493,9 @@ fn answer(solve: SolveFn, base: &Config, c: &Case, m: &Source) -> Result<Stabili
             let leaves =
                 |st: JamStatus| matches!(st, JamStatus::NeverJams | JamStatus::BeyondReach);
             let agrees = match (x_error, allowance) {
-                // Both stop the disc: where, within the allowance.
-                (Some(e), Some(a)) => e <= a,
+                // Both stop the disc: the same way (a disc that moves and jams is not a disc
+                // that cannot move), and where, within the allowance.
+                (Some(e), Some(a)) => s.status == r.status && e <= a,
                 // Both lose the disc off the palm's end without a jam.
                 _ if leaves(s.status) && leaves(r.status) => true,
                 _ => s.status == r.status && s.x_jam_mm.is_none(),
@@ -549,15 +563,17 @@ fn allowance_mm(
     let delta = super::penetration_mm(push, d.contact.stiffness_n_per_mm_e, d.contact.exponent);
     let theta_ref = r.theta_jam_deg.unwrap_or(90.0).to_radians();
     let give = if compliant {
-        4.0 * delta / theta_ref.sin().max(1e-3)
+        GIVE_FACTOR * delta / theta_ref.sin().max(1e-3)
     } else {
         0.0
     };
-    // Inertia, which the reference lacks, may carry the disc past it: at most the distance
-    // the ground brakes it from the palm's speed there, as the dynamics' own wedge check.
+    // Inertia, which the reference lacks, may carry a force-driven disc past it: at most the
+    // distance the ground brakes it from the palm's speed there, as the dynamics' own wedge
+    // check. A motion-driven palm holds a rigid disc at the wedge, where it locks with no
+    // coast (the nonsmooth method meets x_rigid to 1e-7 mm at 3600 deg/s), so no allowance.
     let decel = p.mu_ground * p.gravity_m_s2 * 1000.0;
     let coast = match x_mm {
-        Some(x) if x > x_ref && decel > 0.0 => {
+        Some(x) if x > x_ref && decel > 0.0 && d.drive.mode == Drive::Force => {
             let v = p.radius_mm * d.drive.omega_deg_s.to_radians()
                 / (2.0 * (0.5 * theta_ref).sin().powi(2));
             v * v / (2.0 * decel)
@@ -618,16 +634,26 @@ mod tests {
         }
     }
 
-    /// Explicit integration of a 0.01 um contact fails by its step limit, named, not by a
-    /// wrong answer; RADAU5 and the nonsmooth method (which has no stiffness) answer it.
+    /// Explicit integration of a 0.01 um contact fails, named, not by a wrong answer: since
+    /// issue 20 (item 8) by DOPRI5's stiffness test, long before its step limit, where it
+    /// ground to the limit before; RADAU5 and the nonsmooth method (which has no stiffness)
+    /// answer it.
     #[test]
-    fn dopri5_on_the_stiffest_contact_fails_by_its_step_limit() {
+    fn dopri5_on_the_stiffest_contact_stops_as_stiff() {
         let base = Config::default();
         let report = run(&base, &pick(&base, &["contact_0.01um"]), &methods(&base)).unwrap();
         let row = |m: &str| report.rows.iter().find(|r| r.method == m).unwrap();
         let d = row("dopri5");
         assert_eq!(d.class, Class::FailedNamed, "{d:?}");
-        assert!(matches!(d.reason, Some(Why::IntegratorGaveUp { .. })));
+        assert!(
+            matches!(
+                d.reason,
+                Some(Why::IntegratorGaveUp {
+                    failure: crate::dynamics::Failure::Stiff { steps, .. }
+                }) if steps < STABILITY_MAX_STEPS / 2
+            ),
+            "{d:?}"
+        );
         assert_eq!(row("radau5").class, Class::Correct, "{:?}", row("radau5"));
         assert_eq!(
             row("nonsmooth").class,

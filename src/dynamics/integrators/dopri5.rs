@@ -2,7 +2,8 @@
 //! (Hairer, Norsett & Wanner, Solving ODEs I, Section II.5; code DOPRI5).
 
 use super::{
-    DenseStep, Observer, OdeSystem, Outcome, Stats, StepLoop, Tolerances, initial_step, scaled_norm,
+    DenseStep, Failure, Observer, OdeSystem, Outcome, Stats, StepLoop, Tolerances, initial_step,
+    scaled_norm,
 };
 
 const C2: f64 = 1.0 / 5.0;
@@ -42,9 +43,91 @@ const D5: f64 = 701980252875.0 / 199316789632.0;
 const D6: f64 = -1453857185.0 / 822651844.0;
 const D7: f64 = 69997945.0 / 29380423.0;
 
+/// Accepted steps between two stiffness tests (Hairer's NSTIFF, default 1000): the test costs
+/// two norms, but an explicit method needs hundreds of steps before stiffness shows in them.
+const STIFFNESS_TEST_EVERY: u64 = 1000;
+
+/// h * |lambda| above which a step is counted stiff: 3.25, Hairer's bound, just inside the
+/// boundary of DOPRI5's stability region on the negative real axis (about 3.3).
+const STIFF_H_LAMBDA: f64 = 3.25;
+
+/// Stiff steps in a row that stop the integration (Hairer's 15): a transient leaves the region
+/// boundary within a few steps, a stiff problem keeps the step on it.
+const STIFF_STEPS_TO_STOP: u32 = 15;
+
+/// Non-stiff tests in a row that clear the count of stiff ones (Hairer's 6).
+const NONSTIFF_STEPS_TO_CLEAR: u32 = 6;
+
 /// The explicit Dormand-Prince 5(4) method.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Dopri5;
+
+/// Hairer's stiffness test (Solving ODEs II, Section IV.2; code DOPRI5): an estimate of
+/// h * |lambda| along the step, from the last two stages, which sit at the same time t + h.
+#[derive(Debug, Default)]
+struct StiffnessTest {
+    stiff_in_a_row: u32,
+    nonstiff_in_a_row: u32,
+    /// (t, h) when the current stiff stretch reached `STIFF_STEPS_TO_STOP` steps.
+    held_since: Option<(f64, f64)>,
+    /// Steps held since then.
+    held_steps: u64,
+}
+
+impl StiffnessTest {
+    /// Judges the accepted step number `accepted` of size `h`: `f_end` = f(t + h, y1) at the
+    /// solution, `f_stage6` = f(t + h, y_stage6). Returns whether the step size has been held
+    /// at DOPRI5's stability limit for `STIFF_STEPS_TO_STOP` tests in a row.
+    fn is_stiff(
+        &mut self,
+        accepted: u64,
+        h: f64,
+        f_end: &[f64],
+        f_stage6: &[f64],
+        y1: &[f64],
+        y_stage6: &[f64],
+    ) -> bool {
+        if accepted % STIFFNESS_TEST_EVERY != 0 && self.stiff_in_a_row == 0 {
+            return false;
+        }
+        let sq = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| (x - y).powi(2)).sum::<f64>();
+        let (num, den) = (sq(f_end, f_stage6), sq(y1, y_stage6));
+        let h_lambda = if den > 0.0 {
+            h * (num / den).sqrt()
+        } else {
+            0.0
+        };
+        if h_lambda > STIFF_H_LAMBDA {
+            self.nonstiff_in_a_row = 0;
+            self.stiff_in_a_row += 1;
+        } else {
+            self.nonstiff_in_a_row += 1;
+            if self.nonstiff_in_a_row >= NONSTIFF_STEPS_TO_CLEAR {
+                self.stiff_in_a_row = 0;
+                self.held_since = None;
+                self.held_steps = 0;
+            }
+        }
+        self.stiff_in_a_row >= STIFF_STEPS_TO_STOP
+    }
+
+    /// Steps a run held at the stability limit needs from `t` to `end`, the next step being
+    /// `h`. With the step shrinking over the `STIFFNESS_TEST_EVERY` steps or more held since
+    /// the stretch was found stiff (a contact pressed ever harder), the step is extrapolated
+    /// as decaying exponentially in time at the rate seen, h(s) = h exp(-(s - t) / tau), which
+    /// needs (tau / h) (exp((end - t) / tau) - 1) steps; otherwise (end - t) / h. (Over fewer
+    /// steps the controller's step-to-step noise would pass for a trend.)
+    fn steps_to(&mut self, t: f64, h: f64, end: f64) -> f64 {
+        let (t0, h0) = *self.held_since.get_or_insert((t, h));
+        self.held_steps += 1;
+        if self.held_steps > STIFFNESS_TEST_EVERY && t > t0 && h < h0 {
+            let tau = (t - t0) / (h0 / h).ln();
+            tau / h * ((end - t) / tau).exp_m1()
+        } else {
+            (end - t) / h
+        }
+    }
+}
 
 struct Dense<'a> {
     t0: f64,
@@ -94,6 +177,7 @@ impl Dopri5 {
         let (safe, beta, fac_min, fac_max) = (0.9, 0.04, 0.2, 10.0);
         let expo1 = 0.2 - beta * 0.75;
         let mut facold: f64 = 1e-4;
+        let mut stiffness = StiffnessTest::default();
         loop {
             h = match lp.begin_step(t_end, h, tol) {
                 Ok(h) => h,
@@ -162,11 +246,26 @@ impl Dopri5 {
                             + D6 * k[5][i]
                             + D7 * k[6][i]);
                 }
+                // ys still holds the sixth stage, at t + h like y1.
+                let stiff = stiffness.is_stiff(lp.stats.steps + 1, h, &k[6], &k[5], &y1, &ys);
                 let dense = Dense { t0: t, h, r: &r };
                 h = match lp.accept_step(&dense, h, hnew, &y1, y0, obs) {
                     Ok(hnew) => hnew.min(tol.max_step),
                     Err(stopped) => return (stopped, lp.stats),
                 };
+                // A stiff problem is still solved, at the price of steps held at the stability
+                // limit: give up only when that pace cannot reach the end (t_end, or where the
+                // observer expects to stop) within the step budget, so that an answer within
+                // reach is not thrown away and a run that would grind to its step limit stops.
+                if stiff {
+                    let used = lp.stats.steps + lp.stats.rejected;
+                    let budget = tol.max_steps.saturating_sub(used) as f64;
+                    let end = obs.horizon().map_or(t_end, |t| t.min(t_end));
+                    if stiffness.steps_to(lp.t, h, end) > budget {
+                        let (t_s, steps) = (lp.t, lp.stats.steps);
+                        return (Outcome::Failed(Failure::Stiff { t_s, steps }), lp.stats);
+                    }
+                }
                 k.swap(0, 6);
             } else {
                 lp.reject();

@@ -82,6 +82,11 @@ pub enum Failure {
     /// The step controller asked for a step of `h_s` s (or NaN) at `t_s`, too small to advance
     /// the time in floating point.
     StepSizeTooSmall { t_s: f64, h_s: f64 },
+    /// DOPRI5's stiffness test (Hairer's: h * |lambda| estimated from the last two stages
+    /// stayed above 3.25 for 15 accepted steps in a row) stopped it at `t_s` after `steps`
+    /// accepted steps: the step size is held at the explicit method's stability limit, so the
+    /// run would grind on to its step limit. An implicit method is built for this.
+    Stiff { t_s: f64, steps: u64 },
     /// The nonsmooth method found no contact impulses that obey the contact laws at `t_s`
     /// although the drive could give way.
     NoConsistentContact { t_s: f64 },
@@ -92,6 +97,7 @@ impl Failure {
     pub fn t_s(&self) -> f64 {
         match *self {
             Failure::StepLimit { t_s, .. }
+            | Failure::Stiff { t_s, .. }
             | Failure::StepSizeTooSmall { t_s, .. }
             | Failure::NoConsistentContact { t_s } => t_s,
         }
@@ -104,6 +110,11 @@ impl std::fmt::Display for Failure {
             Failure::StepLimit { t_s, steps } => {
                 write!(f, "step limit of {steps} reached at t = {t_s:.4} s")
             }
+            Failure::Stiff { t_s, steps } => write!(
+                f,
+                "the problem is stiff at t = {t_s:.4} s: the explicit method's step is held at \
+                 its stability limit (stopped after {steps} steps)"
+            ),
             Failure::StepSizeTooSmall { t_s, h_s } => {
                 write!(f, "step size {h_s:.3e} s too small at t = {t_s:.4} s")
             }
@@ -136,6 +147,12 @@ pub enum Control {
 /// Watches accepted steps (events, output).
 pub trait Observer {
     fn on_step(&mut self, step: &dyn DenseStep) -> Control;
+
+    /// The time by which the observer expects to stop the run, if it knows one before t_end
+    /// (an integrator deciding whether it can finish judges its remaining work to there).
+    fn horizon(&self) -> Option<f64> {
+        None
+    }
 }
 
 /// The bookkeeping of an adaptive step loop, shared by the methods (their error estimates, step

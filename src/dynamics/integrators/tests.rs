@@ -263,3 +263,38 @@ fn step_limit_is_an_outcome_not_a_panic() {
         other => panic!("expected a failure, got {other:?} after {st:?}"),
     }
 }
+
+/// y' = -1e6 (y - cos t): stiff for an explicit method (h |lambda| <= 3.3 holds the step at
+/// 3.3e-6 s) and smooth for an implicit one.
+struct StiffCosine;
+impl OdeSystem for StiffCosine {
+    fn dim(&self) -> usize {
+        1
+    }
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        dy[0] = -1e6 * (y[0] - t.cos());
+    }
+    fn jacobian(&self, _t: f64, _y: &[f64], j: &mut [f64]) {
+        j[0] = -1e6;
+    }
+}
+
+/// Regression (issue 20, item 8): DOPRI5 ground on a stiff problem to its step limit. Hairer's
+/// stiffness test stops it once its pace cannot reach the end within the budget (10 s needs
+/// about 3e6 steps at the stability limit, the budget is 1e6), soon after the first test
+/// at 1000 steps, as `Failure::Stiff`; a short stiff run within the budget still finishes
+/// (Robertson above), and RADAU5 solves this one.
+#[test]
+fn dopri5_stops_early_on_a_stiff_problem_it_cannot_finish() {
+    let (t, mut y, mut z) = (tol(1e-6, 1e-9), vec![1.0], vec![1.0]);
+    let (out, st) = Dopri5.integrate(&StiffCosine, 0.0, &mut y, 10.0, &t, &mut Nothing);
+    match out {
+        Outcome::Failed(Failure::Stiff { t_s, steps }) => {
+            assert!(steps < 1100 && t_s > 0.0 && t_s < 0.01, "{t_s} {steps}");
+        }
+        other => panic!("expected Failure::Stiff, got {other:?} after {st:?}"),
+    }
+    let (out, _) = Radau5.integrate(&StiffCosine, 0.0, &mut z, 10.0, &t, &mut Nothing);
+    assert_eq!(out, Outcome::Finished);
+    assert_close("cos(10)", &z, &[10f64.cos()], 1e-5, 1e-8);
+}
