@@ -24,9 +24,8 @@ pub use axis::{AxisScale, GridAxis, GridParam};
 pub use locator::LocatorParam;
 
 use crate::error::{Error, Result};
-use crate::models::Solution;
+use crate::models::{self, Detail, ModelSpec, Solution};
 use crate::scene::{JamStatus, SceneParams};
-use crate::statics;
 
 /// A set of parameters a grid can vary, one named parameter per axis.
 pub trait ParamSet: Copy + Send + Sync {
@@ -192,14 +191,21 @@ impl From<&Solution> for JamPoint {
     }
 }
 
-/// The closed-form jam point of `p` (validated): the cheap model, called directly.
-pub fn statics_point(p: &SceneParams) -> JamPoint {
-    let s = statics::solve(p);
-    JamPoint {
-        status: s.status,
-        theta_jam_deg: s.theta_jam_deg,
-        x_jam_mm: s.x_jam_mm,
-    }
+/// The closed-form jam point of `p`, through the port ([`models::solve`]) so that its "outside
+/// the model" rule applies: a sweep that called the statics directly drew a jam for a push
+/// starting above 90 deg, where `solve` says `outside_model`.
+pub fn statics_point(p: &SceneParams) -> Result<JamPoint> {
+    models::solve(&ModelSpec::Statics, p).map(|s| JamPoint::from(&s))
+}
+
+/// The closed form's F -> infinity limit of `p` (theta_rigid in deg, x_rigid in mm), through
+/// the port like [`statics_point`]: None where the scene lies outside the closed form.
+pub fn rigid_point(p: &SceneParams) -> Result<Option<(f64, Option<f64>)>> {
+    let s = models::solve(&ModelSpec::Statics, p)?;
+    Ok(match s.detail {
+        Detail::Statics(s) => Some((s.theta_rigid_deg, s.x_rigid_mm)),
+        _ => None,
+    })
 }
 
 /// What to evaluate: the base scene, the two axes and the quantities.
@@ -302,7 +308,7 @@ pub fn evaluate(
         wants(Quantity::Status) || wants(Quantity::ThetaJamDeg) || wants(Quantity::XJamMm);
     let points = jam_wanted.then(|| grid.map(&jam_point)).transpose()?;
     let x_rigid_mm = wants(Quantity::XRigidMm)
-        .then(|| grid.map(|p| Ok(statics::rigid_limit(p).1)))
+        .then(|| grid.map(|p| Ok(rigid_point(p)?.and_then(|(_, x)| x))))
         .transpose()?
         .map(|c| c.values);
     let (x_values, y_values) = (req.x.values(), req.y.values());

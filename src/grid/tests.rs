@@ -5,7 +5,7 @@ use crate::statics;
 
 /// The closed form as the grid's jam-point function.
 fn st(p: &SceneParams) -> Result<JamPoint> {
-    Ok(statics_point(p))
+    statics_point(p)
 }
 
 fn mu_theta(nx: usize, ny: usize) -> GridRequest {

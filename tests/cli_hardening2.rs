@@ -1,0 +1,70 @@
+//! What a second hostile test of the binary found (issue 23), one regression test per class:
+//! sweeps that bypassed the model port, lost output reported as success, values accepted that
+//! should be refused, and the rest as listed in each test's doc comment.
+
+use std::path::Path;
+
+#[path = "common/cli.rs"]
+mod cli_util;
+use cli_util::{jamchart, repo, stderr, stdout};
+
+/// The rows of `dir/out/NAME.csv` whose first field is `layer`.
+fn layer_rows(dir: &Path, name: &str, layer: &str) -> Vec<String> {
+    let text = std::fs::read_to_string(dir.join("out").join(format!("{name}.csv"))).unwrap();
+    text.lines()
+        .filter(|l| l.starts_with(&format!("{layer},")))
+        .map(str::to_string)
+        .collect()
+}
+
+/// Regression (issue 23, class 1, "sweeps bypass the model port"): `sweep mu=0.1:0.5:3
+/// --start-angle 120` printed `statics,0.1,97.59493,11.70071` with exit 0 where `solve` says
+/// `outside_model` (the palm lifts the disc above 90 deg), and `render fig7b --set
+/// start_angle_deg=120` likewise: the statics and F -> infinity layers called the closed form
+/// directly. They now go through the port: a sweep outside the model at every point is
+/// refused with the reason, and a sweep across 90 deg leaves the rows above it empty.
+#[test]
+fn sweeps_go_through_the_model_ports_outside_rule() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let o = jamchart(
+        d,
+        &[
+            "sweep",
+            "mu=0.1:0.5:3",
+            "--start-angle",
+            "120",
+            "--format",
+            "svg",
+        ],
+    );
+    assert_ne!(o.status.code(), Some(0), "stdout: {}", stdout(&o));
+    assert!(stderr(&o).contains("above 90 deg"), "{}", stderr(&o));
+    assert!(!d.join("out/sweep_mu.csv").exists());
+    let fig7b = repo().join("charts");
+    let o = jamchart(
+        d,
+        &[
+            "render",
+            "fig7b",
+            "--scenes-dir",
+            fig7b.to_str().unwrap(),
+            "--set",
+            "start_angle_deg=120",
+            "--format",
+            "svg",
+        ],
+    );
+    assert_ne!(o.status.code(), Some(0), "stdout: {}", stdout(&o));
+    assert!(stderr(&o).contains("above 90 deg"), "{}", stderr(&o));
+
+    let o = jamchart(d, &["sweep", "start_angle_deg=60:120:4", "--format", "svg"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    for layer in ["statics", "rigid"] {
+        let rows = layer_rows(d, "sweep_start_angle_deg", layer);
+        assert_eq!(rows.len(), 4, "{rows:?}");
+        assert!(!rows[1].ends_with(",,"), "80 deg is answered: {rows:?}");
+        assert_eq!(rows[2], format!("{layer},100,,"), "{rows:?}");
+        assert_eq!(rows[3], format!("{layer},120,,"), "{rows:?}");
+    }
+}
