@@ -3,6 +3,7 @@
 //! should be refused, and the rest as listed in each test's doc comment.
 
 use std::path::Path;
+use std::process::{Command, Output, Stdio};
 
 #[path = "common/cli.rs"]
 mod cli_util;
@@ -67,4 +68,42 @@ fn sweeps_go_through_the_model_ports_outside_rule() {
         assert_eq!(rows[2], format!("{layer},100,,"), "{rows:?}");
         assert_eq!(rows[3], format!("{layer},120,,"), "{rows:?}");
     }
+}
+
+/// Runs `jamchart ARGS` in `dir` through `sh -c` with `redirect` (e.g. `>&-`) on its stdout.
+fn jamchart_redirected(dir: &Path, redirect: &str, args: &[&str]) -> Output {
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!("exec \"$0\" \"$@\" {redirect}"))
+        .arg(env!("CARGO_BIN_EXE_jamchart"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .env_remove("RAYON_NUM_THREADS")
+        .output()
+        .unwrap()
+}
+
+/// Regression (issue 23, class 4, "lost output reported as success"): `table --format csv >
+/// /dev/full` and `solve >&-` exited 0 with nothing written (an empty file on a full disk):
+/// the write's error was dropped, and Rust's stdout swallows EBADF. A failed write and a closed
+/// stdout are now errors with exit 2 and a message; a closed pipe (`| head`) still is not.
+#[test]
+fn a_failed_write_to_stdout_is_an_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (redirect, args, says) in [
+        ("> /dev/full", &["table", "--format", "csv"][..], "space"),
+        ("> /dev/full", &["solve"][..], "space"),
+        (">&-", &["solve"][..], "closed"),
+    ] {
+        let o = jamchart_redirected(d, redirect, args);
+        let e = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?} {redirect}: {e}");
+        assert!(e.starts_with("jamchart: ") && e.contains(says), "{e}");
+        assert!(e.contains("standard output"), "{e}");
+    }
+    let o = jamchart_redirected(d, "| head -c 1 >/dev/null", &["table", "--format", "csv"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stderr(&o), "");
 }
