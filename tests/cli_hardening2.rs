@@ -107,3 +107,61 @@ fn a_failed_write_to_stdout_is_an_error() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert_eq!(stderr(&o), "");
 }
+
+/// Asserts `o` was refused with exit 2 and a message naming `setting`, without a panic.
+fn refused(o: &Output, setting: &str) {
+    let e = stderr(o);
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "stdout: {} stderr: {e}",
+        stdout(o)
+    );
+    assert!(e.starts_with("jamchart: "), "{e}");
+    assert!(e.contains(setting), "message should name {setting}: {e}");
+    assert!(!e.contains("panicked"), "{e}");
+}
+
+/// Regression (issue 23, class 7, "accepted when it should be refused"): `sweep mu=1e-400:0.5`
+/// became 0 silently (the README says such numbers are refused), `mu=0.1:0.5:5:7` and
+/// `:log:log` were accepted with the last one winning, and `--set title=`,
+/// `dynamics.series.after_jam_s=1e300` and `chart.cases=[]` (which drew every case) rendered.
+/// Each is now refused with exit 2, naming what was written, before anything is written.
+#[test]
+fn values_that_mean_nothing_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let charts = repo().join("charts");
+    let charts = charts.to_str().unwrap();
+    for (args, names) in [
+        (&["sweep", "mu=1e-400:0.5"][..], "1e-400"),
+        (&["sweep", "mu=0.1:0.5:5:7"][..], "count twice"),
+        (&["sweep", "mu=0.1:0.5:log:log"][..], "scale twice"),
+        (&["vlocator", "--load", "1e-400"][..], "1e-400"),
+        (&["render", "fig7b", "--set", "title="][..], "title"),
+        (&["render", "fig7b", "--set", "title=  "][..], "title"),
+        (
+            &[
+                "render",
+                "fig5",
+                "--set",
+                "dynamics.series.after_jam_s=1e300",
+            ][..],
+            "dynamics.series.after_jam_s",
+        ),
+        (
+            &["render", "stability-matrix", "--set", "chart.cases=[]"][..],
+            "chart.cases",
+        ),
+    ] {
+        let mut args = args.to_vec();
+        if args[0] == "render" {
+            args.extend(["--scenes-dir", charts]);
+        }
+        if args[0] != "vlocator" {
+            args.extend(["--out", "o", "--format", "svg"]);
+        }
+        refused(&jamchart(d, &args), names);
+        assert!(!d.join("o").exists(), "{args:?} wrote output");
+    }
+}
