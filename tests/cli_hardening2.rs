@@ -165,3 +165,68 @@ fn values_that_mean_nothing_are_refused() {
         assert!(!d.join("o").exists(), "{args:?} wrote output");
     }
 }
+
+/// Regression (issue 23, class 2, "axis samples that overflow"): only an axis's ends were
+/// checked, so `sweep mu=1e-320:1:5:log` wrote rows with a blank mu, `sweep
+/// force_n=1e-300:1e300:41:log` 39 rows with no force, and a capacity scene with
+/// load_angle_deg from -1e308 to 1e308 rows `30,,`: the span max/min or max - min overflowed.
+/// Every sample is now finite or the axis is refused, naming it as written.
+#[test]
+fn every_axis_sample_is_a_number_or_the_axis_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for axis in [
+        "mu=1e-320:1:5:log",
+        "force_n=1e-300:1e300:41:log",
+        "palm_offset_mm=-1e308:1e308:5",
+    ] {
+        let o = jamchart(d, &["sweep", axis, "--out", "o", "--format", "svg"]);
+        refused(&o, axis);
+        assert!(stderr(&o).contains("overflows"), "{}", stderr(&o));
+        assert!(!d.join("o").exists());
+    }
+    let charts = repo().join("charts");
+    let o = jamchart(
+        d,
+        &[
+            "render",
+            "vlocator-capacity",
+            "--scenes-dir",
+            charts.to_str().unwrap(),
+            "--set",
+            "chart.y_axis={param=\"load_angle_deg\",min=-1e308,max=1e308,count=5}",
+            "--out",
+            "o",
+            "--format",
+            "svg",
+        ],
+    );
+    refused(&o, "chart.y_axis");
+    assert!(stderr(&o).contains("-1e308..1e308"), "{}", stderr(&o));
+    // A wide range that fits is still drawn, each row with its number.
+    let o = jamchart(
+        d,
+        &["sweep", "force_n=1e-150:1e150:41:log", "--format", "svg"],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let rows = layer_rows(d, "sweep_force_n", "statics");
+    assert_eq!(rows.len(), 41);
+    assert!(rows.iter().all(|r| !r.starts_with("statics,,")), "{rows:?}");
+}
+
+/// Regression (issue 23, class 8, "messages that name the wrong flag or garble the value"):
+/// `sweep radius_mm=0:10` named the flag --radius, which the user had not given, and `solve
+/// --rtol 1e300` quoted the value as 301 digits cut to 60. The axis is now refused as written
+/// and long numbers read in exponent form.
+#[test]
+fn messages_name_the_setting_as_written_and_numbers_readably() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let o = jamchart(d, &["sweep", "radius_mm=0:10", "--out", "o"]);
+    refused(&o, "radius_mm=0:10");
+    assert!(!stderr(&o).contains("--radius"), "{}", stderr(&o));
+    let o = jamchart(d, &["solve", "--rtol", "1e300"]);
+    refused(&o, "--rtol");
+    assert!(stderr(&o).contains("= 1e300 "), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("000000"), "{}", stderr(&o));
+}

@@ -79,18 +79,37 @@ impl FromStr for AxisArg {
                 n => count = Some(n.parse().map_err(|_| usage())?),
             }
         }
-        let scale = scale.unwrap_or(AxisScale::Linear);
-        Ok(AxisArg {
+        let a = AxisArg {
             param,
             min,
             max,
             count,
-            scale,
-        })
+            scale: scale.unwrap_or(AxisScale::Linear),
+        };
+        a.check().map_err(|e| format!("'{s}': {e}"))?;
+        Ok(a)
     }
 }
 
 impl AxisArg {
+    /// The axis and its ends checked as the user wrote them (`radius_mm=0:10` once named the
+    /// flag --radius, and a log axis from 1e-320 was checked only at its ends).
+    fn check(&self) -> std::result::Result<(), String> {
+        let name = self.param.as_str();
+        self.axis(2)
+            .validate(name)
+            .map_err(|e| e.to_string().replace(&format!("{name}."), ""))?;
+        for v in [self.min, self.max] {
+            if let Some(why) = self.param.decl().check.refuse(v) {
+                return Err(format!(
+                    "{name} = {} {why}",
+                    crate::error::cut(&v.to_string())
+                ));
+            }
+        }
+        Ok(())
+    }
+
     fn axis(&self, default_count: usize) -> GridAxis {
         GridAxis {
             param: self.param,

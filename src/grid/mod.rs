@@ -69,14 +69,14 @@ impl<S: ParamSet> Grid<S> {
     /// Checks the axes, the cell count, and the parameters at the grid's corners (every
     /// parameter is monotone along its axis, so the corners bound the whole grid).
     pub fn validate(&self) -> Result<()> {
-        self.x.validate("x_axis")?;
+        self.x.validate("chart.x_axis")?;
         let mut cells = self.x.count;
         if let Some(y) = &self.y {
-            y.validate("y_axis")?;
+            y.validate("chart.y_axis")?;
             cells = cells.saturating_mul(y.count);
             if y.param == self.x.param {
                 return Err(Error::invalid(
-                    "y_axis.param",
+                    "chart.y_axis.param",
                     S::param_name(y.param),
                     "the two axes must vary different parameters",
                 ));
@@ -84,7 +84,7 @@ impl<S: ParamSet> Grid<S> {
         }
         if cells > MAX_CELLS {
             return Err(Error::invalid(
-                "x_axis.count * y_axis.count",
+                "chart.x_axis.count * chart.y_axis.count",
                 cells,
                 format!(
                     "a grid has at most {MAX_CELLS} cells (8 bytes each per quantity); \
