@@ -230,3 +230,45 @@ fn messages_name_the_setting_as_written_and_numbers_readably() {
     assert!(stderr(&o).contains("= 1e300 "), "{}", stderr(&o));
     assert!(!stderr(&o).contains("000000"), "{}", stderr(&o));
 }
+
+/// Regression (issue 23, classes 6 and 8): `vlocator --mass 1e-300 --gravity 1e-300` printed
+/// `P_max = 0.000 N = NaN W` with exit 0 (the weight m g underflowed to 0 and capacities are per
+/// weight), and a load and weight that overflow together were refused by the solver naming its
+/// internal key `load.force_n`. Both are refused up front, naming the flags given.
+#[test]
+fn a_weight_out_of_range_is_refused_never_printed_as_nan() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for args in [
+        &["vlocator", "--mass", "1e-300", "--gravity", "1e-300"][..],
+        &[
+            "vlocator",
+            "--mass",
+            "1e300",
+            "--gravity",
+            "1e300",
+            "--format",
+            "json",
+        ][..],
+    ] {
+        let o = jamchart(d, args);
+        refused(&o, "--mass and --gravity");
+        assert!(!stdout(&o).contains("NaN"), "{}", stdout(&o));
+    }
+    let o = jamchart(
+        d,
+        &[
+            "vlocator",
+            "--mass",
+            "1.5e307",
+            "--gravity",
+            "10",
+            "--load",
+            "1.7e308",
+            "--load-angle",
+            "-90",
+        ],
+    );
+    refused(&o, "--load, --mass and --gravity");
+    assert!(!stderr(&o).contains("load.force_n"), "{}", stderr(&o));
+}
