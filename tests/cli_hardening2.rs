@@ -272,3 +272,63 @@ fn a_weight_out_of_range_is_refused_never_printed_as_nan() {
     refused(&o, "--load, --mass and --gravity");
     assert!(!stderr(&o).contains("load.force_n"), "{}", stderr(&o));
 }
+
+/// Runs `jamchart ARGS` in `dir`, killed after 20 s (a hang would otherwise hang the suite;
+/// the time is a guard, not a measurement).
+fn jamchart_guarded(dir: &Path, args: &[&str]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_jamchart"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed().as_secs() > 20 {
+            child.kill().unwrap();
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
+
+/// Regression (issue 23, class 5, "hangs"): a scene file that is a FIFO with no writer blocked
+/// forever, and a scene whose `base` is /dev/zero was read until memory ran out. Settings and
+/// scene files are now opened without blocking, refused unless regular, and read no further
+/// than 4 MiB.
+#[test]
+fn scene_files_must_be_regular_and_small() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let sc = d.join("scenes");
+    std::fs::create_dir_all(&sc).unwrap();
+    let made = Command::new("mkfifo")
+        .arg(sc.join("fifo.toml"))
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let chart = "[chart]\nkind = \"sweep\"\naxis = { param = \"mu\", min = 0.1, max = 0.5, \
+                 count = 3 }\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n";
+    std::fs::write(
+        sc.join("zero.toml"),
+        format!("title = \"t\"\nbase = \"/dev/zero\"\n{chart}"),
+    )
+    .unwrap();
+    let big = format!("title = \"t\"\n{chart}# {}\n", "x".repeat(5 << 20));
+    std::fs::write(sc.join("big.toml"), big).unwrap();
+    for (name, says) in [
+        ("fifo", "not a regular file"),
+        ("zero", "not a regular file"),
+        ("big", "larger than 4 MiB"),
+    ] {
+        let o = jamchart_guarded(
+            d,
+            &["render", name, "--scenes-dir", "scenes", "--format", "svg"],
+        );
+        refused(&o, says);
+    }
+    let o = jamchart_guarded(d, &["solve", "--config", "scenes/fifo.toml"]);
+    refused(&o, "scenes/fifo.toml");
+}

@@ -186,7 +186,7 @@ impl SceneSource {
                 parse_scene(name, text, &label, Path::new(""), settings)
             }
             SceneSource::File(path) => {
-                let text = std::fs::read_to_string(path).map_err(|e| Error::io("read", path, e))?;
+                let text = crate::config::read_text(path)?;
                 let dir = path.parent().unwrap_or(Path::new(""));
                 parse_scene(name, &text, path, dir, settings)
             }
