@@ -332,3 +332,31 @@ fn scene_files_must_be_regular_and_small() {
     let o = jamchart_guarded(d, &["solve", "--config", "scenes/fifo.toml"]);
     refused(&o, "scenes/fifo.toml");
 }
+
+/// Regression (issue 23, class 9, "leftovers"): under a file-size limit (`ulimit -f`) SIGXFSZ
+/// killed `render fig3` and left `.fig3.csv.<pid>.<n>.tmp` files in the output folder. The
+/// signal is now ignored, the write fails with EFBIG like a full disk, and the run exits 2
+/// with the message, its temporaries and the folder it created removed.
+#[test]
+fn a_file_size_limit_fails_cleanly_without_leftovers() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let o = jamchart_redirected(d, "", &["render", "fig3", "--out", "o", "--format", "svg"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let o = Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -f 100 && exec \"$0\" \"$@\"")
+        .arg(env!("CARGO_BIN_EXE_jamchart"))
+        .args(["render", "fig3", "--out", "capped", "--format", "svg"])
+        .current_dir(d)
+        .output()
+        .unwrap();
+    refused(&o, "File too large");
+    let left: Vec<String> = std::fs::read_dir(d.join("capped"))
+        .map(|r| {
+            r.map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+                .collect()
+        })
+        .unwrap_or_default();
+    assert!(left.is_empty(), "left behind: {left:?}");
+}
