@@ -360,3 +360,36 @@ fn a_file_size_limit_fails_cleanly_without_leftovers() {
         .unwrap_or_default();
     assert!(left.is_empty(), "left behind: {left:?}");
 }
+
+/// Regression (issue 23, class 3, "aborts"): a 10 MB scene title took 3 GiB to lay out and
+/// aborted under a 4 GiB limit, and `--set chart.axis.x.x.x...` (10,000 levels) overflowed
+/// the stack. A title has at most 200 characters and a `--set` key at most 8 parts; both are
+/// refused with exit 2 before anything is computed.
+#[test]
+fn huge_titles_and_deep_keys_are_refused_not_aborted() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let sc = d.join("scenes");
+    std::fs::create_dir_all(&sc).unwrap();
+    let chart = "[chart]\nkind = \"sweep\"\naxis = { param = \"mu\", min = 0.1, max = 0.5, \
+                 count = 3 }\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n";
+    let title = "x".repeat(1 << 20);
+    std::fs::write(
+        sc.join("long.toml"),
+        format!("title = \"{title}\"\n{chart}"),
+    )
+    .unwrap();
+    let o = jamchart_guarded(
+        d,
+        &["render", "long", "--scenes-dir", "scenes", "--out", "o"],
+    );
+    refused(&o, "title");
+    assert!(stderr(&o).len() < 400, "{}", stderr(&o).len());
+    let key = format!("chart.axis.{}x=1", "x.".repeat(10_000));
+    let o = jamchart_guarded(
+        d,
+        &["render", "long", "--scenes-dir", "scenes", "--set", &key],
+    );
+    refused(&o, "at most 8 dotted parts");
+    assert!(!d.join("o").exists());
+}
