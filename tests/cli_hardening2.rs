@@ -108,6 +108,10 @@ fn a_failed_write_to_stdout_is_an_error() {
     assert_eq!(stderr(&o), "");
 }
 
+/// A small valid `[chart]` for hand-made scene files.
+const SWEEP_CHART: &str = "[chart]\nkind = \"sweep\"\naxis = { param = \"mu\", min = 0.1, \
+                           max = 0.5, count = 3 }\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n";
+
 /// Asserts `o` was refused with exit 2 and a message naming `setting`, without a panic.
 fn refused(o: &Output, setting: &str) {
     let e = stderr(o);
@@ -309,8 +313,7 @@ fn scene_files_must_be_regular_and_small() {
         .status()
         .unwrap();
     assert!(made.success());
-    let chart = "[chart]\nkind = \"sweep\"\naxis = { param = \"mu\", min = 0.1, max = 0.5, \
-                 count = 3 }\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n";
+    let chart = SWEEP_CHART;
     std::fs::write(
         sc.join("zero.toml"),
         format!("title = \"t\"\nbase = \"/dev/zero\"\n{chart}"),
@@ -371,8 +374,7 @@ fn huge_titles_and_deep_keys_are_refused_not_aborted() {
     let d = dir.path();
     let sc = d.join("scenes");
     std::fs::create_dir_all(&sc).unwrap();
-    let chart = "[chart]\nkind = \"sweep\"\naxis = { param = \"mu\", min = 0.1, max = 0.5, \
-                 count = 3 }\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n";
+    let chart = SWEEP_CHART;
     let title = "x".repeat(1 << 20);
     std::fs::write(
         sc.join("long.toml"),
