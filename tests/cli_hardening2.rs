@@ -395,3 +395,31 @@ fn huge_titles_and_deep_keys_are_refused_not_aborted() {
     refused(&o, "at most 8 dotted parts");
     assert!(!d.join("o").exists());
 }
+
+/// Regression (issue 23, class 8, "paths checked first"): `stability --out-dir` on a dangling
+/// symbolic link computed the whole matrix, then failed creating the folder (and a read-only
+/// folder likewise, for a user other than root). The output paths are now refused before
+/// anything is computed: the run says nothing about the matrix.
+#[test]
+fn output_folders_are_checked_before_computing() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::os::unix::fs::symlink(d.join("nowhere/x"), d.join("dangling")).unwrap();
+    let o = jamchart(
+        d,
+        &[
+            "stability",
+            "--cases",
+            "barely_moves",
+            "--out-dir",
+            "dangling",
+        ],
+    );
+    refused(&o, "dangling symbolic link");
+    assert!(
+        !stderr(&o).contains("stability matrix of"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!d.join("nowhere").exists());
+}
