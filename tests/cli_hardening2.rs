@@ -423,3 +423,17 @@ fn output_folders_are_checked_before_computing() {
     );
     assert!(!d.join("nowhere").exists());
 }
+
+/// Regression (issue 23, class 8): `stability --cases barely_moves --mu 0` was refused naming
+/// the flag --force, which the user never gave: the case derives F = 1.05 m g sin(atan mu_g)
+/// from the scene, 0 for mu = 0. The refusal now names the case and its rule.
+#[test]
+fn a_derived_case_value_names_the_case_not_a_flag() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &["stability", "--cases", "barely_moves", "--mu", "0"],
+    );
+    refused(&o, "case barely_moves");
+    assert!(!stderr(&o).contains("--force"), "{}", stderr(&o));
+}
