@@ -48,9 +48,46 @@ impl Config {
 
     /// Reads and parses a TOML file (it is not validated here: flags may still override it).
     pub fn load(path: &Path) -> Result<Config> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io("read", path, e))?;
+        let text = read_text(path)?;
         parse_toml(&text, path)
     }
+}
+
+/// Largest settings or scene file read, in bytes: the committed ones are under 2 kB, and a
+/// file pointing at /dev/zero was once read until memory ran out.
+pub const MAX_INPUT_BYTES: u64 = 4 << 20;
+
+/// Reads a settings or scene file: a regular file of at most [`MAX_INPUT_BYTES`].
+///
+/// A FIFO without a writer once blocked forever and /dev/zero was read until memory ran out:
+/// the file is opened without blocking, refused unless it is a regular file, and read no
+/// further than the cap.
+pub fn read_text(path: &Path) -> Result<String> {
+    use std::io::Read;
+    use std::os::unix::fs::OpenOptionsExt;
+    let refuse = |why: String| Error::io("read", path, std::io::Error::other(why));
+    let file = std::fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(libc::O_NONBLOCK | libc::O_NOCTTY)
+        .open(path)
+        .map_err(|e| Error::io("read", path, e))?;
+    let meta = file.metadata().map_err(|e| Error::io("read", path, e))?;
+    if !meta.is_file() {
+        return Err(refuse(
+            "not a regular file (a FIFO, device or directory); give a TOML file".into(),
+        ));
+    }
+    let mut text = String::new();
+    file.take(MAX_INPUT_BYTES + 1)
+        .read_to_string(&mut text)
+        .map_err(|e| Error::io("read", path, e))?;
+    if text.len() as u64 > MAX_INPUT_BYTES {
+        return Err(refuse(format!(
+            "larger than {} MiB; a settings or scene file is a few kB",
+            MAX_INPUT_BYTES >> 20
+        )));
+    }
+    Ok(text)
 }
 
 /// What is wrong with a number written as `raw` that parsed to `v`: None if it is fine.

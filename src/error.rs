@@ -145,10 +145,39 @@ pub const QUOTE_MAX_CHARS: usize = 60;
 /// `s` whole if short, else its first [`QUOTE_MAX_CHARS`] characters, an ellipsis and the full
 /// length.
 pub fn cut(s: &str) -> String {
+    let s = &short_numbers(s);
     match s.char_indices().nth(QUOTE_MAX_CHARS) {
         None => s.to_string(),
         Some((end, _)) => format!("{}... ({} bytes in all)", &s[..end], s.len()),
     }
+}
+
+/// A number printed in full is longer than this (f64's Display writes 1e300 with 301 digits).
+const LONG_NUMBER_CHARS: usize = 24;
+
+/// `s` with every decimal number longer than [`LONG_NUMBER_CHARS`] in exponent form: a message
+/// quoted `--rtol 1e300` as 301 digits, cut to 60 of them, which no one can read back.
+fn short_numbers(s: &str) -> String {
+    let digits = |t: &str| t.find(|c: char| !c.is_ascii_digit()).unwrap_or(t.len());
+    let mut out = String::with_capacity(s.len().min(1024));
+    let mut rest = s;
+    while let Some(start) = rest.find(|c: char| c.is_ascii_digit()) {
+        let (head, tail) = rest.split_at(start);
+        out.push_str(head);
+        // DIGITS, or DIGITS.DIGITS: `1..2` is two numbers.
+        let mut len = digits(tail);
+        if tail[len..].starts_with('.') && digits(&tail[len + 1..]) > 0 {
+            len += 1 + digits(&tail[len + 1..]);
+        }
+        let (number, after) = tail.split_at(len);
+        match number.parse::<f64>() {
+            Ok(v) if number.len() > LONG_NUMBER_CHARS => out.push_str(&format!("{v:e}")),
+            _ => out.push_str(number),
+        }
+        rest = after;
+    }
+    out.push_str(rest);
+    out
 }
 
 /// Result with [`Error`].
@@ -169,5 +198,18 @@ mod tests {
         );
         let msg = Error::invalid("radius_mm", &long, "a number").to_string();
         assert!(msg.len() < 150, "{}", msg.len());
+    }
+
+    /// Regression (issue 23, class 8): `solve --rtol 1e300` quoted the value as 301 digits (cut
+    /// to 60), and an axis from 1e-300 quoted 0.000...; long numbers now read in exponent form,
+    /// short ones as written.
+    #[test]
+    fn long_numbers_are_quoted_in_exponent_form() {
+        assert_eq!(cut(&1e300.to_string()), "1e300");
+        assert_eq!(cut(&format!("{}..{}", 1e-300, 1e300)), "1e-300..1e300");
+        assert_eq!(cut(&(-1e308).to_string()), "-1e308");
+        assert_eq!(cut("0.25..12345.5 mm, 1.2.3"), "0.25..12345.5 mm, 1.2.3");
+        let digits = "9".repeat(50_000_000);
+        assert!(cut(&digits).len() < 100);
     }
 }

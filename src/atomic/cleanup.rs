@@ -27,11 +27,20 @@ pub(super) fn lock() -> MutexGuard<'static, Option<HashSet<PathBuf>>> {
 pub fn install_signal_cleanup() {
     static ONCE: Once = Once::new();
     ONCE.call_once(|| {
+        // A file-size limit (`ulimit -f`) sends SIGXFSZ, whose default kills the process and
+        // left `.tmp` files behind (`render fig3`); ignored, the write fails with EFBIG, an I/O
+        // error like a full disk, and the temporary is removed as for any failed write.
+        // SAFETY: SIG_IGN installs no handler code; nothing else in the process sets SIGXFSZ.
+        unsafe {
+            libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
+        }
         use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
         let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) else {
             return; // no handler: temporaries are still swept by the next run
         };
-        std::thread::spawn(move || {
+        // Without a thread to spare (`ulimit -u`) the run goes on without the cleanup handler,
+        // as when the handler cannot be registered: the next run sweeps the temporaries.
+        let _ = std::thread::Builder::new().spawn(move || {
             if let Some(sig) = signals.forever().next() {
                 let live = lock();
                 for p in live.iter().flatten() {

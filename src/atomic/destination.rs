@@ -112,13 +112,30 @@ pub fn check(path: &Path) -> Result<Destination> {
 
 /// The parent of a new output exists as a directory, or is missing (it will be created); any
 /// other thing under that name is refused before anything is computed.
+///
+/// The directory that will hold the new entry must be writable, and a dangling symbolic link
+/// is not a missing folder: `stability --out-dir` on either once failed only after computing.
 fn check_parent(parent: &Path) -> Result<()> {
+    let refuse = |what: &str| Error::UnsafeOutput {
+        path: parent.to_path_buf(),
+        what: what.into(),
+    };
     match std::fs::metadata(parent) {
-        Ok(m) if m.is_dir() => Ok(()),
-        Ok(_) => Err(Error::UnsafeOutput {
-            path: parent.to_path_buf(),
-            what: "not a directory, and an output is to go inside it".into(),
-        }),
+        Ok(m) if m.is_dir() => {
+            let c = std::ffi::CString::new(parent.as_os_str().as_encoded_bytes())
+                .map_err(|_| refuse("a path with a NUL byte"))?;
+            // SAFETY: access reads the NUL-terminated path and nothing else.
+            if unsafe { libc::access(c.as_ptr(), libc::W_OK | libc::X_OK) } != 0 {
+                return Err(refuse(
+                    "a folder this user cannot write into, and an output is to go inside it",
+                ));
+            }
+            Ok(())
+        }
+        Ok(_) => Err(refuse("not a directory, and an output is to go inside it")),
+        Err(e) if is_missing(&e) && std::fs::symlink_metadata(parent).is_ok() => Err(refuse(
+            "a dangling symbolic link, where a folder for the output would be created",
+        )),
         Err(e) if is_missing(&e) => match parent.parent() {
             Some(up) if !up.as_os_str().is_empty() => check_parent(up),
             _ => Ok(()),

@@ -20,6 +20,9 @@ pub struct Setting {
     pub value: toml::Value,
 }
 
+/// Most dotted parts a `--set` key may have.
+const MAX_KEY_PARTS: usize = 8;
+
 impl FromStr for Setting {
     type Err = String;
 
@@ -30,6 +33,14 @@ impl FromStr for Setting {
         let key = key.trim();
         if key.is_empty() || key.split('.').any(str::is_empty) {
             return Err(format!("'{s}' has an empty key"));
+        }
+        // The deepest key of any scene is 3 parts (dynamics.contact.stiffness_n_per_mm_e); a key
+        // of 10,000 parts once overflowed the stack while its table was built.
+        if key.split('.').nth(MAX_KEY_PARTS).is_some() {
+            return Err(format!(
+                "{}: a key has at most {MAX_KEY_PARTS} dotted parts (e.g. chart.x_axis.count)",
+                crate::error::cut(key)
+            ));
         }
         let raw = raw.trim();
         // `1e400` would otherwise become the string "1e400" (toml refuses the overflow).

@@ -186,7 +186,7 @@ impl SceneSource {
                 parse_scene(name, text, &label, Path::new(""), settings)
             }
             SceneSource::File(path) => {
-                let text = std::fs::read_to_string(path).map_err(|e| Error::io("read", path, e))?;
+                let text = crate::config::read_text(path)?;
                 let dir = path.parent().unwrap_or(Path::new(""));
                 parse_scene(name, &text, path, dir, settings)
             }
@@ -365,6 +365,7 @@ impl Scene {
     /// (say `--set mu_palm=0.6` on fig3): the chart would draw mu_palm = mu while the read-off
     /// used 0.6.
     pub fn validate_chart(&self) -> Result<()> {
+        self.validate_title()?;
         let p = &self.params;
         if let Some((axis, _)) = self
             .chart
@@ -385,6 +386,25 @@ impl Scene {
         }
         self.chart.validate(self)?;
         self.chart.check_size(self)
+    }
+}
+
+/// Longest title in characters: a title is one line across the chart (about 120 characters at
+/// the widest picture); a 10 MB title once took 3 GiB to lay out and aborted.
+pub const MAX_TITLE_CHARS: usize = 200;
+
+impl Scene {
+    /// Checks the title: not blank (`--set title=` drew a chart without a heading) and at most
+    /// [`MAX_TITLE_CHARS`] characters.
+    fn validate_title(&self) -> Result<()> {
+        let why = if self.title.trim().is_empty() {
+            "a chart needs a title; write what it shows"
+        } else if self.title.chars().nth(MAX_TITLE_CHARS).is_some() {
+            "a title is one line: at most 200 characters"
+        } else {
+            return Ok(());
+        };
+        Err(Error::invalid("title", format!("\"{}\"", self.title), why))
     }
 }
 

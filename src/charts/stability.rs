@@ -23,17 +23,28 @@ use crate::study::stability::{self, Class, StabilityReport};
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct StabilitySpec {
-    /// Case names to draw, in the matrix's order (default: empty, every case).
-    pub cases: Vec<String>,
+    /// Case names to draw, in the matrix's order (default: every case). An empty list is
+    /// refused: it once drew every case, the opposite of what it says.
+    pub cases: Option<Vec<String>>,
 }
 
 impl super::kinds::Kind for StabilitySpec {
     type Chart = Stability;
 
-    /// Checks that every named case exists.
+    /// Checks that the list names at least one case and that every named case exists.
     fn validate(&self, _scene: &Scene) -> Result<()> {
+        let Some(cases) = &self.cases else {
+            return Ok(());
+        };
+        if cases.is_empty() {
+            return Err(Error::invalid(
+                "chart.cases",
+                "[]",
+                "name at least one case, or leave chart.cases out to draw every case",
+            ));
+        }
         let all = stability::cases(&Config::default());
-        for name in &self.cases {
+        for name in cases {
             if !all.iter().any(|c| &c.name == name) {
                 let known: Vec<&str> = all.iter().map(|c| c.name.as_str()).collect();
                 return Err(Error::invalid(
@@ -89,12 +100,12 @@ impl Stability {
         };
         super::kinds::Kind::validate(spec, scene)?;
         let all = stability::cases(&base);
-        let cases: Vec<_> = if spec.cases.is_empty() {
-            all
-        } else {
-            all.into_iter()
-                .filter(|c| spec.cases.contains(&c.name))
-                .collect()
+        let cases: Vec<_> = match &spec.cases {
+            None => all,
+            Some(named) => all
+                .into_iter()
+                .filter(|c| named.contains(&c.name))
+                .collect(),
         };
         let solve =
             |s: &crate::models::ModelSpec, p: &crate::scene::SceneParams| models.solve(s, p);

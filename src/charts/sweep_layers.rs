@@ -17,12 +17,11 @@ use super::style::{LineKind, Marker};
 use super::sweep::{Series, SeriesPoint, SeriesStyle, SweepSpec};
 use crate::dynamics::{Drive, DynamicsParams};
 use crate::error::{Error, Result};
-use crate::grid::{self, GridParam, statics_point};
+use crate::grid::{self, GridParam};
 use crate::minnorm::{Formulation, MinNormSettings};
-use crate::models::ModelSpec;
+use crate::models::{self, Detail, ModelSpec, Solution};
 use crate::paper::{ADAMS_X_JAM_MM_MU_0_4, TABLE1};
 use crate::scene::{JamStatus, disc_position_mm};
-use crate::statics;
 use crate::study::{self, Why};
 
 /// The mu values of the simulation points: halfway between Table 1's 0.15, 0.20, ..., 0.45.
@@ -77,34 +76,24 @@ pub fn series(
     scene: &Scene,
     models: &dyn Models,
 ) -> Result<Vec<Series>> {
-    let p = &scene.params;
-    let param = spec.axis.param;
-    let at = |v: f64| param.apply(*p, v);
     Ok(match layer {
         SweepLayer::Statics => vec![Series {
             layer: "statics",
             label: "closed-form statics (corrected Eq. 1)".into(),
             style: SeriesStyle::Line(LineKind::Solid),
-            points: spec
-                .axis
-                .values()
+            points: closed_form(spec, scene)?
                 .into_iter()
-                .map(|v| {
-                    let j = statics_point(&at(v));
-                    point(v, j.x_jam_mm, j.theta_jam_deg)
-                })
+                .map(|(v, s)| point(v, s.x_jam_mm, s.theta_jam_deg))
                 .collect(),
             flat_names: Some(["x_jam", "θ_jam"]),
             callout: None,
         }],
         SweepLayer::Rigid => {
-            let points: Vec<SeriesPoint> = spec
-                .axis
-                .values()
+            let points: Vec<SeriesPoint> = closed_form(spec, scene)?
                 .into_iter()
-                .map(|v| {
-                    let s = statics::solve(&at(v));
-                    point(v, s.x_rigid_mm, Some(s.theta_rigid_deg))
+                .map(|(v, s)| match s.detail {
+                    Detail::Statics(s) => point(v, s.x_rigid_mm, Some(s.theta_rigid_deg)),
+                    _ => point(v, None, None),
                 })
                 .collect();
             vec![Series {
@@ -131,6 +120,46 @@ pub fn series(
         SweepLayer::SimulationMotion => vec![simulation(scene, models, Drive::Motion)?],
         SweepLayer::SimulationForce => vec![simulation(scene, models, Drive::Force)?],
     })
+}
+
+/// The closed form's answer at each sample of `spec`'s axis, through the port
+/// ([`models::solve`]) so that its "outside the model" rule applies: the statics and F -> infinity
+/// layers once called the statics directly and drew a jam for a push starting above 90 deg,
+/// where `solve` says `outside_model`. A point outside the model is an empty row; a sweep
+/// outside it at every point would be an empty chart and fails instead, with the reason.
+fn closed_form(spec: &SweepSpec, scene: &Scene) -> Result<Vec<(f64, Solution)>> {
+    let param = spec.axis.param;
+    let answers = spec
+        .axis
+        .values()
+        .into_iter()
+        .map(|v| {
+            Ok((
+                v,
+                models::solve(&ModelSpec::Statics, &param.apply(scene.params, v))?,
+            ))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let outside = |(_, s): &(f64, Solution)| match &s.detail {
+        Detail::Outside(why) => Some(why.to_string()),
+        _ => None,
+    };
+    if let Some(why) = answers.first().and_then(outside)
+        && answers.iter().all(|a| outside(a).is_some())
+    {
+        return Err(Error::ModelFailed {
+            scene: scene.name.clone(),
+            model: "closed-form statics",
+            reason: format!(
+                "at each of its {} points, {} = {} to {} (first: {why}); its sweep would be empty",
+                answers.len(),
+                param.as_str(),
+                spec.axis.min,
+                spec.axis.max
+            ),
+        });
+    }
+    Ok(answers)
 }
 
 /// The Table 1 mu values, ascending.

@@ -57,7 +57,7 @@ fn fig3_regions_agree_with_the_boundary() {
             y: spec.y_axis,
             quantities: vec![crate::grid::Quantity::MarginN],
         },
-        |p| Ok(crate::grid::statics_point(p)),
+        crate::grid::statics_point,
     )
     .unwrap();
     let m = g.margin_n.as_ref().unwrap();

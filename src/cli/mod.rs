@@ -153,6 +153,13 @@ pub fn main() -> i32 {
         Ok(cli) => cli,
         Err(e) => return clap_exit(e),
     };
+    if !stdout_is_open() {
+        eprintln!(
+            "jamchart: standard output is closed, so the answer would be lost; redirect it to a \
+             file or /dev/null instead of closing it (>&-)"
+        );
+        return 2;
+    }
     let result: crate::error::Result<Done> = match &cli.command {
         Command::Solve(a) => solve::run(a).map(Done::from),
         Command::Table(a) => table::run(a).map(Done::from),
@@ -172,13 +179,12 @@ pub fn main() -> i32 {
                 Done::Ok(text) => (text, 0),
                 Done::Failed { text, .. } => (text, 1),
             };
-            let mut out = std::io::stdout().lock();
-            // A closed pipe (`| head`) is not an error worth a message.
-            let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
+            let printed = print(text);
             if let Done::Failed { summary, .. } = &done {
                 eprintln!("jamchart: {summary}");
             }
-            code
+            // A lost answer (exit 2) outranks a failed check (exit 1).
+            printed.max(code)
         }
         Err(e) => {
             eprintln!("jamchart: {}", describe(&e));
@@ -192,6 +198,39 @@ pub fn main() -> i32 {
 pub(crate) fn warn(lines: &[String]) {
     for l in lines {
         eprintln!("jamchart: warning: {l}");
+    }
+}
+
+/// Writes the answer to stdout and returns the exit code: a failed write (a full disk,
+/// `> /dev/full`) lost the answer and is an error, once reported as success with an empty
+/// file. A closed pipe (`| head`) is the reader's choice and not worth a message.
+fn print(text: &str) -> i32 {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
+        Ok(()) => 0,
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => 0,
+        Err(e) => {
+            eprintln!("jamchart: writing the answer to standard output: {e}");
+            2
+        }
+    }
+}
+
+/// Whether file descriptor 1 was open when the process started: `jamchart solve >&-` printed
+/// nothing and exited 0. Rust's runtime reopens a closed standard descriptor on /dev/null
+/// read-write before `main` (a user's `> /dev/null` is write-only), so that is what a closed
+/// stdout looks like here.
+fn stdout_is_open() -> bool {
+    // SAFETY: fcntl and fstat only read the descriptor's state into the local `st`.
+    unsafe {
+        let mut st: libc::stat = std::mem::zeroed();
+        let flags = libc::fcntl(1, libc::F_GETFL);
+        if flags == -1 || libc::fstat(1, &mut st) != 0 {
+            return false;
+        }
+        let dev_null = st.st_mode & libc::S_IFMT == libc::S_IFCHR
+            && (libc::major(st.st_rdev), libc::minor(st.st_rdev)) == (1, 3);
+        !(dev_null && flags & libc::O_ACCMODE == libc::O_RDWR)
     }
 }
 

@@ -6,7 +6,7 @@ use std::str::FromStr;
 use clap::Args;
 use serde::Deserialize;
 
-use super::args::SceneArgs;
+use super::args::{SceneArgs, parse_f64};
 use super::render::{RenderFormat, output_paths, write_rendered};
 use crate::charts::contour_map::ContourMapSpec;
 use crate::charts::spec::Size;
@@ -14,6 +14,7 @@ use crate::charts::sweep::{SweepPanel, SweepSpec};
 use crate::charts::sweep_layers::SweepLayer;
 use crate::charts::{self, ChartSpec, Scene, axis_label};
 use crate::error::Result;
+
 use crate::grid::{AxisScale, GridAxis, GridParam};
 use crate::models::ModelKind;
 
@@ -60,33 +61,55 @@ impl FromStr for AxisArg {
         let (name, range) = s.split_once('=').ok_or_else(usage)?;
         let param = GridParam::deserialize(toml::Value::String(name.trim().to_string()))
             .map_err(|e| format!("'{s}': {}", e.message().trim()))?;
-        let mut parts = range.split(':');
-        let mut number = || -> std::result::Result<f64, String> {
-            parts
-                .next()
-                .and_then(|p| p.trim().parse().ok())
-                .ok_or_else(usage)
+        // Numbers as the flags read them: `1e-400` is refused, never read as 0.
+        let number = |p: Option<&str>| match p {
+            Some(p) => parse_f64(p).map_err(|e| format!("'{s}': {e}")),
+            None => Err(usage()),
         };
-        let (min, max) = (number()?, number()?);
-        let (mut count, mut scale) = (None, AxisScale::Linear);
-        for p in range.split(':').skip(2) {
+        let mut parts = range.split(':');
+        let (min, max) = (number(parts.next())?, number(parts.next())?);
+        let (mut count, mut scale) = (None, None);
+        for p in parts {
+            let twice = |what: &str| format!("'{s}' gives the {what} twice; give it once");
             match p.trim() {
-                "log" => scale = AxisScale::Log,
-                "linear" => scale = AxisScale::Linear,
+                "log" | "linear" if scale.is_some() => return Err(twice("scale")),
+                "log" => scale = Some(AxisScale::Log),
+                "linear" => scale = Some(AxisScale::Linear),
+                _ if count.is_some() => return Err(twice("count")),
                 n => count = Some(n.parse().map_err(|_| usage())?),
             }
         }
-        Ok(AxisArg {
+        let a = AxisArg {
             param,
             min,
             max,
             count,
-            scale,
-        })
+            scale: scale.unwrap_or(AxisScale::Linear),
+        };
+        a.check().map_err(|e| format!("'{s}': {e}"))?;
+        Ok(a)
     }
 }
 
 impl AxisArg {
+    /// The axis and its ends checked as the user wrote them (`radius_mm=0:10` once named the
+    /// flag --radius, and a log axis from 1e-320 was checked only at its ends).
+    fn check(&self) -> std::result::Result<(), String> {
+        let name = self.param.as_str();
+        self.axis(2)
+            .validate(name)
+            .map_err(|e| e.to_string().replace(&format!("{name}."), ""))?;
+        for v in [self.min, self.max] {
+            if let Some(why) = self.param.decl().check.refuse(v) {
+                return Err(format!(
+                    "{name} = {} {why}",
+                    crate::error::cut(&v.to_string())
+                ));
+            }
+        }
+        Ok(())
+    }
+
     fn axis(&self, default_count: usize) -> GridAxis {
         GridAxis {
             param: self.param,

@@ -100,6 +100,8 @@ impl VlocatorArgs {
 pub fn flag_for_key(key: &str) -> Option<&'static str> {
     Some(match key {
         "included_angle_deg" => "--included-angle",
+        "mass_kg * gravity_m_s2" => "--mass and --gravity",
+        "load_n + mass_kg * gravity_m_s2" => "--load, --mass and --gravity",
         "flank_angles" => "--flank-angles",
         "flank_left_deg" | "flank_right_deg" | "flank_left_deg + flank_right_deg" => {
             "--flank-angles or --included-angle"

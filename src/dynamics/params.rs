@@ -198,9 +198,10 @@ settings! {
     /// The time series the simulation records.
     section = "dynamics.series";
     pub struct SeriesSettings {
-        /// Simulated time after the jam, for the time series.
+        /// Simulated time after the jam, for the time series; at most an hour (a push lasts
+        /// seconds and the collapse after a jam a fraction of one: fig5 shows 0.2 s).
         after_jam_s: f64 = 0.0, flag: Some("after-jam"), quantity: "time after the jam",
-            unit: "s", check: Check::AtLeast(0.0);
+            unit: "s", check: Check::Closed(0.0, 3600.0);
     }
 }
 

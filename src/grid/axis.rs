@@ -258,6 +258,23 @@ impl<P: Copy> GridAxis<P> {
                 "a log axis needs min > 0",
             ));
         }
+        // Every sample, not just the ends: the samples are min + (max - min) t or
+        // min (max/min)^t, finite for every t in [0, 1] exactly when the span is. A sweep of
+        // force_n from 1e-300 to 1e300 on a log axis once wrote 39 rows without a force.
+        let (span, what) = match self.scale {
+            AxisScale::Linear => (self.max - self.min, "max - min"),
+            AxisScale::Log => (self.max / self.min, "max / min"),
+        };
+        if !span.is_finite() {
+            return Err(Error::invalid(
+                &format!("{key}.min/max"),
+                format!("{}..{}", self.min, self.max),
+                format!(
+                    "{what} overflows a 64-bit float, so the samples between the ends would not \
+                     be numbers; narrow the range"
+                ),
+            ));
+        }
         // 2^24 samples per axis keeps a grid's index arithmetic and memory sane.
         if !(2..=1 << 24).contains(&self.count) {
             return Err(Error::invalid(

@@ -24,9 +24,8 @@ pub use axis::{AxisScale, GridAxis, GridParam};
 pub use locator::LocatorParam;
 
 use crate::error::{Error, Result};
-use crate::models::Solution;
+use crate::models::{self, Detail, ModelSpec, Solution};
 use crate::scene::{JamStatus, SceneParams};
-use crate::statics;
 
 /// A set of parameters a grid can vary, one named parameter per axis.
 pub trait ParamSet: Copy + Send + Sync {
@@ -75,14 +74,14 @@ impl<S: ParamSet> Grid<S> {
     /// Checks the axes, the cell count, and the parameters at the grid's corners (every
     /// parameter is monotone along its axis, so the corners bound the whole grid).
     pub fn validate(&self) -> Result<()> {
-        self.x.validate("x_axis")?;
+        self.x.validate("chart.x_axis")?;
         let mut cells = self.x.count;
         if let Some(y) = &self.y {
-            y.validate("y_axis")?;
+            y.validate("chart.y_axis")?;
             cells = cells.saturating_mul(y.count);
             if y.param == self.x.param {
                 return Err(Error::invalid(
-                    "y_axis.param",
+                    "chart.y_axis.param",
                     S::param_name(y.param),
                     "the two axes must vary different parameters",
                 ));
@@ -91,7 +90,7 @@ impl<S: ParamSet> Grid<S> {
         }
         if cells > MAX_CELLS {
             return Err(Error::invalid(
-                "x_axis.count * y_axis.count",
+                "chart.x_axis.count * chart.y_axis.count",
                 cells,
                 format!(
                     "a grid has at most {MAX_CELLS} cells (8 bytes each per quantity); \
@@ -198,14 +197,21 @@ impl From<&Solution> for JamPoint {
     }
 }
 
-/// The closed-form jam point of `p` (validated): the cheap model, called directly.
-pub fn statics_point(p: &SceneParams) -> JamPoint {
-    let s = statics::solve(p);
-    JamPoint {
-        status: s.status,
-        theta_jam_deg: s.theta_jam_deg,
-        x_jam_mm: s.x_jam_mm,
-    }
+/// The closed-form jam point of `p`, through the port ([`models::solve`]) so that its "outside
+/// the model" rule applies: a sweep that called the statics directly drew a jam for a push
+/// starting above 90 deg, where `solve` says `outside_model`.
+pub fn statics_point(p: &SceneParams) -> Result<JamPoint> {
+    models::solve(&ModelSpec::Statics, p).map(|s| JamPoint::from(&s))
+}
+
+/// The closed form's F -> infinity limit of `p` (theta_rigid in deg, x_rigid in mm), through
+/// the port like [`statics_point`]: None where the scene lies outside the closed form.
+pub fn rigid_point(p: &SceneParams) -> Result<Option<(f64, Option<f64>)>> {
+    let s = models::solve(&ModelSpec::Statics, p)?;
+    Ok(match s.detail {
+        Detail::Statics(s) => Some((s.theta_rigid_deg, s.x_rigid_mm)),
+        _ => None,
+    })
 }
 
 /// What to evaluate: the base scene, the two axes and the quantities.
@@ -308,7 +314,7 @@ pub fn evaluate(
         wants(Quantity::Status) || wants(Quantity::ThetaJamDeg) || wants(Quantity::XJamMm);
     let points = jam_wanted.then(|| grid.map(&jam_point)).transpose()?;
     let x_rigid_mm = wants(Quantity::XRigidMm)
-        .then(|| grid.map(|p| Ok(statics::rigid_limit(p).1)))
+        .then(|| grid.map(|p| Ok(rigid_point(p)?.and_then(|(_, x)| x))))
         .transpose()?
         .map(|c| c.values);
     let (x_values, y_values) = (req.x.values(), req.y.values());

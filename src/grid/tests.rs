@@ -5,7 +5,7 @@ use crate::statics;
 
 /// The closed form as the grid's jam-point function.
 fn st(p: &SceneParams) -> Result<JamPoint> {
-    Ok(statics_point(p))
+    statics_point(p)
 }
 
 fn mu_theta(nx: usize, ny: usize) -> GridRequest {
@@ -42,7 +42,7 @@ fn a_grid_too_large_to_allocate_is_refused() {
         .unwrap_err()
         .to_string();
     assert!(
-        err.contains("x_axis.count * y_axis.count") && err.contains("40000000000"),
+        err.contains("chart.x_axis.count * chart.y_axis.count") && err.contains("40000000000"),
         "{err}"
     );
     assert!(mu_theta(8192, 8192).validate().is_ok());

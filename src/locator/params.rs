@@ -186,6 +186,27 @@ impl LocatorParams {
     /// error names the TOML key and the offending value.
     pub fn validate(&self) -> Result<()> {
         self.check_declared()?;
+        // Capacities are given per weight: a weight that underflows to 0 or overflows printed
+        // `P_max = 0.000 N = NaN W` (m = g = 1e-300).
+        let w = self.weight_n();
+        if !(w.is_finite() && w >= f64::MIN_POSITIVE) {
+            return Err(Error::invalid(
+                "mass_kg * gravity_m_s2",
+                format!("{} * {} = {w}", self.mass_kg, self.gravity_m_s2),
+                "the weight m g must be a positive number within the range of a 64-bit float \
+                 (capacities are given per weight); scale mass or gravity",
+            ));
+        }
+        // The net force P + W once overflowed inside the solver, whose message named its
+        // internal key `load.force_n`.
+        if !(self.load_n + w).is_finite() {
+            return Err(Error::invalid(
+                "load_n + mass_kg * gravity_m_s2",
+                format!("{} + {w}", self.load_n),
+                "the load and the weight together overflow a 64-bit float; scale both down (the \
+                 verdict depends on their ratio only)",
+            ));
+        }
         let sum = self.flank_left_deg + self.flank_right_deg;
         if !(sum > 0.0 && sum < 180.0) {
             return Err(Error::invalid(

@@ -42,7 +42,7 @@ use serde::Serialize;
 use super::{Reference, SolveFn, Source, Why, reference, why};
 use crate::config::Config;
 use crate::dynamics::{Drive, DynamicsParams, Method};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::models::ModelKind;
 use crate::scene::{JamStatus, SceneParams};
 use crate::statics;
@@ -442,12 +442,30 @@ pub fn run_with(
     methods: &[Source],
 ) -> Result<StabilityReport> {
     for c in cases {
-        c.scene.validate()?;
-        c.dynamics.validate()?;
-        for m in methods {
-            case_config(base, c).validate()?;
-            m.spec(&case_config(base, c)).validate()?;
-        }
+        // A case derives its values from the scene given (barely_moves: F from mu_g), so a
+        // refusal names the case and its rule, not the flag of a value the user never gave
+        // (`stability --cases barely_moves --mu 0` once named --force).
+        let in_case = |e: Error| match e {
+            Error::InvalidValue { key, value, reason } => Error::InvalidValue {
+                key: format!("{key} of case {}", c.name),
+                value,
+                reason: format!(
+                    "{reason}; the case sets it from the scene given ({})",
+                    c.what
+                ),
+            },
+            e => e,
+        };
+        let check = || -> Result<()> {
+            c.scene.validate()?;
+            c.dynamics.validate()?;
+            for m in methods {
+                case_config(base, c).validate()?;
+                m.spec(&case_config(base, c)).validate()?;
+            }
+            Ok(())
+        };
+        check().map_err(in_case)?;
     }
     let t0 = std::time::Instant::now();
     let pairs: Vec<(&Case, &Source)> = cases

@@ -1,0 +1,439 @@
+//! What a second hostile test of the binary found (issue 23), one regression test per class:
+//! sweeps that bypassed the model port, lost output reported as success, values accepted that
+//! should be refused, and the rest as listed in each test's doc comment.
+
+use std::path::Path;
+use std::process::{Command, Output, Stdio};
+
+#[path = "common/cli.rs"]
+mod cli_util;
+use cli_util::{jamchart, repo, stderr, stdout};
+
+/// The rows of `dir/out/NAME.csv` whose first field is `layer`.
+fn layer_rows(dir: &Path, name: &str, layer: &str) -> Vec<String> {
+    let text = std::fs::read_to_string(dir.join("out").join(format!("{name}.csv"))).unwrap();
+    text.lines()
+        .filter(|l| l.starts_with(&format!("{layer},")))
+        .map(str::to_string)
+        .collect()
+}
+
+/// Regression (issue 23, class 1, "sweeps bypass the model port"): `sweep mu=0.1:0.5:3
+/// --start-angle 120` printed `statics,0.1,97.59493,11.70071` with exit 0 where `solve` says
+/// `outside_model` (the palm lifts the disc above 90 deg), and `render fig7b --set
+/// start_angle_deg=120` likewise: the statics and F -> infinity layers called the closed form
+/// directly. They now go through the port: a sweep outside the model at every point is
+/// refused with the reason, and a sweep across 90 deg leaves the rows above it empty.
+#[test]
+fn sweeps_go_through_the_model_ports_outside_rule() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let o = jamchart(
+        d,
+        &[
+            "sweep",
+            "mu=0.1:0.5:3",
+            "--start-angle",
+            "120",
+            "--format",
+            "svg",
+        ],
+    );
+    assert_ne!(o.status.code(), Some(0), "stdout: {}", stdout(&o));
+    assert!(stderr(&o).contains("above 90 deg"), "{}", stderr(&o));
+    assert!(!d.join("out/sweep_mu.csv").exists());
+    let fig7b = repo().join("charts");
+    let o = jamchart(
+        d,
+        &[
+            "render",
+            "fig7b",
+            "--scenes-dir",
+            fig7b.to_str().unwrap(),
+            "--set",
+            "start_angle_deg=120",
+            "--format",
+            "svg",
+        ],
+    );
+    assert_ne!(o.status.code(), Some(0), "stdout: {}", stdout(&o));
+    assert!(stderr(&o).contains("above 90 deg"), "{}", stderr(&o));
+
+    let o = jamchart(d, &["sweep", "start_angle_deg=60:120:4", "--format", "svg"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    for layer in ["statics", "rigid"] {
+        let rows = layer_rows(d, "sweep_start_angle_deg", layer);
+        assert_eq!(rows.len(), 4, "{rows:?}");
+        assert!(!rows[1].ends_with(",,"), "80 deg is answered: {rows:?}");
+        assert_eq!(rows[2], format!("{layer},100,,"), "{rows:?}");
+        assert_eq!(rows[3], format!("{layer},120,,"), "{rows:?}");
+    }
+}
+
+/// Runs `jamchart ARGS` in `dir` through `sh -c` with `redirect` (e.g. `>&-`) on its stdout.
+fn jamchart_redirected(dir: &Path, redirect: &str, args: &[&str]) -> Output {
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!("exec \"$0\" \"$@\" {redirect}"))
+        .arg(env!("CARGO_BIN_EXE_jamchart"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .env_remove("RAYON_NUM_THREADS")
+        .output()
+        .unwrap()
+}
+
+/// Regression (issue 23, class 4, "lost output reported as success"): `table --format csv >
+/// /dev/full` and `solve >&-` exited 0 with nothing written (an empty file on a full disk):
+/// the write's error was dropped, and Rust's stdout swallows EBADF. A failed write and a closed
+/// stdout are now errors with exit 2 and a message; a closed pipe (`| head`) still is not.
+#[test]
+fn a_failed_write_to_stdout_is_an_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (redirect, args, says) in [
+        ("> /dev/full", &["table", "--format", "csv"][..], "space"),
+        ("> /dev/full", &["solve"][..], "space"),
+        (">&-", &["solve"][..], "closed"),
+    ] {
+        let o = jamchart_redirected(d, redirect, args);
+        let e = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?} {redirect}: {e}");
+        assert!(e.starts_with("jamchart: ") && e.contains(says), "{e}");
+        assert!(e.contains("standard output"), "{e}");
+    }
+    let o = jamchart_redirected(d, "| head -c 1 >/dev/null", &["table", "--format", "csv"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stderr(&o), "");
+}
+
+/// A small valid `[chart]` for hand-made scene files.
+const SWEEP_CHART: &str = "[chart]\nkind = \"sweep\"\naxis = { param = \"mu\", min = 0.1, \
+                           max = 0.5, count = 3 }\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n";
+
+/// Asserts `o` was refused with exit 2 and a message naming `setting`, without a panic.
+fn refused(o: &Output, setting: &str) {
+    let e = stderr(o);
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "stdout: {} stderr: {e}",
+        stdout(o)
+    );
+    assert!(e.starts_with("jamchart: "), "{e}");
+    assert!(e.contains(setting), "message should name {setting}: {e}");
+    assert!(!e.contains("panicked"), "{e}");
+}
+
+/// Regression (issue 23, class 7, "accepted when it should be refused"): `sweep mu=1e-400:0.5`
+/// became 0 silently (the README says such numbers are refused), `mu=0.1:0.5:5:7` and
+/// `:log:log` were accepted with the last one winning, and `--set title=`,
+/// `dynamics.series.after_jam_s=1e300` and `chart.cases=[]` (which drew every case) rendered.
+/// Each is now refused with exit 2, naming what was written, before anything is written.
+#[test]
+fn values_that_mean_nothing_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let charts = repo().join("charts");
+    let charts = charts.to_str().unwrap();
+    for (args, names) in [
+        (&["sweep", "mu=1e-400:0.5"][..], "1e-400"),
+        (&["sweep", "mu=0.1:0.5:5:7"][..], "count twice"),
+        (&["sweep", "mu=0.1:0.5:log:log"][..], "scale twice"),
+        (&["vlocator", "--load", "1e-400"][..], "1e-400"),
+        (&["render", "fig7b", "--set", "title="][..], "title"),
+        (&["render", "fig7b", "--set", "title=  "][..], "title"),
+        (
+            &[
+                "render",
+                "fig5",
+                "--set",
+                "dynamics.series.after_jam_s=1e300",
+            ][..],
+            "dynamics.series.after_jam_s",
+        ),
+        (
+            &["render", "stability-matrix", "--set", "chart.cases=[]"][..],
+            "chart.cases",
+        ),
+    ] {
+        let mut args = args.to_vec();
+        if args[0] == "render" {
+            args.extend(["--scenes-dir", charts]);
+        }
+        if args[0] != "vlocator" {
+            args.extend(["--out", "o", "--format", "svg"]);
+        }
+        refused(&jamchart(d, &args), names);
+        assert!(!d.join("o").exists(), "{args:?} wrote output");
+    }
+}
+
+/// Regression (issue 23, class 2, "axis samples that overflow"): only an axis's ends were
+/// checked, so `sweep mu=1e-320:1:5:log` wrote rows with a blank mu, `sweep
+/// force_n=1e-300:1e300:41:log` 39 rows with no force, and a capacity scene with
+/// load_angle_deg from -1e308 to 1e308 rows `30,,`: the span max/min or max - min overflowed.
+/// Every sample is now finite or the axis is refused, naming it as written.
+#[test]
+fn every_axis_sample_is_a_number_or_the_axis_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for axis in [
+        "mu=1e-320:1:5:log",
+        "force_n=1e-300:1e300:41:log",
+        "palm_offset_mm=-1e308:1e308:5",
+    ] {
+        let o = jamchart(d, &["sweep", axis, "--out", "o", "--format", "svg"]);
+        refused(&o, axis);
+        assert!(stderr(&o).contains("overflows"), "{}", stderr(&o));
+        assert!(!d.join("o").exists());
+    }
+    let charts = repo().join("charts");
+    let o = jamchart(
+        d,
+        &[
+            "render",
+            "vlocator-capacity",
+            "--scenes-dir",
+            charts.to_str().unwrap(),
+            "--set",
+            "chart.y_axis={param=\"load_angle_deg\",min=-1e308,max=1e308,count=5}",
+            "--out",
+            "o",
+            "--format",
+            "svg",
+        ],
+    );
+    refused(&o, "chart.y_axis");
+    assert!(stderr(&o).contains("-1e308..1e308"), "{}", stderr(&o));
+    // A wide range that fits is still drawn, each row with its number.
+    let o = jamchart(
+        d,
+        &["sweep", "force_n=1e-150:1e150:41:log", "--format", "svg"],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let rows = layer_rows(d, "sweep_force_n", "statics");
+    assert_eq!(rows.len(), 41);
+    assert!(rows.iter().all(|r| !r.starts_with("statics,,")), "{rows:?}");
+}
+
+/// Regression (issue 23, class 8, "messages that name the wrong flag or garble the value"):
+/// `sweep radius_mm=0:10` named the flag --radius, which the user had not given, and `solve
+/// --rtol 1e300` quoted the value as 301 digits cut to 60. The axis is now refused as written
+/// and long numbers read in exponent form.
+#[test]
+fn messages_name_the_setting_as_written_and_numbers_readably() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let o = jamchart(d, &["sweep", "radius_mm=0:10", "--out", "o"]);
+    refused(&o, "radius_mm=0:10");
+    assert!(!stderr(&o).contains("--radius"), "{}", stderr(&o));
+    let o = jamchart(d, &["solve", "--rtol", "1e300"]);
+    refused(&o, "--rtol");
+    assert!(stderr(&o).contains("= 1e300 "), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("000000"), "{}", stderr(&o));
+}
+
+/// Regression (issue 23, classes 6 and 8): `vlocator --mass 1e-300 --gravity 1e-300` printed
+/// `P_max = 0.000 N = NaN W` with exit 0 (the weight m g underflowed to 0 and capacities are per
+/// weight), and a load and weight that overflow together were refused by the solver naming its
+/// internal key `load.force_n`. Both are refused up front, naming the flags given.
+#[test]
+fn a_weight_out_of_range_is_refused_never_printed_as_nan() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for args in [
+        &["vlocator", "--mass", "1e-300", "--gravity", "1e-300"][..],
+        &[
+            "vlocator",
+            "--mass",
+            "1e300",
+            "--gravity",
+            "1e300",
+            "--format",
+            "json",
+        ][..],
+    ] {
+        let o = jamchart(d, args);
+        refused(&o, "--mass and --gravity");
+        assert!(!stdout(&o).contains("NaN"), "{}", stdout(&o));
+    }
+    let o = jamchart(
+        d,
+        &[
+            "vlocator",
+            "--mass",
+            "1.5e307",
+            "--gravity",
+            "10",
+            "--load",
+            "1.7e308",
+            "--load-angle",
+            "-90",
+        ],
+    );
+    refused(&o, "--load, --mass and --gravity");
+    assert!(!stderr(&o).contains("load.force_n"), "{}", stderr(&o));
+}
+
+/// Runs `jamchart ARGS` in `dir`, killed after 20 s (a hang would otherwise hang the suite;
+/// the time is a guard, not a measurement).
+fn jamchart_guarded(dir: &Path, args: &[&str]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_jamchart"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed().as_secs() > 20 {
+            child.kill().unwrap();
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
+
+/// Regression (issue 23, class 5, "hangs"): a scene file that is a FIFO with no writer blocked
+/// forever, and a scene whose `base` is /dev/zero was read until memory ran out. Settings and
+/// scene files are now opened without blocking, refused unless regular, and read no further
+/// than 4 MiB.
+#[test]
+fn scene_files_must_be_regular_and_small() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let sc = d.join("scenes");
+    std::fs::create_dir_all(&sc).unwrap();
+    let made = Command::new("mkfifo")
+        .arg(sc.join("fifo.toml"))
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let chart = SWEEP_CHART;
+    std::fs::write(
+        sc.join("zero.toml"),
+        format!("title = \"t\"\nbase = \"/dev/zero\"\n{chart}"),
+    )
+    .unwrap();
+    let big = format!("title = \"t\"\n{chart}# {}\n", "x".repeat(5 << 20));
+    std::fs::write(sc.join("big.toml"), big).unwrap();
+    for (name, says) in [
+        ("fifo", "not a regular file"),
+        ("zero", "not a regular file"),
+        ("big", "larger than 4 MiB"),
+    ] {
+        let o = jamchart_guarded(
+            d,
+            &["render", name, "--scenes-dir", "scenes", "--format", "svg"],
+        );
+        refused(&o, says);
+    }
+    let o = jamchart_guarded(d, &["solve", "--config", "scenes/fifo.toml"]);
+    refused(&o, "scenes/fifo.toml");
+}
+
+/// Regression (issue 23, class 9, "leftovers"): under a file-size limit (`ulimit -f`) SIGXFSZ
+/// killed `render fig3` and left `.fig3.csv.<pid>.<n>.tmp` files in the output folder. The
+/// signal is now ignored, the write fails with EFBIG like a full disk, and the run exits 2
+/// with the message, its temporaries and the folder it created removed.
+#[test]
+fn a_file_size_limit_fails_cleanly_without_leftovers() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let o = jamchart_redirected(d, "", &["render", "fig3", "--out", "o", "--format", "svg"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let o = Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -f 100 && exec \"$0\" \"$@\"")
+        .arg(env!("CARGO_BIN_EXE_jamchart"))
+        .args(["render", "fig3", "--out", "capped", "--format", "svg"])
+        .current_dir(d)
+        .output()
+        .unwrap();
+    refused(&o, "File too large");
+    let left: Vec<String> = std::fs::read_dir(d.join("capped"))
+        .map(|r| {
+            r.map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+                .collect()
+        })
+        .unwrap_or_default();
+    assert!(left.is_empty(), "left behind: {left:?}");
+}
+
+/// Regression (issue 23, class 3, "aborts"): a 10 MB scene title took 3 GiB to lay out and
+/// aborted under a 4 GiB limit, and `--set chart.axis.x.x.x...` (10,000 levels) overflowed
+/// the stack. A title has at most 200 characters and a `--set` key at most 8 parts; both are
+/// refused with exit 2 before anything is computed.
+#[test]
+fn huge_titles_and_deep_keys_are_refused_not_aborted() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let sc = d.join("scenes");
+    std::fs::create_dir_all(&sc).unwrap();
+    let chart = SWEEP_CHART;
+    let title = "x".repeat(1 << 20);
+    std::fs::write(
+        sc.join("long.toml"),
+        format!("title = \"{title}\"\n{chart}"),
+    )
+    .unwrap();
+    let o = jamchart_guarded(
+        d,
+        &["render", "long", "--scenes-dir", "scenes", "--out", "o"],
+    );
+    refused(&o, "title");
+    assert!(stderr(&o).len() < 400, "{}", stderr(&o).len());
+    let key = format!("chart.axis.{}x=1", "x.".repeat(10_000));
+    let o = jamchart_guarded(
+        d,
+        &["render", "long", "--scenes-dir", "scenes", "--set", &key],
+    );
+    refused(&o, "at most 8 dotted parts");
+    assert!(!d.join("o").exists());
+}
+
+/// Regression (issue 23, class 8, "paths checked first"): `stability --out-dir` on a dangling
+/// symbolic link computed the whole matrix, then failed creating the folder (and a read-only
+/// folder likewise, for a user other than root). The output paths are now refused before
+/// anything is computed: the run says nothing about the matrix.
+#[test]
+fn output_folders_are_checked_before_computing() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::os::unix::fs::symlink(d.join("nowhere/x"), d.join("dangling")).unwrap();
+    let o = jamchart(
+        d,
+        &[
+            "stability",
+            "--cases",
+            "barely_moves",
+            "--out-dir",
+            "dangling",
+        ],
+    );
+    refused(&o, "dangling symbolic link");
+    assert!(
+        !stderr(&o).contains("stability matrix of"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!d.join("nowhere").exists());
+}
+
+/// Regression (issue 23, class 8): `stability --cases barely_moves --mu 0` was refused naming
+/// the flag --force, which the user never gave: the case derives F = 1.05 m g sin(atan mu_g)
+/// from the scene, 0 for mu = 0. The refusal now names the case and its rule.
+#[test]
+fn a_derived_case_value_names_the_case_not_a_flag() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &["stability", "--cases", "barely_moves", "--mu", "0"],
+    );
+    refused(&o, "case barely_moves");
+    assert!(!stderr(&o).contains("--force"), "{}", stderr(&o));
+}
