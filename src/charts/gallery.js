@@ -4,8 +4,10 @@
 // read-off in a list it can be copied from. Pointer coordinates are mapped through the picture's
 // displayed size, so it works at any zoom and on a phone.
 //
-// Test hook: #readoff=NAME:X[:Y][;NAME:X...] reads chart NAME off at x = X (and y = Y; without
-// it, on the jam map's boundary or the sweep's first curve), pins it and scrolls to it.
+// Test hooks, after `#`, joined by `&`: readoff=NAME:X[:Y][;NAME:X...] reads chart NAME off at
+// x = X (and y = Y; without it, on the jam map's boundary or the sweep's first curve) and pins
+// it; click=NAME:X:Y clicks the displayed picture where (X, Y) is drawn, through the same
+// pointer mapping as a user's click. The body gets data-readoff="done" after them.
 (function () {
   "use strict";
 
@@ -118,12 +120,12 @@
     var py = function (p, v) { var g = c.panels[p].frame; return 1000 * (g.bottom - frac(c.panels[p].y, v) * (g.bottom - g.top)); };
     var u = px(r.panel, x), w = py(r.panel, r.y);
     if (frac(ya, r.y) < 0 || frac(ya, r.y) > 1) return;
-    var line = { stroke: "#d00", "stroke-width": 1, "vector-effect": "non-scaling-stroke", "stroke-dasharray": "4 3" };
+    var line = { stroke: "#e00", "stroke-width": 1.5, "vector-effect": "non-scaling-stroke", "stroke-dasharray": "4 3" };
     svg.appendChild(el("line", Object.assign({ x1: u, y1: w, x2: u, y2: 1000 * f.bottom }, line)));
     svg.appendChild(el("line", Object.assign({ x1: 1000 * f.left, y1: w, x2: u, y2: w }, line)));
     r.marks.forEach(function (m) {
       svg.appendChild(el("ellipse", { cx: px(m[0], m[1]), cy: py(m[0], m[2]), rx: 5, ry: 5,
-        fill: "none", stroke: "#d00", "stroke-width": 2, "vector-effect": "non-scaling-stroke" }));
+        fill: "none", stroke: "#e00", "stroke-width": 2, "vector-effect": "non-scaling-stroke" }));
     });
   }
 
@@ -211,19 +213,31 @@
     });
   });
 
-  // The test hook (see the top of this file).
-  var m = /^#readoff=(.+)$/.exec(decodeURIComponent(location.hash));
-  if (m) {
-    m[1].split(";").forEach(function (req) {
-      var f = req.split(":"), chart = charts[f[0]];
-      if (!chart) return;
-      var x = parseFloat(f[1]), y = f.length > 2 ? parseFloat(f[2]) : null;
-      var r = read(chart.data, 0, x, y);
-      chart.pinned = [r, x];
-      show(chart, r, x);
-      pin(chart, r);
-      chart.img.scrollIntoView();
+  // The test hooks (see the top of this file), once the pictures are laid out.
+  window.addEventListener("load", function () {
+    var hash = decodeURIComponent(location.hash.replace(/^#/, ""));
+    hash.split("&").forEach(function (kv) {
+      var m = /^(readoff|click)=(.+)$/.exec(kv);
+      if (!m) return;
+      m[2].split(";").forEach(function (req) {
+        var f = req.split(":"), chart = charts[f[0]];
+        if (!chart) return;
+        var x = parseFloat(f[1]), y = f.length > 2 ? parseFloat(f[2]) : null;
+        if (m[1] === "readoff") {
+          var r = read(chart.data, 0, x, y);
+          chart.pinned = [r, x];
+          show(chart, r, x);
+          pin(chart, r);
+          return;
+        }
+        // A real click at the displayed pixel of (x, y) in the first panel.
+        var c = chart.data, g = c.panels[0].frame, box = chart.img.getBoundingClientRect();
+        var fx = g.left + frac(c.x, x) * (g.right - g.left);
+        var fy = g.bottom - frac(c.panels[0].y, y) * (g.bottom - g.top);
+        chart.img.parentNode.dispatchEvent(new MouseEvent("click", { bubbles: true,
+          clientX: box.left + fx * box.width, clientY: box.top + fy * box.height }));
+      });
     });
     document.body.setAttribute("data-readoff", "done");
-  }
+  });
 })();
