@@ -35,8 +35,9 @@
 //!
 //! Beside the kinds: `axes` draws frames and ticks that `ticks` places, `colorbar` the colour bar of a
 //! filled map, `labels` words
-//! the axes and subtitles, `contours` maps the contour crate's geometry to plot space, and
-//! `data` holds the data files.
+//! the axes and subtitles, `contours` maps the contour crate's geometry to plot space,
+//! `data` holds the data files, `readoff` what the gallery's read-off embeds (jam maps and
+//! sweeps: plotting areas as drawn, axes, data) and `gallery` writes `index.html`.
 
 pub(crate) mod axes;
 pub(crate) mod builtin;
@@ -129,7 +130,7 @@ pub struct Rendered {
     pub data: DataFile,
     /// A map's cells as long-format CSV (one row per cell), beside its JSON.
     pub cells: Option<DataFile>,
-    /// What the gallery's read-off needs, as compact JSON (see [`readoff`]); None for kinds
+    /// What the gallery's read-off needs, as compact JSON (see `charts/readoff.rs`); None for kinds
     /// without a read-off.
     pub read_off: Option<String>,
 }
