@@ -34,6 +34,9 @@ pub struct Margins {
 }
 
 /// A chart on `area` with the given plot-space axes and margins (no plotters mesh).
+///
+/// Inside [`record_frames`] it also notes where its plotting area lies (the gallery's
+/// read-off maps the pointer through it); drawing is the same either way.
 pub fn build_chart<'a, 'b, DB: DrawingBackend>(
     area: &'a DrawingArea<DB, Shift>,
     x: &PlotAxis,
@@ -43,12 +46,58 @@ pub fn build_chart<'a, 'b, DB: DrawingBackend>(
 where
     'a: 'b,
 {
-    ChartBuilder::on(area)
+    let chart = ChartBuilder::on(area)
         .margin_top(m.top)
         .margin_bottom(m.bottom)
         .margin_left(m.left)
         .margin_right(m.right)
-        .build_cartesian_2d(x.plot_range(), y.plot_range())
+        .build_cartesian_2d(x.plot_range(), y.plot_range())?;
+    FRAMES.with_borrow_mut(|frames| {
+        if let Some(frames) = frames {
+            let (px, py) = chart.plotting_area().get_pixel_range();
+            let (w, h) = area.dim_in_pixel();
+            // plotters maps the minimum to the first pixel and the maximum to the last
+            // (`end - 1`); a value sits at its pixel's centre, half a pixel in.
+            let (w, h) = (f64::from(w), f64::from(h));
+            frames.push(PlotFrame {
+                left: (f64::from(px.start) + 0.5) / w,
+                right: (f64::from(px.end) - 0.5) / w,
+                top: (f64::from(py.start) + 0.5) / h,
+                bottom: (f64::from(py.end) - 0.5) / h,
+            });
+        }
+    });
+    Ok(chart)
+}
+
+/// Where a plotting area lies in the picture, as fractions of its width and height from the
+/// top left, so that it holds at any scale and any displayed size: the centre of the pixel of
+/// the axis minimum is at `left` (x) and `bottom` (y), that of the maximum at `right` and `top`.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct PlotFrame {
+    /// Left edge.
+    pub left: f64,
+    /// Top edge.
+    pub top: f64,
+    /// Right edge.
+    pub right: f64,
+    /// Bottom edge.
+    pub bottom: f64,
+}
+
+thread_local! {
+    /// The frames [`build_chart`] built on this thread, while [`record_frames`] runs.
+    static FRAMES: std::cell::RefCell<Option<Vec<PlotFrame>>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Runs `draw` and returns, beside its result, the plotting areas it built, in order (one per
+/// panel). A drawing runs on one thread, so a thread-local list sees exactly its own charts;
+/// the list is not shared between drawings (a nested call records its own).
+pub fn record_frames<R>(draw: impl FnOnce() -> R) -> (R, Vec<PlotFrame>) {
+    let outer = FRAMES.with_borrow_mut(|f| f.replace(Vec::new()));
+    let r = draw();
+    let frames = FRAMES.with_borrow_mut(|f| std::mem::replace(f, outer));
+    (r, frames.unwrap_or_default())
 }
 
 /// The backend pixel of value point (xv, yv).

@@ -1,6 +1,11 @@
 //! `index.html` beside the rendered charts: each chart with its title, the parameters that made
-//! it and links to its pictures and data. Plain HTML with inline CSS, no scripts, nothing fetched:
-//! it opens from the folder in any browser.
+//! it, the command that reproduces it and links to its pictures and data. Plain HTML with inline
+//! CSS and one inline plain-JS script, nothing fetched: it opens from the folder (file://) in
+//! any browser.
+//!
+//! Charts with a read-off (jam maps, sweeps) carry their [`super::readoff`] JSON beside the
+//! picture; the script (`gallery.js`) shows the values under the pointer with crosshair lines to
+//! the axes, and pins a copyable read-off on a click or tap.
 //!
 //! The page lists every chart in the folder, however many renders wrote it: each chart's section
 //! sits between `<!-- chart NAME -->` and `<!-- /chart -->`, and a render keeps the sections of
@@ -16,6 +21,10 @@ pub struct Entry<'a> {
     pub scene: &'a Scene,
     /// File names in the output folder, data first.
     pub files: Vec<String>,
+    /// The command that reproduces the chart, as a user would type it.
+    pub command: String,
+    /// The read-off data ([`super::readoff`]) as compact JSON; None for kinds without one.
+    pub read_off: Option<&'a str>,
 }
 
 /// Opens a chart's section: `<!-- chart NAME -->`.
@@ -70,6 +79,13 @@ pub fn index_html(entries: &[Entry], previous: Option<&str>, files: &[String]) -
          table { border-collapse: collapse; font-size: 0.9em; margin: 0.5em 0; }\n\
          td, th { padding: 0.15em 0.8em 0.15em 0; text-align: left; }\n\
          code { background: #f3f3f3; padding: 0 0.2em; }\n\
+         figure.readoff { margin: 0; }\n\
+         .plot { position: relative; display: inline-block; max-width: 100%; cursor: crosshair; }\n\
+         .plot img { display: block; }\n\
+         .plot svg.crosshair { position: absolute; left: 0; top: 0; width: 100%; height: 100%; pointer-events: none; }\n\
+         .live { font-family: monospace; font-size: 0.85em; min-height: 2.6em; margin: 0.3em 0; overflow-wrap: anywhere; }\n\
+         ul.pins { font-size: 0.85em; padding-left: 1.2em; }\n\
+         ul.pins code { overflow-wrap: anywhere; }\n\
          </style>\n</head>\n<body>\n<h1>jamchart charts</h1>\n\
          <p>Lengths in mm, forces in N, mass in kg, angles in degrees. Each chart's data is \
          beside it (CSV; maps also JSON).</p>\n<nav>",
@@ -82,9 +98,13 @@ pub fn index_html(entries: &[Entry], previous: Option<&str>, files: &[String]) -
     for (_, html) in &sections {
         s.push_str(html);
     }
+    let _ = write!(s, "<script>\n{READ_OFF_JS}</script>\n");
     s.push_str("</body>\n</html>\n");
     s
 }
+
+/// The read-off script, inline so that the page works from disk with nothing fetched.
+const READ_OFF_JS: &str = include_str!("gallery.js");
 
 /// The chart sections of a page written by [`index_html`]: name and HTML, markers included.
 fn sections_of(page: &str) -> Vec<(String, String)> {
@@ -146,13 +166,17 @@ fn section(s: &mut String, e: &Entry) {
     let picture = ["png", "svg"]
         .iter()
         .find_map(|ext| e.files.iter().find(|f| f.ends_with(&format!(".{ext}"))));
-    if let Some(p) = picture {
-        let p = escape(p);
-        let _ = writeln!(
-            s,
-            "<a href=\"{p}\"><img src=\"{p}\" alt=\"{}\" loading=\"lazy\"></a>",
-            escape(&sc.title)
-        );
+    match (picture, e.read_off) {
+        (Some(p), Some(json)) => read_off_figure(s, &name, &escape(p), &escape(&sc.title), json),
+        (Some(p), None) => {
+            let p = escape(p);
+            let _ = writeln!(
+                s,
+                "<a href=\"{p}\"><img src=\"{p}\" alt=\"{}\" loading=\"lazy\"></a>",
+                escape(&sc.title)
+            );
+        }
+        (None, _) => {}
     }
     let links: Vec<String> = e
         .files
@@ -160,6 +184,7 @@ fn section(s: &mut String, e: &Entry) {
         .map(|f| format!("<a href=\"{0}\">{0}</a>", escape(f)))
         .collect();
     let _ = writeln!(s, "<p>Files: {}</p>", links.join(" · "));
+    let _ = writeln!(s, "<p>Reproduce: <code>{}</code></p>", escape(&e.command));
     // The parameters the chart was drawn with, by their TOML keys: a V-locator chart's V-block,
     // else the palm scene's.
     let (what, table) = match sc.chart.locator() {
@@ -185,6 +210,22 @@ fn section(s: &mut String, e: &Entry) {
     }
     s.push_str("</table>\n</section>\n");
     s.push_str(CLOSE);
+}
+
+/// A picture with a read-off: the picture under a crosshair overlay, its data as JSON (`</` is
+/// escaped so that no value can end the script element), the live read-off and the pinned ones.
+fn read_off_figure(s: &mut String, name: &str, picture: &str, alt: &str, json: &str) {
+    let json = json.replace("</", "<\\/");
+    let _ = write!(
+        s,
+        "<figure class=\"readoff\" data-chart=\"{name}\">\n\
+         <div class=\"plot\"><img src=\"{picture}\" alt=\"{alt}\">\
+         <svg class=\"crosshair\" viewBox=\"0 0 1000 1000\" preserveAspectRatio=\"none\"></svg></div>\n\
+         <script type=\"application/json\" class=\"readoff-data\">{json}</script>\n\
+         <figcaption><p class=\"live\" id=\"readoff-{name}\" aria-live=\"polite\">Point at the chart \
+         to read it off; click or tap to pin the values.</p>\n<ul class=\"pins\"></ul></figcaption>\n\
+         </figure>\n"
+    );
 }
 
 /// `t` with the escapes of [`escape`] undone.
@@ -221,6 +262,8 @@ mod tests {
         let e = Entry {
             scene: &scene,
             files: vec!["x.csv".into(), "x.svg".into(), "x.png".into()],
+            command: "jamchart render x".into(),
+            read_off: None,
         };
         let html = index_html(&[e], None, &[]);
         assert!(html.contains("a &lt;b&gt; &amp; c"), "{html}");
@@ -246,6 +289,8 @@ mod tests {
             files: ["csv", "svg", "png"]
                 .map(|ext| format!("{}.{ext}", scene.name))
                 .into(),
+            command: format!("jamchart render {}", scene.name),
+            read_off: None,
         }
     }
 
@@ -275,6 +320,39 @@ mod tests {
         // A third render keeps them again: the page is stable under re-rendering.
         let third = index_html(&[entry(&fig3)], Some(&second), &files);
         assert_eq!(third, second);
+    }
+
+    /// The gallery had no read-off: a chart with read-off data gets a figure the page's script
+    /// finds (picture, crosshair overlay, its JSON, the live line), the script is inline (the
+    /// page works from file:// with nothing fetched), a `</script>` inside the data cannot end
+    /// its element, and the command that reproduces the chart is shown.
+    #[test]
+    fn a_chart_with_read_off_data_gets_the_read_off_figure_and_script() {
+        let fig3 = built_in("fig3");
+        let json = r#"{"kind":"jam_map","x":{"label":"</script><b>"}}"#;
+        let e = Entry {
+            read_off: Some(json),
+            ..entry(&fig3)
+        };
+        let html = index_html(&[e], None, &[]);
+        assert!(
+            html.contains("<figure class=\"readoff\" data-chart=\"fig3\">"),
+            "{html}"
+        );
+        assert!(html.contains("<svg class=\"crosshair\""), "{html}");
+        assert!(html.contains(r#"{"label":"<\/script><b>"}"#), "{html}");
+        assert_eq!(html.matches("</script>").count(), 2, "data and script only");
+        assert!(html.contains("id=\"readoff-fig3\""), "{html}");
+        assert!(html.contains(READ_OFF_JS), "the script is inline");
+        assert!(!html.contains("src=\"http"), "nothing is fetched");
+        assert!(
+            html.contains("<p>Reproduce: <code>jamchart render fig3</code></p>"),
+            "{html}"
+        );
+        // Without read-off data the picture stays a plain link.
+        let plain = index_html(&[entry(&fig3)], None, &[]);
+        assert!(!plain.contains("<figure"), "{plain}");
+        assert!(plain.contains("<a href=\"fig3.png\"><img"), "{plain}");
     }
 
     /// The V-block charts' sections listed the palm scene's parameters (mu 0.4, 1 kg, 200 N)

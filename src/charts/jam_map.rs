@@ -13,9 +13,10 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::{Deserialize, Serialize};
 use serde_json::json;
 
-use super::axes::{self, Chart, DrawResult, Margins, PlotAxis};
+use super::axes::{self, Chart, DrawResult, Margins, PlotAxis, PlotFrame};
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
+use super::readoff;
 use super::spec::Scene;
 use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
 use super::{
@@ -249,6 +250,37 @@ impl JamMap {
                 ("margin_n", Column::Dense(g.margin_n.as_ref()?)),
             ],
         ))
+    }
+
+    /// What the gallery's read-off needs (see [`super::readoff`]): the plotting area drawn in
+    /// `frames`, the axes, and per column the boundary, its status and the palm's reach.
+    pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+        let frame = frames.first()?;
+        let (x, y) = self.axes();
+        let param = self.spec.x_axis.param;
+        let b = &self.boundary;
+        let reach_deg = b
+            .iter()
+            .map(|(v, _)| param.apply(self.params, *v).reach_angle().to_degrees());
+        let p = &self.params;
+        Some(json!({
+            "kind": "jam_map",
+            "model": self.spec.model,
+            "x": readoff::axis(param.as_str(), &x),
+            "panels": [readoff::panel(frame, readoff::axis(self.spec.y_axis.param.as_str(), &y), None)],
+            "columns": {
+                param.as_str(): readoff::column(b.iter().map(|(v, _)| *v)),
+                "theta_jam_deg": readoff::column(b.iter().map(|(_, q)| q.theta_jam_deg)),
+                "x_jam_mm": readoff::column(b.iter().map(|(_, q)| q.x_jam_mm)),
+                "status": readoff::column(b.iter().map(|(_, q)| q.status)),
+                "reach_deg": readoff::column(reach_deg),
+            },
+            "disc": {
+                "radius_mm": p.radius_mm,
+                "palm_offset_mm": p.palm_offset_mm,
+                "palm_length_mm": p.palm_length_mm,
+            },
+        }))
     }
 
     fn axes(&self) -> (PlotAxis, PlotAxis) {

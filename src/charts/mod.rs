@@ -35,8 +35,9 @@
 //!
 //! Beside the kinds: `axes` draws frames and ticks that `ticks` places, `colorbar` the colour bar of a
 //! filled map, `labels` words
-//! the axes and subtitles, `contours` maps the contour crate's geometry to plot space, and
-//! `data` holds the data files.
+//! the axes and subtitles, `contours` maps the contour crate's geometry to plot space,
+//! `data` holds the data files, `readoff` what the gallery's read-off embeds (jam maps and
+//! sweeps: plotting areas as drawn, axes, data) and `gallery` writes `index.html`.
 
 pub(crate) mod axes;
 pub(crate) mod builtin;
@@ -55,6 +56,7 @@ pub(crate) mod models;
 pub(crate) mod output;
 pub(crate) mod overrides;
 pub(crate) mod print;
+pub(crate) mod readoff;
 pub(crate) mod spec;
 pub(crate) mod stability;
 pub(crate) mod style;
@@ -129,12 +131,25 @@ pub struct Rendered {
     pub data: DataFile,
     /// A map's cells as long-format CSV (one row per cell), beside its JSON.
     pub cells: Option<DataFile>,
+    /// What the gallery's read-off needs, as compact JSON (see `charts/readoff.rs`); None for kinds
+    /// without a read-off.
+    pub read_off: Option<String>,
 }
 
 impl Chart {
     /// Computes what `scene`'s chart draws, with the model the scene names.
     pub fn compute(scene: &Scene) -> Result<Chart> {
         Self::compute_with(scene, &models::Live)
+    }
+
+    /// The gallery's read-off data (see [`readoff`]), given the plotting areas the drawing
+    /// built ([`axes::record_frames`]); None for kinds without one (yet).
+    pub fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
+        match self {
+            Chart::JamMap(c) => c.read_off(frames),
+            Chart::Sweep(c) => c.read_off(frames),
+            _ => None,
+        }
     }
 
     /// Draws on any plotters backend.
@@ -158,36 +173,45 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
     let ((svg, png), (data, cells)) = rayon::join(
         || {
             rayon::join(
-                || -> Result<Option<Vec<u8>>> {
+                || -> Result<Option<(Vec<u8>, Vec<axes::PlotFrame>)>> {
                     if !formats.svg() {
                         return Ok(None);
                     }
-                    output::svg(w, h, scale, scene.style, |root| {
-                        chart.draw(root).map_err(|e| e.to_string())
-                    })
-                    .map(Some)
-                    .map_err(draw_err)
+                    let (bytes, frames) = axes::record_frames(|| {
+                        output::svg(w, h, scale, scene.style, |root| {
+                            chart.draw(root).map_err(|e| e.to_string())
+                        })
+                    });
+                    Ok(Some((bytes.map_err(draw_err)?, frames)))
                 },
-                || -> Result<Option<Vec<u8>>> {
+                || -> Result<Option<(Vec<u8>, Vec<axes::PlotFrame>)>> {
                     if !formats.png() {
                         return Ok(None);
                     }
-                    output::png(w, h, scale, scene.style, |root| {
-                        chart.draw(root).map_err(|e| e.to_string())
-                    })
-                    .map(Some)
-                    .map_err(draw_err)
+                    let (bytes, frames) = axes::record_frames(|| {
+                        output::png(w, h, scale, scene.style, |root| {
+                            chart.draw(root).map_err(|e| e.to_string())
+                        })
+                    });
+                    Ok(Some((bytes.map_err(draw_err)?, frames)))
                 },
             )
         },
         || (chart.data(scene), chart.cells()),
     );
+    let (svg, png) = (svg?, png?);
+    // Both pictures are the same drawing at the same logical size: either one's frames do.
+    let frames = png.as_ref().or(svg.as_ref()).map(|(_, f)| f.as_slice());
+    let read_off = chart
+        .read_off(frames.unwrap_or_default())
+        .map(|v| readoff::rounded(v).to_string());
     Ok(Rendered {
         name: scene.name.clone(),
-        svg: svg?,
-        png: png?,
+        svg: svg.map(|(b, _)| b),
+        png: png.map(|(b, _)| b),
         data,
         cells,
+        read_off,
     })
 }
 

@@ -9,9 +9,10 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::{Deserialize, Serialize};
 
-use super::axes::{self, DrawResult, Margins, PlotAxis};
+use super::axes::{self, DrawResult, Margins, PlotAxis, PlotFrame};
 use super::legend::{self, LegendEntry, LegendGroup, Swatch};
 use super::models::Models;
+use super::readoff;
 use super::spec::Scene;
 use super::style::{self, LineKind, Marker};
 use super::sweep_layers;
@@ -38,6 +39,14 @@ impl SweepPanel {
         match self {
             SweepPanel::XJamMm => "disc position at the jam x_jam (mm)",
             SweepPanel::ThetaJamDeg => "palm angle at the jam θ_jam (deg)",
+        }
+    }
+
+    /// The quantity's name in the data (`x_jam_mm`, `theta_jam_deg`).
+    fn key(self) -> &'static str {
+        match self {
+            SweepPanel::XJamMm => "x_jam_mm",
+            SweepPanel::ThetaJamDeg => "theta_jam_deg",
         }
     }
 
@@ -223,6 +232,46 @@ impl Sweep {
                 .map(|p| (ser.layer, Dec(p.at), dec(p.x_jam_mm), dec(p.theta_jam_deg)))
         });
         DataFile::csv(to_csv_with_header(&header, rows))
+    }
+
+    /// What the gallery's read-off needs (see [`super::readoff`]): one plotting area of
+    /// `frames` per panel with its quantity, the x axis, and every series' points.
+    pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+        if frames.len() != self.spec.panels.len() {
+            return None;
+        }
+        let a = &self.spec.axis;
+        let x = PlotAxis::new(a.min, a.max, a.scale, axis_label(a.param));
+        let panels: Vec<_> = self
+            .spec
+            .panels
+            .iter()
+            .zip(frames)
+            .map(|(panel, frame)| {
+                let y = readoff::axis(panel.key(), &self.panel_axis(*panel));
+                readoff::panel(frame, y, Some(panel.key()))
+            })
+            .collect();
+        let series: Vec<_> = self
+            .series
+            .iter()
+            .map(|s| {
+                serde_json::json!({
+                    "label": s.label,
+                    "layer": s.layer,
+                    "line": matches!(s.style, SeriesStyle::Line(_)),
+                    "at": readoff::column(s.points.iter().map(|p| p.at)),
+                    "x_jam_mm": readoff::column(s.points.iter().map(|p| p.x_jam_mm)),
+                    "theta_jam_deg": readoff::column(s.points.iter().map(|p| p.theta_jam_deg)),
+                })
+            })
+            .collect();
+        Some(serde_json::json!({
+            "kind": "sweep",
+            "x": readoff::axis(a.param.as_str(), &x),
+            "panels": panels,
+            "series": series,
+        }))
     }
 
     fn legend(&self) -> Vec<LegendEntry> {

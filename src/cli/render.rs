@@ -183,6 +183,44 @@ pub fn output_paths(
 }
 
 /// The files of rendered scene `r` in `out`: paths and bytes, data first.
+/// The command that renders scene `name` as this run did: the scene by its built-in name, else
+/// the scene arguments as given (a file or folder), with the run's `--set`, `--scenes-dir` and
+/// `--out`.
+fn reproduce_command(a: &RenderArgs, name: &str) -> String {
+    let builtin = a.scenes_dir.is_none() && charts::builtin_scene_names().iter().any(|n| n == name);
+    let mut words = vec!["jamchart".to_string(), "render".to_string()];
+    if builtin {
+        words.push(name.to_string());
+    } else {
+        words.extend(a.scenes.iter().cloned());
+    }
+    if let Some(dir) = &a.scenes_dir {
+        words.push("--scenes-dir".into());
+        words.push(dir.display().to_string());
+    }
+    for s in &a.set {
+        words.push("--set".into());
+        words.push(s.to_string());
+    }
+    words.push("--out".into());
+    words.push(a.out.display().to_string());
+    words
+        .iter()
+        .map(|w| shell_word(w))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// `w` quoted for a POSIX shell when it holds anything but plain characters.
+fn shell_word(w: &str) -> String {
+    let plain = |c: char| c.is_ascii_alphanumeric() || "-_./=:,+@%".contains(c);
+    if !w.is_empty() && w.chars().all(plain) {
+        w.to_string()
+    } else {
+        format!("'{}'", w.replace('\'', "'\\''"))
+    }
+}
+
 fn files_of<'a>(out: &Path, r: &'a Rendered) -> Vec<(PathBuf, &'a [u8])> {
     let cells = r.cells.as_ref();
     let all = [
@@ -284,6 +322,8 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
                 .iter()
                 .map(|(p, _)| p.display().to_string())
                 .collect(),
+            command: reproduce_command(a, &scene.name),
+            read_off: r.read_off.as_deref(),
         })
         .collect();
     // The page lists every chart in the folder: the previous page's sections of charts not

@@ -1,0 +1,243 @@
+// The gallery's read-off (plain JS, nothing fetched): hovering or tapping a chart shows the values
+// under the pointer from the chart's own data, embedded beside its picture as JSON (the shape is
+// documented in src/charts/readoff.rs), with crosshair lines to the axes; a click pins the
+// read-off in a list it can be copied from. Pointer coordinates are mapped through the picture's
+// displayed size, so it works at any zoom and on a phone.
+//
+// Test hooks, after `#`, joined by `&`: readoff=NAME:X[:Y][;NAME:X...] reads chart NAME off at
+// x = X (and y = Y; without it, on the jam map's boundary or the sweep's first curve) and pins
+// it; click=NAME:X:Y clicks the displayed picture where (X, Y) is drawn, through the same
+// pointer mapping as a user's click. The body gets data-readoff="done" after them.
+(function () {
+  "use strict";
+
+  function num(v) {
+    if (v === null || v === undefined || !isFinite(v)) return "none";
+    return String(Number(v.toPrecision(5)));
+  }
+  // Plot space: ln for log axes, as the chart draws.
+  function plot(a, v) { return a.log ? Math.log(v) : v; }
+  function unplot(a, u) { return a.log ? Math.exp(u) : u; }
+  // Fraction of the axis (0 at min, 1 at max) and back.
+  function frac(a, v) { return (plot(a, v) - plot(a, a.min)) / (plot(a, a.max) - plot(a, a.min)); }
+  function value(a, f) { return unplot(a, plot(a, a.min) + f * (plot(a, a.max) - plot(a, a.min))); }
+
+  // ys at x, straight in plot space between samples (as the chart draws its lines); null off
+  // the samples or where a neighbour has no value.
+  function interp(xa, ya, xs, ys, x) {
+    var u = plot(xa, x), i;
+    for (i = 0; i + 1 < xs.length; i++) {
+      var u0 = plot(xa, xs[i]), u1 = plot(xa, xs[i + 1]);
+      if ((u0 <= u && u <= u1) || (u1 <= u && u <= u0)) {
+        var y0 = ys[i], y1 = ys[i + 1];
+        if (y0 === null || y1 === null) return Math.abs(u - u0) <= Math.abs(u1 - u) ? y0 : y1;
+        if (u1 === u0) return y0;
+        var t = (u - u0) / (u1 - u0);
+        if (!ya) return y0 + t * (y1 - y0);
+        return unplot(ya, plot(ya, y0) + t * (plot(ya, y1) - plot(ya, y0)));
+      }
+    }
+    return null;
+  }
+
+  // The sample nearest x in plot space: [index, distance as a fraction of the axis].
+  function nearest(xa, xs, x) {
+    var best = -1, d = Infinity;
+    for (var i = 0; i < xs.length; i++) {
+      var e = Math.abs(frac(xa, xs[i]) - frac(xa, x));
+      if (e < d) { d = e; best = i; }
+    }
+    return [best, d];
+  }
+
+  // The read-off of chart `c` at (x, y) in panel `p`: text and the points to mark.
+  function readJamMap(c, x, y) {
+    var col = c.columns, xs = col[c.x.param], ya = c.panels[0].y;
+    var tj = interp(c.x, ya, xs, col.theta_jam_deg, x);
+    var xj = interp(c.x, null, xs, col.x_jam_mm, x);
+    var reach = interp(c.x, null, xs, col.reach_deg, x);
+    var st = col.status[nearest(c.x, xs, x)[0]];
+    if (y === null) y = tj;
+    var status = y === null ? "none"
+      : reach !== null && y < reach ? "beyond_reach"
+      : tj !== null && y <= tj ? "jam" : "slide";
+    var d = c.disc, th = y === null ? NaN : y * Math.PI / 180;
+    var pos = d.radius_mm / Math.tan(th / 2) + d.palm_offset_mm / Math.sin(th);
+    var text = c.x.param + " = " + num(x) + "  theta_deg = " + num(y) + "  status = " + status +
+      "  x_mm = " + num(pos) + " | boundary (" + c.model + ", " + st + "): theta_jam_deg = " +
+      num(tj) + "  x_jam_mm = " + num(xj);
+    var values = { model: c.model, theta_deg: y, status: status, x_mm: pos,
+      boundary_status: st, theta_jam_deg: tj, x_jam_mm: xj };
+    values[c.x.param] = x;
+    return { text: text, panel: 0, y: y, marks: tj === null ? [] : [[0, x, tj]], values: values };
+  }
+
+  function readSweep(c, p, x, y) {
+    var q = c.panels[p].quantity, parts = [], marks = [], curves = [];
+    c.series.forEach(function (s) {
+      var v, at = x;
+      if (s.line) {
+        v = interp(c.x, null, s.at, s[q], x);
+      } else {
+        var n = nearest(c.x, s.at, x);
+        // Markers are read only within 2 % of the axis of the pointer.
+        if (n[0] < 0 || n[1] > 0.02) return;
+        at = s.at[n[0]];
+        v = s[q][n[0]];
+      }
+      if (v === null || v === undefined) return;
+      if (y === null) y = v;
+      marks.push([p, at, v]);
+      curves.push({ label: s.label, layer: s.layer, at: at, value: v });
+      parts.push(s.label + ": " + q + " = " + num(v) + (at !== x ? " at " + c.x.param + " = " + num(at) : ""));
+    });
+    var text = c.x.param + " = " + num(x) + "  pointer " + q + " = " + num(y) + " | " +
+      (parts.length ? parts.join(" | ") : "no curve here");
+    var values = { quantity: q, pointer: y, curves: curves };
+    values[c.x.param] = x;
+    return { text: text, panel: p, y: y, marks: marks, values: values };
+  }
+
+  function read(c, p, x, y) {
+    return c.kind === "jam_map" ? readJamMap(c, x, y) : readSweep(c, p, x, y);
+  }
+
+  var NS = "http://www.w3.org/2000/svg";
+  function el(tag, attrs) {
+    var e = document.createElementNS(NS, tag);
+    for (var k in attrs) e.setAttribute(k, attrs[k]);
+    return e;
+  }
+
+  // Crosshair lines from the read point to the left and bottom axes, and a dot on each mark,
+  // in a 1000 x 1000 viewBox stretched over the picture.
+  function draw(chart, r, x) {
+    var svg = chart.overlay, c = chart.data;
+    while (svg.firstChild) svg.removeChild(svg.firstChild);
+    if (!r || r.y === null || r.y === undefined) return;
+    var f = c.panels[r.panel].frame, ya = c.panels[r.panel].y;
+    var px = function (p, v) { var g = c.panels[p].frame; return 1000 * (g.left + frac(c.x, v) * (g.right - g.left)); };
+    var py = function (p, v) { var g = c.panels[p].frame; return 1000 * (g.bottom - frac(c.panels[p].y, v) * (g.bottom - g.top)); };
+    var u = px(r.panel, x), w = py(r.panel, r.y);
+    if (frac(ya, r.y) < 0 || frac(ya, r.y) > 1) return;
+    var line = { stroke: "#e00", "stroke-width": 1.5, "vector-effect": "non-scaling-stroke", "stroke-dasharray": "4 3" };
+    svg.appendChild(el("line", Object.assign({ x1: u, y1: w, x2: u, y2: 1000 * f.bottom }, line)));
+    svg.appendChild(el("line", Object.assign({ x1: 1000 * f.left, y1: w, x2: u, y2: w }, line)));
+    r.marks.forEach(function (m) {
+      svg.appendChild(el("ellipse", { cx: px(m[0], m[1]), cy: py(m[0], m[2]), rx: 5, ry: 5,
+        fill: "none", stroke: "#e00", "stroke-width": 2, "vector-effect": "non-scaling-stroke" }));
+    });
+  }
+
+  // Pins read-off `r` under the chart: its text, a copy button, and its values at full
+  // precision in `data-values` (JSON) for scripts and tests.
+  function pin(chart, r) {
+    var li = document.createElement("li"), code = document.createElement("code");
+    var b = document.createElement("button"), text = r.text;
+    li.setAttribute("data-values", JSON.stringify(r.values));
+    code.textContent = text;
+    b.type = "button";
+    b.textContent = "copy";
+    b.addEventListener("click", function () {
+      if (navigator.clipboard && navigator.clipboard.writeText) {
+        navigator.clipboard.writeText(text).catch(function () { select(code); });
+      } else {
+        select(code);
+      }
+    });
+    li.appendChild(code);
+    li.appendChild(document.createTextNode(" "));
+    li.appendChild(b);
+    chart.pins.appendChild(li);
+  }
+
+  // Selects the text of `e`, so that Ctrl+C / the phone's copy copies it.
+  function select(e) {
+    var range = document.createRange();
+    range.selectNodeContents(e);
+    var s = window.getSelection();
+    s.removeAllRanges();
+    s.addRange(range);
+  }
+
+  function show(chart, r, x) {
+    chart.live.textContent = r ? r.text : chart.hint;
+    draw(chart, r, x);
+  }
+
+  // The panel under a pointer event and its data coordinates, or null off every plot.
+  function at(chart, ev) {
+    var box = chart.img.getBoundingClientRect();
+    var fx = (ev.clientX - box.left) / box.width, fy = (ev.clientY - box.top) / box.height;
+    var c = chart.data;
+    for (var p = 0; p < c.panels.length; p++) {
+      var f = c.panels[p].frame;
+      if (fx >= f.left && fx <= f.right && fy >= f.top && fy <= f.bottom) {
+        return [p, value(c.x, (fx - f.left) / (f.right - f.left)),
+          value(c.panels[p].y, (f.bottom - fy) / (f.bottom - f.top))];
+      }
+    }
+    return null;
+  }
+
+  var charts = {};
+  document.querySelectorAll("figure.readoff").forEach(function (fig) {
+    var chart = {
+      data: JSON.parse(fig.querySelector("script.readoff-data").textContent),
+      img: fig.querySelector("img"),
+      overlay: fig.querySelector("svg.crosshair"),
+      live: fig.querySelector(".live"),
+      pins: fig.querySelector("ul.pins"),
+      pinned: null,
+    };
+    chart.hint = chart.live.textContent;
+    charts[fig.getAttribute("data-chart")] = chart;
+    var wrap = fig.querySelector(".plot");
+    wrap.addEventListener("pointermove", function (ev) {
+      var a = at(chart, ev);
+      if (a) show(chart, read(chart.data, a[0], a[1], a[2]), a[1]);
+      else if (chart.pinned) show(chart, chart.pinned[0], chart.pinned[1]);
+      else show(chart, null);
+    });
+    wrap.addEventListener("pointerleave", function () {
+      if (chart.pinned) show(chart, chart.pinned[0], chart.pinned[1]);
+      else show(chart, null);
+    });
+    wrap.addEventListener("click", function (ev) {
+      var a = at(chart, ev);
+      if (!a) return;
+      var r = read(chart.data, a[0], a[1], a[2]);
+      chart.pinned = [r, a[1]];
+      show(chart, r, a[1]);
+      pin(chart, r);
+    });
+  });
+
+  // The test hooks (see the top of this file), once the pictures are laid out.
+  window.addEventListener("load", function () {
+    var hash = decodeURIComponent(location.hash.replace(/^#/, ""));
+    hash.split("&").forEach(function (kv) {
+      var m = /^(readoff|click)=(.+)$/.exec(kv);
+      if (!m) return;
+      m[2].split(";").forEach(function (req) {
+        var f = req.split(":"), chart = charts[f[0]];
+        if (!chart) return;
+        var x = parseFloat(f[1]), y = f.length > 2 ? parseFloat(f[2]) : null;
+        if (m[1] === "readoff") {
+          var r = read(chart.data, 0, x, y);
+          chart.pinned = [r, x];
+          show(chart, r, x);
+          pin(chart, r);
+          return;
+        }
+        // A real click at the displayed pixel of (x, y) in the first panel.
+        var c = chart.data, g = c.panels[0].frame, box = chart.img.getBoundingClientRect();
+        var fx = g.left + frac(c.x, x) * (g.right - g.left);
+        var fy = g.bottom - frac(c.panels[0].y, y) * (g.bottom - g.top);
+        chart.img.parentNode.dispatchEvent(new MouseEvent("click", { bubbles: true,
+          clientX: box.left + fx * box.width, clientY: box.top + fy * box.height }));
+      });
+    });
+    document.body.setAttribute("data-readoff", "done");
+  });
+})();

@@ -1,0 +1,157 @@
+//! What the gallery's read-off needs of a chart, embedded in `index.html` as JSON: where each
+//! plotting area lies in the picture, its axes (range and scale) and the chart's own data.
+//!
+//! A page opened from disk cannot fetch its CSV, so the page carries this instead; it stays
+//! small: a jam map gives its boundary per column and the rule that turns it into a status
+//! (not its 160k cells), a sweep its curves. The frames come from the drawing itself
+//! ([`super::axes::record_frames`]), so pointer and picture cannot disagree.
+//!
+//! Shape (`kind` decides the data keys):
+//! ```text
+//! { "kind": "jam_map" | "sweep", "x": AXIS,
+//!   "panels": [{ "frame": { "left", "top", "right", "bottom" }, "y": AXIS, "quantity"? }],
+//!   jam_map: "model", "columns": { PARAM, "theta_jam_deg", "x_jam_mm", "status", "reach_deg" },
+//!            "disc": { "radius_mm", "palm_offset_mm", "palm_length_mm" }
+//!   sweep:   "series": [{ "label", "layer", "line", "at", "x_jam_mm", "theta_jam_deg" }] }
+//! AXIS = { "param", "label", "min", "max", "log" }
+//! ```
+//! A jam map's status at (v, theta): `beyond_reach` when theta < reach_deg(v) (the contact lies
+//! past the palm's end), else `jam` when theta <= theta_jam_deg(v) (margin >= 0), else `slide`.
+
+use serde::Serialize;
+use serde_json::{Value, json};
+
+use super::axes::{PlotAxis, PlotFrame};
+use crate::grid::AxisScale;
+
+/// An axis as the read-off sees it: its parameter key, label, range and scale.
+pub fn axis(param: &str, a: &PlotAxis) -> Value {
+    json!({
+        "param": param,
+        "label": a.label,
+        "min": a.min,
+        "max": a.max,
+        "log": a.scale == AxisScale::Log,
+    })
+}
+
+/// One panel: its frame in the picture and its y axis (and the quantity it shows, if any).
+pub fn panel(frame: &PlotFrame, y: Value, quantity: Option<&str>) -> Value {
+    let mut p = json!({ "frame": frame, "y": y });
+    if let Some(q) = quantity {
+        p["quantity"] = q.into();
+    }
+    p
+}
+
+/// A column of optional numbers as JSON (`null` where there is none).
+pub fn column<T: Serialize>(values: impl Iterator<Item = T>) -> Value {
+    Value::Array(values.map(|v| json!(v)).collect())
+}
+
+/// `doc` with every number rounded to 7 significant digits: finer than any chart's resolution
+/// (a pixel is 1e-3 of an axis), and `0.10200000000000001` becomes `0.102`, which keeps the
+/// page small.
+pub fn rounded(doc: Value) -> Value {
+    match doc {
+        Value::Number(n) => match n.as_f64() {
+            Some(v) if n.is_f64() && v.is_finite() => {
+                json!(format!("{v:.6e}").parse::<f64>().unwrap_or(v))
+            }
+            _ => Value::Number(n),
+        },
+        Value::Array(a) => Value::Array(a.into_iter().map(rounded).collect()),
+        Value::Object(o) => Value::Object(o.into_iter().map(|(k, v)| (k, rounded(v))).collect()),
+        other => other,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::charts::{Formats, SceneSource, render};
+
+    /// The pixel of (x, y) in a `w` x `h` picture, through the read-off's first panel as the
+    /// page maps it (frames are at pixel centres).
+    fn pixel_of(doc: &Value, x: f64, y: f64, (w, h): (u32, u32)) -> (usize, usize) {
+        let f = &doc["panels"][0]["frame"];
+        let frac = |a: &Value, v: f64| {
+            let (lo, hi) = (a["min"].as_f64().unwrap(), a["max"].as_f64().unwrap());
+            match a["log"].as_bool().unwrap() {
+                true => (v / lo).ln() / (hi / lo).ln(),
+                false => (v - lo) / (hi - lo),
+            }
+        };
+        let e = |k: &str| f[k].as_f64().unwrap();
+        let u = e("left") + frac(&doc["x"], x) * (e("right") - e("left"));
+        let v = e("bottom") - frac(&doc["panels"][0]["y"], y) * (e("bottom") - e("top"));
+        (
+            (u * f64::from(w) - 0.5).round() as usize,
+            (v * f64::from(h) - 0.5).round() as usize,
+        )
+    }
+
+    /// RGB of pixel (i, j) of a PNG.
+    fn rgb_at(png_bytes: &[u8], (i, j): (usize, usize)) -> [u8; 3] {
+        let mut r = png::Decoder::new(std::io::Cursor::new(png_bytes))
+            .read_info()
+            .unwrap();
+        let palette = r.info().palette.clone().map(|p| p.into_owned());
+        let width = r.info().width as usize;
+        let mut buf = vec![0; r.output_buffer_size()];
+        r.next_frame(&mut buf).unwrap();
+        match palette {
+            Some(p) => {
+                let k = 3 * buf[j * width + i] as usize;
+                [p[k], p[k + 1], p[k + 2]]
+            }
+            None => {
+                let k = 3 * (j * width + i);
+                [buf[k], buf[k + 1], buf[k + 2]]
+            }
+        }
+    }
+
+    /// The gallery had no read-off: its frames must put a value where the chart drew it.
+    /// fig3 draws its own read-off (mu 0.4, theta_jam 44.6 deg) as a black dot of radius 5;
+    /// mapped through the exported frame and axes, that point lands on the dot, at scale 1 and
+    /// at scale 2 (a frame in logical px would be off by half the picture at scale 2).
+    #[test]
+    fn the_read_off_frame_puts_fig3s_jam_point_on_its_dot() {
+        for (scale, w, h) in [(1.0, 1000, 950), (2.0, 2000, 1900)] {
+            let mut scene = SceneSource::BuiltIn("fig3".into()).load(&[]).unwrap();
+            scene.size.scale = scale;
+            (scene.size.width_px, scene.size.height_px) = (w, h);
+            let r = render(&scene, Formats::Png).unwrap();
+            let doc: Value = serde_json::from_str(r.read_off.as_deref().unwrap()).unwrap();
+            let data: Value = serde_json::from_slice(&r.data.bytes).unwrap();
+            let (mu, theta) = (
+                data["read_off"]["mu"].as_f64().unwrap(),
+                data["read_off"]["theta_jam_deg"].as_f64().unwrap(),
+            );
+            let at = pixel_of(&doc, mu, theta, (w, h));
+            let [r_, g, b] = rgb_at(r.png.as_deref().unwrap(), at);
+            assert!(
+                u32::from(r_) + u32::from(g) + u32::from(b) < 120,
+                "scale {scale}: pixel {at:?} is {:?}, not the dot's ink",
+                [r_, g, b]
+            );
+            // The frame's corner is the axis corner: (0.1, 10 deg) is on the frame's ink too.
+            let corner = pixel_of(&doc, 0.1, 10.0, (w, h));
+            let [r_, g, b] = rgb_at(r.png.as_deref().unwrap(), corner);
+            assert!(
+                u32::from(r_) + u32::from(g) + u32::from(b) < 200,
+                "{corner:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn rounding_keeps_seven_significant_digits() {
+        let doc = json!({ "a": [0.10200000000000001, 30.951435839204933, null, 3], "b": "x" });
+        assert_eq!(
+            rounded(doc).to_string(),
+            r#"{"a":[0.102,30.95144,null,3],"b":"x"}"#
+        );
+    }
+}

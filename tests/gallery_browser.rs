@@ -1,0 +1,258 @@
+//! The gallery's read-off in a real browser: headless Chromium (Debian's `chromium`) loads the
+//! rendered `index.html` from disk, reads charts off through the page's test hooks
+//! (`src/charts/gallery.js`) and the read-off is checked against `jamchart solve` for the same
+//! inputs and against the chart's own cells; screenshots are saved under
+//! `target/tmp/gallery_browser/` to look at.
+//!
+//! Under CI (`CI=true`) a browser that cannot run fails the test; locally, without chromium,
+//! it is skipped with the reason printed. `.ci/run` installs chromium when it is missing.
+//! `JAMCHART_CHROMIUM` names another Chromium binary.
+
+#[path = "common/cli.rs"]
+mod cli_util;
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use cli_util::{jamchart, json};
+use serde_json::Value;
+
+/// The browser to drive, or None (after failing under CI) when there is none.
+fn chromium() -> Option<PathBuf> {
+    let named = std::env::var_os("JAMCHART_CHROMIUM").map(PathBuf::from);
+    let found = named.or_else(|| {
+        ["chromium", "chromium-browser"].iter().find_map(|name| {
+            std::env::var_os("PATH").and_then(|paths| {
+                std::env::split_paths(&paths)
+                    .map(|d| d.join(name))
+                    .find(|p| p.is_file())
+            })
+        })
+    });
+    if found.is_none() {
+        let reason = "no chromium on PATH (apt-get install chromium, or set JAMCHART_CHROMIUM)";
+        assert!(
+            std::env::var("CI").as_deref() != Ok("true"),
+            "CI=true and {reason}: the browser test must run in CI"
+        );
+        eprintln!("skipped: {reason}");
+    }
+    found
+}
+
+/// Runs headless chromium on `url` with `args`; panics with its stderr when it fails.
+fn run_chromium(browser: &Path, url: &str, args: &[&str]) -> String {
+    let profile = tempfile::tempdir().unwrap();
+    let out = Command::new(browser)
+        .args([
+            "--headless",
+            // Root in a container has no user namespace for the sandbox.
+            "--no-sandbox",
+            "--disable-gpu",
+            "--hide-scrollbars",
+            "--no-first-run",
+            "--virtual-time-budget=5000",
+        ])
+        .arg(format!("--user-data-dir={}", profile.path().display()))
+        .args(args)
+        .arg(url)
+        .output()
+        .expect("chromium starts");
+    assert!(
+        out.status.success(),
+        "chromium failed ({}): {}",
+        out.status,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// The pinned read-offs of chart `name` in a dumped DOM: each pin's `data-values`, in order.
+fn pins(dom: &str, name: &str) -> Vec<Value> {
+    let start = dom
+        .find(&format!("<figure class=\"readoff\" data-chart=\"{name}\">"))
+        .unwrap_or_else(|| panic!("no read-off figure for {name}"));
+    let figure = &dom[start..start + dom[start..].find("</figure>").unwrap()];
+    figure
+        .split("data-values=\"")
+        .skip(1)
+        .map(|s| {
+            let raw = &s[..s.find('"').unwrap()];
+            let text = raw
+                .replace("&quot;", "\"")
+                .replace("&lt;", "<")
+                .replace("&gt;", ">")
+                .replace("&amp;", "&");
+            serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"))
+        })
+        .collect()
+}
+
+/// `solve`'s statics result for friction `mu`: (theta_jam_deg, x_jam_mm).
+fn solve(dir: &Path, mu: f64) -> (f64, f64) {
+    let doc = json(&jamchart(
+        dir,
+        &["solve", "--mu", &mu.to_string(), "--format", "json"],
+    ));
+    let r = &doc["results"][0];
+    (
+        r["theta_jam_deg"].as_f64().unwrap(),
+        r["x_jam_mm"].as_f64().unwrap(),
+    )
+}
+
+/// The region fig3's cells CSV gives the cell nearest (mu, theta).
+fn cell_region(csv: &str, mu: f64, theta: f64) -> String {
+    let mut best = (f64::INFINITY, String::new());
+    for line in csv.lines().skip(1) {
+        let f: Vec<&str> = line.split(',').collect();
+        let (m, t): (f64, f64) = (f[0].parse().unwrap(), f[1].parse().unwrap());
+        let d = ((m - mu) / 0.4).abs() + (t / theta).ln().abs();
+        if d < best.0 {
+            best = (d, f[2].to_string());
+        }
+    }
+    best.1
+}
+
+fn num(v: &Value, key: &str) -> f64 {
+    v[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{key} missing in {v}"))
+}
+
+/// Reddish pixels in a PNG screenshot (the crosshair is #e00; the chart's orange read-off
+/// lines count too, so compare two screenshots).
+fn red_pixels(png_path: &Path) -> usize {
+    let file = std::fs::File::open(png_path).unwrap();
+    let mut r = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .unwrap();
+    let mut buf = vec![0; r.output_buffer_size()];
+    let info = r.next_frame(&mut buf).unwrap();
+    let step = info.color_type.samples();
+    buf[..info.buffer_size()]
+        .chunks_exact(step)
+        .filter(|p| p[0] > 150 && p[0] > p[1].saturating_add(100) && p[1].abs_diff(p[2]) < 30)
+        .count()
+}
+
+/// The gallery had no read-off and no test in a browser: in Chromium, fig3's read-off at mu
+/// 0.27 gives `solve`'s theta_jam and x_jam within the chart's resolution (one cell of its
+/// theta axis), the status above and below the boundary is the cells', fig6's statics curve
+/// gives `solve`'s x_jam, and a real click on a phone-sized page lands where it was aimed.
+#[test]
+fn the_gallery_reads_charts_off_in_chromium_as_solve_does() {
+    let Some(browser) = chromium() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let r = jamchart(
+        dir.path(),
+        &["render", "fig3", "fig6", "--out", "out", "--format", "png"],
+    );
+    assert_eq!(r.status.code(), Some(0), "{}", cli_util::stderr(&r));
+    let page = out.join("index.html");
+    let url = |hash: &str| format!("file://{}#{hash}", page.display());
+
+    let mu = 0.27;
+    let hook = format!("readoff=fig3:{mu};fig3:{mu}:20;fig3:{mu}:50;fig6:0.3");
+    let dom = run_chromium(&browser, &url(&hook), &["--dump-dom"]);
+    assert!(
+        dom.contains("data-readoff=\"done\""),
+        "the hook did not run"
+    );
+    let fig3 = pins(&dom, "fig3");
+    assert_eq!(fig3.len(), 3, "{fig3:?}");
+
+    // On the boundary: theta_jam and x_jam as solve gives them.
+    let (theta, x) = solve(dir.path(), mu);
+    let on = &fig3[0];
+    let (t_err, x_err) = (num(on, "theta_jam_deg") - theta, num(on, "x_jam_mm") - x);
+    // One cell of fig3's theta axis (401 rows, log 10..70 deg) at theta_jam, and the x that
+    // cell spans (x = r cot(theta/2), r = 10 mm).
+    let cell_deg = theta * (70.0f64 / 10.0).ln() / 400.0;
+    let x_at = |t: f64| 10.0 / (t.to_radians() / 2.0).tan();
+    let cell_mm = x_at(theta - cell_deg / 2.0) - x_at(theta + cell_deg / 2.0);
+    eprintln!(
+        "fig3 at mu {mu}: theta_jam {:.6} deg (solve {theta:.6}, error {t_err:+.2e}, cell \
+         {cell_deg:.3}), x_jam {:.6} mm (solve {x:.6}, error {x_err:+.2e}, cell {cell_mm:.3})",
+        num(on, "theta_jam_deg"),
+        num(on, "x_jam_mm"),
+    );
+    assert!(t_err.abs() <= cell_deg, "theta_jam off by {t_err} deg");
+    assert!(x_err.abs() <= cell_mm, "x_jam off by {x_err} mm");
+    assert_eq!(on["status"], "jam");
+    assert_eq!(on["model"], "statics");
+    assert_eq!(on["boundary_status"], "jams");
+
+    // Below and above the boundary: the status the chart's own cells give.
+    let csv = std::fs::read_to_string(out.join("fig3.csv")).unwrap();
+    for p in &fig3[1..] {
+        let t = num(p, "theta_deg");
+        assert_eq!(p["status"], cell_region(&csv, mu, t).as_str(), "{p}");
+    }
+    assert_eq!(fig3[1]["status"], "jam");
+    assert_eq!(fig3[2]["status"], "slide");
+
+    // fig6's statics curve at mu 0.3.
+    let fig6 = pins(&dom, "fig6");
+    let curves = fig6[0]["curves"].as_array().unwrap();
+    let statics = curves
+        .iter()
+        .find(|c| c["layer"] == "statics")
+        .unwrap_or_else(|| panic!("{curves:?}"));
+    let (_, x6) = solve(dir.path(), 0.3);
+    let x6_err = num(statics, "value") - x6;
+    eprintln!("fig6 at mu 0.3: x_jam error {x6_err:+.2e} mm");
+    assert!(x6_err.abs() < 1e-3 * x6, "fig6 x_jam off by {x6_err} mm");
+
+    // A phone-sized page: the picture is scaled down; a real click aimed at (mu, theta_jam)
+    // reads off within two displayed pixels of it.
+    let aim = format!("click=fig3:{mu}:{theta}");
+    let dom = run_chromium(
+        &browser,
+        &url(&aim),
+        &["--dump-dom", "--window-size=390,844"],
+    );
+    let clicked = pins(&dom, "fig3");
+    assert_eq!(clicked.len(), 1, "the click pinned nothing");
+    let c = &clicked[0];
+    // Two displayed px of a ~370 px wide picture whose plot is 79 % of it.
+    let px = 2.0 / (0.79 * 370.0);
+    let (dmu, dlog) = (
+        (num(c, "mu") - mu) / 0.4,
+        (num(c, "theta_deg") / theta).ln() / (70.0f64 / 10.0).ln(),
+    );
+    eprintln!("phone click: mu off by {dmu:+.2e}, theta off by {dlog:+.2e} of the axes");
+    assert!(dmu.abs() < px && dlog.abs() < px, "{c}");
+
+    // Screenshots to look at: desktop and phone, each with the crosshair drawn.
+    let shots = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("gallery_browser");
+    std::fs::create_dir_all(&shots).unwrap();
+    for (file, size) in [
+        ("gallery-fig3.png", "1000,1300"),
+        ("gallery-fig3-phone.png", "390,844"),
+    ] {
+        let shot = |hash: &str, path: &Path| {
+            let _ = std::fs::remove_file(path);
+            run_chromium(
+                &browser,
+                &url(hash),
+                &[
+                    &format!("--screenshot={}", path.display()),
+                    &format!("--window-size={size}"),
+                ],
+            );
+            red_pixels(path)
+        };
+        let path = shots.join(file);
+        // The same page with a click off the plot (80 deg is above the axis): no crosshair.
+        let plain = shot(&format!("click=fig3:{mu}:80"), &shots.join("plain.png"));
+        let red = shot(&format!("readoff=fig3:{mu}"), &path);
+        eprintln!(
+            "screenshot {}: {red} red pixels, {plain} without the read-off",
+            path.display()
+        );
+        assert!(red > plain + 50, "no crosshair in {}", path.display());
+    }
+}
