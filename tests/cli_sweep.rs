@@ -22,7 +22,9 @@ fn one_axis_sweep_writes_data_and_pictures_with_the_closed_form() {
         .lines()
         .find(|l| l.starts_with("statics,0.4,"))
         .unwrap_or_else(|| panic!("{csv}"));
-    let x: f64 = row.split(',').nth(2).unwrap().parse().unwrap();
+    // layer, mu, status, x_jam_mm, theta_jam_deg
+    assert_eq!(row.split(',').nth(2), Some("jams"), "{row}");
+    let x: f64 = row.split(',').nth(3).unwrap().parse().unwrap();
     assert!((x - 24.355).abs() < 5e-4, "{row}");
 }
 
@@ -59,4 +61,43 @@ fn bad_axis_exits_2_and_names_the_parameters() {
         !dir.path().join("out").exists(),
         "nothing written for a bad request"
     );
+}
+
+/// Regression (issue 18): a sweep's curve stopped at mu = 0.150 with no explanation and its CSV
+/// had no status column (empty cells): the shaft of the issue on an 80 mm palm. Every row now
+/// says the model's verdict, and the cells with no jam say why.
+#[test]
+fn sweep_rows_carry_the_status_and_the_curve_says_where_it_ends() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &[
+            "sweep",
+            "mu=0.1:0.3:21",
+            "--radius",
+            "12.5",
+            "--mass",
+            "0.4",
+            "--force",
+            "40",
+            "--palm-length",
+            "80",
+        ],
+    );
+    assert_eq!(o.status.code(), Some(0));
+    let csv = std::fs::read_to_string(dir.path().join("out/sweep_mu.csv")).unwrap();
+    let mut rows = csv.lines();
+    assert_eq!(rows.next(), Some("layer,mu,status,x_jam_mm,theta_jam_deg"));
+    let statics: Vec<Vec<&str>> = rows
+        .map(|r| r.split(',').collect::<Vec<_>>())
+        .filter(|f| f[0] == "statics")
+        .collect();
+    assert_eq!(statics.len(), 21);
+    for f in &statics {
+        let mu: f64 = f[1].parse().unwrap();
+        // The jam reaches the 80 mm palm from mu = 0.1489 (solve's friction needed).
+        let want = if mu < 0.1489 { "beyond_reach" } else { "jams" };
+        assert_eq!(f[2], want, "{f:?}");
+        assert_eq!(f[3].is_empty(), want != "jams", "{f:?}");
+    }
 }

@@ -20,7 +20,7 @@ use super::{DataFile, axis_label, scene_subtitle_with};
 use crate::csv_out::{Dec, dec, to_csv_with_header};
 use crate::error::{Error, Result};
 use crate::grid::{AxisScale, GridAxis, GridParam};
-use crate::scene::SceneParams;
+use crate::scene::{JamStatus, SceneParams};
 
 pub use super::sweep_layers::SweepLayer;
 
@@ -145,6 +145,8 @@ pub struct SeriesPoint {
     pub x_jam_mm: Option<f64>,
     /// theta_jam in deg.
     pub theta_jam_deg: Option<f64>,
+    /// The model's verdict at the point (None for a limit or a printed number).
+    pub status: Option<JamStatus>,
 }
 
 /// A curve or point set of one layer.
@@ -186,6 +188,37 @@ pub struct Sweep {
 }
 
 impl Sweep {
+    /// In the x_jam panel, the palm's end as a dashed line where it lies on the panel's scale
+    /// (a jam beyond it is never reached): x = L, where the contact is at the palm's end for a
+    /// palm face on the hinge line (h = 0; with an offset the line would bend, so it is left
+    /// out) and the palm length is not the swept parameter.
+    fn draw_palm_end<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &axes::Chart<DB>,
+        (x, y): (&PlotAxis, &PlotAxis),
+        panel: SweepPanel,
+    ) -> DrawResult<DB> {
+        let l = self.params.palm_length_mm;
+        let shown = panel == SweepPanel::XJamMm
+            && self.params.palm_offset_mm == 0.0
+            && self.spec.axis.param != GridParam::PalmLengthMm
+            && (y.min..=y.max).contains(&l);
+        if !shown {
+            return Ok(());
+        }
+        let line = [
+            (x.to_plot(x.min), y.to_plot(l)),
+            (x.to_plot(x.max), y.to_plot(l)),
+        ];
+        let kind = LineKind::Dotted;
+        style::draw_line_px(chart.plotting_area(), &line, kind, style::INK, 2)?;
+        let at = axes::pixel(chart, x, y, x.min, l);
+        let s = format!("palm's end L = {} mm: no jam above", style::fmt_num(l, 1));
+        let pos = Pos::new(HPos::Left, VPos::Bottom);
+        axes::boxed_text(root, &s, (at.0 + 8, at.1 - 4), pos, style::TICK_PX)
+    }
+
     /// The models behind the drawn layers, for the subtitle.
     fn source(&self) -> &'static str {
         let has = |f: fn(&SweepLayer) -> bool| self.spec.layers.iter().any(f);
@@ -223,13 +256,21 @@ impl Sweep {
         let header = [
             "layer",
             self.spec.axis.param.as_str(),
+            "status",
             "x_jam_mm",
             "theta_jam_deg",
         ];
         let rows = self.series.iter().flat_map(|ser| {
-            ser.points
-                .iter()
-                .map(|p| (ser.layer, Dec(p.at), dec(p.x_jam_mm), dec(p.theta_jam_deg)))
+            ser.points.iter().map(|p| {
+                let status = p.status.map_or("", JamStatus::as_str);
+                (
+                    ser.layer,
+                    Dec(p.at),
+                    status,
+                    dec(p.x_jam_mm),
+                    dec(p.theta_jam_deg),
+                )
+            })
         });
         DataFile::csv(to_csv_with_header(&header, rows))
     }
@@ -275,7 +316,65 @@ impl Sweep {
     }
 
     fn legend(&self) -> Vec<LegendEntry> {
-        self.series.iter().map(Series::legend_entry).collect()
+        self.series.iter().map(|s| self.legend_entry(s)).collect()
+    }
+
+    /// A series' legend entry, saying where a curve has no jam and why (a curve that just
+    /// stops would read as "no data"): "no jam for μ < 0.148: beyond_reach".
+    fn legend_entry(&self, s: &Series) -> LegendEntry {
+        let mut e = s.legend_entry();
+        if let Some(gaps) = self.gaps(s) {
+            e.label = format!("{}; {gaps}", e.label);
+        }
+        e
+    }
+
+    /// The runs of points of a curve whose verdict is not `jams`, as text, or None.
+    fn gaps(&self, s: &Series) -> Option<String> {
+        if !matches!(s.style, SeriesStyle::Line(_)) {
+            return None;
+        }
+        let param = self.spec.axis.param;
+        let fmt = |v: f64| style::fmt_num(v, 3);
+        let mut runs: Vec<(JamStatus, f64, f64)> = Vec::new();
+        let mut prev = None;
+        for p in &s.points {
+            if let Some(st) = p.status.filter(|st| *st != JamStatus::Jams) {
+                match runs.last_mut() {
+                    Some(last) if prev == Some(st) => last.2 = p.at,
+                    _ => runs.push((st, p.at, p.at)),
+                }
+            }
+            prev = p.status;
+        }
+        if runs.is_empty() {
+            return None;
+        }
+        let text: Vec<String> = runs
+            .iter()
+            .map(|(st, a, b)| {
+                let why = match st {
+                    JamStatus::BeyondReach => format!(
+                        "past the palm's end (L = {} mm)",
+                        self.params.palm_length_mm
+                    ),
+                    other => other.as_str().replace('_', " "),
+                };
+                let unit = super::param_unit(param);
+                let unit = if unit == "-" {
+                    String::new()
+                } else {
+                    format!(" {unit}")
+                };
+                format!(
+                    "{why} at {} = {}–{}{unit}",
+                    super::param_symbol(param),
+                    fmt(*a),
+                    fmt(*b)
+                )
+            })
+            .collect();
+        Some(format!("no jam {}", text.join(", ")))
     }
 
     /// The legend in two groups when the paper's numbers are drawn beside the models: the
@@ -290,7 +389,7 @@ impl Sweep {
         }
         let group = |heading: &str, series: Vec<&Series>| LegendGroup {
             heading: heading.into(),
-            entries: series.into_iter().map(Series::legend_entry).collect(),
+            entries: series.into_iter().map(|s| self.legend_entry(s)).collect(),
         };
         Some(vec![
             group("this tool's models", ours),
@@ -358,6 +457,7 @@ impl Sweep {
                 }
                 self.annotate(root, &chart, (&x, &y), *panel, s)?;
             }
+            self.draw_palm_end(root, &chart, (&x, &y), *panel)?;
             axes::draw_frame(root, &chart, &x, &y)?;
         }
         let sub = scene_subtitle_with(self.source(), &self.params, &[a.param]);

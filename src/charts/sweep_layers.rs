@@ -83,7 +83,10 @@ pub fn series(
             style: SeriesStyle::Line(LineKind::Solid),
             points: closed_form(spec, scene)?
                 .into_iter()
-                .map(|(v, s)| point(v, s.x_jam_mm, s.theta_jam_deg))
+                .map(|(v, s)| SeriesPoint {
+                    status: Some(s.status),
+                    ..point(v, s.x_jam_mm, s.theta_jam_deg)
+                })
                 .collect(),
             flat_names: Some(["x_jam", "θ_jam"]),
             callout: None,
@@ -91,9 +94,13 @@ pub fn series(
         SweepLayer::Rigid => {
             let points: Vec<SeriesPoint> = closed_form(spec, scene)?
                 .into_iter()
-                .map(|(v, s)| match s.detail {
-                    Detail::Statics(s) => point(v, s.x_rigid_mm, Some(s.theta_rigid_deg)),
-                    _ => point(v, None, None),
+                .map(|(v, s)| SeriesPoint {
+                    // The closed form's verdict at the point: why a row is empty.
+                    status: Some(s.status),
+                    ..match s.detail {
+                        Detail::Statics(s) => point(v, s.x_rigid_mm, Some(s.theta_rigid_deg)),
+                        _ => point(v, None, None),
+                    }
                 })
                 .collect();
             vec![Series {
@@ -172,7 +179,10 @@ fn table1_mu() -> Vec<f64> {
 /// A jam point when the model says `jams`, an empty one otherwise (the data file shows it).
 fn jam_point(mu: f64, status: JamStatus, x: Option<f64>, theta: Option<f64>) -> SeriesPoint {
     let jams = status == JamStatus::Jams;
-    point(mu, x.filter(|_| jams), theta.filter(|_| jams))
+    SeriesPoint {
+        status: Some(status),
+        ..point(mu, x.filter(|_| jams), theta.filter(|_| jams))
+    }
 }
 
 /// `spec`'s jam points at the mu values `mu`, a sweep through the grid (in parallel; each point
@@ -303,6 +313,7 @@ fn point(at: f64, x_jam_mm: Option<f64>, theta_jam_deg: Option<f64>) -> SeriesPo
         at,
         x_jam_mm,
         theta_jam_deg,
+        status: None,
     }
 }
 
