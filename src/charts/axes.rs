@@ -294,7 +294,17 @@ pub fn draw_header<DB: DrawingBackend>(
     let mid = w as i32 / 2;
     let title_font = style::text(style::TITLE_PX).pos(Pos::new(HPos::Center, VPos::Top));
     root.draw(&Text::new(title.to_string(), (mid, 12), title_font))?;
-    let sub_font = style::text(style::TICK_PX).pos(Pos::new(HPos::Center, VPos::Top));
+    // A subtitle wider than the picture less 20 px a side is set smaller until it fits.
+    let room = w as f64 - 40.0;
+    let wide = root
+        .estimate_text_size(subtitle, &style::text(style::TICK_PX))?
+        .0 as f64;
+    let size = if wide > room {
+        (style::TICK_PX * room / wide).max(9.0)
+    } else {
+        style::TICK_PX
+    };
+    let sub_font = style::text(size).pos(Pos::new(HPos::Center, VPos::Top));
     root.draw(&Text::new(subtitle.to_string(), (mid, 40), sub_font))
 }
 

@@ -197,7 +197,9 @@ impl Marker {
             Marker::Circle => OKABE_ITO[5],
             Marker::Dot => OKABE_ITO[0],
             Marker::Triangle => OKABE_ITO[6],
-            Marker::Square => OKABE_ITO[3],
+            // Orange, not the diamond's green: fig6's Adams square sat beside the green
+            // motion-drive diamonds, and the V-block chart's mu = 0.4 and 0.5 were both green.
+            Marker::Square => OKABE_ITO[1],
             Marker::Cross => OKABE_ITO[7],
             // Black: around the Table 1 circle and triangle (blue, vermillion) at the same
             // point, a third hue apart from both.
