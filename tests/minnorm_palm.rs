@@ -253,10 +253,11 @@ proptest! {
 
     #[test]
     fn rolling_matches_its_derived_closed_form(
-        p in scene(), mu_g in 0.01..2.0_f64, mu_p in 0.01..2.0_f64, weight_over_push in log_uniform(1e-3, 1e3),
+        p in scene(), mu_g in 0.01..2.0_f64, mu_p in 0.01..2.0_f64, weight_over_push in log_uniform(1e-3, 1e6),
     ) {
-        // The palm's forces are of order F: with m g / F beyond 1e3 the palm's cone would be
-        // judged at the tolerance on the weight (1e-10 m g), so the ratio is kept moderate.
+        // The palm's forces are of order F, down to 1e-6 of the weight: the exact path judges
+        // the palm's cone on its own forces (before issue 20 item 9, on 1e-10 m g, which kept
+        // this ratio below 1e3).
         let p = SceneParams {
             mu_ground: mu_g,
             mu_palm: mu_p,
@@ -352,5 +353,72 @@ fn statuses_agree_with_the_closed_form_at_the_edges() {
                 );
             }
         }
+    }
+}
+
+/// Issue 23 item 10: `solve --model all --mu 1e-9 --palm-length 1e12` gave min-norm x_jam =
+/// 8854117793.756 mm against the statics' 9760716046.129 mm (-9.3 %), reported `jams` with the
+/// ground's friction utilisation 1.2 at the jam. The exact path judged every cone row to 1e-10
+/// of the largest force (about m g + F), while the ground's margin mu R_n - R_t is of order
+/// 1e-9 of it: the tolerance decided the boundary. Rows are now judged on their own terms.
+///
+/// 1e-5 relative: the remaining floor is 16 machine epsilons of the largest force (3.6e-15 in
+/// the scaled problem) against a margin whose slope in theta is about F / (m g + F) = 0.95, so
+/// theta_jam (2e-9 rad here) moves by at most 4e-15 rad, 2e-6 of itself; the bisection's
+/// relative resolution adds 1e-8.
+#[test]
+fn minnorm_tiny_friction_jam_was_decided_by_the_hold_tolerance() {
+    let p = SceneParams {
+        palm_length_mm: 1e12,
+        ..SceneParams::default().with_mu(1e-9)
+    };
+    let s = statics::solve(&p);
+    assert_eq!(s.status, JamStatus::Jams);
+    let want = s.x_jam_mm.unwrap();
+    let m = palm::solve(&p, &settings(Formulation::Translational, true)).unwrap();
+    assert_eq!(m.status, JamStatus::Jams);
+    let x = m.x_jam_mm.unwrap();
+    let rel = (x - want).abs() / want;
+    assert!(
+        rel < 1e-5,
+        "x_jam {x} mm vs statics {want} mm: {rel:e} relative"
+    );
+    let ground = &m.at_jam.unwrap().forces[0];
+    assert!(
+        ground.utilisation <= 1.0 + 1e-5,
+        "ground utilisation {} at the jam",
+        ground.utilisation
+    );
+}
+
+/// Issue 20 item 9: min-norm rolling was 4.4e-5 deg off its closed form 2 atan(mu_p) when the
+/// push is 1/2000 of the weight: the palm's cone row (forces of order F cos alpha_p) was judged
+/// to 1e-10 of the weight, so its margin N (mu_p - tan(theta/2)) crossed zero 7e-7 rad away
+/// from the physics.
+///
+/// Tolerance: the bisection's 1e-9 rad, plus twice the roundoff floor's share, which grows as
+/// the push shrinks: a floor of 16 machine epsilons of the largest scaled force (about 2, the
+/// weight and the ground's normal force) against the palm margin's slope in theta,
+/// N / (2 cos^2(theta/2)) of the weight. At m g / F = 2000 that is 2.5e-11 rad; at 1e6, where
+/// the floor does govern, 1.2e-8 rad (7e-7 deg).
+#[test]
+fn minnorm_rolling_weak_push_was_judged_at_the_weight_tolerance() {
+    for weight_over_push in [2000.0, 1e6] {
+        let d = SceneParams::default();
+        let p = SceneParams {
+            force_n: d.weight_n() / weight_over_push,
+            ..d
+        };
+        let m = palm::solve(&p, &settings(Formulation::Rolling, true)).unwrap();
+        let want = rolling_theta_jam(&p);
+        let n_rel = p.force_n * p.alpha_palm().cos() / p.weight_n();
+        let slope = n_rel / (2.0 * (0.5 * want).cos().powi(2));
+        let tol_rad = 1e-9 + 2.0 * (16.0 * f64::EPSILON * 2.0) / slope;
+        assert_eq!(m.status, JamStatus::Jams, "m g / F = {weight_over_push}");
+        let got = m.theta_jam_deg.unwrap().to_radians();
+        assert!(
+            (got - want).abs() < tol_rad,
+            "m g / F = {weight_over_push}: theta_jam {got} rad vs {want} rad, tolerance {tol_rad:e}"
+        );
     }
 }

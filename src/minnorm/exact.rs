@@ -25,10 +25,17 @@ use super::qp::{Backend, ContactSolution, HoldStatus, assemble};
 
 /// At most this many cone rows (four frictional planar contacts): 2^8 active sets.
 const MAX_CONE_ROWS: usize = 8;
-/// Feasibility tolerance in the scaled problem, where loads and lever arms are of order one,
-/// relative to the largest force found; far below clarabel's 1e-8 so the fast path is never
-/// the less accurate one.
+/// Feasibility tolerance in the scaled problem, where loads and lever arms are of order one;
+/// far below clarabel's 1e-8 so the fast path is never the less accurate one. Equalities and
+/// multipliers are judged relative to the largest force found; a cone row relative to its own
+/// terms (see `cones_hold`).
 const TOL: f64 = 1e-10;
+/// Roundoff floor of a cone row, relative to the largest force found: the error of a small
+/// dense solve whose entries are of order one is a few machine epsilons of its largest entry.
+// Not TOL: a contact whose forces are far below the largest load (friction of 1e-9, a palm
+// pushing with 1/2000 of the weight) has its margin far below TOL, and a tolerance on the
+// largest force moved its held / not-held boundary by up to 9 % (issues 20 and 23).
+const ROW_ROUNDOFF: f64 = 16.0 * f64::EPSILON;
 /// Accepted residual of a KKT solve, relative to the solution: 1e4 machine epsilons.
 const ROUNDOFF: f64 = 1e-12;
 
@@ -43,7 +50,7 @@ pub(crate) fn applies(low: &Lowered) -> bool {
 pub(crate) fn solve_lowered(low: &Lowered) -> ContactSolution {
     if let Some(z) = determined(low) {
         // The equalities fix every variable: no freedom is left to minimise over.
-        return if cones_hold(low, &z) {
+        return if cones_hold(low, &z, 0) {
             assemble(low, &z, Backend::Exact, 1)
         } else {
             ContactSolution::not_held(HoldStatus::NotHeld, Backend::Exact, 1)
@@ -79,9 +86,26 @@ fn equalities_hold(low: &Lowered, z: &DVector<f64>) -> bool {
     z.iter().all(|v| v.is_finite()) && (&low.eq * z - &low.eq_rhs).amax() <= TOL * (1.0 + z.amax())
 }
 
-fn cones_hold(low: &Lowered, z: &DVector<f64>) -> bool {
-    let tol = TOL * (1.0 + z.amax());
-    (&low.cone_rows * z).iter().all(|&g| g >= -tol)
+/// Whether every cone row holds at `z`, given the active set `active` (a bit per row).
+///
+/// An inactive row `g . z >= 0` decides the verdict: it is judged to TOL of its own terms
+/// sum |g_j z_j|, so a contact is judged on its own forces however small they are against the
+/// largest load, and never below the roundoff floor ROW_ROUNDOFF of the largest force. An
+/// active row is an equality of the KKT system: judged to TOL of the largest force, it rejects
+/// the least-squares point of an inconsistent set (an overdetermined KKT system whose
+/// multipliers blow up passes the residual test relative to them).
+fn cones_hold(low: &Lowered, z: &DVector<f64>, active: u32) -> bool {
+    let scale = 1.0 + z.amax();
+    let values = &low.cone_rows * z;
+    let terms = low.cone_rows.abs() * z.abs();
+    (0..values.len()).all(|r| {
+        let tol = if active & (1 << r) != 0 {
+            TOL * scale
+        } else {
+            TOL * terms[r] + ROW_ROUNDOFF * scale
+        };
+        values[r] >= -tol
+    })
 }
 
 /// The KKT point for active set `mask`, if it is feasible with non-negative multipliers.
@@ -132,5 +156,5 @@ fn kkt_point(low: &Lowered, mask: u32) -> Option<DVector<f64>> {
     };
     let z = sol.rows(0, n).into_owned();
     let multipliers_ok = (0..active.len()).all(|a| -sol[n + m_e + a] >= -TOL * (1.0 + sol.amax()));
-    (multipliers_ok && cones_hold(low, &z) && equalities_hold(low, &z)).then_some(z)
+    (multipliers_ok && cones_hold(low, &z, mask) && equalities_hold(low, &z)).then_some(z)
 }
