@@ -121,6 +121,9 @@ pub enum LineKind {
     Dashed,
     /// Short dashes, 1 px: construction lines.
     Dotted,
+    /// Dots, 2 px, reddish purple: a closed-form level drawn beside construction lines (fig5's
+    /// r/mu beside its jam threshold, once both thin blue dashes).
+    Level,
 }
 
 impl LineKind {
@@ -131,13 +134,14 @@ impl LineKind {
             LineKind::Solid => INK,
             LineKind::Dashed => OKABE_ITO[6],
             LineKind::Dotted => OKABE_ITO[5],
+            LineKind::Level => OKABE_ITO[7],
         }
     }
 
     /// The stroke width in px.
     pub fn width(self) -> u32 {
         match self {
-            LineKind::Solid | LineKind::Dashed => 2,
+            LineKind::Solid | LineKind::Dashed | LineKind::Level => 2,
             LineKind::Dotted => 1,
         }
     }
@@ -148,6 +152,7 @@ impl LineKind {
             LineKind::Solid => None,
             LineKind::Dashed => Some((10, 6)),
             LineKind::Dotted => Some((4, 4)),
+            LineKind::Level => Some((2, 4)),
         }
     }
 }

@@ -239,7 +239,7 @@ impl TimeSeries {
         if let Some(xr) = rigid.filter(|x| x.is_finite()) {
             x_curves.push(Curve {
                 label: format!("F → ∞ limit r/μ = {xr:.2} mm (closed form)"),
-                style: CurveStyle::Line(LineKind::Dotted),
+                style: CurveStyle::Line(LineKind::Level),
                 points: vec![(0.0, xr), (t_end, xr)],
             });
             x_values.push(xr);
