@@ -437,3 +437,21 @@ fn a_derived_case_value_names_the_case_not_a_flag() {
     refused(&o, "case barely_moves");
     assert!(!stderr(&o).contains("--force"), "{}", stderr(&o));
 }
+
+/// Regression (issue 23 class 8): `accuracy --penetrations 1e-300` named `--stiffness`, a flag
+/// never given: the penetration's stiffness F / delta^e overflowed. It names the penetration.
+#[test]
+fn a_penetration_whose_stiffness_overflows_names_the_penetration() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &["accuracy", "--penetrations", "1e-300", "--map-cells", "0"],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(
+        err.contains("--penetrations") && err.contains("1e-300"),
+        "{err}"
+    );
+    assert!(!err.contains("--stiffness"), "{err}");
+}

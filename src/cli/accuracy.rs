@@ -158,6 +158,22 @@ fn settings(a: &AccuracyArgs) -> Result<(AccuracySettings, Option<MapCostSetting
 pub fn run(a: &AccuracyArgs) -> Result<String> {
     let config = a.scene.resolve(&[a.dynamics.overrides()])?;
     let (settings, map) = settings(a)?;
+    // A penetration so small that its stiffness F / delta^e overflows is refused as the
+    // penetration given, not as the --stiffness it turns into.
+    let (force, exponent) = (config.scene.force_n, config.dynamics.contact.exponent);
+    for um in &settings.penetrations_um {
+        let k = crate::study::stiffness_for_penetration(force, um * 1e-3, exponent);
+        if !(k.is_finite() && k > 0.0) {
+            return Err(Error::invalid(
+                "penetrations_um",
+                um,
+                format!(
+                    "at F = {force} N and exponent {exponent} it makes the contact stiffness \
+                     F / delta^e overflow; give a larger penetration"
+                ),
+            ));
+        }
+    }
     // Every output is checked before anything runs and written all or nothing at the end.
     let out_paths: Vec<PathBuf> = a
         .out_dir
