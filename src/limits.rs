@@ -15,6 +15,13 @@ pub const MAX_RUNS: usize = 1000;
 /// work-precision scene's lists): 64 points are 64 decades more than f64 resolves.
 pub const MAX_TOLERANCES: usize = 64;
 
+/// Optimum included angles one V-block optimum chart may compute (mus x (directions + loads)):
+/// each is a search over the included angle, measured at 0.23 ms wall on 2 cores (20,000 in
+/// 4.6 s: `render vlocator-optimum --set chart.direction_axis.count=2000 --set
+/// chart.load_axis.count=2000`), so 100,000 is about 25 s. More would run for minutes with no
+/// memory limit to stop it.
+pub const MAX_OPTIMUM_POINTS: usize = 100_000;
+
 /// Estimated peak memory of one computation in bytes (1 GiB).
 pub const MAX_MEMORY_BYTES: u64 = 1 << 30;
 

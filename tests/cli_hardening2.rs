@@ -455,3 +455,27 @@ fn a_penetration_whose_stiffness_overflows_names_the_penetration() {
     );
     assert!(!err.contains("--stiffness"), "{err}");
 }
+
+/// Regression (issue 23 class 5): the `vlocator_optimum` chart had no work limit: 100,000
+/// directions ran past 60 s (each point is a search over the included angle). It is refused at
+/// once, naming the counts.
+#[test]
+fn a_v_block_optimum_chart_with_too_much_work_is_refused_at_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(
+        dir.path(),
+        &[
+            "render",
+            "vlocator-optimum",
+            "--set",
+            "chart.direction_axis.count=100000",
+        ],
+    );
+    refused(&o, "chart.direction_axis.count");
+    assert!(
+        stderr(&o).contains("at most 100000 optima"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!dir.path().join("out").exists());
+}

@@ -116,6 +116,18 @@ impl super::kinds::Kind for VlocatorOptimumSpec {
     fn check_size(&self, _scene: &Scene) -> Result<()> {
         // At most five curves (one per marker) of two sweeps.
         let n = (self.direction_axis.count + self.load_axis.count) as f64 * self.mus.len() as f64;
+        // Work, not only memory: each point is a search over the included angle.
+        let max = crate::limits::MAX_OPTIMUM_POINTS;
+        if n > max as f64 {
+            return Err(Error::invalid(
+                "chart.direction_axis.count + chart.load_axis.count",
+                format!("{n} optima ({} mus)", self.mus.len()),
+                format!(
+                    "a V-block optimum chart computes at most {max} optima (about 25 s on 2 \
+                     cores); lower the counts or the number of mus"
+                ),
+            ));
+        }
         crate::limits::check_items(
             "chart.direction_axis.count + chart.load_axis.count",
             n,
