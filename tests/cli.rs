@@ -4,7 +4,7 @@ use serde_json::Value;
 
 #[path = "common/cli.rs"]
 mod cli_util;
-use cli_util::{jamchart, json, repo, stderr, stdout};
+use cli_util::{SHAFT, jamchart, json, repo, stderr, stdout};
 
 #[test]
 fn solve_reads_off_the_papers_example() {
@@ -457,19 +457,7 @@ fn start_angle_above_90_is_outside_every_model() {
 /// (r 12.5 mm, 0.4 kg, 40 N, mu 0.12, 80 mm palm) needed `--palm-length 200` to find 99.3 mm.
 #[test]
 fn beyond_reach_says_where_it_would_jam_and_what_brings_it_on_the_palm() {
-    let shaft = [
-        "solve",
-        "--radius",
-        "12.5",
-        "--mass",
-        "0.4",
-        "--force",
-        "40",
-        "--mu",
-        "0.12",
-        "--palm-length",
-        "80",
-    ];
+    let shaft: Vec<&str> = ["solve", "--mu", "0.12"].into_iter().chain(SHAFT).collect();
     let o = jamchart(repo(), &shaft);
     assert_eq!(o.status.code(), Some(0));
     let out = stdout(&o);

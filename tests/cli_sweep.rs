@@ -3,7 +3,7 @@
 
 #[path = "common/cli.rs"]
 mod cli_util;
-use cli_util::{jamchart, stderr};
+use cli_util::{SHAFT, jamchart, stderr};
 
 /// The statics row at mu = 0.4 of a one-line sweep is the paper's closed form, 24.355 mm.
 #[test]
@@ -71,18 +71,10 @@ fn sweep_rows_carry_the_status_and_the_curve_says_where_it_ends() {
     let dir = tempfile::tempdir().unwrap();
     let o = jamchart(
         dir.path(),
-        &[
-            "sweep",
-            "mu=0.1:0.3:21",
-            "--radius",
-            "12.5",
-            "--mass",
-            "0.4",
-            "--force",
-            "40",
-            "--palm-length",
-            "80",
-        ],
+        &["sweep", "mu=0.1:0.3:21"]
+            .into_iter()
+            .chain(SHAFT)
+            .collect::<Vec<_>>(),
     );
     assert_eq!(o.status.code(), Some(0));
     let csv = std::fs::read_to_string(dir.path().join("out/sweep_mu.csv")).unwrap();
