@@ -3,7 +3,7 @@
 
 #[path = "common/cli.rs"]
 mod cli_util;
-use cli_util::{SHAFT, jamchart, stderr};
+use cli_util::{SHAFT, jamchart, stderr, stdout};
 
 /// The statics row at mu = 0.4 of a one-line sweep is the paper's closed form, 24.355 mm.
 #[test]
@@ -91,5 +91,37 @@ fn sweep_rows_carry_the_status_and_the_curve_says_where_it_ends() {
         let want = if mu < 0.1489 { "beyond_reach" } else { "jams" };
         assert_eq!(f[2], want, "{f:?}");
         assert_eq!(f[3].is_empty(), want != "jams", "{f:?}");
+    }
+}
+
+/// Issue 18: read-off at the user's point on a sweep. `sweep ... --mu 0.27 --read-off` draws the
+/// closed form's x_jam and theta_jam at mu 0.27 and writes them as a `read_off` row, the same
+/// numbers as `solve` for the same flags.
+#[test]
+fn a_sweep_reads_off_the_users_own_value() {
+    let dir = tempfile::tempdir().unwrap();
+    let args: Vec<&str> = ["sweep", "mu=0.1:0.3:21", "--mu", "0.27", "--read-off"]
+        .into_iter()
+        .chain(SHAFT)
+        .collect();
+    let o = jamchart(dir.path(), &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let csv = std::fs::read_to_string(dir.path().join("out/sweep_mu.csv")).unwrap();
+    let row = csv
+        .lines()
+        .find(|l| l.starts_with("read_off,"))
+        .unwrap_or_else(|| panic!("{csv}"));
+    let solve: Vec<&str> = ["solve", "--mu", "0.27", "--format", "json"]
+        .into_iter()
+        .chain(SHAFT)
+        .collect();
+    let v: serde_json::Value =
+        serde_json::from_str(&stdout(&jamchart(dir.path(), &solve))).unwrap();
+    let f: Vec<&str> = row.split(',').collect();
+    assert_eq!(&f[..3], ["read_off", "0.27", "jams"], "{row}");
+    for (i, key) in [(3, "x_jam_mm"), (4, "theta_jam_deg")] {
+        let want = v["results"][0][key].as_f64().unwrap();
+        let got: f64 = f[i].parse().unwrap();
+        assert!((got - want).abs() <= 1e-6 * want, "{key}: {got} vs {want}");
     }
 }

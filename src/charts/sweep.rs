@@ -70,6 +70,11 @@ pub struct SweepSpec {
     /// The layers to draw (default: statics).
     #[serde(default = "statics_only")]
     pub layers: Vec<SweepLayer>,
+    /// Draw the read-off at the scene's own value of the swept parameter: the closed form's
+    /// x_jam and theta_jam there, with lines to the axes and the values printed (default:
+    /// false; `--set chart.read_off=true --set mu=0.27`).
+    #[serde(default)]
+    pub read_off: bool,
 }
 
 fn both_panels() -> Vec<SweepPanel> {
@@ -185,10 +190,12 @@ pub struct Sweep {
     params: SceneParams,
     title: String,
     series: Vec<Series>,
+    /// The closed form at the scene's own value of the swept parameter, when read off.
+    read_off: Option<(f64, JamStatus, SeriesPoint)>,
 }
 
 impl Sweep {
-    /// In the x_jam panel, the palm's end as a dashed line where it lies on the panel's scale
+    /// In the x_jam panel, the palm's end as a dotted purple level where it lies on the panel's scale
     /// (a jam beyond it is never reached): x = L, where the contact is at the palm's end for a
     /// palm face on the hinge line (h = 0; with an offset the line would bend, so it is left
     /// out) and the palm length is not the swept parameter.
@@ -211,12 +218,44 @@ impl Sweep {
             (x.to_plot(x.min), y.to_plot(l)),
             (x.to_plot(x.max), y.to_plot(l)),
         ];
-        let kind = LineKind::Dotted;
-        style::draw_line_px(chart.plotting_area(), &line, kind, style::INK, 2)?;
+        let kind = LineKind::Level;
+        style::draw_line(chart.plotting_area(), &line, kind, kind.color())?;
         let at = axes::pixel(chart, x, y, x.min, l);
         let s = format!("palm's end L = {} mm: no jam above", style::fmt_num(l, 1));
         let pos = Pos::new(HPos::Left, VPos::Bottom);
         axes::boxed_text(root, &s, (at.0 + 8, at.1 - 4), pos, style::TICK_PX)
+    }
+
+    /// The read-off at the scene's value in `panel`: a dotted black line up from the axis to the
+    /// closed form's value and across to the left axis, a dot, and the value printed.
+    fn draw_read_off<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &axes::Chart<DB>,
+        (x, y): (&PlotAxis, &PlotAxis),
+        panel: SweepPanel,
+    ) -> DrawResult<DB> {
+        let Some((v, _, p)) = &self.read_off else {
+            return Ok(());
+        };
+        let Some(q) = panel.value(p) else {
+            return Ok(());
+        };
+        if !(x.min..=x.max).contains(v) || !(y.min..=y.max).contains(&q) {
+            return Ok(());
+        }
+        let at = |a: f64, b: f64| axes::pixel(chart, x, y, a, b);
+        let (corner, bottom, left) = (at(*v, q), at(*v, y.min), at(x.min, q));
+        for line in [[bottom, corner], [corner, left]] {
+            style::draw_line_px(root, &line, LineKind::Dotted, style::INK, 2)?;
+        }
+        root.draw(&Circle::new(corner, 5, style::INK.filled()))?;
+        let s = match panel {
+            SweepPanel::XJamMm => format!("x_jam = {} mm", style::fmt_num(q, 3)),
+            SweepPanel::ThetaJamDeg => format!("θ_jam = {}°", style::fmt_num(q, 3)),
+        };
+        let pos = Pos::new(HPos::Left, VPos::Top);
+        axes::boxed_text(root, &s, (corner.0 + 8, corner.1 + 6), pos, style::NOTE_PX)
     }
 
     /// The models behind the drawn layers, for the subtitle.
@@ -243,11 +282,25 @@ impl Sweep {
         for l in &spec.layers {
             series.extend(sweep_layers::series(*l, spec, scene, models)?);
         }
+        let read_off = match (spec.read_off, spec.axis.param.get(&scene.params)) {
+            (true, Some(v)) => {
+                let s = crate::models::solve(&crate::models::ModelSpec::Statics, &scene.params)?;
+                let p = SeriesPoint {
+                    at: v,
+                    x_jam_mm: s.x_jam_mm.filter(|_| s.status == JamStatus::Jams),
+                    theta_jam_deg: s.theta_jam_deg.filter(|_| s.status == JamStatus::Jams),
+                    status: Some(s.status),
+                };
+                Some((v, s.status, p))
+            }
+            _ => None,
+        };
         Ok(Sweep {
             spec: spec.clone(),
             params: scene.params,
             title: scene.title.clone(),
             series,
+            read_off,
         })
     }
 
@@ -260,18 +313,23 @@ impl Sweep {
             "x_jam_mm",
             "theta_jam_deg",
         ];
-        let rows = self.series.iter().flat_map(|ser| {
-            ser.points.iter().map(|p| {
+        // The read-off, when asked for, as one more row of layer `read_off`.
+        let read_off = self.read_off.iter().map(|(_, _, p)| ("read_off", p));
+        let rows = self
+            .series
+            .iter()
+            .flat_map(|ser| ser.points.iter().map(|p| (ser.layer, p)))
+            .chain(read_off)
+            .map(|(layer, p)| {
                 let status = p.status.map_or("", JamStatus::as_str);
                 (
-                    ser.layer,
+                    layer,
                     Dec(p.at),
                     status,
                     dec(p.x_jam_mm),
                     dec(p.theta_jam_deg),
                 )
-            })
-        });
+            });
         DataFile::csv(to_csv_with_header(&header, rows))
     }
 
@@ -316,7 +374,27 @@ impl Sweep {
     }
 
     fn legend(&self) -> Vec<LegendEntry> {
-        self.series.iter().map(|s| self.legend_entry(s)).collect()
+        let mut e: Vec<LegendEntry> = self.series.iter().map(|s| self.legend_entry(s)).collect();
+        e.extend(self.read_off_entry());
+        e
+    }
+
+    /// The read-off's legend entry when it is drawn (a legend never names a line that is not
+    /// drawn: off the axis, or no jam there).
+    fn read_off_entry(&self) -> Option<LegendEntry> {
+        let (v, _, p) = self.read_off.as_ref()?;
+        let a = &self.spec.axis;
+        if !(a.min..=a.max).contains(v) || p.x_jam_mm.is_none() {
+            return None;
+        }
+        let name = super::param_symbol(a.param);
+        Some(LegendEntry::new(
+            Swatch::Stroke(LineKind::Dotted, style::INK, 2),
+            format!(
+                "read-off at {name} = {} (closed form)",
+                style::fmt_num(*v, 3)
+            ),
+        ))
     }
 
     /// A series' legend entry, saying where a curve has no jam and why (a curve that just
@@ -339,7 +417,9 @@ impl Sweep {
         let mut runs: Vec<(JamStatus, f64, f64)> = Vec::new();
         let mut prev = None;
         for p in &s.points {
-            if let Some(st) = p.status.filter(|st| *st != JamStatus::Jams) {
+            // A gap is a point with no value drawn (the rigid limit is drawn at every point).
+            let empty = p.x_jam_mm.is_none() && p.theta_jam_deg.is_none();
+            if let Some(st) = p.status.filter(|st| *st != JamStatus::Jams && empty) {
                 match runs.last_mut() {
                     Some(last) if prev == Some(st) => last.2 = p.at,
                     _ => runs.push((st, p.at, p.at)),
@@ -458,6 +538,7 @@ impl Sweep {
                 self.annotate(root, &chart, (&x, &y), *panel, s)?;
             }
             self.draw_palm_end(root, &chart, (&x, &y), *panel)?;
+            self.draw_read_off(root, &chart, (&x, &y), *panel)?;
             axes::draw_frame(root, &chart, &x, &y)?;
         }
         let sub = scene_subtitle_with(self.source(), &self.params, &[a.param]);

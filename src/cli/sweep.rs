@@ -41,6 +41,11 @@ pub struct SweepArgs {
     /// Pictures to write; the data file is always written.
     #[arg(long, value_enum, default_value_t = RenderFormat::Both)]
     pub format: RenderFormat,
+    /// Read the chart off at your own value of the swept parameter (one axis): the closed
+    /// form's x_jam and theta_jam there, lines to the axes and the values printed. The value is
+    /// the flag's, e.g. `sweep mu=0.1:0.5 --mu 0.27 --read-off`.
+    #[arg(long)]
+    pub read_off: bool,
 }
 
 /// `PARAM=MIN:MAX[:COUNT][:log]` as typed.
@@ -131,6 +136,7 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
                 axis,
                 panels: vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg],
                 layers: vec![SweepLayer::Statics, SweepLayer::Rigid],
+                read_off: a.read_off,
             });
             let title = format!("Jam point against {}", axis_label(axis.param));
             (chart, format!("sweep_{}", axis.param.as_str()), title)
