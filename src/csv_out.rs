@@ -222,6 +222,23 @@ pub fn grid_cells(header: &[&str], xs: &[f64], ys: &[f64], columns: &[Column]) -
     w.into_inner().expect(ok)
 }
 
+/// How many cells say each word of a text column, in the order the words first appear:
+/// `{"cells": {"jams": 53239, "jammed_at_start": 22}}`.
+fn word_counts(words: &[&str]) -> serde_json::Value {
+    let mut counts: Vec<(&str, usize)> = Vec::new();
+    for w in words {
+        match counts.iter_mut().find(|(k, _)| k == w) {
+            Some((_, n)) => *n += 1,
+            None => counts.push((w, 1)),
+        }
+    }
+    let counts: serde_json::Map<String, serde_json::Value> = counts
+        .into_iter()
+        .map(|(k, n)| (k.into(), n.into()))
+        .collect();
+    serde_json::json!({ "cells": counts })
+}
+
 /// What a map's JSON says about its long CSV ([`grid_cells`]): the file, the grid's size, the
 /// columns and, per quantity column, its least and greatest value and how many cells have one.
 pub fn cells_summary(
@@ -234,21 +251,6 @@ pub fn cells_summary(
         .iter()
         .zip(columns)
         .map(|(name, c)| {
-            if let Column::Text(words) = c {
-                // How many cells say each word, in the order they first appear.
-                let mut counts: Vec<(&str, usize)> = Vec::new();
-                for w in words.iter() {
-                    match counts.iter_mut().find(|(k, _)| k == w) {
-                        Some((_, n)) => *n += 1,
-                        None => counts.push((w, 1)),
-                    }
-                }
-                let counts: serde_json::Map<String, serde_json::Value> = counts
-                    .into_iter()
-                    .map(|(k, n)| (k.into(), n.into()))
-                    .collect();
-                return (name.to_string(), serde_json::json!({ "cells": counts }));
-            }
             let values: Vec<f64> = match c {
                 Column::Dense(v) => v.iter().copied().filter(|x| x.is_finite()).collect(),
                 Column::Sparse(v) => v
@@ -257,7 +259,9 @@ pub fn cells_summary(
                     .copied()
                     .filter(|x| x.is_finite())
                     .collect(),
-                Column::Text(_) => unreachable!("summarised above"),
+                Column::Text(words) => {
+                    return (name.to_string(), word_counts(words));
+                }
             };
             let min = values.iter().copied().reduce(f64::min);
             let max = values.iter().copied().reduce(f64::max);
@@ -298,6 +302,25 @@ pub fn nums(v: impl IntoIterator<Item = f64>) -> Vec<Num> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A status column is summarised by how many cells say each status, in first-seen order,
+    /// and written word for word in the CSV.
+    #[test]
+    fn a_text_column_is_counted_and_written_as_words() {
+        let words = ["jam", "slide", "jam", "beyond_reach"];
+        let cols = [Column::Text(&words)];
+        let s = cells_summary("m.csv", &["x", "y", "region"], (2, 2), &cols);
+        assert_eq!(
+            s["summary"]["region"]["cells"],
+            serde_json::json!({"jam": 2, "slide": 1, "beyond_reach": 1})
+        );
+        let csv = grid_cells(&["x", "y", "region"], &[0.0, 1.0], &[0.0, 1.0], &cols);
+        let text = String::from_utf8(csv).unwrap();
+        assert_eq!(
+            text,
+            "x,y,region\n0,0,jam\n1,0,slide\n0,1,jam\n1,1,beyond_reach\n"
+        );
+    }
 
     #[test]
     fn numbers_are_plain_decimals_without_noise() {
