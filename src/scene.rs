@@ -132,16 +132,8 @@ impl SceneParams {
     /// its flag): a friction coefficient above 2 (a percentage?), a radius under 0.5 mm (metres?), a start angle under 3 deg
     /// (radians?). The caller prints them as warnings; the answer is still computed.
     pub fn unit_warnings(&self) -> Vec<String> {
-        let mut out = Vec::new();
-        for (key, mu) in [("mu_ground", self.mu_ground), ("mu_palm", self.mu_palm)] {
-            if mu > 2.0 {
-                out.push(likely_mistake(
-                    key,
-                    mu,
-                    "is above 2, unusual for a friction coefficient; is it a percentage?",
-                ));
-            }
-        }
+        let mut out =
+            friction_warnings(&[("mu_ground", self.mu_ground), ("mu_palm", self.mu_palm)]);
         if self.radius_mm < 0.5 {
             out.push(likely_mistake(
                 "radius_mm",
@@ -164,6 +156,21 @@ impl SceneParams {
     pub fn contact_distance_mm(&self, theta: f64) -> f64 {
         contact_distance_mm(self.radius_mm, self.palm_offset_mm, theta)
     }
+}
+
+/// A warning for each friction coefficient above 2 (a percentage?), as (key, value).
+pub(crate) fn friction_warnings(frictions: &[(&str, f64)]) -> Vec<String> {
+    frictions
+        .iter()
+        .filter(|(_, mu)| *mu > 2.0)
+        .map(|(key, mu)| {
+            likely_mistake(
+                key,
+                *mu,
+                "is above 2, unusual for a friction coefficient; is it a percentage?",
+            )
+        })
+        .collect()
 }
 
 /// A warning that `key` = `value` looks like a unit mistake: "mu_palm (--mu-palm or --mu) =

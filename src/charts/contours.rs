@@ -23,6 +23,23 @@ pub fn grid_polygons<P>(
         .collect()
 }
 
+/// The rings, in plot space, around the cells of an `xa` x `ya` grid where `mask` holds (x
+/// fastest); none when no cell does. A jam map's cells past the palm's end and a universal
+/// chart's cells held at the start are traced by it.
+pub fn mask_rings<P>(mask: &[bool], xa: &GridAxis<P>, ya: &GridAxis<P>) -> Vec<Vec<(f64, f64)>> {
+    if !mask.contains(&true) {
+        return Vec::new();
+    }
+    let values: Vec<f64> = mask.iter().map(|b| f64::from(u8::from(*b))).collect();
+    let builder = contour::ContourBuilder::new(xa.count, ya.count, true);
+    // A single threshold on a finite grid cannot fail; no polygon is drawn if it ever did.
+    let rings = builder.contours(&values, &[0.5]).unwrap_or_default();
+    rings
+        .iter()
+        .flat_map(|c| grid_polygons(c.geometry(), xa, ya))
+        .collect()
+}
+
 /// Plot-space coordinate of contour-crate grid coordinate `g` on axis `a`.
 pub fn grid_to_plot<P>(g: f64, a: &GridAxis<P>) -> f64 {
     let (lo, hi) = match a.scale {

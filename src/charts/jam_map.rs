@@ -172,10 +172,7 @@ impl JamMap {
             .as_ref()
             .map(|g| beyond_reach(g, &p, spec.x_axis.param))
             .unwrap_or_default();
-        let beyond_rings = grid
-            .as_ref()
-            .map(|g| mask_rings(g, &beyond, spec))
-            .unwrap_or_default();
+        let beyond_rings = super::contours::mask_rings(&beyond, &spec.x_axis, &spec.y_axis);
         let margins = grid.as_ref().and_then(|g| g.margin_n.as_deref());
         let region = beyond
             .iter()
@@ -552,21 +549,6 @@ fn beyond_reach(g: &GridResult, base: &SceneParams, param: GridParam) -> Vec<boo
     g.y_values
         .iter()
         .flat_map(|t| reach_deg.iter().map(move |r| t < r))
-        .collect()
-}
-
-/// The rings of the cells where `mask` holds, in plot space (none when no cell does).
-fn mask_rings(g: &GridResult, mask: &[bool], spec: &JamMapSpec) -> Vec<Vec<(f64, f64)>> {
-    if !mask.contains(&true) {
-        return Vec::new();
-    }
-    let values: Vec<f64> = mask.iter().map(|b| *b as u8 as f64).collect();
-    let builder = ContourBuilder::new(g.nx(), g.ny(), true);
-    // A single threshold on a finite grid cannot fail; no polygon is drawn if it ever did.
-    let rings = builder.contours(&values, &[0.5]).unwrap_or_default();
-    rings
-        .iter()
-        .flat_map(|c| grid_polygons(c.geometry(), &spec.x_axis, &spec.y_axis))
         .collect()
 }
 

@@ -252,16 +252,11 @@ impl Universal {
             .iter()
             .map(|band| grid_polygons(band.geometry(), xa, ya))
             .collect();
-        let held_mask: Vec<f64> = statuses
+        let held_mask: Vec<bool> = statuses
             .iter()
-            .map(|s| matches!(s, JamStatus::JammedAtStart | JamStatus::TooWeak) as u8 as f64)
+            .map(|s| matches!(s, JamStatus::JammedAtStart | JamStatus::TooWeak))
             .collect();
-        let held = b
-            .contours(&held_mask, &[0.5])
-            .unwrap_or_default()
-            .iter()
-            .flat_map(|c| grid_polygons(c.geometry(), xa, ya))
-            .collect();
+        let held = super::contours::mask_rings(&held_mask, xa, ya);
         let reach_deg = p.reach_angle().to_degrees();
         let reach_line = b
             .lines(&field, &[reach_deg])

@@ -161,17 +161,10 @@ impl LocatorParams {
     /// [`crate::scene::SceneParams::unit_warnings`]): a friction above 2, an included angle
     /// under 3 deg (radians?).
     pub fn unit_warnings(&self) -> Vec<String> {
-        use crate::scene::likely_mistake;
-        let mut out = Vec::new();
-        for (key, mu) in [("mu_left", self.mu_left), ("mu_right", self.mu_right)] {
-            if mu > 2.0 {
-                out.push(likely_mistake(
-                    key,
-                    mu,
-                    "is above 2, unusual for a friction coefficient; is it a percentage?",
-                ));
-            }
-        }
+        let mut out = crate::scene::friction_warnings(&[
+            ("mu_left", self.mu_left),
+            ("mu_right", self.mu_right),
+        ]);
         let gamma = self.included_angle_deg();
         if gamma < 3.0 {
             out.push(format!(
