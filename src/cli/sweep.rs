@@ -25,7 +25,8 @@ pub struct SweepArgs {
     ///
     /// One axis draws x_jam and theta_jam against it (NAME.csv); two draw a map of x_jam over
     /// both, the first across (NAME.json). PARAM is one of mu (both frictions), mu_ground,
-    /// mu_palm, radius_mm, mass_kg, force_n, gravity_m_s2, start_angle_deg, palm_length_mm.
+    /// mu_palm, radius_mm, mass_kg, force_n, gravity_m_s2, start_angle_deg, palm_length_mm,
+    /// palm_offset_mm, push_ratio (F / (m g): sets force_n from the mass and gravity).
     /// COUNT defaults to 201 samples (101 per axis of a map). E.g. mu=0.1:0.5 or
     /// force_n=50:10000:log radius_mm=10:30.
     #[arg(value_name = "PARAM=MIN:MAX", required = true, num_args = 1..=2)]
