@@ -2,13 +2,16 @@
 //! by the exact path, beside the clarabel LP per cell.
 //!
 //! `cargo bench --bench locator`; prints medians of 15 runs of the whole map (all cores and one
-//! thread) and the median clarabel time per cell over a 400-cell sample, extrapolated to the
-//! map. Goal (issue 9): the exact map in <= 10 ms on 2 cores.
+//! thread) by the exact path per cell, by `grid::capacity_map` (for the free V its closed form,
+//! trigonometry once per axis sample) and the median clarabel time per cell over a 400-cell
+//! sample, extrapolated to the map. Goals: the exact map in <= 10 ms on 2 cores (issue 9); the
+//! closed-form map at least as fast as numpy's closed form (issue 21). numpy is not measured
+//! here, so no ratio to it is printed: a ratio needs its baseline timed in the same run.
 
 mod common;
 
 use common::{median, median_s};
-use jamchart::grid::{Grid, GridAxis, LocatorParam};
+use jamchart::grid::{Grid, GridAxis, LocatorParam, capacity_map};
 use jamchart::locator::{self, LocatorParams};
 
 fn map(rotation: locator::Rotation) -> Grid<LocatorParams> {
@@ -41,6 +44,11 @@ fn main() {
         };
         let all = median_s(15, exact);
         let single = one.install(|| median_s(15, exact));
+        let fast = || {
+            std::hint::black_box(capacity_map(&g).expect("valid grid"));
+        };
+        let fast_all = median_s(15, fast);
+        let fast_single = one.install(|| median_s(15, fast));
         // Every 100th cell: 400 LPs, each timed alone.
         let cells = g.map(|p| Ok(*p)).expect("valid grid").values;
         let per_cell = median(
@@ -65,6 +73,18 @@ fn main() {
             per_cell * 1e6,
             per_cell * 4e4,
             per_cell * 4e4 / single,
+        );
+        let path = match locator::symmetric::applies(&g.base) {
+            true => "closed form",
+            false => "exact path (closed form does not apply)",
+        };
+        println!(
+            "{:>7} rotation, 200 x 200 capacity_map ({path}): {:.3} ms on {threads} threads, \
+             {:.3} ms on 1 thread ({:.1} ns/cell)",
+            rotation.as_str(),
+            fast_all * 1e3,
+            fast_single * 1e3,
+            fast_single / 4e4 * 1e9,
         );
     }
 }

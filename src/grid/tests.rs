@@ -231,3 +231,104 @@ proptest! {
         }
     }
 }
+
+/// The closed-form capacity map of a symmetric V (`capacity_map`'s fast path) answers every
+/// cell as the exact path does: the same unboundedness and failure mode, P_max within 1e-12
+/// relative, over both axis orders, frictions from none to self-locking at every angle, and
+/// load directions that hit 0, +-90 and 180 deg exactly. Cells whose bracket |cos phi| x +
+/// sin phi lies within 1e-9 of zero (P_max beyond 1e9 W, where the exact path's tolerance
+/// decides) are skipped and counted; the worst error is printed.
+#[test]
+fn symmetric_v_closed_form_matches_the_exact_path() {
+    use crate::locator::{self, LocatorParams};
+    let (mut worst, mut compared, mut skipped) = (0.0_f64, 0, 0);
+    for mu in [0.0, 0.3, 0.8, 3.0] {
+        for gamma_on_x in [true, false] {
+            let base = LocatorParams {
+                mass_kg: 2.5,
+                ..LocatorParams::default()
+            }
+            .with_mu(mu);
+            let gamma = GridAxis::linear(LocatorParam::IncludedAngleDeg, 2.0, 178.0, 89);
+            let phi = GridAxis::linear(LocatorParam::LoadAngleDeg, -180.0, 180.0, 145);
+            let (x, y) = match gamma_on_x {
+                true => (gamma, phi),
+                false => (phi, gamma),
+            };
+            let grid = Grid {
+                base,
+                x,
+                y: Some(y),
+            };
+            assert!(locator::symmetric::applies(&grid.base));
+            let fast = capacity_map(&grid).unwrap();
+            let exact = grid.map(|p| Ok((locator::capacity(p), *p))).unwrap();
+            assert_eq!(fast.x_values, exact.x_values);
+            assert_eq!(fast.y_values, exact.y_values);
+            for (f, (e, p)) in fast.values.iter().zip(&exact.values) {
+                let (s, c) = p.load_angle_deg.to_radians().sin_cos();
+                let x = (0.5 * p.included_angle_deg().to_radians()).tan();
+                if (c.abs() * x + s).abs() < 1e-9 || c.abs() < 1e-9 {
+                    skipped += 1;
+                    continue;
+                }
+                assert_eq!(f.unbounded, e.unbounded, "{p:?}: {f:?} vs {e:?}");
+                assert_eq!(f.failure_mode, e.failure_mode, "{p:?}: {f:?} vs {e:?}");
+                match (f.p_max_over_w, e.p_max_over_w, f.p_max_n, e.p_max_n) {
+                    (Some(a), Some(b), Some(an), Some(bn)) => {
+                        let err = ((a - b) / b).abs().max(((an - bn) / bn).abs());
+                        assert!(err < 1e-12, "{p:?}: {f:?} vs {e:?}");
+                        worst = worst.max(err);
+                    }
+                    (None, None, None, None) => {}
+                    _ => panic!("{p:?}: {f:?} vs {e:?}"),
+                }
+                compared += 1;
+            }
+        }
+    }
+    println!(
+        "closed form vs exact: {compared} cells, worst P_max error {worst:.1e}, {skipped} skipped"
+    );
+    assert!(
+        compared > 40_000 && skipped < compared / 50,
+        "{compared} {skipped}"
+    );
+}
+
+/// A V the closed form does not cover (tilted, unequal frictions, blocked, a rim load) is
+/// answered by the exact path, cell for cell.
+#[test]
+fn capacity_map_falls_back_to_the_exact_path() {
+    use crate::locator::{self, LocatorParams, Rotation};
+    let d = LocatorParams::default();
+    for base in [
+        LocatorParams {
+            flank_left_deg: 50.0,
+            ..d
+        },
+        LocatorParams { mu_left: 0.2, ..d },
+        LocatorParams {
+            rotation: Rotation::Blocked,
+            ..d
+        },
+        LocatorParams {
+            load_at_rim_deg: Some(30.0),
+            ..d
+        },
+    ] {
+        assert!(!locator::symmetric::applies(&base), "{base:?}");
+        let grid = Grid {
+            base,
+            x: GridAxis::linear(LocatorParam::IncludedAngleDeg, 20.0, 160.0, 15),
+            y: Some(GridAxis::linear(
+                LocatorParam::LoadAngleDeg,
+                -80.0,
+                80.0,
+                17,
+            )),
+        };
+        let exact = grid.map(|p| Ok(locator::capacity(p))).unwrap();
+        assert_eq!(capacity_map(&grid).unwrap(), exact);
+    }
+}

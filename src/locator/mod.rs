@@ -126,6 +126,7 @@ mod optimum;
 pub(crate) mod params;
 mod reference;
 mod solve;
+pub mod symmetric;
 #[cfg(test)]
 mod tests;
 
