@@ -34,7 +34,7 @@ pub enum Error {
 
     /// A request whose estimated memory or output exceeds its limit (`crate::limits`).
     #[error(
-        "{what} would take about {}, over the limit of {} (set by {key})",
+        "{what} would take about {}, over the limit of {}{limit_source} (set by {key})",
         crate::limits::human_bytes(*estimate_bytes),
         crate::limits::human_bytes(*limit_bytes)
     )]
@@ -47,6 +47,9 @@ pub enum Error {
         estimate_bytes: u64,
         /// The limit in bytes.
         limit_bytes: u64,
+        /// Where a limit lower than the crate's comes from, as a phrase after the figure
+        /// (" (half the address-space limit, ulimit -v)"), or empty.
+        limit_source: &'static str,
     },
 
     /// A settings table (a scene file's section, `--set`, a flag) the settings refuse: an unknown

@@ -12,9 +12,14 @@ use cli_util::{jamchart, json, repo, stderr};
 
 /// Runs `jamchart ARGS` in `dir` under a 4 GiB address-space cap (`ulimit -v`).
 fn jamchart_capped(dir: &Path, args: &[&str]) -> Output {
+    jamchart_under(dir, 4 << 20, args)
+}
+
+/// Runs `jamchart ARGS` in `dir` under an address-space cap of `kib` KiB (`ulimit -v`).
+fn jamchart_under(dir: &Path, kib: u64, args: &[&str]) -> Output {
     Command::new("sh")
         .arg("-c")
-        .arg("ulimit -v 4194304 && exec \"$0\" \"$@\"")
+        .arg(format!("ulimit -v {kib} && exec \"$0\" \"$@\""))
         .arg(env!("CARGO_BIN_EXE_jamchart"))
         .args(args)
         .current_dir(dir)
@@ -103,10 +108,49 @@ fn scene_limits_are_found_by_estimate_not_by_allocation_failure() {
         "{}",
         stderr(&out)
     );
-    // Within the limits, under the same cap: 1500 x 1500 cells, about 340 MB at 153 B/cell.
+    // Within the limits, under the same cap: 1500 x 1500 cells, about 170 MB at 75 B/cell.
     scene(d, "within", &jam_map(1500));
     let out = render(d, "within");
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+}
+
+/// Regression (issue 23, class 3, "aborts at sizes the tool accepts"): under a 512 MiB
+/// address-space cap `sweep mu=0.1:0.5:1600000` (2.2 GB peak, estimated at 640 MB from 400 B a
+/// point) and a 1958 x 1958 map died by SIGABRT. The estimates are now measured (1420 B a sweep
+/// point, `crate::limits`) and the memory limit is half the address-space cap when that is
+/// below 1 GiB, so both are refused with exit 2, naming the estimate, the limit, where the
+/// limit comes from and the count as the user wrote it; nothing is written. The largest sweep
+/// the cap allows still runs under it.
+#[test]
+fn memory_check_follows_the_address_space_cap() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let cap_kib = 512 << 10;
+    for args in [
+        &["sweep", "mu=0.1:0.5:1600000", "--out", "o"][..],
+        &[
+            "sweep",
+            "mu=0.1:0.5:1958",
+            "force_n=10:1000:1958",
+            "--out",
+            "o",
+        ],
+    ] {
+        let out = jamchart_under(d, cap_kib, args);
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(
+            err.starts_with("jamchart: the memory of")
+                && err.contains("over the limit of 256 MiB (half the address-space limit")
+                && err.contains("COUNT of mu=MIN:MAX:COUNT"),
+            "{args:?}: {err}"
+        );
+        assert!(!d.join("o").exists(), "{args:?}: nothing is written");
+    }
+    // 150000 points: 254.6 MiB estimated, 220 MB measured.
+    let out = jamchart_under(d, cap_kib, &["sweep", "mu=0.1:0.5:150000", "--out", "o"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(d.join("o/sweep_mu.csv").is_file());
 }
 
 /// Regression (issue 13, "every count has a sane documented maximum"): `accuracy --runs

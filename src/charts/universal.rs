@@ -120,7 +120,7 @@ impl super::kinds::Kind for UniversalSpec {
 
     fn check_size(&self, _scene: &Scene) -> Result<()> {
         let cells = self.x_axis.count as f64 * self.y_axis.count as f64;
-        crate::limits::check_items(CELLS, cells, crate::limits::CONTOUR_MAP_CELL)
+        crate::limits::check_items(CELLS, cells, crate::limits::UNIVERSAL_CELL)
     }
 
     fn compute(&self, scene: &Scene, models: &dyn Models) -> Result<Universal> {

@@ -98,7 +98,7 @@ impl super::kinds::Kind for VlocatorCapacitySpec {
             "levels",
         )?;
         let cells = self.x_axis.count as f64 * self.y_axis.count as f64;
-        crate::limits::check_items(CELLS, cells, crate::limits::CONTOUR_MAP_CELL)
+        crate::limits::check_items(CELLS, cells, crate::limits::VLOCATOR_CAPACITY_CELL)
     }
 
     fn compute(

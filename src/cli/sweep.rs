@@ -13,7 +13,7 @@ use crate::charts::spec::Size;
 use crate::charts::sweep::{SweepPanel, SweepSpec};
 use crate::charts::sweep_layers::SweepLayer;
 use crate::charts::{self, ChartSpec, Scene, axis_label};
-use crate::error::Result;
+use crate::error::{Error, Result};
 
 use crate::grid::{AxisScale, GridAxis, GridParam};
 use crate::models::ModelKind;
@@ -176,8 +176,36 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
     Ok(scene)
 }
 
+/// The memory and file checks name the scene key a sweep fills (`chart.axis.count`); the user
+/// wrote the count in an axis argument, so the message names that (`COUNT of mu=MIN:MAX:COUNT`).
+fn key_as_written(e: Error, a: &SweepArgs) -> Error {
+    match e {
+        Error::TooLarge {
+            key,
+            what,
+            estimate_bytes,
+            limit_bytes,
+            limit_source,
+        } if key.starts_with("chart.") => {
+            let axes: Vec<String> = a
+                .axes
+                .iter()
+                .map(|x| format!("{}=MIN:MAX:COUNT", x.param.as_str()))
+                .collect();
+            Error::TooLarge {
+                key: format!("the COUNT of {}", axes.join(" and ")),
+                what,
+                estimate_bytes,
+                limit_bytes,
+                limit_source,
+            }
+        }
+        e => e,
+    }
+}
+
 pub fn run(a: &SweepArgs) -> Result<String> {
-    let scene = scene(a)?;
+    let scene = scene(a).map_err(|e| key_as_written(e, a))?;
     // The name is a file name: a folder in it would write outside --out.
     if scene.name.contains('/') || scene.name.starts_with('.') || scene.name.is_empty() {
         return Err(crate::error::Error::invalid(
