@@ -32,10 +32,7 @@ fn map(rotation: locator::Rotation) -> Grid<LocatorParams> {
 
 fn main() {
     let threads = rayon::current_num_threads();
-    let one = rayon::ThreadPoolBuilder::new()
-        .num_threads(1)
-        .build()
-        .expect("a one-thread pool");
+    let one = common::one_thread_pool();
     for rotation in [locator::Rotation::Free, locator::Rotation::Blocked] {
         let g = map(rotation);
         let exact = || {

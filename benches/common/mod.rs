@@ -21,3 +21,12 @@ pub fn median_s(runs: usize, mut f: impl FnMut()) -> f64 {
             .collect(),
     )
 }
+
+/// A rayon pool of one thread, to time a parallel computation on one core.
+#[allow(dead_code)] // not every benchmark compares thread counts
+pub fn one_thread_pool() -> rayon::ThreadPool {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("a one-thread pool")
+}
