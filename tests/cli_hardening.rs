@@ -116,7 +116,7 @@ fn scene_limits_are_found_by_estimate_not_by_allocation_failure() {
 
 /// Regression (issue 23, class 3, "aborts at sizes the tool accepts"): under a 512 MiB
 /// address-space cap `sweep mu=0.1:0.5:1600000` (2.2 GB peak, estimated at 640 MB from 400 B a
-/// point) and a 1958 x 1958 map died by SIGABRT. The estimates are now measured (1420 B a sweep
+/// point) and a 1958 x 1958 map died by SIGABRT. The estimates are now measured (1200 B a sweep
 /// point, `crate::limits`) and the memory limit is half the address-space cap when that is
 /// below 1 GiB, so both are refused with exit 2, naming the estimate, the limit, where the
 /// limit comes from and the count as the user wrote it; nothing is written. The largest sweep
@@ -147,7 +147,7 @@ fn memory_check_follows_the_address_space_cap() {
         );
         assert!(!d.join("o").exists(), "{args:?}: nothing is written");
     }
-    // 150000 points: 254.6 MiB estimated, 220 MB measured.
+    // 150000 points: 214.6 MiB estimated, about 180 MB measured.
     let out = jamchart_under(d, cap_kib, &["sweep", "mu=0.1:0.5:150000", "--out", "o"]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     assert!(d.join("o/sweep_mu.csv").is_file());
