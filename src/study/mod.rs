@@ -373,6 +373,11 @@ pub enum Why {
         /// The check and its numbers.
         check: CrossCheck,
     },
+    /// The min-norm answer failed its check (forces outside a friction cone).
+    MinNormCheck {
+        /// The check and its numbers.
+        check: crate::minnorm::MinNormCheck,
+    },
 }
 
 impl Why {
@@ -383,6 +388,7 @@ impl Why {
             Why::Outside { .. } => "outside",
             Why::IntegratorGaveUp { .. } => "integrator_gave_up",
             Why::CrossCheck { .. } => "cross_check",
+            Why::MinNormCheck { .. } => "min_norm_check",
         }
     }
 }
@@ -394,6 +400,7 @@ impl std::fmt::Display for Why {
             Why::Outside { outside } => write!(f, "{outside}"),
             Why::IntegratorGaveUp { failure } => write!(f, "the integrator gave up: {failure}"),
             Why::CrossCheck { check } => write!(f, "{check}"),
+            Why::MinNormCheck { check } => write!(f, "{check}"),
         }
     }
 }
@@ -406,6 +413,11 @@ pub fn why(s: &Solution) -> Option<Why> {
         Detail::Dynamics(d) => {
             if let Some(w) = dynamics_why(d) {
                 return Some(w);
+            }
+        }
+        Detail::MinNorm(m) => {
+            if let Some(check) = m.cross_check {
+                return Some(Why::MinNormCheck { check });
             }
         }
         _ => {}
