@@ -208,3 +208,45 @@ fn regularised_force_drive_rest_against_the_rigid_ode() {
         100.0 * worst_half
     );
 }
+
+/// The distance between the compliant contact's jam (RADAU5, Adams' default contact, 59 um at
+/// 200 N) and the rigid contact's (`x_jam_rigid_mm`) over mu 0.1-0.6 and 10-90 deg/s for both
+/// drives: the numbers behind `MAX_MODEL_SPREAD` (3.5 %) in `src/dynamics/mod.rs`. Every
+/// trusted jam lies within it (a case outside is flagged `inaccurate`, and printed).
+#[test]
+fn model_spread_of_the_default_contact() {
+    for drive in [Drive::Motion, Drive::Force] {
+        let (mut lo, mut hi): (f64, f64) = (f64::INFINITY, 0.0);
+        for mu in [0.1, 0.15, 0.3, 0.6] {
+            for omega in [10.0, 30.0, 90.0] {
+                let scene = SceneParams::default().with_mu(mu);
+                let mut p = force_drive(Method::Radau5, omega);
+                p.drive.mode = drive;
+                let s = simulate(&scene, &p, None).unwrap();
+                let (Some(x), Some(xr)) = (s.x_jam_mm, s.x_jam_rigid_mm) else {
+                    eprintln!(
+                        "{drive:?} mu {mu} omega {omega}: {:?} {:?}",
+                        s.status, s.cross_check
+                    );
+                    continue;
+                };
+                let e = (x - xr).abs() / xr;
+                eprintln!(
+                    "{drive:?} mu {mu} omega {omega}: {:?} {x:.4} mm, rigid {xr:.4} mm ({:.2} %)",
+                    s.status,
+                    100.0 * e
+                );
+                if s.status == JamStatus::Jams {
+                    assert!(e <= 0.035, "{drive:?} mu {mu} omega {omega}: {e}");
+                    lo = lo.min(e);
+                    hi = hi.max(e);
+                }
+            }
+        }
+        eprintln!(
+            "{drive:?}: trusted jams {:.2}-{:.2} % from the rigid contact",
+            100.0 * lo,
+            100.0 * hi
+        );
+    }
+}

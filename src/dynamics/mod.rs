@@ -59,9 +59,7 @@
 //!   check: DOPRI5's 10-14 mm jams without the verification run, and DOPRI5's `beyond_reach` at
 //!   the 1 um contact (the disc jams at 25 mm) with it.
 //!
-//! Over 240 runs (mu 0.15-0.6, contacts of 59, 10 and 1 um at 200 N, both drives, m 0.2-5 kg,
-//! omega 10-90 deg/s, rtol 1e-3 and 1e-4) the worst answer that still said `jams` was 0.45 % off a
-//! reference at rtol 1e-9: the estimate from one tenth of the tolerance can understate the error
+//! The estimate from one tenth of the tolerance can understate the error
 //! a few times over at loose tolerances. RADAU5 also tightens the tolerance it is given
 //! (rtol' = 0.1 rtol^(2/3)), as Hairer's code does. A method that gives up reports
 //! `integrator_failed` with the time and the reason.
@@ -91,7 +89,8 @@ use crate::error::Result;
 use crate::scene::{JamStatus, SceneParams};
 
 /// How far past the self-locking wedge, beyond the disc's coasting distance, a jam may lie before
-/// it is called inaccurate: the contact's give (the jam sits 0.2-1 % from r/mu at the defaults).
+/// it is called inaccurate: the contact's give (the motion drive's jam lies 0.23-2.69 % from the
+/// rigid contact's over mu 0.1-0.6 at 10-90 deg/s, `model_spread_of_the_default_contact`).
 pub(crate) const WEDGE_MARGIN: f64 = 0.05;
 
 /// Largest step: 1 deg of commanded palm turn, so that arming and a jam never share a step.
@@ -99,9 +98,10 @@ pub(crate) const MAX_STEP_DEG: f64 = 1.0;
 
 /// Largest relative distance between the compliant contact's jam and the rigid contact's before
 /// the answer is called contact-model dependent. The default contact (59 um at 200 N) lies
-/// 0.1-1.5 % from the rigid answer over mu 0.15-0.6, both drives, at 10-30 deg/s; 2.7 % with the
-/// motion drive at mu = 0.15 and 90 deg/s, 3.1 % with the force drive at mu = 0.1 and 30 deg/s
-/// (the disc coasting past the wedge), 4.6 % with the force drive at mu = 0.15 and 90 deg/s. The
+/// 0.23-2.69 % from the rigid answer with the motion drive over mu 0.1-0.6 at 10-90 deg/s (2.69 %
+/// at mu = 0.15 and 90 deg/s; 3.68 % at mu = 0.1 and 90 deg/s, flagged), and 0.36-0.56 % with
+/// the force drive, whose jam is where the disc comes to rest (`tests/force_drive_rest.rs`,
+/// `model_spread_of_the_default_contact` prints them). The
 /// cases of issue 10 lie 4.3-31 % off (a palm at 3600 deg/s on soft contacts, a 1e4 kg disc, a
 /// 1 N/mm contact, no ground friction on a stiff contact).
 pub(crate) const MAX_MODEL_SPREAD: f64 = 0.035;
