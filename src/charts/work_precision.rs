@@ -281,8 +281,17 @@ impl WorkPrecision {
              jamchart accuracy reports median wall times."
                 .to_string(),
         ];
-        // The physics the report judges by: the rigid limit (motion drive) or the closed form.
-        let physical = crate::study::reference(p, Some(d.drive.mode));
+        // The physics the report judges by: the rigid limit (motion drive) or the converged
+        // rigid dynamics (force drive; the accuracy report's converged step).
+        let physical = match d.drive.mode {
+            crate::dynamics::Drive::Motion => crate::study::reference(p, Some(d.drive.mode)),
+            crate::dynamics::Drive::Force => crate::study::rigid_dynamics_reference(
+                d,
+                p,
+                crate::study::accuracy::AccuracySettings::default().converged_step_deg,
+                crate::dynamics::DiscMotion::Slides,
+            )?,
+        };
         for r in &study.references {
             let off = match (r.x_jam_mm, physical.x_jam_mm) {
                 (Some(x), Some(xp)) => format!(

@@ -143,6 +143,13 @@ pub fn render_details(
              the simulated one presses on into the disc"
         );
     }
+    if let (Some(x), Some(t)) = (d.x_half_speed_mm, d.t_half_speed_s) {
+        let _ = writeln!(
+            s,
+            "  the disc's speed fell to half the palm's at x = {x:.3} mm, t = {t:.4} s: the \
+             palm stalled there and the disc coasted on to rest"
+        );
+    }
     if let Some(x) = d.x_stiction_mm {
         let _ = writeln!(
             s,
@@ -283,6 +290,9 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
                  without compliance; give --stiffness of the real contact, and check --mass \
                  (a heavy disc presses a soft contact millimetres deep)"
             ),
+            CrossCheck::NotAtRest { .. } => "use --method nonsmooth: its rigid disc comes to \
+                 rest exactly, with no creep"
+                .to_string(),
             CrossCheck::PastWedge { .. }
             | CrossCheck::StoppedBelowForceLimit { .. }
             | CrossCheck::HeldBelowSlidingPush { .. } => {

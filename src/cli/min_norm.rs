@@ -7,7 +7,7 @@ use serde::Serialize;
 use crate::config::Config;
 use crate::error::Result;
 use crate::minnorm::qp::{Backend, ContactSolution, HoldStatus, TracePoint};
-use crate::minnorm::{PalmSolution, palm};
+use crate::minnorm::{MinNormCheck, PalmSolution, palm};
 
 /// The min-norm model's own JSON keys in `solve`'s record.
 #[derive(Debug, Serialize)]
@@ -18,6 +18,7 @@ pub struct Record<'a> {
     backend: Backend,
     undetermined_solves: u32,
     contacts_at_jam: Vec<ContactRecord>,
+    cross_check: Option<MinNormCheck>,
     #[serde(skip_serializing_if = "Option::is_none")]
     trace_theta_deg: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -78,9 +79,28 @@ pub fn record<'a>(s: &PalmSolution, trace: Option<&'a Trace>) -> Record<'a> {
         backend: s.backend,
         undetermined_solves: s.undetermined_solves,
         contacts_at_jam,
+        cross_check: s.cross_check,
         trace_theta_deg: trace.map(|t| t.theta_deg),
         trace_status: trace.map(|t| t.solution.status),
         trace: trace.map(|t| t.solution.trace.as_slice()),
+    }
+}
+
+/// What to do about a min-norm answer's typed reason, in terms of the settings that act on it.
+fn advice(c: &MinNormCheck) -> String {
+    match *c {
+        MinNormCheck::ConeOverused {
+            backend: Backend::Clarabel,
+            ..
+        } => "use the exact path: set fast_path = true under [min_norm.qp] in --config (it \
+              solves the palm scene's small programs exactly, inside every cone)"
+            .to_string(),
+        MinNormCheck::ConeOverused {
+            backend: Backend::Exact,
+            ..
+        } => "this is a defect of the exact path: please report the scene; compare with \
+              --model statics, the closed form"
+            .to_string(),
     }
 }
 
@@ -107,6 +127,16 @@ pub fn render_details(out: &mut String, s: &PalmSolution, trace: Option<&Trace>)
                 g(f.utilisation),
             );
         }
+    }
+    if let Some(c) = &s.cross_check {
+        if let (Some(t), Some(x)) = (s.theta_jam_deg, s.x_jam_mm) {
+            let _ = writeln!(
+                out,
+                "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm"
+            );
+        }
+        let _ = writeln!(out, "  {}: {c}", s.status);
+        let _ = writeln!(out, "  advice: {}", advice(c));
     }
     if let Some(t) = trace {
         let _ = writeln!(

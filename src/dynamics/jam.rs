@@ -28,8 +28,13 @@
 //! a held disc creeps at a speed set by V_s and the load, and the stiction reading drifts with
 //! V_s; the ratio is dimensionless, and its value barely matters because the collapse is steep.
 //!
-//! Both drives use the commanded omega in v_geo: a force drive stalls at its limit, so the
-//! collapse of v / v_geo measures the stall and the disc's stop together.
+//! Both drives use the commanded omega in v_geo. With the motion drive the collapse is the
+//! lock-up, and it is the jam. With the force drive it is where the palm stalled at its limit
+//! and let the disc go on alone, braked by the ground: the disc still moves (9.2 mm/s at the
+//! defaults) and comes to rest up to 9.55 % further out (`tests/force_drive_rest.rs`). There the
+//! jam is read where the disc's speed first falls below the rest speed 2 V_d
+//! ([`rest_speed_mm_s`]) after the collapse, and the run goes on until it does; the collapse is
+//! kept as the half-speed reading.
 
 use super::integrators::{Control, DenseStep, Observer};
 use super::system::System;
@@ -89,6 +94,20 @@ pub struct JamRule {
     pub ground_decel: f64,
     /// Time step of the recorded series in s (None: no series).
     pub series_dt: Option<f64>,
+    /// Speed in mm/s below which the disc is at rest after the jam (the force drive's rest
+    /// reading, [`rest_speed_mm_s`]); None: the jam is the speed collapse itself (the motion
+    /// drive's lock-up).
+    pub rest_speed: Option<f64>,
+}
+
+/// The speed (mm/s) below which a regularised disc counts as at rest: twice the friction
+/// transition velocity V_d. Adams' friction has no true stiction, so a disc held by friction
+/// creeps at a speed set by V_s, V_d and the load (0.124 mm/s at the defaults' force drive,
+/// between V_s = 0.1 and V_d = 0.2 mm/s, see `force_drive_jam_is_where_the_disc_comes_to_rest`);
+/// below 2 V_d a disc braked by the ground alone (mu_g g) stops within (2 V_d)^2 / (2 mu_g g),
+/// 2e-5 mm at the defaults.
+pub fn rest_speed_mm_s(friction_velocity_mm_s: f64) -> f64 {
+    2.0 * friction_velocity_mm_s
 }
 
 /// The observer that reads the jam during the integration.
@@ -103,6 +122,8 @@ pub struct JamDetector<'a> {
     pub confirmed: bool,
     /// First instant after the jam with ground slip below V_s.
     pub stiction: Option<Instant>,
+    /// First instant after the jam with the disc's speed below the rule's rest speed.
+    pub rest: Option<Instant>,
     /// The contact left the palm's end at this instant.
     pub beyond_reach: Option<Instant>,
     /// Candidates the disc recovered from.
@@ -135,6 +156,7 @@ impl<'a> JamDetector<'a> {
             jam: None,
             confirmed: false,
             stiction: None,
+            rest: None,
             beyond_reach: None,
             discarded: 0,
             separated: false,
@@ -274,6 +296,7 @@ impl Observer for JamDetector<'_> {
                 self.jam = Some(instant(t));
                 self.push_after_jam = 0.0;
                 self.stiction = None;
+                self.rest = None;
                 let mut at = [0.0; 3];
                 step.eval(t, &mut at);
                 let (_, stiffness_n_per_mm) =
@@ -298,6 +321,7 @@ impl Observer for JamDetector<'_> {
                 // The disc recovered: it was slowed, not jammed.
                 self.jam = None;
                 self.stiction = None;
+                self.rest = None;
                 self.discarded += 1;
                 return Control::Continue;
             }
@@ -308,6 +332,20 @@ impl Observer for JamDetector<'_> {
             let a = t0.max(jam.t);
             let t = first_root(step, a, t1, |y| y[2] - rule.v_stiction);
             self.stiction = Some(instant(t));
+        }
+        if let Some(v_rest) = rule.rest_speed
+            && self.rest.is_none()
+            && y[2] < v_rest
+        {
+            let a = t0.max(jam.t);
+            let mut ya = [0.0; 3];
+            step.eval(a, &mut ya);
+            let t = if ya[2] < v_rest {
+                a
+            } else {
+                first_root(step, a, t1, |y| y[2] - v_rest)
+            };
+            self.rest = Some(instant(t));
         }
         if penetration <= 0.0 {
             self.touching_since = None;
@@ -323,7 +361,8 @@ impl Observer for JamDetector<'_> {
             self.confirmed = true;
             self.at_confirmation = Some((y[0], elastic_push));
         }
-        if self.confirmed && t1 >= jam.t + rule.after_jam {
+        let at_rest = rule.rest_speed.is_none() || self.rest.is_some();
+        if self.confirmed && at_rest && t1 >= jam.t + rule.after_jam {
             Control::Stop(t1)
         } else {
             Control::Continue
@@ -339,6 +378,17 @@ impl Observer for JamDetector<'_> {
             Some(_) => jam.t,
             None => self.touching_since? + self.confirm_time(jam.theta),
         };
-        Some(confirmed_by.max(jam.t + self.rule.after_jam))
+        // A disc still coasting to rest stops within v / (mu_g g) of the jam.
+        let coast = match (self.rule.rest_speed, self.rest) {
+            (Some(_), None) if self.rule.ground_decel > 0.0 => {
+                self.sys.geometric_speed(jam.theta) / self.rule.ground_decel
+            }
+            _ => 0.0,
+        };
+        Some(
+            confirmed_by
+                .max(jam.t + coast)
+                .max(jam.t + self.rule.after_jam),
+        )
     }
 }

@@ -182,8 +182,9 @@ settings! {
     /// How the regularised simulation reads the jam off the disc's speed.
     section = "dynamics.jam_reading";
     pub struct JamReading {
-        /// Jam when the disc's speed falls below this fraction of the geometric speed
-        /// r omega / (2 sin^2(theta/2)), in (0, arm_speed_ratio).
+        /// The speed collapse: the disc's speed falls below this fraction of the geometric speed
+        /// r omega / (2 sin^2(theta/2)), in (0, arm_speed_ratio); the jam with the motion drive,
+        /// where the palm stalls with the force drive (the disc then coasts to rest).
         // Half the geometric speed: the collapse is steep, so the reading barely depends on it.
         jam_speed_ratio: f64 = 0.5, quantity: "jam speed ratio", unit: "-",
             check: Check::Open(0.0, 1.0);

@@ -2,7 +2,7 @@
 
 use super::integrators::Failure;
 use super::integrators::{Dopri5, Outcome, Radau5, Stats, Tolerances};
-use super::jam::{JamDetector, JamRule};
+use super::jam::{JamDetector, JamRule, rest_speed_mm_s};
 use super::nonsmooth::{self, End};
 use super::system::System;
 use super::{
@@ -37,6 +37,8 @@ pub(super) fn run_once(
         after_jam: params.series.after_jam_s,
         ground_decel: scene.mu_ground * scene.gravity_m_s2 * 1000.0,
         series_dt: series_dt_s.filter(|dt| *dt > 0.0 && dt.is_finite()),
+        rest_speed: (params.drive.mode == Drive::Force)
+            .then(|| rest_speed_mm_s(params.friction.friction_velocity_mm_s)),
     };
     let mut det = JamDetector::new(&sys, rule, 0.0);
     let (outcome, stats) = match params.integrator.method {
@@ -71,6 +73,8 @@ fn conclude(
         t_jam_s: None,
         x_stiction_mm: det.stiction.map(|s| s.x),
         t_stiction_s: det.stiction.map(|s| s.t),
+        x_half_speed_mm: None,
+        t_half_speed_s: None,
         x_rigid_mm: x_rigid,
         method: params.integrator.method,
         drive: params.drive.mode,
@@ -112,9 +116,20 @@ fn conclude(
         };
         return out;
     };
-    out.theta_jam_deg = Some(jam.theta.to_degrees());
-    out.x_jam_mm = Some(jam.x);
-    out.t_jam_s = Some(jam.t);
+    // The force drive's jam is where the disc comes to rest; the speed collapse read before it
+    // is where the stalled palm let the disc coast (kept as the half-speed reading).
+    let rest = match params.drive.mode {
+        Drive::Force => {
+            out.x_half_speed_mm = Some(jam.x);
+            out.t_half_speed_s = Some(jam.t);
+            det.rest
+        }
+        Drive::Motion => Some(jam),
+    };
+    let at = rest.unwrap_or(jam);
+    out.theta_jam_deg = Some(at.theta.to_degrees());
+    out.x_jam_mm = Some(at.x);
+    out.t_jam_s = Some(at.t);
     // A motion-driven palm against a jammed disc is a lock-up: a real palm stops there.
     if params.drive.mode == Drive::Motion {
         out.physical_until_s = Some(jam.t);
@@ -127,11 +142,18 @@ fn conclude(
     } else {
         f64::INFINITY
     };
+    if rest.is_none() {
+        out.cross_check = Some(CrossCheck::NotAtRest {
+            x_half_speed_mm: jam.x,
+            simulated_s: simulated,
+            rest_speed_mm_s: rest_speed_mm_s(params.friction.friction_velocity_mm_s),
+        });
+    }
     if let Some(xw) = x_rigid
-        && jam.x > xw * (1.0 + WEDGE_MARGIN) + coast
+        && at.x > xw * (1.0 + WEDGE_MARGIN) + coast
     {
         out.cross_check = Some(CrossCheck::PastWedge {
-            x_jam_mm: jam.x,
+            x_jam_mm: at.x,
             x_rigid_mm: xw,
             coast_mm: coast,
             geometric_speed_mm_s: sys.geometric_speed(wedge),
@@ -150,7 +172,7 @@ fn conclude(
         let needed = sliding_push_n(scene, params, theta);
         if push > 2.0 * needed {
             out.cross_check = Some(CrossCheck::HeldBelowSlidingPush {
-                x_jam_mm: jam.x,
+                x_jam_mm: at.x,
                 theta_deg: theta.to_degrees(),
                 push_n: push,
                 needed_n: needed,
@@ -200,6 +222,8 @@ fn run_nonsmooth(
         t_jam_s: None,
         x_stiction_mm: None,
         t_stiction_s: None,
+        x_half_speed_mm: None,
+        t_half_speed_s: None,
         x_rigid_mm: x_rigid,
         method: params.integrator.method,
         drive: params.drive.mode,

@@ -80,6 +80,14 @@ pub enum CrossCheck {
         rigid_status: JamStatus,
         x_jam_rigid_mm: Option<f64>,
     },
+    /// The force-driven disc had not come to rest (its speed below `rest_speed_mm_s`) when the
+    /// run ended at `simulated_s`; its speed collapsed (the palm stalled) at `x_half_speed_mm`,
+    /// and it was still moving.
+    NotAtRest {
+        x_half_speed_mm: f64,
+        simulated_s: f64,
+        rest_speed_mm_s: f64,
+    },
     /// The compliant contact's jam at `x_jam_mm` lies more than `allowed_rel` from the rigid
     /// contact's `x_jam_rigid_mm`: the answer is the contact stiffness's (or the mass's), not the
     /// geometry's and friction's.
@@ -210,6 +218,16 @@ impl std::fmt::Display for CrossCheck {
                     at(x_jam_mm)
                 )
             }
+            CrossCheck::NotAtRest {
+                x_half_speed_mm,
+                simulated_s,
+                rest_speed_mm_s,
+            } => write!(
+                f,
+                "the disc's speed collapsed at {x_half_speed_mm:.3} mm (the palm stalled) but it \
+                 had not come to rest (below {rest_speed_mm_s} mm/s) when the run ended at \
+                 t = {simulated_s:.4} s"
+            ),
             CrossCheck::ContactModelDependent {
                 x_jam_mm,
                 x_jam_rigid_mm,

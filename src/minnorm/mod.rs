@@ -134,5 +134,5 @@ pub(crate) mod qp;
 pub(crate) mod tolerance;
 
 pub use contact::{Contact, ContactProblem, Joint, Space, Wrench};
-pub use palm::{Formulation, MinNormSettings, PalmSolution, palm_problem};
+pub use palm::{Formulation, MinNormCheck, MinNormSettings, PalmSolution, palm_problem};
 pub use qp::{Backend, ContactSolution, HoldStatus, QpSettings, solve, solve_clarabel};

@@ -137,6 +137,60 @@ pub struct PalmSolution {
     /// The held solution at theta_jam (the contact forces at the jam), if the disc jams or is
     /// jammed at start.
     pub at_jam: Option<ContactSolution>,
+    /// Why the answer is `inaccurate`, if it is.
+    pub cross_check: Option<MinNormCheck>,
+}
+
+/// How far past its friction cone a held solution may load a contact, relative:
+/// |f_t| <= (1 + CONE_EXCESS) mu f_n. The bisection resolves theta_jam to 1e-8 of itself
+/// (`RELATIVE_RESOLUTION`), and a cone overused by a fraction d holds the disc past its jam by
+/// about that fraction of the angle: clarabel at its default tolerances overused the palm's
+/// cone by 4.8e-5 at a push of 1/2000 of the weight (rolling) and landed 5.9e-5 (0.0026 deg)
+/// off, and by a factor 4.7 at mu = 1e-9 (`clarabel_overusing_a_friction_cone_is_flagged`).
+/// The exact path stays within 7e-6 (at mu = 1e-9, where its jam is 3.6e-6 off the closed
+/// form).
+pub const CONE_EXCESS: f64 = 1e-5;
+
+/// Why a min-norm answer is not a trusted jam: typed reasons with their numbers.
+///
+/// JSON: the snake_case variant name under `reason`, beside its fields.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "reason", rename_all = "snake_case")]
+#[allow(missing_docs)] // each variant's doc names its fields and their units
+pub enum MinNormCheck {
+    /// The held solution at the jam loads contact `contact` (index in the formulation's
+    /// contacts) to `utilisation` of its friction cone, more than 1 + `allowed_excess`: the
+    /// solver `backend` met its feasibility tolerance with forces outside the cone, so the
+    /// disc counts as held past where it slips.
+    ConeOverused {
+        contact: usize,
+        utilisation: f64,
+        allowed_excess: f64,
+        backend: Backend,
+    },
+}
+
+impl std::fmt::Display for MinNormCheck {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            MinNormCheck::ConeOverused {
+                contact,
+                utilisation,
+                allowed_excess,
+                backend,
+            } => write!(
+                f,
+                "the held forces at the jam load contact {} to {utilisation:.6} of its friction \
+                 cone (more than 1 + {allowed_excess:e}): {} let them leave the cone within its \
+                 tolerance",
+                contact + 1,
+                match backend {
+                    Backend::Exact => "the exact path",
+                    Backend::Clarabel => "clarabel",
+                }
+            ),
+        }
+    }
 }
 
 /// Below 0.1 rad the bisection stops at this fraction of the angle instead of
@@ -171,6 +225,22 @@ impl Search<'_> {
         self.out.theta_jam_deg = Some(theta.to_degrees());
         let x = self.p.disc_position_mm(theta);
         self.out.x_jam_mm = x.is_finite().then_some(x);
+        let over = sol
+            .forces
+            .iter()
+            .enumerate()
+            .map(|(i, f)| (i, f.utilisation))
+            .filter(|&(_, u)| u > 1.0 + CONE_EXCESS)
+            .max_by(|a, b| a.1.total_cmp(&b.1));
+        if let Some((contact, utilisation)) = over {
+            self.out.cross_check = Some(MinNormCheck::ConeOverused {
+                contact,
+                utilisation,
+                allowed_excess: CONE_EXCESS,
+                backend: sol.backend,
+            });
+            self.out.status = JamStatus::Inaccurate;
+        }
         self.out.at_jam = Some(sol);
         self.out
     }
@@ -199,6 +269,7 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
             undetermined_solves: 0,
             backend: Backend::Clarabel,
             at_jam: None,
+            cross_check: None,
         },
     };
     let start = p.start_angle_deg.to_radians();

@@ -524,7 +524,7 @@ fn answer(solve: SolveFn, base: &Config, c: &Case, m: &Source) -> Result<Stabili
                 Class::WrongUnflagged
             }
         }
-        Some(Why::CrossCheck { .. }) => Class::InaccurateFlagged,
+        Some(Why::CrossCheck { .. } | Why::MinNormCheck { .. }) => Class::InaccurateFlagged,
         // Outside every model, the reference's too (a start above 90 deg): the same answer.
         Some(Why::Outside { .. }) if r.status == JamStatus::OutsideModel => Class::Correct,
         Some(Why::IntegratorGaveUp { .. } | Why::Outside { .. }) => Class::FailedNamed,
