@@ -77,3 +77,29 @@ fn a_files_bad_range_names_file_and_line() {
         assert!(err.contains(says), "{text}: {err}");
     }
 }
+
+/// The shaft job is one command: the jam interval, the worst ends and the status
+/// change over the friction range, in text and JSON.
+#[test]
+fn the_shaft_job_is_one_command() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut args = vec!["solve"];
+    args.extend(cli_util::SHAFT);
+    args.extend(["--mu", "0.12:0.3"]);
+    let o = jamchart(dir.path(), &args);
+    let out = cli_util::stdout(&o);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    for line in [
+        "theta_jam from 14.355 to 35.013 deg, x_jam from 39.629 to 99.261 mm",
+        "beyond_reach for mu < 0.1489, jams from 0.1489 to 0.3",
+        "the jam comes earliest at the high end",
+    ] {
+        assert!(out.contains(line), "{line}\n{out}");
+    }
+    args.extend(["--format", "json"]);
+    let v = cli_util::json(&jamchart(dir.path(), &args));
+    let r = &v["results"][0];
+    assert_eq!(r["method"], "corners");
+    assert_eq!(r["inputs"][0]["segments"][1]["status"], "jams");
+    assert_eq!(v["uncertain"][0]["kind"], "range");
+}

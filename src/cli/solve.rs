@@ -84,9 +84,12 @@ struct Document<'a> {
 }
 
 pub fn run(a: &SolveArgs) -> Result<String> {
-    let config = a
+    let (config, uncertain) = a
         .scene
-        .resolve(&[a.dynamics.overrides(), a.min_norm.overrides()], "solve")?;
+        .resolve_uncertain(&[a.dynamics.overrides(), a.min_norm.overrides()])?;
+    if !uncertain.is_empty() {
+        return super::solve_range::run(a, &config, &uncertain);
+    }
     let kinds = a.model.models();
     if let Some(path) = &a.series {
         if !kinds.contains(&ModelKind::Dynamics) {
