@@ -41,6 +41,10 @@ fn bad_ranges_exit_2_naming_the_flag() {
         ),
         ("accuracy --mu 0.1:0.3", "accuracy takes a single value"),
         (
+            "solve --mu normal(0.2,0.03) --samples 20000000",
+            "invalid samples = 20000000 (flag --samples): the Monte Carlo sample count must be in [1, 10000000]",
+        ),
+        (
             "vlocator --load-angle normal(-90,5)",
             "give a range LOW:HIGH",
         ),

@@ -84,6 +84,9 @@ pub fn flag_for_key(key: &str) -> Option<String> {
         "cells_per_axis" => "--map-cells",
         "cases" => "--cases",
         "runs" => "--runs",
+        "samples" => "--samples",
+        "quantiles" => "--quantiles",
+        "before_mm" => "--before",
         _ => return None,
     };
     Some(flag.to_string())

@@ -35,6 +35,8 @@ pub struct SolveArgs {
     /// Model to use.
     #[arg(long, value_enum, default_value_t = ModelChoice::One(ModelKind::Statics))]
     pub model: ModelChoice,
+    #[command(flatten)]
+    pub distribution: super::solve_range::DistArgs,
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
     pub format: OutputFormat,

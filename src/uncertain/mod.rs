@@ -32,6 +32,7 @@
 //! built-in scenes, the parameters shown) keeps: the midpoint of a range or uniform, the mean
 //! of a normal, the median of a lognormal.
 
+pub mod dist;
 pub mod range;
 mod table;
 
