@@ -107,3 +107,41 @@ fn the_shaft_job_is_one_command() {
     assert_eq!(r["inputs"][0]["segments"][1]["status"], "jams");
     assert_eq!(v["uncertain"][0]["kind"], "range");
 }
+
+/// `sweep` with a range draws the band's two edges and writes them as layers `band_earliest`
+/// and `band_latest` of the CSV: the closed form at the range's ends (here mu = 0.3 and 0.16,
+/// checked against `solve` at those points); a map of two axes refuses a range for now.
+#[test]
+fn a_sweep_with_a_range_writes_the_bands_edges() {
+    let dir = tempfile::tempdir().unwrap();
+    let base = ["--radius", "12.5", "--mass", "0.4", "--palm-length", "80"];
+    let mut args = vec!["sweep", "force_n=20:100:5", "--out", "o", "--format", "svg"];
+    args.extend(base);
+    args.extend(["--mu", "0.16:0.3"]);
+    let o = jamchart(dir.path(), &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let csv = std::fs::read_to_string(dir.path().join("o/sweep_force_n.csv")).unwrap();
+    for (layer, mu) in [("band_earliest", "0.3"), ("band_latest", "0.16")] {
+        let row = csv
+            .lines()
+            .find(|l| l.starts_with(&format!("{layer},60,")))
+            .unwrap_or_else(|| panic!("{layer} at F = 60 in\n{csv}"));
+        let x: f64 = row.split(',').nth(3).unwrap().parse().unwrap();
+        let mut solve = vec!["solve", "--force", "60", "--mu", mu, "--format", "json"];
+        solve.extend(base);
+        let v = cli_util::json(&jamchart(dir.path(), &solve));
+        let want = v["results"][0]["x_jam_mm"].as_f64().unwrap();
+        assert!((x - want).abs() < 1e-4, "{layer}: {x} vs solve {want}");
+    }
+    let o = jamchart(
+        dir.path(),
+        &[
+            "sweep",
+            "force_n=20:100",
+            "mass_kg=0.1:1",
+            "--mu",
+            "0.1:0.3",
+        ],
+    );
+    assert_eq!(o.status.code(), Some(2));
+}

@@ -14,7 +14,7 @@ use serde::{Deserialize, Serialize};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
-use super::sweep::{Series, SeriesPoint, SeriesStyle, SweepSpec};
+use super::sweep::{Series, SeriesPoint, SeriesStyle, SweepBand, SweepSpec};
 use crate::dynamics::{Drive, DynamicsParams};
 use crate::error::{Error, Result};
 use crate::grid::{self, GridParam};
@@ -134,6 +134,34 @@ pub fn series(
 /// layers once called the statics directly and drew a jam for a push starting above 90 deg,
 /// where `solve` says `outside_model`. A point outside the model is an empty row; a sweep
 /// outside it at every point would be an empty chart and fails instead, with the reason.
+/// The band's two edges: the closed form at the earliest-jam corner and at the latest.
+pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &SweepBand) -> Result<Vec<Series>> {
+    let edge = |params, layer, which: &str| -> Result<Series> {
+        let at = Scene {
+            params,
+            ..scene.clone()
+        };
+        Ok(Series {
+            layer,
+            label: format!("{}: {which}", band.label),
+            style: SeriesStyle::Line(LineKind::Dotted),
+            points: closed_form(spec, &at)?
+                .into_iter()
+                .map(|(v, s)| SeriesPoint {
+                    status: Some(s.status),
+                    ..point(v, s.x_jam_mm, s.theta_jam_deg)
+                })
+                .collect(),
+            flat_names: None,
+            callout: None,
+        })
+    };
+    Ok(vec![
+        edge(band.earliest, "band_earliest", "earliest jam")?,
+        edge(band.latest, "band_latest", "latest jam")?,
+    ])
+}
+
 fn closed_form(spec: &SweepSpec, scene: &Scene) -> Result<Vec<(f64, Solution)>> {
     let param = spec.axis.param;
     let answers = spec
