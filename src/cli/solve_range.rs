@@ -30,12 +30,8 @@ pub struct DistArgs {
     #[arg(long, value_name = "Q", value_delimiter = ',', value_parser = parse_f64,
           default_value = "0.05,0.5,0.95")]
     pub quantiles: Vec<f64>,
-    /// Monte Carlo samples where the answer is not exact [default: 100000 for the statics,
-    /// 2000 for min-norm and dynamics].
-    ///
-    /// The statics with one distributed input are exact (the monotone map); several inputs or
-    /// the other models are sampled, with 95 % intervals printed. At most 1e7.
-    #[arg(long, value_name = "N")]
+    /// Monte Carlo samples where the answer is not exact.
+    #[arg(long, value_name = "N", long_help = samples_help())]
     pub samples: Option<u64>,
     /// Seed of the Monte Carlo samples: the same seed gives the same answer on any number of
     /// threads.
@@ -49,6 +45,17 @@ const STATICS_SAMPLES: u64 = 100_000;
 
 /// Monte Carlo samples of min-norm and the simulation unless --samples says otherwise.
 const MODEL_SAMPLES: u64 = 2_000;
+
+/// The long help of --samples, with the counts of the code.
+fn samples_help() -> String {
+    format!(
+        "Monte Carlo samples where the answer is not exact (unset: {STATICS_SAMPLES} for the \
+         statics, {MODEL_SAMPLES} for min-norm and dynamics).\n\nThe statics with one \
+         distributed input are exact (the monotone map); several inputs or the other models are \
+         sampled, with 95 % intervals printed. At most {}.",
+        dist::MAX_SAMPLES
+    )
+}
 
 /// One model's answer over the box, and over the distribution where an input has one.
 #[derive(Serialize)]
