@@ -90,7 +90,7 @@ const FORMS: &str = "a number, LOW:HIGH, uniform(LOW,HIGH), normal(MEAN,SD) or \
 
 impl Uncertain {
     /// Parses the syntax of the module docs; numbers must be finite. The range check against
-    /// the setting is [`Uncertain::check`].
+    /// the setting is `Uncertain::check`.
     pub fn parse(text: &str) -> std::result::Result<Uncertain, String> {
         let t = text.trim();
         let number = |s: &str| -> std::result::Result<f64, String> {
