@@ -33,6 +33,31 @@
 //! with s_B the contact's distance from the hinge along the palm, on which the palm's reach is
 //! judged. For mu = 0.4 and h = 0.5 mm the rigid limit moves from r / mu = 25.000 mm to
 //! 25.725 mm; the paper's Adams reading with its 1 mm bars, 25.58 mm, lies between.
+//!
+//! ## Monotone in every uncertain input
+//!
+//! The inputs that take a range ([`crate::uncertain`]) are mu_ground, mu_palm, m and F. Each
+//! moves theta_jam one way only, whatever the others:
+//!
+//! - mu_palm: theta_jam = atan(mu_p) + (terms without mu_p) grows with it (d atan / d mu =
+//!   1 / (1 + mu^2) > 0);
+//! - mu_ground: atan(mu_g) grows, and so does sin(atan mu_g) = mu_g / sqrt(1 + mu_g^2) (its
+//!   derivative is (1 + mu_g^2)^(-3/2) > 0), hence asin(m g sin(alpha_g) / F) too (asin grows);
+//! - m: m g sin(alpha_g) / F grows with m (sin(alpha_g) >= 0), so theta_jam does;
+//! - F: the same ratio falls as F grows, so theta_jam falls.
+//!
+//! Where m g sin(alpha_g) / F reaches 1 the push is too weak (theta_jam = +inf), which is again
+//! the end of growing theta_jam. x_jam = r cot(theta/2) + h / sin(theta) falls as theta grows:
+//! dx/dtheta = -(2 (r + h) cos^2(theta/2) - h) / sin^2(theta) < 0 while cos^2(theta/2) >
+//! h / (2 (r + h)), which is every theta up to 90 deg at least (cos^2(theta/2) >= 1/2 there)
+//! and every theta below 180 deg for h = 0 ([`crate::uncertain::range::x_turn_rad`]). So over a
+//! box of inputs theta_jam and x_jam take their extremes at two corners: every input at the end
+//! that raises theta_jam (high frictions and mass, low push: the earliest jam, nearest the
+//! hinge) and the opposite corner (the latest jam, furthest out). The status is decided by
+//! theta_jam against the start angle and the palm's reach angle (neither depends on these
+//! inputs), so it changes at most once per boundary along each input; the breakpoints are
+//! found by bisection (`jamchart solve --mu 0.12:0.3`). The tests check the corners against a
+//! brute-force grid over the box (`tests/uncertain_range.rs`).
 
 use std::f64::consts::FRAC_PI_2;
 

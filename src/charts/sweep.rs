@@ -75,6 +75,24 @@ pub struct SweepSpec {
     /// false; `--set chart.read_off=true --set mu=0.27`).
     #[serde(default)]
     pub read_off: bool,
+    /// The band of an uncertain input (`sweep ... --mu 0.12:0.3`): the closed form at the
+    /// box's two extreme corners, drawn and written as layers `band_earliest` and
+    /// `band_latest` (default: none; the built-in scenes have none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub band: Option<SweepBand>,
+}
+
+/// The two edges of a band: the scene at the corner where the jam comes earliest and at the
+/// one where it comes latest ([`crate::uncertain::range`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepBand {
+    /// The scene at the earliest-jam corner.
+    pub earliest: crate::scene::SceneParams,
+    /// The scene at the latest-jam corner.
+    pub latest: crate::scene::SceneParams,
+    /// What the band spans, for the legend, e.g. `μ 0.12 to 0.3`.
+    pub label: String,
 }
 
 fn both_panels() -> Vec<SweepPanel> {
@@ -281,6 +299,9 @@ impl Sweep {
         let mut series = Vec::new();
         for l in &spec.layers {
             series.extend(sweep_layers::series(*l, spec, scene, models)?);
+        }
+        if let Some(band) = &spec.band {
+            series.extend(sweep_layers::band(spec, scene, band)?);
         }
         let read_off = match (spec.read_off, spec.axis.param.get(&scene.params)) {
             (true, Some(v)) => {

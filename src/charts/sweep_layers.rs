@@ -14,7 +14,7 @@ use serde::{Deserialize, Serialize};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
-use super::sweep::{Series, SeriesPoint, SeriesStyle, SweepSpec};
+use super::sweep::{Series, SeriesPoint, SeriesStyle, SweepBand, SweepSpec};
 use crate::dynamics::{Drive, DynamicsParams};
 use crate::error::{Error, Result};
 use crate::grid::{self, GridParam};
@@ -121,6 +121,31 @@ pub fn series(
         SweepLayer::SimulationMotion => vec![simulation(scene, models, Drive::Motion)?],
         SweepLayer::SimulationForce => vec![simulation(scene, models, Drive::Force)?],
     })
+}
+
+/// The band's two edges: the closed form at the earliest-jam corner and at the latest.
+pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &SweepBand) -> Result<Vec<Series>> {
+    let edge = |params, layer, which: &str| -> Result<Series> {
+        let at = Scene {
+            params,
+            ..scene.clone()
+        };
+        Ok(Series {
+            layer,
+            label: format!("{}: {which}", band.label),
+            style: SeriesStyle::Line(LineKind::Dotted),
+            points: closed_form(spec, &at, |v, s| SeriesPoint {
+                status: Some(s.status),
+                ..point(v, s.x_jam_mm, s.theta_jam_deg)
+            })?,
+            flat_names: None,
+            callout: None,
+        })
+    };
+    Ok(vec![
+        edge(band.earliest, "band_earliest", "earliest jam")?,
+        edge(band.latest, "band_latest", "latest jam")?,
+    ])
 }
 
 /// The closed form's answer at each sample of `spec`'s axis, through the port

@@ -14,6 +14,7 @@ mod progress;
 pub mod render;
 mod shell;
 mod solve;
+mod solve_range;
 mod stability;
 mod sweep;
 mod table;

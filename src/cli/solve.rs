@@ -35,6 +35,8 @@ pub struct SolveArgs {
     /// Model to use.
     #[arg(long, value_enum, default_value_t = ModelChoice::One(ModelKind::Statics))]
     pub model: ModelChoice,
+    #[command(flatten)]
+    pub distribution: super::solve_range::DistArgs,
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
     pub format: OutputFormat,
@@ -84,9 +86,12 @@ struct Document<'a> {
 }
 
 pub fn run(a: &SolveArgs) -> Result<String> {
-    let config = a
+    let (config, uncertain) = a
         .scene
-        .resolve(&[a.dynamics.overrides(), a.min_norm.overrides()])?;
+        .resolve_uncertain(&[a.dynamics.overrides(), a.min_norm.overrides()])?;
+    if !uncertain.is_empty() {
+        return super::solve_range::run(a, &config, &uncertain);
+    }
     let kinds = a.model.models();
     if let Some(path) = &a.series {
         if !kinds.contains(&ModelKind::Dynamics) {

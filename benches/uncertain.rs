@@ -1,0 +1,127 @@
+//! Uncertain inputs (issue 19): a range answer of the closed form against a point answer, a
+//! 100,000-sample Monte Carlo of the statics, and Monte Carlo of the nonsmooth motion-drive
+//! simulation in samples per second on 1 thread and on all.
+//!
+//! `cargo bench --bench uncertain`; prints medians. Goals (issue 19): the range answer within
+//! 2x of a point answer; 1e5 statics samples well under 1 s; about 10,000 simulation samples
+//! per second on 2 cores.
+
+mod common;
+
+use common::median_s;
+use jamchart::dynamics::{DynamicsParams, IntegratorSettings, Method, Verification};
+use jamchart::uncertain::dist::{self, DistQuestion};
+use jamchart::uncertain::range;
+use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
+use jamchart::{ModelSpec, SceneParams, statics};
+
+/// The issue's shaft, mu nominal.
+fn shaft() -> SceneParams {
+    SceneParams {
+        radius_mm: 12.5,
+        mass_kg: 0.4,
+        force_n: 40.0,
+        palm_length_mm: 80.0,
+        ..Default::default()
+    }
+    .with_mu(0.21)
+}
+
+fn mu(value: Uncertain) -> UncertainSet {
+    UncertainSet {
+        inputs: vec![UncertainInput {
+            name: "mu",
+            keys: vec!["mu_ground", "mu_palm"],
+            value,
+        }],
+    }
+}
+
+fn main() {
+    let p = shaft();
+    let box_mu = mu(Uncertain::Range { lo: 0.12, hi: 0.3 });
+    let reps = 10_000;
+    let point = median_s(15, || {
+        for _ in 0..reps {
+            std::hint::black_box(statics::solve(std::hint::black_box(&p)));
+        }
+    }) / reps as f64;
+    let whole = median_s(15, || {
+        for _ in 0..reps / 100 {
+            std::hint::black_box(range::closed_form(std::hint::black_box(&p), &box_mu));
+        }
+    }) / (reps / 100) as f64;
+    let corners = median_s(15, || {
+        for _ in 0..reps {
+            let lo = statics::solve(&p.with_mu(0.12));
+            let hi = statics::solve(&p.with_mu(0.3));
+            std::hint::black_box((lo, hi));
+        }
+    }) / reps as f64;
+    println!(
+        "shaft, mu 0.12:0.3: point answer {:.0} ns; the box's interval from its two corners \
+         {:.0} ns ({:.1}x); the whole range answer with the status breakpoints bisected {:.1} us \
+         ({:.0}x)",
+        point * 1e9,
+        corners * 1e9,
+        corners / point,
+        whole * 1e6,
+        whole / point
+    );
+
+    let threads = rayon::current_num_threads();
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("a one-thread pool");
+    let mut two_inputs = mu(Uncertain::Normal {
+        mean: 0.2,
+        sd: 0.03,
+    });
+    two_inputs.inputs.push(UncertainInput {
+        name: "force_n",
+        keys: vec!["force_n"],
+        value: Uncertain::Uniform { lo: 30.0, hi: 50.0 },
+    });
+    let ask = |samples| DistQuestion {
+        before_mm: vec![50.0],
+        quantiles: vec![0.05, 0.5, 0.95],
+        samples,
+        seed: 1,
+    };
+    let mc = |set: &UncertainSet, spec: &ModelSpec, n: u64| {
+        std::hint::black_box(dist::monte_carlo(spec, &p, set, &ask(n)).expect("valid"));
+    };
+    let all = median_s(9, || mc(&two_inputs, &ModelSpec::Statics, 100_000));
+    let single = one.install(|| median_s(9, || mc(&two_inputs, &ModelSpec::Statics, 100_000)));
+    println!(
+        "statics Monte Carlo, mu normal(0.2,0.03) x force uniform(30,50), 100000 samples: \
+         {:.1} ms on {threads} threads, {:.1} ms on 1 thread",
+        all * 1e3,
+        single * 1e3
+    );
+
+    let nonsmooth = ModelSpec::Dynamics {
+        params: DynamicsParams {
+            integrator: IntegratorSettings {
+                method: Method::Nonsmooth,
+                ..Default::default()
+            },
+            verification: Verification {
+                verify: false,
+                ..Default::default()
+            },
+            ..Default::default()
+        },
+        series_dt_s: None,
+    };
+    let n = 2_000;
+    let all = median_s(3, || mc(&two_inputs, &nonsmooth, n));
+    let single = one.install(|| median_s(3, || mc(&two_inputs, &nonsmooth, n)));
+    println!(
+        "nonsmooth motion-drive Monte Carlo (no verify run), {n} samples: {:.0} samples/s on \
+         {threads} threads, {:.0} samples/s on 1 thread",
+        n as f64 / all,
+        n as f64 / single
+    );
+}

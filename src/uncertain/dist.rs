@@ -1,0 +1,316 @@
+//! Probabilities and quantiles of the jam position under distributed inputs.
+//!
+//! The quantity is x_jam where the disc jams on a long enough palm (the closed form's jam, at
+//! the start position where the disc is held there or cannot be moved; a model's own answer),
+//! and "jams before x" means x_jam < x: the disc stops short of x.
+//!
+//! ## Exact, by the monotone map
+//!
+//! With the closed form and one distributed input U, x_jam = X(U) is monotone (the statics
+//! docs, "Monotone in every uncertain input"), so its quantiles are the input's mapped:
+//! Q_x(q) = X(Q_U(q)) where X rises with U and X(Q_U(1 - q)) where it falls; and P(x_jam < x)
+//! = F_U(u*) or 1 - F_U(u*) with X(u*) = x found by bisection to 1e-12 of the support.
+//!
+//! ## Monte Carlo
+//!
+//! Otherwise (several inputs, or a model other than the closed form) the inputs are sampled by
+//! their inverse CDFs (a range as uniform), [`CHUNK`] samples per chunk. Each chunk's generator
+//! is ChaCha8 seeded with the seed and its stream set to the chunk's index, so every sample
+//! depends on the seed and its own index only: the answer is bit-identical for any thread count.
+//! P is given with its 95 % interval p +- 1.96 sqrt(p (1 - p) / n); a quantile with the 95 %
+//! interval of the order statistics at ranks n q +- 1.96 sqrt(n q (1 - q)).
+
+use rand_chacha::ChaCha8Rng;
+use rand_core::{Rng, SeedableRng};
+use rayon::prelude::*;
+use serde::Serialize;
+
+use super::UncertainSet;
+use crate::error::{Error, Result};
+use crate::models::{self, ModelSpec};
+use crate::scene::SceneParams;
+use crate::statics;
+
+/// Samples per generator stream.
+pub const CHUNK: usize = 1024;
+
+/// Most Monte Carlo samples one answer takes: 1e7 closed-form samples take about a second per
+/// core and 80 MB; a simulation takes far longer per sample.
+pub const MAX_SAMPLES: u64 = 10_000_000;
+
+/// 1.96: the two-sided 95 % point of the normal.
+const Z95: f64 = 1.96;
+
+/// What is asked of the distribution.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DistQuestion {
+    /// Positions x in mm for P(x_jam < x).
+    pub before_mm: Vec<f64>,
+    /// Probabilities q in (0, 1) for the quantiles of x_jam.
+    pub quantiles: Vec<f64>,
+    /// Monte Carlo samples (when it is not exact), at most [`MAX_SAMPLES`].
+    pub samples: u64,
+    /// The generator's seed.
+    pub seed: u64,
+}
+
+/// How the answer was reached.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "method", rename_all = "snake_case")]
+pub enum DistMethod {
+    /// By the monotone map of one input's distribution: no sampling error.
+    Exact,
+    /// Monte Carlo.
+    MonteCarlo {
+        /// Samples drawn.
+        samples: u64,
+        /// The seed.
+        seed: u64,
+        /// Samples without a jam position (too weak, or a model without an answer): counted
+        /// as not jamming before any x, left out of the quantiles.
+        without_jam: u64,
+    },
+}
+
+/// A probability or a quantile with its 95 % interval (equal ends when exact).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Estimate {
+    /// The value.
+    pub value: f64,
+    /// The 95 % interval's low end.
+    pub lo: f64,
+    /// The 95 % interval's high end.
+    pub hi: f64,
+}
+
+/// P(x_jam < x) at one x.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Before {
+    /// The position x in mm.
+    pub x_mm: f64,
+    /// The probability.
+    pub probability: Estimate,
+}
+
+/// One quantile of x_jam.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Quantile {
+    /// The probability q.
+    pub q: f64,
+    /// x_jam in mm with P(x_jam <= it) = q.
+    pub x_jam_mm: Estimate,
+}
+
+/// The distribution's answer.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DistAnswer {
+    /// Exact or Monte Carlo.
+    #[serde(flatten)]
+    pub method: DistMethod,
+    /// P(x_jam < x) for each asked x.
+    pub before: Vec<Before>,
+    /// The asked quantiles.
+    pub quantiles: Vec<Quantile>,
+}
+
+impl DistQuestion {
+    /// Checks the question; the error names the flag's key.
+    pub fn validate(&self) -> Result<()> {
+        if self.samples == 0 || self.samples > MAX_SAMPLES {
+            return Err(Error::invalid(
+                "samples",
+                self.samples,
+                format!("the Monte Carlo sample count must be in [1, {MAX_SAMPLES}]"),
+            ));
+        }
+        if let Some(q) = self.quantiles.iter().find(|q| !(**q > 0.0 && **q < 1.0)) {
+            return Err(Error::invalid("quantiles", q, "each must lie in (0, 1)"));
+        }
+        if let Some(x) = self.before_mm.iter().find(|x| !x.is_finite()) {
+            return Err(Error::invalid(
+                "before_mm",
+                x,
+                "must be a finite position in mm",
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The closed form's jam position in mm on a long enough palm: at theta_jam, or at the start
+/// where the disc is held there or the push is too weak to move it; None when it never jams.
+/// Monotone in every input, as theta_jam is (the clamp at the start keeps it so).
+fn raw_x(p: &SceneParams) -> Option<f64> {
+    let t = statics::theta_jam_rad(p).min(p.start_angle_deg.to_radians());
+    (t > 0.0).then(|| p.disc_position_mm(t))
+}
+
+/// The exact answer for the closed form with one distributed input; None when it does not
+/// apply (several inputs, no distribution, or a push too weak somewhere in the support).
+pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<DistAnswer> {
+    let [input] = &set.inputs[..] else {
+        return None;
+    };
+    let u = input.value;
+    if !u.is_distribution() {
+        return None;
+    }
+    let x_of = |v: f64| raw_x(&set.apply(p, &[v]));
+    // The support's ends as the distribution reaches them (1e-12 tails).
+    let (a, b) = (u.quantile(1e-12), u.quantile(1.0 - 1e-12));
+    let (xa, xb) = (x_of(a)?, x_of(b)?);
+    let falls = xb < xa;
+    let quantiles = ask
+        .quantiles
+        .iter()
+        .map(|&q| {
+            let v = u.quantile(if falls { 1.0 - q } else { q });
+            let x = x_of(v).unwrap_or(f64::NAN);
+            Quantile {
+                q,
+                x_jam_mm: exact_estimate(x),
+            }
+        })
+        .collect();
+    let before = ask
+        .before_mm
+        .iter()
+        .map(|&x| {
+            // P(X(U) < x): bisect X(u*) = x over the support.
+            let prob = if x <= xa.min(xb) {
+                0.0
+            } else if x > xa.max(xb) {
+                1.0
+            } else {
+                let (mut lo, mut hi) = (a, b);
+                while hi - lo > 1e-12 * (b - a) {
+                    let m = 0.5 * (lo + hi);
+                    let below = x_of(m).is_some_and(|xm| xm < x);
+                    if below == falls { hi = m } else { lo = m }
+                }
+                let f = u.cdf(0.5 * (lo + hi));
+                if falls { 1.0 - f } else { f }
+            };
+            Before {
+                x_mm: x,
+                probability: exact_estimate(prob),
+            }
+        })
+        .collect();
+    Some(DistAnswer {
+        method: DistMethod::Exact,
+        before,
+        quantiles,
+    })
+}
+
+fn exact_estimate(v: f64) -> Estimate {
+    Estimate {
+        value: v,
+        lo: v,
+        hi: v,
+    }
+}
+
+/// The inputs' values of sample `index` for the seed: the chunk's ChaCha8 stream, advanced to
+/// the sample's place in it.
+pub fn draw(set: &UncertainSet, seed: u64, index: u64) -> Vec<f64> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    rng.set_stream(index / CHUNK as u64);
+    let k = set.inputs.len() as u128;
+    // Each sample takes k u64 words, two 32-bit words each.
+    rng.set_word_pos(2 * k * u128::from(index % CHUNK as u64));
+    set.inputs
+        .iter()
+        .map(|i| i.value.quantile(unit(rng.next_u64())))
+        .collect()
+}
+
+/// A u64 to (0, 1): the top 53 bits, offset by half a step so neither end is reached.
+fn unit(bits: u64) -> f64 {
+    ((bits >> 11) as f64 + 0.5) * (1.0 / (1u64 << 53) as f64)
+}
+
+/// Monte Carlo: `ask.samples` draws through `spec` (the closed form directly for statics),
+/// in parallel, bit-identical for any thread count.
+pub fn monte_carlo(
+    spec: &ModelSpec,
+    p: &SceneParams,
+    set: &UncertainSet,
+    ask: &DistQuestion,
+) -> Result<DistAnswer> {
+    ask.validate()?;
+    let n = ask.samples;
+    let chunks = n.div_ceil(CHUNK as u64);
+    let per_chunk: Vec<Vec<Option<f64>>> = (0..chunks)
+        .into_par_iter()
+        .map(|c| -> Result<Vec<Option<f64>>> {
+            let mut rng = ChaCha8Rng::seed_from_u64(ask.seed);
+            rng.set_stream(c);
+            let end = ((c + 1) * CHUNK as u64).min(n);
+            (c * CHUNK as u64..end)
+                .map(|_| {
+                    let v: Vec<f64> = set
+                        .inputs
+                        .iter()
+                        .map(|i| i.value.quantile(unit(rng.next_u64())))
+                        .collect();
+                    let q = set.apply(p, &v);
+                    Ok(match spec {
+                        ModelSpec::Statics => raw_x(&q),
+                        _ => models::solve(spec, &q)?.x_jam_mm,
+                    })
+                })
+                .collect()
+        })
+        .collect::<Result<_>>()?;
+    let all: Vec<Option<f64>> = per_chunk.into_iter().flatten().collect();
+    let mut xs: Vec<f64> = all.iter().flatten().copied().collect();
+    xs.sort_by(f64::total_cmp);
+    let without_jam = n - xs.len() as u64;
+    let nf = n as f64;
+    let before = ask
+        .before_mm
+        .iter()
+        .map(|&x| {
+            let k = xs.partition_point(|v| *v < x) as f64;
+            let prob = k / nf;
+            let half = Z95 * (prob * (1.0 - prob) / nf).sqrt();
+            Before {
+                x_mm: x,
+                probability: Estimate {
+                    value: prob,
+                    lo: (prob - half).max(0.0),
+                    hi: (prob + half).min(1.0),
+                },
+            }
+        })
+        .collect();
+    let m = xs.len() as f64;
+    let at = |rank: f64| xs[(rank.round().max(0.0) as usize).min(xs.len() - 1)];
+    let quantiles = ask
+        .quantiles
+        .iter()
+        .filter(|_| !xs.is_empty())
+        .map(|&q| {
+            let half = Z95 * (m * q * (1.0 - q)).sqrt();
+            Quantile {
+                q,
+                x_jam_mm: Estimate {
+                    value: at(m * q - 0.5),
+                    lo: at(m * q - 0.5 - half),
+                    hi: at(m * q - 0.5 + half),
+                },
+            }
+        })
+        .collect();
+    Ok(DistAnswer {
+        method: DistMethod::MonteCarlo {
+            samples: n,
+            seed: ask.seed,
+            without_jam,
+        },
+        before,
+        quantiles,
+    })
+}
