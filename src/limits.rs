@@ -32,6 +32,22 @@ pub const MAX_OUTPUT_BYTES: u64 = 256 << 20;
 /// more than 64 lines cannot be told apart on a chart.
 pub const MAX_LEVELS: usize = 64;
 
+/// Longest chart title in characters: a title is one line across the chart (about 120
+/// characters at the widest picture); a 10 MB title once took 3 GiB to lay out and aborted
+/// (issue 23, class 3).
+pub const MAX_TITLE_CHARS: usize = 200;
+
+/// Most dotted parts of a `--set` key: the deepest key of any scene has 3
+/// (`dynamics.contact.stiffness_n_per_mm_e`); a key of 10,000 parts once overflowed the stack
+/// while its table was built (issue 23, class 3).
+pub const MAX_KEY_PARTS: usize = 8;
+
+/// Most worker threads (`RAYON_NUM_THREADS`): more than the hardware threads of the largest
+/// machines (2 x 192 cores, 768 threads) only adds stacks. Without a limit,
+/// `RAYON_NUM_THREADS=100000000` started rayon's own maximum of 65,535 threads and `render fig3`
+/// had not begun after 60 s (issue 23, class 3).
+pub const MAX_THREADS: usize = 1024;
+
 /// What one item (grid cell, sweep point, time-series row) costs, for the estimates.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PerItem {

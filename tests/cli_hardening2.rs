@@ -280,8 +280,14 @@ fn a_weight_out_of_range_is_refused_never_printed_as_nan() {
 /// Runs `jamchart ARGS` in `dir`, killed after 20 s (a hang would otherwise hang the suite;
 /// the time is a guard, not a measurement).
 fn jamchart_guarded(dir: &Path, args: &[&str]) -> Output {
+    jamchart_guarded_env(dir, &[], args)
+}
+
+/// [`jamchart_guarded`] with the environment variables `env` set.
+fn jamchart_guarded_env(dir: &Path, env: &[(&str, &str)], args: &[&str]) -> Output {
     let mut child = Command::new(env!("CARGO_BIN_EXE_jamchart"))
         .args(args)
+        .envs(env.iter().copied())
         .current_dir(dir)
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
@@ -477,5 +483,65 @@ fn a_v_block_optimum_chart_with_too_much_work_is_refused_at_once() {
         "{}",
         stderr(&o)
     );
+    assert!(!dir.path().join("out").exists());
+}
+
+/// Regression (issue 23, class 3, "aborts"): `--set` with a key of 10,000 dotted parts was
+/// refused, but clap quoted the whole 20,001-byte value in the message, twice. The value is
+/// now cut to 60 characters and its length, like every other quoted value.
+#[test]
+fn a_huge_invalid_flag_value_is_quoted_cut() {
+    let dir = tempfile::tempdir().unwrap();
+    let key = format!("{}a=1", "a.".repeat(10_000));
+    let o = jamchart_guarded(dir.path(), &["render", "fig3", "--set", &key]);
+    refused(&o, "at most 8 dotted parts");
+    assert!(stderr(&o).contains("bytes in all"), "{}", stderr(&o));
+    assert!(stderr(&o).len() < 400, "{} bytes", stderr(&o).len());
+}
+
+/// Regression (issue 23, class 3, "aborts"): when no thread could be started (`ulimit -u` as
+/// a normal user, or stacks that do not fit an address-space limit) rayon's global pool
+/// panicked or aborted on allocation: under `ulimit -v 409600` with `RAYON_NUM_THREADS=250`
+/// (250 stacks of 2 MiB) `render fig3` died with "memory allocation of 41 bytes failed". It
+/// now warns and runs on one thread, and its files are byte for byte those of a threaded run.
+#[test]
+fn a_system_that_will_not_start_threads_runs_on_one_thread() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let args = ["render", "fig3", "--format", "svg", "--out"];
+    let o = jamchart_redirected(d, "", &[&args[..], &["threaded"]].concat());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let o = Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -v 409600 && exec \"$0\" \"$@\"")
+        .arg(env!("CARGO_BIN_EXE_jamchart"))
+        .args(args)
+        .arg("one")
+        .env("RAYON_NUM_THREADS", "250")
+        .current_dir(d)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("could not start 250 threads")
+            && stderr(&o).contains("running on one thread"),
+        "{}",
+        stderr(&o)
+    );
+    for file in ["fig3.svg", "fig3.csv", "fig3.json"] {
+        let read = |folder: &str| std::fs::read(d.join(folder).join(file)).unwrap();
+        assert!(read("one") == read("threaded"), "{file} differs");
+    }
+}
+
+/// Regression (issue 23, class 3): `RAYON_NUM_THREADS=100000000` started rayon's maximum of
+/// 65,535 threads and `render fig3` had not begun after 60 s. A count above
+/// `limits::MAX_THREADS` (1024) is refused at once naming the variable.
+#[test]
+fn a_thread_count_beyond_any_machine_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let env = [("RAYON_NUM_THREADS", "100000000")];
+    let o = jamchart_guarded_env(dir.path(), &env, &["render", "fig3", "--format", "svg"]);
+    refused(&o, "RAYON_NUM_THREADS = 100000000");
     assert!(!dir.path().join("out").exists());
 }

@@ -9,6 +9,7 @@
 use std::str::FromStr;
 
 use crate::error::{Error, Result};
+use crate::limits::MAX_KEY_PARTS;
 use crate::settings;
 
 /// One `key=value` override.
@@ -19,9 +20,6 @@ pub struct Setting {
     /// The value, parsed as TOML.
     pub value: toml::Value,
 }
-
-/// Most dotted parts a `--set` key may have.
-const MAX_KEY_PARTS: usize = 8;
 
 impl FromStr for Setting {
     type Err = String;
@@ -34,8 +32,6 @@ impl FromStr for Setting {
         if key.is_empty() || key.split('.').any(str::is_empty) {
             return Err(format!("'{s}' has an empty key"));
         }
-        // The deepest key of any scene is 3 parts (dynamics.contact.stiffness_n_per_mm_e); a key
-        // of 10,000 parts once overflowed the stack while its table was built.
         if key.split('.').nth(MAX_KEY_PARTS).is_some() {
             return Err(format!(
                 "{}: a key has at most {MAX_KEY_PARTS} dotted parts (e.g. chart.x_axis.count)",

@@ -32,6 +32,7 @@ use crate::config::{self, Config, Refusal, keyed, parse_toml};
 use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
 use crate::grid::GridParam;
+use crate::limits::MAX_TITLE_CHARS;
 use crate::minnorm::MinNormSettings;
 use crate::scene::SceneParams;
 
@@ -389,18 +390,14 @@ impl Scene {
     }
 }
 
-/// Longest title in characters: a title is one line across the chart (about 120 characters at
-/// the widest picture); a 10 MB title once took 3 GiB to lay out and aborted.
-pub const MAX_TITLE_CHARS: usize = 200;
-
 impl Scene {
     /// Checks the title: not blank (`--set title=` drew a chart without a heading) and at most
-    /// [`MAX_TITLE_CHARS`] characters.
+    /// [`MAX_TITLE_CHARS`](crate::limits::MAX_TITLE_CHARS) characters.
     fn validate_title(&self) -> Result<()> {
         let why = if self.title.trim().is_empty() {
-            "a chart needs a title; write what it shows"
+            "a chart needs a title; write what it shows".to_string()
         } else if self.title.chars().nth(MAX_TITLE_CHARS).is_some() {
-            "a title is one line: at most 200 characters"
+            format!("a title is one line: at most {MAX_TITLE_CHARS} characters")
         } else {
             return Ok(());
         };

@@ -18,13 +18,14 @@ mod solve_range;
 mod stability;
 mod sweep;
 mod table;
+mod threads;
 mod vlocator;
 
 use std::io::Write;
 
 use clap::{Parser, Subcommand};
 
-use crate::error::Error;
+use crate::error::{self, Error};
 
 /// Predicts where a pushed circular workpiece jams and draws design charts.
 ///
@@ -161,7 +162,14 @@ pub fn main() -> i32 {
         );
         return 2;
     }
-    let result: crate::error::Result<Done> = match &cli.command {
+    let pool = match threads::start() {
+        Ok(pool) => pool,
+        Err(e) => {
+            eprintln!("jamchart: {}", describe(&e));
+            return 2;
+        }
+    };
+    let result: crate::error::Result<Done> = pool.run(|| match &cli.command {
         Command::Solve(a) => solve::run(a).map(Done::from),
         Command::Table(a) => table::run(a).map(Done::from),
         Command::Render(a) => render::run(a),
@@ -173,7 +181,7 @@ pub fn main() -> i32 {
         Command::Vlocator(a) => vlocator::run(a).map(Done::from),
         Command::Completions(a) => shell::completions(a).map(Done::from),
         Command::Man(a) => shell::man(a).map(Done::from),
-    };
+    });
     match result {
         Ok(done) => {
             let (text, code) = match &done {
@@ -249,7 +257,14 @@ fn clap_exit(e: clap::Error) -> i32 {
             2
         }
         _ => {
-            eprintln!("jamchart: {}", one_line(&e.render().to_string()));
+            let mut rendered = e.render().to_string();
+            // clap quotes the value whole: a 20 kB `--set` key made a 20 kB message.
+            if let Some(clap::error::ContextValue::String(v)) =
+                e.get(clap::error::ContextKind::InvalidValue)
+            {
+                rendered = rendered.replace(&format!("'{v}'"), &format!("'{}'", error::cut(v)));
+            }
+            eprintln!("jamchart: {}", one_line(&rendered));
             2
         }
     }
