@@ -251,6 +251,9 @@ pub fn tag<DB: DrawingBackend>(
     )
 }
 
+/// The white margin in px around a [`boxed_text`]'s text.
+pub const BOX_PAD: i32 = 3;
+
 /// Text on a white box (for labels over data); `pos` anchors the box like a text anchor.
 pub fn boxed_text<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
@@ -272,7 +275,7 @@ pub fn boxed_text<DB: DrawingBackend>(
         VPos::Center => at.1 - h / 2,
         VPos::Bottom => at.1 - h,
     };
-    let pad = 3;
+    let pad = BOX_PAD;
     root.draw(&Rectangle::new(
         [(x0 - pad, y0 - pad), (x0 + w + pad, y0 + h + pad)],
         PAPER.filled(),

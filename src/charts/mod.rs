@@ -41,6 +41,7 @@
 
 pub(crate) mod axes;
 pub(crate) mod builtin;
+pub(crate) mod collide;
 pub(crate) mod colorbar;
 pub(crate) mod contour_map;
 pub(crate) mod contours;
@@ -55,6 +56,7 @@ pub(crate) mod legend;
 pub(crate) mod models;
 pub(crate) mod output;
 pub(crate) mod overrides;
+pub(crate) mod point_read_off;
 pub(crate) mod print;
 pub(crate) mod readoff;
 pub(crate) mod spec;
@@ -94,7 +96,7 @@ pub use spec::{Scene, SceneSource, load_scene, scene_names};
 /// chart do (a drawing, font, encoder or scene change), so a user whose own charts' hashes
 /// changed can tell whether jamchart's drawing did. `tests/chart_hashes.rs` fails until it is
 /// set to the manifest's hash after a re-bless (`sha256sum charts/SHA256SUMS | cut -c1-12`).
-pub const CHART_FORMAT: &str = "8d1745f65b87";
+pub const CHART_FORMAT: &str = "39c50f0a9fc9";
 
 /// Which pictures to produce.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -215,5 +217,7 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
     })
 }
 
+#[cfg(test)]
+mod layout_tests;
 #[cfg(test)]
 mod tests;

@@ -22,7 +22,6 @@
 use contour::ContourBuilder;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::{Deserialize, Serialize};
 use serde_json::json;
 
@@ -81,6 +80,11 @@ impl super::kinds::Kind for UniversalSpec {
 
     /// The read-off lines mark the scene's friction and F / (m g).
     fn marks_scene_value(&self) -> bool {
+        true
+    }
+
+    /// The read-off is always drawn where the scene's point lies on the chart.
+    fn enable_read_off(&mut self) -> bool {
         true
     }
 
@@ -524,19 +528,6 @@ impl Universal {
         let Some(r) = self.read_off.filter(|_| self.read_off_drawn()) else {
             return Ok(());
         };
-        let at = |a: f64, b: f64| axes::pixel(c, x, y, a, b);
-        let (corner, bottom, left) = (
-            at(r.mu, r.push_ratio),
-            at(r.mu, y.min),
-            at(x.min, r.push_ratio),
-        );
-        for line in [[bottom, corner], [left, corner]] {
-            style::draw_line_px(root, &line, LineKind::Dotted, INK, 2)?;
-        }
-        root.draw(&Circle::new(corner, 5, INK.filled()))?;
-        let num = |s: &str, p: (i32, i32)| axes::tag(root, s, p);
-        num("1", (bottom.0 + 12, (bottom.1 + corner.1) / 2))?;
-        num("2", ((left.0 + corner.0) / 2, corner.1 - 14))?;
         let p = &self.params;
         let answer = match (r.theta_deg, r.point.status) {
             (Some(t), JamStatus::Jams) => format!(
@@ -554,21 +545,8 @@ impl Universal {
             ),
             (_, status) => format!("3: {status}"),
         };
-        // Right of the point, or left of it in the right half of the plot.
-        let (px, _) = c.plotting_area().get_pixel_range();
-        let right_half = corner.0 > (px.start + px.end) / 2;
-        let (dx, h) = if right_half {
-            (-12, HPos::Right)
-        } else {
-            (12, HPos::Left)
-        };
-        axes::boxed_text(
-            root,
-            &answer,
-            (corner.0 + dx, corner.1 + 18),
-            Pos::new(h, VPos::Top),
-            style::NOTE_PX,
-        )
+        let below = super::point_read_off::AnswerAt::Below;
+        super::point_read_off::draw(root, c, (x, y), (r.mu, r.push_ratio), &answer, below)
     }
 }
 
