@@ -32,7 +32,6 @@ impl PxBox {
     }
 
     /// Whether the two boxes share an area (touching edges do not count).
-    #[cfg(test)]
     pub fn overlaps(&self, o: &PxBox) -> bool {
         self.x0 < o.x1 && o.x0 < self.x1 && self.y0 < o.y1 && o.y0 < self.y1
     }

@@ -138,3 +138,113 @@ fn fig7c_legend_names_theta_lines_only_when_drawn() {
     assert!(named(&[]));
     assert!(!named(&["mu=0.27"]));
 }
+
+/// A title of the longest length a scene takes (200 characters).
+fn long_title() -> String {
+    let words = "Jam point of a 25 mm steel shaft pushed by a gripper finger, ";
+    let t: String = words.chars().cycle().take(spec::MAX_TITLE_CHARS).collect();
+    format!("title=\"{}\"", t.trim_end())
+}
+
+/// The awkward user scenes of issue 18: each built-in scene with the longest title; log axes
+/// over 12 decades; every series a sweep can draw. (Not yet the smallest size, 400 x 300 px:
+/// there the built-in scenes have thousands of overlapping texts; see
+/// `texts_at_the_smallest_size`.)
+fn awkward_scenes() -> Vec<(String, Scene)> {
+    let title = long_title();
+    let mut scenes = Vec::new();
+    for n in builtin::scene_names() {
+        scenes.push((
+            format!("{n} with a 200-character title"),
+            builtin(&n, &[&title]),
+        ));
+    }
+    let decades: [(&str, &[&str]); 4] = [
+        (
+            "fig7b",
+            &[
+                "chart.axis.min=1e-2",
+                "chart.axis.max=1e10",
+                "chart.axis.count=61",
+            ],
+        ),
+        (
+            "fig7c",
+            &[
+                "chart.x_axis.min=1e-2",
+                "chart.x_axis.max=1e10",
+                "chart.x_axis.count=61",
+                "chart.y_axis.count=41",
+            ],
+        ),
+        (
+            "universal",
+            &[
+                "chart.y_axis.min=1e-3",
+                "chart.y_axis.max=1e9",
+                "chart.y_axis.count=61",
+            ],
+        ),
+        (
+            "fig3",
+            &[
+                "chart.y_axis.min=1e-9",
+                "chart.y_axis.max=179",
+                "chart.y_axis.count=61",
+                "chart.x_axis.count=61",
+            ],
+        ),
+    ];
+    for (n, set) in decades {
+        scenes.push((format!("{n} over 12 decades"), builtin(n, set)));
+    }
+    let every_layer = "chart.layers=[\"statics\", \"rigid\", \"paper_table1\", \"paper_adams\", \
+                       \"min_norm\", \"min_norm_rolling\", \"simulation_motion\", \
+                       \"simulation_force\"]";
+    scenes.push((
+        "fig6 with every layer".into(),
+        builtin("fig6", &[every_layer, "chart.axis.count=21"]),
+    ));
+    scenes
+}
+
+/// Issue 18: no two texts overlap and none leaves the picture in awkward user scenes.
+#[test]
+fn no_text_overlaps_or_leaves_the_picture_in_awkward_scenes() {
+    let faults: Vec<String> = awkward_scenes()
+        .iter()
+        .flat_map(|(what, s)| {
+            layout_faults(s)
+                .into_iter()
+                .map(move |f| format!("{what}: {f}"))
+        })
+        .collect();
+    assert!(
+        faults.is_empty(),
+        "{} faults:\n{}",
+        faults.len(),
+        faults.join("\n")
+    );
+}
+
+/// The faults of every built-in scene at the smallest size a scene takes, 400 x 300 px: a
+/// measurement for the work left (issue 18), printed with `--nocapture`, not yet a claim.
+/// It asserts only that the recorder saw the texts (the counts are in the report).
+#[test]
+fn texts_at_the_smallest_size() {
+    let tiny = ["size.width_px=400", "size.height_px=300", "size.scale=1.0"];
+    let mut total = 0;
+    for n in builtin::scene_names() {
+        let scene = builtin(&n, &tiny);
+        let (texts, _, _) = layout(&scene);
+        assert!(!texts.is_empty(), "{n}: no text recorded");
+        let faults = layout_faults(&scene);
+        println!(
+            "{n} at 400 x 300: {} faults among {} texts",
+            faults.len(),
+            texts.len()
+        );
+        total += faults.len();
+    }
+    println!("all built-in scenes at 400 x 300: {total} faults");
+}

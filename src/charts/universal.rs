@@ -26,12 +26,14 @@ use serde::{Deserialize, Serialize};
 use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
+use super::collide::PxBox;
 use super::colorbar::ColorBar;
 use super::contour_map::{Paths, at_height, level_text, plot_to_value};
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{self, GRID_MAJOR, INK, LineKind};
+use super::typeset;
 use super::{DataFile, axis_label, cells_csv, cells_json, grid_lines, grid_polygons, param_symbol};
 use crate::csv_out::{Column, Num, nums};
 use crate::error::{Error, Result};
@@ -501,16 +503,29 @@ impl Universal {
     ) -> DrawResult<DB> {
         let (px, py) = chart.plotting_area().get_pixel_range();
         let inside = |at: (i32, i32)| px.contains(&at.0) && py.contains(&at.1);
+        // A label whose text would overlap one already set is left out: over many decades of
+        // F / (m g) the lines crowd together near the bottom (issue 18's layout test).
+        let mut placed: Vec<PxBox> = Vec::new();
+        // A label on a line at the plot's left edge is moved right until it clears the edge,
+        // where the y axis' tick labels lie (a line there over 12 decades met "10⁰").
+        let mut tag = |s: &str, at: (i32, i32)| {
+            let size = typeset::text_size(s, style::TICK_PX);
+            let at = (at.0.max(px.start + size.0 as i32 / 2), at.1);
+            let b = PxBox::centred(at, size, 0);
+            if placed.iter().any(|p| p.overlaps(&b)) {
+                return Ok(());
+            }
+            placed.push(b);
+            axes::tag(root, s, at)
+        };
         for (level, paths) in self.lines.iter().filter(|(l, _)| self.major.contains(l)) {
             let top = at_height(paths, chart, y, 0.96).map(|(_, at)| at);
             let bottom = at_height(paths, chart, y, 0.04).map(|(_, at)| at);
             if let Some(at) = top.filter(|a| inside(*a)) {
-                let s = format!("{}°", level_text(*level));
-                axes::tag(root, &s, at)?;
+                tag(&format!("{}°", level_text(*level)), at)?;
             }
             if let Some(at) = bottom.filter(|a| inside(*a) && Some(*a) != top) {
-                let s = style::fmt_num(cot_half(*level), 2);
-                axes::tag(root, &s, at)?;
+                tag(&style::fmt_num(cot_half(*level), 2), at)?;
             }
         }
         Ok(())
