@@ -18,6 +18,7 @@ use super::colorbar::ColorBar;
 use super::labels;
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
+use super::readoff;
 use super::spec::Scene;
 use super::style::{self, LineKind};
 use super::typeset;
@@ -388,6 +389,33 @@ impl ContourMap {
                 .map(|v| ("gap_to_x_rigid_pct", Column::Dense(v))),
         );
         columns
+    }
+
+    /// What the gallery's read-off needs (see [`super::readoff`]): the plotting area, the axes
+    /// and the cells' x_jam and, where computed, theta_jam.
+    pub fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
+        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
+        let x = PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param));
+        let y = PlotAxis::new(ya.min, ya.max, ya.scale, axis_label(ya.param));
+        let g = &self.grid;
+        let column = |v: &[Option<f64>], i: usize| json!(v[i]);
+        let mut quantities: Vec<(&str, &dyn Fn(usize) -> serde_json::Value)> = Vec::new();
+        let (xj, tj) = (g.x_jam_mm.as_deref(), g.theta_jam_deg.as_deref());
+        let xj_at = |i| column(xj.unwrap_or_default(), i);
+        let tj_at = |i| column(tj.unwrap_or_default(), i);
+        if xj.is_some() {
+            quantities.push(("x_jam_mm", &xj_at));
+        }
+        if tj.is_some() {
+            quantities.push(("theta_jam_deg", &tj_at));
+        }
+        Some(json!({
+            "kind": "grid",
+            "model": self.spec.model,
+            "x": readoff::axis(xa.param.as_str(), &x),
+            "panels": [readoff::panel(frames.first()?, readoff::axis(ya.param.as_str(), &y), None)],
+            "grid": readoff::grid(g, &quantities),
+        }))
     }
 
     /// Draws the map on `root`.

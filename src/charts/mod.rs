@@ -150,6 +150,8 @@ impl Chart {
         match self {
             Chart::JamMap(c) => c.read_off(frames),
             Chart::Sweep(c) => c.read_off(frames),
+            Chart::Universal(c) => c.read_off(frames),
+            Chart::ContourMap(c) => c.read_off(frames),
             _ => None,
         }
     }

@@ -31,6 +31,7 @@ use super::colorbar::ColorBar;
 use super::contour_map::{Paths, at_height, level_text, plot_to_value};
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
+use super::readoff;
 use super::spec::Scene;
 use super::style::{self, GRID_MAJOR, INK, LineKind};
 use super::typeset;
@@ -440,6 +441,30 @@ impl Universal {
         self.read_off.is_some_and(|r| {
             (xa.min..=xa.max).contains(&r.mu) && (ya.min..=ya.max).contains(&r.push_ratio)
         })
+    }
+
+    /// What the gallery's read-off needs (see [`super::readoff`]): the plotting area, the axes
+    /// and the cells' theta_jam, x_jam / r and status.
+    pub fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
+        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
+        let x = PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param));
+        let y = PlotAxis::new(ya.min, ya.max, ya.scale, axis_label(ya.param));
+        let theta = self.grid.theta_jam_deg.as_deref()?;
+        let cells = readoff::grid(
+            &self.grid,
+            &[
+                ("theta_jam_deg", &|i| serde_json::json!(theta[i])),
+                ("x_over_r", &|i| serde_json::json!(self.x_over_r[i])),
+                ("status", &|i| serde_json::json!(self.status[i])),
+            ],
+        );
+        Some(serde_json::json!({
+            "kind": "grid",
+            "model": ModelKind::Statics,
+            "x": readoff::axis(xa.param.as_str(), &x),
+            "panels": [readoff::panel(frames.first()?, readoff::axis(ya.param.as_str(), &y), None)],
+            "grid": cells,
+        }))
     }
 
     /// Draws the chart on `root`.
