@@ -216,10 +216,11 @@ fn temporaries(o: &Path) -> Vec<String> {
 
 /// Regression (issue 13, "temporary files pile up"): a render killed by SIGTERM left
 /// `.fig3.json.5971.12.tmp` behind. A FIFO nobody reads as one output holds the render with
-/// its other files in temporaries; SIGTERM or SIGINT must remove them.
+/// its other files in temporaries; SIGTERM, SIGINT or SIGHUP (issue 23 class 9) must remove
+/// them.
 #[test]
 fn a_killed_render_leaves_no_temporary_file() {
-    for signal in ["TERM", "INT"] {
+    for signal in ["TERM", "INT", "HUP"] {
         let dir = tempfile::tempdir().unwrap();
         let o = dir.path().join("o");
         std::fs::create_dir(&o).unwrap();

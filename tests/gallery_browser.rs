@@ -40,6 +40,20 @@ fn chromium() -> Option<PathBuf> {
     found
 }
 
+/// Chromium, and `scenes` rendered as PNG with their gallery into DIR/out: (browser, DIR,
+/// DIR/out); None where `chromium` says the test may skip.
+fn gallery_of(scenes: &[&str]) -> Option<(PathBuf, tempfile::TempDir, PathBuf)> {
+    let browser = chromium()?;
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let mut args = vec!["render"];
+    args.extend(scenes);
+    args.extend(["--out", "out", "--format", "png"]);
+    let r = jamchart(dir.path(), &args);
+    assert_eq!(r.status.code(), Some(0), "{}", cli_util::stderr(&r));
+    Some((browser, dir, out))
+}
+
 /// Runs headless chromium on `url` with `args`; panics with its stderr when it fails.
 fn run_chromium(browser: &Path, url: &str, args: &[&str]) -> String {
     let profile = tempfile::tempdir().unwrap();
@@ -90,15 +104,7 @@ fn pins(dom: &str, name: &str) -> Vec<Value> {
 
 /// `solve`'s statics result for friction `mu`: (theta_jam_deg, x_jam_mm).
 fn solve(dir: &Path, mu: f64) -> (f64, f64) {
-    let doc = json(&jamchart(
-        dir,
-        &["solve", "--mu", &mu.to_string(), "--format", "json"],
-    ));
-    let r = &doc["results"][0];
-    (
-        r["theta_jam_deg"].as_f64().unwrap(),
-        r["x_jam_mm"].as_f64().unwrap(),
-    )
+    solve_with(dir, &["--mu", &mu.to_string()])
 }
 
 /// The region fig3's cells CSV gives the cell nearest (mu, theta).
@@ -143,14 +149,9 @@ fn red_pixels(png_path: &Path) -> usize {
 /// gives `solve`'s x_jam, and a real click on a phone-sized page lands where it was aimed.
 #[test]
 fn the_gallery_reads_charts_off_in_chromium_as_solve_does() {
-    let Some(browser) = chromium() else { return };
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("out");
-    let r = jamchart(
-        dir.path(),
-        &["render", "fig3", "fig6", "--out", "out", "--format", "png"],
-    );
-    assert_eq!(r.status.code(), Some(0), "{}", cli_util::stderr(&r));
+    let Some((browser, dir, out)) = gallery_of(&["fig3", "fig6"]) else {
+        return;
+    };
     let page = out.join("index.html");
     let url = |hash: &str| format!("file://{}#{hash}", page.display());
 
@@ -255,4 +256,57 @@ fn the_gallery_reads_charts_off_in_chromium_as_solve_does() {
         );
         assert!(red > plain + 50, "no crosshair in {}", path.display());
     }
+}
+
+/// `solve`'s statics result for the given flags: (theta_jam_deg, x_jam_mm).
+fn solve_with(dir: &Path, flags: &[&str]) -> (f64, f64) {
+    let mut args = vec!["solve", "--format", "json"];
+    args.extend(flags);
+    let doc = json(&jamchart(dir, &args));
+    let r = &doc["results"][0];
+    (
+        r["theta_jam_deg"].as_f64().unwrap(),
+        r["x_jam_mm"].as_f64().unwrap(),
+    )
+}
+
+/// Issue 22: the gallery read off only jam maps and sweeps; the universal chart and contour
+/// maps were plain pictures. In Chromium, the universal chart at issue 18's part (mu 0.27,
+/// F / (m g) = 150 / 9.806) and fig7c at F 150 N, r 12 mm give `solve`'s theta_jam and x_jam
+/// (x_jam / r times r on the universal chart) within 0.1 % from their embedded cells.
+#[test]
+fn the_gallery_reads_the_universal_chart_and_contour_maps_off_as_solve_does() {
+    let Some((browser, dir, out)) = gallery_of(&["universal", "fig7c"]) else {
+        return;
+    };
+    let push_ratio = 150.0 / 9.806;
+    let hook = format!("readoff=universal:0.27:{push_ratio};fig7c:150:12");
+    let url = format!("file://{}#{hook}", out.join("index.html").display());
+    let dom = run_chromium(&browser, &url, &["--dump-dom"]);
+    assert!(
+        dom.contains("data-readoff=\"done\""),
+        "the hook did not run"
+    );
+
+    let (theta, x) = solve_with(
+        dir.path(),
+        &["--mu", "0.27", "--radius", "12", "--force", "150"],
+    );
+    let u = &pins(&dom, "universal")[0];
+    let (t_u, x_u) = (num(u, "theta_jam_deg"), 12.0 * num(u, "x_over_r"));
+    eprintln!("universal: theta_jam {t_u:.4} (solve {theta:.4}), x_jam {x_u:.4} (solve {x:.4})");
+    assert!(((t_u - theta) / theta).abs() < 1e-3, "{u}");
+    assert!(((x_u - x) / x).abs() < 1e-3, "{u}");
+    assert_eq!(u["status"], "jams");
+
+    let (theta, x) = solve_with(
+        dir.path(),
+        &["--mu", "0.4", "--radius", "12", "--force", "150"],
+    );
+    let c = &pins(&dom, "fig7c")[0];
+    let (t_c, x_c) = (num(c, "theta_jam_deg"), num(c, "x_jam_mm"));
+    eprintln!("fig7c: theta_jam {t_c:.4} (solve {theta:.4}), x_jam {x_c:.4} (solve {x:.4})");
+    assert!(((t_c - theta) / theta).abs() < 1e-3, "{c}");
+    assert!(((x_c - x) / x).abs() < 1e-3, "{c}");
+    assert_eq!((num(c, "force_n"), num(c, "radius_mm")), (150.0, 12.0));
 }

@@ -1,5 +1,7 @@
 //! Temporary files that never outlive the process: registered while they exist, removed on
-//! SIGINT, SIGTERM and SIGHUP, and swept when a dead process left some behind.
+//! SIGINT, SIGTERM and SIGHUP, and swept when a dead process left some behind. The folders a
+//! write creates for its outputs are registered too, until the write is done: a signal
+//! removes them when they are still empty (a SIGHUP once left an empty output folder).
 //!
 //! Names are `.<final name>.<pid>.<n>.tmp` in the directory of the final file (the rename must
 //! not cross file systems); the pid says whose they are, so a sweep removes only those whose
@@ -17,6 +19,48 @@ static LIVE: Mutex<Option<HashSet<PathBuf>>> = Mutex::new(None);
 /// The registry, locked; a panic elsewhere never makes it unusable.
 pub(super) fn lock() -> MutexGuard<'static, Option<HashSet<PathBuf>>> {
     LIVE.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// The folders this process created for outputs it has not finished writing, outermost first.
+static CREATED: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// The created folders, locked; a panic elsewhere never makes them unusable.
+fn created() -> MutexGuard<'static, Vec<PathBuf>> {
+    CREATED.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Creates folder `dir` and registers it, under the lock, so that a signal sees every folder
+/// that exists.
+pub(super) fn create_dir(dir: &Path) -> std::io::Result<()> {
+    let mut created = created();
+    std::fs::create_dir(dir)?;
+    created.push(dir.to_path_buf());
+    Ok(())
+}
+
+/// Unregisters `dirs` (their write is over: they hold its files, or were removed).
+pub(super) fn forget_dirs(dirs: &[PathBuf]) {
+    created().retain(|d| !dirs.contains(d));
+}
+
+/// What a signal leaves undone: removes every registered temporary file, then every
+/// registered folder that is empty, deepest first (only those under `within` when given: a
+/// test's own). Holds the registry (a commit in progress finishes first, and no temporary is
+/// created after it) and returns it held.
+fn remove_leftovers(within: Option<&Path>) -> MutexGuard<'static, Option<HashSet<PathBuf>>> {
+    let mine = |p: &Path| within.is_none_or(|w| p.starts_with(w));
+    let live = lock();
+    for p in live.iter().flatten().filter(|p| mine(p)) {
+        let _ = std::fs::remove_file(p);
+    }
+    let mut dirs = created();
+    let (gone, kept): (Vec<PathBuf>, Vec<PathBuf>) = dirs.drain(..).partition(|d| mine(d));
+    *dirs = kept;
+    // remove_dir removes only an empty folder: one that a finished write filled stays.
+    for d in gone.iter().rev() {
+        let _ = std::fs::remove_dir(d);
+    }
+    live
 }
 
 /// Installs the signal handler once: on SIGINT, SIGTERM or SIGHUP it removes the temporary
@@ -42,10 +86,7 @@ pub fn install_signal_cleanup() {
         // as when the handler cannot be registered: the next run sweeps the temporaries.
         let _ = std::thread::Builder::new().spawn(move || {
             if let Some(sig) = signals.forever().next() {
-                let live = lock();
-                for p in live.iter().flatten() {
-                    let _ = std::fs::remove_file(p);
-                }
+                let _live = remove_leftovers(None);
                 let _ = signal_hook::low_level::emulate_default_handler(sig);
                 // Not reached for these three signals; exit as a shell would report them.
                 std::process::exit(128 + sig);
@@ -156,6 +197,31 @@ pub fn sweep_stale(dir: &Path) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Regression (issue 23 class 9): a SIGHUP while a render wrote into a folder it had
+    /// created removed the temporaries but left the empty folder. What the handler does,
+    /// short of exiting, removes both; a folder that holds another file stays.
+    #[test]
+    fn a_signal_removes_the_empty_folders_a_write_created() {
+        let dir = tempfile::tempdir().unwrap();
+        let (outer, inner) = (dir.path().join("a"), dir.path().join("a/b"));
+        create_dir(&outer).unwrap();
+        create_dir(&inner).unwrap();
+        let (temp, _file) = Temp::create(&inner.join("fig3.png")).unwrap();
+        assert!(temp.path.exists());
+        let kept = dir.path().join("kept");
+        create_dir(&kept).unwrap();
+        std::fs::write(kept.join("other.txt"), "x").unwrap();
+        drop(remove_leftovers(Some(dir.path())));
+        assert!(
+            !temp.path.exists() && !outer.exists(),
+            "a/b or a left behind"
+        );
+        assert!(kept.join("other.txt").exists());
+        // Nothing registered is left for a later signal.
+        assert!(!created().iter().any(|d| d.starts_with(dir.path())));
+        temp.keep();
+    }
 
     #[test]
     fn temp_names_are_recognised_with_their_owner() {

@@ -54,6 +54,7 @@ pub fn write_all(outputs: &[Output]) -> Result<()> {
             let _ = std::fs::remove_dir(d);
         }
     }
+    cleanup::forget_dirs(&created);
     result
 }
 
@@ -70,7 +71,7 @@ fn create_parents(outputs: &[Output]) -> Result<Vec<PathBuf>> {
             if d.as_os_str().is_empty() {
                 continue;
             }
-            match std::fs::create_dir(d) {
+            match cleanup::create_dir(d) {
                 Ok(()) => created.push(d.to_path_buf()),
                 // `a/b/..` reads as missing until `a/b` exists: nothing new to remove later.
                 Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists && d.is_dir() => {}
@@ -78,6 +79,7 @@ fn create_parents(outputs: &[Output]) -> Result<Vec<PathBuf>> {
                     for c in created.iter().rev() {
                         let _ = std::fs::remove_dir(c);
                     }
+                    cleanup::forget_dirs(&created);
                     return Err(Error::io("create the directory", d, e));
                 }
             }

@@ -251,6 +251,9 @@ pub fn tag<DB: DrawingBackend>(
     )
 }
 
+/// The white margin in px around a [`boxed_text`]'s text.
+pub const BOX_PAD: i32 = 3;
+
 /// Text on a white box (for labels over data); `pos` anchors the box like a text anchor.
 pub fn boxed_text<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
@@ -272,7 +275,7 @@ pub fn boxed_text<DB: DrawingBackend>(
         VPos::Center => at.1 - h / 2,
         VPos::Bottom => at.1 - h,
     };
-    let pad = 3;
+    let pad = BOX_PAD;
     root.draw(&Rectangle::new(
         [(x0 - pad, y0 - pad), (x0 + w + pad, y0 + h + pad)],
         PAPER.filled(),
@@ -292,18 +295,21 @@ pub fn draw_header<DB: DrawingBackend>(
 ) -> DrawResult<DB> {
     let (w, _) = root.dim_in_pixel();
     let mid = w as i32 / 2;
-    let title_font = style::text(style::TITLE_PX).pos(Pos::new(HPos::Center, VPos::Top));
-    root.draw(&Text::new(title.to_string(), (mid, 12), title_font))?;
-    // A subtitle wider than the picture less 20 px a side is set smaller until it fits.
+    // A title or subtitle wider than the picture less 20 px a side is set smaller until it
+    // fits (a 200-character title ran 450 px past both edges of a 1000 px picture).
     let room = w as f64 - 40.0;
-    let wide = root
-        .estimate_text_size(subtitle, &style::text(style::TICK_PX))?
-        .0 as f64;
-    let size = if wide > room {
-        (style::TICK_PX * room / wide).max(9.0)
-    } else {
-        style::TICK_PX
+    let fitted = |text: &str, size_px: f64| -> Result<f64, DrawingAreaErrorKind<DB::ErrorType>> {
+        let wide = root.estimate_text_size(text, &style::text(size_px))?.0 as f64;
+        Ok(if wide > room {
+            (size_px * room / wide).max(9.0)
+        } else {
+            size_px
+        })
     };
+    let title_px = fitted(title, style::TITLE_PX)?;
+    let title_font = style::text(title_px).pos(Pos::new(HPos::Center, VPos::Top));
+    root.draw(&Text::new(title.to_string(), (mid, 12), title_font))?;
+    let size = fitted(subtitle, style::TICK_PX)?;
     let sub_font = style::text(size).pos(Pos::new(HPos::Center, VPos::Top));
     root.draw(&Text::new(subtitle.to_string(), (mid, 40), sub_font))
 }

@@ -13,19 +13,26 @@ use serde::{Deserialize, Serialize};
 use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
+use super::collide::PxBox;
 use super::colorbar::ColorBar;
+use super::labels;
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
+use super::readoff;
 use super::spec::Scene;
 use super::style::{self, LineKind};
+use super::typeset;
 use super::{
     DataFile, axis_label, cells_csv, cells_json, grid_lines, grid_polygons, param_symbol,
     param_unit, scene_subtitle,
 };
 use crate::csv_out::{Column, Num, nums};
 use crate::error::{Error, Result};
-use crate::grid::{self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, Quantity};
+use crate::grid::{
+    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, Quantity,
+};
 use crate::models::ModelKind;
+use crate::scene::JamStatus;
 use crate::scene::SceneParams;
 
 /// `[chart]` keys of `kind = "contour_map"`.
@@ -51,6 +58,12 @@ pub struct ContourMapSpec {
     /// limit r/mu is always the statics').
     #[serde(default)]
     pub model: ModelKind,
+    /// Draw the read-off at the scene's own values of both axes' parameters: line 1 up from
+    /// the x axis, line 2 across from the y axis, and 3, the model's x_jam and theta_jam
+    /// there, printed (default: false; `render fig7c --read-off force_n=150 --read-off
+    /// radius_mm=12`).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub read_off: bool,
 }
 
 const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
@@ -108,6 +121,16 @@ impl super::kinds::Kind for ContourMapSpec {
 
     fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridParam)> {
         vec![("x_axis", self.x_axis.param), ("y_axis", self.y_axis.param)]
+    }
+
+    /// With the read-off, the chart marks the scene's values of both axes' parameters.
+    fn marks_scene_value(&self) -> bool {
+        self.read_off
+    }
+
+    fn enable_read_off(&mut self) -> bool {
+        self.read_off = true;
+        true
     }
 
     fn check_size(&self, _scene: &Scene) -> Result<()> {
@@ -191,11 +214,17 @@ pub struct ContourMap {
     theta_lines: Vec<(f64, Paths)>,
     /// The settle line in plot space.
     settle_lines: Vec<Paths>,
+    /// The read-off at the scene's own (x, y) values, when asked for: (x, y, the model's point).
+    read_off: Option<(f64, f64, JamPoint)>,
 }
 
 /// Width of the theta_jam iso-lines in px: as wide as the settle line they may run on
 /// ([`LineKind::Dashed`]), so that drawn over it they stay visible.
 const THETA_LINE_PX: u32 = 2;
+
+/// Places along the x axis an x_jam label may take, beyond the three preferred ones: every
+/// 1/20 of the plot's width (a label is about 1/15 of it wide).
+const LABEL_PLACES: usize = 20;
 
 /// Polylines or rings in plot space (ln for log axes).
 pub(super) type Paths = Vec<Vec<(f64, f64)>>;
@@ -267,7 +296,16 @@ impl ContourMap {
             (Some(gap), Some(pct)) => lines(gap, &[pct]).into_iter().map(|(_, p)| p).collect(),
             _ => Vec::new(),
         };
+        let read_off = match (
+            spec.read_off,
+            xa.param.get(&scene.params),
+            ya.param.get(&scene.params),
+        ) {
+            (true, Some(u), Some(v)) => Some((u, v, models.jam_point(&model, &scene.params)?)),
+            _ => None,
+        };
         Ok(ContourMap {
+            read_off,
             spec,
             params: scene.params,
             title: scene.title.clone(),
@@ -316,6 +354,10 @@ impl ContourMap {
                 "theta_jam_deg": lines(&mut self.theta_lines.iter().map(|(l, p)| (*l, p))),
                 "gap_to_x_rigid_pct": lines(&mut self.settle_lines.iter().map(|p| (settle, p))),
             },
+            "read_off": self.read_off.map(|(u, v, p)| json!({
+                x.as_str(): Num(u), y.as_str(): Num(v), "status": p.status,
+                "theta_jam_deg": p.theta_jam_deg.map(Num), "x_jam_mm": p.x_jam_mm.map(Num),
+            })),
             "cells": cells_json(&scene.name, &self.grid, x, y, &self.columns()),
         }))
     }
@@ -349,6 +391,33 @@ impl ContourMap {
         columns
     }
 
+    /// What the gallery's read-off needs (see [`super::readoff`]): the plotting area, the axes
+    /// and the cells' x_jam and, where computed, theta_jam.
+    pub fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
+        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
+        let x = PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param));
+        let y = PlotAxis::new(ya.min, ya.max, ya.scale, axis_label(ya.param));
+        let g = &self.grid;
+        let column = |v: &[Option<f64>], i: usize| json!(v[i]);
+        let mut quantities: Vec<(&str, &dyn Fn(usize) -> serde_json::Value)> = Vec::new();
+        let (xj, tj) = (g.x_jam_mm.as_deref(), g.theta_jam_deg.as_deref());
+        let xj_at = |i| column(xj.unwrap_or_default(), i);
+        let tj_at = |i| column(tj.unwrap_or_default(), i);
+        if xj.is_some() {
+            quantities.push(("x_jam_mm", &xj_at));
+        }
+        if tj.is_some() {
+            quantities.push(("theta_jam_deg", &tj_at));
+        }
+        Some(json!({
+            "kind": "grid",
+            "model": self.spec.model,
+            "x": readoff::axis(xa.param.as_str(), &x),
+            "panels": [readoff::panel(frames.first()?, readoff::axis(ya.param.as_str(), &y), None)],
+            "grid": readoff::grid(g, &quantities),
+        }))
+    }
+
     /// Draws the map on `root`.
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
         let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
@@ -371,20 +440,35 @@ impl ContourMap {
         let area = chart.plotting_area();
         let (px, py) = area.get_pixel_range();
         let xr = x.plot_range();
-        let (label_u, mid_u, left_u) = [0.86, 0.5, 0.1]
+        // Right of the plot where lines are flat; further left for lines that leave the plot
+        // there (near an edge); then anywhere along the line, right to left.
+        let places: Vec<f64> = [0.86, 0.5, 0.1]
+            .into_iter()
+            .chain(
+                (1..LABEL_PLACES)
+                    .rev()
+                    .map(|k| k as f64 / LABEL_PLACES as f64),
+            )
             .map(|f| xr.start + f * (xr.end - xr.start))
-            .into();
+            .collect();
+        let crossing = self.crossing_lines(&chart);
         for (level, paths) in &self.x_jam_lines {
             for p in paths {
                 style::draw_line(area, p, LineKind::Solid, LineKind::Solid.color())?;
             }
-            // Right of the plot where lines are flat; further left for lines that leave the
-            // plot there (near an edge).
-            let at = [label_u, mid_u, left_u]
-                .into_iter()
-                .find_map(|u| nearest_x(paths, u, &chart, (&px, &py)));
-            if let Some(at) = at {
-                let s = format!("{} mm", level_text(*level));
+            let s = format!("{} mm", level_text(*level));
+            let size = typeset::text_size(&s, style::TICK_PX);
+            // Never on a theta_jam or settle line (fig7c's "25 mm" sat on the 46 deg line);
+            // the first place found when every place is crossed.
+            let found: Vec<(i32, i32)> = places
+                .iter()
+                .filter_map(|u| nearest_x(paths, *u, &chart, (&px, &py)))
+                .collect();
+            let clear = found.iter().find(|at| {
+                let b = PxBox::centred(**at, size, axes::BOX_PAD);
+                !crossing.iter().any(|l| b.meets_polyline(l))
+            });
+            if let Some(at) = clear.or(found.first()).copied() {
                 axes::boxed_text(
                     root,
                     &s,
@@ -398,10 +482,52 @@ impl ContourMap {
         // they run on it (fig7c: 44 deg on the 1 % line) and their dots show on its dashes.
         self.draw_settle_line(root, &chart, &y)?;
         self.draw_theta_lines(root, &chart, &y)?;
+        self.draw_read_off(root, &chart, (&x, &y))?;
         axes::draw_frame(root, &chart, &x, &y)?;
         let sub = scene_subtitle(&self.params, &[xa.param, ya.param]);
         axes::draw_header(root, &self.title, &sub)?;
         legend::draw_legend(root, &entries, py.end + 62)
+    }
+
+    /// Whether the read-off is drawn: the scene's point lies on the map (a legend never names
+    /// a line that is not drawn).
+    fn read_off_drawn(&self) -> bool {
+        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
+        self.read_off.is_some_and(|(u, v, _)| {
+            (xa.min..=xa.max).contains(&u) && (ya.min..=ya.max).contains(&v)
+        })
+    }
+
+    /// The read-off at the scene's point: lines 1 and 2 from the axes, and 3, the values
+    /// there (or the model's verdict where it gives no jam).
+    fn draw_read_off<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &axes::Chart<DB>,
+        axes: (&PlotAxis, &PlotAxis),
+    ) -> DrawResult<DB> {
+        let Some((u, v, p)) = self.read_off.filter(|_| self.read_off_drawn()) else {
+            return Ok(());
+        };
+        let answer = match (p.x_jam_mm, p.theta_jam_deg) {
+            (Some(x), Some(t)) if p.status == JamStatus::Jams => format!(
+                "3: x_jam = {} mm, θ_jam = {}°",
+                style::fmt_num(x, 1),
+                style::fmt_num(t, 1)
+            ),
+            _ => format!("3: {}", p.status),
+        };
+        let place = super::point_read_off::AnswerAt::TowardsMiddle;
+        super::point_read_off::draw(root, chart, axes, (u, v), &answer, place)
+    }
+
+    /// The theta_jam and settle lines in backend pixels: what an x_jam label must not sit on.
+    fn crossing_lines<DB: DrawingBackend>(&self, chart: &axes::Chart<DB>) -> Vec<Vec<(i32, i32)>> {
+        let theta = self.theta_lines.iter().flat_map(|(_, p)| p);
+        theta
+            .chain(self.settle_lines.iter().flatten())
+            .map(|p| p.iter().map(|q| chart.backend_coord(q)).collect())
+            .collect()
     }
 
     /// Dotted theta_jam iso-lines, labelled near the top, staggered so close lines stay legible.
@@ -494,7 +620,8 @@ impl ContourMap {
             Swatch::Line(LineKind::Solid),
             "x_jam iso-lines (mm), bands as in the colour bar",
         )];
-        if !self.spec.theta_jam_levels_deg.is_empty() {
+        // Only where a line is drawn: at mu = 0.27 fig7c's 44-47 deg levels lie off the map.
+        if self.theta_lines.iter().any(|(_, p)| !p.is_empty()) {
             e.push(LegendEntry::new(
                 Swatch::Stroke(LineKind::Dotted, LineKind::Dotted.color(), THETA_LINE_PX),
                 "θ_jam iso-lines (deg)",
@@ -506,6 +633,18 @@ impl ContourMap {
                 self.rigid_limit_name()
             );
             e.push(LegendEntry::new(Swatch::Line(LineKind::Dashed), s));
+        }
+        if let Some((u, v, _)) = self.read_off.filter(|_| self.read_off_drawn()) {
+            let (x, y) = (self.spec.x_axis.param, self.spec.y_axis.param);
+            let s = format!(
+                "read-off 1-2-3 at {}, {}",
+                labels::param_value(x, u),
+                labels::param_value(y, v)
+            );
+            e.push(LegendEntry::new(
+                Swatch::Stroke(LineKind::Dotted, style::INK, 2),
+                s,
+            ));
         }
         e
     }

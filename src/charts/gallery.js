@@ -5,7 +5,8 @@
 // displayed size, so it works at any zoom and on a phone.
 //
 // Test hooks, after `#`, joined by `&`: readoff=NAME:X[:Y][;NAME:X...] reads chart NAME off at
-// x = X (and y = Y; without it, on the jam map's boundary or the sweep's first curve) and pins
+// x = X (and y = Y; without it, on the jam map's boundary, the sweep's first curve or the middle
+// of a map's y axis) and pins
 // it; click=NAME:X:Y clicks the displayed picture where (X, Y) is drawn, through the same
 // pointer mapping as a user's click. The body gets data-readoff="done" after them.
 (function () {
@@ -98,8 +99,47 @@
     return { text: text, panel: p, y: y, marks: marks, values: values };
   }
 
+  // The interval [i, i + 1] of sorted samples `vs` holding v in plot space, and the fraction
+  // of the way across it; null outside.
+  function bracket(a, vs, v) {
+    var u = plot(a, v);
+    for (var i = 0; i + 1 < vs.length; i++) {
+      var u0 = plot(a, vs[i]), u1 = plot(a, vs[i + 1]);
+      if (u0 <= u && u <= u1) return [i, u1 === u0 ? 0 : (u - u0) / (u1 - u0)];
+    }
+    return null;
+  }
+
+  // A map's cells read at (x, y): numbers bilinear in plot space between the four cells around
+  // the point (the nearest cell's where one of them has none), texts from the nearest cell.
+  function readGrid(c, x, y) {
+    var g = c.grid, ya = c.panels[0].y, nx = g.x.length;
+    if (y === null) y = value(ya, 0.5);
+    var bx = bracket(c.x, g.x, x), by = bracket(ya, g.y, y);
+    var values = { model: c.model }, parts = [];
+    values[c.x.param] = x;
+    values[ya.param] = y;
+    Object.keys(g.cells).forEach(function (q) {
+      var v = null, cells = g.cells[q];
+      if (bx && by) {
+        var i = bx[0], j = by[0], s = bx[1], t = by[1];
+        var near = cells[(j + (t < 0.5 ? 0 : 1)) * nx + i + (s < 0.5 ? 0 : 1)];
+        var k = [cells[j * nx + i], cells[j * nx + i + 1], cells[(j + 1) * nx + i], cells[(j + 1) * nx + i + 1]];
+        var numeric = k.every(function (e) { return typeof e === "number"; });
+        v = numeric ? (1 - t) * ((1 - s) * k[0] + s * k[1]) + t * ((1 - s) * k[2] + s * k[3]) : near;
+      }
+      values[q] = v;
+      parts.push(q + " = " + (typeof v === "number" ? num(v) : v === null ? "none" : v));
+    });
+    var text = c.x.param + " = " + num(x) + "  " + ya.param + " = " + num(y) + " | " + c.model +
+      ": " + parts.join("  ");
+    return { text: text, panel: 0, y: y, marks: [[0, x, y]], values: values };
+  }
+
   function read(c, p, x, y) {
-    return c.kind === "jam_map" ? readJamMap(c, x, y) : readSweep(c, p, x, y);
+    if (c.kind === "jam_map") return readJamMap(c, x, y);
+    if (c.kind === "grid") return readGrid(c, x, y);
+    return readSweep(c, p, x, y);
   }
 
   var NS = "http://www.w3.org/2000/svg";

@@ -3,7 +3,7 @@
 //! CSS and one inline plain-JS script, nothing fetched: it opens from the folder (file://) in
 //! any browser.
 //!
-//! Charts with a read-off (jam maps, sweeps) carry their [`super::readoff`] JSON beside the
+//! Charts with a read-off (jam maps, sweeps, the universal chart, contour maps) carry their [`super::readoff`] JSON beside the
 //! picture; the script (`gallery.js`) shows the values under the pointer with crosshair lines to
 //! the axes, and pins a copyable read-off on a click or tap.
 //!

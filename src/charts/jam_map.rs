@@ -81,6 +81,14 @@ impl super::kinds::Kind for JamMapSpec {
         self.has(JamMapLayer::ReadOff)
     }
 
+    /// Adds the read-off layer when the scene's layers leave it out.
+    fn enable_read_off(&mut self) -> bool {
+        if !self.has(JamMapLayer::ReadOff) {
+            self.layers.push(JamMapLayer::ReadOff);
+        }
+        true
+    }
+
     /// Checks the axes against the scene.
     fn validate(&self, scene: &Scene) -> Result<()> {
         let base = &scene.params;

@@ -53,6 +53,12 @@ pub(crate) trait Kind: Sized + DeserializeOwned + Serialize {
         false
     }
 
+    /// Turns on the read-off at the scene's own values (`render --read-off`); false for a kind
+    /// that has none (the settings stay as they were).
+    fn enable_read_off(&mut self) -> bool {
+        false
+    }
+
     /// Checks the settings against the scene, before anything is computed.
     fn validate(&self, scene: &Scene) -> Result<()>;
 
@@ -123,6 +129,12 @@ macro_rules! chart_kinds {
             pub(crate) fn marks_scene_value(&self) -> bool {
                 match self {
                     $(ChartSpec::$variant(s) => Kind::marks_scene_value(s),)+
+                }
+            }
+
+            pub(crate) fn enable_read_off(&mut self) -> bool {
+                match self {
+                    $(ChartSpec::$variant(s) => Kind::enable_read_off(s),)+
                 }
             }
 

@@ -27,9 +27,12 @@ pub fn axis_label(p: GridParam) -> String {
     format!("{} {symbol} ({})", d.quantity, d.unit)
 }
 
-/// `symbol = value unit`, e.g. `F = 200 N`.
-fn param_value(p: GridParam, v: f64) -> String {
-    format!("{} = {v} {}", param_symbol(p), param_unit(p))
+/// `symbol = value unit`, e.g. `F = 200 N`; a dimensionless one without unit (`μ = 0.27`).
+pub fn param_value(p: GridParam, v: f64) -> String {
+    match param_unit(p) {
+        "-" => format!("{} = {v}", param_symbol(p)),
+        unit => format!("{} = {v} {unit}", param_symbol(p)),
+    }
 }
 
 /// One line naming the scene's parameters for under the title, without the `swept` ones (they

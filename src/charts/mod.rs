@@ -41,6 +41,7 @@
 
 pub(crate) mod axes;
 pub(crate) mod builtin;
+pub(crate) mod collide;
 pub(crate) mod colorbar;
 pub(crate) mod contour_map;
 pub(crate) mod contours;
@@ -55,6 +56,7 @@ pub(crate) mod legend;
 pub(crate) mod models;
 pub(crate) mod output;
 pub(crate) mod overrides;
+pub(crate) mod point_read_off;
 pub(crate) mod print;
 pub(crate) mod readoff;
 pub(crate) mod spec;
@@ -148,6 +150,8 @@ impl Chart {
         match self {
             Chart::JamMap(c) => c.read_off(frames),
             Chart::Sweep(c) => c.read_off(frames),
+            Chart::Universal(c) => c.read_off(frames),
+            Chart::ContourMap(c) => c.read_off(frames),
             _ => None,
         }
     }
@@ -215,5 +219,7 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
     })
 }
 
+#[cfg(test)]
+mod layout_tests;
 #[cfg(test)]
 mod tests;

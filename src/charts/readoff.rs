@@ -8,13 +8,18 @@
 //!
 //! Shape (`kind` decides the data keys):
 //! ```text
-//! { "kind": "jam_map" | "sweep", "x": AXIS,
+//! { "kind": "jam_map" | "sweep" | "grid", "x": AXIS,
 //!   "panels": [{ "frame": { "left", "top", "right", "bottom" }, "y": AXIS, "quantity"? }],
 //!   jam_map: "model", "columns": { PARAM, "theta_jam_deg", "x_jam_mm", "status", "reach_deg" },
 //!            "disc": { "radius_mm", "palm_offset_mm", "palm_length_mm" }
-//!   sweep:   "series": [{ "label", "layer", "line", "at", "x_jam_mm", "theta_jam_deg" }] }
+//!   sweep:   "series": [{ "label", "layer", "line", "at", "x_jam_mm", "theta_jam_deg" }]
+//!   grid:    "model", "grid": { "x": [..], "y": [..], "cells": { QUANTITY: [..] } } }
 //! AXIS = { "param", "label", "min", "max", "log" }
 //! ```
+//! A grid (the universal chart, contour maps) carries its cells, every k-th row and column so
+//! that at most [`GRID_SAMPLES`] per axis, row by row (x fastest); the page interpolates
+//! numbers bilinearly in plot space and gives a text (a status) of the nearest cell.
+//!
 //! A jam map's status at (v, theta): `beyond_reach` when theta < reach_deg(v) (the contact lies
 //! past the palm's end), else `jam` when theta <= theta_jam_deg(v) (margin >= 0), else `slide`.
 
@@ -42,6 +47,37 @@ pub fn panel(frame: &PlotFrame, y: Value, quantity: Option<&str>) -> Value {
         p["quantity"] = q.into();
     }
     p
+}
+
+/// Most samples per axis of a grid read-off: 101 x 101 cells of three quantities at 7 digits
+/// are about 300 kB of page, and the iso-lines they are read between are smooth (the browser
+/// test measures the error against `solve`).
+pub const GRID_SAMPLES: usize = 101;
+
+/// A map's cells for the read-off: every k-th sample of each axis (the last one always), and
+/// per quantity its value at those cells, row by row with x fastest.
+pub fn grid(g: &crate::grid::GridResult, quantities: &[(&str, &dyn Fn(usize) -> Value)]) -> Value {
+    let picks = |n: usize| {
+        let mut v: Vec<usize> = (0..n).step_by(n.div_ceil(GRID_SAMPLES).max(1)).collect();
+        if v.last() != Some(&(n - 1)) {
+            v.push(n - 1);
+        }
+        v
+    };
+    let (ixs, iys) = (picks(g.nx()), picks(g.ny()));
+    let mut cells = serde_json::Map::new();
+    for (name, at) in quantities {
+        let values = iys
+            .iter()
+            .flat_map(|iy| ixs.iter().map(move |ix| (*ix, *iy)))
+            .map(|(ix, iy)| at(g.index(ix, iy)));
+        cells.insert(name.to_string(), Value::Array(values.collect()));
+    }
+    json!({
+        "x": ixs.iter().map(|i| g.x_values[*i]).collect::<Vec<_>>(),
+        "y": iys.iter().map(|i| g.y_values[*i]).collect::<Vec<_>>(),
+        "cells": cells,
+    })
 }
 
 /// A column of optional numbers as JSON (`null` where there is none).

@@ -110,6 +110,16 @@ impl super::kinds::Kind for SweepSpec {
         vec![("axis", self.axis.param)]
     }
 
+    /// With the read-off, the chart marks the scene's value of the swept parameter.
+    fn marks_scene_value(&self) -> bool {
+        self.read_off
+    }
+
+    fn enable_read_off(&mut self) -> bool {
+        self.read_off = true;
+        true
+    }
+
     /// Checks the axis, panels and layers against the scene.
     fn validate(&self, scene: &Scene) -> Result<()> {
         let base = &scene.params;
@@ -408,12 +418,11 @@ impl Sweep {
         if !(a.min..=a.max).contains(v) || p.x_jam_mm.is_none() {
             return None;
         }
-        let name = super::param_symbol(a.param);
         Some(LegendEntry::new(
             Swatch::Stroke(LineKind::Dotted, style::INK, 2),
             format!(
-                "read-off at {name} = {} (closed form)",
-                style::fmt_num(*v, 3)
+                "read-off at {} (closed form)",
+                super::labels::param_value(a.param, *v)
             ),
         ))
     }

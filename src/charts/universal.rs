@@ -22,17 +22,19 @@
 use contour::ContourBuilder;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::{Deserialize, Serialize};
 use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
+use super::collide::PxBox;
 use super::colorbar::ColorBar;
 use super::contour_map::{Paths, at_height, level_text, plot_to_value};
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
+use super::readoff;
 use super::spec::Scene;
 use super::style::{self, GRID_MAJOR, INK, LineKind};
+use super::typeset;
 use super::{DataFile, axis_label, cells_csv, cells_json, grid_lines, grid_polygons, param_symbol};
 use crate::csv_out::{Column, Num, nums};
 use crate::error::{Error, Result};
@@ -81,6 +83,11 @@ impl super::kinds::Kind for UniversalSpec {
 
     /// The read-off lines mark the scene's friction and F / (m g).
     fn marks_scene_value(&self) -> bool {
+        true
+    }
+
+    /// The read-off is always drawn where the scene's point lies on the chart.
+    fn enable_read_off(&mut self) -> bool {
         true
     }
 
@@ -436,6 +443,30 @@ impl Universal {
         })
     }
 
+    /// What the gallery's read-off needs (see [`super::readoff`]): the plotting area, the axes
+    /// and the cells' theta_jam, x_jam / r and status.
+    pub fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
+        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
+        let x = PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param));
+        let y = PlotAxis::new(ya.min, ya.max, ya.scale, axis_label(ya.param));
+        let theta = self.grid.theta_jam_deg.as_deref()?;
+        let cells = readoff::grid(
+            &self.grid,
+            &[
+                ("theta_jam_deg", &|i| serde_json::json!(theta[i])),
+                ("x_over_r", &|i| serde_json::json!(self.x_over_r[i])),
+                ("status", &|i| serde_json::json!(self.status[i])),
+            ],
+        );
+        Some(serde_json::json!({
+            "kind": "grid",
+            "model": ModelKind::Statics,
+            "x": readoff::axis(xa.param.as_str(), &x),
+            "panels": [readoff::panel(frames.first()?, readoff::axis(ya.param.as_str(), &y), None)],
+            "grid": cells,
+        }))
+    }
+
     /// Draws the chart on `root`.
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
         let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
@@ -497,16 +528,29 @@ impl Universal {
     ) -> DrawResult<DB> {
         let (px, py) = chart.plotting_area().get_pixel_range();
         let inside = |at: (i32, i32)| px.contains(&at.0) && py.contains(&at.1);
+        // A label whose text would overlap one already set is left out: over many decades of
+        // F / (m g) the lines crowd together near the bottom (issue 18's layout test).
+        let mut placed: Vec<PxBox> = Vec::new();
+        // A label on a line at the plot's left edge is moved right until it clears the edge,
+        // where the y axis' tick labels lie (a line there over 12 decades met "10⁰").
+        let mut tag = |s: &str, at: (i32, i32)| {
+            let size = typeset::text_size(s, style::TICK_PX);
+            let at = (at.0.max(px.start + size.0 as i32 / 2), at.1);
+            let b = PxBox::centred(at, size, 0);
+            if placed.iter().any(|p| p.overlaps(&b)) {
+                return Ok(());
+            }
+            placed.push(b);
+            axes::tag(root, s, at)
+        };
         for (level, paths) in self.lines.iter().filter(|(l, _)| self.major.contains(l)) {
             let top = at_height(paths, chart, y, 0.96).map(|(_, at)| at);
             let bottom = at_height(paths, chart, y, 0.04).map(|(_, at)| at);
             if let Some(at) = top.filter(|a| inside(*a)) {
-                let s = format!("{}°", level_text(*level));
-                axes::tag(root, &s, at)?;
+                tag(&format!("{}°", level_text(*level)), at)?;
             }
             if let Some(at) = bottom.filter(|a| inside(*a) && Some(*a) != top) {
-                let s = style::fmt_num(cot_half(*level), 2);
-                axes::tag(root, &s, at)?;
+                tag(&style::fmt_num(cot_half(*level), 2), at)?;
             }
         }
         Ok(())
@@ -524,19 +568,6 @@ impl Universal {
         let Some(r) = self.read_off.filter(|_| self.read_off_drawn()) else {
             return Ok(());
         };
-        let at = |a: f64, b: f64| axes::pixel(c, x, y, a, b);
-        let (corner, bottom, left) = (
-            at(r.mu, r.push_ratio),
-            at(r.mu, y.min),
-            at(x.min, r.push_ratio),
-        );
-        for line in [[bottom, corner], [left, corner]] {
-            style::draw_line_px(root, &line, LineKind::Dotted, INK, 2)?;
-        }
-        root.draw(&Circle::new(corner, 5, INK.filled()))?;
-        let num = |s: &str, p: (i32, i32)| axes::tag(root, s, p);
-        num("1", (bottom.0 + 12, (bottom.1 + corner.1) / 2))?;
-        num("2", ((left.0 + corner.0) / 2, corner.1 - 14))?;
         let p = &self.params;
         let answer = match (r.theta_deg, r.point.status) {
             (Some(t), JamStatus::Jams) => format!(
@@ -554,21 +585,8 @@ impl Universal {
             ),
             (_, status) => format!("3: {status}"),
         };
-        // Right of the point, or left of it in the right half of the plot.
-        let (px, _) = c.plotting_area().get_pixel_range();
-        let right_half = corner.0 > (px.start + px.end) / 2;
-        let (dx, h) = if right_half {
-            (-12, HPos::Right)
-        } else {
-            (12, HPos::Left)
-        };
-        axes::boxed_text(
-            root,
-            &answer,
-            (corner.0 + dx, corner.1 + 18),
-            Pos::new(h, VPos::Top),
-            style::NOTE_PX,
-        )
+        let below = super::point_read_off::AnswerAt::Below;
+        super::point_read_off::draw(root, c, (x, y), (r.mu, r.push_ratio), &answer, below)
     }
 }
 

@@ -11,6 +11,7 @@ mod manifest;
 mod min_norm;
 mod numbers;
 mod progress;
+mod read_off;
 pub mod render;
 mod shell;
 mod solve;

@@ -14,6 +14,7 @@ use crate::error::{Error, Result};
 use super::Done;
 use super::manifest;
 use super::progress::{self, Quiet};
+use super::read_off::{self, ReadOffArg};
 
 /// Flags of `render`.
 #[derive(Debug, Clone, Args)]
@@ -38,6 +39,16 @@ pub struct RenderArgs {
     /// is a string.
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<Setting>,
+    /// Read every map and sweep off at your own value, e.g. mu=0.27 (repeatable).
+    ///
+    /// The value becomes the scene's, as --set would make it, and the chart draws its read-off
+    /// there: the 1-2-3 lines of a jam map, universal chart or contour map, the lines to the
+    /// axes of a sweep, with theta_jam and x_jam printed. KEY is a scene parameter: mu,
+    /// mu_ground, mu_palm, radius_mm, force_n, push_ratio (F / (m g)), ... A contour map reads
+    /// off at both its axes' values: give one --read-off for each. A chart without a
+    /// read-off says so on stderr.
+    #[arg(long = "read-off", value_name = "KEY=VALUE")]
+    pub read_off: Vec<ReadOffArg>,
     /// Folder whose scene files replace the built-in scenes (names then refer to its files).
     #[arg(long, value_name = "DIR")]
     pub scenes_dir: Option<PathBuf>,
@@ -202,6 +213,10 @@ fn reproduce_command(a: &RenderArgs, name: &str) -> String {
         words.push("--set".into());
         words.push(s.to_string());
     }
+    for r in &a.read_off {
+        words.push("--read-off".into());
+        words.push(r.to_string());
+    }
     words.push("--out".into());
     words.push(a.out.display().to_string());
     words
@@ -279,7 +294,10 @@ fn render_scenes(scenes: &[Scene], formats: Formats, quiet: Quiet) -> Result<Vec
 }
 
 pub fn run(a: &RenderArgs) -> Result<Done> {
-    let scenes = load_scenes(&a.scenes, a.scenes_dir.as_deref(), &a.set)?;
+    let mut scenes = load_scenes(&a.scenes, a.scenes_dir.as_deref(), &a.set)?;
+    for s in &mut scenes {
+        super::warn(&read_off::apply(s, &a.read_off)?);
+    }
     for s in &scenes {
         let named: Vec<String> = (s.params.unit_warnings().into_iter())
             .map(|w| format!("scene {}: {w}", s.name))

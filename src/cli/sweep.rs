@@ -24,14 +24,12 @@ use crate::models::ModelKind;
 #[derive(Debug, Clone, Args)]
 pub struct SweepArgs {
     /// The swept parameter(s): PARAM=MIN:MAX, optionally :COUNT and :log.
-    ///
-    /// One axis draws x_jam and theta_jam against it (NAME.csv); two draw a map of x_jam over
-    /// both, the first across (NAME.json). PARAM is one of mu (both frictions), mu_ground,
-    /// mu_palm, radius_mm, mass_kg, force_n, gravity_m_s2, start_angle_deg, palm_length_mm,
-    /// palm_offset_mm, push_ratio (F / (m g): sets force_n from the mass and gravity).
-    /// COUNT defaults to 201 samples (101 per axis of a map). E.g. mu=0.1:0.5 or
-    /// force_n=50:10000:log radius_mm=10:30.
-    #[arg(value_name = "PARAM=MIN:MAX", required = true, num_args = 1..=2)]
+    #[arg(
+        value_name = "PARAM=MIN:MAX",
+        required = true,
+        num_args = 1..=2,
+        long_help = axes_long_help()
+    )]
     pub axes: Vec<AxisArg>,
     #[command(flatten)]
     pub scene: SceneArgs,
@@ -44,11 +42,42 @@ pub struct SweepArgs {
     /// Pictures to write; the data file is always written.
     #[arg(long, value_enum, default_value_t = RenderFormat::Both)]
     pub format: RenderFormat,
-    /// Read the chart off at your own value of the swept parameter (one axis): the closed
-    /// form's x_jam and theta_jam there, lines to the axes and the values printed. The value is
-    /// the flag's, e.g. `sweep mu=0.1:0.5 --mu 0.27 --read-off`.
+    /// Read the chart off at your own value of the swept parameter(s): x_jam and theta_jam
+    /// there, lines to the axes and the values printed. The value is the flag's, e.g. `sweep
+    /// mu=0.1:0.5 --mu 0.27 --read-off`; a map reads off at both flags' values.
     #[arg(long)]
     pub read_off: bool,
+}
+
+/// The parameters a sweep varies: every axis parameter but the palm angle (a sweep's panels
+/// are the jam's angle and position).
+fn sweep_params() -> impl Iterator<Item = GridParam> {
+    GridParam::all().filter(|p| *p != GridParam::ThetaDeg)
+}
+
+/// `--help` of the axes, its list of parameters made from [`GridParam::all`] with each one's
+/// quantity and unit, so that a new scene parameter is listed with no edit here.
+fn axes_long_help() -> String {
+    let params: Vec<String> = sweep_params()
+        .map(|p| {
+            let d = p.decl();
+            let sets = match d.sets {
+                [] if p == GridParam::PushRatio => ", sets force_n = push_ratio m g".to_string(),
+                [] => String::new(),
+                keys => format!(", sets {}", keys.join(" and ")),
+            };
+            let (key, what) = (p.as_str(), d.quantity);
+            format!("  {key:<16} {what} {} ({}){sets}", d.symbol, d.unit)
+        })
+        .collect();
+    format!(
+        "The swept parameter(s): PARAM=MIN:MAX, optionally :COUNT and :log.\n\n\
+         One axis draws x_jam and theta_jam against it (NAME.csv); two draw a map of x_jam \
+         over both, the first across (NAME.json). COUNT defaults to 201 samples (101 per axis \
+         of a map). E.g. mu=0.1:0.5 or force_n=50:10000:log radius_mm=10:30.\n\n\
+         PARAM is one of:\n{}",
+        params.join("\n")
+    )
 }
 
 /// `PARAM=MIN:MAX[:COUNT][:log]` as typed.
@@ -161,6 +190,7 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
                 theta_jam_levels_deg: Vec::new(),
                 settle_pct: None,
                 model: ModelKind::Statics,
+                read_off: a.read_off,
             });
             let (px, py) = (x_axis.param.as_str(), y_axis.param.as_str());
             let title = format!(

@@ -54,6 +54,7 @@ type Px = BackendCoord;
 type Drawn<DB> = Result<(), DrawingErrorKind<<DB as DrawingBackend>::ErrorType>>;
 pub use svg::SvgText;
 
+use super::collide::PxBox;
 use super::style;
 
 /// The embedded DejaVu Sans, parsed once.
@@ -125,6 +126,61 @@ pub fn text_size(text: &str, size_px: f64) -> (u32, u32) {
     let run = Run::new(text);
     let w = f64::from(run.advance) * px_per_unit(size_px);
     (w.round() as u32, size_px.round() as u32)
+}
+
+/// A text run as set on a picture: its text, size and box in the chart's (logical) px, from
+/// the font's ascent line to its descent line and from the pen's start to its advance.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TextBox {
+    /// The text.
+    pub text: String,
+    /// Its size in px (ascent to descent).
+    pub size_px: f64,
+    /// Its box.
+    pub rect: PxBox,
+}
+
+thread_local! {
+    /// The text boxes [`Typeset`] set on this thread, while [`record_texts`] runs.
+    static TEXTS: RefCell<Option<Vec<TextBox>>> = const { RefCell::new(None) };
+}
+
+/// Runs `draw` and returns, beside its result, the box of every text it set, in drawing order
+/// (the layout tests: no two overlap, all inside the picture). A drawing runs on one thread,
+/// so a thread-local list sees exactly its own texts.
+#[cfg(test)]
+pub fn record_texts<R>(draw: impl FnOnce() -> R) -> (R, Vec<TextBox>) {
+    let outer = TEXTS.with_borrow_mut(|t| t.replace(Vec::new()));
+    let r = draw();
+    let texts = TEXTS.with_borrow_mut(|t| std::mem::replace(t, outer));
+    (r, texts.unwrap_or_default())
+}
+
+/// The box of `text` at `size_px` anchored at `at` as `anchor` says, turned by `t`: what
+/// [`Typeset::draw_text`] covers, in the same logical px as `at`.
+fn text_box(text: &str, size_px: f64, at: Px, anchor: (HPos, VPos), t: &FontTransform) -> PxBox {
+    let run = Run::new(text);
+    let f = font();
+    let (ax, bl) = run.anchor(anchor.0, anchor.1);
+    let k = px_per_unit(size_px);
+    let x = [-ax, run.advance - ax].map(|u| f64::from(u) * k);
+    let y = [bl - f.ascent_unscaled(), bl - f.descent_unscaled()].map(|v| f64::from(v) * k);
+    // The corners turned as glyph cells are (a quarter turn about the anchor).
+    let corners = [(x[0], y[0]), (x[1], y[0]), (x[0], y[1]), (x[1], y[1])].map(|(u, v)| match t {
+        FontTransform::None => (u, v),
+        FontTransform::Rotate90 => (-v, u),
+        FontTransform::Rotate180 => (-u, -v),
+        FontTransform::Rotate270 => (v, -u),
+    });
+    let lo = |i: fn(&(f64, f64)) -> f64| corners.iter().map(i).fold(f64::INFINITY, f64::min);
+    let hi = |i: fn(&(f64, f64)) -> f64| corners.iter().map(i).fold(f64::NEG_INFINITY, f64::max);
+    let px = |v: f64, o: i32| (v + f64::from(o)).round() as i32;
+    PxBox {
+        x0: px(lo(|c| c.0), at.0),
+        y0: px(lo(|c| c.1), at.1),
+        x1: px(hi(|c| c.0), at.0),
+        y1: px(hi(|c| c.1), at.1),
+    }
 }
 
 /// A pixel cell (u, v) relative to a rotation centre on a pixel corner, turned by `t`.
@@ -336,6 +392,17 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
         if color.alpha == 0.0 || text.is_empty() {
             return Ok(());
         }
+        TEXTS.with_borrow_mut(|texts| {
+            if let Some(texts) = texts {
+                let anchor = style.anchor();
+                let t = style.transform();
+                texts.push(TextBox {
+                    text: text.to_string(),
+                    size_px: style.size(),
+                    rect: text_box(text, style.size(), pos, (anchor.h_pos, anchor.v_pos), &t),
+                });
+            }
+        });
         let size_px = style.size() * self.scale;
         let anchor = style.anchor();
         let t = style.transform();

@@ -1,0 +1,125 @@
+//! Boxes on the picture: whether a label's box meets a drawn line or another box.
+//!
+//! Hand-written rather than taken from `geo`: two predicates on integer pixel boxes do not
+//! justify a geometry crate and its dependency tree, and the clipping test (Liang-Barsky) is
+//! a dozen lines whose tests are below.
+
+/// An axis-aligned box in backend pixels, corners included.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PxBox {
+    /// Left edge.
+    pub x0: i32,
+    /// Top edge.
+    pub y0: i32,
+    /// Right edge.
+    pub x1: i32,
+    /// Bottom edge.
+    pub y1: i32,
+}
+
+impl PxBox {
+    /// The box of `w` x `h` px centred at `at`, grown by `pad` on every side (a
+    /// [`super::axes::boxed_text`] centred there).
+    pub fn centred(at: (i32, i32), (w, h): (u32, u32), pad: i32) -> PxBox {
+        let (w, h) = (w as i32, h as i32);
+        let (x0, y0) = (at.0 - w / 2, at.1 - h / 2);
+        PxBox {
+            x0: x0 - pad,
+            y0: y0 - pad,
+            x1: x0 + w + pad,
+            y1: y0 + h + pad,
+        }
+    }
+
+    /// Whether the two boxes share an area (touching edges do not count).
+    pub fn overlaps(&self, o: &PxBox) -> bool {
+        self.x0 < o.x1 && o.x0 < self.x1 && self.y0 < o.y1 && o.y0 < self.y1
+    }
+
+    /// Whether the box lies inside `w` x `h` px from the origin.
+    #[cfg(test)]
+    pub fn inside(&self, (w, h): (u32, u32)) -> bool {
+        self.x0 >= 0 && self.y0 >= 0 && self.x1 <= w as i32 && self.y1 <= h as i32
+    }
+
+    /// Whether the segment from `a` to `b` passes through the box (Liang-Barsky clipping).
+    pub fn meets_segment(&self, a: (i32, i32), b: (i32, i32)) -> bool {
+        let (ax, ay) = (f64::from(a.0), f64::from(a.1));
+        let (dx, dy) = (f64::from(b.0) - ax, f64::from(b.1) - ay);
+        let (mut t0, mut t1) = (0.0f64, 1.0f64);
+        let edges = [
+            (-dx, ax - f64::from(self.x0)),
+            (dx, f64::from(self.x1) - ax),
+            (-dy, ay - f64::from(self.y0)),
+            (dy, f64::from(self.y1) - ay),
+        ];
+        for (p, q) in edges {
+            if p == 0.0 {
+                if q < 0.0 {
+                    return false;
+                }
+            } else {
+                let t = q / p;
+                if p < 0.0 {
+                    t0 = t0.max(t);
+                } else {
+                    t1 = t1.min(t);
+                }
+                if t0 > t1 {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    /// Whether any segment of the polyline `points` passes through the box.
+    pub fn meets_polyline(&self, points: &[(i32, i32)]) -> bool {
+        match points {
+            [p] => self.meets_segment(*p, *p),
+            _ => points.windows(2).any(|w| self.meets_segment(w[0], w[1])),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const B: PxBox = PxBox {
+        x0: 10,
+        y0: 10,
+        x1: 20,
+        y1: 20,
+    };
+
+    #[test]
+    fn segments_through_beside_and_inside_the_box() {
+        assert!(B.meets_segment((15, 0), (15, 30)), "straight through");
+        assert!(B.meets_segment((0, 0), (30, 30)), "diagonal through");
+        assert!(B.meets_segment((12, 12), (14, 14)), "inside");
+        assert!(!B.meets_segment((25, 0), (25, 30)), "beside");
+        assert!(!B.meets_segment((0, 25), (25, 40)), "below, slanted");
+        assert!(!B.meets_segment((0, 0), (8, 30)), "left, ending short");
+        assert!(B.meets_polyline(&[(0, 15), (5, 15), (12, 15)]));
+        assert!(!B.meets_polyline(&[(0, 0), (0, 30), (30, 31)]));
+    }
+
+    #[test]
+    fn boxes_overlap_only_when_they_share_area() {
+        let right = PxBox {
+            x0: 20,
+            x1: 30,
+            ..B
+        };
+        assert!(!B.overlaps(&right), "touching edges");
+        let shifted = PxBox {
+            x0: 19,
+            x1: 29,
+            ..B
+        };
+        assert!(B.overlaps(&shifted) && shifted.overlaps(&B));
+        assert!(B.inside((20, 20)) && !B.inside((19, 40)));
+        assert_eq!(PxBox::centred((15, 15), (10, 10), 0), B);
+    }
+}

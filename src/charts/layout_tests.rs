@@ -1,0 +1,250 @@
+//! Layouts that never clip or overlap (issue 18): the typesetter records the box of every text
+//! it sets ([`typeset::record_texts`]), so these tests can say that no two texts of a chart
+//! overlap, that all lie inside the picture, and that a label sits on no other line.
+
+use super::axes::{self, PlotFrame};
+use super::typeset::{self, TextBox};
+use super::*;
+
+/// `scene` drawn as SVG: the box of every text, the picture's size in the chart's px, and
+/// the plotting areas.
+fn layout(scene: &Scene) -> (Vec<TextBox>, (u32, u32), Vec<PlotFrame>) {
+    style::init_fonts();
+    let chart = Chart::compute(scene).expect("the scene computes");
+    let s = &scene.size;
+    let ((drawn, frames), texts) = typeset::record_texts(|| {
+        axes::record_frames(|| {
+            output::svg(s.width_px, s.height_px, s.scale, scene.style, |root| {
+                chart.draw(root).map_err(|e| e.to_string())
+            })
+        })
+    });
+    drawn.expect("the scene draws");
+    let logical = (
+        (f64::from(s.width_px) / s.scale).round() as u32,
+        (f64::from(s.height_px) / s.scale).round() as u32,
+    );
+    (texts, logical, frames)
+}
+
+fn builtin(name: &str, settings: &[&str]) -> Scene {
+    let settings: Vec<_> = settings.iter().map(|s| s.parse().unwrap()).collect();
+    SceneSource::BuiltIn(name.into())
+        .load(&settings)
+        .unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+/// Regression (issue 18): fig7c's "25 mm" label sat on the 46 deg theta_jam line (the first
+/// of its three places that lay inside the plot was on it). Every x_jam label now sits on no
+/// theta_jam line: each line is mapped from the chart's JSON to pixels through the plotting
+/// area the drawing built.
+#[test]
+fn fig7c_x_jam_labels_sit_on_no_theta_line() {
+    let scene = builtin("fig7c", &[]);
+    let (texts, (w, h), frames) = layout(&scene);
+    let f = frames[0];
+    let ChartSpec::ContourMap(spec) = &scene.chart else {
+        panic!("fig7c is a contour map")
+    };
+    let (xa, ya) = (spec.x_axis, spec.y_axis);
+    let frac = |v: f64, a: &crate::grid::GridAxis| match a.scale {
+        crate::grid::AxisScale::Log => (v / a.min).ln() / (a.max / a.min).ln(),
+        crate::grid::AxisScale::Linear => (v - a.min) / (a.max - a.min),
+    };
+    let pixel = |p: &serde_json::Value| {
+        let (u, v) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+        let x = (f.left + frac(u, &xa) * (f.right - f.left)) * f64::from(w);
+        let y = (f.bottom + frac(v, &ya) * (f.top - f.bottom)) * f64::from(h);
+        (x.round() as i32, y.round() as i32)
+    };
+    let chart = Chart::compute(&scene).unwrap();
+    let doc: serde_json::Value = serde_json::from_slice(&chart.data(&scene).bytes).unwrap();
+    let theta_lines: Vec<(f64, Vec<(i32, i32)>)> = doc["iso_lines"]["theta_jam_deg"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|l| {
+            let level = l["level"].as_f64().unwrap();
+            let paths = l["paths"].as_array().unwrap().clone();
+            paths
+                .into_iter()
+                .map(move |p| (level, p.as_array().unwrap().iter().map(pixel).collect()))
+        })
+        .collect();
+    assert_eq!(theta_lines.len(), 4, "fig7c draws four theta_jam lines");
+    let labels: Vec<&TextBox> = texts
+        .iter()
+        .filter(|t| {
+            t.text
+                .strip_suffix(" mm")
+                .is_some_and(|n| n.parse::<f64>().is_ok())
+        })
+        .collect();
+    assert_eq!(labels.len(), 10, "fig7c labels its ten x_jam levels");
+    for t in labels {
+        for (level, line) in &theta_lines {
+            assert!(
+                !t.rect.meets_polyline(line),
+                "\"{}\" at {:?} sits on the {level} deg line",
+                t.text,
+                t.rect
+            );
+        }
+    }
+}
+
+/// The texts of `scene` that overlap another or leave the picture, one line each.
+fn layout_faults(scene: &Scene) -> Vec<String> {
+    let (texts, size, _) = layout(scene);
+    let mut faults = Vec::new();
+    for (i, a) in texts.iter().enumerate() {
+        if !a.rect.inside(size) {
+            faults.push(format!(
+                "{}: \"{}\" {:?} leaves the {size:?} picture",
+                scene.name, a.text, a.rect
+            ));
+        }
+        for b in &texts[i + 1..] {
+            if a.rect.overlaps(&b.rect) {
+                faults.push(format!(
+                    "{}: \"{}\" {:?} overlaps \"{}\" {:?}",
+                    scene.name, a.text, a.rect, b.text, b.rect
+                ));
+            }
+        }
+    }
+    faults
+}
+
+/// Issue 18: no two texts of a built-in chart overlap and none leaves the picture.
+#[test]
+fn no_text_overlaps_or_leaves_the_picture_in_any_built_in_scene() {
+    let faults: Vec<String> = builtin::scene_names()
+        .iter()
+        .flat_map(|n| layout_faults(&builtin(n, &[])))
+        .collect();
+    assert!(faults.is_empty(), "{}", faults.join("\n"));
+}
+
+/// A legend never names a line that is not drawn (issue 18): with `--set mu=0.27` fig7c's
+/// theta_jam levels (44-47 deg) lie off the map, and its legend still named "θ_jam
+/// iso-lines".
+#[test]
+fn fig7c_legend_names_theta_lines_only_when_drawn() {
+    let named = |settings: &[&str]| {
+        let (texts, _, _) = layout(&builtin("fig7c", settings));
+        texts.iter().any(|t| t.text.starts_with("θ_jam iso-lines"))
+    };
+    assert!(named(&[]));
+    assert!(!named(&["mu=0.27"]));
+}
+
+/// A title of the longest length a scene takes (200 characters).
+fn long_title() -> String {
+    let words = "Jam point of a 25 mm steel shaft pushed by a gripper finger, ";
+    let t: String = words.chars().cycle().take(spec::MAX_TITLE_CHARS).collect();
+    format!("title=\"{}\"", t.trim_end())
+}
+
+/// The awkward user scenes of issue 18: each built-in scene with the longest title; log axes
+/// over 12 decades; every series a sweep can draw. (Not yet the smallest size, 400 x 300 px:
+/// there the built-in scenes have thousands of overlapping texts; see
+/// `texts_at_the_smallest_size`.)
+fn awkward_scenes() -> Vec<(String, Scene)> {
+    let title = long_title();
+    let mut scenes = Vec::new();
+    for n in builtin::scene_names() {
+        scenes.push((
+            format!("{n} with a 200-character title"),
+            builtin(&n, &[&title]),
+        ));
+    }
+    let decades: [(&str, &[&str]); 4] = [
+        (
+            "fig7b",
+            &[
+                "chart.axis.min=1e-2",
+                "chart.axis.max=1e10",
+                "chart.axis.count=61",
+            ],
+        ),
+        (
+            "fig7c",
+            &[
+                "chart.x_axis.min=1e-2",
+                "chart.x_axis.max=1e10",
+                "chart.x_axis.count=61",
+                "chart.y_axis.count=41",
+            ],
+        ),
+        (
+            "universal",
+            &[
+                "chart.y_axis.min=1e-3",
+                "chart.y_axis.max=1e9",
+                "chart.y_axis.count=61",
+            ],
+        ),
+        (
+            "fig3",
+            &[
+                "chart.y_axis.min=1e-9",
+                "chart.y_axis.max=179",
+                "chart.y_axis.count=61",
+                "chart.x_axis.count=61",
+            ],
+        ),
+    ];
+    for (n, set) in decades {
+        scenes.push((format!("{n} over 12 decades"), builtin(n, set)));
+    }
+    let every_layer = "chart.layers=[\"statics\", \"rigid\", \"paper_table1\", \"paper_adams\", \
+                       \"min_norm\", \"min_norm_rolling\", \"simulation_motion\", \
+                       \"simulation_force\"]";
+    scenes.push((
+        "fig6 with every layer".into(),
+        builtin("fig6", &[every_layer, "chart.axis.count=21"]),
+    ));
+    scenes
+}
+
+/// Issue 18: no two texts overlap and none leaves the picture in awkward user scenes.
+#[test]
+fn no_text_overlaps_or_leaves_the_picture_in_awkward_scenes() {
+    let faults: Vec<String> = awkward_scenes()
+        .iter()
+        .flat_map(|(what, s)| {
+            layout_faults(s)
+                .into_iter()
+                .map(move |f| format!("{what}: {f}"))
+        })
+        .collect();
+    assert!(
+        faults.is_empty(),
+        "{} faults:\n{}",
+        faults.len(),
+        faults.join("\n")
+    );
+}
+
+/// The faults of every built-in scene at the smallest size a scene takes, 400 x 300 px: a
+/// measurement for the work left (issue 18), printed with `--nocapture`, not yet a claim.
+/// It asserts only that the recorder saw the texts (the counts are in the report).
+#[test]
+fn texts_at_the_smallest_size() {
+    let tiny = ["size.width_px=400", "size.height_px=300", "size.scale=1.0"];
+    let mut total = 0;
+    for n in builtin::scene_names() {
+        let scene = builtin(&n, &tiny);
+        let (texts, _, _) = layout(&scene);
+        assert!(!texts.is_empty(), "{n}: no text recorded");
+        let faults = layout_faults(&scene);
+        println!(
+            "{n} at 400 x 300: {} faults among {} texts",
+            faults.len(),
+            texts.len()
+        );
+        total += faults.len();
+    }
+    println!("all built-in scenes at 400 x 300: {total} faults");
+}
