@@ -198,31 +198,29 @@ fn works(base: &LocatorParams, b: &RobustBox, gamma_deg: f64) -> Result<(), Opti
     holds_sector(&v.with_mu(b.mu.0), b.load_n, b.load_angle_deg).map_err(Some)
 }
 
-/// The largest x in [lo, hi] with `ok(x)`, given ok(lo) and not ok(hi), by bisection.
-fn last_ok(mut lo: f64, mut hi: f64, ok: impl Fn(f64) -> bool) -> f64 {
+/// The final bracket (a, b) of a bisection of [lo, hi] where `left(x)` holds on the left
+/// part: left(a), not left(b), to below 1e-15 of the bracket.
+fn bisect(mut lo: f64, mut hi: f64, left: impl Fn(f64) -> bool) -> (f64, f64) {
     for _ in 0..ANGLE_BISECTIONS {
         let mid = 0.5 * (lo + hi);
-        if ok(mid) {
+        if left(mid) {
             lo = mid;
         } else {
             hi = mid;
         }
     }
-    lo
+    (lo, hi)
 }
 
-/// The least x in [lo, hi] with `ok(x)` to the bisection's resolution, given not ok(lo) and
-/// ok(hi): the upper end of the final bracket, so `ok` holds there.
-fn first_ok(mut lo: f64, mut hi: f64, ok: impl Fn(f64) -> bool) -> f64 {
-    for _ in 0..ANGLE_BISECTIONS {
-        let mid = 0.5 * (lo + hi);
-        if ok(mid) {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
-    hi
+/// The largest x in [lo, hi] with `ok(x)`, given ok(lo) and not ok(hi).
+fn last_ok(lo: f64, hi: f64, ok: impl Fn(f64) -> bool) -> f64 {
+    bisect(lo, hi, ok).0
+}
+
+/// The least x in [lo, hi] with `ok(x)`, given not ok(lo) and ok(hi): the upper end of the
+/// final bracket, so `ok` holds there.
+fn first_ok(lo: f64, hi: f64, ok: impl Fn(f64) -> bool) -> f64 {
+    bisect(lo, hi, |x| !ok(x)).1
 }
 
 /// The search range of included angles for `base`'s tilt, deg.
