@@ -14,6 +14,7 @@ use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
 use crate::minnorm::MinNormSettings;
 use crate::scene::SceneParams;
+use crate::uncertain::UncertainSet;
 pub(crate) use merge::{Refusal, overlay, read_section};
 pub use read::{
     array_for_table, cut_quotes, key_line_column, keyed, not_a_table, parse_toml, seq_for_struct,
@@ -51,6 +52,44 @@ impl Config {
         let text = read_text(path)?;
         parse_toml(&text, path)
     }
+
+    /// Reads a TOML file whose `[scene]` may give ranges or distributions as strings (`mu =
+    /// "0.12:0.3"`): the config with their nominal values, and the uncertain inputs.
+    pub(crate) fn load_uncertain(path: &Path) -> Result<(Config, UncertainSet)> {
+        let text = read_text(path)?;
+        let raw: Option<toml::Table> = toml::from_str(&text).ok();
+        let Some(mut raw) = raw else {
+            // parse_toml words the syntax error with its line and column.
+            return parse_toml(&text, path).map(|c| (c, UncertainSet::default()));
+        };
+        let set = match raw.get_mut("scene").and_then(toml::Value::as_table_mut) {
+            Some(scene) => crate::uncertain::take(scene, scene_decls()).map_err(|e| {
+                let key = match &e {
+                    Error::InvalidValue { key, .. } => format!("scene.{key}"),
+                    _ => "scene".into(),
+                };
+                let (line, column) = key_line_column(&text, &key).unwrap_or((1, 1));
+                Error::Config {
+                    path: path.to_path_buf(),
+                    line,
+                    column,
+                    message: e.to_string(),
+                }
+            })?,
+            None => UncertainSet::default(),
+        };
+        if set.is_empty() {
+            return parse_toml(&text, path).map(|c| (c, set));
+        }
+        // The nominal values stand in the text parse_toml reads, so its checks still apply.
+        let nominal = toml::to_string(&raw).expect("a table serialises");
+        parse_toml(&nominal, path).map(|c| (c, set))
+    }
+}
+
+/// The settings of `[scene]` and its aliases: where uncertain inputs of the palm scene are.
+pub(crate) fn scene_decls() -> impl Iterator<Item = &'static crate::settings::Decl> + Clone {
+    crate::settings::palm_family().filter(|d| d.section == "scene")
 }
 
 /// Largest settings or scene file read, in bytes: the committed ones are under 2 kB, and a

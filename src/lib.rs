@@ -129,6 +129,7 @@ pub mod paper;
 mod scene;
 pub mod statics;
 mod study;
+pub mod uncertain;
 
 pub use cli::main as run_cli;
 pub use config::Config;

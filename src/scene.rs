@@ -18,22 +18,22 @@ settings! {
         /// Coulomb friction coefficient at the ground contact A.
         mu_ground: f64 = 0.4, flag: Some("mu-ground"), symbol: "μ_ground",
             quantity: "ground friction coefficient", unit: "-", check: Check::AtLeast(0.0),
-            value_name: "MU";
+            value_name: "MU", uncertain: true;
         /// Coulomb friction coefficient at the palm contact B.
         mu_palm: f64 = 0.4, flag: Some("mu-palm"), symbol: "μ_palm",
             quantity: "palm friction coefficient", unit: "-", check: Check::AtLeast(0.0),
-            value_name: "MU";
+            value_name: "MU", uncertain: true;
         /// Disc radius r.
         radius_mm: f64 = 10.0, flag: Some("radius"), symbol: "r", quantity: "disc radius",
             unit: "mm", check: Check::Above(0.0);
         /// Disc mass m; 0 is a weightless disc.
         mass_kg: f64 = 1.0, flag: Some("mass"), symbol: "m", quantity: "disc mass",
-            unit: "kg", check: Check::AtLeast(0.0);
+            unit: "kg", check: Check::AtLeast(0.0), uncertain: true;
         /// Palm push F: the magnitude of the palm's force on the disc while it slides.
         ///
         /// F -> infinity is a palm driven by prescribed motion.
         force_n: f64 = 200.0, flag: Some("force"), symbol: "F", quantity: "palm push",
-            unit: "N", check: Check::Above(0.0);
+            unit: "N", check: Check::Above(0.0), uncertain: true;
         /// Gravitational acceleration g (the paper's 9806 mm/s^2).
         // 9.806, not 9.81: the paper's Adams model has 9806 mm/s^2, which keeps x_jam = 24.355 mm.
         gravity_m_s2: f64 = 9.806, flag: Some("gravity"), symbol: "g", quantity: "gravity",
@@ -76,6 +76,7 @@ pub(crate) const SCENE_ALIASES: &[Decl] = &[Decl {
     default: || "0.4".to_string(),
     sets: &["mu_ground", "mu_palm"],
     value_name: "MU",
+    uncertain: true,
 }];
 
 impl SceneParams {

@@ -156,7 +156,7 @@ fn settings(a: &AccuracyArgs) -> Result<(AccuracySettings, Option<MapCostSetting
 }
 
 pub fn run(a: &AccuracyArgs) -> Result<String> {
-    let config = a.scene.resolve(&[a.dynamics.overrides()])?;
+    let config = a.scene.resolve(&[a.dynamics.overrides()], "accuracy")?;
     let (settings, map) = settings(a)?;
     // A penetration so small that its stiffness F / delta^e overflows is refused as the
     // penetration given, not as the --stiffness it turns into.

@@ -9,6 +9,7 @@ use crate::error::Result;
 use crate::models::ModelKind;
 pub use crate::settings::flags::parse_f64;
 use crate::settings::flags::{Flags, SceneSet};
+use crate::uncertain::UncertainSet;
 
 /// Scene flags over `--config FILE`: each flag is a declared setting of `[scene]`
 /// ([`crate::settings`]), and overrides the same key of the file (or of the defaults).
@@ -26,20 +27,42 @@ pub struct SceneArgs {
 
 impl SceneArgs {
     /// Defaults, then the file, then these flags, then the `more` flags of the command (each a
-    /// table shaped like a parameter file); validated before anything is computed.
-    pub fn resolve(&self, more: &[toml::Table]) -> Result<Config> {
-        let base = match &self.config {
-            Some(path) => Config::load(path)?,
-            None => Config::default(),
+    /// table shaped like a parameter file); validated before anything is computed. A range or a
+    /// distribution is refused: `command` answers a point.
+    pub fn resolve(&self, more: &[toml::Table], command: &str) -> Result<Config> {
+        let (config, uncertain) = self.resolve_uncertain(more)?;
+        match uncertain.inputs.first() {
+            None => Ok(config),
+            Some(i) => Err(crate::error::Error::invalid(
+                i.name,
+                i.value,
+                format!(
+                    "{command} takes a single value; a range or a distribution is answered by \
+                     solve and sweep"
+                ),
+            )),
+        }
+    }
+
+    /// As [`SceneArgs::resolve`], with the ranges and distributions of `[scene]` (file, then
+    /// flags) taken out: the config holds their nominal values.
+    pub fn resolve_uncertain(&self, more: &[toml::Table]) -> Result<(Config, UncertainSet)> {
+        let (base, mut uncertain) = match &self.config {
+            Some(path) => Config::load_uncertain(path)?,
+            None => (Config::default(), UncertainSet::default()),
         };
         let mut over = self.flags.overrides();
         for m in more {
             crate::settings::merge(&mut over, m);
         }
+        if let Some(scene) = over.get_mut("scene").and_then(toml::Value::as_table_mut) {
+            let given = crate::uncertain::take(scene, crate::config::scene_decls())?;
+            uncertain.override_by(scene, given);
+        }
         let config = base.overlay(&over)?;
         config.validate()?;
         super::warn(&config.scene.unit_warnings());
-        Ok(config)
+        Ok((config, uncertain))
     }
 }
 

@@ -86,7 +86,7 @@ struct Document<'a> {
 pub fn run(a: &SolveArgs) -> Result<String> {
     let config = a
         .scene
-        .resolve(&[a.dynamics.overrides(), a.min_norm.overrides()])?;
+        .resolve(&[a.dynamics.overrides(), a.min_norm.overrides()], "solve")?;
     let kinds = a.model.models();
     if let Some(path) = &a.series {
         if !kinds.contains(&ModelKind::Dynamics) {

@@ -46,7 +46,7 @@ pub struct StabilityArgs {
 }
 
 pub fn run(a: &StabilityArgs) -> Result<String> {
-    let config = a.scene.resolve(&[a.dynamics.overrides()])?;
+    let config = a.scene.resolve(&[a.dynamics.overrides()], "stability")?;
     let all = stability::cases(&config);
     let cases = match &a.cases {
         None => all,

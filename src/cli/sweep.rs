@@ -129,7 +129,7 @@ impl AxisArg {
 
 /// The scene `sweep` draws: a sweep for one axis, a contour map of x_jam for two.
 pub fn scene(a: &SweepArgs) -> Result<Scene> {
-    let config = a.scene.resolve(&[])?;
+    let config = a.scene.resolve(&[], "sweep")?;
     let (chart, default_name, title) = match a.axes.as_slice() {
         [x] => {
             let axis = x.axis(201);

@@ -12,6 +12,7 @@ use crate::locator::{
     Verdict,
 };
 use crate::settings::flags::{Flags, LocatorSet};
+use crate::uncertain::UncertainSet;
 
 /// Flags of `vlocator`: the V's geometry, then the declared locator settings
 /// ([`crate::settings`]: frictions, disc, load, rotation).
@@ -57,8 +58,23 @@ pub enum VlocatorFormat {
 }
 
 impl VlocatorArgs {
-    /// The parameters: defaults, then the flags; validated.
+    /// The parameters: defaults, then the flags; validated. A range or a distribution is
+    /// refused (see [`VlocatorArgs::params_uncertain`]).
     pub fn params(&self) -> Result<LocatorParams> {
+        let (p, uncertain) = self.params_uncertain()?;
+        match uncertain.inputs.first() {
+            None => Ok(p),
+            Some(i) => Err(Error::invalid(
+                i.name,
+                i.value,
+                "vlocator answers a single value here; give a number",
+            )),
+        }
+    }
+
+    /// The parameters with the nominal values of the flags' ranges and distributions, and
+    /// those inputs ([`crate::uncertain`]); validated.
+    pub fn params_uncertain(&self) -> Result<(LocatorParams, UncertainSet)> {
         let mut p = LocatorParams::default();
         if let Some(g) = self.included_angle {
             if !(g.is_finite() && g > 0.0 && g < 180.0) {
@@ -83,15 +99,16 @@ impl VlocatorArgs {
             p.flank_right_deg = a2;
         }
         let over = self.locator.overrides();
-        let over = over
+        let mut over = over
             .get("locator")
             .and_then(toml::Value::as_table)
             .cloned()
             .unwrap_or_default();
+        let uncertain = crate::uncertain::take(&mut over, crate::settings::locator_family())?;
         let p: LocatorParams = crate::config::overlay(&p, &over, "locator")?;
         p.validate()?;
         super::warn(&p.unit_warnings());
-        Ok(p)
+        Ok((p, uncertain))
     }
 }
 

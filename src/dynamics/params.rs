@@ -124,6 +124,7 @@ pub(crate) const FRICTION_ALIASES: &[Decl] = &[Decl {
     kind: Kind::Derived,
     sets: &["mu_static_ground", "mu_static_palm"],
     value_name: "MU",
+    uncertain: false,
     ..Decl::BASE
 }];
 

@@ -69,25 +69,25 @@ settings! {
         /// Coulomb friction coefficient on the left flank (0.3: dry steel on steel).
         mu_left: f64 = 0.3, flag: Some("mu-left"), symbol: "μ_left",
             quantity: "left flank friction coefficient", unit: "-", check: Check::AtLeast(0.0),
-            value_name: "MU";
+            value_name: "MU", uncertain: true;
         /// Coulomb friction coefficient on the right flank.
         mu_right: f64 = 0.3, flag: Some("mu-right"), symbol: "μ_right",
             quantity: "right flank friction coefficient", unit: "-", check: Check::AtLeast(0.0),
-            value_name: "MU";
+            value_name: "MU", uncertain: true;
         /// Disc mass m.
         mass_kg: f64 = 1.0, flag: Some("mass"), symbol: "m", quantity: "disc mass", unit: "kg",
-            check: Check::Above(0.0);
+            check: Check::Above(0.0), uncertain: true;
         /// Gravitational acceleration g (capacities are given per weight, so > 0).
         gravity_m_s2: f64 = 9.806, flag: Some("gravity"), symbol: "g", quantity: "gravity",
             unit: "m/s²", check: Check::Above(0.0), value_name: "M/S^2";
         /// Magnitude P of the external force (0: no load); turn it with --load-angle.
         load_n: f64 = 0.0, flag: Some("load"), symbol: "P", quantity: "load", unit: "N",
-            check: Check::AtLeast(0.0);
+            check: Check::AtLeast(0.0), uncertain: true;
         /// Direction phi of the external force from +x, counter-clockwise.
         ///
         /// 0 pushes sideways towards the right flank, -90 straight down into the V, 90 lifts.
         load_angle_deg: f64 = 0.0, flag: Some("load-angle"), symbol: "φ",
-            quantity: "load direction", unit: "deg", check: Check::Finite;
+            quantity: "load direction", unit: "deg", check: Check::Finite, uncertain: true;
         /// Apply the force at the rim point at this angle from +x about the centre (unset: at
         /// the centre).
         ///
@@ -116,6 +116,7 @@ pub(crate) const LOCATOR_ALIASES: &[Decl] = &[Decl {
     default: || "0.3".to_string(),
     sets: &["mu_left", "mu_right"],
     value_name: "MU",
+    uncertain: true,
 }];
 
 impl LocatorParams {

@@ -8,6 +8,7 @@ use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Arg, ArgAction, ArgMatches, Command};
 
 use super::{Decl, Kind, all};
+use crate::uncertain::Uncertain;
 
 /// Which declared sections a command's flags come from, and their help heading.
 pub(crate) trait FlagSet {
@@ -83,7 +84,9 @@ impl<S: FlagSet> Flags<S> {
     pub(crate) fn overrides(&self) -> toml::Table {
         let mut table = toml::Table::new();
         for (decl, value) in &self.given {
-            let keys: Vec<&str> = if decl.sets.is_empty() {
+            // An alias given a range keeps its own key: its fields take one draw together
+            // (`crate::uncertain::take` expands it).
+            let keys: Vec<&str> = if decl.sets.is_empty() || value.is_str() {
                 vec![decl.key]
             } else {
                 decl.sets.to_vec()
@@ -104,8 +107,8 @@ impl<S: FlagSet> Flags<S> {
     }
 }
 
-/// The clap argument of a declaration.
-fn arg(d: &'static Decl, heading: Option<&'static str>) -> Arg {
+/// The clap argument of a declaration; `takers` names the flags of its set that take a range.
+fn arg(d: &'static Decl, heading: Option<&'static str>, takers: &str) -> Arg {
     let flag = d.flag.expect("only declarations with a flag");
     let default = d.default_text();
     let unit = match d.unit {
@@ -128,6 +131,11 @@ fn arg(d: &'static Decl, heading: Option<&'static str>) -> Arg {
         Kind::Choice(_) | Kind::Switch => String::new(),
         _ if unit.is_empty() => format!("; {}", d.check.describe()),
         _ => format!("; {}, in {unit}", d.check.describe()),
+    };
+    let valid = if d.uncertain {
+        format!("{valid}; or {UNCERTAIN_FORMS}")
+    } else {
+        valid
     };
     let details = d.details();
     let long = if details.is_empty() {
@@ -156,12 +164,38 @@ fn arg(d: &'static Decl, heading: Option<&'static str>) -> Arg {
                         .map_err(|_| format!("{n} is too large"))
                 })
         }
-        Kind::Real | Kind::OptionalReal | Kind::Derived | Kind::Section => a
+        // `-90:-45` is a value, not a flag: clap's negative numbers are single numbers only.
+        _ if d.uncertain => a
             .value_name(value_name(d))
-            .allow_negative_numbers(true)
-            .value_parser(|s: &str| parse_f64(s).map(toml::Value::Float)),
+            .allow_hyphen_values(true)
+            .value_parser(|s: &str| {
+                Uncertain::parse(s).map(|u| match u {
+                    Uncertain::Point { value } => toml::Value::Float(value),
+                    u => toml::Value::String(u.to_string()),
+                })
+            }),
+        Kind::Real | Kind::OptionalReal | Kind::Derived | Kind::Section => {
+            let refusal = format!(
+                "--{flag} takes a single number; a range or a distribution is \
+                                   taken by {takers}"
+            );
+            a.value_name(value_name(d))
+                .allow_negative_numbers(true)
+                .value_parser(move |s: &str| match parse_f64(s) {
+                    Ok(v) => Ok(toml::Value::Float(v)),
+                    Err(_) if Uncertain::parse(s).is_ok_and(|u| u.is_uncertain()) => {
+                        Err(refusal.clone())
+                    }
+                    Err(e) => Err(e),
+                })
+        }
     }
 }
+
+/// The forms of an uncertain value, for help texts.
+pub(crate) const UNCERTAIN_FORMS: &str = "a range LOW:HIGH (worst case over it) or a \
+    distribution uniform(LOW,HIGH), normal(MEAN,SD) (truncated at 0) or \
+    lognormal(MEDIAN,SIGMA)";
 
 /// `MM` for a length: the unit in capitals, or the declared value name.
 fn value_name(d: &Decl) -> String {
@@ -207,7 +241,15 @@ impl<S: FlagSet> clap::FromArgMatches for Flags<S> {
 
 impl<S: FlagSet> clap::Args for Flags<S> {
     fn augment_args(cmd: Command) -> Command {
-        decls::<S>().fold(cmd, |cmd, d| cmd.arg(arg(d, S::HEADING)))
+        let flags: Vec<String> = decls::<S>()
+            .filter(|d| d.uncertain)
+            .filter_map(|d| d.flag.map(|f| format!("--{f}")))
+            .collect();
+        let takers = match flags.is_empty() {
+            true => "no flag of this command".to_string(),
+            false => flags.join(", "),
+        };
+        decls::<S>().fold(cmd, |cmd, d| cmd.arg(arg(d, S::HEADING, &takers)))
     }
 
     fn augment_args_for_update(cmd: Command) -> Command {

@@ -53,6 +53,15 @@ macro_rules! settings {
             )*];
         }
 
+        impl $crate::settings::Numbers for $name {
+            fn real(&self, key: &str) -> Option<f64> {
+                $name::real(self, key)
+            }
+            fn set_real(&mut self, key: &str, v: f64) -> bool {
+                $name::set_real(self, key, v)
+            }
+        }
+
         #[allow(dead_code)]
         impl $name {
             /// Checks every field against its declared range; the error names the key and

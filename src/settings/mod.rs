@@ -131,6 +131,8 @@ pub(crate) struct Decl {
     pub sets: &'static [&'static str],
     /// The flag's value name in help, e.g. `MM`.
     pub value_name: &'static str,
+    /// Whether it takes a range or a distribution besides a number ([`crate::uncertain`]).
+    pub uncertain: bool,
 }
 
 impl Decl {
@@ -148,6 +150,7 @@ impl Decl {
         default: String::new,
         sets: &[],
         value_name: "",
+        uncertain: false,
     };
 
     /// The name an error message uses: the bare key of a family's parameters (`[scene]`, the
@@ -300,6 +303,14 @@ pub(crate) fn number_text(v: f64) -> String {
     }
 }
 
+/// A settings struct's number fields, by key: what a grid and an uncertain input set.
+pub trait Numbers {
+    /// The field `key` as a number, where it is one.
+    fn real(&self, key: &str) -> Option<f64>;
+    /// Sets the field `key` from a number; false where it is not one.
+    fn set_real(&mut self, key: &str, v: f64) -> bool;
+}
+
 /// A settings struct: its declarations, in field order.
 pub(crate) trait Declared {
     /// Every field's declaration.
@@ -308,7 +319,7 @@ pub(crate) trait Declared {
 
 /// The palm scene's family: every section of a parameter file, in the order of the key
 /// reference. Keys are unique across all of them (a test checks it).
-pub(crate) fn palm_family() -> impl Iterator<Item = &'static Decl> {
+pub(crate) fn palm_family() -> impl Iterator<Item = &'static Decl> + Clone {
     use crate::dynamics::params as d;
     let sections: [&'static [Decl]; 11] = [
         crate::scene::SCENE_ALIASES,
@@ -331,7 +342,7 @@ pub(crate) fn palm_family() -> impl Iterator<Item = &'static Decl> {
 }
 
 /// The V-locator's family: `vlocator`'s flags and the `locator` tables of its chart scenes.
-pub(crate) fn locator_family() -> impl Iterator<Item = &'static Decl> {
+pub(crate) fn locator_family() -> impl Iterator<Item = &'static Decl> + Clone {
     use crate::locator::params as l;
     l::LOCATOR_ALIASES.iter().chain(l::LocatorParams::DECLS)
 }
@@ -433,6 +444,7 @@ pub(crate) fn reference_rows(keep: impl Fn(&str) -> bool) -> String {
         let valid = match d.kind {
             Kind::Choice(c) => c.join(", "),
             Kind::Switch => "true, false".into(),
+            _ if d.uncertain => format!("{}, or a range or distribution", d.check.describe()),
             _ => d.check.describe(),
         };
         let default = match d.default_text() {

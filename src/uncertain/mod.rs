@@ -1,0 +1,355 @@
+//! Inputs known only within a range or by a distribution: a friction "0.12 to 0.3", a push
+//! "30 to 50 N".
+//!
+//! ## Syntax
+//!
+//! A value of a setting that takes uncertainty (a flag, `--set KEY=VALUE`, a scene or parameter
+//! file's string `mu = "0.12:0.3"`) is one of
+//!
+//! | written              | meaning                                                              |
+//! |----------------------|----------------------------------------------------------------------|
+//! | `0.3`                | a point: the value as before                                         |
+//! | `0.12:0.3`           | a range LOW:HIGH: every value in it is possible, none more likely    |
+//! | `uniform(0.12,0.3)`  | uniformly distributed on [LOW, HIGH]                                  |
+//! | `normal(0.2,0.03)`   | normal with mean 0.2 and standard deviation 0.03, truncated at 0      |
+//! | `lognormal(0.2,0.25)`| lognormal with median 0.2 and log standard deviation 0.25: ln X is    |
+//! |                      | normal with mean ln 0.2 and standard deviation 0.25                   |
+//!
+//! A range asks for the worst case (the answer's interval over the range); a distribution asks
+//! for probabilities and quantiles as well. Which settings take it is declared once, with the
+//! setting (`uncertain: true` in `settings!`): the frictions, the push and the mass of the palm
+//! scene, the frictions and the load of the V-locator. Every other setting refuses it.
+//!
+//! ## Validation
+//!
+//! A reversed range (`0.3:0.12`), an empty one (`0.3:0.3`: write `0.3`), a range end or a mean
+//! or median outside the setting's valid values (a negative friction), a non-positive standard
+//! deviation and non-finite numbers are refused naming the setting as written.
+//!
+//! ## The nominal value
+//!
+//! Every uncertain input also has a point, its nominal value, which the point path (charts'
+//! built-in scenes, the parameters shown) keeps: the midpoint of a range or uniform, the mean
+//! of a normal, the median of a lognormal.
+
+mod table;
+
+use std::fmt;
+
+use statrs::function::erf::{erfc, erfc_inv};
+
+use crate::error::{Error, Result};
+use crate::settings::Decl;
+pub(crate) use table::take;
+
+/// One input's uncertainty: a point, a range (worst case) or a distribution.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Uncertain {
+    /// A single value.
+    Point {
+        /// The value.
+        value: f64,
+    },
+    /// Every value in [lo, hi] possible, none more likely: the answer is an interval.
+    Range {
+        /// Low end.
+        lo: f64,
+        /// High end (> lo).
+        hi: f64,
+    },
+    /// Uniform on [lo, hi].
+    Uniform {
+        /// Low end.
+        lo: f64,
+        /// High end (> lo).
+        hi: f64,
+    },
+    /// Normal with this mean and standard deviation, truncated at 0 (a friction, a push or a
+    /// mass is never negative).
+    Normal {
+        /// Mean of the untruncated normal (> 0).
+        mean: f64,
+        /// Standard deviation of the untruncated normal (> 0).
+        sd: f64,
+    },
+    /// Lognormal: ln X normal with mean ln(median) and standard deviation sigma.
+    LogNormal {
+        /// Median (> 0).
+        median: f64,
+        /// Standard deviation of ln X (> 0).
+        sigma: f64,
+    },
+}
+
+/// The spelling of each distribution's name in the syntax, with its two parameters.
+const FORMS: &str = "a number, LOW:HIGH, uniform(LOW,HIGH), normal(MEAN,SD) or \
+                     lognormal(MEDIAN,SIGMA)";
+
+impl Uncertain {
+    /// Parses the syntax of the module docs; numbers must be finite. The range check against
+    /// the setting is [`Uncertain::check`].
+    pub fn parse(text: &str) -> std::result::Result<Uncertain, String> {
+        let t = text.trim();
+        let number = |s: &str| -> std::result::Result<f64, String> {
+            let v = crate::settings::flags::parse_f64(s)?;
+            if v.is_finite() {
+                Ok(v)
+            } else {
+                Err(format!("{} is not a finite number", s.trim()))
+            }
+        };
+        if let Some((name, rest)) = t.split_once('(') {
+            let inner = rest
+                .strip_suffix(')')
+                .ok_or_else(|| format!("{t}: a ')' is missing; write {FORMS}"))?;
+            let (a, b) = inner.split_once(',').ok_or_else(|| {
+                format!("{t}: give two numbers in the parentheses, e.g. {name}(0.2,0.03)")
+            })?;
+            let (a, b) = (number(a)?, number(b)?);
+            return match name.trim().to_ascii_lowercase().as_str() {
+                "uniform" => Ok(Uncertain::Uniform { lo: a, hi: b }),
+                "normal" => Ok(Uncertain::Normal { mean: a, sd: b }),
+                "lognormal" => Ok(Uncertain::LogNormal {
+                    median: a,
+                    sigma: b,
+                }),
+                other => Err(format!(
+                    "{t}: '{other}' is not a distribution; write {FORMS}"
+                )),
+            };
+        }
+        if let Some((a, b)) = t.split_once(':') {
+            return Ok(Uncertain::Range {
+                lo: number(a)?,
+                hi: number(b)?,
+            });
+        }
+        crate::settings::flags::parse_f64(t).map(|value| Uncertain::Point { value })
+    }
+
+    /// Whether this is more than a point.
+    pub fn is_uncertain(&self) -> bool {
+        !matches!(self, Uncertain::Point { .. })
+    }
+
+    /// Whether it has a distribution (probabilities and quantiles mean something).
+    pub fn is_distribution(&self) -> bool {
+        matches!(
+            self,
+            Uncertain::Uniform { .. } | Uncertain::Normal { .. } | Uncertain::LogNormal { .. }
+        )
+    }
+
+    /// The point the point path keeps: a range's or uniform's midpoint, a normal's mean, a
+    /// lognormal's median.
+    pub fn nominal(&self) -> f64 {
+        match *self {
+            Uncertain::Point { value } => value,
+            Uncertain::Range { lo, hi } | Uncertain::Uniform { lo, hi } => 0.5 * (lo + hi),
+            Uncertain::Normal { mean, .. } => mean,
+            Uncertain::LogNormal { median, .. } => median,
+        }
+    }
+
+    /// The ends of the box this input spans: a range's or uniform's ends, a distribution's
+    /// [`TAIL`] and 1 - [`TAIL`] quantiles, a point twice.
+    pub fn ends(&self) -> (f64, f64) {
+        match *self {
+            Uncertain::Point { value } => (value, value),
+            Uncertain::Range { lo, hi } | Uncertain::Uniform { lo, hi } => (lo, hi),
+            _ => (self.quantile(TAIL), self.quantile(1.0 - TAIL)),
+        }
+    }
+
+    /// The value below which a fraction `p` in [0, 1] of the input lies (the inverse CDF); a
+    /// range is read as uniform.
+    pub fn quantile(&self, p: f64) -> f64 {
+        match *self {
+            Uncertain::Point { value } => value,
+            Uncertain::Range { lo, hi } | Uncertain::Uniform { lo, hi } => lo + p * (hi - lo),
+            Uncertain::Normal { mean, sd } => {
+                // Truncated at 0: the untruncated CDF's share above 0 is rescaled to [0, 1].
+                let below = std_normal_cdf(-mean / sd);
+                (mean + sd * std_normal_quantile(below + p * (1.0 - below))).max(0.0)
+            }
+            Uncertain::LogNormal { median, sigma } => {
+                median * (sigma * std_normal_quantile(p)).exp()
+            }
+        }
+    }
+
+    /// The fraction of the input at or below `x` (the CDF); a range is read as uniform.
+    pub fn cdf(&self, x: f64) -> f64 {
+        match *self {
+            Uncertain::Point { value } => f64::from(u8::from(x >= value)),
+            Uncertain::Range { lo, hi } | Uncertain::Uniform { lo, hi } => {
+                ((x - lo) / (hi - lo)).clamp(0.0, 1.0)
+            }
+            Uncertain::Normal { mean, sd } => {
+                if x <= 0.0 {
+                    return 0.0;
+                }
+                let below = std_normal_cdf(-mean / sd);
+                ((std_normal_cdf((x - mean) / sd) - below) / (1.0 - below)).clamp(0.0, 1.0)
+            }
+            Uncertain::LogNormal { median, sigma } => {
+                if x <= 0.0 {
+                    return 0.0;
+                }
+                std_normal_cdf((x / median).ln() / sigma)
+            }
+        }
+    }
+
+    /// Checks it against `decl`'s valid values; the error names the setting (`decl.key`, the
+    /// CLI adds its flag) and quotes the value as written.
+    pub(crate) fn check(&self, decl: &Decl) -> Result<()> {
+        let refuse = |why: String| Err(Error::invalid(decl.key, self, why));
+        let must = |what: &str, v: f64| -> Result<()> {
+            match decl.check.refuse(v) {
+                None => Ok(()),
+                Some(why) => refuse(format!("{what} {v} {why}")),
+            }
+        };
+        match *self {
+            Uncertain::Point { value } => decl.check_real(value),
+            Uncertain::Range { lo, hi } | Uncertain::Uniform { lo, hi } => {
+                if lo > hi {
+                    return refuse(format!(
+                        "the range is reversed ({lo} > {hi}); write LOW:HIGH, e.g. {hi}:{lo}"
+                    ));
+                }
+                if lo == hi {
+                    return refuse(format!("the range is empty; for a single value write {lo}"));
+                }
+                must("its low end", lo)?;
+                must("its high end", hi)
+            }
+            Uncertain::Normal { .. } | Uncertain::LogNormal { .. }
+                if decl.check.refuse(-1.0).is_none() =>
+            {
+                refuse(format!(
+                    "{} takes negative values, and normal and lognormal inputs are truncated \
+                     at 0; give a range LOW:HIGH or uniform(LOW,HIGH)",
+                    decl.key
+                ))
+            }
+            Uncertain::Normal { mean, sd }
+            | Uncertain::LogNormal {
+                median: mean,
+                sigma: sd,
+            } => {
+                let (centre, spread) = match self {
+                    Uncertain::Normal { .. } => ("its mean", "its standard deviation"),
+                    _ => ("its median", "its log standard deviation sigma"),
+                };
+                if sd <= 0.0 {
+                    return refuse(format!("{spread} must be > 0 (it is {sd})"));
+                }
+                if mean <= 0.0 {
+                    return refuse(format!(
+                        "{centre} must be > 0 (it is {mean}): the distribution lives on \
+                         positive values"
+                    ));
+                }
+                must(centre, mean)
+            }
+        }
+    }
+}
+
+/// The tail probability cut off at each end when a distribution stands for a box (0.1 %): the
+/// interval answer of a normal or lognormal input covers its 0.1 % to 99.9 % quantiles.
+pub const TAIL: f64 = 1e-3;
+
+impl fmt::Display for Uncertain {
+    /// As it is written: `0.12:0.3`, `normal(0.2,0.03)`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Uncertain::Point { value } => write!(f, "{value}"),
+            Uncertain::Range { lo, hi } => write!(f, "{lo}:{hi}"),
+            Uncertain::Uniform { lo, hi } => write!(f, "uniform({lo},{hi})"),
+            Uncertain::Normal { mean, sd } => write!(f, "normal({mean},{sd})"),
+            Uncertain::LogNormal { median, sigma } => write!(f, "lognormal({median},{sigma})"),
+        }
+    }
+}
+
+/// The standard normal CDF, Phi(z) = erfc(-z / sqrt 2) / 2.
+fn std_normal_cdf(z: f64) -> f64 {
+    0.5 * erfc(-z / std::f64::consts::SQRT_2)
+}
+
+/// The standard normal quantile, Phi^-1(p) = -sqrt 2 erfc^-1(2 p).
+fn std_normal_quantile(p: f64) -> f64 {
+    -std::f64::consts::SQRT_2 * erfc_inv(2.0 * p)
+}
+
+/// One uncertain input of a scene: the settings it sets (one draw for all of them: `mu` sets
+/// both frictions to the same value), the name it was written with, and its uncertainty.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct UncertainInput {
+    /// The setting as the user wrote it (`mu`, `force_n`); the CLI adds its flag.
+    pub name: &'static str,
+    /// The fields it sets (both frictions for `mu`).
+    #[serde(skip)]
+    pub keys: Vec<&'static str>,
+    /// Its uncertainty.
+    #[serde(flatten)]
+    pub value: Uncertain,
+}
+
+/// The uncertain inputs of one scene, in declaration order; empty for a point scene.
+#[derive(Debug, Clone, Default, PartialEq, serde::Serialize)]
+#[serde(transparent)]
+pub struct UncertainSet {
+    /// Each input.
+    pub inputs: Vec<UncertainInput>,
+}
+
+impl UncertainSet {
+    /// No input is uncertain: the point path.
+    pub fn is_empty(&self) -> bool {
+        self.inputs.is_empty()
+    }
+
+    /// `params` with input `i` set to `values[i]` for every i (its keys all to the same value).
+    pub fn apply<P: crate::settings::Numbers + Copy>(&self, params: &P, values: &[f64]) -> P {
+        let mut p = *params;
+        for (input, &v) in self.inputs.iter().zip(values) {
+            for k in &input.keys {
+                let set = p.set_real(k, v);
+                debug_assert!(set, "{k} is a number field");
+            }
+        }
+        p
+    }
+
+    /// This set (from a file) with `later` (from flags) over it: a key that `given` (the later
+    /// overrides, aliases not yet expanded) sets, as a point or not, leaves this set's inputs.
+    pub(crate) fn override_by(&mut self, given: &toml::Table, later: UncertainSet) {
+        let mut keys: Vec<&str> = given.keys().map(String::as_str).collect();
+        for d in crate::settings::all().filter(|d| given.contains_key(d.key)) {
+            keys.extend(d.sets.iter().copied());
+        }
+        for input in &mut self.inputs {
+            input.keys.retain(|k| !keys.contains(k));
+        }
+        self.inputs.retain(|i| !i.keys.is_empty());
+        self.inputs.extend(later.inputs);
+    }
+
+    /// `name = value` for each input, joined by `, `: how the text answers show them.
+    pub fn describe(&self) -> String {
+        let parts: Vec<String> = self
+            .inputs
+            .iter()
+            .map(|i| format!("{} = {}", i.name, i.value))
+            .collect();
+        parts.join(", ")
+    }
+}
+
+#[cfg(test)]
+mod tests;
