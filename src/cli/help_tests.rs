@@ -95,7 +95,7 @@ fn check_vlocator_geometry(long: &str, value: &str) -> Result<(), String> {
     let Command::Vlocator(a) = cli.command else {
         return Err("not vlocator".into());
     };
-    let p = a.params().map_err(|e| e.to_string())?;
+    let (p, _) = a.params_uncertain().map_err(|e| e.to_string())?;
     if p == LocatorParams::default() {
         Ok(())
     } else {

@@ -18,6 +18,7 @@ mod stability;
 mod sweep;
 mod table;
 mod vlocator;
+mod vlocator_robust;
 
 use std::io::Write;
 
@@ -111,6 +112,12 @@ pub enum Command {
     /// rim point. Prints whether the V holds it (wedged, slips, lifts_off or held), the
     /// minimum-norm flank forces (N), the largest load P_max (N) held in that direction and
     /// the included angle that best survives errors in load and friction.
+    ///
+    /// With a range (--mu 0.12:0.3, --load 20:30, --load-angle -10:10) it designs the V over
+    /// the whole box instead: the window of included angles that holds every load without
+    /// self-locking at any friction of the range, the most robust angle in it, or, when no
+    /// single V works, what would open a window; and the verdict of your V (if given) and of
+    /// the standard 60/90/120 deg V-blocks over the box.
     Vlocator(vlocator::VlocatorArgs),
     /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
     ///

@@ -151,8 +151,8 @@ use optimum::{balanced_rho, rho_lock};
 pub use params::{Flank, LocatorParams, Rotation};
 pub use reference::{ReferenceCapacity, capacity_clarabel};
 pub use robust::{
-    ARC_STEP_DEG, DroppedLoad, Opening, RobustAngle, RobustBox, RobustDesign, SCAN_STEP_DEG,
-    box_rho, holds_sector, robust_design,
+    ARC_STEP_DEG, BoxVerdict, DroppedLoad, Opening, RobustAngle, RobustBox, RobustDesign,
+    SCAN_STEP_DEG, box_rho, holds_sector, robust_design, verdict_over_box,
 };
 pub use solve::{FlankForce, LocatorSolution, Verdict, solve};
 #[cfg(test)]

@@ -188,6 +188,34 @@ pub fn holds_sector(
     Ok(())
 }
 
+/// What one V does over a whole box.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "status", rename_all = "snake_case")]
+pub enum BoxVerdict {
+    /// Holds every load at every friction and never locks.
+    Works,
+    /// Self-locks at the box's top friction `mu`.
+    Locks {
+        /// The friction, mu_hi.
+        mu: f64,
+    },
+    /// Drops a load of the box at its lowest friction.
+    Drops {
+        /// The load it drops.
+        load: DroppedLoad,
+    },
+}
+
+/// What the V of `gamma_deg` (`base` turned to it) does over the box: locking at mu_hi,
+/// then every load held at mu_lo (module docs, items 1 to 3).
+pub fn verdict_over_box(base: &LocatorParams, b: &RobustBox, gamma_deg: f64) -> BoxVerdict {
+    match works(base, b, gamma_deg) {
+        Ok(()) => BoxVerdict::Works,
+        Err(None) => BoxVerdict::Locks { mu: b.mu.1 },
+        Err(Some(load)) => BoxVerdict::Drops { load },
+    }
+}
+
 /// Whether the V of `gamma_deg` works over the box: no locking at mu_hi, every load held at
 /// mu_lo.
 fn works(base: &LocatorParams, b: &RobustBox, gamma_deg: f64) -> Result<(), Option<DroppedLoad>> {
