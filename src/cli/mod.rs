@@ -3,6 +3,7 @@
 
 mod accuracy;
 mod args;
+mod design;
 mod dynamics;
 mod guidance;
 #[cfg(test)]
@@ -58,6 +59,16 @@ pub enum Command {
     /// disc position x_jam (mm, hinge to contact) where that happens, for each requested model.
     /// Parameters come from the defaults (the paper's), then --config FILE, then the flags.
     Solve(solve::SolveArgs),
+    /// Inverse questions over friction, push and mass ranges: the least push, the largest
+    /// friction, the palm length.
+    ///
+    /// For a target position --x-target MM: the least push that carries the disc there without
+    /// jamming at any friction of the range (the closed form at the corner that jams
+    /// earliest: frictions and mass high, push low); the largest friction the push allows;
+    /// and the palm length that keeps the latest jam (frictions and mass low, push high) on
+    /// the palm. Each closed form is checked by the nonsmooth simulation (force drive). A
+    /// target no push reaches is an answer, not an error.
+    Design(design::DesignArgs),
     /// Recompute the paper's Table 1 beside the printed numbers.
     ///
     /// The paper's parameters (m = 1 kg, r = 10 mm, F = 200 N, g = 9.806 m/s^2) for
@@ -169,6 +180,7 @@ pub fn main() -> i32 {
     }
     let result: crate::error::Result<Done> = match &cli.command {
         Command::Solve(a) => solve::run(a).map(Done::from),
+        Command::Design(a) => design::run(a).map(Done::from),
         Command::Table(a) => table::run(a).map(Done::from),
         Command::Render(a) => render::run(a),
         Command::Scenes(a) => render::list(a).map(Done::from),
