@@ -13,6 +13,10 @@ fn call(sub: &str) -> Vec<String> {
     if sub == "sweep" {
         v.push("mu=0.1:0.5".into());
     }
+    // design's one required flag.
+    if sub == "design" {
+        v.push("--x-target=40".into());
+    }
     v
 }
 
