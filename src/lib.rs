@@ -118,6 +118,7 @@ pub mod charts;
 mod cli;
 mod config;
 mod csv_out;
+pub mod design;
 pub mod dynamics;
 mod error;
 pub mod grid;

@@ -138,3 +138,82 @@ fn help_names_units_and_defaults() {
         assert!(t.contains(s), "{s}: {t}");
     }
 }
+
+/// The issue-19 V-block in one command: a 30 N sideways load over mu 0.12 to 0.3 on the
+/// 0.4 kg shaft. It took about 8 runs of trial and error and the tool never said that no single
+/// V works; now it says so, names the load the narrowest unlocked V drops and what would open a
+/// window (mu_hi <= W / P = 0.1307, or P <= W / mu_hi = 13.07 N).
+#[test]
+fn robust_v_block_says_no_single_v_works_and_what_opens_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = [
+        "vlocator", "--mu", "0.12:0.3", "--load", "30", "--mass", "0.4",
+    ];
+    let out = stdout(&jamchart(dir.path(), &args));
+    assert!(out.contains("no single V works over this range"), "{out}");
+    assert!(out.contains("up to 0.1307"), "{out}");
+    assert!(out.contains("loads up to 13.075 N"), "{out}");
+    let mut json_args = args.to_vec();
+    json_args.extend(["--format", "json"]);
+    let v = json(&jamchart(dir.path(), &json_args));
+    assert_eq!(v["design"]["windows"].as_array().unwrap().len(), 0);
+    let w = 0.4 * 9.806;
+    let mu_max = v["design"]["opening"]["mu_hi_max"].as_f64().unwrap();
+    assert!((mu_max - w / 30.0).abs() < 1e-9, "{mu_max}");
+    for s in v["standard_v_blocks"].as_array().unwrap() {
+        assert_eq!(s["verdict"]["status"], "drops");
+    }
+}
+
+/// A window over a range: its ends are the closed form's, 2 atan mu_hi and 2 atan(W / P) for a
+/// sideways load, and the robust angle 2 atan sqrt(mu_hi W / P).
+#[test]
+fn robust_v_block_window_is_the_closed_forms() {
+    let dir = tempfile::tempdir().unwrap();
+    let v = json(&jamchart(
+        dir.path(),
+        &[
+            "vlocator", "--mu", "0.12:0.3", "--load", "5", "--format", "json",
+        ],
+    ));
+    let win = &v["design"]["windows"][0];
+    let deg = |x: f64| 2.0 * x.atan().to_degrees();
+    assert!((win[0].as_f64().unwrap() - deg(0.3)).abs() < 1e-7, "{win}");
+    assert!(
+        (win[1].as_f64().unwrap() - deg(9.806 / 5.0)).abs() < 1e-7,
+        "{win}"
+    );
+    let r = v["design"]["robust"]["included_angle_deg"]
+        .as_f64()
+        .unwrap();
+    assert!(
+        (r - deg((0.3 * 9.806 / 5.0_f64).sqrt())).abs() < 1e-7,
+        "{r}"
+    );
+}
+
+/// Bad ranges exit 2 naming the flag: reversed, a distribution (the robust V-block holds a
+/// range, it does not weigh one), and an uncertain mass, which it does not search.
+#[test]
+fn robust_v_block_refuses_bad_ranges_naming_the_flag() {
+    let dir = tempfile::tempdir().unwrap();
+    for (args, want) in [
+        (vec!["--mu", "0.3:0.12", "--load", "30"], "--mu"),
+        (vec!["--mu", "normal(0.2,0.03)", "--load", "30"], "--mu"),
+        (vec!["--mu", "0.1:0.2", "--mass", "0.1:1"], "--mass"),
+        (
+            vec!["--mu", "0.1:0.2", "--load-angle", "-200:200"],
+            "--load-angle",
+        ),
+    ] {
+        let mut all = vec!["vlocator"];
+        all.extend(args);
+        let out = jamchart(dir.path(), &all);
+        assert_eq!(out.status.code(), Some(2), "{all:?}");
+        let err = stderr(&out);
+        assert!(
+            err.starts_with("jamchart: ") && err.contains(want),
+            "{all:?}: {err}"
+        );
+    }
+}

@@ -359,7 +359,7 @@ mod tests {
     /// while the charts show a V-block: they list the V-block's own.
     #[test]
     fn v_block_sections_show_the_v_blocks_parameters() {
-        for name in ["vlocator-capacity", "vlocator-optimum"] {
+        for name in ["vlocator-capacity", "vlocator-optimum", "vlocator-robust"] {
             let scene = built_in(name);
             let html = index_html(&[entry(&scene)], None, &[]);
             let want = scene.chart.locator().unwrap();

@@ -19,7 +19,7 @@ use super::models::Models;
 use super::spec::Scene;
 use super::{
     DataFile, contour_map, convergence, jam_map, stability, sweep, time_series, universal,
-    vlocator_capacity, vlocator_optimum, work_precision,
+    vlocator_capacity, vlocator_optimum, vlocator_robust, work_precision,
 };
 use crate::config::read_section;
 use crate::error::Result;
@@ -238,6 +238,8 @@ chart_kinds! {
     VlocatorCapacity("vlocator_capacity", "json", vlocator_capacity::VlocatorCapacitySpec => vlocator_capacity::VlocatorCapacity),
     /// Optimum included angle of a V-locator against load direction and load.
     VlocatorOptimum("vlocator_optimum", "json", vlocator_optimum::VlocatorOptimumSpec => vlocator_optimum::VlocatorOptimum),
+    /// The included-angle window of a V-block over friction and load ranges.
+    VlocatorRobust("vlocator_robust", "csv", vlocator_robust::VlocatorRobustSpec => vlocator_robust::VlocatorRobust),
     /// The stability matrix: case by method, coloured by class.
     Stability("stability", "json", stability::StabilitySpec => stability::Stability),
 }
@@ -249,6 +251,7 @@ impl ChartSpec {
         match self {
             ChartSpec::VlocatorCapacity(s) => Some(&s.locator),
             ChartSpec::VlocatorOptimum(s) => Some(&s.locator),
+            ChartSpec::VlocatorRobust(s) => Some(&s.locator),
             _ => None,
         }
     }

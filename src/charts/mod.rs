@@ -11,9 +11,9 @@
 //! `contour_map` (Fig. 7c), `universal` (theta_jam and x_jam / r over mu and F / (m g), for any
 //! part), `convergence` (Fig. 4), `time_series` (Fig. 5),
 //! `work_precision` (the accuracy study), `stability` (the stability matrix),
-//! `vlocator_capacity` and `vlocator_optimum` (V-type locators, [`crate::locator`]);
-//! `error_time` draws `jamchart accuracy`'s wall-time chart, which is not a scene. The last
-//! three x-y kinds draw through `xy`, stacked x-y
+//! `vlocator_capacity`, `vlocator_optimum` and `vlocator_robust` (V-type locators,
+//! [`crate::locator`]); `error_time` draws `jamchart accuracy`'s wall-time chart, which is not
+//! a scene. The x-y kinds draw through `xy`, stacked x-y
 //! panels. Min-norm programs and simulations are called through `models::Models`, so a test
 //! can count them: a scene computes only what it draws.
 //!
@@ -70,6 +70,7 @@ pub(crate) mod typeset;
 pub(crate) mod universal;
 pub(crate) mod vlocator_capacity;
 pub(crate) mod vlocator_optimum;
+pub(crate) mod vlocator_robust;
 pub(crate) mod work_precision;
 pub(crate) mod xy;
 
@@ -96,7 +97,7 @@ pub use spec::{Scene, SceneSource, load_scene, scene_names};
 /// chart do (a drawing, font, encoder or scene change), so a user whose own charts' hashes
 /// changed can tell whether jamchart's drawing did. `tests/chart_hashes.rs` fails until it is
 /// set to the manifest's hash after a re-bless (`sha256sum charts/SHA256SUMS | cut -c1-12`).
-pub const CHART_FORMAT: &str = "d9e072f85923";
+pub const CHART_FORMAT: &str = "cb5fff9ace9a";
 
 /// Which pictures to produce.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

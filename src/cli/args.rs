@@ -83,6 +83,7 @@ pub fn flag_for_key(key: &str) -> Option<String> {
         "max_steps" => "--max-steps",
         "cells_per_axis" => "--map-cells",
         "cases" => "--cases",
+        "x_target_mm" => "--x-target",
         "runs" => "--runs",
         "samples" => "--samples",
         "quantiles" => "--quantiles",

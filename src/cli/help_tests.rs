@@ -13,6 +13,10 @@ fn call(sub: &str) -> Vec<String> {
     if sub == "sweep" {
         v.push("mu=0.1:0.5".into());
     }
+    // design's one required flag.
+    if sub == "design" {
+        v.push("--x-target=40".into());
+    }
     v
 }
 
@@ -95,7 +99,7 @@ fn check_vlocator_geometry(long: &str, value: &str) -> Result<(), String> {
     let Command::Vlocator(a) = cli.command else {
         return Err("not vlocator".into());
     };
-    let p = a.params().map_err(|e| e.to_string())?;
+    let (p, _) = a.params_uncertain().map_err(|e| e.to_string())?;
     if p == LocatorParams::default() {
         Ok(())
     } else {

@@ -3,6 +3,7 @@
 
 mod accuracy;
 mod args;
+mod design;
 mod dynamics;
 mod guidance;
 #[cfg(test)]
@@ -21,6 +22,7 @@ mod sweep;
 mod table;
 mod threads;
 mod vlocator;
+mod vlocator_robust;
 
 use std::io::Write;
 
@@ -60,6 +62,16 @@ pub enum Command {
     /// disc position x_jam (mm, hinge to contact) where that happens, for each requested model.
     /// Parameters come from the defaults (the paper's), then --config FILE, then the flags.
     Solve(solve::SolveArgs),
+    /// Inverse questions over friction, push and mass ranges: the least push, the largest
+    /// friction, the palm length.
+    ///
+    /// For a target position --x-target MM: the least push that carries the disc there without
+    /// jamming at any friction of the range (the closed form at the corner that jams
+    /// earliest: frictions and mass high, push low); the largest friction the push allows;
+    /// and the palm length that keeps the latest jam (frictions and mass low, push high) on
+    /// the palm. Each closed form is checked by the nonsmooth simulation (force drive). A
+    /// target no push reaches is an answer, not an error.
+    Design(design::DesignArgs),
     /// Recompute the paper's Table 1 beside the printed numbers.
     ///
     /// The paper's parameters (m = 1 kg, r = 10 mm, F = 200 N, g = 9.806 m/s^2) for
@@ -114,6 +126,12 @@ pub enum Command {
     /// rim point. Prints whether the V holds it (wedged, slips, lifts_off or held), the
     /// minimum-norm flank forces (N), the largest load P_max (N) held in that direction and
     /// the included angle that best survives errors in load and friction.
+    ///
+    /// With a range (--mu 0.12:0.3, --load 20:30, --load-angle -10:10) it designs the V over
+    /// the whole box instead: the window of included angles that holds every load without
+    /// self-locking at any friction of the range, the most robust angle in it, or, when no
+    /// single V works, what would open a window; and the verdict of your V (if given) and of
+    /// the standard 60/90/120 deg V-blocks over the box.
     Vlocator(vlocator::VlocatorArgs),
     /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
     ///
@@ -172,6 +190,7 @@ pub fn main() -> i32 {
     };
     let result: crate::error::Result<Done> = pool.run(|| match &cli.command {
         Command::Solve(a) => solve::run(a).map(Done::from),
+        Command::Design(a) => design::run(a).map(Done::from),
         Command::Table(a) => table::run(a).map(Done::from),
         Command::Render(a) => render::run(a),
         Command::Scenes(a) => render::list(a).map(Done::from),

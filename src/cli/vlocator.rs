@@ -58,20 +58,6 @@ pub enum VlocatorFormat {
 }
 
 impl VlocatorArgs {
-    /// The parameters: defaults, then the flags; validated. A range or a distribution is
-    /// refused (see [`VlocatorArgs::params_uncertain`]).
-    pub fn params(&self) -> Result<LocatorParams> {
-        let (p, uncertain) = self.params_uncertain()?;
-        match uncertain.inputs.first() {
-            None => Ok(p),
-            Some(i) => Err(Error::invalid(
-                i.name,
-                i.value,
-                "vlocator answers a single value here; give a number",
-            )),
-        }
-    }
-
     /// The parameters with the nominal values of the flags' ranges and distributions, and
     /// those inputs ([`crate::uncertain`]); validated.
     pub fn params_uncertain(&self) -> Result<(LocatorParams, UncertainSet)> {
@@ -142,7 +128,12 @@ struct Report<'a> {
 
 /// Runs `vlocator`: the text or JSON answer.
 pub fn run(args: &VlocatorArgs) -> Result<String> {
-    let p = args.params()?;
+    let (p, uncertain) = args.params_uncertain()?;
+    if !uncertain.is_empty() {
+        let given = (args.included_angle.is_some() || args.flank_angles.is_some())
+            .then(|| p.included_angle_deg());
+        return super::vlocator_robust::run(&p, &uncertain, given, args.format);
+    }
     let s = locator::solve(&p)?;
     Ok(match args.format {
         VlocatorFormat::Json => {
@@ -168,10 +159,7 @@ pub fn run(args: &VlocatorArgs) -> Result<String> {
 fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
     let mut out = String::new();
     let w = p.weight_n();
-    let at = match p.load_at_rim_deg {
-        Some(psi) => format!("at the rim point {psi} deg"),
-        None => "at the centre".to_string(),
-    };
+    let at = load_point(p);
     let _ = writeln!(
         out,
         "V of {:.3} deg (left flank {} deg, right flank {} deg), mu {} left / {} right, {} rotation",
@@ -300,6 +288,14 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
         );
     }
     out
+}
+
+/// Where the load acts: "at the centre" or "at the rim point 30 deg".
+pub(super) fn load_point(p: &LocatorParams) -> String {
+    match p.load_at_rim_deg {
+        Some(psi) => format!("at the rim point {psi} deg"),
+        None => "at the centre".to_string(),
+    }
 }
 
 /// Roundoff below the printed digits shows as 0.000, not -0.000.

@@ -109,6 +109,13 @@
 //!
 //! so a 90 deg V is optimal when P / W = mu, and rho* = sqrt(W / (mu P)) there.
 //!
+//! # Under uncertain friction and load
+//!
+//! [`robust_design`] answers the V-block question over a box of frictions, load magnitudes
+//! and directions: the window of included angles that hold every load without locking at any
+//! friction, the most robust angle in it, and what would open an empty window. What is
+//! monotone (so which points of the box decide) is derived in [`robust`]'s docs.
+//!
 //! # The palm scene is a V
 //!
 //! The paper's palm (hinge at the vertex) and ground form a V with a1 = 180 - theta (the
@@ -125,6 +132,9 @@ mod exact;
 mod optimum;
 pub(crate) mod params;
 mod reference;
+pub mod robust;
+#[cfg(test)]
+mod robust_tests;
 mod solve;
 pub mod symmetric;
 #[cfg(test)]
@@ -141,6 +151,10 @@ pub use optimum::{Optimum, optimum};
 use optimum::{balanced_rho, rho_lock};
 pub use params::{Flank, LocatorParams, Rotation};
 pub use reference::{ReferenceCapacity, capacity_clarabel};
+pub use robust::{
+    ARC_STEP_DEG, BoxVerdict, DroppedLoad, Opening, RobustAngle, RobustBox, RobustDesign,
+    SCAN_STEP_DEG, box_rho, holds_sector, robust_design, verdict_over_box,
+};
 pub use solve::{FlankForce, LocatorSolution, Verdict, solve};
 #[cfg(test)]
 use solve::{contact_problem, min_norm_forces};

@@ -1,0 +1,316 @@
+//! Chart kind `vlocator_robust`: the window of included angles of a V-block that holds every
+//! load of a range without self-locking at any friction of a range, against the width of the
+//! friction range (centred on a nominal friction), with the most robust angle and the
+//! standard 60/90/120 deg V-blocks marked ([`crate::locator::robust`]).
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+use super::DataFile;
+use super::axes::{DrawResult, PlotAxis};
+use super::models::Models;
+use super::spec::Scene;
+use super::style::LineKind;
+use super::vlocator_capacity::{STANDARD_V_DEG, locator_subtitle};
+use super::xy::{Curve, CurveStyle, Figure, Panel, Tag};
+use crate::csv_out::{Dec, dec, to_csv};
+use crate::error::{Error, Result};
+use crate::grid::AxisScale;
+use crate::locator::{LocatorParams, RobustBox, RobustDesign, robust_design};
+
+/// `[chart]` keys of `kind = "vlocator_robust"`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VlocatorRobustSpec {
+    /// The V's tilt, rotation, load point and weight (default: [`LocatorParams::default`]);
+    /// the included angle is the unknown, the frictions and the load come from the keys below.
+    #[serde(default)]
+    pub locator: LocatorParams,
+    /// The nominal friction mu0 the ranges are centred on (both flanks).
+    pub mu_center: f64,
+    /// The widest friction range drawn: [mu0 - w/2, mu0 + w/2] up to w = `width_max`
+    /// (<= 2 mu0, so the range stays >= 0).
+    pub width_max: f64,
+    /// Range widths drawn, from 0 to `width_max` (2 to 201).
+    pub count: usize,
+    /// The load magnitude range [lo, hi] in N.
+    pub load_n: [f64; 2],
+    /// The load direction range [lo, hi] in deg from +x (0 sideways, 90 lifts).
+    pub load_angle_deg: [f64; 2],
+}
+
+/// Most range widths a chart draws: each is a robust design (a few ms with a direction range).
+const MAX_COUNT: usize = 201;
+
+impl super::kinds::Kind for VlocatorRobustSpec {
+    type Chart = VlocatorRobust;
+
+    /// The V-block's parameters are `[chart.locator]`'s, not the palm scene's.
+    fn takes_scene(&self) -> bool {
+        false
+    }
+
+    fn validate(&self, _scene: &Scene) -> Result<()> {
+        self.locator.validate()?;
+        let (c, w) = (self.mu_center, self.width_max);
+        if !(c.is_finite() && c > 0.0) {
+            return Err(Error::invalid(
+                "chart.mu_center",
+                c,
+                "the nominal friction is a finite number > 0",
+            ));
+        }
+        if !(w.is_finite() && w > 0.0 && w <= 2.0 * c) {
+            return Err(Error::invalid(
+                "chart.width_max",
+                w,
+                format!("give a width in (0, 2 mu_center] = (0, {}]", 2.0 * c),
+            ));
+        }
+        if !(2..=MAX_COUNT).contains(&self.count) {
+            return Err(Error::invalid(
+                "chart.count",
+                self.count,
+                format!("draw 2 to {MAX_COUNT} widths"),
+            ));
+        }
+        let [p0, p1] = self.load_n;
+        if !(p0.is_finite() && p1.is_finite() && 0.0 <= p0 && p0 <= p1) {
+            return Err(Error::invalid(
+                "chart.load_n",
+                format!("[{p0}, {p1}]"),
+                "give [lo, hi] in N with 0 <= lo <= hi",
+            ));
+        }
+        let [a0, a1] = self.load_angle_deg;
+        if !(a0.is_finite() && a1.is_finite() && a0 <= a1 && a1 - a0 <= 360.0) {
+            return Err(Error::invalid(
+                "chart.load_angle_deg",
+                format!("[{a0}, {a1}]"),
+                "give [lo, hi] in deg with lo <= hi, at most 360 apart",
+            ));
+        }
+        Ok(())
+    }
+
+    fn check_size(&self, _scene: &Scene) -> Result<()> {
+        // `validate` caps the count; the memory is a few numbers per width.
+        Ok(())
+    }
+
+    /// One robust design per width, in parallel, in index order.
+    fn compute(&self, scene: &Scene, _models: &dyn Models) -> Result<VlocatorRobust> {
+        let widths: Vec<f64> = (0..self.count)
+            .map(|k| self.width_max * k as f64 / (self.count - 1) as f64)
+            .collect();
+        let designs = widths
+            .par_iter()
+            .map(|&w| robust_design(&self.locator, &self.box_of(w)))
+            .collect();
+        Ok(VlocatorRobust {
+            spec: self.clone(),
+            title: scene.title.clone(),
+            widths,
+            designs,
+        })
+    }
+}
+
+impl VlocatorRobustSpec {
+    /// The box at friction-range width `w`.
+    fn box_of(&self, w: f64) -> RobustBox {
+        let c = self.mu_center;
+        RobustBox {
+            mu: ((c - 0.5 * w).max(0.0), c + 0.5 * w),
+            load_n: (self.load_n[0], self.load_n[1]),
+            load_angle_deg: (self.load_angle_deg[0], self.load_angle_deg[1]),
+        }
+    }
+}
+
+/// The computed chart.
+#[derive(Debug, Clone)]
+pub struct VlocatorRobust {
+    spec: VlocatorRobustSpec,
+    title: String,
+    widths: Vec<f64>,
+    designs: Vec<RobustDesign>,
+}
+
+/// A CSV row: one friction-range width.
+#[derive(Serialize)]
+struct Row {
+    mu_width: Dec,
+    mu_lo: Dec,
+    mu_hi: Dec,
+    lock_bound_deg: Dec,
+    window_lo_deg: Option<Dec>,
+    window_hi_deg: Option<Dec>,
+    robust_deg: Option<Dec>,
+    safety_factor: Option<Dec>,
+}
+
+impl VlocatorRobust {
+    /// The data behind the chart as CSV, one row per width; empty window cells where no V
+    /// works.
+    pub fn data(&self, _scene: &Scene) -> DataFile {
+        let rows = self.widths.iter().zip(&self.designs).map(|(&w, d)| {
+            let b = self.spec.box_of(w);
+            let win = d.windows.first();
+            Row {
+                mu_width: Dec(w),
+                mu_lo: Dec(b.mu.0),
+                mu_hi: Dec(b.mu.1),
+                lock_bound_deg: Dec(d.lock_bound_deg),
+                window_lo_deg: dec(win.map(|w| w.0)),
+                window_hi_deg: dec(win.map(|w| w.1)),
+                robust_deg: dec(d.robust.map(|r| r.included_angle_deg)),
+                safety_factor: dec(d.robust.map(|r| r.safety_factor).filter(|r| r.is_finite())),
+            }
+        });
+        DataFile::csv(to_csv(rows))
+    }
+
+    /// Draws the panel.
+    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+        self.figure().draw(root)
+    }
+
+    fn figure(&self) -> Figure {
+        let s = &self.spec;
+        let x = PlotAxis::new(
+            0.0,
+            s.width_max,
+            AxisScale::Linear,
+            format!(
+                "width w of the friction range (-): μ from {} − w/2 to {} + w/2, both flanks",
+                s.mu_center, s.mu_center
+            ),
+        );
+        let y = PlotAxis::new(0.0, 180.0, AxisScale::Linear, "included angle γ (deg)");
+        let mut curves = Vec::new();
+        // The window as vertical bars, one per width: a band without a fill style.
+        for (&w, d) in self.widths.iter().zip(&self.designs) {
+            for &(lo, hi) in &d.windows {
+                curves.push(Curve {
+                    label: "window: holds every load, never locks".into(),
+                    style: CurveStyle::Line(LineKind::Solid),
+                    points: vec![(w, lo), (w, hi)],
+                });
+            }
+        }
+        let lock: Vec<(f64, f64)> = self
+            .widths
+            .iter()
+            .zip(&self.designs)
+            .map(|(&w, d)| (w, d.lock_bound_deg))
+            .collect();
+        curves.push(Curve {
+            label: "2 atan μ_hi: narrower locks at the top friction".into(),
+            style: CurveStyle::Line(LineKind::Dashed),
+            points: lock,
+        });
+        let robust: Vec<(f64, f64)> = self
+            .widths
+            .iter()
+            .zip(&self.designs)
+            .filter_map(|(&w, d)| d.robust.map(|r| (w, r.included_angle_deg)))
+            .collect();
+        if !robust.is_empty() {
+            curves.push(Curve {
+                label: "most robust γ (largest common factor ρ* on loads and friction)".into(),
+                // Purple dots: apart from the black bars it runs through.
+                style: CurveStyle::Line(LineKind::Level),
+                points: robust,
+            });
+        }
+        let mut tags = Vec::new();
+        for g in STANDARD_V_DEG {
+            curves.push(Curve {
+                label: "standard V-blocks 60°, 90°, 120°".into(),
+                style: CurveStyle::Line(LineKind::Dotted),
+                points: vec![(0.0, g), (s.width_max, g)],
+            });
+            tags.push(Tag {
+                at: (s.width_max, g + 4.0),
+                text: format!("{g:.0}° V"),
+                left: true,
+            });
+        }
+        let closes = self
+            .widths
+            .iter()
+            .zip(&self.designs)
+            .find(|(_, d)| d.windows.is_empty())
+            .map(|(&w, _)| w);
+        let mut notes = vec![format!(
+            "Loads {} to {} N at {}° to {}°; a V works when it holds every load at the lowest \
+             friction and does not lock at the highest (both ends decide: see the locator docs).",
+            s.load_n[0], s.load_n[1], s.load_angle_deg[0], s.load_angle_deg[1]
+        )];
+        if let Some(w) = closes {
+            notes.push(format!(
+                "No single V works from a range width of {} on (no bar): narrow the friction \
+                 range or lighten the load.",
+                super::style::fmt_num(w, 3)
+            ));
+        }
+        Figure {
+            title: self.title.clone(),
+            // The frictions are the x axis' ranges, not curves "as marked".
+            subtitle: locator_subtitle(&s.locator, "loads as noted", false)
+                .replace("μ on both flanks as marked", "μ ranges on the x axis"),
+            panels: vec![Panel {
+                x,
+                y,
+                curves,
+                marks: Vec::new(),
+                tags,
+            }],
+            notes,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::charts::builtin::scene_text;
+
+    fn built_in() -> VlocatorRobustSpec {
+        let table: toml::Table = toml::from_str(scene_text("vlocator-robust").unwrap()).unwrap();
+        let mut chart = table["chart"].as_table().unwrap().clone();
+        chart.remove("kind");
+        toml::Value::Table(chart).try_into().unwrap()
+    }
+
+    /// The built-in scene's window against the closed form of a free symmetric V under centre
+    /// loads within 10 deg of sideways (`robust` docs): it opens at 2 atan mu_hi, its top is
+    /// the heaviest load at the most lifting direction, x <= (W / P - sin 10) / cos 10 with
+    /// x = tan(gamma/2), and it closes where the two meet.
+    #[test]
+    fn robust_chart_window_matches_the_closed_form() {
+        let s = built_in();
+        let w = s.locator.weight_n();
+        let (sn, cs) = 10.0_f64.to_radians().sin_cos();
+        let x_top = (w / s.load_n[1] - sn) / cs;
+        let top = 2.0 * x_top.atan().to_degrees();
+        let mut worst: f64 = 0.0;
+        for k in 0..s.count {
+            let width = s.width_max * k as f64 / (s.count - 1) as f64;
+            let b = s.box_of(width);
+            let d = robust_design(&s.locator, &b);
+            let lock = 2.0 * b.mu.1.atan().to_degrees();
+            if b.mu.1 < x_top * (1.0 - 1e-9) {
+                let (lo, hi) = d.windows[0];
+                worst = worst.max((lo - lock).abs()).max((hi - top).abs());
+            } else if b.mu.1 > x_top * (1.0 + 1e-9) {
+                assert!(d.windows.is_empty(), "{width}: {d:?}");
+            }
+        }
+        // The arc cover overstates the load by at most 1e-5: the top moves by less than 1e-3 deg.
+        assert!(worst < 1e-3, "worst {worst:e} deg");
+    }
+}

@@ -1,0 +1,209 @@
+//! The robust V-block against its closed form and against a brute-force grid of the exact
+//! locator over the box.
+
+use crate::locator::{LocatorParams, RobustBox, Rotation, held_at, robust_design, self_locking};
+
+/// W of the default disc (1 kg at 9.806 m/s^2), N.
+const W: f64 = 9.806;
+
+fn free_base() -> LocatorParams {
+    LocatorParams::default()
+}
+
+/// Whether the V of `gamma` works at every point of a grid over the box: `n` frictions,
+/// `n` magnitudes and one direction per 0.25 deg (the brute force).
+fn works_on_grid(base: &LocatorParams, b: &RobustBox, gamma: f64, n: usize) -> bool {
+    let lin = |(lo, hi): (f64, f64), k: usize, m: usize| {
+        if m == 0 {
+            lo
+        } else {
+            lo + (hi - lo) * k as f64 / m as f64
+        }
+    };
+    let m_phi = ((b.load_angle_deg.1 - b.load_angle_deg.0) / 0.25).ceil() as usize;
+    let v = base.with_included_angle_same_tilt(gamma);
+    for i in 0..=n {
+        let q = v.with_mu(lin(b.mu, i, n));
+        if self_locking(&q) {
+            return false;
+        }
+        for j in 0..=n {
+            for k in 0..=m_phi {
+                let p = lin(b.load_n, j, n);
+                let q = LocatorParams {
+                    load_n: p,
+                    load_angle_deg: lin(b.load_angle_deg, k, m_phi),
+                    ..q
+                };
+                if held_at(&q, p).is_err() {
+                    return false;
+                }
+            }
+        }
+    }
+    true
+}
+
+/// Free symmetric V, sideways centre load P, friction range: the window is
+/// [2 atan mu_hi, 2 atan(W / P)] and the robust angle 2 atan sqrt(mu_hi W / P) with
+/// rho* = sqrt(W / (mu_hi P)) (module docs of `robust`).
+#[test]
+fn robust_window_matches_the_closed_form_for_a_sideways_load() {
+    let mut worst: f64 = 0.0;
+    for (mu, p) in [
+        ((0.12, 0.3), 5.0),
+        ((0.05, 0.2), 1.0),
+        ((0.3, 0.6), 3.0),
+        ((0.1, 0.1), 9.0),
+    ] {
+        let b = RobustBox {
+            mu,
+            load_n: (p, p),
+            load_angle_deg: (0.0, 0.0),
+        };
+        let d = robust_design(&free_base(), &b);
+        let want_lo = 2.0 * mu.1.atan().to_degrees();
+        let want_hi = 2.0 * (W / p).atan().to_degrees();
+        assert_eq!(d.windows.len(), 1, "{b:?}: {d:?}");
+        let (lo, hi) = d.windows[0];
+        let r = d.robust.unwrap();
+        let want_g = 2.0 * (mu.1 * W / p).sqrt().atan().to_degrees();
+        let want_rho = (W / (mu.1 * p)).sqrt();
+        for (got, want) in [
+            (lo, want_lo),
+            (hi, want_hi),
+            (r.included_angle_deg, want_g),
+            (r.safety_factor, want_rho),
+        ] {
+            worst = worst.max((got - want).abs());
+        }
+        assert!(d.opening.is_none());
+    }
+    // Bisection to 1e-15 deg; the arc cover adds nothing for one direction.
+    assert!(worst < 1e-7, "worst {worst:e}");
+}
+
+/// The issue's V-block: a 30 N sideways load over mu 0.12 to 0.3 on a 0.4 kg shaft. No V
+/// works (mu_hi P = 9 N > W = 3.92 N); narrowing the friction to mu <= W / P = 0.131 opens it,
+/// or the narrowest V that does not lock (2 atan 0.3 = 33.4 deg) holds loads up to
+/// W / mu_hi = 13.1 N.
+#[test]
+fn no_single_v_works_for_the_issues_shaft_and_the_tool_says_what_opens_it() {
+    let base = LocatorParams {
+        mass_kg: 0.4,
+        ..free_base()
+    };
+    let w = base.weight_n();
+    let b = RobustBox {
+        mu: (0.12, 0.3),
+        load_n: (30.0, 30.0),
+        load_angle_deg: (0.0, 0.0),
+    };
+    let d = robust_design(&base, &b);
+    assert!(d.windows.is_empty() && d.robust.is_none(), "{d:?}");
+    let o = d.opening.unwrap();
+    assert!((o.mu_hi_max.unwrap() - w / 30.0).abs() < 1e-9, "{o:?}");
+    assert!((o.load_hi_max_n.unwrap() - w / 0.3).abs() < 1e-6, "{o:?}");
+    assert!((d.lock_bound_deg - 2.0 * 0.3_f64.atan().to_degrees()).abs() < 1e-12);
+    assert!(d.dropped_at_lock_bound.is_some());
+}
+
+/// The window against a brute-force grid of the exact locator over the box, for free and
+/// blocked, tilted and symmetric Vs, load ranges in magnitude and direction: every angle of
+/// the window works at every grid point (never a V that fails in the box), and 0.1 deg
+/// outside either edge some grid point fails.
+#[test]
+fn robust_window_matches_a_brute_force_grid_over_the_box() {
+    let cases = [
+        (free_base(), (0.1, 0.3), (2.0, 6.0), (-20.0, 20.0)),
+        (free_base(), (0.2, 0.25), (0.0, 4.0), (0.0, 60.0)),
+        (
+            LocatorParams {
+                rotation: Rotation::Blocked,
+                ..free_base()
+            },
+            (0.1, 0.4),
+            (2.0, 8.0),
+            (-10.0, 30.0),
+        ),
+        (
+            LocatorParams {
+                flank_left_deg: 55.0,
+                flank_right_deg: 35.0,
+                ..free_base()
+            },
+            (0.15, 0.3),
+            (1.0, 3.0),
+            (150.0, 200.0),
+        ),
+    ];
+    for (base, mu, load_n, load_angle_deg) in cases {
+        let b = RobustBox {
+            mu,
+            load_n,
+            load_angle_deg,
+        };
+        let d = robust_design(&base, &b);
+        assert_eq!(d.windows.len(), 1, "{b:?} {d:?}");
+        let (lo, hi) = d.windows[0];
+        for k in 0..=10 {
+            let g = lo + (hi - lo) * k as f64 / 10.0;
+            assert!(
+                works_on_grid(&base, &b, g, 6),
+                "{g} deg of {d:?} fails on the grid"
+            );
+        }
+        // Just outside the window the grid finds a failure (or the end of the angles).
+        let step = 0.1;
+        assert!(
+            lo - step < 1.0 || !works_on_grid(&base, &b, lo - step, 4),
+            "{b:?}: {lo}"
+        );
+        // A tilted V reaches at most 180 - |a1 - a2| (a flank at 0 deg).
+        let widest = 179.0_f64.min(180.0 - (base.flank_left_deg - base.flank_right_deg).abs());
+        assert!(
+            hi + step > widest || !works_on_grid(&base, &b, hi + step, 4),
+            "{b:?}: {hi}"
+        );
+        let r = d.robust.unwrap();
+        assert!(
+            r.safety_factor >= 1.0 && (lo..=hi).contains(&r.included_angle_deg),
+            "{r:?}"
+        );
+    }
+}
+
+/// An empty window is empty on the brute-force grid too: no included angle (0.5 deg steps)
+/// works at every grid point of the box (blocked, mu 0.1 to 0.4, 5 to 15 N from -10 to 30
+/// deg; the narrowest V that does not lock drops 15 N at 23 deg).
+#[test]
+fn an_empty_robust_window_is_empty_on_the_brute_force_grid() {
+    let base = LocatorParams {
+        rotation: Rotation::Blocked,
+        ..free_base()
+    };
+    let b = RobustBox {
+        mu: (0.1, 0.4),
+        load_n: (5.0, 15.0),
+        load_angle_deg: (-10.0, 30.0),
+    };
+    let d = robust_design(&base, &b);
+    assert!(d.windows.is_empty(), "{d:?}");
+    let any = (2..358)
+        .map(|k| k as f64 * 0.5)
+        .find(|&g| works_on_grid(&base, &b, g, 4));
+    assert_eq!(any, None);
+    // What opens it does: the V of 2 atan mu_hi_max holds the box with mu up to mu_hi_max.
+    let o = d.opening.unwrap();
+    let mu_hi = o.mu_hi_max.unwrap();
+    let narrower = RobustBox {
+        mu: (0.1, mu_hi * (1.0 - 1e-6)),
+        ..b
+    };
+    assert_eq!(robust_design(&base, &narrower).windows.len(), 1);
+    let lighter = RobustBox {
+        load_n: (5.0, o.load_hi_max_n.unwrap() * (1.0 - 1e-6)),
+        ..b
+    };
+    assert_eq!(robust_design(&base, &lighter).windows.len(), 1);
+}
