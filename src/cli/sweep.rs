@@ -244,7 +244,6 @@ fn key_as_written(e: Error, a: &SweepArgs) -> Error {
     }
 }
 
-
 /// The band of the uncertain inputs along a sweep of `param`: the closed form at the box's two
 /// extreme corners (ranges at their ends; a distribution at its 5 % and 95 % quantiles, which
 /// is the exact quantile band for one input, as x_jam is monotone in it).
