@@ -150,6 +150,7 @@ pub fn draw_frame<DB: DrawingBackend>(
         INK.stroke_width(1),
     ))?;
     let tick = style::text(style::TICK_PX);
+    let mut widest_y_tick = 0;
     for (v, s) in x.ticks(px.len() as f64, false).major {
         let (u, _) = pixel(c, x, y, v, y.min);
         root.draw(&PathElement::new(
@@ -165,6 +166,7 @@ pub fn draw_frame<DB: DrawingBackend>(
             vec![(px.start - 5, w), (px.start, w)],
             INK,
         ))?;
+        widest_y_tick = widest_y_tick.max(root.estimate_text_size(&s, &tick)?.0 as i32);
         let pos = Pos::new(HPos::Right, VPos::Center);
         root.draw(&Text::new(s, (px.start - 8, w), tick.pos(pos)))?;
     }
@@ -177,7 +179,11 @@ pub fn draw_frame<DB: DrawingBackend>(
         label.pos(pos),
     ))?;
     let span = py.len() as i32;
-    draw_vertical_label_within(root, &y.label, px.start - 62, (py.start + py.end) / 2, span)
+    // 62 px left of the frame, or further when a tick label is wide enough to reach it (10^-10
+    // on a log axis): the label's own height plus a gap left of the widest tick label.
+    let clear = 8 + widest_y_tick + 4 + style::LABEL_PX as i32;
+    let cx = px.start - clear.max(62);
+    draw_vertical_label_within(root, &y.label, cx, (py.start + py.end) / 2, span)
 }
 
 /// A label rotated to read bottom-up, centred on (cx, cy).
