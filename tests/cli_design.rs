@@ -45,6 +45,27 @@ fn design_least_push_is_the_closed_form_at_the_top_friction() {
     );
 }
 
+/// The palm length from the closed form (99.261 mm at mu 0.12) is where a slowly pushed disc
+/// jams; at the drive's speed the simulated disc coasts on to 112.6 mm, so a palm sized by the
+/// closed form would lose it. `design` once printed both numbers without a word; it now says the
+/// palm must reach past the coast, in the text and in the JSON (`coasts_to_mm`).
+#[test]
+fn design_says_when_the_disc_coasts_past_the_palm_length_it_gives() {
+    let dir = tempfile::tempdir().unwrap();
+    let v = json(&jamchart(dir.path(), &shaft_design("35")));
+    let l = v["design"]["palm_length_needed_mm"].as_f64().unwrap();
+    let coast = v["check_latest_jam"]["coasts_to_mm"].as_f64().unwrap();
+    assert!(coast > l * 1.05, "{coast} vs {l}");
+    let mut args = shaft_design("35");
+    args.truncate(args.len() - SHAFT.len() - 2);
+    args.extend(SHAFT);
+    let out = cli_util::stdout(&jamchart(dir.path(), &args));
+    assert!(
+        out.contains("coasts past the quasi-static jam to 112.6"),
+        "{out}"
+    );
+}
+
 /// A target past the rigid limit r / mu_hi = 41.7 mm is an answer (no push reaches it), not an
 /// error; a target inside the disc's start, a negative or a reversed range exits 2 naming the flag.
 #[test]
