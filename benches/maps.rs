@@ -8,6 +8,8 @@
 //! as `accuracy --map` does; the line says so. Median of 3 runs. Goals (issue 21): min-norm
 //! 400 x 400 and the nonsmooth 100 x 100 (either drive) under 2 s on 2 cores; the regularised
 //! simulation's cost printed beside them.
+//!
+//! `cargo bench --bench maps -- min-norm` measures only the rows whose label contains the word.
 
 mod common;
 
@@ -40,27 +42,47 @@ fn dynamics(method: Method, drive: Drive) -> ModelSpec {
 fn main() {
     let threads = rayon::current_num_threads();
     let one = common::one_thread_pool();
-    // (label, model, cells per axis sampled, cells per axis of the full map)
-    let mut rows = vec![(
-        "min-norm (exact path)".to_string(),
-        ModelSpec::MinNorm(MinNormSettings::default()),
-        40,
-        400,
-    )];
+    // (label, model, cells per axis sampled, cells per axis of the full map, by columns)
+    let min_norm = ModelSpec::MinNorm(MinNormSettings::default());
+    let mut rows = vec![
+        (
+            "min-norm (exact path)".to_string(),
+            min_norm,
+            40,
+            400,
+            false,
+        ),
+        // Each bisection bracketed from the column's previous jams (`solve_column`); the
+        // sampled map is the full one, as a coarser column's neighbours are further apart.
+        (
+            "min-norm (exact path, by columns)".to_string(),
+            min_norm,
+            400,
+            400,
+            true,
+        ),
+    ];
     for (method, k) in [(Method::Nonsmooth, 25), (Method::Radau5, 10)] {
         for drive in [Drive::Motion, Drive::Force] {
             let label = format!("{method}, {drive} drive");
-            rows.push((label, dynamics(method, drive), k, 100));
+            rows.push((label, dynamics(method, drive), k, 100, false));
         }
     }
+    // A word after `--` keeps the rows whose label contains it (the simulations take minutes).
+    let filter = std::env::args().skip(1).find(|a| !a.starts_with('-'));
     println!("maps by every model (mu 0.1-0.8 x F 20-2000 N), median of 3 runs:");
-    for (label, spec, k, n) in rows {
+    for (label, spec, k, n, by_columns) in rows {
+        if filter.as_ref().is_some_and(|f| !label.contains(f.as_str())) {
+            continue;
+        }
         let grid = map(k);
         let run = || {
-            let cells = grid
-                .map(|p| jamchart::solve(&spec, p))
-                .expect("every cell answers");
-            std::hint::black_box(cells);
+            let cells = if by_columns {
+                grid.map_columns(|column| jamchart::solve_column(&spec, column))
+            } else {
+                grid.map(|p| jamchart::solve(&spec, p))
+            };
+            std::hint::black_box(cells.expect("every cell answers"));
         };
         let all = median_s(3, run);
         let single = one.install(|| median_s(3, run));

@@ -135,5 +135,5 @@ pub mod uncertain;
 pub use cli::main as run_cli;
 pub use config::Config;
 pub use error::{Error, Result};
-pub use models::{ModelKind, ModelSpec, Solution, solve};
+pub use models::{ModelKind, ModelSpec, Solution, solve, solve_column};
 pub use scene::{JamStatus, SceneParams, disc_position_mm, palm_angle_at};

@@ -271,6 +271,36 @@ pub fn solve(spec: &ModelSpec, scene: &SceneParams) -> Result<Solution> {
     })
 }
 
+/// Solves `scenes` in order with the model of `spec`: a line of a map (one parameter fixed).
+///
+/// The min-norm model brackets each cell's bisection from its neighbours' answers
+/// ([`crate::minnorm::solve_column`]; each jam within the bisection's tolerance of [`solve`]'s);
+/// the other models solve cell by cell. A min-norm cell's [`Solution::elapsed_s`] is the
+/// column's time over its cells.
+pub fn solve_column(spec: &ModelSpec, scenes: &[SceneParams]) -> Result<Vec<Solution>> {
+    let ModelSpec::MinNorm(settings) = spec else {
+        return scenes.iter().map(|p| solve(spec, p)).collect();
+    };
+    spec.validate()?;
+    if scenes.iter().any(|p| outside(spec.kind(), p).is_some()) {
+        return scenes.iter().map(|p| solve(spec, p)).collect();
+    }
+    let t0 = Instant::now();
+    let answers = crate::minnorm::solve_column(scenes, settings)?;
+    let elapsed_s = t0.elapsed().as_secs_f64() / scenes.len().max(1) as f64;
+    Ok(answers
+        .into_iter()
+        .map(|s| Solution {
+            model: ModelKind::MinNorm,
+            status: s.status,
+            theta_jam_deg: s.theta_jam_deg,
+            x_jam_mm: s.x_jam_mm,
+            elapsed_s,
+            detail: Detail::MinNorm(s),
+        })
+        .collect())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -143,6 +143,48 @@ impl<S: ParamSet> Grid<S> {
     }
 }
 
+impl<S: ParamSet + Sync> Grid<S> {
+    /// `f` of each column's cells (x fixed, y ascending), columns in parallel; the cells are
+    /// returned in index order, validated first. A column is one call, so a model may carry each
+    /// cell's answer to the next (the min-norm bisection brackets its jam from its neighbours)
+    /// and the values do not depend on the thread count. `f` returns one value per cell of its
+    /// column; the first error in column order is returned.
+    pub fn map_columns<T: Send>(
+        &self,
+        f: impl Fn(&[S]) -> Result<Vec<T>> + Sync,
+    ) -> Result<Cells<T>> {
+        self.validate()?;
+        let x_values = self.x.values();
+        let y_values = self.y.as_ref().map_or(vec![f64::NAN], GridAxis::values);
+        let has_y = self.y.is_some();
+        let columns: Vec<Result<Vec<T>>> = x_values
+            .par_iter()
+            .map(|&xv| {
+                let scenes: Vec<S> = y_values
+                    .iter()
+                    .map(|&yv| self.cell(xv, has_y.then_some(yv)))
+                    .collect();
+                f(&scenes)
+            })
+            .collect();
+        let mut columns = columns
+            .into_iter()
+            .map(|c| c.map(Vec::into_iter))
+            .collect::<Result<Vec<_>>>()?;
+        let mut values = Vec::with_capacity(x_values.len() * y_values.len());
+        for _ in &y_values {
+            for column in &mut columns {
+                values.push(column.next().expect("one value per cell of the column"));
+            }
+        }
+        Ok(Cells {
+            values,
+            x_values,
+            y_values,
+        })
+    }
+}
+
 /// `f` at `base` with `param` set to each of `values`, in parallel, in order: a sweep at given
 /// points (e.g. the paper's Table 1 mu values). The first error in order is returned.
 pub(crate) fn at_values<S: ParamSet, T: Send>(

@@ -127,12 +127,14 @@
 //! margin there is mu_g m g - F / cos alpha_g), is held at every angle: the push is too weak to
 //! move it, F <= m g sin(alpha_g).
 
+mod column;
 mod contact;
 mod exact;
 pub mod palm;
 pub(crate) mod qp;
 pub(crate) mod tolerance;
 
+pub use column::solve_column;
 pub use contact::{Contact, ContactProblem, Joint, Space, Wrench};
 pub use palm::{Formulation, MinNormCheck, MinNormSettings, PalmSolution, palm_problem};
 pub use qp::{Backend, ContactSolution, HoldStatus, QpSettings, solve, solve_clarabel};

@@ -246,6 +246,18 @@ impl Search<'_> {
     }
 }
 
+/// A guess at theta_jam from neighbouring answers: the bisection's bracket is sought around
+/// `theta_rad`, `width_rad` to each side at first and four times wider at each miss.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct JamGuess {
+    pub theta_rad: f64,
+    pub width_rad: f64,
+}
+
+/// Widenings of a [`JamGuess`] bracket before the search falls back to the palm's reach and the
+/// start angle: 4^12 = 1.7e7 times the first width covers any bracket from 1e-7 rad up.
+const GUESS_WIDENINGS: u32 = 12;
+
 /// Solves the palm scene by the minimum-norm model. The held angles below the start are one
 /// interval, [0, theta_jam] (module docs), so: held at the start angle -> jammed at start; held
 /// at the palm's reach (x = palm length) -> bisect [reach, start] to `bisection_tol_rad`
@@ -254,6 +266,21 @@ impl Search<'_> {
 /// at the start and at 90 deg + alpha_g + alpha_p (below 180 deg) is too weak to move. `p` and `s` are validated
 /// here.
 pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
+    solve_near(p, s, None)
+}
+
+/// [`solve`], with the bisection bracketed around `guess` when one is given: a held angle
+/// `lo` and a not-held angle `hi` strictly between the palm's reach and the start angle bracket
+/// theta_jam, because the held angles are one interval [0, theta_jam] (module docs); that also
+/// decides the status (jams) without solving at the reach and the start. A guess whose bracket
+/// reaches either end falls back to [`solve`]'s search. The answer is the held end of a bracket
+/// of the same width as [`solve`]'s, so both lie within `bisection_tol_rad` (relative below
+/// 0.1 rad) of the same boundary.
+pub(crate) fn solve_near(
+    p: &SceneParams,
+    s: &MinNormSettings,
+    guess: Option<JamGuess>,
+) -> Result<PalmSolution> {
     p.validate()?;
     s.validate()?;
     let mut search = Search {
@@ -279,6 +306,11 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
         search.out.status = JamStatus::BeyondReach;
         return Ok(search.out);
     }
+    if let Some(g) = guess
+        && let Some((lo, hi, held)) = search.bracket(g, reach, start)?
+    {
+        return search.bisect(lo, hi, held);
+    }
     if let Some(sol) = search.eval(start)? {
         // With a joint carrying the moment, held where the push slides the disc best means held
         // at every angle: the push is too weak (module docs). A rolling disc's hold does not
@@ -296,22 +328,9 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
         return Ok(search.jam_at(JamStatus::JammedAtStart, start, sol));
     }
     if reach < start
-        && let Some(mut held) = search.eval(reach)?
+        && let Some(held) = search.eval(reach)?
     {
-        let (mut lo, mut hi) = (reach, start);
-        // Relative below 0.1 rad, so that a jam at 1e-9 rad is still found to 1e-6 of itself;
-        // above it the absolute tolerance governs (every chart's jam angle is above it).
-        while hi - lo > s.bisection_tol_rad.min(RELATIVE_RESOLUTION * lo) {
-            let mid = 0.5 * (lo + hi);
-            match search.eval(mid)? {
-                Some(sol) => {
-                    lo = mid;
-                    held = sol;
-                }
-                None => hi = mid,
-            }
-        }
-        return Ok(search.jam_at(JamStatus::Jams, lo, held));
+        return search.bisect(reach, start, held);
     }
     // Not held within reach: theta_jam lies below it, if it exists. The held angles are
     // [0, theta_jam] (module docs), with theta_jam > 0 whenever the formulation has friction to
@@ -321,6 +340,73 @@ pub fn solve(p: &SceneParams, s: &MinNormSettings) -> Result<PalmSolution> {
         search.out.status = JamStatus::BeyondReach;
     }
     Ok(search.out)
+}
+
+impl Search<'_> {
+    /// A held angle, a not-held angle above it and the held solution, both strictly between
+    /// `reach` and `start`, sought around `g`; None if the widening bracket touches either end.
+    fn bracket(
+        &mut self,
+        g: JamGuess,
+        reach: f64,
+        start: f64,
+    ) -> Result<Option<(f64, f64, ContactSolution)>> {
+        let mut held: Option<(f64, ContactSolution)> = None;
+        let mut free: Option<f64> = None;
+        let mut width = g.width_rad;
+        for _ in 0..=GUESS_WIDENINGS {
+            if held.is_none() {
+                let lo = g.theta_rad - width;
+                if lo <= reach {
+                    return Ok(None);
+                }
+                match self.eval(lo)? {
+                    Some(sol) => held = Some((lo, sol)),
+                    None => free = Some(lo),
+                }
+            }
+            if free.is_none() {
+                let hi = g.theta_rad + width;
+                if hi >= start {
+                    return Ok(None);
+                }
+                match self.eval(hi)? {
+                    Some(sol) => held = Some((hi, sol)),
+                    None => free = Some(hi),
+                }
+            }
+            if let (Some((lo, _)), Some(hi)) = (&held, free)
+                && *lo < hi
+            {
+                let (lo, sol) = held.expect("checked above");
+                return Ok(Some((lo, hi, sol)));
+            }
+            width *= 4.0;
+        }
+        Ok(None)
+    }
+
+    /// Bisects [lo, hi] (held at `lo`, with solution `held`; not held at `hi`) to
+    /// `bisection_tol_rad`, relative below 0.1 rad so that a jam at 1e-9 rad is still found to
+    /// 1e-6 of itself (above it the absolute tolerance governs: every chart's jam angle is).
+    fn bisect(
+        mut self,
+        mut lo: f64,
+        mut hi: f64,
+        mut held: ContactSolution,
+    ) -> Result<PalmSolution> {
+        while hi - lo > self.s.bisection_tol_rad.min(RELATIVE_RESOLUTION * lo) {
+            let mid = 0.5 * (lo + hi);
+            match self.eval(mid)? {
+                Some(sol) => {
+                    lo = mid;
+                    held = sol;
+                }
+                None => hi = mid,
+            }
+        }
+        Ok(self.jam_at(JamStatus::Jams, lo, held))
+    }
 }
 
 /// The palm scene at one angle `theta_deg` solved by clarabel, with its convergence trace
