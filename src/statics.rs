@@ -55,8 +55,10 @@
 //! that raises theta_jam (high frictions and mass, low push: the earliest jam, nearest the
 //! hinge) and the opposite corner (the latest jam, furthest out). The status is decided by
 //! theta_jam against the start angle and the palm's reach angle (neither depends on these
-//! inputs), so it changes at most once per boundary along each input; the breakpoints are
-//! found by bisection (`jamchart solve --mu 0.12:0.3`). The tests check the corners against a
+//! inputs), so it changes at most once per boundary along each input; each breakpoint is
+//! where theta_jam crosses that boundary's angle ([`reach_angle_rad`], the start angle), found
+//! by regula falsi, or by bisection of [`status`] for the other changes (`jamchart solve --mu
+//! 0.12:0.3`). The tests check the corners against a
 //! brute-force grid over the box (`tests/uncertain_range.rs`).
 
 use std::f64::consts::FRAC_PI_2;
@@ -155,6 +157,18 @@ pub fn theta_jam_rad(p: &SceneParams) -> f64 {
     }
 }
 
+/// The palm angle in rad at which the contact sits at the palm's end, s_B = L: the status
+/// changes between beyond_reach and jams where theta_jam crosses it.
+///
+/// s_B = x cos(theta) + r sin(theta) = r cot(theta/2) + h cot(theta) falls as theta grows
+/// (ds_B/dtheta = -r / (2 sin^2(theta/2)) - h / sin^2(theta) < 0), and with u = tan(theta/2)
+/// s_B = L reads h u^2 + 2 L u - (2 r + h) = 0, so u = (2 r + h) / (L + sqrt(L^2 + h (2 r + h)))
+/// (r / L without a palm offset). Depends on radius_mm, palm_offset_mm and palm_length_mm only.
+pub fn reach_angle_rad(p: &SceneParams) -> f64 {
+    let (r, h, l) = (p.radius_mm, p.palm_offset_mm, p.palm_length_mm);
+    2.0 * ((2.0 * r + h) / (l + (l * l + h * (2.0 * r + h)).sqrt())).atan()
+}
+
 /// The F -> infinity limit of the jam: `(theta_rigid_deg, x_rigid_mm)`.
 ///
 /// theta_rigid = alpha_g + alpha_p (the self-locking wedge), x_rigid = r cot(theta_rigid / 2) +
@@ -185,47 +199,96 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
         past_palm: None,
     };
 
+    match decide(p) {
+        Decision::Bare(status) => out.status = status,
+        Decision::JammedAtStart => {
+            out.status = JamStatus::JammedAtStart;
+            out.theta_jam_deg = Some(p.start_angle_deg);
+            out.x_jam_mm = finite_or_none(p.disc_position_mm(start));
+        }
+        Decision::PastPalm {
+            theta_jam,
+            x_jam,
+            s_b,
+        } => {
+            out.status = JamStatus::BeyondReach;
+            out.past_palm = (x_jam.is_finite() && s_b.is_finite()).then(|| PastPalm {
+                theta_jam_deg: theta_jam.to_degrees(),
+                x_jam_mm: x_jam,
+                palm_length_needed_mm: s_b,
+                friction_factor_needed: friction_factor_to_reach(p),
+            });
+        }
+        Decision::Jams { theta_jam, x_jam } => {
+            out.theta_jam_deg = Some(theta_jam.to_degrees());
+            out.x_jam_mm = Some(x_jam);
+        }
+    }
+    out
+}
+
+/// The closed form's status alone: [`solve`]'s `status` without the extras (no lift-off
+/// angle, rigid limit or past-palm bisection), for scans that only need the verdict, such
+/// as the status breakpoints of a range answer. `p` must have passed validation.
+pub fn status(p: &SceneParams) -> JamStatus {
+    match decide(p) {
+        Decision::Bare(status) => status,
+        Decision::JammedAtStart => JamStatus::JammedAtStart,
+        Decision::PastPalm { .. } => JamStatus::BeyondReach,
+        Decision::Jams { .. } => JamStatus::Jams,
+    }
+}
+
+/// The verdict of the closed form and the numbers it rests on, before [`solve`] adds its extras.
+enum Decision {
+    /// A status with no jam angle: beyond the palm from the start, never jams, too weak.
+    Bare(JamStatus),
+    /// Held where the palm first touches the disc.
+    JammedAtStart,
+    /// The jam at `theta_jam` (rad), `x_jam` (mm) lies past the palm's end (contact `s_b` mm).
+    PastPalm {
+        theta_jam: f64,
+        x_jam: f64,
+        s_b: f64,
+    },
+    /// Jams on the palm at `theta_jam` (rad), `x_jam` (mm).
+    Jams { theta_jam: f64, x_jam: f64 },
+}
+
+/// Decides the status in the order beyond_reach (start), never_jams, too_weak,
+/// jammed_at_start, beyond_reach (jam past the palm), jams.
+fn decide(p: &SceneParams) -> Decision {
+    let start = p.start_angle_deg.to_radians();
     // A disc that starts beyond the palm's end is never touched, whatever the friction.
     if p.contact_distance_mm(start) > p.palm_length_mm {
-        out.status = JamStatus::BeyondReach;
-        return out;
+        return Decision::Bare(JamStatus::BeyondReach);
     }
     let theta_jam = theta_jam_rad(p);
     if theta_jam <= 0.0 {
-        out.status = JamStatus::NeverJams;
-        return out;
+        return Decision::Bare(JamStatus::NeverJams);
     }
     // Too weak: no angle slides the disc, not even 90 deg + alpha_g + alpha_p where the push
     // slides it best. When that angle lies past 180 deg (mu_g mu_p >= 1) the wedge self-locks
     // at every palm angle whatever the push, and the disc is jammed at the start instead.
     if theta_jam.is_infinite() && p.alpha_ground() + p.alpha_palm() < FRAC_PI_2 {
-        out.status = JamStatus::TooWeak;
-        return out;
+        return Decision::Bare(JamStatus::TooWeak);
     }
     // The margin is checked at the start as well: with a heavy disc and a start near 180 deg the
     // ground may hold beyond the second root of the margin, above theta_jam.
     if theta_jam >= start || margin_n(p, start) >= 0.0 {
-        out.status = JamStatus::JammedAtStart;
-        out.theta_jam_deg = Some(p.start_angle_deg);
-        out.x_jam_mm = finite_or_none(p.disc_position_mm(start));
-        return out;
+        return Decision::JammedAtStart;
     }
     let x_jam = p.disc_position_mm(theta_jam);
     // x_jam may overflow to +inf for a vanishing wedge angle; that is beyond any palm.
     let s_b = p.contact_distance_mm(theta_jam);
     if x_jam.is_nan() || s_b.is_nan() || s_b > p.palm_length_mm {
-        out.status = JamStatus::BeyondReach;
-        out.past_palm = (x_jam.is_finite() && s_b.is_finite()).then(|| PastPalm {
-            theta_jam_deg: theta_jam.to_degrees(),
-            x_jam_mm: x_jam,
-            palm_length_needed_mm: s_b,
-            friction_factor_needed: friction_factor_to_reach(p),
-        });
-        return out;
+        return Decision::PastPalm {
+            theta_jam,
+            x_jam,
+            s_b,
+        };
     }
-    out.theta_jam_deg = Some(theta_jam.to_degrees());
-    out.x_jam_mm = Some(x_jam);
-    out
+    Decision::Jams { theta_jam, x_jam }
 }
 
 /// The least factor k >= 1 on both frictions for which the jam lies on the palm (the contact
@@ -365,6 +428,53 @@ mod tests {
         };
         assert_eq!(with(k * (1.0 + 1e-8)), JamStatus::Jams);
         assert_eq!(with(k * (1.0 - 1e-6)), JamStatus::BeyondReach);
+    }
+
+    /// The status alone is the status of the full solve for every status, on a grid of
+    /// frictions, pushes and start angles that meets all of them.
+    #[test]
+    fn the_status_alone_is_solves_status() {
+        let mut seen = Vec::new();
+        for mu in [0.0, 0.05, 0.12, 0.3, 0.6, 1.2, 3.0] {
+            for force_n in [1.0, 5.0, 40.0, 200.0] {
+                for start_angle_deg in [1.0, 18.5, 60.0, 120.0, 179.0] {
+                    let p = SceneParams {
+                        radius_mm: 12.5,
+                        mass_kg: 0.4,
+                        force_n,
+                        palm_length_mm: 80.0,
+                        start_angle_deg,
+                        ..SceneParams::default().with_mu(mu)
+                    };
+                    let want = solve(&p).status;
+                    assert_eq!(status(&p), want, "{p:?}");
+                    seen.push(want);
+                }
+            }
+        }
+        for s in [
+            JamStatus::BeyondReach,
+            JamStatus::NeverJams,
+            JamStatus::TooWeak,
+            JamStatus::JammedAtStart,
+            JamStatus::Jams,
+        ] {
+            assert!(seen.contains(&s), "the grid meets {s:?}");
+        }
+    }
+
+    /// The reach angle puts the contact at the palm's end, with and without a palm offset.
+    #[test]
+    fn the_reach_angle_puts_the_contact_at_the_palms_end() {
+        for (h, l) in [(0.0, 80.0), (0.5, 80.0), (3.0, 30.0), (1.0, 150.0)] {
+            let p = SceneParams {
+                palm_offset_mm: h,
+                palm_length_mm: l,
+                ..SceneParams::default()
+            };
+            let s_b = p.contact_distance_mm(reach_angle_rad(&p));
+            assert!((s_b - l).abs() < 1e-9 * l, "h = {h}, L = {l}: s_B = {s_b}");
+        }
     }
 
     #[test]

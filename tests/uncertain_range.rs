@@ -150,3 +150,52 @@ fn a_sampled_box_spans_the_corners_interval() {
         "{e:?} vs {g:?}"
     );
 }
+
+/// Regression (issue 19, the range answer's speed): the breakpoints were found by a scan of
+/// 64 evenly spaced `statics::solve`s along each input (each one beyond the palm ran the
+/// past-palm bisection, 160.8 us against a 110 ns point answer), and a status holding on a
+/// stretch narrower than 1/63 of the range fell between two scan points and was never
+/// reported. Now the walk goes from the low end's status to the high end's, each change found
+/// where theta_jam crosses its angle: here the shaft with the palm starting at 18.5 deg jams
+/// only for mu within about 0.003 of 0.157 (theta_jam between the reach angle, 17.76 deg, and
+/// the start), 1/1000 of the range 0.01:3.
+#[test]
+fn a_status_on_a_stretch_narrower_than_the_old_scan_step_is_reported() {
+    let p = SceneParams {
+        start_angle_deg: 18.5,
+        ..shaft()
+    };
+    let set = UncertainSet {
+        inputs: vec![input("mu", &["mu_ground", "mu_palm"], 0.01, 3.0)],
+    };
+    let a = range::closed_form(&p, &set);
+    let segs = &a.inputs[0].segments;
+    let statuses: Vec<JamStatus> = segs.iter().map(|s| s.status).collect();
+    assert_eq!(
+        statuses,
+        [
+            JamStatus::BeyondReach,
+            JamStatus::Jams,
+            JamStatus::JammedAtStart
+        ],
+        "{segs:?}"
+    );
+    assert!(segs[1].to - segs[1].from < (3.0 - 0.01) / 63.0, "{segs:?}");
+    // The jams stretch runs from the reach angle to the start angle.
+    let theta_deg = |mu: f64| statics::theta_jam_rad(&p.with_mu(mu)).to_degrees();
+    let reach_deg = statics::reach_angle_rad(&p).to_degrees();
+    assert!(
+        (theta_deg(segs[1].from) - reach_deg).abs() < 1e-6,
+        "{segs:?}"
+    );
+    assert!((theta_deg(segs[1].to) - 18.5).abs() < 1e-6, "{segs:?}");
+    // Either side of each change the closed form's own status agrees.
+    for w in segs.windows(2) {
+        let at = |mu: f64| statics::solve(&p.with_mu(mu)).status;
+        assert_eq!(at(w[0].to - 1e-6), w[0].status);
+        assert_eq!(at(w[0].to + 1e-6), w[1].status);
+    }
+    // The box's statuses (in the order of JamStatus::ALL) are the three.
+    assert_eq!(a.statuses.len(), 3);
+    assert!(statuses.iter().all(|s| a.statuses.contains(s)));
+}

@@ -8,7 +8,9 @@
 //! theta_jam grows up to the angle [`x_turn_rad`] (180 deg without a palm offset), so its
 //! extremes are the corners' as well, or x at that angle when the interval of theta crosses it.
 //! The status changes are found by bisection along each input (the others at their nominal
-//! values) to 1e-9 of the range's width.
+//! values) to 1e-9 of the range's width: the status is monotone along each input (each status
+//! holds on one stretch), so a walk from the low end's status to the high end's bisects each
+//! change in turn, with the cheap [`statics::status`] (no past-palm extras).
 //!
 //! The other models answer the box by sampling it: a grid of [`SAMPLES_PER_INPUT`] values per
 //! input (at most [`MAX_GRID`] points), whose range of answers is reported, not a bound.
@@ -26,10 +28,6 @@ pub const SAMPLES_PER_INPUT: usize = 9;
 
 /// Largest sampling grid: with more inputs each gets fewer values (at least 2, its ends).
 pub const MAX_GRID: usize = 81;
-
-/// Points of the first scan along one input before the bisection of each status change: a
-/// status region narrower than 1/64 of the range could be missed between two points.
-const SCAN_POINTS: usize = 64;
 
 /// Which end of an input's range.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -155,7 +153,7 @@ pub fn closed_form(p: &SceneParams, set: &UncertainSet) -> RangeAnswer {
         let theta = statics::theta_jam_rad(&q);
         let jam = (theta.is_finite() && theta > 0.0).then_some(theta);
         Corner {
-            status: statics::solve(&q).status,
+            status: statics::status(&q),
             theta_jam_deg: jam.map(f64::to_degrees),
             x_jam_mm: jam.map(|t| q.disc_position_mm(t)),
             values,
@@ -178,7 +176,7 @@ pub fn closed_form(p: &SceneParams, set: &UncertainSet) -> RangeAnswer {
         };
         [x_lo.min(x_hi), x_hi.max(x_lo)]
     });
-    let status_at = |v: &[f64]| statics::solve(&set.apply(p, v)).status;
+    let at_nominal = set.apply(p, &nominal);
     let inputs: Vec<InputEnds> = set
         .inputs
         .iter()
@@ -188,22 +186,29 @@ pub fn closed_form(p: &SceneParams, set: &UncertainSet) -> RangeAnswer {
             lo: ends[i].0,
             hi: ends[i].1,
             earliest_at: earliest_at[i],
-            segments: scan(ends[i], SCAN_POINTS, true, |x| {
-                let mut v = nominal.clone();
-                v[i] = x;
-                status_at(&v)
+            segments: walk(ends[i], |x| {
+                // The nominal scene with input i at x: no vector per evaluation.
+                let mut q = at_nominal;
+                for k in &input.keys {
+                    q.set_real(k, x);
+                }
+                q
             }),
         })
         .collect();
     // Every status in the box lies on the diagonal from the latest corner to the earliest:
     // the status is decided by theta_jam (and the start, which no input changes), which is
-    // monotone along it.
-    let (a, b) = (pick(false), pick(true));
-    let diagonal = scan((0.0, 1.0), SCAN_POINTS, true, |t| {
-        let v: Vec<f64> = a.iter().zip(&b).map(|(a, b)| a + t * (b - a)).collect();
-        status_at(&v)
-    });
-    let statuses = distinct(diagonal.iter().map(|s| s.status));
+    // monotone along it. With one input the diagonal is that input's range.
+    let statuses = if let [only] = inputs.as_slice() {
+        distinct(only.segments.iter().map(|s| s.status))
+    } else {
+        let (a, b) = (pick(false), pick(true));
+        let diagonal = walk((0.0, 1.0), |t| {
+            let v: Vec<f64> = a.iter().zip(&b).map(|(a, b)| a + t * (b - a)).collect();
+            set.apply(p, &v)
+        });
+        distinct(diagonal.iter().map(|s| s.status))
+    };
     RangeAnswer {
         method: Method::Corners,
         earliest,
@@ -323,32 +328,109 @@ fn earliest_end(earliest: &[f64], latest: &[f64], i: usize) -> End {
     }
 }
 
-/// The statuses along `[lo, hi]`: `points` evenly spaced evaluations, then each change
-/// bisected to 1e-9 of the width (when `bisect`), or placed half-way between the points.
-fn scan(
-    (lo, hi): (f64, f64),
-    points: usize,
-    bisect: bool,
-    status: impl Fn(f64) -> JamStatus,
-) -> Vec<Segment> {
-    let at = |j: usize| lo + (hi - lo) * j as f64 / (points - 1) as f64;
-    let along: Vec<(f64, JamStatus)> = (0..points).map(|j| (at(j), status(at(j)))).collect();
-    let mut out = segments_of(&along);
-    if bisect {
-        for w in 0..out.len().saturating_sub(1) {
-            // The change lies between the two scan points either side of the half-way mark.
-            let below = out[w].status;
-            let step = (hi - lo) / (points - 1) as f64;
-            let (mut a, mut b) = (out[w].to - 0.5 * step, out[w].to + 0.5 * step);
-            while b - a > 1e-9 * (hi - lo) {
-                let m = 0.5 * (a + b);
-                if status(m) == below { a = m } else { b = m }
+/// The statuses along `[lo, hi]`, `at(x)` the scene at x, of a status that is monotone along
+/// it (each status one stretch, in the order theta_jam passes its thresholds; see the module
+/// docs): from the status at `lo`, each change found to 1e-9 of the width, until the status at
+/// `hi` is reached. The status alone is asked ([`statics::status`]): `statics::solve` would run
+/// its past-palm bisection at every point beyond the palm (issue 19: the range answer took
+/// 1450x a point answer).
+fn walk((lo, hi): (f64, f64), at: impl Fn(f64) -> SceneParams) -> Vec<Segment> {
+    let status = |x: f64| statics::status(&at(x));
+    let tol = 1e-9 * (hi - lo);
+    let last = status(hi);
+    let (mut from, mut here) = (lo, status(lo));
+    let mut out = Vec::new();
+    // Each status has one stretch, so there are fewer changes than statuses; the bound only
+    // guards against a status that is not monotone after all.
+    while here != last && out.len() < JamStatus::ALL.len() {
+        let (to, next) = change_by_theta((from, hi), tol, here, last, &at).map_or_else(
+            || bisect_change((from, hi), tol, here, status),
+            |to| (to, last),
+        );
+        out.push(Segment {
+            from,
+            to,
+            status: here,
+        });
+        (from, here) = (to, next);
+    }
+    out.push(Segment {
+        from,
+        to: hi,
+        status: last,
+    });
+    out
+}
+
+/// Where the status changes from `here` straight to `next` on `[a, b]`, to `tol`: the point
+/// where theta_jam crosses the angle of that change (the palm's reach angle
+/// [`statics::reach_angle_rad`] between beyond_reach and jams, the start angle between jams and
+/// jammed_at_start), by regula falsi with the Illinois step (a handful of closed-form angles
+/// where bisection of the status took 30 statuses). The upper end of the final bracket, where
+/// the status is `next`. None for any other change, or when the statuses either side of the
+/// bracket are not `here` and `next` (the margin at the start can hold a disc before theta_jam
+/// reaches the start angle), and the caller bisects the status instead. Hand-written: 20 lines
+/// against a root-finding crate whose stopping rules do not return the bracket.
+fn change_by_theta(
+    (mut a, mut b): (f64, f64),
+    tol: f64,
+    here: JamStatus,
+    next: JamStatus,
+    at: impl Fn(f64) -> SceneParams,
+) -> Option<f64> {
+    use JamStatus::{BeyondReach, JammedAtStart, Jams};
+    let q = at(a);
+    let target = match (here, next) {
+        (BeyondReach, Jams) | (Jams, BeyondReach) => statics::reach_angle_rad(&q),
+        (Jams, JammedAtStart) | (JammedAtStart, Jams) => q.start_angle_deg.to_radians(),
+        _ => return None,
+    };
+    let g = |x: f64| statics::theta_jam_rad(&at(x)) - target;
+    let (mut ga, mut gb) = (g(a), g(b));
+    if !(ga.is_finite() && gb.is_finite()) || (ga > 0.0) == (gb > 0.0) {
+        return None;
+    }
+    // Which end stayed on the last step: halving its value when it stays again keeps both
+    // ends closing in (Illinois).
+    let mut kept_b = None;
+    for _ in 0..200 {
+        if b - a <= tol {
+            break;
+        }
+        let m = (a * gb - b * ga) / (gb - ga);
+        let m = if m > a && m < b { m } else { 0.5 * (a + b) };
+        let gm = g(m);
+        if gm != 0.0 && (gm > 0.0) == (ga > 0.0) {
+            (a, ga) = (m, gm);
+            if kept_b == Some(true) {
+                gb *= 0.5;
             }
-            out[w].to = b;
-            out[w + 1].from = b;
+            kept_b = Some(true);
+        } else {
+            (b, gb) = (m, gm);
+            if kept_b == Some(false) {
+                ga *= 0.5;
+            }
+            kept_b = Some(false);
         }
     }
-    out
+    let status = |x: f64| statics::status(&at(x));
+    (b - a <= tol && status(a) == here && status(b) == next).then_some(b)
+}
+
+/// Where the status changes from `here` on `[a, b]` (status(a) = here != status(b)), by
+/// bisection of the status to `tol`: the upper end of the final bracket and its status.
+fn bisect_change(
+    (mut a, mut b): (f64, f64),
+    tol: f64,
+    here: JamStatus,
+    status: impl Fn(f64) -> JamStatus,
+) -> (f64, JamStatus) {
+    while b - a > tol {
+        let m = 0.5 * (a + b);
+        if status(m) == here { a = m } else { b = m }
+    }
+    (b, status(b))
 }
 
 /// Runs of equal status in `along` (sorted by value), each change placed half-way.
