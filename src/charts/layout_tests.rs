@@ -142,7 +142,11 @@ fn fig7c_legend_names_theta_lines_only_when_drawn() {
 /// A title of the longest length a scene takes (200 characters).
 fn long_title() -> String {
     let words = "Jam point of a 25 mm steel shaft pushed by a gripper finger, ";
-    let t: String = words.chars().cycle().take(spec::MAX_TITLE_CHARS).collect();
+    let t: String = words
+        .chars()
+        .cycle()
+        .take(crate::limits::MAX_TITLE_CHARS)
+        .collect();
     format!("title=\"{}\"", t.trim_end())
 }
 
