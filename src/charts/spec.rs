@@ -346,7 +346,7 @@ impl Scene {
                 if self.chart.marks_scene_value() {
                     return None;
                 }
-                let (axis, _) = axes.iter().find(|(_, q)| {
+                let (axis, _) = axes.iter().map(|(k, a)| (k, a.param)).find(|(_, q)| {
                     *q == param
                         || q.decl().sets.contains(&param.as_str())
                         || param.decl().sets.contains(&q.as_str())
@@ -372,7 +372,7 @@ impl Scene {
             .chart
             .param_axes()
             .into_iter()
-            .find(|(_, q)| *q == GridParam::Mu)
+            .find(|(_, a)| a.param == GridParam::Mu)
             && p.mu_ground != p.mu_palm
         {
             return Err(Error::invalid(
