@@ -104,7 +104,7 @@ fn render_read_off_draws_the_users_point_on_every_map_and_sweep() {
 }
 
 /// A read-off whose point lies off a map draws nothing and names nothing in the legend (issue
-/// 18: a custom map's legend named read-off lines at mu = 0.40 that were not drawn).
+/// 18: a custom map's legend named read-off lines at mu = 0.40 that were not drawn), and warns.
 #[test]
 fn a_read_off_off_the_map_is_not_in_the_legend() {
     let dir = tempfile::tempdir().unwrap();
@@ -120,10 +120,43 @@ fn a_read_off_off_the_map_is_not_in_the_legend() {
         ],
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    // ... and says so: 20 N is left of fig7c's force axis.
+    assert!(
+        stderr(&o)
+            .contains("--read-off force_n=20 is off scene fig7c's chart.x_axis (force_n from"),
+        "{}",
+        stderr(&o)
+    );
     let svg = file(&dir.path().join("out"), "fig7c.svg");
     assert!(!svg.contains("read-off") && !svg.contains("3: "), "drawn");
     let doc: Value = serde_json::from_str(&file(&dir.path().join("out"), "fig7c.json")).unwrap();
     assert_eq!(doc["read_off"]["force_n"].as_f64(), Some(20.0));
+}
+
+/// `render fig3 --read-off mu=0.8` drew nothing and said nothing: 0.8 is off fig3's mu axis
+/// (0.1 to 0.5). It warns on stderr naming the read-off as typed and the axis' range, and
+/// still renders (exit 0); a value on the axis, or a key no axis varies, warns nothing.
+#[test]
+fn a_read_off_off_the_axis_warns_naming_the_axis_range() {
+    let dir = tempfile::tempdir().unwrap();
+    let render = |args: &[&str]| {
+        let mut a = vec!["render", "fig3", "--format", "svg"];
+        a.extend(args);
+        let o = jamchart(dir.path(), &a);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        stderr(&o)
+    };
+    let err = render(&["--read-off", "mu=0.8"]);
+    assert!(
+        err.contains(
+            "jamchart: warning: --read-off mu=0.8 is off scene fig3's chart.x_axis (mu from 0.1 to 0.5)"
+        ),
+        "{err}"
+    );
+    for ok in [["--read-off", "mu=0.3"], ["--read-off", "radius_mm=12"]] {
+        let err = render(&ok);
+        assert!(!err.contains("warning"), "{ok:?}: {err}");
+    }
 }
 
 /// `--read-off` takes a scene parameter and a value it accepts; anything else exits 2 naming

@@ -310,3 +310,77 @@ fn the_gallery_reads_the_universal_chart_and_contour_maps_off_as_solve_does() {
     assert!(((x_c - x) / x).abs() < 1e-3, "{c}");
     assert_eq!((num(c, "force_n"), num(c, "radius_mm")), (150.0, 12.0));
 }
+
+/// `vlocator`'s capacity for a symmetric V of `included_deg` under a load at `load_deg`, as
+/// the capacity map's scene sets the locator (mu 0.3, free rotation, load at the centre):
+/// P_max / W, or None when every load is held.
+fn vlocator_capacity(dir: &Path, included_deg: f64, load_deg: f64) -> Option<f64> {
+    let doc = json(&jamchart(
+        dir,
+        &[
+            "vlocator",
+            "--format",
+            "json",
+            "--mu",
+            "0.3",
+            "--included-angle",
+            &included_deg.to_string(),
+            "--load-angle",
+            &load_deg.to_string(),
+        ],
+    ));
+    let c = &doc["capacity"];
+    match c["unbounded"].as_bool().unwrap() {
+        true => None,
+        false => Some(c["p_max_over_w"].as_f64().unwrap()),
+    }
+}
+
+/// Issue 22: the V-locator's capacity map was a plain picture in the gallery (no read-off).
+/// In Chromium, its read-off at sampled cells gives `jamchart vlocator`'s P_max / W to the
+/// embedded 7 digits, between samples within 1 % (the map is read bilinearly between cells
+/// 2 deg apart), and "unbounded" where the V holds every load.
+#[test]
+fn the_gallery_reads_the_vlocator_capacity_map_off_as_vlocator_does() {
+    let Some((browser, dir, out)) = gallery_of(&["vlocator-capacity"]) else {
+        return;
+    };
+    // (included angle, load angle): on the embedded samples (every 2 deg) and between them.
+    let on = [(90.0, -30.0), (90.0, 0.0), (120.0, 20.0), (60.0, -50.0)];
+    let between = [(97.3, -31.7), (131.1, 11.3)];
+    let points: Vec<(f64, f64)> = on.iter().chain(&between).copied().collect();
+    let hook = points
+        .iter()
+        .map(|(g, p)| format!("vlocator-capacity:{g}:{p}"))
+        .collect::<Vec<_>>()
+        .join(";");
+    let url = format!("file://{}#readoff={hook}", out.join("index.html").display());
+    let dom = run_chromium(&browser, &url, &["--dump-dom"]);
+    assert!(
+        dom.contains("data-readoff=\"done\""),
+        "the hook did not run"
+    );
+    let read = pins(&dom, "vlocator-capacity");
+    assert_eq!(read.len(), points.len(), "{read:?}");
+    for (k, ((gamma, phi), r)) in points.iter().zip(&read).enumerate() {
+        assert_eq!(r["model"], "vlocator", "{r}");
+        let want = vlocator_capacity(dir.path(), *gamma, *phi);
+        let got = r["p_max_over_w"].as_f64();
+        assert_eq!(r["unbounded"], want.is_none(), "at ({gamma}, {phi}): {r}");
+        let (Some(want), Some(got)) = (want, got) else {
+            assert_eq!((want, got), (None, None), "at ({gamma}, {phi}): {r}");
+            continue;
+        };
+        let err = (got - want) / want;
+        eprintln!(
+            "vlocator-capacity at ({gamma}, {phi}): P_max/W {got:.6} (vlocator {want:.6}, error {err:+.2e})"
+        );
+        let tol = if k < on.len() { 1e-6 } else { 1e-2 };
+        assert!(err.abs() < tol, "at ({gamma}, {phi}): {r}");
+        let p_n = num(r, "p_max_n") / 9.806;
+        assert!(
+            ((p_n - got) / got).abs() < 1e-6,
+            "P_max in N is not W times P_max / W: {r}"
+        );
+    }
+}

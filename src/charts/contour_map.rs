@@ -119,8 +119,8 @@ impl super::kinds::Kind for ContourMapSpec {
         self.request(base).validate()
     }
 
-    fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridParam)> {
-        vec![("x_axis", self.x_axis.param), ("y_axis", self.y_axis.param)]
+    fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridAxis)> {
+        vec![("x_axis", self.x_axis), ("y_axis", self.y_axis)]
     }
 
     /// With the read-off, the chart marks the scene's values of both axes' parameters.

@@ -3,8 +3,8 @@
 //! CSS and one inline plain-JS script, nothing fetched: it opens from the folder (file://) in
 //! any browser.
 //!
-//! Charts with a read-off (jam maps, sweeps, the universal chart, contour maps) carry their [`super::readoff`] JSON beside the
-//! picture; the script (`gallery.js`) shows the values under the pointer with crosshair lines to
+//! Charts with a read-off (jam maps, sweeps, the universal chart, contour maps, the V-locator's
+//! capacity map) carry their [`super::readoff`] JSON beside the picture; the script (`gallery.js`) shows the values under the pointer with crosshair lines to
 //! the axes, and pins a copyable read-off on a click or tap.
 //!
 //! The page lists every chart in the folder, however many renders wrote it: each chart's section

@@ -72,8 +72,8 @@ impl super::kinds::Kind for JamMapSpec {
     const CELLS: bool = true;
     type Chart = JamMap;
 
-    fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridParam)> {
-        vec![("x_axis", self.x_axis.param), ("y_axis", self.y_axis.param)]
+    fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridAxis)> {
+        vec![("x_axis", self.x_axis), ("y_axis", self.y_axis)]
     }
 
     /// The read-off lines mark the scene's value of the x parameter.

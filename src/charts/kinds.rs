@@ -23,7 +23,7 @@ use super::{
 };
 use crate::config::read_section;
 use crate::error::Result;
-use crate::grid::GridParam;
+use crate::grid::GridAxis;
 
 /// A chart kind's `[chart]` settings: how they are checked and how they compute their chart.
 ///
@@ -35,9 +35,10 @@ pub(crate) trait Kind: Sized + DeserializeOwned + Serialize {
     /// The computed chart.
     type Chart;
 
-    /// The axes over scene parameters, as (key under `[chart]`, parameter): the scene checks
-    /// that a `mu` axis does not hide two different frictions. None by default.
-    fn param_axes(&self) -> Vec<(&'static str, GridParam)> {
+    /// The axes over scene parameters, as (key under `[chart]`, axis): the scene checks that a
+    /// `mu` axis does not hide two different frictions, `--read-off` that its value is on the
+    /// axis. None by default.
+    fn param_axes(&self) -> Vec<(&'static str, GridAxis)> {
         Vec::new()
     }
 
@@ -114,7 +115,7 @@ macro_rules! chart_kinds {
                 exts
             }
 
-            pub(crate) fn param_axes(&self) -> Vec<(&'static str, GridParam)> {
+            pub(crate) fn param_axes(&self) -> Vec<(&'static str, GridAxis)> {
                 match self {
                     $(ChartSpec::$variant(s) => Kind::param_axes(s),)+
                 }

@@ -36,7 +36,7 @@
 //! Beside the kinds: `axes` draws frames and ticks that `ticks` places, `colorbar` the colour bar of a
 //! filled map, `labels` words
 //! the axes and subtitles, `contours` maps the contour crate's geometry to plot space,
-//! `data` holds the data files, `readoff` what the gallery's read-off embeds (jam maps and
+//! `data` holds the data files, `readoff` what the gallery's read-off embeds (maps and
 //! sweeps: plotting areas as drawn, axes, data) and `gallery` writes `index.html`.
 
 pub(crate) mod axes;
@@ -153,6 +153,7 @@ impl Chart {
             Chart::Sweep(c) => c.read_off(frames),
             Chart::Universal(c) => c.read_off(frames),
             Chart::ContourMap(c) => c.read_off(frames),
+            Chart::VlocatorCapacity(c) => c.read_off(frames),
             _ => None,
         }
     }

@@ -57,6 +57,12 @@ pub const GRID_SAMPLES: usize = 101;
 /// A map's cells for the read-off: every k-th sample of each axis (the last one always), and
 /// per quantity its value at those cells, row by row with x fastest.
 pub fn grid(g: &crate::grid::GridResult, quantities: &[(&str, &dyn Fn(usize) -> Value)]) -> Value {
+    cells(&g.x_values, &g.y_values, quantities)
+}
+
+/// [`grid`] for any map whose cell (ix, iy) is at flat index `iy * xs.len() + ix` (the
+/// V-locator's capacity map has its own cells, not a [`crate::grid::GridResult`]).
+pub fn cells(xs: &[f64], ys: &[f64], quantities: &[(&str, &dyn Fn(usize) -> Value)]) -> Value {
     let picks = |n: usize| {
         let mut v: Vec<usize> = (0..n).step_by(n.div_ceil(GRID_SAMPLES).max(1)).collect();
         if v.last() != Some(&(n - 1)) {
@@ -64,18 +70,18 @@ pub fn grid(g: &crate::grid::GridResult, quantities: &[(&str, &dyn Fn(usize) -> 
         }
         v
     };
-    let (ixs, iys) = (picks(g.nx()), picks(g.ny()));
+    let (ixs, iys) = (picks(xs.len()), picks(ys.len()));
     let mut cells = serde_json::Map::new();
     for (name, at) in quantities {
         let values = iys
             .iter()
             .flat_map(|iy| ixs.iter().map(move |ix| (*ix, *iy)))
-            .map(|(ix, iy)| at(g.index(ix, iy)));
+            .map(|(ix, iy)| at(iy * xs.len() + ix));
         cells.insert(name.to_string(), Value::Array(values.collect()));
     }
     json!({
-        "x": ixs.iter().map(|i| g.x_values[*i]).collect::<Vec<_>>(),
-        "y": iys.iter().map(|i| g.y_values[*i]).collect::<Vec<_>>(),
+        "x": ixs.iter().map(|i| xs[*i]).collect::<Vec<_>>(),
+        "y": iys.iter().map(|i| ys[*i]).collect::<Vec<_>>(),
         "cells": cells,
     })
 }

@@ -106,8 +106,8 @@ fn statics_only() -> Vec<SweepLayer> {
 impl super::kinds::Kind for SweepSpec {
     type Chart = Sweep;
 
-    fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridParam)> {
-        vec![("axis", self.axis.param)]
+    fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridAxis)> {
+        vec![("axis", self.axis)]
     }
 
     /// With the read-off, the chart marks the scene's value of the swept parameter.

@@ -77,8 +77,8 @@ impl super::kinds::Kind for UniversalSpec {
     const CELLS: bool = true;
     type Chart = Universal;
 
-    fn param_axes(&self) -> Vec<(&'static str, GridParam)> {
-        vec![("x_axis", self.x_axis.param), ("y_axis", self.y_axis.param)]
+    fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridAxis)> {
+        vec![("x_axis", self.x_axis), ("y_axis", self.y_axis)]
     }
 
     /// The read-off lines mark the scene's friction and F / (m g).

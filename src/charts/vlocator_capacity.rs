@@ -15,7 +15,7 @@ use super::data::{CellAxes, axis_cells_csv, axis_cells_json};
 use super::legend::{self, LegendEntry, Swatch};
 use super::spec::Scene;
 use super::style::{self, INK, LineKind, PAPER};
-use super::{DataFile, grid_lines, grid_polygons};
+use super::{DataFile, grid_lines, grid_polygons, readoff};
 use crate::csv_out::Column;
 use crate::error::{Error, Result};
 use crate::grid::{Grid, GridAxis, LocatorParam};
@@ -220,6 +220,46 @@ impl VlocatorCapacity {
         axis_cells_csv(self.axes(), &self.columns())
     }
 
+    /// What the gallery's read-off needs (see [`super::readoff`]): the plotting area, the axes
+    /// and per cell P_max / W, P_max in N (null where every load is held) and whether the
+    /// capacity is unbounded, as `jamchart vlocator` names them (model `vlocator`: the exact
+    /// path of [`locator::capacity`]).
+    pub fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
+        let (x, y) = self.plot_axes();
+        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
+        let w = self.spec.locator.weight_n();
+        let over_w = &self.p_max_over_w;
+        let cells = readoff::cells(
+            &self.x_values,
+            &self.y_values,
+            &[
+                ("p_max_over_w", &|i| json!(over_w[i])),
+                ("p_max_n", &|i| json!(over_w[i].map(|v| v * w))),
+                ("unbounded", &|i| json!(over_w[i].is_none())),
+            ],
+        );
+        Some(json!({
+            "kind": "grid",
+            "model": "vlocator",
+            "x": readoff::axis(xa.param.as_str(), &x),
+            "panels": [readoff::panel(frames.first()?, readoff::axis(ya.param.as_str(), &y), None)],
+            "grid": cells,
+        }))
+    }
+
+    /// The drawn axes: included angle on x, load direction on y.
+    fn plot_axes(&self) -> (PlotAxis, PlotAxis) {
+        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
+        let x = PlotAxis::new(xa.min, xa.max, xa.scale, "included angle γ of the V (deg)");
+        let y = PlotAxis::new(
+            ya.min,
+            ya.max,
+            ya.scale,
+            "load direction φ (deg from +x; −90 pushes into the V, 0 sideways, 90 lifts)",
+        );
+        (x, y)
+    }
+
     fn axes(&self) -> CellAxes<'_> {
         [
             (self.spec.x_axis.param.as_str(), &self.x_values[..]),
@@ -233,14 +273,7 @@ impl VlocatorCapacity {
 
     /// Draws the map on `root`.
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
-        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
-        let x = PlotAxis::new(xa.min, xa.max, xa.scale, "included angle γ of the V (deg)");
-        let y = PlotAxis::new(
-            ya.min,
-            ya.max,
-            ya.scale,
-            "load direction φ (deg from +x; −90 pushes into the V, 0 sideways, 90 lifts)",
-        );
+        let (x, y) = self.plot_axes();
         let entries = self.legend();
         // Darker = holds more; the unbounded region stays white.
         let mut colors = style::band_colors(self.spec.levels_over_w.len() + 1);

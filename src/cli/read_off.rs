@@ -88,12 +88,36 @@ pub fn apply(scene: &mut Scene, read_offs: &[ReadOffArg]) -> Result<Vec<String>>
         })?;
     }
     scene.validate_chart()?;
-    Ok(match scene.chart.enable_read_off() {
-        true => Vec::new(),
-        false => vec![format!(
+    if !scene.chart.enable_read_off() {
+        return Ok(vec![format!(
             "scene {} ({}) draws no read-off; {typed} only sets the scene's values",
             scene.name,
             scene.chart.kind()
-        )],
-    })
+        )]);
+    }
+    Ok(off_the_axes(scene, read_offs))
+}
+
+/// One warning per read-off whose value lies off the chart's axis of its parameter (or of a
+/// parameter it sets: `mu` on a `mu_ground` axis): the chart draws no read-off there.
+fn off_the_axes(scene: &Scene, read_offs: &[ReadOffArg]) -> Vec<String> {
+    let axes = scene.chart.param_axes();
+    read_offs
+        .iter()
+        .filter_map(|r| {
+            let (key, a) = axes.iter().find(|(_, a)| {
+                a.param == r.param || r.param.decl().sets.contains(&a.param.as_str())
+            })?;
+            let (lo, hi) = (a.min.min(a.max), a.min.max(a.max));
+            (!(lo..=hi).contains(&r.value)).then(|| {
+                format!(
+                    "--read-off {r} is off scene {}'s chart.{key} ({} from {lo} to {hi}): \
+                     the chart draws no read-off; give a value on the axis or widen it \
+                     (--set chart.{key}.min=... / max=...)",
+                    scene.name,
+                    a.param.as_str(),
+                )
+            })
+        })
+        .collect()
 }
