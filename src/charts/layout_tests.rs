@@ -280,3 +280,28 @@ fn texts_at_the_smallest_size() {
         assert!(refused.is_err(), "{n}: {} px high is taken", h - 1);
     }
 }
+
+/// A scene without `[size]` gets 1000 x 800 px; once each kind had its minimum layout, a
+/// `vlocator_optimum` scene (at least 1000 px high) or a `stability` one (1200 px wide) written
+/// without `[size]` was refused for a size its author never wrote. The default now grows to the
+/// kind's minimum; a size the author wrote below it is still refused.
+#[test]
+fn a_scene_without_a_size_gets_its_kinds_minimum_layout() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = include_str!("../../charts/vlocator-optimum.toml")
+        .replace("[size]\nwidth_px = 1000\nheight_px = 1700\n", "");
+    assert!(
+        !text.contains("[size]"),
+        "the test's scene still sets a size"
+    );
+    let path = dir.path().join("optimum.toml");
+    std::fs::write(&path, &text).unwrap();
+    let scene = SceneSource::File(path.clone()).load(&[]).unwrap();
+    let (min_w, min_h) = super::spec::min_layout_px("vlocator_optimum");
+    assert_eq!(
+        (scene.size.width_px, scene.size.height_px),
+        (min_w.max(1000), min_h.max(800))
+    );
+    std::fs::write(&path, format!("{text}\n[size]\nheight_px = 900\n")).unwrap();
+    assert!(SceneSource::File(path).load(&[]).is_err());
+}

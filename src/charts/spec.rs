@@ -8,7 +8,7 @@
 //! [dynamics.series]                # overrides of the base's [dynamics.*] keys (scenes that simulate)
 //! after_jam_s = 0.3
 //! [min_norm]                       # overrides of the base's [min_norm] keys (scenes that solve QPs)
-//! [size]                           # picture size in px (default 1000 x 800)
+//! [size]                           # picture size in px (default 1000 x 800, or the kind's minimum)
 //! width_px = 1000
 //! height_px = 900
 //! scale = 1.0                      # text, lines, markers and margins enlarged together
@@ -90,6 +90,24 @@ pub fn min_layout_px(kind: &str) -> (u32, u32) {
 }
 
 impl Size {
+    /// The default width or height raised to chart kind `kind`'s minimum layout where that is
+    /// larger (a stability chart needs 1200 px wide): a scene without a `[size]` section must
+    /// draw, not be refused for a size its author never wrote. A size the author wrote that is
+    /// not the default is kept, and checked.
+    fn default_at_least(self, kind: &str) -> Size {
+        let (min_w, min_h) = min_layout_px(kind);
+        let d = Size::default();
+        let grow = |v: u32, default: u32, min: u32| match v == default {
+            true => v.max((f64::from(min) * self.scale).ceil() as u32),
+            false => v,
+        };
+        Size {
+            width_px: grow(self.width_px, d.width_px, min_w),
+            height_px: grow(self.height_px, d.height_px, min_h),
+            ..self
+        }
+    }
+
     /// Refuses a layout smaller than chart kind `kind` needs ([`MIN_LAYOUT_PX`]), naming the
     /// key that is short.
     fn check_for(&self, kind: &str) -> Result<()> {
@@ -374,7 +392,7 @@ fn parse_scene(
         params,
         min_norm,
         dynamics,
-        size: file.size,
+        size: file.size.default_at_least(chart.kind()),
         style: file.style,
         chart,
     };
