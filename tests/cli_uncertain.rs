@@ -109,8 +109,9 @@ fn the_shaft_job_is_one_command() {
 }
 
 /// `sweep` with a range draws the band's two edges and writes them as layers `band_earliest`
-/// and `band_latest` of the CSV: the closed form at the range's ends (here mu = 0.3 and 0.16,
-/// checked against `solve` at those points); a map of two axes refuses a range for now.
+/// and `band_latest` of the CSV, each in its own colour: the closed form at the range's ends
+/// (here mu = 0.3 and 0.16, checked against `solve` at those points); a map of two axes refuses
+/// a range for now.
 #[test]
 fn a_sweep_with_a_range_writes_the_bands_edges() {
     let dir = tempfile::tempdir().unwrap();
@@ -120,6 +121,12 @@ fn a_sweep_with_a_range_writes_the_bands_edges() {
     args.extend(["--mu", "0.16:0.3"]);
     let o = jamchart(dir.path(), &args);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    // The two edges are told apart by colour (and dash): once both were the construction
+    // lines' thin blue dash. Bluish green for the earliest jam, orange for the latest.
+    let svg = std::fs::read_to_string(dir.path().join("o/sweep_force_n.svg")).unwrap();
+    for colour in ["#009E73", "#E69F00"] {
+        assert!(svg.contains(colour), "no band edge in {colour}");
+    }
     let csv = std::fs::read_to_string(dir.path().join("o/sweep_force_n.csv")).unwrap();
     for (layer, mu) in [("band_earliest", "0.3"), ("band_latest", "0.16")] {
         let row = csv

@@ -124,6 +124,12 @@ pub enum LineKind {
     /// Dots, 2 px, reddish purple: a closed-form level drawn beside construction lines (fig5's
     /// r/mu beside its jam threshold, once both thin blue dashes).
     Level,
+    /// Dash-dot-like short dashes, 2 px, bluish green: the earliest-jam edge of an uncertain
+    /// input's band.
+    BandEarliest,
+    /// Long-gap dashes, 2 px, orange: the latest-jam edge of the band (once both edges were the
+    /// construction lines' thin blue dash, told apart by nothing).
+    BandLatest,
 }
 
 impl LineKind {
@@ -135,13 +141,19 @@ impl LineKind {
             LineKind::Dashed => OKABE_ITO[6],
             LineKind::Dotted => OKABE_ITO[5],
             LineKind::Level => OKABE_ITO[7],
+            LineKind::BandEarliest => OKABE_ITO[3],
+            LineKind::BandLatest => OKABE_ITO[1],
         }
     }
 
     /// The stroke width in px.
     pub fn width(self) -> u32 {
         match self {
-            LineKind::Solid | LineKind::Dashed | LineKind::Level => 2,
+            LineKind::Solid
+            | LineKind::Dashed
+            | LineKind::Level
+            | LineKind::BandEarliest
+            | LineKind::BandLatest => 2,
             LineKind::Dotted => 1,
         }
     }
@@ -153,6 +165,8 @@ impl LineKind {
             LineKind::Dashed => Some((10, 6)),
             LineKind::Dotted => Some((4, 4)),
             LineKind::Level => Some((2, 4)),
+            LineKind::BandEarliest => Some((6, 3)),
+            LineKind::BandLatest => Some((3, 6)),
         }
     }
 }

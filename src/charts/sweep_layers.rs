@@ -125,7 +125,7 @@ pub fn series(
 
 /// The band's two edges: the closed form at the earliest-jam corner and at the latest.
 pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &SweepBand) -> Result<Vec<Series>> {
-    let edge = |params, layer, which: &str| -> Result<Series> {
+    let edge = |params, layer, which: &str, line| -> Result<Series> {
         let at = Scene {
             params,
             ..scene.clone()
@@ -133,7 +133,7 @@ pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &SweepBand) -> Result<
         Ok(Series {
             layer,
             label: format!("{}: {which}", band.label),
-            style: SeriesStyle::Line(LineKind::Dotted),
+            style: SeriesStyle::Line(line),
             points: closed_form(spec, &at, |v, s| SeriesPoint {
                 status: Some(s.status),
                 ..point(v, s.x_jam_mm, s.theta_jam_deg)
@@ -143,8 +143,18 @@ pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &SweepBand) -> Result<
         })
     };
     Ok(vec![
-        edge(band.earliest, "band_earliest", "earliest jam")?,
-        edge(band.latest, "band_latest", "latest jam")?,
+        edge(
+            band.earliest,
+            "band_earliest",
+            "earliest jam",
+            LineKind::BandEarliest,
+        )?,
+        edge(
+            band.latest,
+            "band_latest",
+            "latest jam",
+            LineKind::BandLatest,
+        )?,
     ])
 }
 
