@@ -44,6 +44,11 @@ fn bad_ranges_exit_2_naming_the_flag() {
             "solve --mu normal(0.2,0.03) --samples 20000000",
             "invalid samples = 20000000 (flag --samples): the Monte Carlo sample count must be in [1, 10000000]",
         ),
+        // Once "invalid digit found in string", the standard library's words.
+        (
+            "solve --mu 0.1:0.3 --samples 1e9",
+            "1e9 is not a whole number >= 0 (write it out",
+        ),
         (
             "vlocator --load-angle normal(-90,5)",
             "give a range LOW:HIGH",

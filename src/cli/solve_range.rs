@@ -7,7 +7,7 @@ use std::fmt::Write;
 use clap::Args;
 use serde::Serialize;
 
-use super::args::{OutputFormat, parse_f64};
+use super::args::{OutputFormat, parse_count, parse_f64};
 use super::solve::SolveArgs;
 use crate::config::Config;
 use crate::error::{Error, Result};
@@ -31,7 +31,7 @@ pub struct DistArgs {
           default_value = "0.05,0.5,0.95")]
     pub quantiles: Vec<f64>,
     /// Monte Carlo samples where the answer is not exact.
-    #[arg(long, value_name = "N", long_help = samples_help())]
+    #[arg(long, value_name = "N", long_help = samples_help(), value_parser = parse_count)]
     pub samples: Option<u64>,
     /// Seed of the Monte Carlo samples: the same seed gives the same answer on any number of
     /// threads.

@@ -156,9 +156,7 @@ fn arg(d: &'static Decl, heading: Option<&'static str>, takers: &str) -> Arg {
         Kind::Count => {
             a.value_name(value_name(d))
                 .value_parser(|s: &str| -> Result<toml::Value, String> {
-                    let n: u64 = s.trim().parse().map_err(|_| {
-                        format!("{} is not a whole number >= 0", crate::error::cut(s))
-                    })?;
+                    let n = parse_count(s)?;
                     i64::try_from(n)
                         .map(toml::Value::Integer)
                         .map_err(|_| format!("{n} is too large"))
@@ -255,6 +253,17 @@ impl<S: FlagSet> clap::Args for Flags<S> {
     fn augment_args_for_update(cmd: Command) -> Command {
         Self::augment_args(cmd)
     }
+}
+
+/// Parses a count flag: a whole number >= 0, written out (`100000`, not `1e5`), with a message
+/// that says so instead of the standard library's "invalid digit found in string".
+pub fn parse_count(s: &str) -> std::result::Result<u64, String> {
+    s.trim().parse().map_err(|_| {
+        format!(
+            "{} is not a whole number >= 0 (write it out, e.g. 100000 for 1e5)",
+            crate::error::cut(s)
+        )
+    })
 }
 
 /// Parses a number flag, refusing text that overflows to infinity or underflows to zero, so that
