@@ -13,19 +13,7 @@ use jamchart::dynamics::{DynamicsParams, IntegratorSettings, Method, Verificatio
 use jamchart::uncertain::dist::{self, DistQuestion};
 use jamchart::uncertain::range;
 use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
-use jamchart::{ModelSpec, SceneParams, statics};
-
-/// The shaft, mu nominal.
-fn shaft() -> SceneParams {
-    SceneParams {
-        radius_mm: 12.5,
-        mass_kg: 0.4,
-        force_n: 40.0,
-        palm_length_mm: 80.0,
-        ..Default::default()
-    }
-    .with_mu(0.21)
-}
+use jamchart::{ModelSpec, statics};
 
 fn mu(value: Uncertain) -> UncertainSet {
     UncertainSet {
@@ -38,7 +26,7 @@ fn mu(value: Uncertain) -> UncertainSet {
 }
 
 fn main() {
-    let p = shaft();
+    let p = jamchart::uncertain::shaft_25mm();
     let box_mu = mu(Uncertain::Range { lo: 0.12, hi: 0.3 });
     let reps = 10_000;
     let point = median_s(15, || {

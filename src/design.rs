@@ -195,16 +195,7 @@ pub fn design(b: &DesignBox, x_target_mm: f64) -> Option<Design> {
 mod tests {
     use super::*;
 
-    fn shaft() -> SceneParams {
-        // The shaft: 25 mm (r = 12.5 mm), 0.4 kg, 40 N, 80 mm palm.
-        SceneParams {
-            radius_mm: 12.5,
-            mass_kg: 0.4,
-            force_n: 40.0,
-            palm_length_mm: 80.0,
-            ..SceneParams::default()
-        }
-    }
+    use crate::uncertain::shaft_25mm as shaft;
 
     fn with_mu(p: SceneParams, mu: f64, force_n: f64) -> SceneParams {
         SceneParams {

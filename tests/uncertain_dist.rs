@@ -10,14 +10,7 @@ use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
 
 /// The shaft with mu normal(0.2, 0.03) for both contacts.
 fn shaft() -> (SceneParams, UncertainSet) {
-    let p = SceneParams {
-        radius_mm: 12.5,
-        mass_kg: 0.4,
-        force_n: 40.0,
-        palm_length_mm: 80.0,
-        ..Default::default()
-    }
-    .with_mu(0.2);
+    let p = jamchart::uncertain::shaft_25mm().with_mu(0.2);
     let set = UncertainSet {
         inputs: vec![UncertainInput {
             name: "mu",

@@ -7,17 +7,8 @@ use jamchart::uncertain::range::{self, End};
 use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
 use jamchart::{JamStatus, SceneParams};
 
-/// The shaft: r 12.5 mm, 0.4 kg, 40 N, an 80 mm palm; mu nominal.
-fn shaft() -> SceneParams {
-    SceneParams {
-        radius_mm: 12.5,
-        mass_kg: 0.4,
-        force_n: 40.0,
-        palm_length_mm: 80.0,
-        ..Default::default()
-    }
-    .with_mu(0.21)
-}
+/// The shaft: r 12.5 mm, 0.4 kg, 40 N, an 80 mm palm; mu nominal 0.21.
+use jamchart::uncertain::shaft_25mm as shaft;
 
 fn input(name: &'static str, keys: &[&'static str], lo: f64, hi: f64) -> UncertainInput {
     UncertainInput {

@@ -44,6 +44,21 @@ use crate::error::{Error, Result};
 use crate::settings::Decl;
 pub(crate) use table::take;
 
+/// The worked example of issue 19: a 25 mm shaft (r = 12.5 mm) of 0.4 kg pushed with 40 N by an
+/// 80 mm palm, mu 0.21 at both contacts (the midpoint of the issue's 0.12 to 0.3). The one
+/// fixture of the range, distribution and `design` tests and the uncertainty benchmark; every
+/// other setting is the paper's default.
+pub fn shaft_25mm() -> crate::scene::SceneParams {
+    crate::scene::SceneParams {
+        radius_mm: 12.5,
+        mass_kg: 0.4,
+        force_n: 40.0,
+        palm_length_mm: 80.0,
+        ..Default::default()
+    }
+    .with_mu(0.21)
+}
+
 /// One input's uncertainty: a point, a range (worst case) or a distribution.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
