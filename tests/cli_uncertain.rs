@@ -113,38 +113,91 @@ fn the_shaft_job_is_one_command() {
     assert_eq!(v["uncertain"][0]["kind"], "range");
 }
 
-/// `sweep` with a range draws the band's two edges and writes them as layers `band_earliest`
-/// and `band_latest` of the CSV, each in its own colour: the closed form at the range's ends
-/// (here mu = 0.3 and 0.16, checked against `solve` at those points); a map of two axes refuses
+/// `sweep` with a range draws the band's two edges and shades the band between them, each
+/// edge in its own colour, and writes one CSV row of layer `band` per swept value with each
+/// corner's status, x_jam and theta_jam and the shaded interval: checked against `solve` with
+/// the same range at every sampled push (its earliest and latest corners), the shade running to
+/// the palm's end (x = L = 80 mm) where the latest jam lies past it. A map of two axes refuses
 /// a range for now.
 #[test]
 fn a_sweep_with_a_range_writes_the_bands_edges() {
     let dir = tempfile::tempdir().unwrap();
     let base = ["--radius", "12.5", "--mass", "0.4", "--palm-length", "80"];
-    let mut args = vec!["sweep", "force_n=20:100:5", "--out", "o", "--format", "svg"];
+    let mut args = vec!["sweep", "force_n=10:100:7", "--out", "o", "--format", "svg"];
     args.extend(base);
-    args.extend(["--mu", "0.16:0.3"]);
+    args.extend(["--mu", "0.15:0.3"]);
     let o = jamchart(dir.path(), &args);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     // The two edges are told apart by colour (and dash): once both were the construction
-    // lines' thin blue dash. Bluish green for the earliest jam, orange for the latest.
+    // lines' thin blue dash. Bluish green for the earliest jam, orange for the latest, the
+    // shade a light sky blue.
     let svg = std::fs::read_to_string(dir.path().join("o/sweep_force_n.svg")).unwrap();
-    for colour in ["#009E73", "#E69F00"] {
-        assert!(svg.contains(colour), "no band edge in {colour}");
+    for colour in ["#009E73", "#E69F00", "#CCE8F8"] {
+        assert!(svg.contains(colour), "no {colour} in the band");
     }
     let csv = std::fs::read_to_string(dir.path().join("o/sweep_force_n.csv")).unwrap();
-    for (layer, mu) in [("band_earliest", "0.3"), ("band_latest", "0.16")] {
-        let row = csv
-            .lines()
-            .find(|l| l.starts_with(&format!("{layer},60,")))
-            .unwrap_or_else(|| panic!("{layer} at F = 60 in\n{csv}"));
-        let x: f64 = row.split(',').nth(3).unwrap().parse().unwrap();
-        let mut solve = vec!["solve", "--force", "60", "--mu", mu, "--format", "json"];
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let rows: Vec<Vec<&str>> = csv
+        .lines()
+        .filter(|l| l.starts_with("band,"))
+        .map(|l| l.split(',').collect())
+        .collect();
+    assert_eq!(rows.len(), 7, "one band row per push\n{csv}");
+    let col = |row: &[&str], name: &str| -> String {
+        let i = header.iter().position(|h| *h == name).unwrap();
+        row[i].to_string()
+    };
+    let num = |s: String| -> Option<f64> { (!s.is_empty()).then(|| s.parse().unwrap()) };
+    let close = |a: f64, b: f64| (a - b).abs() < 1e-4;
+    let mut capped = 0;
+    for row in &rows {
+        let f = col(row, "force_n");
+        let mut solve = vec![
+            "solve", "--force", &f, "--mu", "0.15:0.3", "--format", "json",
+        ];
         solve.extend(base);
         let v = cli_util::json(&jamchart(dir.path(), &solve));
-        let want = v["results"][0]["x_jam_mm"].as_f64().unwrap();
-        assert!((x - want).abs() < 1e-4, "{layer}: {x} vs solve {want}");
+        let r = &v["results"][0];
+        for end in ["earliest", "latest"] {
+            let want = &r[end];
+            assert_eq!(
+                col(row, &format!("{end}_status")),
+                want["status"],
+                "F = {f}"
+            );
+            if want["status"] == "jams" {
+                let x = num(col(row, &format!("{end}_x_jam_mm"))).unwrap();
+                let t = num(col(row, &format!("{end}_theta_jam_deg"))).unwrap();
+                let (wx, wt) = (want["x_jam_mm"].as_f64(), want["theta_jam_deg"].as_f64());
+                assert!(
+                    close(x, wx.unwrap()) && close(t, wt.unwrap()),
+                    "{end} at F = {f}"
+                );
+            }
+        }
+        let lo = num(col(row, "band_x_jam_lo_mm")).unwrap();
+        let hi = num(col(row, "band_x_jam_hi_mm")).unwrap();
+        assert!(
+            close(lo, r["earliest"]["x_jam_mm"].as_f64().unwrap()),
+            "F = {f}"
+        );
+        match r["latest"]["status"].as_str() {
+            Some("jams") => assert!(close(hi, r["latest"]["x_jam_mm"].as_f64().unwrap())),
+            Some("beyond_reach") => {
+                capped += 1;
+                assert!(
+                    close(hi, 80.0),
+                    "shaded to {hi} mm at F = {f}, not the palm's end"
+                );
+            }
+            other => panic!("latest {other:?} at F = {f}"),
+        }
     }
+    assert!(
+        capped > 0 && capped < rows.len(),
+        "both kinds of row: {capped} of {} capped",
+        rows.len()
+    );
     let o = jamchart(
         dir.path(),
         &[
@@ -156,4 +209,51 @@ fn a_sweep_with_a_range_writes_the_bands_edges() {
         ],
     );
     assert_eq!(o.status.code(), Some(2));
+}
+
+/// A range given to a scene (`render fig7b --set mu=0.12:0.3`, or `mu = "0.12:0.3"` in a scene
+/// file's `[scene]`) was refused as "invalid type: string, expected f64". A sweep scene now
+/// draws it as its band (the same rows as `jamchart sweep --mu 0.12:0.3`, checked against
+/// `solve` at the range's ends); any other kind refuses it naming the setting as written and
+/// the sweep that draws it, and a range on the swept parameter itself is refused.
+#[test]
+fn a_range_given_to_a_scene_was_refused_as_an_invalid_type() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = ["render", "fig7b", "--set", "mu=0.12:0.3", "--out", "o"];
+    let o = jamchart(dir.path(), &[&args[..], &["--format", "svg"]].concat());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let file = "title = \"t\"\n[scene]\nmu = \"0.12:0.3\"\n[chart]\nkind = \"sweep\"\n\
+                axis = { param = \"force_n\", min = 50.0, max = 10000.0, count = 301, scale = \"log\" }\n";
+    std::fs::write(dir.path().join("s.toml"), file).unwrap();
+    let o = jamchart(
+        dir.path(),
+        &["render", "s.toml", "--out", "o", "--format", "svg"],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    for csv in ["o/fig7b.csv", "o/s.csv"] {
+        let csv = std::fs::read_to_string(dir.path().join(csv)).unwrap();
+        let band: Vec<&str> = csv.lines().filter(|l| l.starts_with("band,")).collect();
+        assert_eq!(band.len(), 301, "{csv}");
+        // At F = 50 N: earliest at mu = 0.3, latest at mu = 0.12 (the paper's other values).
+        let row: Vec<&str> = band[0].split(',').collect();
+        for (mu, x) in [("0.3", row[6]), ("0.12", row[9])] {
+            let solve = ["solve", "--force", "50", "--mu", mu, "--format", "json"];
+            let v = cli_util::json(&jamchart(dir.path(), &solve));
+            let want = v["results"][0]["x_jam_mm"].as_f64().unwrap();
+            let x: f64 = x.parse().unwrap();
+            assert!((x - want).abs() < 1e-4, "mu {mu}: {x} vs solve {want}");
+        }
+    }
+    let o = jamchart(
+        dir.path(),
+        &["render", "fig3", "--set", "mu=0.12:0.3", "--out", "o"],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    for part in ["jamchart: ", "--set mu", "jam_map", "kind = \"sweep\""] {
+        assert!(err.contains(part), "{part} in {err}");
+    }
+    let o = jamchart(dir.path(), &["render", "fig7b", "--set", "force_n=30:50"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("swept parameter"), "{}", stderr(&o));
 }

@@ -301,6 +301,10 @@ fn parse_scene(
     dir: &Path,
     settings: &[Setting],
 ) -> Result<Scene> {
+    // Ranges and distributions out first, each replaced by its nominal value; a sweep draws
+    // them as its band below.
+    let taken = super::scene_uncertain::take(text, settings)?;
+    let (text, settings) = (taken.text.as_deref().unwrap_or(text), &taken.settings[..]);
     // The file as written first, so that its own mistakes carry their line.
     let mut file: SceneFile = parse_toml(text, path)?;
     if !settings.is_empty() {
@@ -386,7 +390,7 @@ fn parse_scene(
         .and_then(|d: DynamicsParams| d.validate().map(|_| d))
         .map_err(|e| locate("dynamics", e))?;
     file.size.validate().map_err(|e| locate("size", e))?;
-    let scene = Scene {
+    let mut scene = Scene {
         name,
         title: file.title,
         params,
@@ -396,6 +400,7 @@ fn parse_scene(
         style: file.style,
         chart,
     };
+    super::scene_uncertain::attach(&mut scene, &taken)?;
     scene.validate_chart()?;
     Ok(scene)
 }

@@ -15,6 +15,7 @@ use super::models::Models;
 use super::readoff;
 use super::spec::Scene;
 use super::style::{self, LineKind, Marker};
+use super::sweep_band::{self, BandRow};
 use super::sweep_layers;
 use super::{DataFile, axis_label, scene_subtitle_with};
 use crate::csv_out::{Dec, dec, to_csv_with_header};
@@ -75,9 +76,11 @@ pub struct SweepSpec {
     /// false; `--set chart.read_off=true --set mu=0.27`).
     #[serde(default)]
     pub read_off: bool,
-    /// The band of an uncertain input (`sweep ... --mu 0.12:0.3`): the closed form at the
-    /// box's two extreme corners, drawn and written as layers `band_earliest` and
-    /// `band_latest` (default: none; the built-in scenes have none).
+    /// The band of an uncertain input (`sweep ... --mu 0.12:0.3`, or a range in a sweep
+    /// scene's `[scene]` or `--set`): the closed form at the box's two extreme corners, drawn
+    /// as two edges with the band shaded between them and written as one CSV row of layer
+    /// `band` per swept value ([`super::sweep_band`]) (default: none; the built-in scenes
+    /// have none).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub band: Option<SweepBand>,
 }
@@ -94,6 +97,20 @@ pub struct SweepBand {
     /// What the band spans, for the legend, e.g. `μ 0.12 to 0.3`.
     pub label: String,
 }
+
+/// The ten columns a band adds to a sweep's CSV ([`Sweep::band_data`]).
+const BAND_COLUMNS: [&str; 10] = [
+    "earliest_status",
+    "earliest_x_jam_mm",
+    "earliest_theta_jam_deg",
+    "latest_status",
+    "latest_x_jam_mm",
+    "latest_theta_jam_deg",
+    "band_x_jam_lo_mm",
+    "band_x_jam_hi_mm",
+    "band_theta_jam_lo_deg",
+    "band_theta_jam_hi_deg",
+];
 
 fn both_panels() -> Vec<SweepPanel> {
     vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg]
@@ -220,6 +237,8 @@ pub struct Sweep {
     series: Vec<Series>,
     /// The closed form at the scene's own value of the swept parameter, when read off.
     read_off: Option<(f64, JamStatus, SeriesPoint)>,
+    /// The shaded band of an uncertain input, one row per swept value (empty without one).
+    band: Vec<BandRow>,
 }
 
 impl Sweep {
@@ -310,8 +329,16 @@ impl Sweep {
         for l in &spec.layers {
             series.extend(sweep_layers::series(*l, spec, scene, models)?);
         }
+        let mut rows = Vec::new();
         if let Some(band) = &spec.band {
-            series.extend(sweep_layers::band(spec, scene, band)?);
+            let [earliest, latest] = sweep_layers::band(spec, scene, band)?;
+            rows = sweep_band::rows(
+                spec.axis.param,
+                &band.latest,
+                &earliest.points,
+                &latest.points,
+            );
+            series.extend([earliest, latest]);
         }
         let read_off = match (spec.read_off, spec.axis.param.get(&scene.params)) {
             (true, Some(v)) => {
@@ -332,18 +359,17 @@ impl Sweep {
             title: scene.title.clone(),
             series,
             read_off,
+            band: rows,
         })
     }
 
-    /// The data behind the chart: one CSV row per point of every series.
+    /// The data behind the chart: one CSV row per point of every series; with a band, its
+    /// edges as one row of layer `band` per swept value instead ([`Self::band_data`]).
     pub fn data(&self, _scene: &Scene) -> DataFile {
-        let header = [
-            "layer",
-            self.spec.axis.param.as_str(),
-            "status",
-            "x_jam_mm",
-            "theta_jam_deg",
-        ];
+        if !self.band.is_empty() {
+            return self.band_data();
+        }
+        let header = self.header();
         // The read-off, when asked for, as one more row of layer `read_off`.
         let read_off = self.read_off.iter().map(|(_, _, p)| ("read_off", p));
         let rows = self
@@ -362,6 +388,81 @@ impl Sweep {
                 )
             });
         DataFile::csv(to_csv_with_header(&header, rows))
+    }
+
+    /// The columns of every sweep's CSV.
+    fn header(&self) -> [&'static str; 5] {
+        [
+            "layer",
+            self.spec.axis.param.as_str(),
+            "status",
+            "x_jam_mm",
+            "theta_jam_deg",
+        ]
+    }
+
+    /// The CSV of a sweep with a band: the other layers' rows as without one, then one row of
+    /// layer `band` per swept value with each corner's status, x_jam and theta_jam and the
+    /// shaded interval (empty where nothing is shaded), in ten more columns. The columns the
+    /// band rows leave empty are the other layers' (and the other way round).
+    fn band_data(&self) -> DataFile {
+        let mut header = self.header().to_vec();
+        header.extend(BAND_COLUMNS);
+        let status = |p: &SeriesPoint| p.status.map_or("", JamStatus::as_str);
+        let ends = |i: Option<(f64, f64)>| (dec(i.map(|i| i.0)), dec(i.map(|i| i.1)));
+        let layers = self
+            .series
+            .iter()
+            .filter(|s| !s.layer.starts_with("band_"))
+            .flat_map(|ser| ser.points.iter().map(|p| (ser.layer, p)))
+            .chain(self.read_off.iter().map(|(_, _, p)| ("read_off", p)))
+            .map(|(layer, p)| {
+                let (x, t) = (dec(p.x_jam_mm), dec(p.theta_jam_deg));
+                let n = None;
+                (
+                    layer,
+                    Dec(p.at),
+                    status(p),
+                    x,
+                    t,
+                    "",
+                    n,
+                    n,
+                    "",
+                    n,
+                    n,
+                    n,
+                    n,
+                    n,
+                    n,
+                )
+            });
+        let band = self.band.iter().map(|r| {
+            let (e, l) = (&r.earliest, &r.latest);
+            let ((x0, x1), (t0, t1)) = (ends(r.x_jam_mm), ends(r.theta_jam_deg));
+            let (ex, et) = (dec(e.x_jam_mm), dec(e.theta_jam_deg));
+            let (lx, lt) = (dec(l.x_jam_mm), dec(l.theta_jam_deg));
+            let n = None;
+            let (es, ls) = (status(e), status(l));
+            (
+                "band",
+                Dec(r.at),
+                "",
+                n,
+                n,
+                es,
+                ex,
+                et,
+                ls,
+                lx,
+                lt,
+                x0,
+                x1,
+                t0,
+                t1,
+            )
+        });
+        DataFile::csv(to_csv_with_header(&header, layers.chain(band)))
     }
 
     /// What the gallery's read-off needs (see [`super::readoff`]): one plotting area of
@@ -404,10 +505,34 @@ impl Sweep {
         }))
     }
 
-    fn legend(&self) -> Vec<LegendEntry> {
-        let mut e: Vec<LegendEntry> = self.series.iter().map(|s| self.legend_entry(s)).collect();
+    pub(super) fn legend(&self) -> Vec<LegendEntry> {
+        let mut e: Vec<LegendEntry> = self
+            .series
+            .iter()
+            .filter(|s| self.drawn(s))
+            .map(|s| self.legend_entry(s))
+            .collect();
+        e.extend(self.band_entry());
         e.extend(self.read_off_entry());
         e
+    }
+
+    /// Whether series `s` has a value in one of the drawn panels: a legend never names a line
+    /// that is not drawn (the latest-jam edge of a band wholly past the palm's end kept an
+    /// entry, with no line anywhere).
+    fn drawn(&self, s: &Series) -> bool {
+        s.points.iter().any(|p| {
+            self.spec
+                .panels
+                .iter()
+                .any(|panel| panel.value(p).is_some())
+        })
+    }
+
+    /// The shaded band's legend entry, if anything is shaded.
+    fn band_entry(&self) -> Option<LegendEntry> {
+        let label = &self.spec.band.as_ref()?.label;
+        sweep_band::legend_entry(&self.band, label)
     }
 
     /// The read-off's legend entry when it is drawn (a legend never names a line that is not
@@ -499,7 +624,11 @@ impl Sweep {
         }
         let group = |heading: &str, series: Vec<&Series>| LegendGroup {
             heading: heading.into(),
-            entries: series.into_iter().map(|s| self.legend_entry(s)).collect(),
+            entries: series
+                .into_iter()
+                .filter(|s| self.drawn(s))
+                .map(|s| self.legend_entry(s))
+                .collect(),
         };
         Some(vec![
             group("this tool's models", ours),
@@ -507,11 +636,15 @@ impl Sweep {
         ])
     }
 
+    /// The panel's y axis over every series' values and the shaded band (which may run to the
+    /// palm's end, beyond every curve).
     fn panel_axis(&self, panel: SweepPanel) -> PlotAxis {
+        let shaded = self.band.iter().filter_map(|r| r.interval(panel));
         let vals: Vec<f64> = self
             .series
             .iter()
             .flat_map(|s| s.points.iter().filter_map(|p| panel.value(p)))
+            .chain(shaded.flat_map(|(lo, hi)| [lo, hi]))
             .collect();
         let lo = vals.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = vals.iter().copied().fold(f64::NEG_INFINITY, f64::max);
@@ -549,6 +682,8 @@ impl Sweep {
                 right: 40,
             };
             let chart = axes::build_chart(root, &x, &y, m)?;
+            // Under the grid and every curve: the band is the background the curves are read on.
+            sweep_band::draw(&chart, &self.band, *panel, (&x, &y))?;
             axes::draw_grid(&chart, &x, &y)?;
             let area = chart.plotting_area();
             for s in &self.series {

@@ -124,7 +124,7 @@ pub fn series(
 }
 
 /// The band's two edges: the closed form at the earliest-jam corner and at the latest.
-pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &SweepBand) -> Result<Vec<Series>> {
+pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &SweepBand) -> Result<[Series; 2]> {
     let edge = |params, layer, which: &str, line| -> Result<Series> {
         let at = Scene {
             params,
@@ -132,7 +132,8 @@ pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &SweepBand) -> Result<
         };
         Ok(Series {
             layer,
-            label: format!("{}: {which}", band.label),
+            // The band's own label is the shade's legend entry; an edge says which it is.
+            label: format!("band edge: {which}"),
             style: SeriesStyle::Line(line),
             points: closed_form(spec, &at, |v, s| SeriesPoint {
                 status: Some(s.status),
@@ -142,7 +143,7 @@ pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &SweepBand) -> Result<
             callout: None,
         })
     };
-    Ok(vec![
+    Ok([
         edge(
             band.earliest,
             "band_earliest",

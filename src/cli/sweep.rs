@@ -10,12 +10,11 @@ use super::args::{SceneArgs, parse_f64};
 use super::render::{RenderFormat, output_paths, write_rendered};
 use crate::charts::contour_map::ContourMapSpec;
 use crate::charts::spec::Size;
-use crate::charts::sweep::{SweepBand, SweepPanel, SweepSpec};
+use crate::charts::sweep::{SweepPanel, SweepSpec};
+use crate::charts::sweep_band;
 use crate::charts::sweep_layers::SweepLayer;
 use crate::charts::{self, ChartSpec, Scene, axis_label};
 use crate::error::{Error, Result};
-use crate::scene::SceneParams;
-use crate::uncertain::{Uncertain, UncertainSet};
 
 use crate::grid::{AxisScale, GridAxis, GridParam};
 use crate::models::ModelKind;
@@ -176,7 +175,7 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
                 panels: vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg],
                 layers: vec![SweepLayer::Statics, SweepLayer::Rigid],
                 read_off: a.read_off,
-                band: band(&config.scene, &uncertain, axis.param)?,
+                band: sweep_band::from_uncertain(&config.scene, &uncertain, axis.param)?,
             });
             let title = format!("Jam point against {}", axis_label(axis.param));
             (chart, format!("sweep_{}", axis.param.as_str()), title)
@@ -243,53 +242,6 @@ fn key_as_written(e: Error, a: &SweepArgs) -> Error {
         e => e,
     }
 }
-
-/// The band of the uncertain inputs along a sweep of `param`: the closed form at the box's two
-/// extreme corners (ranges at their ends; a distribution at its 5 % and 95 % quantiles, which
-/// is the exact quantile band for one input, as x_jam is monotone in it).
-fn band(p: &SceneParams, uncertain: &UncertainSet, param: GridParam) -> Result<Option<SweepBand>> {
-    if uncertain.is_empty() {
-        return Ok(None);
-    }
-    let swept = param.decl();
-    let mut edges = uncertain.clone();
-    for i in &mut edges.inputs {
-        let clash = i.keys.contains(&swept.key) || i.name == swept.key;
-        if clash || swept.sets.iter().any(|k| i.keys.contains(k)) {
-            return Err(Error::invalid(
-                i.name,
-                i.value,
-                format!(
-                    "it is the swept parameter {}; give it a single value",
-                    swept.key
-                ),
-            ));
-        }
-        if i.value.is_distribution() {
-            i.value = Uncertain::Range {
-                lo: i.value.quantile(BAND_QUANTILE),
-                hi: i.value.quantile(1.0 - BAND_QUANTILE),
-            };
-        }
-    }
-    let box_answer = crate::uncertain::range::closed_form(p, &edges);
-    let label: Vec<String> = edges
-        .inputs
-        .iter()
-        .map(|i| {
-            let (lo, hi) = i.value.ends();
-            format!("{} {lo:.4} to {hi:.4}", i.name)
-        })
-        .collect();
-    Ok(Some(SweepBand {
-        earliest: edges.apply(p, &box_answer.earliest.values),
-        latest: edges.apply(p, &box_answer.latest.values),
-        label: format!("band over {}", label.join(", ")),
-    }))
-}
-
-/// The quantile of a distributed input at the band's lower edge (5 %; 95 % at the upper).
-const BAND_QUANTILE: f64 = 0.05;
 
 pub fn run(a: &SweepArgs) -> Result<String> {
     let scene = scene(a).map_err(|e| key_as_written(e, a))?;
