@@ -246,14 +246,78 @@ fn a_range_given_to_a_scene_was_refused_as_an_invalid_type() {
     }
     let o = jamchart(
         dir.path(),
-        &["render", "fig3", "--set", "mu=0.12:0.3", "--out", "o"],
+        &["render", "fig7c", "--set", "mu=0.12:0.3", "--out", "o"],
     );
     assert_eq!(o.status.code(), Some(2));
     let err = stderr(&o);
-    for part in ["jamchart: ", "--set mu", "jam_map", "kind = \"sweep\""] {
+    for part in ["jamchart: ", "--set mu", "contour_map", "kind = \"sweep\""] {
         assert!(err.contains(part), "{part} in {err}");
     }
     let o = jamchart(dir.path(), &["render", "fig7b", "--set", "force_n=30:50"]);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("swept parameter"), "{}", stderr(&o));
+}
+
+/// A jam map with a range on an input not on its axes (fig3 over (mu, theta) with the mass
+/// 1 to 8 kg) shades the cells whose verdict depends on the mass as `uncertain`: checked cell by
+/// cell against the point maps at the range's ends (jam where both jam, slide where both
+/// slide, uncertain where they differ) and against point maps inside the range (3 and 5.5 kg),
+/// which agree with every cell the band calls jam or slide (the statics is monotone in the
+/// mass). A range on the map's own axis (mu) is refused.
+#[test]
+fn a_jam_map_with_a_range_shades_the_uncertain_region() {
+    let dir = tempfile::tempdir().unwrap();
+    let regions = |mass: &str| -> Vec<String> {
+        let set = format!("mass_kg={mass}");
+        let out = format!("m{}", mass.replace(':', "_"));
+        let args = [
+            "render",
+            "fig3",
+            "--set",
+            &set,
+            "--set",
+            "chart.x_axis.count=61",
+            "--set",
+            "chart.y_axis.count=61",
+            "--out",
+            &out,
+            "--format",
+            "svg",
+        ];
+        let o = jamchart(dir.path(), &args);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let csv = std::fs::read_to_string(dir.path().join(&out).join("fig3.csv")).unwrap();
+        let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+        let i = header.iter().position(|h| *h == "region").unwrap();
+        csv.lines()
+            .skip(1)
+            .map(|l| l.split(',').nth(i).unwrap().to_string())
+            .collect()
+    };
+    let band = regions("1:8");
+    let (lo, hi) = (regions("1"), regions("8"));
+    let inside = [regions("3"), regions("5.5")];
+    assert_eq!(band.len(), 61 * 61);
+    let mut uncertain = 0;
+    for (k, r) in band.iter().enumerate() {
+        let want = match (lo[k].as_str(), hi[k].as_str()) {
+            (a, b) if a == b => a,
+            ("jam", "slide") | ("slide", "jam") => "uncertain",
+            other => panic!("cell {k}: ends {other:?}"),
+        };
+        assert_eq!(r, want, "cell {k}");
+        if r == "uncertain" {
+            uncertain += 1;
+        } else {
+            for m in &inside {
+                assert_eq!(&m[k], r, "cell {k} inside the range");
+            }
+        }
+    }
+    assert!(uncertain > 0, "no uncertain cell");
+    let svg = std::fs::read_to_string(dir.path().join("m1_8/fig3.svg")).unwrap();
+    assert!(svg.contains("#F7F098"), "no uncertain fill");
+    let o = jamchart(dir.path(), &["render", "fig3", "--set", "mu=0.12:0.3"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("swept parameter mu"), "{}", stderr(&o));
 }

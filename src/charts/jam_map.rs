@@ -20,7 +20,8 @@ use super::readoff;
 use super::spec::Scene;
 use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
 use super::{
-    DataFile, axis_label, cells_csv, cells_json, grid_polygons, param_symbol, scene_subtitle,
+    DataFile, axis_label, cells_csv, cells_json, grid_lines, grid_polygons, param_symbol,
+    scene_subtitle,
 };
 use crate::csv_out::{Column, Num};
 use crate::error::{Error, Result};
@@ -59,7 +60,24 @@ pub struct JamMapSpec {
     /// regions is always the statics').
     #[serde(default)]
     pub model: ModelKind,
+    /// The band of an uncertain input not on the axes (`--set force_n=30:50`, or a range in
+    /// the scene's `[scene]`): the regions at the box's earliest-jam and latest-jam corners,
+    /// cells whose verdict differs between them shaded as their own class `uncertain`
+    /// ([`UNCERTAIN_FILL`], CSV `region = uncertain`), and the jam region's boundary at both
+    /// corners (default: none; the built-in scenes have none).
+    ///
+    /// Exact by monotonicity: at a cell (parameter, theta) the disc is held iff theta lies on
+    /// the jam side of theta_jam, and theta_jam is monotone in every uncertain input (the
+    /// proof is in [`crate::statics`]), so a cell's verdict at every value of the box lies
+    /// between its verdicts at the two corners.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub band: Option<super::sweep::SweepBand>,
 }
+
+/// The uncertain region of a jam map with a band: Okabe-Ito yellow (#F0E442) at 55 % on white,
+/// apart from the jam tint, white slide and grey beyond-reach in colour and between white and
+/// the jam tint in print (luma about 232).
+pub const UNCERTAIN_FILL: RGBColor = RGBColor(247, 240, 152);
 
 fn all_layers() -> Vec<JamMapLayer> {
     use JamMapLayer::*;
@@ -154,8 +172,15 @@ pub struct JamMap {
     beyond: Vec<bool>,
     /// The region beyond the palm's reach as rings in plot space.
     beyond_rings: Vec<Vec<(f64, f64)>>,
-    /// The region's cell status as written in the CSV: jam, slide or beyond_reach.
+    /// The region's cell status as written in the CSV: jam, slide, uncertain (a band's
+    /// corners disagree) or beyond_reach.
     region: Vec<&'static str>,
+    /// With a band: the region where the disc jams at some corner (drawn under the jam
+    /// rings, which are then those where it jams at both), as rings in plot space.
+    uncertain_rings: Vec<Vec<(f64, f64)>>,
+    /// With a band: the jam boundary (margin = 0) at its earliest-jam and latest-jam corners,
+    /// as polylines in plot space.
+    end_lines: [Vec<Vec<(f64, f64)>>; 2],
     /// The closed-form jam point at each x sample, (value, point).
     boundary: Vec<(f64, JamPoint)>,
     /// The read-off at the scene's own x value.
@@ -172,23 +197,52 @@ impl JamMap {
             true => Some(grid::evaluate(&spec.request(&p), jam_point)?),
             false => None,
         };
-        let jam_rings = grid
-            .as_ref()
-            .map(|g| jam_rings(g, spec))
-            .unwrap_or_default();
+        // With a band, the margins at its two corners: the disc is held at every value of the
+        // box where the smaller is >= 0, at some where the larger is.
+        let corners = match (&spec.band, &grid) {
+            (Some(b), Some(_)) => Some((
+                grid::evaluate(&spec.request(&b.earliest), jam_point)?,
+                grid::evaluate(&spec.request(&b.latest), jam_point)?,
+            )),
+            _ => None,
+        };
+        let end_lines = match &corners {
+            Some((e, l)) => {
+                [e, l].map(|c| boundary_lines(c, c.margin_n.as_deref().unwrap_or_default(), spec))
+            }
+            None => Default::default(),
+        };
+        let corner_margins = corners.as_ref().and_then(|(e, l)| {
+            let (e, l) = (e.margin_n.as_deref()?, l.margin_n.as_deref()?);
+            let lo: Vec<f64> = e.iter().zip(l).map(|(a, b)| a.min(*b)).collect();
+            let hi: Vec<f64> = e.iter().zip(l).map(|(a, b)| a.max(*b)).collect();
+            Some((lo, hi))
+        });
+        let (jam_rings, uncertain_rings) = match (&grid, &corner_margins) {
+            (Some(g), Some((lo, hi))) => (jam_rings(g, lo, spec), jam_rings(g, hi, spec)),
+            (Some(g), None) => (
+                jam_rings(g, g.margin_n.as_deref().unwrap_or_default(), spec),
+                Vec::new(),
+            ),
+            _ => (Vec::new(), Vec::new()),
+        };
         let beyond = grid
             .as_ref()
             .map(|g| beyond_reach(g, &p, spec.x_axis.param))
             .unwrap_or_default();
         let beyond_rings = super::contours::mask_rings(&beyond, &spec.x_axis, &spec.y_axis);
         let margins = grid.as_ref().and_then(|g| g.margin_n.as_deref());
-        let region = beyond
-            .iter()
-            .zip(margins.unwrap_or_default())
-            .map(|(b, m)| match (b, *m >= 0.0) {
-                (true, _) => "beyond_reach",
-                (false, true) => "jam",
-                (false, false) => "slide",
+        let margins = margins.unwrap_or_default();
+        let (lo, hi) = match &corner_margins {
+            Some((lo, hi)) => (&lo[..], &hi[..]),
+            None => (margins, margins),
+        };
+        let region = (0..beyond.len())
+            .map(|i| match (beyond[i], lo[i] >= 0.0, hi[i] >= 0.0) {
+                (true, _, _) => "beyond_reach",
+                (false, true, _) => "jam",
+                (false, false, true) => "uncertain",
+                (false, false, false) => "slide",
             })
             .collect();
         let param = spec.x_axis.param;
@@ -213,6 +267,8 @@ impl JamMap {
             beyond,
             beyond_rings,
             region,
+            uncertain_rings,
+            end_lines,
             boundary,
             read_off,
         })
@@ -298,11 +354,35 @@ impl JamMap {
 
     fn legend(&self) -> Vec<LegendEntry> {
         let mut e = Vec::new();
+        let band = self.spec.band.as_ref().map(|b| b.label.as_str());
         if self.spec.has(JamMapLayer::Regions) {
             e.push(LegendEntry::new(
                 Swatch::Patch(JAM_FILL),
-                "jam: ground holds the disc (μR_n ≥ R_t)",
+                match band {
+                    Some(_) => "jam at every value: ground holds the disc (μR_n ≥ R_t)",
+                    None => "jam: ground holds the disc (μR_n ≥ R_t)",
+                },
             ));
+            if let Some(label) = band.filter(|_| !self.uncertain_rings.is_empty()) {
+                e.push(LegendEntry::new(
+                    Swatch::Patch(UNCERTAIN_FILL),
+                    format!("uncertain ({label}): jams at one end, slides at the other"),
+                ));
+                for (i, (kind, end)) in [
+                    (LineKind::BandEarliest, "earliest-jam"),
+                    (LineKind::BandLatest, "latest-jam"),
+                ]
+                .into_iter()
+                .enumerate()
+                {
+                    if !self.end_lines[i].is_empty() {
+                        e.push(LegendEntry::new(
+                            Swatch::Line(kind),
+                            format!("jam boundary at the {end} end"),
+                        ));
+                    }
+                }
+            }
             e.push(LegendEntry::new(
                 Swatch::Patch(SLIDE_FILL),
                 "slide: the palm moves the disc",
@@ -362,6 +442,9 @@ impl JamMap {
         };
         let chart = axes::build_chart(root, &x, &y, margins)?;
         let area = chart.plotting_area();
+        for ring in &self.uncertain_rings {
+            area.draw(&Polygon::new(ring.clone(), UNCERTAIN_FILL.filled()))?;
+        }
         for ring in &self.jam_rings {
             area.draw(&Polygon::new(ring.clone(), JAM_FILL.filled()))?;
         }
@@ -369,6 +452,16 @@ impl JamMap {
             area.draw(&Polygon::new(ring.clone(), BEYOND_FILL.filled()))?;
         }
         axes::draw_grid(&chart, &x, &y)?;
+        // The jam boundary at the band's two ends: the outlines of the two regions.
+        let [earliest, latest] = &self.end_lines;
+        for (lines, kind) in [
+            (earliest, LineKind::BandEarliest),
+            (latest, LineKind::BandLatest),
+        ] {
+            for line in lines {
+                style::draw_line(area, line, kind, kind.color())?;
+            }
+        }
         let curve: Vec<(f64, f64)> = self
             .boundary
             .iter()
@@ -560,11 +653,25 @@ fn beyond_reach(g: &GridResult, base: &SceneParams, param: GridParam) -> Vec<boo
         .collect()
 }
 
-/// The rings of the region where the margin grid `g` is >= 0, in plot space.
-fn jam_rings(g: &GridResult, spec: &JamMapSpec) -> Vec<Vec<(f64, f64)>> {
-    let Some(margin) = &g.margin_n else {
+/// The polylines where `margin` (a grid of `g`'s shape) is 0, in plot space.
+fn boundary_lines(g: &GridResult, margin: &[f64], spec: &JamMapSpec) -> Vec<Vec<(f64, f64)>> {
+    if margin.is_empty() {
         return Vec::new();
-    };
+    }
+    let builder = ContourBuilder::new(g.nx(), g.ny(), true);
+    // A single threshold on a finite grid cannot fail; no line is drawn if it ever did.
+    let lines = builder.lines(margin, &[0.0]).unwrap_or_default();
+    lines
+        .into_iter()
+        .flat_map(|l| grid_lines(&l.into_inner().0, &spec.x_axis, &spec.y_axis))
+        .collect()
+}
+
+/// The rings of the region where `margin` (a grid of `g`'s shape) is >= 0, in plot space.
+fn jam_rings(g: &GridResult, margin: &[f64], spec: &JamMapSpec) -> Vec<Vec<(f64, f64)>> {
+    if margin.is_empty() {
+        return Vec::new();
+    }
     let builder = ContourBuilder::new(g.nx(), g.ny(), true);
     // A single threshold on a finite grid cannot fail; no polygon is drawn if it ever did.
     let jam = builder.contours(margin, &[0.0]).unwrap_or_default();

@@ -77,17 +77,23 @@ pub(super) fn attach(scene: &mut Scene, taken: &Taken) -> Result<()> {
     } else {
         format!("scene.{}", first.name)
     };
+    let as_written = |e| match e {
+        Error::InvalidValue { value, reason, .. } => Error::InvalidValue {
+            key: written.clone(),
+            value,
+            reason,
+        },
+        e => e,
+    };
+    let band = |param| sweep_band::from_uncertain(&scene.params, &taken.set, param);
     match &mut scene.chart {
         ChartSpec::Sweep(spec) => {
-            spec.band = sweep_band::from_uncertain(&scene.params, &taken.set, spec.axis.param)
-                .map_err(|e| match e {
-                    Error::InvalidValue { value, reason, .. } => Error::InvalidValue {
-                        key: written.clone(),
-                        value,
-                        reason,
-                    },
-                    e => e,
-                })?;
+            spec.band = band(spec.axis.param).map_err(as_written)?;
+            Ok(())
+        }
+        // Its regions are the statics' margin, monotone in every uncertain input.
+        ChartSpec::JamMap(spec) => {
+            spec.band = band(spec.x_axis.param).map_err(as_written)?;
             Ok(())
         }
         chart => {
@@ -100,7 +106,8 @@ pub(super) fn attach(scene: &mut Scene, taken: &Taken) -> Result<()> {
                 format!(
                     "scene {} is a {} chart, which draws single values; a range or a \
                      distribution is drawn as a band on a sweep (kind = \"sweep\", or jamchart \
-                     sweep PARAM=MIN:MAX {flag} {})",
+                     sweep PARAM=MIN:MAX {flag} {}) and as an uncertain region on a jam map \
+                     (kind = \"jam_map\")",
                     scene.name,
                     chart.kind(),
                     first.value

@@ -164,7 +164,9 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
         return Err(Error::invalid(
             i.name,
             i.value,
-            "a map of two axes takes single values for now; sweep one axis to draw the band",
+            "a contour map of x_jam over two axes draws one value per cell, so it takes single \
+             values: sweep one axis to draw the band, or render a jam map scene (kind = \
+             \"jam_map\", e.g. jamchart render fig3 --set mass_kg=1:8) for the uncertain region",
         ));
     }
     let (chart, default_name, title) = match a.axes.as_slice() {
