@@ -214,7 +214,7 @@ impl System {
     /// damping part depends on theta_dot through delta_dot = -(v sin theta + s_B theta_dot):
     /// theta_dot solves theta_dot = -omega (1 - w(N(theta_dot))). The right side falls as
     /// theta_dot grows (a slower palm closes the contact slower), so the root in [-omega, 0] is
-    /// unique; it is found by bisection to round-off, and its gradient by the implicit
+    /// unique; it is found to round-off ([`rate_root`]), and its gradient by the implicit
     /// function theorem, d theta_dot (1 + omega w' c s_B) = omega w' dN|theta_dot.
     #[allow(clippy::too_many_arguments)]
     fn force_drive(
@@ -228,35 +228,15 @@ impl System {
         s_b: f64,
         g_sb: &Grad,
     ) -> (f64, Grad) {
-        let lim = self.normal_limit;
         let (damp, d_damp) = if delta > 0.0 {
             step(delta, 0.0, 0.0, self.impact.depth, self.impact.damping)
         } else {
             (0.0, 0.0)
         };
         let normal = |td: f64| el + damp * -(v * s + s_b * td);
-        let limit = |n: f64| step(n.max(0.0), (1.0 - self.band) * lim, 0.0, lim, 1.0);
-        let residual = |td: f64| td + self.omega * (1.0 - limit(normal(td)).0);
-        let (mut lo, mut hi) = (-self.omega, 0.0);
-        let mut td = if residual(lo) >= 0.0 {
-            lo
-        } else if residual(hi) <= 0.0 {
-            hi
-        } else {
-            loop {
-                let mid = 0.5 * (lo + hi);
-                if mid <= lo || mid >= hi {
-                    break mid;
-                }
-                if residual(mid) < 0.0 {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-        };
+        let mut td = rate_root(self.rate_residual(el, damp, v, s, s_b), -self.omega, 0.0);
         let n = normal(td);
-        let (w, dw) = limit(n);
+        let (w, dw) = self.limit(n);
         td = -self.omega * (1.0 - w);
         if n <= 0.0 || dw == 0.0 {
             return (td, [0.0; 3]);
@@ -270,6 +250,32 @@ impl System {
         (td, scale(k / (1.0 + k * damp * s_b), &g_n))
     }
 
+    /// The force drive's STEP w(N) of the normal force N (N) and its slope dw / dN.
+    fn limit(&self, n: f64) -> (f64, f64) {
+        let lim = self.normal_limit;
+        step(n.max(0.0), (1.0 - self.band) * lim, 0.0, lim, 1.0)
+    }
+
+    /// The force drive's equation for theta_dot as a residual theta_dot + omega (1 - w(N))
+    /// and its slope 1 + omega w'(N) c s_B (>= 1: N falls with theta_dot at the rate c s_B),
+    /// given the elastic force `el` (N), the damping `damp` (N s/mm), v, sin theta and s_B.
+    fn rate_residual(
+        &self,
+        el: f64,
+        damp: f64,
+        v: f64,
+        s: f64,
+        s_b: f64,
+    ) -> impl Fn(f64) -> (f64, f64) + '_ {
+        move |td: f64| {
+            let (w, dw) = self.limit(el + damp * -(v * s + s_b * td));
+            (
+                td + self.omega * (1.0 - w),
+                1.0 + self.omega * dw * damp * s_b,
+            )
+        }
+    }
+
     /// The right-hand side f(y) = (theta_dot, v, v_dot).
     pub fn rhs(&self, y: &[f64], dy: &mut [f64]) {
         let f = self.evaluate(y, None);
@@ -277,6 +283,85 @@ impl System {
         dy[1] = y[2];
         dy[2] = f.accel;
     }
+}
+
+/// The root of a nondecreasing `residual` (value and slope) in [lo, hi], to round-off: the
+/// float where its sign changes, as bisection finds it (lo if residual(lo) >= 0, hi if
+/// residual(hi) <= 0).
+///
+/// Why not plain bisection: it halves [-omega, 0] down to adjacent floats, some 60 to 110
+/// evaluations, and a force-driven simulation calls it at every evaluation of the
+/// right-hand side; it was 55 % of the `stability-matrix` chart's time. Newton steps from
+/// hi (bisection where a step would leave the bracket) take the bracket to its root in a
+/// few; once a step no longer moves, floats across the root are probed, so the bracket
+/// closes to adjacent floats as bisection's does. The answer is then bisection's last midpoint of that
+/// pair. Where the residual's rounding is monotone, this is bisection's answer bit for bit;
+/// where it is a staircase (1 - w(N) a few ulps, each ulp omega eps of residual) it may be
+/// another sign change within a few omega eps of it, as good a root (a test compares them).
+fn rate_root(residual: impl Fn(f64) -> (f64, f64), mut lo: f64, mut hi: f64) -> f64 {
+    if residual(lo).0 >= 0.0 {
+        return lo;
+    }
+    let (r_hi, slope_hi) = residual(hi);
+    if r_hi <= 0.0 {
+        return hi;
+    }
+    let mut x = hi - r_hi / slope_hi;
+    // Newton steps and probes before plain bisection takes over: a few reach round-off, and
+    // the budget bounds the loop whatever the residual's rounding does.
+    let mut steps_left = NEWTON_BUDGET;
+    let mut gallop = 1_i64;
+    loop {
+        if !(x > lo && x < hi) {
+            // A step out of the bracket (at w = 1 the residual is theta_dot itself, and
+            // Newton jumps to 0): bisection.
+            x = 0.5 * (lo + hi);
+        }
+        let (r, slope) = residual(x);
+        if r < 0.0 {
+            lo = x;
+        } else {
+            hi = x;
+        }
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            return mid;
+        }
+        let newton = x - r / slope;
+        x = if steps_left == 0 {
+            mid
+        } else if newton == x {
+            // Converged to x within the residual's round-off: probe across the root, one
+            // float away, then two, four, ... (the round-off of omega (1 - w) may hold the
+            // residual's sign over a few dozen floats), which closes the bracket where the
+            // sign changes.
+            steps_left -= 1;
+            let probe = floats_away(x, if r < 0.0 { gallop } else { -gallop });
+            gallop *= 2;
+            probe
+        } else {
+            if newton > lo && newton < hi {
+                steps_left -= 1;
+            }
+            gallop = 1;
+            newton
+        };
+    }
+}
+
+/// Newton steps and probes [`rate_root`] takes before it falls back to bisection.
+const NEWTON_BUDGET: u32 = 24;
+
+/// The float `n` floats above `x` (below for n < 0), for x and the result of one sign
+/// (f64::next_up needs Rust 1.86, above the crate's 1.85); zero steps to the smallest
+/// subnormal of the sign of n.
+fn floats_away(x: f64, n: i64) -> f64 {
+    if x == 0.0 {
+        return f64::from_bits(1).copysign(n as f64);
+    }
+    // Up is one more in the bits of a positive x, one less in those of a negative one.
+    let n = if x > 0.0 { n } else { -n };
+    f64::from_bits(x.to_bits().wrapping_add_signed(n))
 }
 
 impl OdeSystem for System {
@@ -340,6 +425,114 @@ mod tests {
             }
             eprintln!("{drive:?}: worst relative Jacobian error {worst:.2e}");
         }
+    }
+
+    /// Plain bisection of [lo, hi] to adjacent floats, with its number of evaluations: the
+    /// force drive's root finder before issue 21, the oracle of [`rate_root`].
+    fn bisection(residual: impl Fn(f64) -> (f64, f64), mut lo: f64, mut hi: f64) -> (f64, u32) {
+        if residual(lo).0 >= 0.0 {
+            return (lo, 1);
+        }
+        if residual(hi).0 <= 0.0 {
+            return (hi, 2);
+        }
+        let mut evals = 2;
+        loop {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                return (mid, evals);
+            }
+            evals += 1;
+            if residual(mid).0 < 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+    }
+
+    /// Issue 21, item 1: the force drive bisected its equation for theta_dot to round-off at
+    /// every evaluation of the right-hand side, some 60 to 110 halvings, which made
+    /// `System::evaluate` 58 % of the `stability-matrix` chart's time. Its Newton
+    /// replacement must give bisection's answer bit for bit, across the force limit's band
+    /// (N from 0.5 to 1.2 N_max), closing and opening, at several palm speeds, in fewer
+    /// evaluations; except where the residual is a staircase at round-off (w within a few
+    /// ulps of 1), where either finds a sign change within 4 eps omega of the other's.
+    #[test]
+    fn force_drive_rate_root_gives_bisections_answer() {
+        let scene = SceneParams::default();
+        let (mut cases, mut differ, mut interior) = (0, 0, 0);
+        let (mut evals_bisection, mut evals_newton) = (0_u64, 0_u64);
+        for omega_deg_s in [0.1, 30.0, 3600.0] {
+            let d = DynamicsParams {
+                drive: crate::dynamics::DriveSettings {
+                    mode: Drive::Force,
+                    omega_deg_s,
+                    ..Default::default()
+                },
+                ..Default::default()
+            };
+            let sys = System::new(&scene, &d);
+            let imp = sys.impact;
+            for k in 0..=70 {
+                let n_target = sys.normal_limit * (0.5 + 0.01 * k as f64);
+                let delta = (n_target / imp.stiffness).powf(1.0 / imp.exponent);
+                for deg in [20.0_f64, 44.0, 63.3, 85.0] {
+                    let theta = deg.to_radians();
+                    let x = sys.touching_x(theta) - delta / theta.sin();
+                    for v in [-20.0, -0.1, 0.0, 1e-3, 0.1, 5.0, 300.0] {
+                        let y = [theta, x, v];
+                        let (s, _) = theta.sin_cos();
+                        let el =
+                            imp.elastic(sys.radius + sys.offset + sys.radius * theta.cos() - x * s);
+                        let damp = step(delta, 0.0, 0.0, imp.depth, imp.damping).0;
+                        let s_b = sys.contact_distance(&y);
+                        let res = sys.rate_residual(el.0, damp, v, s, s_b);
+                        let (want, n_bis) = bisection(&res, -sys.omega, 0.0);
+                        let count = std::cell::Cell::new(0_u32);
+                        let got = rate_root(
+                            |td| {
+                                count.set(count.get() + 1);
+                                res(td)
+                            },
+                            -sys.omega,
+                            0.0,
+                        );
+                        cases += 1;
+                        // Interior roots only: at an end both stop after one or two.
+                        if n_bis > 2 {
+                            interior += 1;
+                            evals_bisection += u64::from(n_bis);
+                            evals_newton += u64::from(count.get());
+                        }
+                        if got.to_bits() != want.to_bits() {
+                            // Another sign change of a residual that is a staircase at
+                            // round-off (1 - w in steps of one ulp): as good a root.
+                            let worst = 4.0 * f64::EPSILON * sys.omega;
+                            assert!(
+                                (got - want).abs() <= worst && res(got).0.abs() <= worst,
+                                "{omega_deg_s} deg/s, N {n_target}, {deg} deg, v {v}: \
+                                 {got} vs bisection's {want}"
+                            );
+                            differ += 1;
+                        }
+                    }
+                }
+            }
+        }
+        eprintln!(
+            "{cases} states, {interior} with an interior root: bisection {:.1} evaluations \
+             each, rate_root {:.1}",
+            evals_bisection as f64 / interior as f64,
+            evals_newton as f64 / interior as f64
+        );
+        eprintln!("{differ} of {cases} differ from bisection's bits, each within 4 eps omega");
+        // The staircase is rare: bit for bit nearly everywhere.
+        assert!(differ * 100 < cases, "{differ} of {cases}");
+        assert!(
+            evals_newton * 2 < evals_bisection,
+            "{evals_newton} vs {evals_bisection}"
+        );
     }
 
     #[test]

@@ -92,7 +92,13 @@ pub(crate) struct LoadLine {
 
 impl LoadLine {
     pub(crate) fn new(p: &LocatorParams) -> Self {
-        let phi = p.load_angle_deg.to_radians();
+        Self::at(p, p.load_angle_deg)
+    }
+
+    /// The support line of `p` for a load in direction `load_angle_deg` (deg) instead of
+    /// p's own.
+    pub(crate) fn at(p: &LocatorParams, load_angle_deg: f64) -> Self {
+        let phi = load_angle_deg.to_radians();
         let (s, c) = phi.sin_cos();
         // A load at rim point psi has the moment r P sin(phi - psi) about the centre.
         let m = p
@@ -140,7 +146,15 @@ impl PlaneCone {
     /// T, so the cone is the image of {|T| <= mu1 N1, |T| <= mu2 N2}: cone{n1, n2,
     /// n1/mu1 + n2/mu2 +- (u1 + u2)} (the last two only when both mu > 0).
     pub(crate) fn of(p: &LocatorParams, f: &Frame) -> Option<Self> {
-        if self_locking(p) || (p.rotation == Rotation::Free && p.load_at_rim_deg.is_some()) {
+        if self_locking(p) {
+            return None;
+        }
+        Self::of_unlocked(p, f)
+    }
+
+    /// [`PlaneCone::of`] for a V known not to self-lock.
+    fn of_unlocked(p: &LocatorParams, f: &Frame) -> Option<Self> {
+        if p.rotation == Rotation::Free && p.load_at_rim_deg.is_some() {
             return None;
         }
         let mu = p.mu();
@@ -426,14 +440,46 @@ fn free_capacity(rows: &[(Affine, Row)], weight_n: f64) -> Capacity {
 /// Whether the V holds the part at load `load_n` N (of the direction and point of `p`), or
 /// how it leaves. A self-locking V holds every load.
 pub fn held_at(p: &LocatorParams, load_n: f64) -> Result<(), FailureMode> {
-    if self_locking(p) {
-        return Ok(());
+    PreparedV::new(p).held_at(load_n, p.load_angle_deg)
+}
+
+/// A V prepared to test many loads: whether it self-locks, its frame and its support cone,
+/// none of which depend on the load, computed once.
+///
+/// Why: a robust design tests each V at some 80 loads of a box (`robust::holds_sector`), and
+/// recomputing the V's sin, cos and tan per load was 80 % of the `vlocator-robust` chart's
+/// time. [`held_at`] goes through it, so both give the same bits.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PreparedV<'a> {
+    p: &'a LocatorParams,
+    /// The frame and the cone (None: free rotation with a rim load); None when it self-locks.
+    shape: Option<(Frame, Option<PlaneCone>)>,
+}
+
+impl<'a> PreparedV<'a> {
+    pub(crate) fn new(p: &'a LocatorParams) -> Self {
+        let shape = (!self_locking(p)).then(|| {
+            let f = p.frame();
+            (f, PlaneCone::of_unlocked(p, &f))
+        });
+        PreparedV { p, shape }
     }
-    let f = p.frame();
-    let line = LoadLine::new(p);
-    match PlaneCone::of(p, &f) {
-        Some(cone) => cone.held_at(&line, load_n),
-        None => free_held_at(&free_rows(p, &f, &line), load_n, p.weight_n() + load_n),
+
+    /// [`held_at`] for the load `load_n` N in direction `load_angle_deg` (deg), p's load
+    /// point kept.
+    pub(crate) fn held_at(&self, load_n: f64, load_angle_deg: f64) -> Result<(), FailureMode> {
+        let Some((f, cone)) = &self.shape else {
+            return Ok(());
+        };
+        let line = LoadLine::at(self.p, load_angle_deg);
+        match cone {
+            Some(cone) => cone.held_at(&line, load_n),
+            None => free_held_at(
+                &free_rows(self.p, f, &line),
+                load_n,
+                self.p.weight_n() + load_n,
+            ),
+        }
     }
 }
 

@@ -157,13 +157,10 @@ pub fn holds_sector(
     load_n: (f64, f64),
     angle_deg: (f64, f64),
 ) -> Result<(), DroppedLoad> {
+    // The V is the same for every load: its frame and cone once (exact::PreparedV).
+    let prepared = exact::PreparedV::new(v);
     let at = |p: f64, phi: f64| {
-        let q = LocatorParams {
-            load_n: p,
-            load_angle_deg: phi,
-            ..*v
-        };
-        exact::held_at(&q, p).map_err(|mode| DroppedLoad {
+        prepared.held_at(p, phi).map_err(|mode| DroppedLoad {
             load_n: p,
             load_angle_deg: phi,
             mode,

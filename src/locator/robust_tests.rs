@@ -207,3 +207,47 @@ fn an_empty_robust_window_is_empty_on_the_brute_force_grid() {
     };
     assert_eq!(robust_design(&base, &lighter).windows.len(), 1);
 }
+
+/// Issue 21, item 1: `holds_sector` recomputed the V's frame and support cone (sin, cos and
+/// tan) for each of its some 80 loads, 80 % of the `vlocator-robust` chart's time; it now
+/// prepares the V once (`exact::PreparedV`). A V prepared once must answer every load, of
+/// every direction and magnitude, exactly as the V prepared for that load alone: free and
+/// blocked, centre and rim loads, locking and not, asymmetric frictions.
+#[test]
+fn a_v_prepared_once_holds_each_load_as_one_prepared_for_it() {
+    let mut checked = 0;
+    for rotation in [Rotation::Free, Rotation::Blocked] {
+        for rim in [None, Some(30.0), Some(-120.0)] {
+            for gamma in [20.0, 60.0, 90.0, 140.0] {
+                for (mu_l, mu_r) in [(0.0, 0.0), (0.3, 0.3), (0.1, 0.7), (2.0, 2.0)] {
+                    let v = LocatorParams {
+                        rotation,
+                        load_at_rim_deg: rim,
+                        mu_left: mu_l,
+                        mu_right: mu_r,
+                        ..free_base()
+                    }
+                    .with_included_angle_same_tilt(gamma);
+                    let prepared = crate::locator::exact::PreparedV::new(&v);
+                    for phi in (-36..=36).map(|k| 5.0 * k as f64) {
+                        for p in [0.0, 0.5, 3.0, 9.0, 40.0, 1e3] {
+                            let q = LocatorParams {
+                                load_n: p,
+                                load_angle_deg: phi,
+                                ..v
+                            };
+                            assert_eq!(
+                                prepared.held_at(p, phi),
+                                held_at(&q, p),
+                                "{rotation:?} rim {rim:?} gamma {gamma} mu {mu_l}/{mu_r} \
+                                 phi {phi} P {p}"
+                            );
+                            checked += 1;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(checked, 2 * 3 * 4 * 4 * 73 * 6);
+}
