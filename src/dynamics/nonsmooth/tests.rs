@@ -267,3 +267,88 @@ fn the_lock_up_is_located_at_the_wedge_inside_its_step() {
         }
     }
 }
+
+/// The end's kind and the disc's position there, if it has one.
+fn end_x(end: &End) -> (std::mem::Discriminant<End>, Option<f64>) {
+    let x = match *end {
+        End::LockUp(l) => Some(l.x_mm),
+        End::AtRest { x, .. } | End::BeyondReach { x, .. } => Some(x),
+        End::PalmClosed | End::NoSolution { .. } | End::StepLimit { .. } => None,
+    };
+    (std::mem::discriminant(end), x)
+}
+
+/// Issue 21 (speed): cruising (a 10-step stride while the push is steady, `cruise`) must not
+/// change an answer. Over the design map's mu 0.1-0.8 and F 20-2000 N, both drives, a palm
+/// from 90 and from 40 deg, a short palm (the disc leaves it) and a fast one (30 and 900
+/// deg/s), every run ends the same way with and without cruising, the jam moves by less than
+/// 1e-5 of itself (the method's own error at the default steps is 2.6e-5 and more, and a rest
+/// or the palm's end is read at a step start, within a step's travel: 5e-6 of x_jam and more),
+/// and the runs take fewer steps.
+#[test]
+fn cruising_keeps_the_answers() {
+    let (mut worst, mut steps, mut steps_cruising) = (0.0_f64, 0_u64, 0_u64);
+    // The design map's cases: from 90 deg, a 150 mm palm, 30 deg/s.
+    let (mut map_steps, mut map_cruising) = (0_u64, 0_u64);
+    for drive in [Drive::Motion, Drive::Force] {
+        for mu in [0.1, 0.15, 0.2, 0.3, 0.45, 0.6, 0.8] {
+            for force_n in [20.0, 60.0, 200.0, 600.0, 2000.0] {
+                for (start_deg, palm_mm, omega) in [
+                    (90.0, 150.0, 30.0),
+                    (40.0, 150.0, 30.0),
+                    (90.0, 40.0, 30.0),
+                    (90.0, 150.0, 900.0),
+                ] {
+                    let scene = SceneParams {
+                        force_n,
+                        start_angle_deg: start_deg,
+                        palm_length_mm: palm_mm,
+                        ..SceneParams::default()
+                    }
+                    .with_mu(mu);
+                    let mut params = DynamicsParams::default();
+                    params.integrator.method = crate::dynamics::Method::Nonsmooth;
+                    params.drive.mode = drive;
+                    params.drive.omega_deg_s = omega;
+                    let plain = run_with(&scene, &params, None, false);
+                    let fast = run_with(&scene, &params, None, true);
+                    let (kind, x) = end_x(&plain.end);
+                    let (kind_c, x_c) = end_x(&fast.end);
+                    let case = format!(
+                        "{drive} drive, mu {mu}, F {force_n} N, from {start_deg} deg, palm {palm_mm} mm, {omega} deg/s"
+                    );
+                    assert_eq!(
+                        kind, kind_c,
+                        "{case}: {:?} against {:?}",
+                        plain.end, fast.end
+                    );
+                    assert_eq!(x.is_some(), x_c.is_some(), "{case}");
+                    if let (Some(a), Some(b)) = (x, x_c) {
+                        let rel = (a - b).abs() / a.abs();
+                        worst = worst.max(rel);
+                        assert!(
+                            rel <= 1e-5,
+                            "{case}: x_jam {a} against {b} cruising ({rel:.2e})"
+                        );
+                    }
+                    assert!(fast.steps <= plain.steps, "{case}");
+                    if start_deg == 90.0 && palm_mm == 150.0 && omega == 30.0 {
+                        map_steps += plain.steps;
+                        map_cruising += fast.steps;
+                    }
+                    steps += plain.steps;
+                    steps_cruising += fast.steps;
+                }
+            }
+        }
+    }
+    eprintln!(
+        "cruising: x_jam within {worst:.2e} of the plain run; {steps} steps against \
+         {steps_cruising} ({:.1}x fewer), on the design map's cases {map_steps} against \
+         {map_cruising} ({:.1}x fewer)",
+        steps as f64 / steps_cruising as f64,
+        map_steps as f64 / map_cruising as f64
+    );
+    assert!(steps_cruising < steps);
+    assert!(3 * map_cruising < map_steps);
+}
