@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 
 #[path = "common/cli.rs"]
 mod cli_util;
-use cli_util::{jamchart, repo, stderr};
+use cli_util::{jamchart, kill_and_wait, repo, stderr};
 
 fn scenes_dir() -> String {
     repo().join("charts").display().to_string()
@@ -246,13 +246,7 @@ fn a_killed_render_leaves_no_temporary_file() {
             );
             std::thread::sleep(Duration::from_millis(20));
         }
-        let kill = Command::new("kill")
-            .args([format!("-{signal}"), child.id().to_string()])
-            .status()
-            .unwrap();
-        assert!(kill.success());
-        let status = child.wait().unwrap();
-        assert!(!status.success(), "SIG{signal}: {status:?}");
+        kill_and_wait(&mut child, signal);
         assert_eq!(names(&o), ["fig7b.svg"], "SIG{signal}");
     }
 }

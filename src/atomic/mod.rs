@@ -47,7 +47,10 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
 pub fn write_all(outputs: &[Output]) -> Result<()> {
     check_all(outputs.iter().map(|o| o.path))?;
     let created = create_parents(outputs)?;
-    let result = stage(outputs).and_then(Staged::commit);
+    let result = stage(outputs).and_then(|staged| {
+        pause_for_tests();
+        staged.commit()
+    });
     if result.is_err() {
         // Deepest first; a directory that is not empty (someone else wrote there) stays.
         for d in created.iter().rev() {
@@ -56,6 +59,26 @@ pub fn write_all(outputs: &[Output]) -> Result<()> {
     }
     cleanup::forget_dirs(&created);
     result
+}
+
+/// The environment variable of a test hook: milliseconds to wait between staging a set (its
+/// folders created, its temporaries written) and committing it, at most `MAX_PAUSE_MS`.
+/// `tests/cli_hardening3.rs` sends a signal in that window, which a render otherwise passes
+/// through in about a millisecond (issue 23, class 9). Unset, empty or not a number: no pause.
+pub const PAUSE_VAR: &str = "JAMCHART_TEST_PAUSE_AFTER_STAGING_MS";
+
+/// 60 s: longer than any test waits for a signal to land, short enough that a stray setting
+/// cannot hold a write for long.
+const MAX_PAUSE_MS: u64 = 60_000;
+
+fn pause_for_tests() {
+    let ms = std::env::var(PAUSE_VAR)
+        .ok()
+        .and_then(|v| v.trim().parse::<u64>().ok())
+        .map_or(0, |ms| ms.min(MAX_PAUSE_MS));
+    if ms > 0 {
+        std::thread::sleep(std::time::Duration::from_millis(ms));
+    }
 }
 
 /// Creates the missing parent directories of the outputs; returns those it created, outermost

@@ -155,7 +155,7 @@ impl Stability {
             root,
             &self.title,
             "class of each answer against the case's physical reference (closed form at F; \
-             rigid limit for the motion drive)",
+             rigid limit for the motion drive; rigid dynamics for the force drive)",
         )?;
         let (left, top, bottom_room) = (440, 110, 90);
         let cell_w = (w - left - 20) / n_methods;

@@ -17,25 +17,34 @@ use crate::uncertain::UncertainSet;
 use crate::uncertain::dist::{self, DistAnswer, DistMethod, DistQuestion, Estimate};
 use crate::uncertain::range::{self, End, InputEnds, Method, RangeAnswer};
 
-/// Flags of `solve` for distributed inputs (ignored without one).
+/// Flags of `solve` for distributed inputs (ignored without one). Each takes a negative number
+/// as its value, to refuse it naming the flag (clap otherwise read `--samples -1` as an unknown
+/// flag `-1`).
 #[derive(Debug, Clone, Args)]
 #[command(next_help_heading = "Uncertain inputs")]
 pub struct DistArgs {
     /// Positions x (mm) for the probability that the disc jams before x (x_jam < x).
     ///
     /// With a distributed input (e.g. --mu normal(0.2,0.03)); a comma-separated list.
-    #[arg(long = "before", value_name = "MM", value_delimiter = ',', value_parser = parse_f64)]
+    #[arg(long = "before", value_name = "MM", value_delimiter = ',', value_parser = parse_f64,
+          allow_negative_numbers = true)]
     pub before_mm: Vec<f64>,
     /// Probabilities q in (0, 1) of the quantiles of x_jam printed with a distributed input.
     #[arg(long, value_name = "Q", value_delimiter = ',', value_parser = parse_f64,
-          default_value = "0.05,0.5,0.95")]
+          default_value = "0.05,0.5,0.95", allow_negative_numbers = true)]
     pub quantiles: Vec<f64>,
     /// Monte Carlo samples where the answer is not exact.
-    #[arg(long, value_name = "N", long_help = samples_help(), value_parser = parse_count)]
+    #[arg(long, value_name = "N", long_help = samples_help(), value_parser = parse_count,
+          allow_negative_numbers = true)]
     pub samples: Option<u64>,
     /// Seed of the Monte Carlo samples: the same seed gives the same answer on any number of
     /// threads.
-    #[arg(long, value_name = "N", default_value_t = 1)]
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 1,
+        allow_negative_numbers = true
+    )]
     pub seed: u64,
 }
 

@@ -121,8 +121,11 @@ fn markdown(r: &StabilityReport) -> String {
     let mut s = format!(
         "# Numerical stability on stiff and extreme cases\n\n\
          {} cases x {} methods in {:.1} s ({} threads). Each answer against the case's \
-         physical reference (closed_form at F; rigid, x_rigid, for the motion drive); x error \
-         within the allowance is correct.\n\n",
+         physical reference (closed_form at F; rigid, x_rigid, for the motion drive; \
+         rigid_dynamics, where the rigid disc comes to rest, for the force drive); x error \
+         within the allowance is correct. Allowances: 1e-4 of x_ref for the closed form and \
+         the min-norm program, 1e-3 for the nonsmooth method (its step), 3 % plus the \
+         contact's give for the regularised simulation (its friction's floor).\n\n",
         r.cases.len(),
         r.methods.len(),
         r.elapsed_s,

@@ -4,7 +4,8 @@
 //! rayon's global pool panics on first use when a thread cannot be spawned (`ulimit -u`, an
 //! address-space limit too small for the stacks), and a failed global pool cannot be built
 //! again. So the threads are started as a local pool first; only if that fails is the global
-//! pool made of the calling thread alone, which spawns nothing (issue 23, class 3).
+//! pool made of the calling thread alone, which spawns nothing (issue 23, class 3), once the
+//! threads that did start have exited (their stacks freed).
 
 use rayon::{ThreadPool, ThreadPoolBuilder};
 
@@ -41,13 +42,34 @@ impl Pool {
 /// [`MAX_THREADS`] is refused.
 pub(crate) fn start() -> Result<Pool> {
     let asked = requested(std::env::var(THREADS_VAR).ok().as_deref())?;
+    // The threads are spawned here rather than by rayon so that, when one cannot be, those that
+    // did start are joined before the command runs: rayon tells them to stop but does not wait,
+    // and their stacks (8 MiB each) held the address space the one-thread run then needed (an
+    // address-space limit aborted it in 3 runs of 5, issue 23 class 9).
+    let started = std::sync::Mutex::new(Vec::new());
     let threads = ThreadPoolBuilder::new()
         .num_threads(asked)
         .stack_size(WORKER_STACK_BYTES)
+        .spawn_handler(|thread| {
+            let mut b = std::thread::Builder::new().stack_size(WORKER_STACK_BYTES);
+            if let Some(name) = thread.name() {
+                b = b.name(name.to_owned());
+            }
+            let handle = b.spawn(|| thread.run())?;
+            started
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .push(handle);
+            Ok(())
+        })
         .build();
     match threads {
         Ok(pool) => Ok(Pool::Threads(pool)),
         Err(e) => {
+            // rayon has told them to stop; each returns once it has seen it.
+            for handle in started.into_inner().unwrap_or_else(|e| e.into_inner()) {
+                let _ = handle.join();
+            }
             let count = match asked {
                 0 => "a thread per core".to_string(),
                 n => format!("{n} threads"),

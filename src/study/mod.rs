@@ -17,8 +17,7 @@
 //!   reach, jammed at start, never jams); the rigid dynamics locks up there;
 //! * a force-limited palm (the simulation with the `force` drive): the converged rigid
 //!   dynamics, where the rigid disc comes to rest ([`rigid_dynamics_reference`], used by the
-//!   accuracy report and its map; the stability matrix still judges the force drive against
-//!   the closed form with an inertia allowance, see [`stability`]).
+//!   accuracy report, its map and the stability matrix).
 //!
 //! The closed forms are the paper's theory with the palm's face on the hinge line
 //! (`palm_offset_mm` = 0); inertia is not in them, which is why a dynamic drive has the rigid

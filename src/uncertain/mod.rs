@@ -270,11 +270,32 @@ impl Uncertain {
                          positive values"
                     ));
                 }
-                must(centre, mean)
+                must(centre, mean)?;
+                // Every value a draw or the box can take must be a valid value too:
+                // lognormal(0.2,1e300) reached mu = inf, where the closed form said theta_jam =
+                // 182.8 deg at x = -0.245 mm with exit 0 (issue 23, class 1, third run).
+                // A normal is truncated at 0 by design (its lowest value is 0 however wide);
+                // a lognormal's lowest value underflows to 0 when sigma is huge.
+                let lowest = matches!(self, Uncertain::LogNormal { .. }).then_some(REACH);
+                for p in lowest.into_iter().chain([1.0 - REACH]) {
+                    let v = self.quantile(p);
+                    if let Some(why) = decl.check.refuse(v) {
+                        let which = if p < 0.5 { "lowest" } else { "highest" };
+                        return refuse(format!(
+                            "the {which} value a sample can take is {v:e}, and each {why}; \
+                             narrow {spread}"
+                        ));
+                    }
+                }
+                Ok(())
             }
         }
     }
 }
+
+/// The most extreme probabilities a draw or an answer reads a distribution at: the smallest
+/// step of a double below 1, and its mirror.
+pub const REACH: f64 = f64::EPSILON / 2.0;
 
 /// The tail probability cut off at each end when a distribution stands for a box (0.1 %): the
 /// interval answer of a normal or lognormal input covers its 0.1 % to 99.9 % quantiles.
@@ -283,12 +304,16 @@ pub const TAIL: f64 = 1e-3;
 impl fmt::Display for Uncertain {
     /// As it is written: `0.12:0.3`, `normal(0.2,0.03)`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // Each number as short as it reads back: `1e300`, not its 301 digits (issue 23, class 8).
+        let t = crate::settings::number_text;
         match *self {
-            Uncertain::Point { value } => write!(f, "{value}"),
-            Uncertain::Range { lo, hi } => write!(f, "{lo}:{hi}"),
-            Uncertain::Uniform { lo, hi } => write!(f, "uniform({lo},{hi})"),
-            Uncertain::Normal { mean, sd } => write!(f, "normal({mean},{sd})"),
-            Uncertain::LogNormal { median, sigma } => write!(f, "lognormal({median},{sigma})"),
+            Uncertain::Point { value } => write!(f, "{}", t(value)),
+            Uncertain::Range { lo, hi } => write!(f, "{}:{}", t(lo), t(hi)),
+            Uncertain::Uniform { lo, hi } => write!(f, "uniform({},{})", t(lo), t(hi)),
+            Uncertain::Normal { mean, sd } => write!(f, "normal({},{})", t(mean), t(sd)),
+            Uncertain::LogNormal { median, sigma } => {
+                write!(f, "lognormal({},{})", t(median), t(sigma))
+            }
         }
     }
 }

@@ -26,6 +26,18 @@ pub fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
+/// Sends `SIG<signal>` (e.g. "TERM") to the running `child`, waits for it and asserts the
+/// signal ended it (a non-zero status).
+pub fn kill_and_wait(child: &mut std::process::Child, signal: &str) {
+    let sent = Command::new("kill")
+        .args([format!("-{signal}"), child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(sent.success());
+    let status = child.wait().unwrap();
+    assert!(!status.success(), "SIG{signal}: {status:?}");
+}
+
 /// The repository root (scene files, config/paper.toml).
 pub fn repo() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))

@@ -74,25 +74,27 @@
 //! step's travel past r/mu, +9e-5 ... +2.7e-4 at 0.01 deg):
 //!
 //! ```text
-//! step      mu = 0.15   0.3        0.45       steps (mu 0.15)   time, verified (mu 0.15)
+//! step      mu = 0.15   0.3        0.45       steps (mu 0.15)
 //! 0.3 deg   -2.7e-4     -6.4e-5    -3.0e-5      244
-//! 0.1 deg   -2.6e-5     -9.0e-6    -3.4e-6      730             0.27 ms (at 0.01 deg: 2.0 ms)
-//! 0.01 deg  -3.0e-7     -8.0e-8    -3.2e-8     7300
+//! 0.1 deg   -2.6e-5     -9.0e-6    -3.4e-6      730
+//! 0.01 deg  -3.0e-7     -8.0e-8    -3.2e-8     7294
 //! ```
+//!
+//! (printed by the test `the_step_table_of_the_module_docs`; run times are measured by
+//! `jamchart accuracy`, not quoted here)
 //!
 //! The steps in the table are the plain run's: without a time series a run cruises
 //! (`cruise`: 10 steps in one while the push is steady, far from the wedge and the drive's
 //! limit), which on the design map (mu 0.1-0.8, F 20-2000 N) takes 3-8 times fewer steps with
 //! the force drive and 1.2-4.5 times fewer with the motion drive, and moves no jam by more than
-//! 1e-5 of itself (`cruising_keeps_the_answers`).
+//! 1e-5 of itself (`cruising_keeps_the_answers`, which prints the figures).
 //!
 //! The error is of second order in the step: each step closes the palm's gap with the geometry
 //! of its start, so at its end the palm has turned into the disc by the second order of the
 //! step, and the disc lags its touching position by that much. Verification runs at twice the
 //! step; the difference (about three times the error) bounds it. The force drive's rest is not
 //! located inside its step: at 30 deg/s 0.1 deg is within 2e-5 of 0.01 deg, but a slow push
-//! (0.5 deg/s) lands 0.1-0.4 % off at 0.1 deg and is often flagged, hence its finer default (its
-//! runs take 0.9-1.6 ms, 1.3-2.5 ms verified).
+//! (0.5 deg/s) lands 0.1-0.4 % off at 0.1 deg and is often flagged, hence its finer default.
 //!
 //! # The disc free to roll
 //!
