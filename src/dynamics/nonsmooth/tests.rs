@@ -339,6 +339,8 @@ fn cruising_keeps_the_answers() {
     );
     assert!(steps_cruising < steps);
     assert!(3 * map_cruising < map_steps);
+}
+
 /// The motion drive's run at the defaults with `mu` at both contacts and the nonsmooth step
 /// `step_deg`: the scene, the run and its lock-up (a panic if it did not lock up).
 fn motion_lock_up(mu: f64, step_deg: f64) -> (SceneParams, Run, LockUp) {
