@@ -384,3 +384,169 @@ fn the_gallery_reads_the_vlocator_capacity_map_off_as_vlocator_does() {
         );
     }
 }
+
+/// `vlocator`'s JSON for `flags` (mass and gravity of the charts' default locator).
+fn vlocator(dir: &Path, flags: &[&str]) -> Value {
+    let mut args = vec!["vlocator", "--format", "json"];
+    args.extend(flags);
+    json(&jamchart(dir, &args))
+}
+
+/// Relative error of `got` against `want`.
+fn rel(got: f64, want: f64) -> f64 {
+    (got - want) / want
+}
+
+/// Issue 22: the V-locator's optimum chart (four stacked panels, direction above and P / W
+/// below) and robust chart were plain pictures in the gallery. In Chromium, the optimum's
+/// read-off on its samples gives `jamchart vlocator`'s gamma* and rho* for every friction to
+/// the embedded 7 digits (1 % between samples, where the curve is a straight line), none
+/// where the optimum lies at the search bound (a gap in the chart); a real click on the
+/// lowest panel reads that panel (its own x axis, P / W); the robust chart's read-off gives
+/// `vlocator`'s design over the same box (window, most robust angle, rho*).
+#[test]
+fn the_gallery_reads_the_vlocator_optimum_and_robust_charts_off_as_vlocator_does() {
+    let Some((browser, dir, out)) = gallery_of(&["vlocator-optimum", "vlocator-robust"]) else {
+        return;
+    };
+    let data: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("vlocator-optimum.json")).unwrap())
+            .unwrap();
+    let loc = &data["locator"];
+    let (mass, g) = (num(loc, "mass_kg"), num(loc, "gravity_m_s2"));
+    let w = mass * g;
+    let p_over_w = num(&data, "p_over_w_of_direction_sweep");
+    let loads: Vec<f64> = serde_json::from_value(data["load_over_w"].clone()).unwrap();
+    // (panel, x, on a sample): direction samples every 5 deg, P / W samples on a log axis.
+    let reads = [
+        (0, -90.0, true),
+        (0, 30.0, true),
+        (1, -45.0, true),
+        (2, loads[10], true),
+        (0, 32.5, false),
+    ];
+    let mut hook: Vec<String> = reads
+        .iter()
+        .map(|(p, x, _)| format!("vlocator-optimum@{p}:{x}"))
+        .collect();
+    hook.push("vlocator-robust:0.2;vlocator-robust:0.9".into());
+    // A real click on the lowest panel (rho* against P / W), at mu 0.3's curve.
+    let click = format!("click=vlocator-optimum@3:{}:1.5", loads[20]);
+    let url = format!(
+        "file://{}#readoff={}&{click}",
+        out.join("index.html").display(),
+        hook.join(";")
+    );
+    let dom = run_chromium(&browser, &url, &["--dump-dom"]);
+    assert!(
+        dom.contains("data-readoff=\"done\""),
+        "the hook did not run"
+    );
+    let read = pins(&dom, "vlocator-optimum");
+    assert_eq!(read.len(), reads.len() + 1, "{read:?}");
+    let (mass_s, g_s) = (mass.to_string(), g.to_string());
+    let mut worst_on: f64 = 0.0;
+    for ((p, x, on), r) in reads.iter().zip(&read) {
+        assert_eq!(num(r, "panel") as usize, *p, "{r}");
+        // Direction panels at P = p_over_w W; load panels sideways at the locator's direction.
+        let (param, load, angle) = match p {
+            0 | 1 => ("load_angle_deg", p_over_w * w, *x),
+            _ => ("load_over_w", x * w, num(loc, "load_angle_deg")),
+        };
+        assert_eq!(num(r, param), *x, "{r}");
+        for c in r["curves"].as_array().unwrap() {
+            let mu = num(c, "mu");
+            let doc = vlocator(
+                dir.path(),
+                &[
+                    "--mu",
+                    &mu.to_string(),
+                    "--load",
+                    &load.to_string(),
+                    "--load-angle",
+                    &angle.to_string(),
+                    "--mass",
+                    &mass_s,
+                    "--gravity",
+                    &g_s,
+                    "--rotation",
+                    "free",
+                ],
+            );
+            let o = &doc["optimum"];
+            if o["at_bound"].as_bool().unwrap() {
+                assert!(c["included_angle_deg"].is_null(), "at the bound: {c}");
+                continue;
+            }
+            let errs = [
+                rel(num(c, "included_angle_deg"), num(o, "included_angle_deg")),
+                rel(num(c, "safety_factor"), num(o, "safety_factor")),
+            ];
+            let err = errs[0].abs().max(errs[1].abs());
+            eprintln!(
+                "vlocator-optimum panel {p} at {param} {x:.4}, mu {mu}: gamma* {:.5} (vlocator \
+                 {:.5}), rho* {:.5} (vlocator {:.5}), worst error {err:.1e}",
+                num(c, "included_angle_deg"),
+                num(o, "included_angle_deg"),
+                num(c, "safety_factor"),
+                num(o, "safety_factor"),
+            );
+            let tol = if *on { 1e-6 } else { 1e-2 };
+            assert!(err < tol, "panel {p} at {x}, mu {mu}: {c} against {o}");
+            if *on {
+                worst_on = worst_on.max(err);
+            }
+        }
+    }
+    eprintln!("vlocator-optimum on samples: worst relative error {worst_on:.1e}");
+    // The click on the lowest panel read that panel, on its own x axis, within two displayed
+    // pixels (of a ~1000 px picture, log axis 0.02 to 10).
+    let c = read.last().unwrap();
+    assert_eq!(
+        (num(c, "panel"), &c["quantity"]),
+        (3.0, &Value::from("safety_factor")),
+        "{c}"
+    );
+    let off = (num(c, "load_over_w") / loads[20]).ln() / (10.0f64 / 0.02).ln();
+    eprintln!("click on panel 3: P / W off by {off:+.2e} of the axis");
+    assert!(off.abs() < 2e-3, "{c}");
+
+    // The robust chart: the design over the box of width w around mu 0.5, as vlocator gives it.
+    let robust = pins(&dom, "vlocator-robust");
+    assert_eq!(robust.len(), 2, "{robust:?}");
+    for r in &robust {
+        let c = &r["curves"][0];
+        let (lo, hi) = (num(c, "mu_lo"), num(c, "mu_hi"));
+        let doc = vlocator(
+            dir.path(),
+            &[
+                "--mu",
+                &format!("{lo}:{hi}"),
+                "--load",
+                "6:9",
+                "--load-angle",
+                "-10:10",
+                "--mass",
+                "1",
+                "--rotation",
+                "free",
+            ],
+        );
+        let d = &doc["design"];
+        let window = d["windows"].as_array().unwrap().first();
+        eprintln!("vlocator-robust at mu {lo}:{hi}: {c} against {d}");
+        assert_eq!(window.is_none(), c["window_lo_deg"].is_null(), "{c}");
+        assert!(rel(num(c, "lock_bound_deg"), num(d, "lock_bound_deg")).abs() < 1e-6);
+        if let Some(wd) = window {
+            assert!(rel(num(c, "window_lo_deg"), wd[0].as_f64().unwrap()).abs() < 1e-6);
+            assert!(rel(num(c, "window_hi_deg"), wd[1].as_f64().unwrap()).abs() < 1e-6);
+            let rb = &d["robust"];
+            assert!(rel(num(c, "robust_deg"), num(rb, "included_angle_deg")).abs() < 1e-6);
+            assert!(rel(num(c, "safety_factor"), num(rb, "safety_factor")).abs() < 1e-6);
+        }
+    }
+    assert!(
+        robust[1]["curves"][0]["window_lo_deg"].is_null(),
+        "the scene's window closes before w = 0.9: {robust:?}"
+    );
+}

@@ -4,8 +4,10 @@
 //! any browser.
 //!
 //! Charts with a read-off (jam maps, sweeps, the universal chart, contour maps, the V-locator's
-//! capacity map) carry their [`super::readoff`] JSON beside the picture; the script (`gallery.js`) shows the values under the pointer with crosshair lines to
-//! the axes, and pins a copyable read-off on a click or tap.
+//! capacity map, optimum and robust charts) carry their [`super::readoff`] JSON beside the
+//! picture; the script (`gallery.js`) shows the values under the pointer (of the panel under
+//! it, where stacked panels have their own x axes) with crosshair lines to the axes, and pins
+//! a copyable read-off on a click or tap.
 //!
 //! The page lists every chart in the folder, however many renders wrote it: each chart's section
 //! sits between `<!-- chart NAME -->` and `<!-- /chart -->`, and a render keeps the sections of

@@ -154,6 +154,8 @@ impl Chart {
             Chart::Universal(c) => c.read_off(frames),
             Chart::ContourMap(c) => c.read_off(frames),
             Chart::VlocatorCapacity(c) => c.read_off(frames),
+            Chart::VlocatorOptimum(c) => c.read_off(frames),
+            Chart::VlocatorRobust(c) => c.read_off(frames),
             _ => None,
         }
     }
