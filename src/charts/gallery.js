@@ -8,8 +8,10 @@
 // x = X (and y = Y; without it, on the jam map's boundary, the sweep's first curve or the middle
 // of a map's y axis) and pins
 // it; click=NAME:X:Y clicks the displayed picture where (X, Y) is drawn, through the same
-// pointer mapping as a user's click. NAME@P reads or clicks panel P (from 0, top to bottom;
-// panel 0 without it). The body gets data-readoff="done" after them.
+// pointer mapping as a user's click; aim=NAME:X:Y scrolls the displayed (X, Y) to the middle of
+// the window and writes its window coordinates to the body's data-aim ("x,y") for a driver's
+// real tap. NAME@P reads, clicks or aims at panel P (from 0, top to bottom; panel 0 without
+// it). The body gets data-readoff="done" after them.
 (function () {
   "use strict";
 
@@ -168,8 +170,9 @@
       var f = s.fixed[k];
       fixed.push(k + " = " + (Array.isArray(f) ? f.map(num).join(" to ") : num(f)));
     });
+    // One line per series: a phone shows them without a line break inside a curve's values.
     var text = s.param + " = " + num(x) + (fixed.length ? " (" + fixed.join(", ") + ")" : "") +
-      "  pointer " + q + " = " + num(y) + " | " + c.model + ", " + parts.join(" | ");
+      "  pointer " + q + " = " + num(y) + " | " + c.model + "\n" + parts.join("\n");
     return { text: text, panel: p, y: y, marks: marks, values: values };
   }
 
@@ -295,7 +298,7 @@
   window.addEventListener("load", function () {
     var hash = decodeURIComponent(location.hash.replace(/^#/, ""));
     hash.split("&").forEach(function (kv) {
-      var m = /^(readoff|click)=(.+)$/.exec(kv);
+      var m = /^(readoff|click|aim)=(.+)$/.exec(kv);
       if (!m) return;
       m[2].split(";").forEach(function (req) {
         var f = req.split(":"), name = f[0].split("@"), chart = charts[name[0]];
@@ -313,6 +316,12 @@
         var c = chart.data, g = c.panels[p].frame, box = chart.img.getBoundingClientRect();
         var fx = g.left + frac(xAxis(c, p), x) * (g.right - g.left);
         var fy = g.bottom - frac(c.panels[p].y, y) * (g.bottom - g.top);
+        if (m[1] === "aim") {
+          window.scrollBy(0, box.top + fy * box.height - window.innerHeight / 2);
+          box = chart.img.getBoundingClientRect();
+          document.body.setAttribute("data-aim", (box.left + fx * box.width) + "," + (box.top + fy * box.height));
+          return;
+        }
         chart.img.parentNode.dispatchEvent(new MouseEvent("click", { bubbles: true,
           clientX: box.left + fx * box.width, clientY: box.top + fy * box.height }));
       });

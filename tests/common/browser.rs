@@ -86,7 +86,11 @@ impl Browser {
                 args.extend(size.map(|(w, h)| format!("--window-size={w},{h}")));
                 self.chromium(url, &args)
             }
-            Kind::Firefox => Firefox::start(&self.path).load(url, size, false).0,
+            Kind::Firefox => {
+                let mut ff = Firefox::start(&self.path);
+                let context = ff.open(url, size);
+                ff.dom(&context)
+            }
         }
     }
 
@@ -104,10 +108,42 @@ impl Browser {
                 );
             }
             Kind::Firefox => {
-                let (_, shot) = Firefox::start(&self.path).load(url, Some(size), true);
-                std::fs::write(png, shot.expect("a screenshot")).unwrap();
+                let mut ff = Firefox::start(&self.path);
+                let context = ff.open(url, Some(size));
+                std::fs::write(png, ff.screenshot(&context)).unwrap();
             }
         }
+    }
+
+    /// Firefox only: loads `url` at a window of `size`, taps it with a finger (WebDriver BiDi
+    /// touch actions: pointer down and up, the browser makes the click) where the page's `aim`
+    /// hook put `data-aim` on the body, and returns the DOM and the value of the script
+    /// `probe` after the tap; saves a screenshot to `png`.
+    pub fn tap(&self, url: &str, size: (u32, u32), probe: &str, png: &Path) -> (String, Value) {
+        assert_eq!(self.kind, Kind::Firefox, "touch is driven over BiDi");
+        let mut ff = Firefox::start(&self.path);
+        let context = ff.open(url, Some(size));
+        let aim = ff.eval(&context, "document.body.getAttribute('data-aim')");
+        let (x, y) = aim
+            .as_str()
+            .and_then(|a| a.split_once(','))
+            .map(|(x, y)| (x.parse::<f64>().unwrap(), y.parse::<f64>().unwrap()))
+            .unwrap_or_else(|| panic!("no aim hook ran: {aim}"));
+        let finger = json!({
+            "type": "pointer", "id": "finger", "parameters": { "pointerType": "touch" },
+            "actions": [
+                { "type": "pointerMove", "x": x.round() as i64, "y": y.round() as i64, "origin": "viewport" },
+                { "type": "pointerDown", "button": 0 },
+                { "type": "pointerUp", "button": 0 },
+            ],
+        });
+        ff.call(
+            "input.performActions",
+            json!({ "context": context, "actions": [finger] }),
+        );
+        let probed = ff.eval(&context, probe);
+        std::fs::write(png, ff.screenshot(&context)).unwrap();
+        (ff.dom(&context), probed)
     }
 
     /// Runs headless chromium on `url` with `args`; panics with its stderr when it fails.
@@ -242,15 +278,10 @@ impl Firefox {
         r["result"]["value"].clone()
     }
 
-    /// Loads `url` at a viewport of `size`, waits until its load event has run (and the
-    /// gallery's hooks, if any: `data-readoff` on the body), and returns the DOM and, if
-    /// asked, a PNG of the viewport.
-    fn load(
-        mut self,
-        url: &str,
-        size: Option<(u32, u32)>,
-        shot: bool,
-    ) -> (String, Option<Vec<u8>>) {
+    /// Loads `url` in the first browsing context at a viewport of `size` and waits until its
+    /// load event has run (and the gallery's hooks, if any: `data-readoff` on the body);
+    /// returns the context.
+    fn open(&mut self, url: &str, size: Option<(u32, u32)>) -> String {
         let tree = self.call("browsingContext.getTree", json!({}));
         let context = tree["contexts"][0]["context"]
             .as_str()
@@ -274,16 +305,23 @@ impl Firefox {
             assert!(polls < MAX_POLLS, "the page's hooks never finished: {url}");
             std::thread::sleep(std::time::Duration::from_millis(50));
         }
-        let dom = self.eval(&context, "document.documentElement.outerHTML");
-        let png = shot.then(|| {
-            let r = self.call(
-                "browsingContext.captureScreenshot",
-                json!({ "context": context }),
-            );
-            base64::engine::general_purpose::STANDARD
-                .decode(r["data"].as_str().expect("screenshot data"))
-                .expect("base64 PNG")
-        });
-        (dom.as_str().unwrap_or_default().to_string(), png)
+        context
+    }
+
+    /// The DOM of `context`.
+    fn dom(&mut self, context: &str) -> String {
+        let dom = self.eval(context, "document.documentElement.outerHTML");
+        dom.as_str().unwrap_or_default().to_string()
+    }
+
+    /// A PNG of `context`'s viewport.
+    fn screenshot(&mut self, context: &str) -> Vec<u8> {
+        let r = self.call(
+            "browsingContext.captureScreenshot",
+            json!({ "context": context }),
+        );
+        base64::engine::general_purpose::STANDARD
+            .decode(r["data"].as_str().expect("screenshot data"))
+            .expect("base64 PNG")
     }
 }
