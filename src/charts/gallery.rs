@@ -47,7 +47,7 @@ pub fn index_html(entries: &[Entry], previous: Option<&str>, files: &[String]) -
         })
         .collect();
     let has_picture = |name: &str| {
-        ["png", "svg"]
+        ["png", "svg", "pdf"]
             .iter()
             .any(|ext| files.contains(&format!("{name}.{ext}")))
     };
