@@ -8,7 +8,10 @@
 // x = X (and y = Y; without it, on the jam map's boundary, the sweep's first curve or the middle
 // of a map's y axis) and pins
 // it; click=NAME:X:Y clicks the displayed picture where (X, Y) is drawn, through the same
-// pointer mapping as a user's click. The body gets data-readoff="done" after them.
+// pointer mapping as a user's click; aim=NAME:X:Y scrolls the displayed (X, Y) to the middle of
+// the window and writes its window coordinates to the body's data-aim ("x,y") for a driver's
+// real tap. NAME@P reads, clicks or aims at panel P (from 0, top to bottom; panel 0 without
+// it). The body gets data-readoff="done" after them.
 (function () {
   "use strict";
 
@@ -50,6 +53,9 @@
     }
     return [best, d];
   }
+
+  // Panel p's x axis: its own in a figure of panels whose x axes differ, else the chart's.
+  function xAxis(c, p) { return c.panels[p].x || c.x; }
 
   // The read-off of chart `c` at (x, y) in panel `p`: text and the points to mark.
   function readJamMap(c, x, y) {
@@ -136,7 +142,42 @@
     return { text: text, panel: 0, y: y, marks: [[0, x, y]], values: values };
   }
 
+  // A figure of stacked panels with their own x axes: every quantity of every series of the
+  // panel's sweep at x, straight between samples (as drawn); the pointer's y on the panel's
+  // quantity; the sweep's fixed inputs.
+  function readPanels(c, p, x, y) {
+    var pa = c.panels[p], s = c.sweeps[pa.sweep], q = pa.quantity;
+    var parts = [], marks = [], curves = [], fixed = [];
+    s.series.forEach(function (se) {
+      var v = {}, texts = [];
+      Object.keys(se).forEach(function (k) {
+        if (!Array.isArray(se[k])) { v[k] = se[k]; return; }
+        v[k] = interp(pa.x, null, s.at, se[k], x);
+        texts.push(k + " = " + num(v[k]));
+      });
+      var at = v[q];
+      if (at !== null && at !== undefined) {
+        marks.push([p, x, at]);
+        if (y === null) y = at;
+      }
+      curves.push(v);
+      parts.push(se.label + ": " + texts.join("  "));
+    });
+    var values = { model: c.model, panel: p, quantity: q, pointer: y, curves: curves };
+    values[s.param] = x;
+    Object.keys(s.fixed || {}).forEach(function (k) {
+      values[k] = s.fixed[k];
+      var f = s.fixed[k];
+      fixed.push(k + " = " + (Array.isArray(f) ? f.map(num).join(" to ") : num(f)));
+    });
+    // One line per series: a phone shows them without a line break inside a curve's values.
+    var text = s.param + " = " + num(x) + (fixed.length ? " (" + fixed.join(", ") + ")" : "") +
+      "  pointer " + q + " = " + num(y) + " | " + c.model + "\n" + parts.join("\n");
+    return { text: text, panel: p, y: y, marks: marks, values: values };
+  }
+
   function read(c, p, x, y) {
+    if (c.kind === "panels") return readPanels(c, p, x, y);
     if (c.kind === "jam_map") return readJamMap(c, x, y);
     if (c.kind === "grid") return readGrid(c, x, y);
     return readSweep(c, p, x, y);
@@ -156,7 +197,7 @@
     while (svg.firstChild) svg.removeChild(svg.firstChild);
     if (!r || r.y === null || r.y === undefined) return;
     var f = c.panels[r.panel].frame, ya = c.panels[r.panel].y;
-    var px = function (p, v) { var g = c.panels[p].frame; return 1000 * (g.left + frac(c.x, v) * (g.right - g.left)); };
+    var px = function (p, v) { var g = c.panels[p].frame; return 1000 * (g.left + frac(xAxis(c, p), v) * (g.right - g.left)); };
     var py = function (p, v) { var g = c.panels[p].frame; return 1000 * (g.bottom - frac(c.panels[p].y, v) * (g.bottom - g.top)); };
     var u = px(r.panel, x), w = py(r.panel, r.y);
     if (frac(ya, r.y) < 0 || frac(ya, r.y) > 1) return;
@@ -213,7 +254,7 @@
     for (var p = 0; p < c.panels.length; p++) {
       var f = c.panels[p].frame;
       if (fx >= f.left && fx <= f.right && fy >= f.top && fy <= f.bottom) {
-        return [p, value(c.x, (fx - f.left) / (f.right - f.left)),
+        return [p, value(xAxis(c, p), (fx - f.left) / (f.right - f.left)),
           value(c.panels[p].y, (f.bottom - fy) / (f.bottom - f.top))];
       }
     }
@@ -257,23 +298,30 @@
   window.addEventListener("load", function () {
     var hash = decodeURIComponent(location.hash.replace(/^#/, ""));
     hash.split("&").forEach(function (kv) {
-      var m = /^(readoff|click)=(.+)$/.exec(kv);
+      var m = /^(readoff|click|aim)=(.+)$/.exec(kv);
       if (!m) return;
       m[2].split(";").forEach(function (req) {
-        var f = req.split(":"), chart = charts[f[0]];
-        if (!chart) return;
+        var f = req.split(":"), name = f[0].split("@"), chart = charts[name[0]];
+        var p = name.length > 1 ? parseInt(name[1], 10) : 0;
+        if (!chart || !chart.data.panels[p]) return;
         var x = parseFloat(f[1]), y = f.length > 2 ? parseFloat(f[2]) : null;
         if (m[1] === "readoff") {
-          var r = read(chart.data, 0, x, y);
+          var r = read(chart.data, p, x, y);
           chart.pinned = [r, x];
           show(chart, r, x);
           pin(chart, r);
           return;
         }
-        // A real click at the displayed pixel of (x, y) in the first panel.
-        var c = chart.data, g = c.panels[0].frame, box = chart.img.getBoundingClientRect();
-        var fx = g.left + frac(c.x, x) * (g.right - g.left);
-        var fy = g.bottom - frac(c.panels[0].y, y) * (g.bottom - g.top);
+        // A real click at the displayed pixel of (x, y) in panel p.
+        var c = chart.data, g = c.panels[p].frame, box = chart.img.getBoundingClientRect();
+        var fx = g.left + frac(xAxis(c, p), x) * (g.right - g.left);
+        var fy = g.bottom - frac(c.panels[p].y, y) * (g.bottom - g.top);
+        if (m[1] === "aim") {
+          window.scrollBy(0, box.top + fy * box.height - window.innerHeight / 2);
+          box = chart.img.getBoundingClientRect();
+          document.body.setAttribute("data-aim", (box.left + fx * box.width) + "," + (box.top + fy * box.height));
+          return;
+        }
         chart.img.parentNode.dispatchEvent(new MouseEvent("click", { bubbles: true,
           clientX: box.left + fx * box.width, clientY: box.top + fy * box.height }));
       });

@@ -4,8 +4,10 @@
 //! any browser.
 //!
 //! Charts with a read-off (jam maps, sweeps, the universal chart, contour maps, the V-locator's
-//! capacity map) carry their [`super::readoff`] JSON beside the picture; the script (`gallery.js`) shows the values under the pointer with crosshair lines to
-//! the axes, and pins a copyable read-off on a click or tap.
+//! capacity map, optimum and robust charts) carry their [`super::readoff`] JSON beside the
+//! picture; the script (`gallery.js`) shows the values under the pointer (of the panel under
+//! it, where stacked panels have their own x axes) with crosshair lines to the axes, and pins
+//! a copyable read-off on a click or tap.
 //!
 //! The page lists every chart in the folder, however many renders wrote it: each chart's section
 //! sits between `<!-- chart NAME -->` and `<!-- /chart -->`, and a render keeps the sections of
@@ -45,7 +47,7 @@ pub fn index_html(entries: &[Entry], previous: Option<&str>, files: &[String]) -
         })
         .collect();
     let has_picture = |name: &str| {
-        ["png", "svg"]
+        ["png", "svg", "pdf"]
             .iter()
             .any(|ext| files.contains(&format!("{name}.{ext}")))
     };
@@ -83,7 +85,10 @@ pub fn index_html(entries: &[Entry], previous: Option<&str>, files: &[String]) -
          .plot { position: relative; display: inline-block; max-width: 100%; cursor: crosshair; }\n\
          .plot img { display: block; }\n\
          .plot svg.crosshair { position: absolute; left: 0; top: 0; width: 100%; height: 100%; pointer-events: none; }\n\
-         .live { font-family: monospace; font-size: 0.85em; min-height: 2.6em; margin: 0.3em 0; overflow-wrap: anywhere; }\n\
+         .live { font-family: monospace; font-size: 0.85em; min-height: 2.6em; margin: 0.3em 0; overflow-wrap: anywhere; \
+         white-space: pre-wrap; position: sticky; bottom: 0; background: #fff; border-top: 1px solid #ddd; padding: 0.2em 0; }\n\
+         ul.pins li { white-space: pre-wrap; margin: 0.3em 0; }\n\
+         ul.pins button { padding: 0.3em 0.9em; }\n\
          ul.pins { font-size: 0.85em; padding-left: 1.2em; }\n\
          ul.pins code { overflow-wrap: anywhere; }\n\
          </style>\n</head>\n<body>\n<h1>jamchart charts</h1>\n\
@@ -214,6 +219,8 @@ fn section(s: &mut String, e: &Entry) {
 
 /// A picture with a read-off: the picture under a crosshair overlay, its data as JSON (`</` is
 /// escaped so that no value can end the script element), the live read-off and the pinned ones.
+/// The live line sticks to the window's bottom while its figure is in view: on a phone a tall
+/// chart's read-off would otherwise be written below the picture, off the screen.
 fn read_off_figure(s: &mut String, name: &str, picture: &str, alt: &str, json: &str) {
     let json = json.replace("</", "<\\/");
     let _ = write!(
@@ -222,8 +229,9 @@ fn read_off_figure(s: &mut String, name: &str, picture: &str, alt: &str, json: &
          <div class=\"plot\"><img src=\"{picture}\" alt=\"{alt}\">\
          <svg class=\"crosshair\" viewBox=\"0 0 1000 1000\" preserveAspectRatio=\"none\"></svg></div>\n\
          <script type=\"application/json\" class=\"readoff-data\">{json}</script>\n\
-         <figcaption><p class=\"live\" id=\"readoff-{name}\" aria-live=\"polite\">Point at the chart \
-         to read it off; click or tap to pin the values.</p>\n<ul class=\"pins\"></ul></figcaption>\n\
+         <p class=\"live\" id=\"readoff-{name}\" aria-live=\"polite\">Point at the chart \
+         to read it off; click or tap to pin the values.</p>\n\
+         <figcaption><ul class=\"pins\"></ul></figcaption>\n\
          </figure>\n"
     );
 }

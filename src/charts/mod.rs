@@ -110,16 +110,22 @@ pub enum Formats {
     Png,
     /// SVG and PNG.
     Both,
+    /// PDF only (for print; made from the SVG drawing, see [`output::pdf`]).
+    Pdf,
 }
 
 impl Formats {
     /// Whether an SVG is wanted.
     pub fn svg(self) -> bool {
-        self != Formats::Png
+        matches!(self, Formats::Svg | Formats::Both)
     }
     /// Whether a PNG is wanted.
     pub fn png(self) -> bool {
-        self != Formats::Svg
+        matches!(self, Formats::Png | Formats::Both)
+    }
+    /// Whether a PDF is wanted.
+    pub fn pdf(self) -> bool {
+        self == Formats::Pdf
     }
 }
 
@@ -132,6 +138,8 @@ pub struct Rendered {
     pub svg: Option<Vec<u8>>,
     /// PNG bytes, if requested.
     pub png: Option<Vec<u8>>,
+    /// PDF bytes, if requested.
+    pub pdf: Option<Vec<u8>>,
     /// The data behind the chart.
     pub data: DataFile,
     /// A map's cells as long-format CSV (one row per cell), beside its JSON.
@@ -156,6 +164,8 @@ impl Chart {
             Chart::Universal(c) => c.read_off(frames),
             Chart::ContourMap(c) => c.read_off(frames),
             Chart::VlocatorCapacity(c) => c.read_off(frames),
+            Chart::VlocatorOptimum(c) => c.read_off(frames),
+            Chart::VlocatorRobust(c) => c.read_off(frames),
             _ => None,
         }
     }
@@ -182,7 +192,8 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
         || {
             rayon::join(
                 || -> Result<Option<(Vec<u8>, Vec<axes::PlotFrame>)>> {
-                    if !formats.svg() {
+                    // A PDF is made from the SVG drawing.
+                    if !formats.svg() && !formats.pdf() {
                         return Ok(None);
                     }
                     let (bytes, frames) = axes::record_frames(|| {
@@ -208,6 +219,11 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
         || (chart.data(scene), chart.cells()),
     );
     let (svg, png) = (svg?, png?);
+    let pdf = match &svg {
+        Some((bytes, _)) if formats.pdf() => Some(output::pdf(bytes).map_err(draw_err)?),
+        _ => None,
+    };
+    let svg = svg.filter(|_| formats.svg());
     // Both pictures are the same drawing at the same logical size: either one's frames do.
     let frames = png.as_ref().or(svg.as_ref()).map(|(_, f)| f.as_slice());
     let read_off = chart
@@ -217,6 +233,7 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
         name: scene.name.clone(),
         svg: svg.map(|(b, _)| b),
         png: png.map(|(b, _)| b),
+        pdf,
         data,
         cells,
         read_off,

@@ -8,14 +8,22 @@
 //!
 //! Shape (`kind` decides the data keys):
 //! ```text
-//! { "kind": "jam_map" | "sweep" | "grid", "x": AXIS,
-//!   "panels": [{ "frame": { "left", "top", "right", "bottom" }, "y": AXIS, "quantity"? }],
+//! { "kind": "jam_map" | "sweep" | "grid" | "panels", "x": AXIS,
+//!   "panels": [{ "frame": { "left", "top", "right", "bottom" }, "y": AXIS, "quantity"?,
+//!                "x"?: AXIS, "sweep"?: INDEX }],
 //!   jam_map: "model", "columns": { PARAM, "theta_jam_deg", "x_jam_mm", "status", "reach_deg" },
 //!            "disc": { "radius_mm", "palm_offset_mm", "palm_length_mm" }
 //!   sweep:   "series": [{ "label", "layer", "line", "at", "x_jam_mm", "theta_jam_deg" }]
-//!   grid:    "model", "grid": { "x": [..], "y": [..], "cells": { QUANTITY: [..] } } }
+//!   grid:    "model", "grid": { "x": [..], "y": [..], "cells": { QUANTITY: [..] } }
+//!   panels:  "model", "sweeps": [{ "param", "at": [..], "fixed": { KEY: VALUE },
+//!                                  "series": [{ "label", KEY: VALUE, QUANTITY: [..] }] }] }
 //! AXIS = { "param", "label", "min", "max", "log" }
 //! ```
+//! `panels` is a figure of stacked panels whose x axes differ (the V-locator's optimum and
+//! robust charts, no top-level `x`): each panel has its own x axis and reads the sweep
+//! `sweep` names; the page reads the panel under the pointer, every quantity of every series
+//! at the pointer's x (straight between samples, as the curves are drawn), and lists the
+//! sweep's fixed inputs beside them.
 //! A grid (the universal chart, contour maps) carries its cells, every k-th row and column so
 //! that at most [`GRID_SAMPLES`] per axis, row by row (x fastest); the page interpolates
 //! numbers bilinearly in plot space and gives a text (a status) of the nearest cell.
@@ -46,6 +54,15 @@ pub fn panel(frame: &PlotFrame, y: Value, quantity: Option<&str>) -> Value {
     if let Some(q) = quantity {
         p["quantity"] = q.into();
     }
+    p
+}
+
+/// A panel of a `panels` read-off: [`panel`] with its own x axis and the index of the sweep
+/// it reads.
+pub fn sweep_panel(frame: &PlotFrame, x: Value, y: Value, quantity: &str, sweep: usize) -> Value {
+    let mut p = panel(frame, y, Some(quantity));
+    p["x"] = x;
+    p["sweep"] = sweep.into();
     p
 }
 

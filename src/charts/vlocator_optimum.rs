@@ -7,13 +7,13 @@ use plotters::prelude::*;
 use serde::{Deserialize, Serialize};
 use serde_json::json;
 
-use super::DataFile;
-use super::axes::{DrawResult, PlotAxis};
+use super::axes::{DrawResult, PlotAxis, PlotFrame};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
 use super::vlocator_capacity::{STANDARD_V_DEG, locator_subtitle};
 use super::xy::{Curve, CurveStyle, Figure, Panel, Tag, decade_axis};
+use super::{DataFile, readoff};
 use crate::error::{Error, Result};
 use crate::grid::{AxisScale, Grid, GridAxis, LocatorParam};
 use crate::locator::{self, LocatorParams, Optimum};
@@ -196,6 +196,63 @@ impl VlocatorOptimum {
             "p_over_w_of_direction_sweep": self.spec.p_over_w,
             "load_angle_deg": self.directions, "load_over_w": self.loads,
             "curves": self.curves,
+        }))
+    }
+
+    /// What the gallery's read-off needs (see [`super::readoff`], kind `panels`): the four
+    /// frames, each with its x axis (direction above, P / W below), and per friction gamma*
+    /// and rho* at every sample as `jamchart vlocator` names them (`null` where the optimum
+    /// lies at the search bound, a gap in the chart).
+    pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+        let fig = self.figure();
+        if frames.len() != fig.panels.len() {
+            return None;
+        }
+        let (gamma, rho) = ("included_angle_deg", "safety_factor");
+        let params = [LocatorParam::LoadAngleDeg, LocatorParam::LoadOverW];
+        let panels: Vec<_> = fig
+            .panels
+            .iter()
+            .zip(frames)
+            .zip([gamma, rho, gamma, rho])
+            .enumerate()
+            .map(|(i, ((p, frame), q))| {
+                let x = readoff::axis(params[i / 2].as_str(), &p.x);
+                readoff::sweep_panel(frame, x, readoff::axis(q, &p.y), q, i / 2)
+            })
+            .collect();
+        let sweep = |at: &[f64], pick: fn(&MuCurves) -> &Vec<Optimum>| {
+            let series: Vec<_> = self
+                .curves
+                .iter()
+                .map(|c| {
+                    let drawn = |v: fn(&Optimum) -> f64| {
+                        readoff::column(pick(c).iter().map(|o| (!o.at_bound).then(|| v(o))))
+                    };
+                    json!({
+                        "label": format!("μ = {}", c.mu),
+                        "mu": c.mu,
+                        gamma: drawn(|o| o.included_angle_deg),
+                        rho: drawn(|o| o.safety_factor),
+                    })
+                })
+                .collect();
+            json!({ "at": at, "series": series })
+        };
+        let mut sweeps = [
+            sweep(&self.directions, |c| &c.by_direction),
+            sweep(&self.loads, |c| &c.by_load),
+        ];
+        sweeps[0]["fixed"] = json!({ "load_over_w": self.spec.p_over_w });
+        sweeps[1]["fixed"] = json!({ "load_angle_deg": self.spec.locator.load_angle_deg });
+        for (s, p) in sweeps.iter_mut().zip(params) {
+            s["param"] = p.as_str().into();
+        }
+        Some(json!({
+            "kind": "panels",
+            "model": "vlocator",
+            "panels": panels,
+            "sweeps": sweeps,
         }))
     }
 

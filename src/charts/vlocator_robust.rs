@@ -7,14 +7,15 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
+use serde_json::json;
 
-use super::DataFile;
-use super::axes::{DrawResult, PlotAxis};
+use super::axes::{DrawResult, PlotAxis, PlotFrame};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::LineKind;
 use super::vlocator_capacity::{STANDARD_V_DEG, locator_subtitle};
 use super::xy::{Curve, CurveStyle, Figure, Panel, Tag};
+use super::{DataFile, readoff};
 use crate::csv_out::{Dec, dec, to_csv};
 use crate::error::{Error, Result};
 use crate::grid::AxisScale;
@@ -171,6 +172,43 @@ impl VlocatorRobust {
             }
         });
         DataFile::csv(to_csv(rows))
+    }
+
+    /// What the gallery's read-off needs (see [`super::readoff`], kind `panels`): the frame,
+    /// and per width the friction range and the design as the CSV names them (the first
+    /// window; `null` where no V works), the box's loads as fixed inputs.
+    pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+        let fig = self.figure();
+        let (p, frame) = (fig.panels.first()?, frames.first()?);
+        // The pointer's y is read against the most robust angle (the crosshair lands on it).
+        let y = readoff::axis("included_angle_deg", &p.y);
+        let x = readoff::axis("mu_width", &p.x);
+        let panel = readoff::sweep_panel(frame, x, y, "robust_deg", 0);
+        let d = &self.designs;
+        let col = |v: &dyn Fn(&RobustDesign) -> Option<f64>| readoff::column(d.iter().map(v));
+        let boxes: Vec<RobustBox> = self.widths.iter().map(|&w| self.spec.box_of(w)).collect();
+        let series = json!({
+            "label": "robust design",
+            "mu_lo": readoff::column(boxes.iter().map(|b| b.mu.0)),
+            "mu_hi": readoff::column(boxes.iter().map(|b| b.mu.1)),
+            "lock_bound_deg": col(&|d| Some(d.lock_bound_deg)),
+            "window_lo_deg": col(&|d| d.windows.first().map(|w| w.0)),
+            "window_hi_deg": col(&|d| d.windows.first().map(|w| w.1)),
+            "robust_deg": col(&|d| d.robust.map(|r| r.included_angle_deg)),
+            "safety_factor": col(&|d| d.robust.map(|r| r.safety_factor).filter(|r| r.is_finite())),
+        });
+        let s = &self.spec;
+        Some(json!({
+            "kind": "panels",
+            "model": "vlocator",
+            "panels": [panel],
+            "sweeps": [{
+                "param": "mu_width",
+                "at": self.widths,
+                "fixed": { "mu_center": s.mu_center, "load_n": s.load_n, "load_angle_deg": s.load_angle_deg },
+                "series": [series],
+            }],
+        }))
     }
 
     /// Draws the panel.

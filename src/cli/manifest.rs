@@ -25,11 +25,11 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
         })
 }
 
-/// The hash of every picture rendered (SVG and PNG, as requested), by file name.
+/// The hash of every picture rendered (SVG, PNG and PDF, as requested), by file name.
 pub fn hashes(rendered: &[Rendered]) -> Hashes {
     let mut out = Hashes::new();
     for r in rendered {
-        for (ext, bytes) in [("svg", &r.svg), ("png", &r.png)] {
+        for (ext, bytes) in [("svg", &r.svg), ("png", &r.png), ("pdf", &r.pdf)] {
             if let Some(b) = bytes {
                 out.insert(format!("{}.{ext}", r.name), sha256_hex(b));
             }

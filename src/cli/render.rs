@@ -79,6 +79,8 @@ pub enum RenderFormat {
     Png,
     /// SVG and PNG.
     Both,
+    /// PDF only, for print: the SVG's drawing on one page (1 px = 1 pt), text as outlines.
+    Pdf,
 }
 
 impl From<RenderFormat> for Formats {
@@ -87,6 +89,7 @@ impl From<RenderFormat> for Formats {
             RenderFormat::Svg => Formats::Svg,
             RenderFormat::Png => Formats::Png,
             RenderFormat::Both => Formats::Both,
+            RenderFormat::Pdf => Formats::Pdf,
         }
     }
 }
@@ -188,6 +191,7 @@ pub fn output_paths(
     let mut exts = chart.data_extensions();
     exts.extend(formats.svg().then_some("svg"));
     exts.extend(formats.png().then_some("png"));
+    exts.extend(formats.pdf().then_some("pdf"));
     exts.iter()
         .map(|ext| out.join(format!("{name}.{ext}")))
         .collect()
@@ -246,6 +250,7 @@ fn files_of<'a>(out: &Path, r: &'a Rendered) -> Vec<(PathBuf, &'a [u8])> {
         ),
         ("svg", r.svg.as_ref()),
         ("png", r.png.as_ref()),
+        ("pdf", r.pdf.as_ref()),
     ];
     all.into_iter()
         .filter_map(|(ext, b)| Some((out.join(format!("{}.{ext}", r.name)), b?.as_slice())))

@@ -19,6 +19,9 @@ use crate::uncertain::UncertainSet;
 #[derive(Debug, Clone, Args)]
 pub struct VlocatorArgs {
     /// Included angle of a symmetric V in deg, in (0, 180) [default: 90 deg].
+    ///
+    /// With a range (a design over the box) it is your V, whose verdict is added (`given_v`);
+    /// left out, no V of your own is judged.
     #[arg(
         long,
         value_name = "DEG",
@@ -30,7 +33,8 @@ pub struct VlocatorArgs {
     /// Flank angles a1,a2 above the horizontal in deg (left, right).
     ///
     /// Each in [0, 180) with a1 + a2 < 180; above 90 a flank overhangs. The included angle
-    /// is 180 - a1 - a2 [default: 45,45]
+    /// is 180 - a1 - a2 [default: 45,45]. With a range it is your V, judged over the box
+    /// (`given_v`); left out, no V of your own is judged.
     #[arg(
         long,
         value_name = "A1,A2",
