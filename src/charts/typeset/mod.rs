@@ -33,6 +33,7 @@
 //! keeps few colours and the PNG can be stored indexed ([`super::output::encode_png`]).
 
 mod quantise;
+mod stroke;
 mod svg;
 
 use std::cell::RefCell;
