@@ -98,7 +98,7 @@ fn render_read_off_draws_the_users_point_on_every_map_and_sweep() {
     let svg = file(&out, "fig3.svg");
     assert!(svg.contains("θ_jam = 31.196°") && svg.contains("x_jam = 42.986 mm"));
     assert!(svg.contains("read-off lines 1-2-3 at μ = 0.27"), "fig3");
-    assert!(file(&out, "fig7a.svg").contains("read-off at r = 12 mm (closed form)"));
+    assert!(file(&out, "fig7a.svg").contains("read-off lines 1-2-3 at r = 12 mm (closed form)"));
     // The gallery's command reproduces the read-off.
     assert!(file(&out, "index.html").contains("--read-off mu=0.27"));
 }

@@ -82,9 +82,79 @@ impl PxBox {
     }
 }
 
+/// Where a label of `w` x `h` px (its box grown by `pad`) goes beside the point `at`: the first
+/// of the four corners around it, `gap` px off (below right, above right, above left, below
+/// left), whose box lies inside `frame` and meets none of `lines` and none of `boxes`; the
+/// first corner when none is free. Returns the box's top-left text corner and the box.
+pub fn place_beside(
+    at: (i32, i32),
+    (w, h): (u32, u32),
+    (gap, pad): (i32, i32),
+    frame: &PxBox,
+    lines: &[Vec<(i32, i32)>],
+    boxes: &[PxBox],
+) -> ((i32, i32), PxBox) {
+    let (w, h) = (w as i32, h as i32);
+    let corners = [
+        (at.0 + gap, at.1 + gap),
+        (at.0 + gap, at.1 - gap - h),
+        (at.0 - gap - w, at.1 - gap - h),
+        (at.0 - gap - w, at.1 + gap),
+    ];
+    let boxed = |(x0, y0): (i32, i32)| PxBox {
+        x0: x0 - pad,
+        y0: y0 - pad,
+        x1: x0 + w + pad,
+        y1: y0 + h + pad,
+    };
+    let free = |b: &PxBox| {
+        b.x0 >= frame.x0
+            && b.y0 >= frame.y0
+            && b.x1 <= frame.x1
+            && b.y1 <= frame.y1
+            && !lines.iter().any(|l| b.meets_polyline(l))
+            && !boxes.iter().any(|o| b.overlaps(o))
+    };
+    let c = corners
+        .into_iter()
+        .find(|&c| free(&boxed(c)))
+        .unwrap_or(corners[0]);
+    (c, boxed(c))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Regression (issue 18): fig7b's read-off value sat below right of the point on the
+    /// lower panel, where the falling theta_jam curve runs on: its white box covered the curve.
+    /// The label now takes the first corner around the point that the curve leaves free.
+    #[test]
+    fn a_label_beside_a_point_leaves_a_falling_curve_free() {
+        let frame = PxBox {
+            x0: 0,
+            y0: 0,
+            x1: 400,
+            y1: 300,
+        };
+        // Falls to the right through the point (200, 150), as theta_jam over F does.
+        let curve = vec![(0, 50), (200, 150), (400, 250)];
+        let ((x, y), b) = place_beside(
+            (200, 150),
+            (120, 15),
+            (8, 3),
+            &frame,
+            std::slice::from_ref(&curve),
+            &[],
+        );
+        assert!(!b.meets_polyline(&curve), "{b:?}");
+        // Below right (the old place) is taken by the curve: above right is chosen.
+        assert_eq!((x, y), (208, 150 - 8 - 15));
+        // Nothing free: the first corner.
+        let wall = vec![(0, 0), (400, 300), (0, 300), (400, 0), (0, 0)];
+        let (c, _) = place_beside((200, 150), (120, 15), (8, 3), &frame, &[wall], &[]);
+        assert_eq!(c, (208, 158));
+    }
 
     const B: PxBox = PxBox {
         x0: 10,

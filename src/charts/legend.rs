@@ -1,11 +1,14 @@
 //! Legends, always drawn in a strip outside the plotting area so they never cover data.
 
+use std::cell::RefCell;
+
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axes::{self, DrawResult};
 use super::style::{self, INK, LineKind, Marker};
+use super::tape::{self, Tape};
 
 /// What a legend entry shows beside its text.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -42,6 +45,18 @@ impl LegendEntry {
             label: label.into(),
         }
     }
+}
+
+thread_local! {
+    /// The samples legends drew on this thread, while [`record_swatches`] runs.
+    static SWATCHES: Tape<Swatch> = const { RefCell::new(None) };
+}
+
+/// Runs `draw` and returns, beside its result, every legend sample it drew, in drawing order
+/// (the test that no two series look alike).
+#[cfg(test)]
+pub fn record_swatches<R>(draw: impl FnOnce() -> R) -> (R, Vec<Swatch>) {
+    tape::record(&SWATCHES, draw)
 }
 
 /// Height in px of one legend row.
@@ -106,6 +121,7 @@ fn draw_at<DB: DrawingBackend>(
 ) -> DrawResult<DB> {
     let font = style::text(style::TICK_PX).pos(Pos::new(HPos::Left, VPos::Center));
     for (e, (x, row)) in entries.iter().zip(layout(root, entries, left, width)?) {
+        tape::note(&SWATCHES, || e.swatch);
         let y = top + row * ROW_PX + ROW_PX / 2;
         match e.swatch {
             Swatch::Line(kind) => {
@@ -116,7 +132,8 @@ fn draw_at<DB: DrawingBackend>(
             }
             Swatch::Marker(m) => style::draw_marker(root, m, (x + 16, y))?,
             Swatch::LineMarker(kind, m) => {
-                style::draw_line(root, &[(x, y), (x + 32, y)], kind, kind.color())?;
+                let color = style::marked_line_color(m);
+                style::draw_line(root, &[(x, y), (x + 32, y)], kind, color)?;
                 style::draw_marker(root, m, (x + 16, y))?;
             }
             Swatch::Step(n) => axes::tag(root, &n.to_string(), (x + 16, y))?,

@@ -66,6 +66,7 @@ pub(crate) mod style;
 pub(crate) mod sweep;
 pub(crate) mod sweep_band;
 pub(crate) mod sweep_layers;
+mod tape;
 pub(crate) mod ticks;
 pub(crate) mod time_series;
 pub(crate) mod typeset;
@@ -99,7 +100,7 @@ pub use spec::{Scene, SceneSource, load_scene, scene_names};
 /// chart do (a drawing, font, encoder or scene change), so a user whose own charts' hashes
 /// changed can tell whether jamchart's drawing did. `tests/chart_hashes.rs` fails until it is
 /// set to the manifest's hash after a re-bless (`sha256sum charts/SHA256SUMS | cut -c1-12`).
-pub const CHART_FORMAT: &str = "f79ccaa85a9f";
+pub const CHART_FORMAT: &str = "663b1fd69a5f";
 
 /// Which pictures to produce.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -242,5 +243,7 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
 
 #[cfg(test)]
 mod layout_tests;
+#[cfg(test)]
+mod series_tests;
 #[cfg(test)]
 mod tests;

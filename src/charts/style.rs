@@ -135,7 +135,15 @@ pub enum LineKind {
     /// Long-gap dashes, 2 px, orange: the latest-jam edge of the band (once both edges were the
     /// construction lines' thin blue dash, told apart by nothing).
     BandLatest,
+    /// The n-th of a family of like curves (one per friction, one per method), 2 px: solid,
+    /// then a dash pattern of its own per member ([`FAMILY_DASHES`]), so that the members read
+    /// apart in a black-and-white print, where their colours are near-equal greys.
+    Family(u8),
 }
+
+/// The dash patterns (dash, gap) of [`LineKind::Family`]'s members after the first (solid),
+/// in px: long, dotted, medium, short with long gaps, very long; then they repeat.
+const FAMILY_DASHES: [(u32, u32); 5] = [(10, 5), (2, 4), (6, 3), (3, 7), (18, 5)];
 
 impl LineKind {
     /// The colour: black for a model's curve, Okabe-Ito vermillion for limits and blue for
@@ -148,6 +156,8 @@ impl LineKind {
             LineKind::Level => OKABE_ITO[7],
             LineKind::BandEarliest => OKABE_ITO[3],
             LineKind::BandLatest => OKABE_ITO[1],
+            // Black, then the Okabe-Ito colours that read on white (no yellow).
+            LineKind::Family(n) => [0, 6, 5, 3, 1, 7, 2].map(|i| OKABE_ITO[i])[n as usize % 7],
         }
     }
 
@@ -158,7 +168,8 @@ impl LineKind {
             | LineKind::Dashed
             | LineKind::Level
             | LineKind::BandEarliest
-            | LineKind::BandLatest => 2,
+            | LineKind::BandLatest
+            | LineKind::Family(_) => 2,
             LineKind::Dotted => 1,
         }
     }
@@ -172,6 +183,8 @@ impl LineKind {
             LineKind::Level => Some((2, 4)),
             LineKind::BandEarliest => Some((6, 3)),
             LineKind::BandLatest => Some((3, 6)),
+            LineKind::Family(0) => None,
+            LineKind::Family(n) => Some(FAMILY_DASHES[(n as usize - 1) % FAMILY_DASHES.len()]),
         }
     }
 }
@@ -233,6 +246,13 @@ impl Marker {
             Marker::OpenDiamond => OKABE_ITO[7],
         }
     }
+}
+
+/// The colour of a line drawn with markers on it: the marker's, so that line and markers read
+/// as one series and two such lines differ by colour, not by their markers alone (issue 18:
+/// integration-error's radau5 and min-norm curves were both black solid lines).
+pub fn marked_line_color(marker: Marker) -> RGBColor {
+    marker.color()
 }
 
 /// Draws one marker at `at` in `area`'s coordinates.

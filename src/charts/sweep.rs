@@ -10,6 +10,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::{Deserialize, Serialize};
 
 use super::axes::{self, DrawResult, Margins, PlotAxis, PlotFrame};
+use super::collide::{self, PxBox};
 use super::legend::{self, LegendEntry, LegendGroup, Swatch};
 use super::models::Models;
 use super::readoff;
@@ -273,8 +274,9 @@ impl Sweep {
         axes::boxed_text(root, &s, (at.0 + 8, at.1 - 4), pos, style::TICK_PX)
     }
 
-    /// The read-off at the scene's value in `panel`: a dotted black line up from the axis to the
-    /// closed form's value and across to the left axis, a dot, and the value printed.
+    /// The read-off at the scene's value in `panel`, in numbered steps as a jam map's: a dotted
+    /// black line (1) up from the axis to the closed form's value and (2) across to the left
+    /// axis, a dot, and (3) the value printed beside the dot where no curve runs.
     fn draw_read_off<DB: DrawingBackend>(
         &self,
         root: &DrawingArea<DB, Shift>,
@@ -297,12 +299,54 @@ impl Sweep {
             style::draw_line_px(root, &line, LineKind::Dotted, style::INK, 2)?;
         }
         root.draw(&Circle::new(corner, 5, style::INK.filled()))?;
+        // Every curve of the panel: the step numbers and the value's box cover none.
+        let mut lines: Vec<Vec<(i32, i32)>> = self
+            .series
+            .iter()
+            .map(|c| {
+                let pts = c.points.iter();
+                pts.filter_map(|sp| panel.value(sp).map(|val| at(sp.at, val)))
+                    .collect()
+            })
+            .collect();
+        let tag_font = style::text(style::TICK_PX);
+        let mut tags = Vec::new();
+        for (n, (a, b)) in [("1", (bottom, corner)), ("2", (corner, left))] {
+            let size = root.estimate_text_size(n, &tag_font)?;
+            // Half-way along its line, else the first of a few other places no curve crosses.
+            let (mid, tag) = [0.5, 0.3, 0.7, 0.15, 0.85]
+                .into_iter()
+                .map(|t: f64| {
+                    let along = |p: i32, q: i32| p + (t * f64::from(q - p)).round() as i32;
+                    let mid = (along(a.0, b.0), along(a.1, b.1));
+                    (mid, PxBox::centred(mid, size, axes::BOX_PAD))
+                })
+                .find(|(_, tag)| !lines.iter().any(|l| tag.meets_polyline(l)))
+                .unwrap_or_else(|| {
+                    let mid = ((a.0 + b.0) / 2, (a.1 + b.1) / 2);
+                    (mid, PxBox::centred(mid, size, axes::BOX_PAD))
+                });
+            axes::tag(root, n, mid)?;
+            tags.push(tag);
+        }
         let s = match panel {
-            SweepPanel::XJamMm => format!("x_jam = {} mm", style::fmt_num(q, 3)),
-            SweepPanel::ThetaJamDeg => format!("θ_jam = {}°", style::fmt_num(q, 3)),
+            SweepPanel::XJamMm => format!("3: x_jam = {} mm", style::fmt_num(q, 3)),
+            SweepPanel::ThetaJamDeg => format!("3: θ_jam = {}°", style::fmt_num(q, 3)),
         };
+        let (lo, hi) = (at(x.min, y.min), at(x.max, y.max));
+        let frame = PxBox {
+            x0: lo.0,
+            y0: hi.1,
+            x1: hi.0,
+            y1: lo.1,
+        };
+        // The value's box covers no curve and neither of the read-off's own lines.
+        lines.extend([vec![bottom, corner], vec![corner, left]]);
+        let size = root.estimate_text_size(&s, &style::text(style::NOTE_PX))?;
+        let pad = (8, axes::BOX_PAD);
+        let (text_at, _) = collide::place_beside(corner, size, pad, &frame, &lines, &tags);
         let pos = Pos::new(HPos::Left, VPos::Top);
-        axes::boxed_text(root, &s, (corner.0 + 8, corner.1 + 6), pos, style::NOTE_PX)
+        axes::boxed_text(root, &s, text_at, pos, style::NOTE_PX)
     }
 
     /// The models behind the drawn layers, for the subtitle.
@@ -546,7 +590,7 @@ impl Sweep {
         Some(LegendEntry::new(
             Swatch::Stroke(LineKind::Dotted, style::INK, 2),
             format!(
-                "read-off at {} (closed form)",
+                "read-off lines 1-2-3 at {} (closed form)",
                 super::labels::param_value(a.param, *v)
             ),
         ))

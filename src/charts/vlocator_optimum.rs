@@ -355,7 +355,7 @@ impl VlocatorOptimum {
         value: impl Fn(&Optimum) -> f64,
     ) -> Panel {
         let mut curves = Vec::new();
-        for (c, marker) in self.curves.iter().zip(MARKERS) {
+        for (n, (c, marker)) in self.curves.iter().zip(MARKERS).enumerate() {
             let label = format!("μ = {}", c.mu);
             let points: Vec<Option<(f64, f64)>> = xs
                 .iter()
@@ -367,7 +367,9 @@ impl VlocatorOptimum {
                 if !pts.is_empty() {
                     curves.push(Curve {
                         label: label.clone(),
-                        style: CurveStyle::LinePoints(LineKind::Solid, marker),
+                        // A dash of its own per friction: in print the markers' colours
+                        // are near-equal greys.
+                        style: CurveStyle::LinePoints(LineKind::Family(n as u8), marker),
                         points: pts,
                     });
                 }

@@ -208,8 +208,8 @@ impl WorkPrecision {
                 .collect(),
         };
         let curves = vec![
-            method_curve(Method::Radau5, LineKind::Solid, Marker::Dot),
-            method_curve(Method::Dopri5, LineKind::Dashed, Marker::Square),
+            method_curve(Method::Radau5, LineKind::Family(0), Marker::Dot),
+            method_curve(Method::Dopri5, LineKind::Family(1), Marker::Square),
         ];
         // The loosest and tightest run of each method named by its tolerance.
         let mut tags = Vec::new();
@@ -267,7 +267,8 @@ impl WorkPrecision {
                 curves: vec![
                     Curve {
                         label: "min-norm by clarabel vs closed form (translational)".into(),
-                        style: CurveStyle::LinePoints(LineKind::Solid, Marker::Triangle),
+                        // Its own dots, not radau5's black solid line (issue 18).
+                        style: CurveStyle::LinePoints(LineKind::Family(2), Marker::Triangle),
                         points: pts,
                     },
                     floor,

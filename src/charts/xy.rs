@@ -160,12 +160,13 @@ impl Figure {
                     CurveStyle::LinePoints(k, m) => (Some(k), Some(m)),
                 };
                 if let Some(k) = line {
+                    let color = marker.map_or(k.color(), style::marked_line_color);
                     // Runs inside the vertical range only: a curve leaving the panel ends at
                     // its frame instead of being drawn along it.
                     let (lo, hi) = (panel.y.plot_range().start, panel.y.plot_range().end);
                     for run in pts.split(|p| p.1 < lo || p.1 > hi) {
                         if run.len() > 1 {
-                            style::draw_line(area, run, k, k.color())?;
+                            style::draw_line(area, run, k, color)?;
                         }
                     }
                 }

@@ -33,6 +33,7 @@
 //! keeps few colours and the PNG can be stored indexed ([`super::output::encode_png`]).
 
 mod quantise;
+mod stroke;
 mod svg;
 
 use std::cell::RefCell;
@@ -56,6 +57,7 @@ pub use svg::SvgText;
 
 use super::collide::PxBox;
 use super::style;
+use super::tape::{self, Tape};
 
 /// The embedded DejaVu Sans, parsed once.
 fn font() -> &'static FontRef<'static> {
@@ -142,18 +144,14 @@ pub struct TextBox {
 
 thread_local! {
     /// The text boxes [`Typeset`] set on this thread, while [`record_texts`] runs.
-    static TEXTS: RefCell<Option<Vec<TextBox>>> = const { RefCell::new(None) };
+    static TEXTS: Tape<TextBox> = const { RefCell::new(None) };
 }
 
 /// Runs `draw` and returns, beside its result, the box of every text it set, in drawing order
-/// (the layout tests: no two overlap, all inside the picture). A drawing runs on one thread,
-/// so a thread-local list sees exactly its own texts.
+/// (the layout tests: no two overlap, all inside the picture).
 #[cfg(test)]
 pub fn record_texts<R>(draw: impl FnOnce() -> R) -> (R, Vec<TextBox>) {
-    let outer = TEXTS.with_borrow_mut(|t| t.replace(Vec::new()));
-    let r = draw();
-    let texts = TEXTS.with_borrow_mut(|t| std::mem::replace(t, outer));
-    (r, texts.unwrap_or_default())
+    tape::record(&TEXTS, draw)
 }
 
 /// The box of `text` at `size_px` anchored at `at` as `anchor` says, turned by `t`: what
@@ -392,15 +390,13 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
         if color.alpha == 0.0 || text.is_empty() {
             return Ok(());
         }
-        TEXTS.with_borrow_mut(|texts| {
-            if let Some(texts) = texts {
-                let anchor = style.anchor();
-                let t = style.transform();
-                texts.push(TextBox {
-                    text: text.to_string(),
-                    size_px: style.size(),
-                    rect: text_box(text, style.size(), pos, (anchor.h_pos, anchor.v_pos), &t),
-                });
+        tape::note(&TEXTS, || {
+            let anchor = style.anchor();
+            let t = style.transform();
+            TextBox {
+                text: text.to_string(),
+                size_px: style.size(),
+                rect: text_box(text, style.size(), pos, (anchor.h_pos, anchor.v_pos), &t),
             }
         });
         let size_px = style.size() * self.scale;

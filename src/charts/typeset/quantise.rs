@@ -2,6 +2,7 @@
 
 use plotters_backend::{BackendColor, BackendStyle, DrawingBackend, rasterizer};
 
+use super::stroke;
 use super::{Drawn, Px, Restyled};
 
 /// Anti-aliasing levels of a PNG pixel: coverage is rounded to k / 8. Eight keep text and
@@ -10,15 +11,32 @@ pub const COVERAGE_LEVELS: f64 = 8.0;
 
 /// A bitmap backend whose anti-aliased pixels take one of [`COVERAGE_LEVELS`] coverages.
 ///
-/// Lines, polygon edges and circles are rasterised by plotters' own rasteriser through this
-/// backend's `draw_pixel`, which rounds the alpha before blending; straight 1 px lines and
-/// filled rectangles go to the inner backend's fast paths with the colour's alpha rounded.
+/// Lines wider than 1 px that are not along a row or column (curves, slanted lines, open
+/// markers) are anti-aliased by [`stroke::coverage`]; 1 px lines, polygon edges and circles are
+/// rasterised by plotters' own rasteriser. Either way each pixel goes through this backend's
+/// `draw_pixel`, which rounds the alpha before blending; straight 1 px lines and filled
+/// rectangles go to the inner backend's fast paths with the colour's alpha rounded.
 pub struct Quantise<DB>(pub DB);
 
 fn quantised(c: BackendColor) -> BackendColor {
     BackendColor {
         alpha: (c.alpha.clamp(0.0, 1.0) * COVERAGE_LEVELS).round() / COVERAGE_LEVELS,
         rgb: c.rgb,
+    }
+}
+
+impl<DB: DrawingBackend> Quantise<DB> {
+    /// An anti-aliased stroke along `points` ([`stroke::coverage`]).
+    fn stroke<S: BackendStyle>(&mut self, points: &[Px], style: &S) -> Drawn<DB> {
+        let color = style.color();
+        if color.alpha == 0.0 {
+            return Ok(());
+        }
+        let size = self.0.get_size();
+        for (p, c) in stroke::coverage(points, style.stroke_width(), size) {
+            self.draw_pixel(p, color.mix(c))?;
+        }
+        Ok(())
     }
 }
 
@@ -53,7 +71,30 @@ impl<DB: DrawingBackend> DrawingBackend for Quantise<DB> {
             };
             return self.0.draw_line(from, to, &s);
         }
+        if style.stroke_width() > 1 && !stroke::axis_aligned(&[from, to]) {
+            return self.stroke(&[from, to], style);
+        }
         rasterizer::draw_line(self, from, to, style)
+    }
+
+    fn draw_path<S: BackendStyle, I: IntoIterator<Item = Px>>(
+        &mut self,
+        path: I,
+        s: &S,
+    ) -> Drawn<DB> {
+        let points: Vec<Px> = path.into_iter().collect();
+        if s.stroke_width() > 1 && !stroke::axis_aligned(&points) {
+            return self.stroke(&points, s);
+        }
+        // plotters' default: 1 px segments, or the polygon of a wide axis-aligned stroke.
+        if s.stroke_width() == 1 {
+            for seg in points.windows(2) {
+                self.draw_line(seg[0], seg[1], s)?;
+            }
+            return Ok(());
+        }
+        let outline = rasterizer::polygonize(&points, s.stroke_width());
+        self.fill_polygon(outline, &s.color())
     }
 
     fn draw_rect<S: BackendStyle>(&mut self, ul: Px, br: Px, style: &S, fill: bool) -> Drawn<DB> {
@@ -65,5 +106,34 @@ impl<DB: DrawingBackend> DrawingBackend for Quantise<DB> {
             return self.0.draw_rect(ul, br, &s, true);
         }
         rasterizer::draw_rect(self, ul, br, style, false)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use plotters::prelude::{BLACK, BitMapBackend, Color};
+
+    use super::*;
+
+    /// Regression for issue 18's "lines are not anti-aliased (visible steps)": a slanted 2 px
+    /// curve drawn through the PNG's backend used to be plotters' polygon, filled at full
+    /// strength, so each pixel was ink or paper; now its edges are blended.
+    #[test]
+    fn slanted_wide_paths_are_blended_into_the_paper() {
+        let mut rgb = vec![255u8; 100 * 50 * 3];
+        {
+            let mut b = Quantise(BitMapBackend::with_buffer(&mut rgb, (100, 50)));
+            b.draw_path(
+                [(10, 10), (50, 25), (90, 40)],
+                &Color::stroke_width(&BLACK, 2),
+            )
+            .unwrap();
+            b.present().unwrap();
+        }
+        let blended = rgb
+            .chunks_exact(3)
+            .filter(|p| p[0] > 0 && p[0] < 255)
+            .count();
+        assert!(blended > 80, "{blended} blended pixels");
     }
 }
