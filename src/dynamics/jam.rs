@@ -22,8 +22,9 @@
 //! the ground contact enters Adams' stiction band. Both readings measure the same collapse. The
 //! stiction reading comes later (the disc must slow from about v_geo, ~19 mm/s at the default jam,
 //! to V_s = 0.1 mm/s) and lies further out by the distance the disc creeps meanwhile: at the
-//! defaults the disc creeps at 0.12-0.13 mm/s, just above V_s, for about 60 ms after the collapse
-//! and the stiction reading lies 0.03 mm further out (so it needs `after_jam_s` >= 0.07). We pick
+//! defaults (motion drive) the disc creeps at 0.130 mm/s falling to V_s over the 64 ms after the
+//! collapse, and the stiction reading lies 0.030 mm further out (so it needs `after_jam_s` >=
+//! 0.07; `the_motion_drive_creep_figures_of_the_jam_docs` in `tests/dynamics_physics.rs`). We pick
 //! the speed ratio because it needs no creep threshold: Adams' friction has no true stiction, so
 //! a held disc creeps at a speed set by V_s and the load, and the stiction reading drifts with
 //! V_s; the ratio is dimensionless, and its value barely matters because the collapse is steep.
@@ -103,7 +104,7 @@ pub struct JamRule {
 /// The speed (mm/s) below which a regularised disc counts as at rest: twice the friction
 /// transition velocity V_d. Adams' friction has no true stiction, so a disc held by friction
 /// creeps at a speed set by V_s, V_d and the load (0.124 mm/s at the defaults' force drive,
-/// between V_s = 0.1 and V_d = 0.2 mm/s, see `force_drive_jam_is_where_the_disc_comes_to_rest`);
+/// between V_s = 0.1 and V_d = 0.2 mm/s, printed by `the_force_drive_creep_figure_of_the_docs`);
 /// below 2 V_d a disc braked by the ground alone (mu_g g) stops within (2 V_d)^2 / (2 mu_g g),
 /// 2e-5 mm at the defaults.
 pub fn rest_speed_mm_s(friction_velocity_mm_s: f64) -> f64 {

@@ -23,7 +23,7 @@
 //!   (immobilisation), for every method: the nonsmooth method's disc and palm at rest, and for
 //!   RADAU5 and DOPRI5 the first instant after the speed collapse at which the disc moves slower
 //!   than 2 V_d (`jam::rest_speed_mm_s`: Adams' friction has no true stiction, so a held disc
-//!   creeps, at 0.124 mm/s at the defaults). The collapse itself, where the disc's speed falls to
+//!   creeps, at 0.124 mm/s at the defaults, `the_force_drive_creep_figure_of_the_docs`). The collapse itself, where the disc's speed falls to
 //!   half the geometric speed, is where the palm stalled and let the disc coast on; it is kept
 //!   as `x_half_speed_mm` and is not the jam. Against an independent rigid model (the disc tied
 //!   to the palm until the push needed reaches N_max, then pushed with N_max until it stops,

@@ -103,12 +103,13 @@
 //! by the weight and the push, holds first; the palm contact reaches its cone where
 //! tan(theta/2) = mu_p; and the disc locks up where tan(theta/2) = min(mu_p, mu_g (1 + m g / N))
 //! (the min-norm rolling formulation), i.e. at r / min(mu_g, mu_p) with the motion drive's
-//! unbounded push. Measured at the defaults (motion drive, 30 deg/s, step 0.1 deg):
+//! unbounded push. Measured at the defaults (motion drive, 30 deg/s, step 0.1 deg; printed by
+//! `the_rolling_table_of_the_nonsmooth_docs` in `tests/dynamics_nonsmooth.rs`):
 //!
 //! ```text
 //! mu_g / mu_p   slides (translational)     rolls
 //! 0.15 / 0.15   66.665 mm                  66.665 mm, rolls (ground sticks) all the way
-//! 0.25 ... 0.45 r/mu - <= 1e-5             the same, rolls all the way
+//! 0.25 ... 0.45 r/mu within 1.1e-5         the same, rolls all the way
 //! 0.2 / 0.6     25.866 mm = r cot((a_g + a_p)/2)   49.999 mm: rolls while 0.6 N_B <= 0.2 N_A,
 //!                                                  then slips on the ground, spinning
 //! 0.6 / 0.2     25.866 mm                  49.999 mm, rolls all the way
@@ -118,7 +119,7 @@
 //! what a real gripper sees, and jams at the same r/mu), while with unequal frictions the
 //! translational joint, which takes the palm's moment, makes the disc jam at half the distance:
 //! the sum of the friction angles counts for a disc that cannot turn, the smaller one for a disc
-//! that can. With the force drive at 0.5 deg/s and F = 200 N the rolling disc jams within 0.13 %
+//! that can. With the force drive at 0.5 deg/s and F = 200 N the rolling disc jams within 0.072 %
 //! of the min-norm rolling answer (25.006 / 47.326 / 50.036 mm against 25.000 / 47.296 /
 //! 50.000 mm for 0.4/0.4, 0.2/0.6, 0.6/0.2).
 //!
