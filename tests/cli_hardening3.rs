@@ -506,3 +506,25 @@ fn duplicate_quantiles_are_refused() {
         "{e}"
     );
 }
+
+/// Polish, item 3: `render -q` still printed its per-scene file lines and the gallery line
+/// (quiet means only errors and warnings), and `--bless` of one picture said "1 pictures
+/// blessed". Quiet prints nothing on success and one picture is one picture.
+#[test]
+fn render_quiet_is_quiet_and_one_picture_is_singular() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let args = ["render", "fig3", "--format", "svg", "--out", "q", "--bless"];
+    let o = cli_util::jamchart(d, &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).contains("(1 picture blessed)"), "{}", stdout(&o));
+    let o = cli_util::jamchart(d, &[&args[..], &["-q"]].concat());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stdout(&o), "");
+    assert!(d.join("q/fig3.svg").is_file());
+    let check = ["render", "fig3", "--format", "svg", "--out", "q", "--check"];
+    let o = cli_util::jamchart(d, &check);
+    assert_eq!(stdout(&o).trim_end(), "1 picture matches q/SHA256SUMS");
+    let o = cli_util::jamchart(d, &[&check[..], &["-q"]].concat());
+    assert_eq!((o.status.code(), stdout(&o)), (Some(0), String::new()));
+}
