@@ -174,7 +174,9 @@ fn short_numbers(s: &str) -> String {
         }
         let (number, after) = tail.split_at(len);
         match number.parse::<f64>() {
-            Ok(v) if number.len() > LONG_NUMBER_CHARS => out.push_str(&format!("{v:e}")),
+            Ok(v) if number.len() > LONG_NUMBER_CHARS => {
+                out.push_str(&crate::numbers::Num(v).to_string())
+            }
             _ => out.push_str(number),
         }
         rest = after;

@@ -126,6 +126,7 @@ mod limits;
 pub mod locator;
 pub mod minnorm;
 pub mod models;
+mod numbers;
 pub mod paper;
 mod scene;
 pub mod statics;

@@ -178,7 +178,7 @@ pub(crate) fn friction_warnings(frictions: &[(&str, f64)]) -> Vec<String> {
 /// 40 is above 2, ...".
 pub(crate) fn likely_mistake(key: &str, value: f64, why: &str) -> String {
     let flag = crate::settings::flag_for(key).map_or(String::new(), |f| format!(" ({f})"));
-    format!("{key}{flag} = {value} {why}")
+    format!("{key}{flag} = {} {why}", crate::numbers::Num(value))
 }
 
 pub(crate) fn finite_positive(key: &str, v: f64, reason: &str) -> Result<()> {

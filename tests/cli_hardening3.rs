@@ -388,3 +388,143 @@ fn lost_output_on_the_new_surfaces_is_an_error() {
         assert!(stderr(&o).starts_with("jamchart: "), "{}", stderr(&o));
     }
 }
+
+/// Runs the binary in an empty folder.
+fn run_in_empty(args: &[&str]) -> Output {
+    let dir = tempfile::tempdir().unwrap();
+    cli_util::jamchart(dir.path(), args)
+}
+
+/// The longest run of digits in `s`: a number printed in full (1e300 as 301 digits, 1e-300
+/// with 300 zeros) shows as a long run.
+fn longest_digit_run(s: &str) -> usize {
+    s.split(|c: char| !c.is_ascii_digit())
+        .map(str::len)
+        .max()
+        .unwrap_or(0)
+}
+
+/// Polish, item 1: `solve --mu 1e-300` printed its `x_rigid` line (and the echoed mu) with
+/// 300-digit numbers, the `--radius 1e-300` warning 300 zeros, `design --x-target 1e300` 301
+/// digits, and `solve --mu 0.16:0.3` the nominal mu as 0.22999999999999998. Every number shown
+/// now goes through one formatter: 12 significant digits at most, exponent at the extremes.
+#[test]
+fn numbers_shown_to_a_user_are_short() {
+    for args in [
+        &["solve", "--mu", "1e-300"][..],
+        &["solve", "--radius", "1e-300"],
+        &["design", "--x-target", "1e300"],
+        &["solve", "--mu", "0.16:0.3"],
+    ] {
+        let o = run_in_empty(args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
+        let all = stdout(&o) + &stderr(&o);
+        assert!(
+            longest_digit_run(&all) <= 15,
+            "{args:?} prints a {}-digit number:\n{all}",
+            longest_digit_run(&all)
+        );
+    }
+    let o = run_in_empty(&["solve", "--mu", "1e-300"]);
+    assert!(
+        stdout(&o).contains("x_rigid   = 1e301 mm"),
+        "{}",
+        stdout(&o)
+    );
+    let o = run_in_empty(&["solve", "--radius", "1e-300"]);
+    assert!(
+        stderr(&o).contains("= 1e-300 mm is under 0.5 mm"),
+        "{}",
+        stderr(&o)
+    );
+    let o = run_in_empty(&["design", "--x-target", "1e300"]);
+    assert!(stdout(&o).contains("target x = 1e300 mm"), "{}", stdout(&o));
+    let o = run_in_empty(&["solve", "--mu", "0.16:0.3"]);
+    assert!(
+        stdout(&o).contains("nominal mu_ground = 0.23,"),
+        "{}",
+        stdout(&o)
+    );
+}
+
+/// Polish, item 1: `vlocator --mu 0.2:0.4 --mu-left 0.3` refused with "0.3 left,
+/// 0.30000000000000004 right": the range's middle in full f64 noise; it now reads 0.3 and the
+/// message says to drop the flank flag.
+#[test]
+fn vlocator_unequal_flanks_refusal_reads_short() {
+    let o = run_in_empty(&["vlocator", "--mu", "0.2:0.4", "--mu-left", "0.3"]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = stderr(&o);
+    assert!(
+        e.starts_with("jamchart: ") && e.contains("0.3 right") && e.contains("--mu-left"),
+        "{e}"
+    );
+    assert!(!e.contains("0000"), "{e}");
+}
+
+/// Polish, item 2: `--before nan` / `--before inf` were accepted silently when no input is
+/// distributed (the flag was ignored). They are refused naming `--before` with or without a
+/// distribution, and a `--before` with no distributed input is said to have no effect.
+#[test]
+fn before_nan_is_refused_without_a_distribution() {
+    for args in [
+        &["solve", "--before", "nan"][..],
+        &["solve", "--before", "inf"],
+        &["solve", "--before=-inf", "--mu", "0.2:0.3"],
+    ] {
+        let o = run_in_empty(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stdout(&o));
+        assert!(stderr(&o).contains("--before"), "{args:?}: {}", stderr(&o));
+        assert!(stdout(&o).is_empty(), "{args:?}: {}", stdout(&o));
+    }
+    let o = run_in_empty(&["solve", "--before", "40", "--quantiles", "0.5"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(
+        e.contains("warning: --before, --quantiles have no effect without a distributed input"),
+        "{e}"
+    );
+    let o = run_in_empty(&["solve", "--mu", "normal(0.2,0.03)", "--before", "40"]);
+    assert!(!stderr(&o).contains("no effect"), "{}", stderr(&o));
+}
+
+/// Polish, item 2: `--quantiles 0.5,0.5` was accepted and the quantile printed twice; a
+/// probability given twice is refused naming `--quantiles`.
+#[test]
+fn duplicate_quantiles_are_refused() {
+    let o = run_in_empty(&[
+        "solve",
+        "--mu",
+        "normal(0.2,0.03)",
+        "--quantiles",
+        "0.5,0.1,0.5",
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stdout(&o));
+    let e = stderr(&o);
+    assert!(
+        e.starts_with("jamchart: ") && e.contains("--quantiles") && e.contains("twice"),
+        "{e}"
+    );
+}
+
+/// Polish, item 3: `render -q` still printed its per-scene file lines and the gallery line
+/// (quiet means only errors and warnings), and `--bless` of one picture said "1 pictures
+/// blessed". Quiet prints nothing on success and one picture is one picture.
+#[test]
+fn render_quiet_is_quiet_and_one_picture_is_singular() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let args = ["render", "fig3", "--format", "svg", "--out", "q", "--bless"];
+    let o = cli_util::jamchart(d, &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).contains("(1 picture blessed)"), "{}", stdout(&o));
+    let o = cli_util::jamchart(d, &[&args[..], &["-q"]].concat());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stdout(&o), "");
+    assert!(d.join("q/fig3.svg").is_file());
+    let check = ["render", "fig3", "--format", "svg", "--out", "q", "--check"];
+    let o = cli_util::jamchart(d, &check);
+    assert_eq!(stdout(&o).trim_end(), "1 picture matches q/SHA256SUMS");
+    let o = cli_util::jamchart(d, &[&check[..], &["-q"]].concat());
+    assert_eq!((o.status.code(), stdout(&o)), (Some(0), String::new()));
+}

@@ -9,13 +9,13 @@ use serde::Serialize;
 
 use super::args::{SceneArgs, TableFormat, parse_f64};
 use super::dynamics::DynamicsArgs;
-use super::numbers::{angle_deg, length_mm, ratio};
 use super::progress::{self, Quiet};
 use crate::atomic::{Output, check_all, write_all};
 use crate::csv_out::{Dec, dec};
 use crate::dynamics::Method;
 use crate::error::{Error, Result};
 use crate::models::ModelKind;
+use crate::numbers::{angle_deg, length_mm, ratio};
 use crate::scene::JamStatus;
 use crate::settings::number_text;
 use crate::study::ReferenceKind;

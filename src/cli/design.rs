@@ -11,6 +11,7 @@ use crate::design::{self, Design, DesignBox, LeastPush};
 use crate::dynamics::{Drive, DynamicsParams, Method};
 use crate::error::{Error, Result};
 use crate::models::{self, ModelSpec};
+use crate::numbers::{Num, fixed};
 use crate::scene::SceneParams;
 use crate::uncertain::UncertainSet;
 
@@ -210,28 +211,29 @@ fn text(
     let e = &b.earliest;
     let _ = writeln!(
         out,
-        "design over {over}: target x = {} mm (palm angle {:.3} deg)",
-        d.x_target_mm, d.theta_target_deg
+        "design over {over}: target x = {} mm (palm angle {} deg)",
+        Num(d.x_target_mm),
+        fixed(d.theta_target_deg, 3)
     );
     let _ = writeln!(
         out,
         "jams earliest at mu_ground {} / mu_palm {}, m = {} kg, F = {} N; latest at mu_ground {} / \
          mu_palm {}, m = {} kg, F = {} N",
-        e.mu_ground,
-        e.mu_palm,
-        e.mass_kg,
-        e.force_n,
-        b.latest.mu_ground,
-        b.latest.mu_palm,
-        b.latest.mass_kg,
-        b.latest.force_n
+        Num(e.mu_ground),
+        Num(e.mu_palm),
+        Num(e.mass_kg),
+        Num(e.force_n),
+        Num(b.latest.mu_ground),
+        Num(b.latest.mu_palm),
+        Num(b.latest.mass_kg),
+        Num(b.latest.force_n)
     );
     if d.target_past_palm {
         let _ = writeln!(
             out,
             "the target lies past the palm's end ({} mm): no push carries the disc there on this \
              palm",
-            e.palm_length_mm
+            Num(e.palm_length_mm)
         );
     }
     let push_line = match d.least_push {

@@ -10,7 +10,7 @@ mod guidance;
 mod help_tests;
 mod manifest;
 mod min_norm;
-mod numbers;
+
 mod progress;
 mod read_off;
 pub mod render;

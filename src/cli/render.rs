@@ -324,7 +324,7 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
             Err(e) => return Err(Error::io("read", manifest_path, e)),
         };
         let rendered = render_scenes(&scenes, formats, a.quiet)?;
-        return check(&manifest_path, &blessed, &rendered);
+        return check(&manifest_path, &blessed, &rendered).map(|d| quieted(d, a.quiet));
     }
     // Every output path is checked before anything is computed.
     let planned: Vec<PathBuf> = scenes
@@ -383,12 +383,29 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
     if a.bless {
         let _ = writeln!(
             text,
-            "manifest: {} ({} pictures blessed)",
+            "manifest: {} ({} blessed)",
             manifest_path.display(),
-            hashes.len()
+            pictures(hashes.len())
         );
     }
-    Ok(Done::Ok(text))
+    Ok(quieted(Done::Ok(text), a.quiet))
+}
+
+/// `done` without its report of what went well under --quiet (only errors and warnings are
+/// printed then); a failed check keeps its report, which is the error.
+fn quieted(done: Done, quiet: Quiet) -> Done {
+    match done {
+        Done::Ok(_) if quiet.quiet => Done::Ok(String::new()),
+        other => other,
+    }
+}
+
+/// `n` pictures, in the singular for one.
+fn pictures(n: usize) -> String {
+    match n {
+        1 => "1 picture".into(),
+        _ => format!("{n} pictures"),
+    }
 }
 
 /// `render --check`: the pictures rendered now against the blessed manifest.
@@ -397,7 +414,11 @@ fn check(manifest_path: &Path, blessed: &manifest::Hashes, rendered: &[Rendered]
     let diffs = manifest::compare(blessed, &now);
     let shown = manifest_path.display();
     if diffs.is_empty() {
-        return Ok(Done::Ok(format!("{} pictures match {shown}\n", now.len())));
+        let verb = if now.len() == 1 { "matches" } else { "match" };
+        return Ok(Done::Ok(format!(
+            "{} {verb} {shown}\n",
+            pictures(now.len())
+        )));
     }
     let mut text = String::new();
     for d in &diffs {
@@ -425,8 +446,13 @@ fn check(manifest_path: &Path, blessed: &manifest::Hashes, rendered: &[Rendered]
     Ok(Done::Failed {
         text,
         summary: format!(
-            "{} pictures differ from {shown}: {}",
-            diffs.len(),
+            "{} {} from {shown}: {}",
+            pictures(diffs.len()),
+            if diffs.len() == 1 {
+                "differs"
+            } else {
+                "differ"
+            },
             names.join(", ")
         ),
     })

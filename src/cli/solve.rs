@@ -13,6 +13,7 @@ use super::min_norm;
 use crate::config::Config;
 use crate::error::{Error, Result};
 use crate::models::{self, Detail, ModelKind, ModelSpec, OutsideModel, Solution};
+use crate::numbers::{Num, fixed};
 use crate::scene::{JamStatus, SceneParams};
 use crate::settings::flags::{Flags, MinNormSet};
 use crate::statics::{self, StaticsSolution};
@@ -89,6 +90,7 @@ pub fn run(a: &SolveArgs) -> Result<String> {
     let (config, uncertain) = a
         .scene
         .resolve_uncertain(&[a.dynamics.overrides(), a.min_norm.overrides()])?;
+    super::solve_range::check_distribution_flags(&a.distribution, &uncertain)?;
     if !uncertain.is_empty() {
         return super::solve_range::run(a, &config, &uncertain);
     }
@@ -168,17 +170,20 @@ fn render_statics(s: &mut String, d: &StaticsSolution, p: &SceneParams) {
     if let Some(x) = d.x_rigid_mm {
         let _ = writeln!(
             s,
-            "  x_rigid   = {x:.3} mm, theta_rigid = {:.3} deg: the rigid limit, the jam as F -> inf \
+            "  x_rigid   = {} mm, theta_rigid = {} deg: the rigid limit, the jam as F -> inf \
              (a motion-driven palm)",
-            d.theta_rigid_deg
+            fixed(x, 3),
+            fixed(d.theta_rigid_deg, 3)
         );
     }
     if let Some(past) = &d.past_palm {
         let _ = writeln!(
             s,
-            "  on a long enough palm it would jam at theta = {:.3} deg, x = {:.3} mm: that needs \
-             a palm of at least {:.3} mm (--palm-length)",
-            past.theta_jam_deg, past.x_jam_mm, past.palm_length_needed_mm
+            "  on a long enough palm it would jam at theta = {} deg, x = {} mm: that needs \
+             a palm of at least {} mm (--palm-length)",
+            fixed(past.theta_jam_deg, 3),
+            fixed(past.x_jam_mm, 3),
+            fixed(past.palm_length_needed_mm, 3)
         );
         let more = match past.friction_factor_needed {
             Some(k) if p.mu_ground == p.mu_palm => format!("mu >= {:.4} (--mu)", k * p.mu_ground),
@@ -212,16 +217,19 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
         s,
         "scene: mu_ground = {}, mu_palm = {}, r = {} mm, m = {} kg, F = {} N, g = {} m/s^2, \
          start at {} deg, palm {} mm{}",
-        p.mu_ground,
-        p.mu_palm,
-        p.radius_mm,
-        p.mass_kg,
-        p.force_n,
-        p.gravity_m_s2,
-        p.start_angle_deg,
-        p.palm_length_mm,
+        Num(p.mu_ground),
+        Num(p.mu_palm),
+        Num(p.radius_mm),
+        Num(p.mass_kg),
+        Num(p.force_n),
+        Num(p.gravity_m_s2),
+        Num(p.start_angle_deg),
+        Num(p.palm_length_mm),
         if p.palm_offset_mm > 0.0 {
-            format!(", palm face {} mm off the hinge line", p.palm_offset_mm)
+            format!(
+                ", palm face {} mm off the hinge line",
+                Num(p.palm_offset_mm)
+            )
         } else {
             String::new()
         }
@@ -233,11 +241,13 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
             (JamStatus::Jams, Some(t), Some(x)) => {
                 let _ = writeln!(
                     s,
-                    "  theta_jam = {t:.3} deg   palm angle at which the disc stops sliding and jams"
+                    "  theta_jam = {} deg   palm angle at which the disc stops sliding and jams",
+                    fixed(t, 3)
                 );
                 let _ = writeln!(
                     s,
-                    "  x_jam     = {x:.3} mm    disc position at the jam (hinge to ground contact)"
+                    "  x_jam     = {} mm    disc position at the jam (hinge to ground contact)",
+                    fixed(x, 3)
                 );
             }
             (JamStatus::JammedAtStart, Some(t), x) => {

@@ -12,6 +12,7 @@ use super::solve::SolveArgs;
 use crate::config::Config;
 use crate::error::{Error, Result};
 use crate::models::ModelKind;
+use crate::numbers::Num;
 use crate::scene::SceneParams;
 use crate::uncertain::UncertainSet;
 use crate::uncertain::dist::{self, DistAnswer, DistMethod, DistQuestion, Estimate};
@@ -31,7 +32,7 @@ pub struct DistArgs {
     pub before_mm: Vec<f64>,
     /// Probabilities q in (0, 1) of the quantiles of x_jam printed with a distributed input.
     #[arg(long, value_name = "Q", value_delimiter = ',', value_parser = parse_f64,
-          default_value = "0.05,0.5,0.95", allow_negative_numbers = true)]
+          default_value = DEFAULT_QUANTILES, allow_negative_numbers = true)]
     pub quantiles: Vec<f64>,
     /// Monte Carlo samples where the answer is not exact.
     #[arg(long, value_name = "N", long_help = samples_help(), value_parser = parse_count,
@@ -46,6 +47,46 @@ pub struct DistArgs {
         allow_negative_numbers = true
     )]
     pub seed: u64,
+}
+
+/// The quantiles printed unless --quantiles says otherwise.
+const DEFAULT_QUANTILES: &str = "0.05,0.5,0.95";
+
+/// Checks the distribution flags before anything is computed, whether or not an input is
+/// distributed: `--before nan` was accepted silently with no distributed input. Where none is,
+/// the flags have no effect and a warning says so (the answer is still given: a script that
+/// passes them to every run keeps working).
+pub(super) fn check_distribution_flags(d: &DistArgs, uncertain: &UncertainSet) -> Result<()> {
+    DistQuestion {
+        before_mm: d.before_mm.clone(),
+        quantiles: d.quantiles.clone(),
+        samples: d.samples.unwrap_or(STATICS_SAMPLES),
+        seed: d.seed,
+    }
+    .validate()?;
+    if uncertain.inputs.iter().any(|i| i.value.is_distribution()) {
+        return Ok(());
+    }
+    let default: Vec<f64> = DEFAULT_QUANTILES
+        .split(',')
+        .map(|q| q.parse().expect("a number"))
+        .collect();
+    let unused: Vec<&str> = [
+        (!d.before_mm.is_empty(), "--before"),
+        (d.quantiles != default, "--quantiles"),
+        (d.samples.is_some(), "--samples"),
+    ]
+    .into_iter()
+    .filter_map(|(given, flag)| given.then_some(flag))
+    .collect();
+    if !unused.is_empty() {
+        super::warn(&[format!(
+            "{} {} no effect without a distributed input (e.g. --mu normal(0.2,0.03))",
+            unused.join(", "),
+            if unused.len() == 1 { "has" } else { "have" }
+        )]);
+    }
+    Ok(())
 }
 
 /// Monte Carlo samples of the closed form unless --samples says otherwise: 100,000 take a few
@@ -150,14 +191,14 @@ fn text(p: &SceneParams, uncertain: &UncertainSet, results: &[Record]) -> String
         s,
         "scene: r = {} mm, g = {} m/s^2, start at {} deg, palm {} mm; nominal mu_ground = {}, \
          mu_palm = {}, m = {} kg, F = {} N",
-        p.radius_mm,
-        p.gravity_m_s2,
-        p.start_angle_deg,
-        p.palm_length_mm,
-        p.mu_ground,
-        p.mu_palm,
-        p.mass_kg,
-        p.force_n
+        Num(p.radius_mm),
+        Num(p.gravity_m_s2),
+        Num(p.start_angle_deg),
+        Num(p.palm_length_mm),
+        Num(p.mu_ground),
+        Num(p.mu_palm),
+        Num(p.mass_kg),
+        Num(p.force_n)
     );
     let _ = writeln!(s, "uncertain: {}", uncertain.describe());
     for r in results {

@@ -10,6 +10,7 @@ use crate::error::{Error, Result};
 use crate::locator::{
     BoxVerdict, LocatorParams, RobustBox, RobustDesign, robust_design, verdict_over_box,
 };
+use crate::numbers::Num;
 use crate::uncertain::{Uncertain, UncertainSet};
 
 /// The standard V-blocks the answer checks, deg.
@@ -27,9 +28,9 @@ pub fn robust_box(p: &LocatorParams, uncertain: &UncertainSet) -> Result<RobustB
     if p.mu_left != p.mu_right {
         return Err(Error::invalid(
             "mu",
-            format!("{} left, {} right", p.mu_left, p.mu_right),
-            "a robust V-block takes one friction range for both flanks (--mu LOW:HIGH); \
-             unequal flanks are not searched",
+            format!("{} left, {} right", Num(p.mu_left), Num(p.mu_right)),
+            "a robust V-block takes one friction range for both flanks (--mu LOW:HIGH, \
+             without --mu-left or --mu-right); unequal flanks are not searched",
         ));
     }
     for i in &uncertain.inputs {

@@ -126,6 +126,17 @@ impl DistQuestion {
         if let Some(q) = self.quantiles.iter().find(|q| !(**q > 0.0 && **q < 1.0)) {
             return Err(Error::invalid("quantiles", q, "each must lie in (0, 1)"));
         }
+        // A quantile asked twice was printed twice; the list is the user's, so say so.
+        let twice =
+            (1..self.quantiles.len()).find(|&i| self.quantiles[..i].contains(&self.quantiles[i]));
+        if let Some(i) = twice {
+            let q = self.quantiles[i];
+            return Err(Error::invalid(
+                "quantiles",
+                crate::numbers::Num(q),
+                "is given twice; give each probability once",
+            ));
+        }
         if let Some(x) = self.before_mm.iter().find(|x| !x.is_finite()) {
             return Err(Error::invalid(
                 "before_mm",

@@ -1,0 +1,167 @@
+//! Numbers shown to a user, in one place.
+//!
+//! Echoed inputs and answers (`solve`, `design`, `vlocator`, warnings and error messages) go
+//! through [`Num`] / [`fixed`]: at most 12 significant digits, so a midpoint's rounding
+//! (`(0.16 + 0.3) / 2 = 0.22999999999999998`) reads `0.23`, and exponent form outside
+//! 1e-4..1e15, where Rust's `{}` writes 1e-300 with 300 zeros and `{:.3}` writes 1e300 with
+//! 301 digits.
+//!
+//! Numbers in the report tables (`accuracy`, `stability`): an engineer reads `0.254 mm`,
+//! `17.4 nm` or `0`, not `2.54e-1`, `1.74e-5` or `0.00e0`.
+//!
+//! Three significant digits; a length picks the unit that keeps its digits before the point
+//! (mm from 0.1 mm, else um, nm, pm from 1 of each); an angle below a thousandth of a degree and a ratio below 1e-3 keep an
+//! exponent, which is the honest form there. Zero is `0` with its unit; a missing value is `-`.
+
+use std::fmt;
+
+/// Significant digits an echoed number keeps: enough for any value a person types (and
+/// for f64's own noise, about 1e-16 relative, to vanish).
+const SHOWN_DIGITS: usize = 12;
+
+/// Below this magnitude (and above [`PLAIN_MAX`]) a number reads in exponent form.
+const PLAIN_MIN: f64 = 1e-4;
+
+/// See [`PLAIN_MIN`].
+const PLAIN_MAX: f64 = 1e15;
+
+/// An f64 shown to a user: `0.23`, `150`, `1e-300`, `1e300`, `NaN`; see the module docs.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Num(pub f64);
+
+impl fmt::Display for Num {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let v = self.0;
+        if !v.is_finite() || v == 0.0 {
+            return write!(f, "{v}");
+        }
+        // Round to SHOWN_DIGITS significant digits through the exponent form, which is exact
+        // to print and parse; the shortest form of the rounded value then has no noise.
+        let r: f64 = format!("{v:.prec$e}", prec = SHOWN_DIGITS - 1)
+            .parse()
+            .unwrap_or(v);
+        if (PLAIN_MIN..PLAIN_MAX).contains(&r.abs()) {
+            write!(f, "{r}")
+        } else {
+            write!(f, "{r:e}")
+        }
+    }
+}
+
+/// `v` with `decimals` decimals (`24.355`), or with as many in exponent form where that would run past 15 digits
+/// before the point or show a nonzero value as zero (`1e300`, `1e-300`).
+pub(crate) fn fixed(v: f64, decimals: usize) -> String {
+    let a = v.abs();
+    let shows_zero = a > 0.0 && a < 0.5 * 10f64.powi(-(decimals as i32));
+    if !v.is_finite() {
+        format!("{v}")
+    } else if a >= PLAIN_MAX || shows_zero {
+        // As many significant digits as the fixed form shows of an ordinary value.
+        let e = format!("{v:.decimals$e}");
+        let (mantissa, exponent) = e.split_once('e').unwrap_or((&e, "0"));
+        let mantissa = if mantissa.contains('.') {
+            mantissa.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            mantissa
+        };
+        format!("{mantissa}e{exponent}")
+    } else {
+        format!("{v:.decimals$}")
+    }
+}
+
+/// `v` with three significant digits, no exponent (`0.0102`, `24.7`, `254`).
+fn sig3(v: f64) -> String {
+    if v == 0.0 {
+        return "0".into();
+    }
+    let magnitude = v.abs().log10().floor() as i32;
+    let decimals = (2 - magnitude).max(0) as usize;
+    format!("{v:.decimals$}")
+}
+
+/// `v` with three significant digits and an exponent (`1.54e-8`).
+fn sci3(v: f64) -> String {
+    format!("{v:.2e}")
+}
+
+/// A length in mm, in the unit that shows it best: `0.254 mm`, `17.4 um`, `9.29 nm`, `0 mm`.
+pub(crate) fn length_mm(v: Option<f64>) -> String {
+    let Some(v) = v else {
+        return "-".into();
+    };
+    let a = v.abs();
+    match a {
+        _ if a == 0.0 || a >= 0.1 => format!("{} mm", sig3(v)),
+        _ if a >= 1e-3 => format!("{} um", sig3(v * 1e3)),
+        _ if a >= 1e-6 => format!("{} nm", sig3(v * 1e6)),
+        _ if a >= 1e-9 => format!("{} pm", sig3(v * 1e9)),
+        _ => format!("{} mm", sci3(v)),
+    }
+}
+
+/// An angle in deg: `0.0518 deg`, `1.54e-8 deg`, `0 deg`.
+pub(crate) fn angle_deg(v: Option<f64>) -> String {
+    v.map_or("-".into(), |v| format!("{} deg", plain_or_sci(v)))
+}
+
+/// A ratio without unit (a relative error): `0.0102`, `3.81e-10`, `0`.
+pub(crate) fn ratio(v: Option<f64>) -> String {
+    v.map_or("-".into(), plain_or_sci)
+}
+
+fn plain_or_sci(v: f64) -> String {
+    if v == 0.0 || v.abs() >= 1e-3 {
+        sig3(v)
+    } else {
+        sci3(v)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Regression (polish, item 1): `solve --mu 1e-300` echoed mu with 300 zeros, its
+    /// `x_rigid` line 1e300 with 301 digits, and `solve --mu 0.16:0.3` the nominal mu as
+    /// 0.22999999999999998; echoed numbers now keep 12 digits and an exponent at the extremes.
+    #[test]
+    fn echoed_numbers_read_short() {
+        assert_eq!(Num((0.16 + 0.3) / 2.0).to_string(), "0.23");
+        assert_eq!(Num((0.2 + 0.4) / 2.0).to_string(), "0.3");
+        assert_eq!(Num(1e-300).to_string(), "1e-300");
+        assert_eq!(Num(-1e300).to_string(), "-1e300");
+        assert_eq!(Num(150.0).to_string(), "150");
+        assert_eq!(Num(9.806).to_string(), "9.806");
+        assert_eq!(Num(0.0).to_string(), "0");
+        assert_eq!(Num(1.0 / 3.0).to_string(), "0.333333333333");
+        assert_eq!(Num(f64::NAN).to_string(), "NaN");
+        assert_eq!(fixed(24.3554, 3), "24.355");
+        assert_eq!(fixed(0.0, 3), "0.000");
+        assert_eq!(fixed(1e300, 3), "1e300");
+        assert_eq!(fixed(1e-300, 3), "1e-300");
+        assert_eq!(fixed(0.0004, 3), "4e-4");
+        assert_eq!(fixed(0.0006, 3), "0.001");
+        assert_eq!(fixed(1.1459155902e-298, 3), "1.146e-298");
+    }
+
+    #[test]
+    fn zero_and_small_numbers_read_with_their_unit() {
+        assert_eq!(length_mm(Some(0.0)), "0 mm");
+        assert_eq!(length_mm(Some(0.2540)), "0.254 mm");
+        assert_eq!(length_mm(Some(24.746)), "24.7 mm");
+        assert_eq!(length_mm(Some(1.74053e-5)), "17.4 nm");
+        assert_eq!(length_mm(Some(7.372e-4)), "737 nm");
+        assert_eq!(length_mm(Some(0.05)), "50.0 um");
+        assert_eq!(length_mm(Some(9.285e-9)), "9.29 pm");
+        assert_eq!(length_mm(Some(-3.2e-3)), "-3.20 um");
+        assert_eq!(length_mm(Some(3e-13)), "3.00e-13 mm");
+        assert_eq!(length_mm(None), "-");
+        assert_eq!(angle_deg(Some(0.0)), "0 deg");
+        assert_eq!(angle_deg(Some(0.0518)), "0.0518 deg");
+        assert_eq!(angle_deg(Some(1.5351e-8)), "1.54e-8 deg");
+        assert_eq!(ratio(Some(0.0)), "0");
+        assert_eq!(ratio(Some(1.02e-2)), "0.0102");
+        assert_eq!(ratio(Some(3.8125e-10)), "3.81e-10");
+    }
+}
