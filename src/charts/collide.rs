@@ -122,9 +122,59 @@ pub fn place_beside(
     (c, boxed(c))
 }
 
+/// Where a tag of `w` x `h` px (its box grown by `pad`) goes on the axis-parallel segment
+/// `a`-`b`: half-way along, else the first of a few other places along it, else the same
+/// places just beside it (above a horizontal segment, right of a vertical one, then the
+/// other side), whose box meets none of `lines`; half-way along when none is free. Returns
+/// the tag's centre and box.
+pub fn place_along(
+    a: (i32, i32),
+    b: (i32, i32),
+    size: (u32, u32),
+    pad: i32,
+    lines: &[Vec<(i32, i32)>],
+) -> ((i32, i32), PxBox) {
+    // Beside: the box clears the segment (and a curve that lies along it) by 2 px.
+    let (w, h) = (size.0 as i32, size.1 as i32);
+    let side = if a.0 == b.0 {
+        (w / 2 + pad + 2, 0)
+    } else {
+        (0, -(h / 2 + pad + 2))
+    };
+    let along = |t: f64, k: i32| {
+        let at = |p: i32, q: i32| p + (t * f64::from(q - p)).round() as i32;
+        let mid = (at(a.0, b.0) + k * side.0, at(a.1, b.1) + k * side.1);
+        (mid, PxBox::centred(mid, size, pad))
+    };
+    let ts = [0.5, 0.3, 0.7, 0.15, 0.85];
+    [0, 1, -1]
+        .into_iter()
+        .flat_map(|k| ts.into_iter().map(move |t| (t, k)))
+        .map(|(t, k)| along(t, k))
+        .find(|(_, tag)| !lines.iter().any(|l| tag.meets_polyline(l)))
+        .unwrap_or_else(|| along(0.5, 0))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Regression (issue 18): on fig7a's lower panel theta_jam does not depend on r, so the
+    /// read-off's line 2 runs along the flat curve and every place along it was on the curve:
+    /// step tag "2" sat on it, half-way. The tag now goes just beside the line, clear of it.
+    #[test]
+    fn a_step_tag_on_a_line_along_a_flat_curve_goes_beside_it() {
+        let (a, b) = ((500, 200), (100, 200));
+        let curve = vec![(100, 200), (900, 200)];
+        let (mid, tag) = place_along(a, b, (8, 13), 3, std::slice::from_ref(&curve));
+        assert!(!tag.meets_polyline(&curve), "{tag:?} meets the curve");
+        assert!(
+            tag.y1 < 200 && mid.0 == 300,
+            "{mid:?} {tag:?}: above, half-way"
+        );
+        // With no curve in the way it stays on the line, half-way.
+        assert_eq!(place_along(a, b, (8, 13), 3, &[]).0, (300, 200));
+    }
 
     /// Regression (issue 18): fig7b's read-off value sat below right of the point on the
     /// lower panel, where the falling theta_jam curve runs on: its white box covered the curve.

@@ -313,19 +313,7 @@ impl Sweep {
         let mut tags = Vec::new();
         for (n, (a, b)) in [("1", (bottom, corner)), ("2", (corner, left))] {
             let size = root.estimate_text_size(n, &tag_font)?;
-            // Half-way along its line, else the first of a few other places no curve crosses.
-            let (mid, tag) = [0.5, 0.3, 0.7, 0.15, 0.85]
-                .into_iter()
-                .map(|t: f64| {
-                    let along = |p: i32, q: i32| p + (t * f64::from(q - p)).round() as i32;
-                    let mid = (along(a.0, b.0), along(a.1, b.1));
-                    (mid, PxBox::centred(mid, size, axes::BOX_PAD))
-                })
-                .find(|(_, tag)| !lines.iter().any(|l| tag.meets_polyline(l)))
-                .unwrap_or_else(|| {
-                    let mid = ((a.0 + b.0) / 2, (a.1 + b.1) / 2);
-                    (mid, PxBox::centred(mid, size, axes::BOX_PAD))
-                });
+            let (mid, tag) = collide::place_along(a, b, size, axes::BOX_PAD, &lines);
             axes::tag(root, n, mid)?;
             tags.push(tag);
         }

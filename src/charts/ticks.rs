@@ -143,7 +143,24 @@ pub fn adaptive_ticks(
         if tick > hi + eps {
             break;
         }
-        if ((tick / major).round() * major - tick).abs() <= 1e-6 * minor {
+        let on_major = ((tick / major).round() * major - tick).abs() <= 1e-6 * minor;
+        // Where the step grows (2 to 5 at 24 on fig3's log axis, 1 to 2 at 10 on universal's)
+        // the first multiple of the new step can lie one old step from the last label, half
+        // the room asked for, and the two overlapped (issue 18). Of the two the rounder keeps
+        // its label, so "10" stays. Labels of one step are a step apart, at least `major_px`
+        // less the density's drift over a step: 3/4 of it flags only the crowded pair.
+        let crowded = t
+            .major
+            .last()
+            .map(|(l, _)| *l)
+            .filter(|l| gap_px(&px_per_unit, *l, tick) < 0.75 * major_px);
+        let label = on_major && crowded.is_none_or(|l| roundness(tick) >= roundness(l));
+        if label {
+            if let Some(l) = crowded {
+                t.major.pop();
+                let at = t.minor.partition_point(|m| *m < l);
+                t.minor.insert(at, l);
+            }
             let decimals = (-(major.log10() + 1e-9).floor()).max(0.0) as usize;
             t.major.push((tick, style::fmt_num(tick, decimals)));
         } else {
@@ -152,6 +169,26 @@ pub fn adaptive_ticks(
         v = tick + 0.5 * minor;
     }
     t
+}
+
+/// The pixels between values `a` and `b` on an axis of density `px_per_unit` (Simpson's rule:
+/// exact to 0.2 % for a log axis' 1/v over a factor of two).
+fn gap_px(px_per_unit: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
+    let d = |v: f64| px_per_unit(v).abs();
+    (b - a) / 6.0 * (d(a) + 4.0 * d(0.5 * (a + b)) + d(b))
+}
+
+/// The largest 1-2-5 step `v` is a whole multiple of: 5 for 25, 10 for 10 or 30, 2 for 24
+/// (infinite for 0). It ranks two labels that cannot both stay.
+fn roundness(v: f64) -> f64 {
+    if v == 0.0 {
+        return f64::INFINITY;
+    }
+    let mag = 10f64.powf(v.abs().log10().floor());
+    (0..60)
+        .map(|k| [5.0, 2.0, 1.0][k % 3] * mag / 10f64.powi((k / 3) as i32))
+        .find(|s| ((v / s).round() - v / s).abs() <= 1e-6)
+        .unwrap_or(0.0)
 }
 
 /// Log ticks: within about a decade and a half every mantissa 1..9 is a major and tenths are
@@ -261,6 +298,47 @@ mod tests {
             labels.contains(&"45") && labels.contains(&"70"),
             "{labels:?}"
         );
+    }
+
+    /// Regression (issue 18): where the labelled step of a vertical log axis grows (2 to 5,
+    /// 1 to 2) the first tick of the new step could sit one old step from the last label:
+    /// "24" and "25" 13 px apart on fig3 at 1000 x 800, "9" and "10" on the universal chart.
+    /// Drawn at every length from 200 to 1600 px, no two labels of axes like fig3's and the
+    /// universal chart's lie closer than 3/4 of the 26 px asked for, and the rounder label of
+    /// a crowded pair keeps its text: 10, 100 and 1000 stay labelled.
+    #[test]
+    fn log_axis_labels_crowd_not_where_the_step_grows() {
+        let mut faults = Vec::new();
+        for (lo, hi) in [(10.0f64, 70.0f64), (1.0, 1000.0), (5.0, 90.0)] {
+            for len in 200..=1600 {
+                let per_ln = f64::from(len) / (hi / lo).ln();
+                let t = adaptive_ticks(lo, hi, |v| per_ln / v, 6.0, 26.0);
+                for pair in t.major.windows(2) {
+                    let ((a, sa), (b, sb)) = (&pair[0], &pair[1]);
+                    let gap_px = per_ln * (b / a).ln();
+                    if gap_px < 0.75 * 26.0 {
+                        faults.push(format!("{len} px: {sa}/{sb} {gap_px:.1} px apart"));
+                    }
+                }
+                for p in [10.0, 100.0, 1000.0] {
+                    let labelled = t.major.iter().any(|(v, _)| (v - p).abs() < 1e-9);
+                    if p >= lo && p <= hi && !labelled {
+                        faults.push(format!("{len} px: {p} lost its label"));
+                    }
+                }
+            }
+        }
+        assert!(faults.is_empty(), "{}", faults.join("\n"));
+    }
+
+    #[test]
+    fn roundness_ranks_labels() {
+        assert_eq!(roundness(25.0), 5.0);
+        assert_eq!(roundness(24.0), 2.0);
+        assert_eq!(roundness(10.0), 10.0);
+        assert_eq!(roundness(0.3), 0.1);
+        assert_eq!(roundness(400.0), 200.0);
+        assert_eq!(roundness(1000.0), 1000.0);
     }
 
     #[test]
