@@ -507,6 +507,19 @@ fn duplicate_quantiles_are_refused() {
     );
 }
 
+/// `--before 40,40` was accepted and P(jam before 40 mm) printed twice, as `--quantiles` was:
+/// a position given twice is refused naming `--before`.
+#[test]
+fn duplicate_before_positions_are_refused() {
+    let o = run_in_empty(&["solve", "--mu", "normal(0.2,0.03)", "--before", "40,50,40"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stdout(&o));
+    let e = stderr(&o);
+    assert!(
+        e.starts_with("jamchart: ") && e.contains("--before") && e.contains("twice"),
+        "{e}"
+    );
+}
+
 /// Polish, item 3: `render -q` still printed its per-scene file lines and the gallery line
 /// (quiet means only errors and warnings), and `--bless` of one picture said "1 pictures
 /// blessed". Quiet prints nothing on success and one picture is one picture.

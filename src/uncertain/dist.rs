@@ -126,15 +126,20 @@ impl DistQuestion {
         if let Some(q) = self.quantiles.iter().find(|q| !(**q > 0.0 && **q < 1.0)) {
             return Err(Error::invalid("quantiles", q, "each must lie in (0, 1)"));
         }
-        // A quantile asked twice was printed twice; the list is the user's, so say so.
-        let twice =
-            (1..self.quantiles.len()).find(|&i| self.quantiles[..i].contains(&self.quantiles[i]));
-        if let Some(i) = twice {
-            let q = self.quantiles[i];
+        // A quantile or a position asked twice was printed twice; the list is the user's, so
+        // say so.
+        if let Some(q) = given_twice(&self.quantiles) {
             return Err(Error::invalid(
                 "quantiles",
                 crate::numbers::Num(q),
                 "is given twice; give each probability once",
+            ));
+        }
+        if let Some(x) = given_twice(&self.before_mm) {
+            return Err(Error::invalid(
+                "before_mm",
+                crate::numbers::Num(x),
+                "is given twice; give each position once",
             ));
         }
         if let Some(x) = self.before_mm.iter().find(|x| !x.is_finite()) {
@@ -146,6 +151,13 @@ impl DistQuestion {
         }
         Ok(())
     }
+}
+
+/// The first value of `xs` that an earlier one repeats.
+fn given_twice(xs: &[f64]) -> Option<f64> {
+    (1..xs.len())
+        .find(|&i| xs[..i].contains(&xs[i]))
+        .map(|i| xs[i])
 }
 
 /// The closed form's jam position in mm on a long enough palm: at theta_jam, or at the start
