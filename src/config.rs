@@ -57,39 +57,46 @@ impl Config {
     /// "0.12:0.3"`): the config with their nominal values, and the uncertain inputs.
     pub(crate) fn load_uncertain(path: &Path) -> Result<(Config, UncertainSet)> {
         let text = read_text(path)?;
-        let raw: Option<toml::Table> = toml::from_str(&text).ok();
-        let Some(mut raw) = raw else {
-            // parse_toml words the syntax error with its line and column.
-            return parse_toml(&text, path).map(|c| (c, UncertainSet::default()));
-        };
-        let set = match raw.get_mut("scene").and_then(toml::Value::as_table_mut) {
-            Some(scene) => crate::uncertain::take(scene, scene_decls()).map_err(|e| {
-                let key = match &e {
-                    Error::InvalidValue { key, .. } => format!("scene.{key}"),
-                    _ => "scene".into(),
-                };
-                let (line, column) = key_line_column(&text, &key).unwrap_or((1, 1));
-                Error::Config {
-                    path: path.to_path_buf(),
-                    line,
-                    column,
-                    message: e.to_string(),
-                }
-            })?,
-            None => UncertainSet::default(),
-        };
-        if set.is_empty() {
-            return parse_toml(&text, path).map(|c| (c, set));
-        }
-        // The nominal values stand in the text parse_toml reads, so its checks still apply.
-        let nominal = toml::to_string(&raw).expect("a table serialises");
-        parse_toml(&nominal, path).map(|c| (c, set))
+        let (nominal, set) = take_scene_uncertain(&text, path)?;
+        parse_toml(nominal.as_deref().unwrap_or(&text), path).map(|c| (c, set))
     }
 }
 
 /// The settings of `[scene]` and its aliases: where uncertain inputs of the palm scene are.
 pub(crate) fn scene_decls() -> impl Iterator<Item = &'static crate::settings::Decl> + Clone {
     crate::settings::palm_family().filter(|d| d.section == "scene")
+}
+
+/// `text`'s `[scene]` with its ranges and distributions taken out, each replaced by its nominal
+/// value: the text to read instead (None when it gave none) and the uncertain inputs. A bad value
+/// is an error at its line and column in `path`; a text that is not TOML is left to the reader,
+/// which says where. Parameter files (`--config`) and chart scene files both come through here.
+pub(crate) fn take_scene_uncertain(
+    text: &str,
+    path: &Path,
+) -> Result<(Option<String>, UncertainSet)> {
+    let Ok(mut raw) = toml::from_str::<toml::Table>(text) else {
+        return Ok((None, UncertainSet::default()));
+    };
+    let Some(scene) = raw.get_mut("scene").and_then(toml::Value::as_table_mut) else {
+        return Ok((None, UncertainSet::default()));
+    };
+    let set = crate::uncertain::take(scene, scene_decls()).map_err(|e| {
+        let key = match &e {
+            Error::InvalidValue { key, .. } => format!("scene.{key}"),
+            _ => "scene".into(),
+        };
+        let (line, column) = key_line_column(text, &key).unwrap_or((1, 1));
+        Error::Config {
+            path: path.to_path_buf(),
+            line,
+            column,
+            message: e.to_string(),
+        }
+    })?;
+    // The nominal values stand in the text the reader reads, so its checks still apply.
+    let nominal = (!set.is_empty()).then(|| toml::to_string(&raw).expect("a table serialises"));
+    Ok((nominal, set))
 }
 
 /// Largest settings or scene file read, in bytes: the committed ones are under 2 kB, and a

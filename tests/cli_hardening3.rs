@@ -488,36 +488,19 @@ fn before_nan_is_refused_without_a_distribution() {
     assert!(!stderr(&o).contains("no effect"), "{}", stderr(&o));
 }
 
-/// Polish, item 2: `--quantiles 0.5,0.5` was accepted and the quantile printed twice; a
-/// probability given twice is refused naming `--quantiles`.
+/// Polish, item 2: `--quantiles 0.5,0.5` was accepted and the quantile printed twice, and so was
+/// `--before 40,40`; a probability or a position given twice is refused naming its flag.
 #[test]
-fn duplicate_quantiles_are_refused() {
-    let o = run_in_empty(&[
-        "solve",
-        "--mu",
-        "normal(0.2,0.03)",
-        "--quantiles",
-        "0.5,0.1,0.5",
-    ]);
-    assert_eq!(o.status.code(), Some(2), "{}", stdout(&o));
-    let e = stderr(&o);
-    assert!(
-        e.starts_with("jamchart: ") && e.contains("--quantiles") && e.contains("twice"),
-        "{e}"
-    );
-}
-
-/// `--before 40,40` was accepted and P(jam before 40 mm) printed twice, as `--quantiles` was:
-/// a position given twice is refused naming `--before`.
-#[test]
-fn duplicate_before_positions_are_refused() {
-    let o = run_in_empty(&["solve", "--mu", "normal(0.2,0.03)", "--before", "40,50,40"]);
-    assert_eq!(o.status.code(), Some(2), "{}", stdout(&o));
-    let e = stderr(&o);
-    assert!(
-        e.starts_with("jamchart: ") && e.contains("--before") && e.contains("twice"),
-        "{e}"
-    );
+fn duplicate_quantiles_and_before_positions_are_refused() {
+    for (flag, list) in [("--quantiles", "0.5,0.1,0.5"), ("--before", "40,50,40")] {
+        let o = run_in_empty(&["solve", "--mu", "normal(0.2,0.03)", flag, list]);
+        assert_eq!(o.status.code(), Some(2), "{flag}: {}", stdout(&o));
+        let e = stderr(&o);
+        assert!(
+            e.starts_with("jamchart: ") && e.contains(flag) && e.contains("twice"),
+            "{e}"
+        );
+    }
 }
 
 /// Polish, item 3: `render -q` still printed its per-scene file lines and the gallery line

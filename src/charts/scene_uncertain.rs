@@ -12,6 +12,7 @@ use super::sweep_band;
 use super::{ChartSpec, Scene};
 use crate::error::{Error, Result};
 use crate::uncertain::{self, UncertainSet};
+use std::path::Path;
 
 /// A scene's text and `--set` settings with their uncertain values taken out.
 pub(super) struct Taken {
@@ -26,19 +27,9 @@ pub(super) struct Taken {
 }
 
 /// Takes the ranges and distributions out of `text`'s `[scene]` and out of `settings`.
-pub(super) fn take(text: &str, settings: &[Setting]) -> Result<Taken> {
+pub(super) fn take(text: &str, path: &Path, settings: &[Setting]) -> Result<Taken> {
     let decls = crate::config::scene_decls;
-    let mut set = UncertainSet::default();
-    let mut new_text = None;
-    // A file that does not parse is left to the scene reader, which says where.
-    if let Ok(mut raw) = toml::from_str::<toml::Table>(text)
-        && let Some(scene) = raw.get_mut("scene").and_then(toml::Value::as_table_mut)
-    {
-        set = uncertain::take(scene, decls())?;
-        if !set.is_empty() {
-            new_text = Some(toml::to_string(&raw).expect("a table serialises"));
-        }
-    }
+    let (new_text, mut set) = crate::config::take_scene_uncertain(text, path)?;
     let (mut given, mut from_flags) = (toml::Table::new(), UncertainSet::default());
     let mut out = Vec::with_capacity(settings.len());
     for s in settings {

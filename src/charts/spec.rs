@@ -303,7 +303,7 @@ fn parse_scene(
 ) -> Result<Scene> {
     // Ranges and distributions out first, each replaced by its nominal value; a sweep draws
     // them as its band below.
-    let taken = super::scene_uncertain::take(text, settings)?;
+    let taken = super::scene_uncertain::take(text, path, settings)?;
     let (text, settings) = (taken.text.as_deref().unwrap_or(text), &taken.settings[..]);
     // The file as written first, so that its own mistakes carry their line.
     let mut file: SceneFile = parse_toml(text, path)?;
