@@ -35,10 +35,15 @@ fn main() {
         }
     }) / reps as f64;
     let whole = median_s(15, || {
-        for _ in 0..reps / 100 {
+        for _ in 0..reps {
             std::hint::black_box(range::closed_form(std::hint::black_box(&p), &box_mu));
         }
-    }) / (reps / 100) as f64;
+    }) / reps as f64;
+    let corners = median_s(15, || {
+        for _ in 0..reps {
+            std::hint::black_box(range::ends(std::hint::black_box(&p), &box_mu));
+        }
+    }) / reps as f64;
     // A point answer's cost depends on its status: past the palm `solve` also finds the friction
     // and the palm length that would bring the jam onto it. So each end is timed on its own, and
     // the range answer is set against the dearer of the two point answers it needs at least.
@@ -52,13 +57,19 @@ fn main() {
     };
     let (lo, hi) = (point_at(0.12), point_at(0.3));
     println!(
-        "shaft, mu 0.12:0.3: point answer at the nominal mu 0.21 {:.0} ns, at mu 0.12 (beyond_reach) \
-         {:.0} ns, at mu 0.3 (jams) {:.0} ns; the whole range answer with the status breakpoints \
-         {:.2} us: {:.1}x the nominal point, {:.1}x the dearer end's point answer",
+        "shaft, mu 0.12:0.3: point answer (`solve`) at the nominal mu 0.21 {:.0} ns, at mu 0.12 \
+         (beyond_reach) {:.0} ns, at mu 0.3 (jams) {:.0} ns",
         point * 1e9,
         lo * 1e9,
         hi * 1e9,
-        whole * 1e6,
+    );
+    println!(
+        "  range answer: the interval from its two corners (range::ends) {:.0} ns, {:.1}x the \
+         nominal point answer; with the status change along mu (range::closed_form) {:.0} ns, \
+         {:.1}x the nominal point, {:.1}x the dearer end's point answer",
+        corners * 1e9,
+        corners / point,
+        whole * 1e9,
         whole / point,
         whole / lo.max(hi)
     );

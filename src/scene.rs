@@ -222,7 +222,16 @@ pub fn palm_angle_at(radius_mm: f64, offset_mm: f64, x_mm: f64) -> f64 {
 /// s_B = x cos(theta) + r sin(theta) = r cot(theta/2) + h cot(theta), which is x for h = 0
 /// (equal tangents) and x - h tan(theta/2) for an offset palm. The palm's reach is judged on it.
 pub fn contact_distance_mm(radius_mm: f64, offset_mm: f64, theta: f64) -> f64 {
-    let x = disc_position_mm(radius_mm, offset_mm, theta);
+    contact_distance_at_mm(
+        radius_mm,
+        offset_mm,
+        theta,
+        disc_position_mm(radius_mm, offset_mm, theta),
+    )
+}
+
+/// [`contact_distance_mm`] where the disc's position `x` (mm) at `theta` is known.
+pub(crate) fn contact_distance_at_mm(radius_mm: f64, offset_mm: f64, theta: f64, x: f64) -> f64 {
     if offset_mm == 0.0 {
         x
     } else {

@@ -83,7 +83,12 @@ pub struct GroundReaction {
 
 /// Ground reaction and jam margin at palm angle `theta` (rad), with the palm sliding.
 pub fn ground_reaction(p: &SceneParams, theta: f64) -> GroundReaction {
-    let phi = theta - p.alpha_palm();
+    reaction_at(p, p.alpha_palm(), theta)
+}
+
+/// [`ground_reaction`] with the palm's friction angle `alpha_palm` (rad) given.
+fn reaction_at(p: &SceneParams, alpha_palm: f64, theta: f64) -> GroundReaction {
+    let phi = theta - alpha_palm;
     let r_t = p.force_n * phi.sin();
     let r_n = p.weight_n() + p.force_n * phi.cos();
     GroundReaction {
@@ -97,6 +102,11 @@ pub fn ground_reaction(p: &SceneParams, theta: f64) -> GroundReaction {
 /// The jam margin mu_g R_n - R_t in N at palm angle `theta` (rad); see [`ground_reaction`].
 pub fn margin_n(p: &SceneParams, theta: f64) -> f64 {
     ground_reaction(p, theta).margin_n
+}
+
+/// [`margin_n`] with the palm's friction angle `alpha_palm` (rad) given.
+fn margin_at(p: &SceneParams, alpha_palm: f64, theta: f64) -> f64 {
+    reaction_at(p, alpha_palm, theta).margin_n
 }
 
 /// The closed-form answer for one push.
@@ -148,10 +158,31 @@ pub struct PastPalm {
 /// The closed-form jam angle in rad, alpha_g + alpha_p + asin(m g sin(alpha_g) / F), before the
 /// statuses are decided; +infinity when the push can never move the disc (m g sin(alpha_g) >= F).
 pub fn theta_jam_rad(p: &SceneParams) -> f64 {
+    theta_jam_from(p, &FrictionAngles::of(p))
+}
+
+/// The friction angles alpha_g = atan(mu_ground) and alpha_p = atan(mu_palm) in rad, each
+/// computed once per scene: [`decide`] needs them three times over.
+struct FrictionAngles {
+    ground: f64,
+    palm: f64,
+}
+
+impl FrictionAngles {
+    fn of(p: &SceneParams) -> Self {
+        FrictionAngles {
+            ground: p.alpha_ground(),
+            palm: p.alpha_palm(),
+        }
+    }
+}
+
+/// [`theta_jam_rad`] from the scene's friction angles.
+fn theta_jam_from(p: &SceneParams, a: &FrictionAngles) -> f64 {
     // m g sin(alpha_g) / F, written so that mu -> infinity stays finite.
-    let load_ratio = p.weight_n() * p.alpha_ground().sin() / p.force_n;
+    let load_ratio = p.weight_n() * a.ground.sin() / p.force_n;
     if load_ratio < 1.0 {
-        p.alpha_ground() + p.alpha_palm() + load_ratio.asin()
+        a.ground + a.palm + load_ratio.asin()
     } else {
         f64::INFINITY
     }
@@ -176,7 +207,12 @@ pub fn reach_angle_rad(p: &SceneParams) -> f64 {
 /// closed (frictionless) or x_rigid is not finite. Depends on mu_ground, mu_palm, radius_mm and
 /// palm_offset_mm only.
 pub fn rigid_limit(p: &SceneParams) -> (f64, Option<f64>) {
-    let wedge = p.alpha_ground() + p.alpha_palm();
+    rigid_limit_from(p, &FrictionAngles::of(p))
+}
+
+/// [`rigid_limit`] from the scene's friction angles.
+fn rigid_limit_from(p: &SceneParams, a: &FrictionAngles) -> (f64, Option<f64>) {
+    let wedge = a.ground + a.palm;
     let x_rigid = finite_or_none(p.disc_position_mm(wedge)).filter(|_| wedge > 0.0);
     (wedge.to_degrees(), x_rigid)
 }
@@ -184,10 +220,11 @@ pub fn rigid_limit(p: &SceneParams) -> (f64, Option<f64>) {
 /// Solves the scene in closed form. `p` must have passed [`SceneParams::validate`].
 pub fn solve(p: &SceneParams) -> StaticsSolution {
     let start = p.start_angle_deg.to_radians();
-    let lift_off_above = lift_off_angle(p);
+    let angles = FrictionAngles::of(p);
+    let lift_off_above = lift_off_angle(p, angles.palm);
     let lifts_off = lift_off_above.is_some_and(|t| t < start);
 
-    let (theta_rigid_deg, x_rigid_mm) = rigid_limit(p);
+    let (theta_rigid_deg, x_rigid_mm) = rigid_limit_from(p, &angles);
     let mut out = StaticsSolution {
         status: JamStatus::Jams,
         theta_jam_deg: None,
@@ -199,7 +236,7 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
         past_palm: None,
     };
 
-    match decide(p) {
+    match decide_with(p, &angles) {
         Decision::Bare(status) => out.status = status,
         Decision::JammedAtStart => {
             out.status = JamStatus::JammedAtStart;
@@ -239,6 +276,20 @@ pub fn status(p: &SceneParams) -> JamStatus {
     }
 }
 
+/// [`status`], the raw jam angle [`theta_jam_rad`] (rad) and, where the disc jams on or past
+/// the palm, x at that angle (mm): one evaluation, what a corner of a range answer needs.
+pub fn status_and_jam(p: &SceneParams) -> (JamStatus, f64, Option<f64>) {
+    let angles = FrictionAngles::of(p);
+    match decide_with(p, &angles) {
+        Decision::Bare(status) => (status, theta_jam_from(p, &angles), None),
+        Decision::JammedAtStart => (JamStatus::JammedAtStart, theta_jam_from(p, &angles), None),
+        Decision::PastPalm {
+            theta_jam, x_jam, ..
+        } => (JamStatus::BeyondReach, theta_jam, Some(x_jam)),
+        Decision::Jams { theta_jam, x_jam } => (JamStatus::Jams, theta_jam, Some(x_jam)),
+    }
+}
+
 /// The verdict of the closed form and the numbers it rests on, before [`solve`] adds its extras.
 enum Decision {
     /// A status with no jam angle: beyond the palm from the start, never jams, too weak.
@@ -258,29 +309,34 @@ enum Decision {
 /// Decides the status in the order beyond_reach (start), never_jams, too_weak,
 /// jammed_at_start, beyond_reach (jam past the palm), jams.
 fn decide(p: &SceneParams) -> Decision {
+    decide_with(p, &FrictionAngles::of(p))
+}
+
+/// [`decide`] from the scene's friction angles.
+fn decide_with(p: &SceneParams, a: &FrictionAngles) -> Decision {
     let start = p.start_angle_deg.to_radians();
     // A disc that starts beyond the palm's end is never touched, whatever the friction.
     if p.contact_distance_mm(start) > p.palm_length_mm {
         return Decision::Bare(JamStatus::BeyondReach);
     }
-    let theta_jam = theta_jam_rad(p);
+    let theta_jam = theta_jam_from(p, a);
     if theta_jam <= 0.0 {
         return Decision::Bare(JamStatus::NeverJams);
     }
     // Too weak: no angle slides the disc, not even 90 deg + alpha_g + alpha_p where the push
     // slides it best. When that angle lies past 180 deg (mu_g mu_p >= 1) the wedge self-locks
     // at every palm angle whatever the push, and the disc is jammed at the start instead.
-    if theta_jam.is_infinite() && p.alpha_ground() + p.alpha_palm() < FRAC_PI_2 {
+    if theta_jam.is_infinite() && a.ground + a.palm < FRAC_PI_2 {
         return Decision::Bare(JamStatus::TooWeak);
     }
     // The margin is checked at the start as well: with a heavy disc and a start near 180 deg the
     // ground may hold beyond the second root of the margin, above theta_jam.
-    if theta_jam >= start || margin_n(p, start) >= 0.0 {
+    if theta_jam >= start || margin_at(p, a.palm, start) >= 0.0 {
         return Decision::JammedAtStart;
     }
     let x_jam = p.disc_position_mm(theta_jam);
     // x_jam may overflow to +inf for a vanishing wedge angle; that is beyond any palm.
-    let s_b = p.contact_distance_mm(theta_jam);
+    let s_b = crate::scene::contact_distance_at_mm(p.radius_mm, p.palm_offset_mm, theta_jam, x_jam);
     if x_jam.is_nan() || s_b.is_nan() || s_b > p.palm_length_mm {
         return Decision::PastPalm {
             theta_jam,
@@ -322,12 +378,12 @@ fn friction_factor_to_reach(p: &SceneParams) -> Option<f64> {
 }
 
 /// Palm angle (rad) above which R_n = m g + F cos(theta - alpha_p) < 0, if below 180 deg.
-fn lift_off_angle(p: &SceneParams) -> Option<f64> {
+fn lift_off_angle(p: &SceneParams, alpha_palm: f64) -> Option<f64> {
     let k = p.weight_n() / p.force_n;
     if k >= 1.0 {
         return None;
     }
-    let t = p.alpha_palm() + (-k).acos();
+    let t = alpha_palm + (-k).acos();
     (t < std::f64::consts::PI).then_some(t)
 }
 

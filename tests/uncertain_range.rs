@@ -190,3 +190,47 @@ fn a_status_on_a_stretch_narrower_than_the_old_scan_step_is_reported() {
     assert_eq!(a.statuses.len(), 3);
     assert!(statuses.iter().all(|s| a.statuses.contains(s)));
 }
+
+/// Every single input's status change where the jam leaves the palm is solved for (closed form
+/// for the push, the mass and the palm's friction; Newton's method for the ground's friction
+/// and for both): the change lies where the contact reaches the palm's end, s_B = 80 mm, to
+/// 1e-9 of the range, and the closed form's own status agrees either side of it.
+#[test]
+fn each_inputs_change_at_the_palms_end_is_where_s_b_is_the_palm_length() {
+    let cases: [(&'static str, &[&'static str], f64, f64, f64); 5] = [
+        ("mu", &["mu_ground", "mu_palm"], 0.21, 0.05, 0.5),
+        ("mu_ground", &["mu_ground"], 0.21, 0.02, 0.6),
+        ("mu_palm", &["mu_palm"], 0.21, 0.0, 0.6),
+        ("force_n", &["force_n"], 0.15, 10.0, 400.0),
+        ("mass_kg", &["mass_kg"], 0.15, 0.05, 3.0),
+    ];
+    for (name, keys, mu, lo, hi) in cases {
+        let p = shaft().with_mu(mu);
+        let set = UncertainSet {
+            inputs: vec![input(name, keys, lo, hi)],
+        };
+        let a = range::closed_form(&p, &set);
+        let segs = &a.inputs[0].segments;
+        assert_eq!(segs.len(), 2, "{name}: {segs:?}");
+        let at = |x: f64| set.apply(&p, &[x]);
+        let change = segs[0].to;
+        let q = at(change);
+        let s_b = q.contact_distance_mm(statics::theta_jam_rad(&q));
+        assert!(
+            (s_b - 80.0).abs() < 1e-6,
+            "{name}: s_B at {change} is {s_b}"
+        );
+        let step = 1e-9 * (hi - lo);
+        assert_eq!(statics::solve(&at(change)).status, segs[1].status, "{name}");
+        assert_eq!(
+            statics::solve(&at(change - step)).status,
+            segs[0].status,
+            "{name}"
+        );
+        let statuses = [segs[0].status, segs[1].status];
+        assert!(
+            statuses.contains(&JamStatus::BeyondReach) && statuses.contains(&JamStatus::Jams),
+            "{name}: {segs:?}"
+        );
+    }
+}

@@ -191,7 +191,7 @@ pub fn from_uncertain(
             label.push(format!("{} {lo} to {hi}", i.name));
         }
     }
-    let box_answer = crate::uncertain::range::closed_form(p, &edges);
+    let box_answer = crate::uncertain::range::ends(p, &edges);
     Ok(Some(SweepBand {
         earliest: edges.apply(p, &box_answer.earliest.values),
         latest: edges.apply(p, &box_answer.latest.values),

@@ -7,10 +7,18 @@
 //! (the earliest jam, nearest the hinge) and the opposite corner (the latest). x_jam falls as
 //! theta_jam grows up to the angle [`x_turn_rad`] (180 deg without a palm offset), so its
 //! extremes are the corners' as well, or x at that angle when the interval of theta crosses it.
-//! The status changes are found by bisection along each input (the others at their nominal
-//! values) to 1e-9 of the range's width: the status is monotone along each input (each status
-//! holds on one stretch), so a walk from the low end's status to the high end's bisects each
-//! change in turn, with the cheap [`statics::status`] (no past-palm extras).
+//! Those two corners are [`ends`]. The status changes are found along each input (the others
+//! at their nominal values) to 1e-9 of the range's width: the status is monotone along each
+//! input (each status holds on one stretch), so a walk goes from the low end's status to the
+//! high end's, change by change. A change between jams and beyond_reach (or jammed_at_start)
+//! lies where theta_jam crosses the palm's reach angle (or the start angle): Eq. 2 solved for
+//! the input gives it in closed form for the push, the mass and the palm's friction, by
+//! Newton's method in the friction angle for the ground's friction ([`invert`]), and the
+//! statuses a hair either side of it confirm it (regula falsi on theta_jam, then bisection of
+//! the status, where they do not); other changes are bisected with the cheap
+//! [`statics::status`] (no past-palm extras). So a range answer over one input costs its two
+//! corners, a root and two statuses per change (`cargo bench --bench uncertain` prints it
+//! against a point answer).
 //!
 //! The other models answer the box by sampling it: a grid of [`SAMPLES_PER_INPUT`] values per
 //! input (at most [`MAX_GRID`] points), whose range of answers is reported, not a bound.
@@ -120,80 +128,50 @@ pub fn x_turn_rad(p: &SceneParams) -> f64 {
     2.0 * (h / (2.0 * (r + h))).sqrt().acos()
 }
 
+/// The two corners of a box and the interval between them: the part of a [`RangeAnswer`]
+/// without the status changes along each input.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BoxEnds {
+    /// Where the jam comes earliest (every input at its theta-raising end).
+    pub earliest: Corner,
+    /// Where the jam comes latest (the opposite corner).
+    pub latest: Corner,
+    /// The interval [min, max] of theta_jam in deg over the box (None where no point jams).
+    pub theta_jam_deg: Option<[f64; 2]>,
+    /// The interval [min, max] of x_jam in mm over the box.
+    pub x_jam_mm: Option<[f64; 2]>,
+    /// Each input's (low end, high end, the end that raises theta_jam), in the set's order.
+    pub inputs: Vec<(f64, f64, End)>,
+}
+
 /// The closed form over the box of `set` around `p` (which holds the nominal values).
 pub fn closed_form(p: &SceneParams, set: &UncertainSet) -> RangeAnswer {
-    let ends: Vec<(f64, f64)> = set.inputs.iter().map(|i| i.value.ends()).collect();
-    let nominal: Vec<f64> = set.inputs.iter().map(|i| i.value.nominal()).collect();
-    let theta_at = |v: &[f64]| statics::theta_jam_rad(&set.apply(p, v));
-    // The direction of each input: theta_jam at its ends, the others nominal. The proof says
-    // the sign does not depend on the others.
-    let earliest_at: Vec<End> = ends
-        .iter()
-        .enumerate()
-        .map(|(i, &(lo, hi))| {
-            let mut v = nominal.clone();
-            v[i] = lo;
-            let t_lo = theta_at(&v);
-            v[i] = hi;
-            if theta_at(&v) >= t_lo {
-                End::High
-            } else {
-                End::Low
-            }
-        })
-        .collect();
-    let pick = |early: bool| -> Vec<f64> {
-        ends.iter()
-            .zip(&earliest_at)
-            .map(|(&(lo, hi), e)| if (*e == End::High) == early { hi } else { lo })
-            .collect()
-    };
-    let corner = |values: Vec<f64>| {
-        let q = set.apply(p, &values);
-        let theta = statics::theta_jam_rad(&q);
-        let jam = (theta.is_finite() && theta > 0.0).then_some(theta);
-        Corner {
-            status: statics::status(&q),
-            theta_jam_deg: jam.map(f64::to_degrees),
-            x_jam_mm: jam.map(|t| q.disc_position_mm(t)),
-            values,
-        }
-    };
-    let earliest = corner(pick(true));
-    let latest = corner(pick(false));
-    let theta_jam_deg = match (latest.theta_jam_deg, earliest.theta_jam_deg) {
-        (Some(a), Some(b)) => Some([a, b]),
-        (Some(a), None) => Some([a, a]),
-        _ => None,
-    };
-    let x_jam_mm = theta_jam_deg.map(|[a, b]| {
-        let x_hi = p.disc_position_mm(a.to_radians());
-        let turn = x_turn_rad(p);
-        let x_lo = if b.to_radians() > turn {
-            p.disc_position_mm(turn)
-        } else {
-            p.disc_position_mm(b.to_radians())
-        };
-        [x_lo.min(x_hi), x_hi.max(x_lo)]
-    });
-    let at_nominal = set.apply(p, &nominal);
+    let BoxEnds {
+        earliest,
+        latest,
+        theta_jam_deg,
+        x_jam_mm,
+        inputs: per_input,
+    } = ends(p, set);
     let inputs: Vec<InputEnds> = set
         .inputs
         .iter()
-        .enumerate()
-        .map(|(i, input)| InputEnds {
-            name: input.name,
-            lo: ends[i].0,
-            hi: ends[i].1,
-            earliest_at: earliest_at[i],
-            segments: walk(ends[i], |x| {
-                // The nominal scene with input i at x: no vector per evaluation.
-                let mut q = at_nominal;
-                for k in &input.keys {
-                    q.set_real(k, x);
-                }
-                q
-            }),
+        .zip(&per_input)
+        .map(|(input, &(lo, hi, earliest_at))| {
+            // With one input its ends are the corners, whose statuses are known.
+            let known = (set.inputs.len() == 1).then_some(match earliest_at {
+                End::High => (latest.status, earliest.status),
+                End::Low => (earliest.status, latest.status),
+            });
+            InputEnds {
+                name: input.name,
+                lo,
+                hi,
+                earliest_at,
+                segments: walk((lo, hi), known, Some(&input.keys), |x| {
+                    with_input(p, &input.keys, x)
+                }),
+            }
         })
         .collect();
     // Every status in the box lies on the diagonal from the latest corner to the earliest:
@@ -202,9 +180,9 @@ pub fn closed_form(p: &SceneParams, set: &UncertainSet) -> RangeAnswer {
     let statuses = if let [only] = inputs.as_slice() {
         distinct(only.segments.iter().map(|s| s.status))
     } else {
-        let (a, b) = (pick(false), pick(true));
-        let diagonal = walk((0.0, 1.0), |t| {
-            let v: Vec<f64> = a.iter().zip(&b).map(|(a, b)| a + t * (b - a)).collect();
+        let (a, b) = (&latest.values, &earliest.values);
+        let diagonal = walk((0.0, 1.0), None, None, |t| {
+            let v: Vec<f64> = a.iter().zip(b).map(|(a, b)| a + t * (b - a)).collect();
             set.apply(p, &v)
         });
         distinct(diagonal.iter().map(|s| s.status))
@@ -218,6 +196,181 @@ pub fn closed_form(p: &SceneParams, set: &UncertainSet) -> RangeAnswer {
         inputs,
         statuses,
     }
+}
+
+/// The box's two corners and its intervals of theta_jam and x_jam, exactly (theta_jam is
+/// monotone in every input): two point answers' work, without the status changes that
+/// [`closed_form`] adds.
+pub fn ends(p: &SceneParams, set: &UncertainSet) -> BoxEnds {
+    // Per input: its ends and the end that raises theta_jam.
+    let per_input: Vec<(f64, f64, End)> = set
+        .inputs
+        .iter()
+        .map(|input| {
+            let (lo, hi) = input.value.ends();
+            let earliest_at = known_earliest_end(p, &input.keys).unwrap_or_else(|| {
+                // The direction by theta_jam at its ends, the others nominal. The proof says
+                // the sign does not depend on the others.
+                let at = |x: f64| statics::theta_jam_rad(&with_input(p, &input.keys, x));
+                if at(hi) >= at(lo) {
+                    End::High
+                } else {
+                    End::Low
+                }
+            });
+            (lo, hi, earliest_at)
+        })
+        .collect();
+    let pick = |early: bool| -> Vec<f64> {
+        per_input
+            .iter()
+            .map(|&(lo, hi, e)| if (e == End::High) == early { hi } else { lo })
+            .collect()
+    };
+    let corner = |values: Vec<f64>| {
+        let q = set.apply(p, &values);
+        let (status, theta, x) = statics::status_and_jam(&q);
+        let jam = (theta.is_finite() && theta > 0.0).then_some(theta);
+        Corner {
+            status,
+            theta_jam_deg: jam.map(f64::to_degrees),
+            x_jam_mm: jam.map(|t| x.unwrap_or_else(|| q.disc_position_mm(t))),
+            values,
+        }
+    };
+    let earliest = corner(pick(true));
+    let latest = corner(pick(false));
+    let theta_jam_deg = match (latest.theta_jam_deg, earliest.theta_jam_deg) {
+        (Some(a), Some(b)) => Some([a, b]),
+        (Some(a), None) => Some([a, a]),
+        _ => None,
+    };
+    // x at the corners' angles, which they hold already (no input moves r or h), or at the
+    // turning angle where the interval of theta passes it.
+    let x_jam_mm = match (latest.x_jam_mm, earliest.x_jam_mm) {
+        (Some(x_hi), earliest_x) => {
+            let turn = x_turn_rad(p);
+            let x_lo = match (earliest.theta_jam_deg, earliest_x) {
+                (Some(b), _) if b.to_radians() > turn => p.disc_position_mm(turn),
+                (Some(_), Some(x)) => x,
+                _ => x_hi,
+            };
+            Some([x_lo.min(x_hi), x_hi.max(x_lo)])
+        }
+        _ => None,
+    };
+    BoxEnds {
+        earliest,
+        latest,
+        theta_jam_deg,
+        x_jam_mm,
+        inputs: per_input,
+    }
+}
+
+/// `p` with every field in `keys` set to `x`.
+fn with_input(p: &SceneParams, keys: &[&'static str], x: f64) -> SceneParams {
+    let mut q = *p;
+    for k in keys {
+        q.set_real(k, x);
+    }
+    q
+}
+
+/// The end of an input (setting `keys`) that raises theta_jam, from the proof in
+/// [`crate::statics`] ("Monotone in every uncertain input"): the high end of a friction or the
+/// mass, the low end of the push. None where the proof gives no strict sign (no ground
+/// friction or no weight: the push and the mass then leave theta_jam alone) or for a key it
+/// does not cover; the caller then compares theta_jam at the ends.
+fn known_earliest_end(p: &SceneParams, keys: &[&'static str]) -> Option<End> {
+    let strict = p.mu_ground > 0.0 && p.weight_n() > 0.0;
+    let raises = |k: &&str| matches!(*k, "mu_ground" | "mu_palm") || (*k == "mass_kg" && strict);
+    if keys.iter().all(raises) {
+        Some(End::High)
+    } else if strict && keys == ["force_n"] {
+        Some(End::Low)
+    } else {
+        None
+    }
+}
+
+/// The value of the input setting `keys` at which theta_jam of `p` equals `target` (rad): in
+/// closed form for the push, the mass or the palm's friction alone (Eq. 2 solved for it), by
+/// Newton's method in the friction angle for the ground's friction, alone or with the palm's
+/// (asin(k sin alpha_g) has no inverse in closed form beside alpha_g). None for other keys, or
+/// where theta_jam does not reach `target`.
+///
+/// With alpha_g = atan(mu_g), alpha_p = atan(mu_p) and k = m g / F, Eq. 2 reads
+/// theta = alpha_g + alpha_p + asin(k sin alpha_g), so
+/// - F = m g sin(alpha_g) / sin(theta - alpha_g - alpha_p), m = F sin(theta - alpha_g -
+///   alpha_p) / (g sin alpha_g), both for theta - alpha_g - alpha_p in (0, 90 deg);
+/// - mu_p = tan(theta - alpha_g - asin(k sin alpha_g));
+/// - for mu_g (c = 1) or mu_g = mu_p (c = 2) the root a of f(a) = c a + asin(k sin a) + b -
+///   theta (b = alpha_p or 0) on [0, 90 deg): f' = c + k cos a / sqrt(1 - k^2 sin^2 a) > 0, so
+///   f is increasing and Newton's steps, kept inside the bracket, converge.
+fn invert(p: &SceneParams, keys: &[&'static str], target: f64, bracket: (f64, f64)) -> Option<f64> {
+    use std::f64::consts::FRAC_PI_2;
+    let (ag, ap) = (|| p.alpha_ground(), || p.alpha_palm());
+    let w = p.weight_n();
+    let in_quadrant = |d: f64| (d > 0.0 && d < FRAC_PI_2).then_some(d);
+    let x = match keys {
+        ["force_n"] => in_quadrant(target - ag() - ap()).map(|d| w * ag().sin() / d.sin()),
+        ["mass_kg"] => in_quadrant(target - ag() - ap())
+            .filter(|_| p.mu_ground > 0.0)
+            .map(|d| p.force_n * d.sin() / (p.gravity_m_s2 * ag().sin())),
+        ["mu_palm"] => {
+            let ratio = w * ag().sin() / p.force_n;
+            (ratio < 1.0)
+                .then(|| target - ag() - ratio.asin())
+                .and_then(|a| (0.0..FRAC_PI_2).contains(&a).then(|| a.tan()))
+        }
+        ["mu_ground"] => newton_angle(1.0, ap(), w / p.force_n, target, bracket),
+        ["mu_ground", "mu_palm"] | ["mu_palm", "mu_ground"] => {
+            newton_angle(2.0, 0.0, w / p.force_n, target, bracket)
+        }
+        _ => None,
+    }?;
+    x.is_finite().then_some(x)
+}
+
+/// The friction mu = tan(a) in `bracket` (frictions) where c a + asin(k sin a) + b = target, by
+/// Newton's method in a, kept inside [0, 90 deg) (bisection where a step would leave it):
+/// three or four steps from the first guess, which solves the linear part with asin's argument
+/// taken at a = (target - b) / c. None when the root lies outside the bracket or Newton's
+/// method does not settle in 60 steps; the caller then falls back to regula falsi.
+fn newton_angle(c: f64, b: f64, k: f64, target: f64, (lo, hi): (f64, f64)) -> Option<f64> {
+    // Every friction angle lies in [0, 90 deg): the bracket in mu is checked on the answer.
+    let (mut a_lo, mut a_hi) = (0.0, std::f64::consts::FRAC_PI_2);
+    let guess = (target - b - (k * ((target - b) / c).sin()).min(1.0).asin()) / c;
+    let mut a = guess.clamp(a_lo, a_hi);
+    for _ in 0..60 {
+        let (s, co) = a.sin_cos();
+        let ks = k * s;
+        if ks >= 1.0 {
+            // Too weak here: the root lies below.
+            a_hi = a;
+            a = 0.5 * (a_lo + a_hi);
+            continue;
+        }
+        let fa = c * a + ks.asin() + b - target;
+        let step = fa / (c + k * co / (1.0 - ks * ks).sqrt());
+        if fa == 0.0 || step.abs() <= 4.0 * f64::EPSILON * a.abs() {
+            let mu = (a - step).clamp(a_lo, a_hi).tan();
+            return (mu >= lo && mu <= hi).then_some(mu);
+        }
+        if fa > 0.0 {
+            a_hi = a
+        } else {
+            a_lo = a
+        }
+        let next = a - step;
+        a = if next > a_lo && next < a_hi {
+            next
+        } else {
+            0.5 * (a_lo + a_hi)
+        };
+    }
+    None
 }
 
 /// Any model over the box by sampling it: a grid of [`SAMPLES_PER_INPUT`] values per input (fewer
@@ -331,19 +484,26 @@ fn earliest_end(earliest: &[f64], latest: &[f64], i: usize) -> End {
 /// The statuses along `[lo, hi]`, `at(x)` the scene at x, of a status that is monotone along
 /// it (each status one stretch, in the order theta_jam passes its thresholds; see the module
 /// docs): from the status at `lo`, each change found to 1e-9 of the width, until the status at
-/// `hi` is reached. The status alone is asked ([`statics::status`]): `statics::solve` would run
-/// its past-palm bisection at every point beyond the palm (issue 19: the range answer took
-/// 1450x a point answer).
-fn walk((lo, hi): (f64, f64), at: impl Fn(f64) -> SceneParams) -> Vec<Segment> {
+/// `hi` is reached. `known` gives the statuses at the ends where the caller has them; `keys`
+/// the settings `at` moves, when the walk is along one input (its changes are then solved for
+/// in closed form, [`invert`]). The status alone is asked ([`statics::status`]):
+/// `statics::solve` would run its past-palm bisection at every point beyond the palm (issue 19:
+/// the range answer took 1450x a point answer).
+fn walk(
+    (lo, hi): (f64, f64),
+    known: Option<(JamStatus, JamStatus)>,
+    keys: Option<&[&'static str]>,
+    at: impl Fn(f64) -> SceneParams,
+) -> Vec<Segment> {
     let status = |x: f64| statics::status(&at(x));
     let tol = 1e-9 * (hi - lo);
-    let last = status(hi);
-    let (mut from, mut here) = (lo, status(lo));
-    let mut out = Vec::new();
+    let (first, last) = known.unwrap_or_else(|| (status(lo), status(hi)));
+    let (mut from, mut here) = (lo, first);
+    let mut out = Vec::with_capacity(2);
     // Each status has one stretch, so there are fewer changes than statuses; the bound only
     // guards against a status that is not monotone after all.
     while here != last && out.len() < JamStatus::ALL.len() {
-        let (to, next) = change_by_theta((from, hi), tol, here, last, &at).map_or_else(
+        let (to, next) = change_by_theta((from, hi), tol, here, last, keys, &at).map_or_else(
             || bisect_change((from, hi), tol, here, status),
             |to| (to, last),
         );
@@ -376,6 +536,7 @@ fn change_by_theta(
     tol: f64,
     here: JamStatus,
     next: JamStatus,
+    keys: Option<&[&'static str]>,
     at: impl Fn(f64) -> SceneParams,
 ) -> Option<f64> {
     use JamStatus::{BeyondReach, JammedAtStart, Jams};
@@ -385,6 +546,16 @@ fn change_by_theta(
         (Jams, JammedAtStart) | (JammedAtStart, Jams) => q.start_angle_deg.to_radians(),
         _ => return None,
     };
+    let status = |x: f64| statics::status(&at(x));
+    // Along one input the crossing is solved for; the statuses either side of it (a bracket
+    // of `tol` around the root) confirm it, as the bracket's ends do below.
+    if let Some(root) = keys.and_then(|k| invert(&q, k, target, (a, b))) {
+        let upper = (root + 0.5 * tol).min(b);
+        let lower = (upper - tol).max(a);
+        if status(lower) == here && status(upper) == next {
+            return Some(upper);
+        }
+    }
     let g = |x: f64| statics::theta_jam_rad(&at(x)) - target;
     let (mut ga, mut gb) = (g(a), g(b));
     if !(ga.is_finite() && gb.is_finite()) || (ga > 0.0) == (gb > 0.0) {
@@ -414,7 +585,6 @@ fn change_by_theta(
             kept_b = Some(false);
         }
     }
-    let status = |x: f64| statics::status(&at(x));
     (b - a <= tol && status(a) == here && status(b) == next).then_some(b)
 }
 
@@ -460,10 +630,15 @@ fn segments_of(along: &[(f64, JamStatus)]) -> Vec<Segment> {
 
 /// The distinct statuses, in the order of [`JamStatus::ALL`].
 fn distinct(seen: impl Iterator<Item = JamStatus>) -> Vec<JamStatus> {
-    let seen: Vec<JamStatus> = seen.collect();
+    let mut met = [false; JamStatus::ALL.len()];
+    for s in seen {
+        if let Some(i) = JamStatus::ALL.iter().position(|&a| a == s) {
+            met[i] = true;
+        }
+    }
     JamStatus::ALL
         .iter()
-        .copied()
-        .filter(|s| seen.contains(s))
+        .zip(met)
+        .filter_map(|(&s, m)| m.then_some(s))
         .collect()
 }
