@@ -6,7 +6,7 @@
 //
 // Test hooks, after `#`, joined by `&`: readoff=NAME:X[:Y][;NAME:X...] reads chart NAME off at
 // x = X (and y = Y; without it, on the jam map's boundary, the sweep's first curve or the middle
-// of a map's y axis) and pins
+// of a map's or a points chart's y axis) and pins
 // it; click=NAME:X:Y clicks the displayed picture where (X, Y) is drawn, through the same
 // pointer mapping as a user's click; aim=NAME:X:Y scrolls the displayed (X, Y) to the middle of
 // the window and writes its window coordinates to the body's data-aim ("x,y") for a driver's

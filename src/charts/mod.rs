@@ -36,8 +36,8 @@
 //! Beside the kinds: `axes` draws frames and ticks that `ticks` places, `colorbar` the colour bar of a
 //! filled map, `labels` words
 //! the axes and subtitles, `contours` maps the contour crate's geometry to plot space,
-//! `data` holds the data files, `readoff` what the gallery's read-off embeds (maps and
-//! sweeps: plotting areas as drawn, axes, data) and `gallery` writes `index.html`.
+//! `data` holds the data files, `readoff` what the gallery's read-off embeds (every kind:
+//! plotting areas as drawn, axes, data) and `gallery` writes `index.html`.
 
 pub(crate) mod axes;
 pub(crate) mod builtin;
