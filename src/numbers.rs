@@ -30,8 +30,14 @@ const PLAIN_MAX: f64 = 1e15;
 pub(crate) struct Num(pub f64);
 
 impl fmt::Display for Num {
+    /// With a precision (`{:.3}`), [`fixed`] to that many decimals (`24.355`, and `1e-300`
+    /// where `{:.3}` alone would print `0.000`); without one, 12 significant digits as the
+    /// module docs say. Width and alignment are not applied.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let v = self.0;
+        if let Some(decimals) = f.precision() {
+            return f.write_str(&fixed(v, decimals));
+        }
         if !v.is_finite() || v == 0.0 {
             return write!(f, "{v}");
         }
@@ -143,6 +149,25 @@ mod tests {
         assert_eq!(fixed(0.0004, 3), "4e-4");
         assert_eq!(fixed(0.0006, 3), "0.001");
         assert_eq!(fixed(1.1459155902e-298, 3), "1.146e-298");
+    }
+
+    /// The CLI's answers printed `{:.3}` of raw f64s (polish, item 3): `x = 0.000 mm` for a
+    /// disc at 1e-7 mm, 301 digits for 1e300. `Num` with a precision is [`fixed`]: the same
+    /// text as `{:.3}` for every ordinary value, an exponent at the extremes.
+    #[test]
+    fn num_with_a_precision_is_fixed() {
+        for (v, d) in [
+            (24.354551, 3),
+            (-3.26912, 3),
+            (1.542264957, 4),
+            (0.0, 3),
+            (9.806, 0),
+        ] {
+            assert_eq!(format!("{:.d$}", Num(v)), format!("{v:.d$}"), "{v} to {d}");
+        }
+        assert_eq!(format!("{:.3} mm", Num(1.2e-7)), "1.2e-7 mm");
+        assert_eq!(format!("{:.3}", Num(1e300)), "1e300");
+        assert_eq!(format!("{}", Num(0.1 + 0.2)), "0.3");
     }
 
     #[test]

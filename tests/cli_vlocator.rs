@@ -217,3 +217,54 @@ fn robust_v_block_refuses_bad_ranges_naming_the_flag() {
         );
     }
 }
+
+/// `vlocator --mu 0.2:0.4 --mu-left 0.3` was refused naming `--mu`, with "mu = 0.3 left, 0.3
+/// right" (the range's midpoint 0.30000000000000004 beside 0.3): the conflict is `--mu-left`,
+/// which keeps the left flank off the range. Each way of breaking "one friction range on both
+/// flanks" names the flank flag that breaks it, and exits 2.
+#[test]
+fn robust_v_block_names_the_flank_flag_that_breaks_one_friction_range() {
+    let dir = tempfile::tempdir().unwrap();
+    for (args, flag, value) in [
+        (
+            &["--mu", "0.2:0.4", "--mu-left", "0.3"][..],
+            "--mu-left",
+            "0.3",
+        ),
+        (
+            &["--mu", "0.2:0.4", "--mu-right", "0.25"][..],
+            "--mu-right",
+            "0.25",
+        ),
+        (&["--mu-left", "0.2:0.4"][..], "--mu-left", "0.2:0.4"),
+        (
+            &["--mu", "0.2:0.4", "--mu-left", "0.2:0.4"][..],
+            "--mu-left",
+            "0.2:0.4",
+        ),
+        (
+            &["--load", "6:9", "--mu-right", "0.2"][..],
+            "--mu-right",
+            "0.2",
+        ),
+    ] {
+        let mut all = vec!["vlocator"];
+        all.extend(args);
+        let r = jamchart(dir.path(), &all);
+        let err = stderr(&r);
+        assert_eq!(r.status.code(), Some(2), "{args:?}: {err}");
+        let key = flag.trim_start_matches("--").replace('-', "_");
+        // The key's flags are "--mu-left or --mu": the reason names the one that conflicts.
+        assert!(
+            err.contains(&format!("invalid {key} = {value} (flag {flag}")),
+            "{args:?}: {err}"
+        );
+        assert!(err.contains(&format!("without {flag} ")), "{args:?}: {err}");
+        assert!(
+            err.contains("one friction range for both flanks"),
+            "{args:?}: {err}"
+        );
+        assert!(!err.contains("(flag --mu)"), "{args:?}: {err}");
+        eprintln!("{}", err.trim());
+    }
+}

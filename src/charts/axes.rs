@@ -70,6 +70,28 @@ where
     Ok(chart)
 }
 
+/// Inside [`record_frames`], notes the rectangle from `top_left` to `bottom_right` (px of
+/// `area`, edges) as a plotting area: a chart drawn without [`build_chart`] (the stability
+/// matrix's cells) gives the read-off its frame this way. Nothing is drawn.
+pub fn record_area<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    top_left: (i32, i32),
+    bottom_right: (i32, i32),
+) {
+    FRAMES.with_borrow_mut(|frames| {
+        if let Some(frames) = frames {
+            let (w, h) = area.dim_in_pixel();
+            let (w, h) = (f64::from(w), f64::from(h));
+            frames.push(PlotFrame {
+                left: f64::from(top_left.0) / w,
+                right: f64::from(bottom_right.0) / w,
+                top: f64::from(top_left.1) / h,
+                bottom: f64::from(bottom_right.1) / h,
+            });
+        }
+    });
+}
+
 /// Where a plotting area lies in the picture, as fractions of its width and height from the
 /// top left, so that it holds at any scale and any displayed size: the centre of the pixel of
 /// the axis minimum is at `left` (x) and `bottom` (y), that of the maximum at `right` and `top`.

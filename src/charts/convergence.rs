@@ -8,13 +8,13 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use serde::{Deserialize, Serialize};
 
-use super::axes::{DrawResult, PlotAxis};
+use super::axes::{DrawResult, PlotAxis, PlotFrame};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
 use super::ticks::power_of_ten;
 use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
-use super::{DataFile, scene_subtitle_with};
+use super::{DataFile, readoff, scene_subtitle_with};
 use crate::csv_out::{Dec, to_csv};
 use crate::error::{Error, Result};
 use crate::grid::AxisScale;
@@ -192,31 +192,65 @@ impl Convergence {
         })
     }
 
+    /// The trace's rows, one per interior-point iteration: the data file's and the read-off's.
+    fn rows(&self) -> Vec<TraceRow> {
+        self.trace
+            .iter()
+            .map(|p| TraceRow {
+                theta_deg: Dec(self.theta_deg),
+                iteration: p.iteration as usize,
+                objective_n2: Dec(p.objective_n2),
+                res_primal: Dec(p.res_primal),
+                res_dual: Dec(p.res_dual),
+            })
+            .collect()
+    }
+
     /// The trace as CSV: the palm angle (deg), iteration, objective (N^2), residuals.
     pub fn data(&self, _scene: &Scene) -> DataFile {
-        /// One interior-point iteration at theta_jam.
-        #[derive(Serialize)]
-        struct Row {
-            theta_deg: Dec,
-            iteration: usize,
-            objective_n2: Dec,
-            res_primal: Dec,
-            res_dual: Dec,
-        }
-        let rows = self.trace.iter().map(|p| Row {
-            theta_deg: Dec(self.theta_deg),
-            iteration: p.iteration as usize,
-            objective_n2: Dec(p.objective_n2),
-            res_primal: Dec(p.res_primal),
-            res_dual: Dec(p.res_dual),
-        });
-        DataFile::csv(to_csv(rows))
+        DataFile::csv(to_csv(self.rows()))
+    }
+
+    /// The gallery's read-off ([`readoff`], kind `points`): the iteration nearest the pointer
+    /// on either panel, with its row of the data file.
+    pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+        let [objective, residuals] = self.figure.panels.as_slice() else {
+            return None;
+        };
+        let [f0, f1] = frames else { return None };
+        let at = |i: usize, p: &TracePoint, v: f64| (p.iteration as f64, v, i);
+        let objective_points: Vec<_> = (self.trace.iter().enumerate())
+            .map(|(i, p)| at(i, p, p.objective_n2))
+            .collect();
+        let residual_points: Vec<_> = (self.trace.iter().enumerate())
+            .flat_map(|(i, p)| [at(i, p, p.res_primal), at(i, p, p.res_dual)])
+            .collect();
+        let x = readoff::axis("iteration", &objective.x);
+        Some(serde_json::json!({
+            "kind": "points",
+            "crosshair": true,
+            "panels": [
+                readoff::points_panel(f0, x.clone(), readoff::axis("objective_n2", &objective.y), &objective_points),
+                readoff::points_panel(f1, x, readoff::axis("residual", &residuals.y), &residual_points),
+            ],
+            "rows": serde_json::to_value(self.rows()).ok()?,
+        }))
     }
 
     /// Draws the two panels.
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
         self.figure.draw(root)
     }
+}
+
+/// One interior-point iteration at theta_jam: a row of the data file.
+#[derive(Serialize)]
+struct TraceRow {
+    theta_deg: Dec,
+    iteration: usize,
+    objective_n2: Dec,
+    res_primal: Dec,
+    res_dual: Dec,
 }
 
 /// `v` as m·10ⁿ with two significant digits, e.g. 3.4·10⁻¹⁰.

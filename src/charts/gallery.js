@@ -6,7 +6,7 @@
 //
 // Test hooks, after `#`, joined by `&`: readoff=NAME:X[:Y][;NAME:X...] reads chart NAME off at
 // x = X (and y = Y; without it, on the jam map's boundary, the sweep's first curve or the middle
-// of a map's y axis) and pins
+// of a map's or a points chart's y axis) and pins
 // it; click=NAME:X:Y clicks the displayed picture where (X, Y) is drawn, through the same
 // pointer mapping as a user's click; aim=NAME:X:Y scrolls the displayed (X, Y) to the middle of
 // the window and writes its window coordinates to the body's data-aim ("x,y") for a driver's
@@ -16,6 +16,7 @@
   "use strict";
 
   function num(v) {
+    if (typeof v === "string") return v === "" ? "none" : v;
     if (v === null || v === undefined || !isFinite(v)) return "none";
     return String(Number(v.toPrecision(5)));
   }
@@ -176,7 +177,39 @@
     return { text: text, panel: p, y: y, marks: marks, values: values };
   }
 
+  // `row` as "key = value" pairs (nested objects as key.sub), nulls left out; and flat.
+  function flatten(row, into, prefix) {
+    Object.keys(row).forEach(function (k) {
+      var v = row[k];
+      if (v !== null && typeof v === "object" && !Array.isArray(v)) flatten(v, into, prefix + k + ".");
+      else into[prefix + k] = v;
+    });
+    return into;
+  }
+
+  // A chart of discrete points whose data is a table: the point of panel p nearest the
+  // pointer (distance in fractions of the plotting area), with its whole row.
+  function readPoints(c, p, x, y) {
+    var pa = c.panels[p], xa = xAxis(c, p), best = null, d = Infinity;
+    if (y === null) y = value(pa.y, 0.5);
+    pa.points.forEach(function (pt) {
+      var e = Math.pow(frac(xa, pt[0]) - frac(xa, x), 2) + Math.pow(frac(pa.y, pt[1]) - frac(pa.y, y), 2);
+      if (e < d) { d = e; best = pt; }
+    });
+    var at = (xa.param ? xa.param + " = " + num(x) + "  " : "") +
+      (pa.y.param ? pa.y.param + " = " + num(y) + " | nearest: " : "");
+    if (!best) return { text: at + "no point here", panel: p, y: null, marks: [], values: { panel: p } };
+    var flat = flatten(c.rows[best[2]], {}, ""), parts = [];
+    Object.keys(flat).forEach(function (k) {
+      if (flat[k] !== null && flat[k] !== "") parts.push(k + " = " + num(flat[k]));
+    });
+    var values = Object.assign({ panel: p, row: best[2] }, flat);
+    return { text: at + parts.join("  "), panel: p, x: best[0], y: best[1],
+      marks: [[p, best[0], best[1]]], values: values, crosshair: c.crosshair };
+  }
+
   function read(c, p, x, y) {
+    if (c.kind === "points") return readPoints(c, p, x, y);
     if (c.kind === "panels") return readPanels(c, p, x, y);
     if (c.kind === "jam_map") return readJamMap(c, x, y);
     if (c.kind === "grid") return readGrid(c, x, y);
@@ -196,15 +229,27 @@
     var svg = chart.overlay, c = chart.data;
     while (svg.firstChild) svg.removeChild(svg.firstChild);
     if (!r || r.y === null || r.y === undefined) return;
+    // A read-off of a point is drawn at the point, not at the pointer.
+    if (r.x !== undefined) x = r.x;
     var f = c.panels[r.panel].frame, ya = c.panels[r.panel].y;
     var px = function (p, v) { var g = c.panels[p].frame; return 1000 * (g.left + frac(xAxis(c, p), v) * (g.right - g.left)); };
     var py = function (p, v) { var g = c.panels[p].frame; return 1000 * (g.bottom - frac(c.panels[p].y, v) * (g.bottom - g.top)); };
     var u = px(r.panel, x), w = py(r.panel, r.y);
     if (frac(ya, r.y) < 0 || frac(ya, r.y) > 1) return;
     var line = { stroke: "#e00", "stroke-width": 1.5, "vector-effect": "non-scaling-stroke", "stroke-dasharray": "4 3" };
-    svg.appendChild(el("line", Object.assign({ x1: u, y1: w, x2: u, y2: 1000 * f.bottom }, line)));
-    svg.appendChild(el("line", Object.assign({ x1: 1000 * f.left, y1: w, x2: u, y2: w }, line)));
-    r.marks.forEach(function (m) {
+    if (r.crosshair !== false) {
+      svg.appendChild(el("line", Object.assign({ x1: u, y1: w, x2: u, y2: 1000 * f.bottom }, line)));
+      svg.appendChild(el("line", Object.assign({ x1: 1000 * f.left, y1: w, x2: u, y2: w }, line)));
+    }
+    // A cell read (a matrix's points are cells of c.cell axis units): its outline.
+    if (c.cell) {
+      var x0 = px(r.panel, x - c.cell[0] / 2), x1 = px(r.panel, x + c.cell[0] / 2);
+      var y0 = py(r.panel, r.y + c.cell[1] / 2), y1 = py(r.panel, r.y - c.cell[1] / 2);
+      svg.appendChild(el("rect", { x: x0, y: y0, width: x1 - x0, height: y1 - y0, fill: "none",
+        stroke: "#e00", "stroke-width": 2.5, "vector-effect": "non-scaling-stroke" }));
+    }
+    // A cell is outlined above; points and curves get a ring.
+    if (!c.cell) r.marks.forEach(function (m) {
       svg.appendChild(el("ellipse", { cx: px(m[0], m[1]), cy: py(m[0], m[2]), rx: 5, ry: 5,
         fill: "none", stroke: "#e00", "stroke-width": 2, "vector-effect": "non-scaling-stroke" }));
     });

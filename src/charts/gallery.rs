@@ -3,11 +3,18 @@
 //! CSS and one inline plain-JS script, nothing fetched: it opens from the folder (file://) in
 //! any browser.
 //!
-//! Charts with a read-off (jam maps, sweeps, the universal chart, contour maps, the V-locator's
-//! capacity map, optimum and robust charts) carry their [`super::readoff`] JSON beside the
-//! picture; the script (`gallery.js`) shows the values under the pointer (of the panel under
-//! it, where stacked panels have their own x axes) with crosshair lines to the axes, and pins
-//! a copyable read-off on a click or tap.
+//! Every chart kind has a read-off (jam maps, sweeps, the universal chart, contour maps, the
+//! V-locator's capacity map, optimum and robust charts, the time series, the min-norm trace,
+//! the work-precision chart and the stability matrix): its [`super::readoff`] JSON sits beside
+//! the picture; the script (`gallery.js`) shows the values under the pointer (of the panel
+//! under it, where stacked panels have their own x axes; of the nearest point or cell where
+//! the chart is a table of points) with crosshair lines to the axes, and pins a copyable
+//! read-off on a click or tap.
+//!
+//! On a phone (a window at most 640 px wide) the live line is two lines of small type at the
+//! window's bottom, scrolling inside itself for the rest: a longer one covered a third of the
+//! picture it reads off (161 of 844 px on the V-locator's optimum chart). The pinned read-offs
+//! below the picture hold the whole text.
 //!
 //! The page lists every chart in the folder, however many renders wrote it: each chart's section
 //! sits between `<!-- chart NAME -->` and `<!-- /chart -->`, and a render keeps the sections of
@@ -91,6 +98,8 @@ pub fn index_html(entries: &[Entry], previous: Option<&str>, files: &[String]) -
          ul.pins button { padding: 0.3em 0.9em; }\n\
          ul.pins { font-size: 0.85em; padding-left: 1.2em; }\n\
          ul.pins code { overflow-wrap: anywhere; }\n\
+         @media (max-width: 640px) { .live { font-size: 0.7em; line-height: 1.25; min-height: 0; \
+         max-height: 2.5em; overflow-y: auto; margin: 0; padding: 0.1em 0; } }\n\
          </style>\n</head>\n<body>\n<h1>jamchart charts</h1>\n\
          <p>Lengths in mm, forces in N, mass in kg, angles in degrees. Each chart's data is \
          beside it (CSV; maps also JSON).</p>\n<nav>",
@@ -220,7 +229,8 @@ fn section(s: &mut String, e: &Entry) {
 /// A picture with a read-off: the picture under a crosshair overlay, its data as JSON (`</` is
 /// escaped so that no value can end the script element), the live read-off and the pinned ones.
 /// The live line sticks to the window's bottom while its figure is in view: on a phone a tall
-/// chart's read-off would otherwise be written below the picture, off the screen.
+/// chart's read-off would otherwise be written below the picture, off the screen; there it
+/// is at most two lines high (see the module docs).
 fn read_off_figure(s: &mut String, name: &str, picture: &str, alt: &str, json: &str) {
     let json = json.replace("</", "<\\/");
     let _ = write!(

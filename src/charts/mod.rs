@@ -36,8 +36,8 @@
 //! Beside the kinds: `axes` draws frames and ticks that `ticks` places, `colorbar` the colour bar of a
 //! filled map, `labels` words
 //! the axes and subtitles, `contours` maps the contour crate's geometry to plot space,
-//! `data` holds the data files, `readoff` what the gallery's read-off embeds (maps and
-//! sweeps: plotting areas as drawn, axes, data) and `gallery` writes `index.html`.
+//! `data` holds the data files, `readoff` what the gallery's read-off embeds (every kind:
+//! plotting areas as drawn, axes, data) and `gallery` writes `index.html`.
 
 pub(crate) mod axes;
 pub(crate) mod builtin;
@@ -157,7 +157,8 @@ impl Chart {
     }
 
     /// The gallery's read-off data (see [`readoff`]), given the plotting areas the drawing
-    /// built ([`axes::record_frames`]); None for kinds without one (yet).
+    /// built ([`axes::record_frames`]); every kind has one (None only where the frames do not
+    /// match the drawing).
     pub fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
         match self {
             Chart::JamMap(c) => c.read_off(frames),
@@ -167,7 +168,10 @@ impl Chart {
             Chart::VlocatorCapacity(c) => c.read_off(frames),
             Chart::VlocatorOptimum(c) => c.read_off(frames),
             Chart::VlocatorRobust(c) => c.read_off(frames),
-            _ => None,
+            Chart::Convergence(c) => c.read_off(frames),
+            Chart::TimeSeries(c) => c.read_off(frames),
+            Chart::WorkPrecision(c) => c.read_off(frames),
+            Chart::Stability(c) => c.read_off(frames),
         }
     }
 

@@ -8,7 +8,7 @@
 //!
 //! Shape (`kind` decides the data keys):
 //! ```text
-//! { "kind": "jam_map" | "sweep" | "grid" | "panels", "x": AXIS,
+//! { "kind": "jam_map" | "sweep" | "grid" | "panels" | "points", "x": AXIS,
 //!   "panels": [{ "frame": { "left", "top", "right", "bottom" }, "y": AXIS, "quantity"?,
 //!                "x"?: AXIS, "sweep"?: INDEX }],
 //!   jam_map: "model", "columns": { PARAM, "theta_jam_deg", "x_jam_mm", "status", "reach_deg" },
@@ -17,13 +17,21 @@
 //!   grid:    "model", "grid": { "x": [..], "y": [..], "cells": { QUANTITY: [..] } }
 //!   panels:  "model", "sweeps": [{ "param", "at": [..], "fixed": { KEY: VALUE },
 //!                                  "series": [{ "label", KEY: VALUE, QUANTITY: [..] }] }] }
-//! AXIS = { "param", "label", "min", "max", "log" }
+//!   points:  "rows": [ROW], "crosshair": bool, "cell"?: [W, H];
+//!            each panel "x": AXIS, "points": [[x, y, ROW INDEX]]
+//! AXIS = { "param", "label", "min", "max", "log" }   (an empty "param": no quantity, not printed)
 //! ```
 //! `panels` is a figure of stacked panels whose x axes differ (the V-locator's optimum and
 //! robust charts, no top-level `x`): each panel has its own x axis and reads the sweep
 //! `sweep` names; the page reads the panel under the pointer, every quantity of every series
 //! at the pointer's x (straight between samples, as the curves are drawn), and lists the
 //! sweep's fixed inputs beside them.
+//! `points` is a chart of discrete points whose data is a table (the convergence trace, the
+//! work-precision chart, the stability matrix): the page reads the point of the panel nearest
+//! the pointer (distance in fractions of the plotting area) and shows its whole row, the row
+//! of the chart's data file (CSV cells as their text, so the page and the file agree to the
+//! digit); `crosshair` false where lines to the axes mean nothing (the matrix's cells), and
+//! `cell` the size of a cell around each point in axis units, outlined when read.
 //! A grid (the universal chart, contour maps) carries its cells, every k-th row and column so
 //! that at most [`GRID_SAMPLES`] per axis, row by row (x fastest); the page interpolates
 //! numbers bilinearly in plot space and gives a text (a status) of the nearest cell.
@@ -63,6 +71,18 @@ pub fn sweep_panel(frame: &PlotFrame, x: Value, y: Value, quantity: &str, sweep:
     let mut p = panel(frame, y, Some(quantity));
     p["x"] = x;
     p["sweep"] = sweep.into();
+    p
+}
+
+/// A panel of a `points` read-off: its frame, axes and points (x, y, index of the row).
+pub fn points_panel(frame: &PlotFrame, x: Value, y: Value, points: &[(f64, f64, usize)]) -> Value {
+    let mut p = panel(frame, y, None);
+    p["x"] = x;
+    p["points"] = points
+        .iter()
+        .filter(|(x, y, _)| x.is_finite() && y.is_finite())
+        .map(|(x, y, i)| json!([x, y, i]))
+        .collect();
     p
 }
 
@@ -202,6 +222,45 @@ mod tests {
                 u32::from(r_) + u32::from(g) + u32::from(b) < 200,
                 "{corner:?}"
             );
+        }
+    }
+
+    /// The time series, the min-norm trace, the work-precision chart and the stability matrix
+    /// had no read-off: every built-in scene has one now, with a frame per panel inside the
+    /// picture, and a `points` chart's points name rows it carries (the matrix, drawn without
+    /// axes, records its frame itself: without it the read-off would be missing).
+    #[test]
+    fn every_built_in_scene_has_a_read_off_with_frames_and_rows() {
+        for name in crate::charts::builtin::scene_names() {
+            let scene = SceneSource::BuiltIn(name.clone()).load(&[]).unwrap();
+            let r = render(&scene, Formats::Svg).unwrap();
+            let doc: Value = serde_json::from_str(
+                r.read_off
+                    .as_deref()
+                    .unwrap_or_else(|| panic!("{name} has no read-off")),
+            )
+            .unwrap();
+            let panels = doc["panels"].as_array().unwrap();
+            assert!(!panels.is_empty(), "{name}");
+            for p in panels {
+                let f = |k: &str| p["frame"][k].as_f64().unwrap();
+                assert!(
+                    0.0 <= f("left") && f("left") < f("right") && f("right") <= 1.0,
+                    "{name}: {p}"
+                );
+                assert!(
+                    0.0 <= f("top") && f("top") < f("bottom") && f("bottom") <= 1.0,
+                    "{name}: {p}"
+                );
+                if doc["kind"] == "points" {
+                    let rows = doc["rows"].as_array().unwrap().len();
+                    let points = p["points"].as_array().unwrap();
+                    assert!(!points.is_empty(), "{name}: a panel without points");
+                    for pt in points {
+                        assert!((pt[2].as_u64().unwrap() as usize) < rows, "{name}: {pt}");
+                    }
+                }
+            }
         }
     }
 

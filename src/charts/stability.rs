@@ -1,4 +1,4 @@
-//! Chart kind `stability` (scene `stability`): the stability matrix at a glance, one row per
+//! Chart kind `stability` (scene `stability-matrix`): the stability matrix at a glance, one row per
 //! case and one column per model and method, each cell coloured by its class
 //! ([`crate::study::stability::Class`]) and labelled with x_jam or the status.
 //!
@@ -10,12 +10,13 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::{Deserialize, Serialize};
 
-use super::axes::{DrawResult, draw_header};
+use super::axes::{self, DrawResult, PlotAxis, PlotFrame, draw_header};
 use super::models::Models;
 use super::spec::Scene;
-use super::{DataFile, style};
+use super::{DataFile, readoff, style};
 use crate::config::Config;
 use crate::error::{Error, Result};
+use crate::grid::AxisScale;
 use crate::scene::JamStatus;
 use crate::study::stability::{self, Class, StabilityReport};
 
@@ -116,10 +117,10 @@ impl Stability {
         })
     }
 
-    /// The classes and answers as JSON (no wall times: the picture's data is deterministic).
-    pub fn data(&self, _scene: &Scene) -> DataFile {
-        let rows: Vec<serde_json::Value> = self
-            .report
+    /// One JSON row per cell, case by case and method by method: the data file's and the
+    /// read-off's.
+    fn rows(&self) -> Vec<serde_json::Value> {
+        self.report
             .rows
             .iter()
             .map(|r| {
@@ -136,11 +137,36 @@ impl Stability {
                     "reason": r.reason.as_ref().map(|w| w.tag()),
                 })
             })
-            .collect();
+            .collect()
+    }
+
+    /// The classes and answers as JSON (no wall times: the picture's data is deterministic).
+    pub fn data(&self, _scene: &Scene) -> DataFile {
         DataFile::json(&serde_json::json!({
             "methods": self.report.methods,
             "cases": self.report.cases.iter().map(|c| serde_json::json!({"name": c.name, "what": c.what})).collect::<Vec<_>>(),
-            "rows": rows,
+            "rows": self.rows(),
+        }))
+    }
+
+    /// The gallery's read-off ([`readoff`], kind `points`, no crosshair): the cell under the
+    /// pointer, with its row of the data file (case, method, status, x_jam, the reference, the
+    /// error and its allowance, the class). The cells are points at (method index, -case
+    /// index) over the matrix's frame, so the nearest point is the cell under the pointer.
+    pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+        let [frame] = frames else { return None };
+        let (n_m, n_c) = (self.report.methods.len(), self.report.cases.len());
+        let x = PlotAxis::new(-0.5, n_m as f64 - 0.5, AxisScale::Linear, "method");
+        let y = PlotAxis::new(0.5 - n_c as f64, 0.5, AxisScale::Linear, "case");
+        let cells: Vec<_> = (0..self.report.rows.len().min(n_m * n_c))
+            .map(|k| ((k % n_m) as f64, -((k / n_m) as f64), k))
+            .collect();
+        Some(serde_json::json!({
+            "kind": "points",
+            "crosshair": false,
+            "cell": [1.0, 1.0],
+            "panels": [readoff::points_panel(frame, readoff::axis("", &x), readoff::axis("", &y), &cells)],
+            "rows": self.rows(),
         }))
     }
 
@@ -160,6 +186,11 @@ impl Stability {
         let (left, top, bottom_room) = (440, 110, 90);
         let cell_w = (w - left - 20) / n_methods;
         let cell_h = ((h - top - bottom_room) / n_cases).max(12);
+        axes::record_area(
+            root,
+            (left, top),
+            (left + n_methods * cell_w, top + n_cases * cell_h),
+        );
         let head = style::text(14.0).pos(Pos::new(HPos::Center, VPos::Bottom));
         for (j, m) in r.methods.iter().enumerate() {
             let x = left + j as i32 * cell_w + cell_w / 2;

@@ -11,12 +11,12 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use serde::{Deserialize, Serialize};
 
-use super::axes::{DrawResult, PlotAxis};
+use super::axes::{DrawResult, PlotAxis, PlotFrame};
 use super::models::Models;
 use super::spec::Scene;
 use super::style::LineKind;
 use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, padded_axis};
-use super::{DataFile, scene_subtitle_with};
+use super::{DataFile, readoff, scene_subtitle_with};
 use crate::csv_out::{Dec, to_csv};
 use crate::dynamics::DynamicsParams;
 use crate::dynamics::jam::SeriesRow;
@@ -24,7 +24,7 @@ use crate::dynamics::system::System;
 use crate::error::{Error, Result};
 use crate::grid::AxisScale;
 use crate::models::{Detail, ModelSpec};
-use crate::scene::SceneParams;
+use crate::scene::{JamStatus, SceneParams};
 use crate::statics;
 
 /// `[chart]` keys of `kind = "time_series"`.
@@ -146,9 +146,11 @@ pub fn series_csv(p: &SceneParams, d: &DynamicsParams, rows: &[SeriesRow]) -> Ve
 pub struct TimeSeries {
     figure: Figure,
     samples: Vec<Sample>,
-    /// Read by the tests; the drawing marks the jam from the samples.
-    #[cfg_attr(not(test), allow(dead_code))]
+    /// The marked jam (t_jam in s, x_jam in mm), if the simulation jams.
     jam: Option<(f64, f64)>,
+    /// The simulation's status and theta_jam (deg), for the read-off.
+    status: JamStatus,
+    theta_jam_deg: Option<f64>,
 }
 
 impl TimeSeries {
@@ -296,6 +298,8 @@ impl TimeSeries {
             figure,
             samples,
             jam: sol.t_jam_s.zip(sol.x_jam_mm),
+            status: sol.status,
+            theta_jam_deg: sol.theta_jam_deg,
         })
     }
 
@@ -308,6 +312,51 @@ impl TimeSeries {
     /// The series as CSV, with the rigid-disc references.
     pub fn data(&self, _scene: &Scene) -> DataFile {
         DataFile::csv(to_csv(self.samples.iter().map(SeriesCsvRow::from)))
+    }
+
+    /// The gallery's read-off ([`readoff`], kind `panels`): at the pointer's time, the
+    /// simulated disc's speed, position and palm angle and the rigid disc's speed and
+    /// position (straight between samples, as drawn), beside the jam (status, t_jam, x_jam,
+    /// theta_jam); names as in the data file.
+    pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+        let [speed, position] = self.figure.panels.as_slice() else {
+            return None;
+        };
+        let [f0, f1] = frames else { return None };
+        let col = |f: fn(&Sample) -> f64| readoff::column(self.samples.iter().map(f));
+        let x = readoff::axis("t_s", &speed.x);
+        let (t_jam, x_jam) = self.jam.unzip();
+        Some(serde_json::json!({
+            "kind": "panels",
+            "model": "simulation",
+            "panels": [
+                readoff::sweep_panel(f0, x.clone(), readoff::axis("x_dot_mm_s", &speed.y), "x_dot_mm_s", 0),
+                readoff::sweep_panel(f1, x, readoff::axis("x_mm", &position.y), "x_mm", 0),
+            ],
+            "sweeps": [{
+                "param": "t_s",
+                "at": col(|s| s.row.t_s),
+                "fixed": {
+                    "status": self.status,
+                    "t_jam_s": t_jam,
+                    "x_jam_mm": x_jam,
+                    "theta_jam_deg": self.theta_jam_deg,
+                },
+                "series": [
+                    {
+                        "label": "simulated disc",
+                        "x_dot_mm_s": col(|s| s.row.x_dot_mm_s),
+                        "x_mm": col(|s| s.row.x_mm),
+                        "theta_deg": col(|s| s.row.theta_deg),
+                    },
+                    {
+                        "label": "rigid disc",
+                        "geometric_speed_mm_s": col(|s| s.geometric_speed_mm_s),
+                        "touching_x_mm": col(|s| s.touching_x_mm),
+                    },
+                ],
+            }],
+        }))
     }
 
     /// Draws the two panels.

@@ -20,6 +20,7 @@ use crate::csv_out::Column;
 use crate::error::{Error, Result};
 use crate::grid::{Grid, GridAxis, LocatorParam};
 use crate::locator::{self, LocatorParams, Rotation};
+use crate::numbers::Num;
 
 /// The standard V-blocks a fixture designer buys, included angle in deg.
 pub const STANDARD_V_DEG: [f64; 3] = [60.0, 90.0, 120.0];
@@ -462,19 +463,20 @@ pub fn locking_angle_deg(p: &LocatorParams) -> f64 {
 }
 
 /// One line naming the locator's parameters for under the title; `with_mu` false when the
-/// chart varies the friction itself.
+/// chart varies the friction itself. Numbers as the CLI echoes them ([`Num`]): a friction set
+/// from a range's midpoint (0.30000000000000004) reads 0.3.
 pub fn locator_subtitle(p: &LocatorParams, load: &str, with_mu: bool) -> String {
     let mu = if !with_mu {
         "μ on both flanks as marked".to_string()
     } else if p.mu_left == p.mu_right {
-        format!("μ = {} on both flanks", p.mu_left)
+        format!("μ = {} on both flanks", Num(p.mu_left))
     } else {
-        format!("μ = {} left, {} right", p.mu_left, p.mu_right)
+        format!("μ = {} left, {} right", Num(p.mu_left), Num(p.mu_right))
     };
     let at = p
         .load_at_rim_deg
         .map_or("at the centre".to_string(), |psi| {
-            format!("at the rim, ψ = {psi}°")
+            format!("at the rim, ψ = {}°", Num(psi))
         });
     let rotation = match p.rotation {
         Rotation::Free => "free rotation (a real V-block)",
@@ -499,4 +501,31 @@ fn nearest_to_height(paths: &[Vec<(f64, f64)>], v: f64) -> Option<&(f64, f64)> {
         .iter()
         .flatten()
         .min_by(|a, b| (a.1 - v).abs().total_cmp(&(b.1 - v).abs()))
+}
+
+#[cfg(test)]
+mod subtitle_tests {
+    use super::*;
+
+    /// The capacity chart's subtitle printed unequal frictions with Rust's bare `{}`: a
+    /// friction from a range's midpoint read "μ = 0.30000000000000004 left, 0.25 right".
+    #[test]
+    fn unequal_frictions_in_the_subtitle_are_formatted_numbers() {
+        let p = LocatorParams {
+            mu_left: (0.2 + 0.4) / 2.0,
+            mu_right: 0.25,
+            load_at_rim_deg: Some(0.1 + 0.2),
+            ..LocatorParams::default()
+        };
+        let s = locator_subtitle(&p, "load", true);
+        assert!(s.contains("μ = 0.3 left, 0.25 right"), "{s}");
+        assert!(s.contains("ψ = 0.3°"), "{s}");
+        let equal = LocatorParams {
+            mu_left: 0.1 + 0.2,
+            mu_right: 0.1 + 0.2,
+            ..LocatorParams::default()
+        };
+        let s = locator_subtitle(&equal, "load", true);
+        assert!(s.contains("μ = 0.3 on both flanks"), "{s}");
+    }
 }

@@ -15,13 +15,13 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use serde::{Deserialize, Serialize};
 
-use super::axes::DrawResult;
+use super::axes::{DrawResult, PlotFrame};
 use super::convergence::sci;
 use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
 use super::xy::{Curve, CurveStyle, Figure, Panel, Tag, decade_axis};
-use super::{DataFile, scene_subtitle_with};
+use super::{DataFile, readoff, scene_subtitle_with};
 use crate::csv_out::{Dec, dec, to_csv};
 use crate::dynamics::Method;
 use crate::dynamics::accuracy::{Study, StudyRow, StudySettings};
@@ -38,6 +38,24 @@ pub enum Cost {
     RhsEvals,
     /// Accepted steps.
     Steps,
+}
+
+impl Cost {
+    /// The cost of run `r`.
+    fn of(self, r: &StudyRow) -> f64 {
+        match self {
+            Cost::RhsEvals => r.rhs_evals as f64,
+            Cost::Steps => r.steps as f64,
+        }
+    }
+
+    /// Its column in the data file.
+    fn key(self) -> &'static str {
+        match self {
+            Cost::RhsEvals => "rhs_evals",
+            Cost::Steps => "steps",
+        }
+    }
 }
 
 /// `[chart]` keys of `kind = "work_precision"`.
@@ -165,6 +183,7 @@ impl AccuracyCsvRow {
 #[derive(Debug, Clone)]
 pub struct WorkPrecision {
     figure: Figure,
+    cost: Cost,
     study: Study,
     min_norm: Vec<ToleranceRow>,
 }
@@ -184,10 +203,7 @@ impl WorkPrecision {
         } else {
             models.min_norm_tolerances(p, &scene.min_norm, &spec.min_norm_tolerances)?
         };
-        let cost = |r: &StudyRow| match spec.cost {
-            Cost::RhsEvals => r.rhs_evals as f64,
-            Cost::Steps => r.steps as f64,
-        };
+        let cost = |r: &StudyRow| spec.cost.of(r);
         let cost_label = match spec.cost {
             Cost::RhsEvals => "cost: right-hand-side evaluations of one run (-)",
             Cost::Steps => "cost: accepted steps of one run (-)",
@@ -342,13 +358,14 @@ impl WorkPrecision {
         };
         Ok(WorkPrecision {
             figure,
+            cost: spec.cost,
             study,
             min_norm,
         })
     }
 
-    /// Both studies as one CSV: a row per point, `study` telling them apart.
-    pub fn data(&self, _scene: &Scene) -> DataFile {
+    /// Both studies' rows, integrators first: the data file's and the read-off's.
+    fn rows(&self) -> Vec<AccuracyCsvRow> {
         let integrators = self.study.rows.iter().map(|r| AccuracyCsvRow {
             x_jam_mm: dec(r.x_jam_mm),
             error_mm: dec(r.error_mm),
@@ -366,7 +383,44 @@ impl WorkPrecision {
             qp_iterations: Some(r.iterations),
             ..AccuracyCsvRow::new("min_norm", "clarabel", r.tol, r.status)
         });
-        DataFile::csv(to_csv(integrators.chain(min_norm)))
+        integrators.chain(min_norm).collect()
+    }
+
+    /// Both studies as one CSV: a row per point, `study` telling them apart.
+    pub fn data(&self, _scene: &Scene) -> DataFile {
+        DataFile::csv(to_csv(self.rows()))
+    }
+
+    /// The gallery's read-off ([`readoff`], kind `points`): the run nearest the pointer, an
+    /// integrator's (cost, error) or the min-norm program's (tolerance, error), with its row of
+    /// the data file. Runs that are not drawn (no error) are not read.
+    pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+        let panels = &self.figure.panels;
+        if frames.len() != panels.len() || panels.is_empty() {
+            return None;
+        }
+        let n = self.study.rows.len();
+        let runs: Vec<_> = (self.study.rows.iter().enumerate())
+            .filter_map(|(i, r)| r.rel_error.map(|e| (self.cost.of(r), e, i)))
+            .collect();
+        let tolerances: Vec<_> = (self.min_norm.iter().enumerate())
+            .filter_map(|(i, r)| r.error_deg.map(|e| (r.tol, e, n + i)))
+            .collect();
+        let keys = [
+            (self.cost.key(), "rel_error", runs),
+            ("tol", "error_deg", tolerances),
+        ];
+        let json_panels: Vec<_> = (panels.iter().zip(frames).zip(keys))
+            .map(|((p, f), (x, y, points))| {
+                readoff::points_panel(f, readoff::axis(x, &p.x), readoff::axis(y, &p.y), &points)
+            })
+            .collect();
+        Some(serde_json::json!({
+            "kind": "points",
+            "crosshair": true,
+            "panels": json_panels,
+            "rows": serde_json::to_value(self.rows()).ok()?,
+        }))
     }
 
     /// Draws the panels.

@@ -126,7 +126,7 @@ pub fn run(args: &DesignArgs) -> Result<String> {
             format!(
                 "the disc is at x = {:.3} mm already at a right-angled palm (r + h); give a \
                  target beyond it",
-                config.scene.disc_position_mm(std::f64::consts::FRAC_PI_2)
+                Num(config.scene.disc_position_mm(std::f64::consts::FRAC_PI_2))
             ),
         ));
     };
@@ -183,11 +183,11 @@ pub fn run(args: &DesignArgs) -> Result<String> {
 const COAST_TOLERANCE: f64 = 0.005;
 
 fn sim_line(c: &SimCheck) -> String {
-    let mm = |v: Option<f64>| v.map_or("no jam".into(), |x| format!("{x:.3} mm"));
+    let mm = |v: Option<f64>| v.map_or("no jam".into(), |x| format!("{x:.3} mm", x = Num(x)));
     format!(
         "  check (F = {:.3} N, mu {} / {}): closed form x_jam = {}, nonsmooth simulation (force \
          drive) x_jam = {}",
-        c.force_n,
+        Num(c.force_n),
         c.mu.0,
         c.mu.1,
         mm(c.x_jam_closed_form_mm),
@@ -239,11 +239,13 @@ fn text(
     let push_line = match d.least_push {
         LeastPush::Push { force_n } => format!(
             "least push that carries it there without jamming at any friction: F = {force_n:.3} N \
-             (closed form m g sin(alpha_g) / sin(theta_t - alpha_g - alpha_p))"
+             (closed form m g sin(alpha_g) / sin(theta_t - alpha_g - alpha_p))",
+            force_n = Num(force_n)
         ),
         LeastPush::AnyPushThatMoves { least_moving_n } => format!(
             "least push: any push above {least_moving_n:.3} N (the least that moves the disc) \
-             carries it there"
+             carries it there",
+            least_moving_n = Num(least_moving_n)
         ),
         LeastPush::WedgeLocksFirst {
             theta_rigid_deg,
@@ -252,7 +254,10 @@ fn text(
             "least push: none: at mu_ground {} / mu_palm {} the friction wedge locks at {:.3} deg \
              (x = {x_rigid_mm:.3} mm) before the target whatever the push; lower the friction \
              or move the target nearer",
-            e.mu_ground, e.mu_palm, theta_rigid_deg
+            e.mu_ground,
+            e.mu_palm,
+            Num(theta_rigid_deg),
+            x_rigid_mm = Num(x_rigid_mm)
         ),
     };
     let _ = writeln!(out, "{push_line}");
@@ -264,11 +269,12 @@ fn text(
             let _ = writeln!(
                 out,
                 "  the simulated disc stops short of the target ({x_sim:.3} mm): push harder than \
-                 the closed form's least push"
+                 the closed form's least push",
+                x_sim = Num(x_sim)
             );
         }
     }
-    let mu = |v: Option<f64>| v.map_or("none".into(), |m| format!("{m:.4}"));
+    let mu = |v: Option<f64>| v.map_or("none".into(), |m| format!("{m:.4}", m = Num(m)));
     let _ = writeln!(
         out,
         "largest friction for the push F = {} N: mu_ground up to {} (mu_palm {}; closed form), \
@@ -283,7 +289,9 @@ fn text(
             let _ = writeln!(
                 out,
                 "palm length that keeps every jam on the palm: {l:.3} mm (the latest jam, x = \
-                 {x:.3} mm)"
+                 {x:.3} mm)",
+                l = Num(l),
+                x = Num(x)
             );
         }
         _ => {
@@ -300,7 +308,8 @@ fn text(
                 out,
                 "  the simulated disc coasts past the quasi-static jam to {x_sim:.3} mm at the \
                  drive's speed: the palm must reach past that (the closed-form length holds for a \
-                 slow push)"
+                 slow push)",
+                x_sim = Num(x_sim)
             );
         }
     }

@@ -10,6 +10,7 @@ use crate::atomic::write_atomic;
 use crate::config::Config;
 use crate::dynamics::{CrossCheck, DynamicsParams, DynamicsSolution, Failure, Method, Refinement};
 use crate::error::Result;
+use crate::numbers::Num;
 use crate::scene::JamStatus;
 use crate::settings::flags::{DynamicsSet, Flags};
 
@@ -67,30 +68,38 @@ pub fn series_end(config: &Config, s: &DynamicsSolution) -> String {
     if let Some(f) = &s.failure {
         return format!(
             "stops at t = {t:.4} s: the integrator gave up at t = {:.4} s",
-            f.t_s()
+            Num(f.t_s()),
+            t = Num(t)
         );
     }
     match s.t_jam_s {
         Some(jam) if closed && jam + after > t * (1.0 + 1e-9) => format!(
             "stops at t = {t:.4} s: the palm closed (theta = 0), {:.4} s after the jam instead of \
              the {after} s asked for (--after-jam)",
-            t - jam
+            Num(t - jam),
+            t = Num(t)
         ),
         Some(jam) if after > 0.0 => format!(
             "stops at t = {t:.4} s: {:.4} s after the jam, as asked (--after-jam)",
-            t - jam
+            Num(t - jam),
+            t = Num(t)
         ),
         Some(_) => format!(
-            "stops at t = {t:.4} s: at the jam's confirmation (--after-jam S records S s more)"
+            "stops at t = {t:.4} s: at the jam's confirmation (--after-jam S records S s more)",
+            t = Num(t)
         ),
         None if closed => {
-            format!("stops at t = {t:.4} s: the palm closed (theta = 0) with no jam")
+            format!(
+                "stops at t = {t:.4} s: the palm closed (theta = 0) with no jam",
+                t = Num(t)
+            )
         }
         None if s.status == JamStatus::BeyondReach => format!(
             "stops at t = {t:.4} s: the disc reached the palm's end ({} mm) with no jam",
-            config.scene.palm_length_mm
+            config.scene.palm_length_mm,
+            t = Num(t)
         ),
-        None => format!("stops at t = {t:.4} s ({})", s.status),
+        None => format!("stops at t = {t:.4} s ({})", s.status, t = Num(t)),
     }
 }
 
@@ -112,12 +121,18 @@ pub fn render_details(
     if d.status == JamStatus::Inaccurate
         && let (Some(t), Some(x)) = (d.theta_jam_deg, d.x_jam_mm)
     {
-        let _ = writeln!(s, "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm");
+        let _ = writeln!(
+            s,
+            "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm",
+            t = Num(t),
+            x = Num(x)
+        );
     }
     if let Some(t) = d.t_jam_s {
         let _ = writeln!(
             s,
-            "  t_jam     = {t:.4} s     time of the jam from the start of the push"
+            "  t_jam     = {t:.4} s     time of the jam from the start of the push",
+            t = Num(t)
         );
     }
     let nonsmooth = d.method == Method::Nonsmooth;
@@ -133,27 +148,33 @@ pub fn render_details(
         let _ = writeln!(
             s,
             "  model uncertainty {u:.3} mm: a rigid contact (--method nonsmooth) jams at \
-             {xr:.3} mm; the contact's unknown compliance moves the jam, the integrator does not"
+             {xr:.3} mm; the contact's unknown compliance moves the jam, the integrator does not",
+            u = Num(u),
+            xr = Num(xr)
         );
     }
     if let (Some(t), Some(_)) = (d.physical_until_s, d.series.last()) {
         let _ = writeln!(
             s,
             "  the series is physical up to t = {t:.4} s: after the lock-up a real palm stops, \
-             the simulated one presses on into the disc"
+             the simulated one presses on into the disc",
+            t = Num(t)
         );
     }
     if let (Some(x), Some(t)) = (d.x_half_speed_mm, d.t_half_speed_s) {
         let _ = writeln!(
             s,
             "  the disc's speed fell to half the palm's at x = {x:.3} mm, t = {t:.4} s: the \
-             palm stalled there and the disc coasted on to rest"
+             palm stalled there and the disc coasted on to rest",
+            x = Num(x),
+            t = Num(t)
         );
     }
     if let Some(x) = d.x_stiction_mm {
         let _ = writeln!(
             s,
-            "  ground contact enters stiction (slip < V_s) at x = {x:.3} mm"
+            "  ground contact enters stiction (slip < V_s) at x = {x:.3} mm",
+            x = Num(x)
         );
     }
     if let Some(path) = series {
@@ -181,7 +202,8 @@ pub fn render_details(
             s,
             "  lock-up: the palm cannot turn past {:.3} deg; it pushed with {:.0} N in the last \
              step (a rigid disc needs an unbounded push there)",
-            l.theta_deg, l.push_n
+            Num(l.theta_deg),
+            Num(l.push_n)
         );
     }
     if let Some(c) = &d.cross_check {
@@ -268,7 +290,8 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
             CrossCheck::KnockedAhead { x_jam_rigid_mm, .. } => format!(
                 "design to the rigid contact's {x_jam_rigid_mm:.3} mm (--method nonsmooth), measure \
                  the real contact's --stiffness and --damping, or close the palm slower \
-                 (--omega) so that it does not strike the disc"
+                 (--omega) so that it does not strike the disc",
+                x_jam_rigid_mm = Num(x_jam_rigid_mm)
             ),
             CrossCheck::RigidDisagrees {
                 rigid_status,
@@ -278,7 +301,8 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
                 Some(x) => format!(
                     "the rigid contact's answer ({rigid_status} at {x:.3} mm, --method \
                      nonsmooth) holds without compliance; give --stiffness of the real contact \
-                     and compare"
+                     and compare",
+                    x = Num(x)
                 ),
                 None => format!(
                     "the rigid contact's answer ({rigid_status}, --method nonsmooth) holds \
@@ -288,7 +312,8 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
             CrossCheck::ContactModelDependent { x_jam_rigid_mm, .. } => format!(
                 "the rigid contact's {x_jam_rigid_mm:.3} mm (--method nonsmooth) is the answer \
                  without compliance; give --stiffness of the real contact, and check --mass \
-                 (a heavy disc presses a soft contact millimetres deep)"
+                 (a heavy disc presses a soft contact millimetres deep)",
+                x_jam_rigid_mm = Num(x_jam_rigid_mm)
             ),
             CrossCheck::NotAtRest { .. } => "use --method nonsmooth: its rigid disc comes to \
                  rest exactly, with no creep"

@@ -5,6 +5,7 @@ use std::fmt::Write;
 use crate::config::Config;
 use crate::dynamics::Drive;
 use crate::models::{Detail, ModelKind, Solution};
+use crate::numbers::Num;
 use crate::scene::JamStatus;
 
 /// Models whose x_jam differ by more than this are flagged: 2 % of x_jam is about the spread of
@@ -27,7 +28,8 @@ pub fn guidance<'a>(
         let _ = writeln!(
             s,
             "  a slow push limited to F = {} N: statics, x_jam = {x:.3} mm",
-            config.scene.force_n
+            config.scene.force_n,
+            x = Num(x)
         );
     }
     let rigid = results.clone().find_map(|r| match &r.detail {
@@ -43,7 +45,8 @@ pub fn guidance<'a>(
         let _ = writeln!(
             s,
             "  a palm driven by motion (it pushes as hard as needed): the limit x_rigid = \
-             r cot((alpha_g + alpha_p)/2){offset} = {x:.3} mm"
+             r cot((alpha_g + alpha_p)/2){offset} = {x:.3} mm",
+            x = Num(x)
         );
     }
     let drive = match config.dynamics.drive.mode {
@@ -60,7 +63,8 @@ pub fn guidance<'a>(
         let _ = writeln!(
             s,
             "  a fast push where inertia and contact stiffness matter: dynamics ({drive}), \
-             x_jam = {x:.3} mm{trust}"
+             x_jam = {x:.3} mm{trust}",
+            x = Num(x)
         );
     }
     let answered: Vec<(ModelKind, f64)> = results

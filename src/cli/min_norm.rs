@@ -8,6 +8,7 @@ use crate::config::Config;
 use crate::error::Result;
 use crate::minnorm::qp::{Backend, ContactSolution, HoldStatus, TracePoint};
 use crate::minnorm::{MinNormCheck, PalmSolution, palm};
+use crate::numbers::Num;
 
 /// The min-norm model's own JSON keys in `solve`'s record.
 #[derive(Debug, Serialize)]
@@ -122,9 +123,9 @@ pub fn render_details(out: &mut String, s: &PalmSolution, trace: Option<&Trace>)
             let _ = writeln!(
                 out,
                 "  at the jam, contact {name}: f_n = {:.3} N, f_t = {:.3} N, friction utilisation {:.4}",
-                g(f.normal_n),
-                g(f.tangential_n[0]),
-                g(f.utilisation),
+                Num(g(f.normal_n)),
+                Num(g(f.tangential_n[0])),
+                Num(g(f.utilisation)),
             );
         }
     }
@@ -132,7 +133,9 @@ pub fn render_details(out: &mut String, s: &PalmSolution, trace: Option<&Trace>)
         if let (Some(t), Some(x)) = (s.theta_jam_deg, s.x_jam_mm) {
             let _ = writeln!(
                 out,
-                "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm"
+                "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm",
+                t = Num(t),
+                x = Num(x)
             );
         }
         let _ = writeln!(out, "  {}: {c}", s.status);
@@ -142,7 +145,7 @@ pub fn render_details(out: &mut String, s: &PalmSolution, trace: Option<&Trace>)
         let _ = writeln!(
             out,
             "  clarabel trace at theta = {:.6} deg ({}):\n  {:>4}  {:>18}  {:>10}  {:>10}",
-            t.theta_deg,
+            Num(t.theta_deg),
             hold_name(t.solution.status),
             "iter",
             "phi^2 [N^2]",

@@ -186,11 +186,14 @@ fn render_statics(s: &mut String, d: &StaticsSolution, p: &SceneParams) {
             fixed(past.palm_length_needed_mm, 3)
         );
         let more = match past.friction_factor_needed {
-            Some(k) if p.mu_ground == p.mu_palm => format!("mu >= {:.4} (--mu)", k * p.mu_ground),
+            Some(k) if p.mu_ground == p.mu_palm => {
+                format!("mu >= {:.4} (--mu)", Num(k * p.mu_ground))
+            }
             Some(k) => format!(
                 "mu_ground >= {:.4} and mu_palm >= {:.4} (both scaled by {k:.4})",
-                k * p.mu_ground,
-                k * p.mu_palm
+                Num(k * p.mu_ground),
+                Num(k * p.mu_palm),
+                k = Num(k)
             ),
             None => "no friction within a factor 1e6 does".into(),
         };
@@ -205,7 +208,8 @@ fn render_statics(s: &mut String, d: &StaticsSolution, p: &SceneParams) {
         let _ = writeln!(
             s,
             "  warning: above {above:.3} deg the palm lifts the disc off the ground (R_n < 0); \
-             the statics do not hold there"
+             the statics do not hold there",
+            above = Num(above)
         );
     }
 }
@@ -251,10 +255,11 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
                 );
             }
             (JamStatus::JammedAtStart, Some(t), x) => {
-                let at = x.map_or(String::new(), |x| format!(" (x = {x:.3} mm)"));
+                let at = x.map_or(String::new(), |x| format!(" (x = {x:.3} mm)", x = Num(x)));
                 let _ = writeln!(
                     s,
-                    "  the disc does not move: it is held already at the start angle {t:.3} deg{at}"
+                    "  the disc does not move: it is held already at the start angle {t:.3} deg{at}",
+                    t = Num(t)
                 );
             }
             (JamStatus::TooWeak, ..) => {
@@ -262,7 +267,7 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
                     s,
                     "  the push cannot move the disc at any palm angle: it takes more than \
                      m g sin(atan mu_ground) = {:.4} N (--force), or less ground friction",
-                    statics::least_push_n(p)
+                    Num(statics::least_push_n(p))
                 );
             }
             (JamStatus::NeverJams, ..) => {

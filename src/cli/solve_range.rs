@@ -221,7 +221,11 @@ fn text(p: &SceneParams, uncertain: &UncertainSet, results: &[Record]) -> String
                     match a.method {
                         Method::Corners => " (where it jams on a long enough palm)",
                         Method::Sampled { .. } => "",
-                    }
+                    },
+                    t0 = Num(t0),
+                    t1 = Num(t1),
+                    x0 = Num(x0),
+                    x1 = Num(x1)
                 );
             }
             _ => {
@@ -239,7 +243,11 @@ fn text(p: &SceneParams, uncertain: &UncertainSet, results: &[Record]) -> String
                 .map(|(n, v)| format!("{n} = {}", round(*v)))
                 .collect();
             let jam = match (c.theta_jam_deg, c.x_jam_mm) {
-                (Some(t), Some(x)) => format!(": theta_jam = {t:.3} deg, x_jam = {x:.3} mm"),
+                (Some(t), Some(x)) => format!(
+                    ": theta_jam = {t:.3} deg, x_jam = {x:.3} mm",
+                    t = Num(t),
+                    x = Num(x)
+                ),
                 _ => String::new(),
             };
             let _ = writeln!(s, "  {what} at {}{jam}, {}", at.join(", "), c.status);
@@ -293,7 +301,7 @@ fn distribution_text(s: &mut String, d: &DistAnswer) {
             s,
             "    P(jams before x = {} mm) = {:.4}{}",
             b.x_mm,
-            b.probability.value,
+            Num(b.probability.value),
             interval(&b.probability, 4)
         );
     }
@@ -302,7 +310,7 @@ fn distribution_text(s: &mut String, d: &DistAnswer) {
             s,
             "    {:>4} % quantile of x_jam = {:.3} mm{}",
             round(100.0 * q.q),
-            q.x_jam_mm.value,
+            Num(q.x_jam_mm.value),
             interval(&q.x_jam_mm, 3)
         );
     }

@@ -11,6 +11,7 @@ use crate::locator::{
     self, Capacity, FlankForce, LocatorParams, LocatorSolution, OPT_MAX_DEG, OPT_MIN_DEG, Optimum,
     Verdict,
 };
+use crate::numbers::Num;
 use crate::settings::flags::{Flags, LocatorSet};
 use crate::uncertain::UncertainSet;
 
@@ -167,17 +168,19 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
     let _ = writeln!(
         out,
         "V of {:.3} deg (left flank {} deg, right flank {} deg), mu {} left / {} right, {} rotation",
-        p.included_angle_deg(),
-        p.flank_left_deg,
-        p.flank_right_deg,
-        p.mu_left,
-        p.mu_right,
+        Num(p.included_angle_deg()),
+        Num(p.flank_left_deg),
+        Num(p.flank_right_deg),
+        Num(p.mu_left),
+        Num(p.mu_right),
         p.rotation.as_str()
     );
     let _ = writeln!(
         out,
         "weight W = {w:.3} N; load P = {} N at {} deg {at}",
-        p.load_n, p.load_angle_deg
+        Num(p.load_n),
+        Num(p.load_angle_deg),
+        w = Num(w)
     );
     let verdict = match s.verdict {
         Verdict::Wedged => {
@@ -216,11 +219,11 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
                     "  {:<5} flank: normal {:.3} N, friction {:.3} N up the flank, \
                      (fx, fy) = ({:.3}, {:.3}) N, friction utilisation {:.1} %",
                     f.flank.as_str(),
-                    clean(f.normal_n),
-                    clean(f.tangential_up_n),
-                    clean(f.fx_n),
-                    clean(f.fy_n),
-                    100.0 * f.utilisation
+                    Num(clean(f.normal_n)),
+                    Num(clean(f.tangential_up_n)),
+                    Num(clean(f.fx_n)),
+                    Num(clean(f.fy_n)),
+                    Num(100.0 * f.utilisation)
                 );
             }
         }
@@ -233,8 +236,9 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
         (true, _, _) => "unbounded: every load in this direction is held".to_string(),
         (false, Some(pm), Some(m)) => format!(
             "P_max = {pm:.3} N = {:.3} W; beyond it the part {}",
-            pm / w,
-            m.describe()
+            Num(pm / w),
+            m.describe(),
+            pm = Num(pm)
         ),
         (false, _, m) => format!(
             "none: not even the weight is held; the part {}",
@@ -256,7 +260,10 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
         String::new()
     };
     let rho = if o.safety_factor.is_finite() {
-        format!("{:.3} (a factor on load and friction)", o.safety_factor)
+        format!(
+            "{:.3} (a factor on load and friction)",
+            Num(o.safety_factor)
+        )
     } else {
         "unbounded (no error in load or friction drops or locks the part)".to_string()
     };
@@ -265,14 +272,14 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
             out,
             "optimum included angle: none: no V that does not self-lock holds this load at this \
              friction (the least bad, {:.2} deg, self-locks at it and survives only rho* = {rho})",
-            o.included_angle_deg
+            Num(o.included_angle_deg)
         );
     } else {
         let _ = writeln!(
             out,
             "optimum included angle (balanced: survives load x rho with friction / rho, and \
              friction x rho): {:.2} deg{bound}, safety factor rho* = {rho}",
-            o.included_angle_deg
+            Num(o.included_angle_deg)
         );
     }
     if let Some(widest) = o.plateau_to_deg.filter(|_| !o.no_v_holds) {
@@ -280,7 +287,8 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
             out,
             "  not unique: every V from {:.2} to {widest:.2} deg survives the same rho* (the \
              holding does not depend on the angle for this load)",
-            o.included_angle_deg
+            Num(o.included_angle_deg),
+            widest = Num(widest)
         );
     }
     if o.at_bound && p.load_n == 0.0 {

@@ -25,14 +25,7 @@ pub fn robust_box(p: &LocatorParams, uncertain: &UncertainSet) -> Result<RobustB
         load_n: (p.load_n, p.load_n),
         load_angle_deg: (p.load_angle_deg, p.load_angle_deg),
     };
-    if p.mu_left != p.mu_right {
-        return Err(Error::invalid(
-            "mu",
-            format!("{} left, {} right", Num(p.mu_left), Num(p.mu_right)),
-            "a robust V-block takes one friction range for both flanks (--mu LOW:HIGH, \
-             without --mu-left or --mu-right); unequal flanks are not searched",
-        ));
-    }
+    one_friction_range(p, uncertain)?;
     for i in &uncertain.inputs {
         let Uncertain::Range { lo, hi } = i.value else {
             return Err(Error::invalid(
@@ -64,6 +57,69 @@ pub fn robust_box(p: &LocatorParams, uncertain: &UncertainSet) -> Result<RobustB
         }
     }
     Ok(b)
+}
+
+/// Refuses friction that is not one range on both flanks, naming the flank flag that breaks
+/// it: `--mu 0.2:0.4 --mu-left 0.3` named `--mu` (and showed "0.3 left, 0.3 right", the range's
+/// midpoint 0.30000000000000004 beside 0.3), where the conflict is `--mu-left`.
+fn one_friction_range(p: &LocatorParams, uncertain: &UncertainSet) -> Result<()> {
+    const FLANKS: [&str; 2] = ["mu_left", "mu_right"];
+    let value = |k: &str| match uncertain.inputs.iter().find(|i| i.name == k) {
+        Some(i) => i.value.to_string(),
+        None => Num(if k == "mu_left" {
+            p.mu_left
+        } else {
+            p.mu_right
+        })
+        .to_string(),
+    };
+    let refuse = |k: &str, why: String| {
+        let flag = format!("--{}", k.replace('_', "-"));
+        Err(Error::invalid(
+            k,
+            value(k),
+            format!(
+                "{why}; a robust V-block takes one friction range for both flanks: give --mu \
+                 LOW:HIGH alone, without {flag} (unequal flanks are not searched)"
+            ),
+        ))
+    };
+    let side = |k: &str| k.trim_start_matches("mu_").to_string();
+    for i in &uncertain.inputs {
+        match i.name {
+            // --mu's range with a flank's own flag beside it: that flank keeps its own value.
+            "mu" => {
+                if let Some(k) = FLANKS.into_iter().find(|k| !i.keys.contains(k)) {
+                    let why = format!(
+                        "--{} {} keeps the {} flank off --mu's range {}",
+                        k.replace('_', "-"),
+                        value(k),
+                        side(k),
+                        i.value
+                    );
+                    return refuse(k, why);
+                }
+            }
+            k if FLANKS.contains(&k) => {
+                return refuse(k, format!("a range on the {} flank alone", side(k)));
+            }
+            _ => {}
+        }
+    }
+    if p.mu_left != p.mu_right {
+        // Point frictions that differ: the flank that is not at its default was given.
+        let k = match p.mu_left == LocatorParams::default().mu_left {
+            true => "mu_right",
+            false => "mu_left",
+        };
+        let why = format!(
+            "the flanks' frictions differ ({} left, {} right)",
+            Num(p.mu_left),
+            Num(p.mu_right)
+        );
+        return refuse(k, why);
+    }
+    Ok(())
 }
 
 /// The JSON document of the robust answer.
@@ -123,8 +179,8 @@ fn describe(v: &BoxVerdict) -> String {
         BoxVerdict::Locks { mu } => format!("self-locks at mu = {mu}"),
         BoxVerdict::Drops { load } => format!(
             "drops {:.3} N at {:.2} deg (at the lowest friction): the part {}",
-            load.load_n,
-            load.load_angle_deg,
+            Num(load.load_n),
+            Num(load.load_angle_deg),
             load.mode.describe()
         ),
     }
@@ -154,14 +210,16 @@ fn text(
         range(b.mu.0, b.mu.1, ""),
         range(b.load_n.0, b.load_n.1, " N"),
         range(b.load_angle_deg.0, b.load_angle_deg.1, " deg"),
-        p.weight_n(),
+        Num(p.weight_n()),
         p.rotation.as_str()
     );
     let _ = writeln!(
         out,
         "a V works when it holds every load at the lowest friction, mu = {}, and does not \
          self-lock at the highest, mu = {} (narrower than {:.2} deg locks)",
-        b.mu.0, b.mu.1, d.lock_bound_deg
+        b.mu.0,
+        b.mu.1,
+        Num(d.lock_bound_deg)
     );
     match d.windows.as_slice() {
         [] => {
@@ -175,7 +233,7 @@ fn text(
                 let _ = writeln!(
                     out,
                     "  the narrowest V that does not lock, {:.2} deg, {}",
-                    d.lock_bound_deg,
+                    Num(d.lock_bound_deg),
                     describe(&BoxVerdict::Drops { load })
                 );
             }
@@ -188,7 +246,8 @@ fn text(
                             "  a narrower friction range: mu from {} up to {m:.4} at most (a \
                              {:.2} deg V then works)",
                             b.mu.0,
-                            2.0 * m.atan().to_degrees()
+                            Num(2.0 * m.atan().to_degrees()),
+                            m = Num(m)
                         );
                     }
                     None => {
@@ -206,7 +265,8 @@ fn text(
                             out,
                             "  a lighter load: the {:.2} deg V holds loads up to {l:.3} N in these \
                              directions",
-                            d.lock_bound_deg
+                            Num(d.lock_bound_deg),
+                            l = Num(l)
                         );
                     }
                     None => {
@@ -214,7 +274,7 @@ fn text(
                             out,
                             "  a different load direction: the {:.2} deg V holds no load in \
                              these directions",
-                            d.lock_bound_deg
+                            Num(d.lock_bound_deg)
                         );
                     }
                 }
@@ -222,7 +282,12 @@ fn text(
         }
         windows => {
             for (lo, hi) in windows {
-                let _ = writeln!(out, "window of included angles: {lo:.2} to {hi:.2} deg");
+                let _ = writeln!(
+                    out,
+                    "window of included angles: {lo:.2} to {hi:.2} deg",
+                    lo = Num(*lo),
+                    hi = Num(*hi)
+                );
             }
             if d.searched {
                 let _ = writeln!(
@@ -233,7 +298,7 @@ fn text(
             }
             if let Some(r) = d.robust {
                 let rho = if r.safety_factor.is_finite() {
-                    format!("{:.3}", r.safety_factor)
+                    format!("{:.3}", Num(r.safety_factor))
                 } else {
                     "unbounded".into()
                 };
@@ -242,7 +307,7 @@ fn text(
                     "most robust included angle: {:.2} deg, safety factor rho* = {rho} (it \
                      survives every load x rho* with friction mu_lo / rho*, and friction mu_hi \
                      x rho* without locking)",
-                    r.included_angle_deg
+                    Num(r.included_angle_deg)
                 );
             }
         }
@@ -251,7 +316,7 @@ fn text(
         let _ = writeln!(
             out,
             "your {:.2} deg V: {}",
-            g.included_angle_deg,
+            Num(g.included_angle_deg),
             describe(&g.verdict)
         );
     }
@@ -259,7 +324,7 @@ fn text(
         let _ = writeln!(
             out,
             "standard {:.0} deg V-block: {}",
-            s.included_angle_deg,
+            Num(s.included_angle_deg),
             describe(&s.verdict)
         );
     }

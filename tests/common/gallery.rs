@@ -1,0 +1,86 @@
+//! The gallery's browser tests' shared parts (`#[macro_use] #[path = "common/gallery.rs"]
+//! mod gallery;`, after `browser` and `cli_util`): a check run in both browsers, a gallery
+//! rendered into a temporary folder, the pinned read-offs of a dumped page.
+#![allow(dead_code)] // each test crate uses its own subset
+
+use std::path::{Path, PathBuf};
+
+use serde_json::Value;
+
+use super::browser::{self, Browser, Kind};
+use super::cli_util::{self, jamchart};
+
+/// A check as two tests: `$chromium` runs it in Chromium, `$firefox` in Firefox (issue 22:
+/// "current Chromium and Firefox"). Doc comments before the invocation document both.
+macro_rules! in_chromium_and_firefox {
+    ($(#[$doc:meta])* $chromium:ident, $firefox:ident, $check:ident) => {
+        $(#[$doc])*
+        #[test]
+        fn $chromium() {
+            $check(Kind::Chromium);
+        }
+
+        $(#[$doc])*
+        #[test]
+        fn $firefox() {
+            $check(Kind::Firefox);
+        }
+    };
+}
+
+/// The browser of `kind`, and `scenes` rendered as PNG with their gallery into DIR/out:
+/// (browser, DIR, DIR/out); None where [`browser::find`] says the test may skip.
+pub fn gallery_of(kind: Kind, scenes: &[&str]) -> Option<(Browser, tempfile::TempDir, PathBuf)> {
+    let browser = browser::find(kind)?;
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let mut args = vec!["render"];
+    args.extend(scenes);
+    args.extend(["--out", "out", "--format", "png"]);
+    let r = jamchart(dir.path(), &args);
+    assert_eq!(r.status.code(), Some(0), "{}", cli_util::stderr(&r));
+    Some((browser, dir, out))
+}
+
+/// The pinned read-offs of chart `name` in a dumped DOM: each pin's `data-values`, in order.
+pub fn pins(dom: &str, name: &str) -> Vec<Value> {
+    let start = dom
+        .find(&format!("<figure class=\"readoff\" data-chart=\"{name}\">"))
+        .unwrap_or_else(|| panic!("no read-off figure for {name}"));
+    let figure = &dom[start..start + dom[start..].find("</figure>").unwrap()];
+    figure
+        .split("data-values=\"")
+        .skip(1)
+        .map(|s| {
+            let raw = &s[..s.find('"').unwrap()];
+            let text = raw
+                .replace("&quot;", "\"")
+                .replace("&lt;", "<")
+                .replace("&gt;", ">")
+                .replace("&amp;", "&");
+            serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"))
+        })
+        .collect()
+}
+
+pub fn num(v: &Value, key: &str) -> f64 {
+    v[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{key} missing in {v}"))
+}
+
+/// Reddish pixels in a PNG screenshot (the crosshair is #e00; the chart's orange read-off
+/// lines count too, so compare two screenshots).
+pub fn red_pixels(png_path: &Path) -> usize {
+    let file = std::fs::File::open(png_path).unwrap();
+    let mut r = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .unwrap();
+    let mut buf = vec![0; r.output_buffer_size()];
+    let info = r.next_frame(&mut buf).unwrap();
+    let step = info.color_type.samples();
+    buf[..info.buffer_size()]
+        .chunks_exact(step)
+        .filter(|p| p[0] > 150 && p[0] > p[1].saturating_add(100) && p[1].abs_diff(p[2]) < 30)
+        .count()
+}
