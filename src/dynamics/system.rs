@@ -124,6 +124,14 @@ impl System {
         (self.radius * (1.0 + theta.cos()) + self.offset) / theta.sin()
     }
 
+    /// The palm angle (rad, in (0, pi)) at which the palm just touches a disc at `x` (mm): the
+    /// inverse of [`System::touching_x`]. r cos theta - x sin theta = -(r + h) is
+    /// R cos(theta + phi) = -(r + h) with R = sqrt(r^2 + x^2), phi = atan2(x, r).
+    pub fn touching_theta(&self, x: f64) -> f64 {
+        let r = self.radius;
+        (-(r + self.offset) / r.hypot(x)).clamp(-1.0, 1.0).acos() - x.atan2(r)
+    }
+
     /// The speed (mm/s) at which the disc must move to stay in touch with the palm turning at
     /// omega: -omega d/dtheta of [`System::touching_x`] = omega (r + (r + h) cos theta) / sin^2 theta,
     /// which is r omega / (2 sin^2(theta/2)) for h = 0.
