@@ -64,10 +64,39 @@ pub(crate) fn sliding_push_n(weight_n: f64, mu_ground: f64, mu_palm: f64, theta:
     }
 }
 
+/// Watches a force-driven disc that never armed for the stalled palm holding it for good.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct HeldWatch {
+    /// The end (s) of the confirmation window begun at the first step end of the current run of
+    /// held step ends.
+    until: Option<f64>,
+}
+
+impl HeldWatch {
+    /// Sees the state `y` at a step end `t`: true once the disc has been held at every step end
+    /// over the confirmation window (module docs: the jam's, 0.25 deg of commanded palm turn,
+    /// or two periods of the disc on the contact if longer).
+    pub fn see(&mut self, sys: &System, y: &[f64], t: f64, rest_speed_mm_s: f64) -> bool {
+        if !held_now(sys, y, rest_speed_mm_s) {
+            self.until = None;
+            return false;
+        }
+        let delta = sys.evaluate(y, None).penetration;
+        let window = (super::jam::CONFIRM_DEG.to_radians() / sys.omega)
+            .max(2.0 * sys.impact.period_s(sys.mass, delta));
+        t >= *self.until.get_or_insert(t + window)
+    }
+
+    /// The end of the confirmation window under way, if the disc is held.
+    pub fn until(&self) -> Option<f64> {
+        self.until
+    }
+}
+
 /// Whether the state `y` = (theta, x, v) shows the disc held for good by the stalled palm
 /// (module docs): the push in the drive's band, the disc slower than `rest_speed_mm_s`, and the
 /// limit below the push that slides the disc at its position.
-pub(crate) fn held_now(sys: &System, y: &[f64], rest_speed_mm_s: f64) -> bool {
+fn held_now(sys: &System, y: &[f64], rest_speed_mm_s: f64) -> bool {
     let limit = sys.normal_limit;
     if y[2].abs() >= rest_speed_mm_s || sys.evaluate(y, None).normal < (1.0 - sys.band) * limit {
         return false;

@@ -148,9 +148,8 @@ pub struct JamDetector<'a> {
     bounced: bool,
     /// Period in s of the disc oscillating on the palm contact's stiffness at the candidate.
     contact_period: f64,
-    /// Force drive, never armed: the end of the window (s) over which the disc, held for good
-    /// by the stalled palm at every step end since it began (`held`), confirms it.
-    held_until: Option<f64>,
+    /// Force drive, never armed: watches for the disc held for good by the stalled palm.
+    held: held::HeldWatch,
     pub series: Vec<SeriesRow>,
     next_sample: f64,
     y: Vec<f64>,
@@ -174,35 +173,11 @@ impl<'a> JamDetector<'a> {
             touching_since: None,
             bounced: false,
             contact_period: 0.0,
-            held_until: None,
+            held: held::HeldWatch::default(),
             series: Vec::new(),
             next_sample: t0,
             y: vec![0.0; 3],
         }
-    }
-
-    /// Period in s of the disc oscillating on the palm contact's stiffness at penetration
-    /// `delta` (mm), T = 2 pi sqrt(m / k) with k in N/m; 0 without contact.
-    fn contact_period_s(&self, delta: f64) -> f64 {
-        let (_, stiffness_n_per_mm) = self.sys.impact.elastic(delta);
-        if stiffness_n_per_mm > 0.0 {
-            std::f64::consts::TAU * (self.sys.mass / (1e3 * stiffness_n_per_mm)).sqrt()
-        } else {
-            0.0
-        }
-    }
-
-    /// Watches a force-driven disc that never armed for the stalled palm holding it for good
-    /// (`held`); true when it has been held at every step end over the confirmation window
-    /// (0.25 deg of commanded palm turn, or two periods of the disc on the contact if longer).
-    fn held_for_good(&mut self, y: &[f64], t: f64, rest_speed: f64) -> bool {
-        if !held::held_now(self.sys, y, rest_speed) {
-            self.held_until = None;
-            return false;
-        }
-        let window = (CONFIRM_DEG.to_radians() / self.sys.omega)
-            .max(2.0 * self.contact_period_s(self.sys.evaluate(y, None).penetration));
-        t >= *self.held_until.get_or_insert(t + window)
     }
 
     fn ratio_margin(&self, y: &[f64], ratio: f64) -> f64 {
@@ -321,7 +296,7 @@ impl Observer for JamDetector<'_> {
             // the start, so `after_jam` counts from there.
             if let Some(v_rest) = rule.rest_speed
                 && !self.armed
-                && self.held_for_good(&y, t1, v_rest)
+                && self.held.see(sys, &y, t1, v_rest)
                 && t1 >= rule.after_jam
             {
                 return Control::Stop(t1);
@@ -342,7 +317,8 @@ impl Observer for JamDetector<'_> {
                 self.rest = None;
                 let mut at = [0.0; 3];
                 step.eval(t, &mut at);
-                self.contact_period = self.contact_period_s(sys.evaluate(&at, None).penetration);
+                let delta = sys.evaluate(&at, None).penetration;
+                self.contact_period = sys.impact.period_s(sys.mass, delta);
                 self.bounced = self.contact_period <= 0.0;
             } else {
                 return Control::Continue;
@@ -410,7 +386,7 @@ impl Observer for JamDetector<'_> {
     /// recovers). Before arming, the end of a held disc's window (`held`), or `after_jam_s`.
     fn horizon(&self) -> Option<f64> {
         if !self.armed {
-            return self.held_until.map(|t| t.max(self.rule.after_jam));
+            return self.held.until().map(|t| t.max(self.rule.after_jam));
         }
         let jam = self.jam?;
         let confirmed_by = match self.at_confirmation {
