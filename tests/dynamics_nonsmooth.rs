@@ -350,3 +350,73 @@ fn the_rolling_table_of_the_nonsmooth_docs() {
     eprintln!("force drive: worst relative distance to min-norm rolling {worst:.2e}");
     assert!(worst < 7.5e-4, "{worst}");
 }
+
+/// The step figures of the docs (`dynamics::params::MOTION_STEP_DEG` and `FORCE_STEP_DEG`,
+/// the nonsmooth module docs), printed and bounded (issue 20, item 6: every number in the docs
+/// comes from a test that prints it). Motion drive at 30 deg/s: the lock-up's distance to
+/// r / mu over mu = 0.15-0.45 at 0.1, 0.3 and 1 deg. Force drive: the rest at 0.1 deg against
+/// 0.01 deg at 30 deg/s, and at 0.5 deg/s the rest at 0.1 and 0.01 deg against a run at
+/// 0.001 deg (mu 0.2-0.4, F 50 and 200 N), all without the verification run.
+#[test]
+fn the_step_figures_of_the_nonsmooth_docs() {
+    let run = |scene: &SceneParams, drive: Drive, omega: f64, step: f64| {
+        let mut p = nonsmooth(drive, omega);
+        p.integrator.nonsmooth_step_deg = Some(step);
+        p.verification.verify = false;
+        x_jam(&simulate(scene, &p, None).unwrap())
+    };
+    let mus = [0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45];
+    let mut motion = Vec::new();
+    for step in [0.1, 0.3, 1.0] {
+        let worst = mus
+            .iter()
+            .map(|&mu| {
+                let x = run(
+                    &SceneParams::default().with_mu(mu),
+                    Drive::Motion,
+                    30.0,
+                    step,
+                );
+                rel(x, 10.0 / mu)
+            })
+            .fold(0.0, f64::max);
+        println!(
+            "motion drive, 30 deg/s, step {step} deg: worst |x_jam - r/mu| / (r/mu) {worst:.2e}"
+        );
+        motion.push(worst);
+    }
+    let (mut fast, mut slow_coarse, mut slow_fine) = (0.0_f64, (f64::MAX, 0.0_f64), 0.0_f64);
+    for mu in [0.2, 0.3, 0.4] {
+        for force_n in [50.0, 200.0] {
+            let scene = SceneParams {
+                force_n,
+                ..SceneParams::default().with_mu(mu)
+            };
+            fast = fast.max(rel(
+                run(&scene, Drive::Force, 30.0, 0.1),
+                run(&scene, Drive::Force, 30.0, 0.01),
+            ));
+            let converged = run(&scene, Drive::Force, 0.5, 0.001);
+            let coarse = rel(run(&scene, Drive::Force, 0.5, 0.1), converged);
+            slow_coarse = (slow_coarse.0.min(coarse), slow_coarse.1.max(coarse));
+            slow_fine = slow_fine.max(rel(run(&scene, Drive::Force, 0.5, 0.01), converged));
+        }
+    }
+    println!("force drive, 30 deg/s: worst |x(0.1 deg) - x(0.01 deg)| / x {fast:.2e}");
+    println!(
+        "force drive, 0.5 deg/s, against 0.001 deg: 0.1 deg {:.2e} to {:.2e}, 0.01 deg at most {slow_fine:.2e}",
+        slow_coarse.0, slow_coarse.1
+    );
+    // When written: 2.6e-5, 2.7e-4, 3.05e-3; 7.8e-5; 3.0e-5 to 2.6e-3 and 2.9e-5.
+    assert!(
+        motion[0] < 3e-5 && motion[1] < 3e-4 && motion[2] < 3.5e-3,
+        "{motion:?}"
+    );
+    assert!(fast < 1e-4, "{fast}");
+    // The finer default is needed: 0.1 deg is ten times further off than 0.01 deg at worst.
+    assert!(
+        slow_coarse.1 > 10.0 * slow_fine && slow_coarse.1 < 3e-3,
+        "{slow_coarse:?}"
+    );
+    assert!(slow_fine < 5e-5, "{slow_fine}");
+}

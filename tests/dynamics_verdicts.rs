@@ -284,3 +284,60 @@ fn a_motion_drive_started_near_the_wedge_is_checked_against_the_rigid_contact() 
     }
     assert_eq!(s.status, JamStatus::Inaccurate);
 }
+
+/// Regression (issue 20, item 8): a force-limited palm too weak to slide the disc at the start
+/// (the stability matrix's `barely_moves`, F = 1.05 m g sin(atan mu_g), and `too_weak`, 0.95 of
+/// it) stalls at its limit against a disc at rest, and the run went on to the end of the push
+/// (t_end = 3 s): DOPRI5 50,787 and 65,681 steps (of both runs), held at its stability limit
+/// by the stalled contact. The rigid statics say such a disc can never move again
+/// (`dynamics::held`), so the run now stops there, for every method, with the answer the full
+/// run gave. A push that slides the disc at the start (6 N) is not stopped: it still jams
+/// further out.
+#[test]
+fn a_disc_held_by_a_stalled_palm_ends_the_run() {
+    let least = jamchart::statics::least_push_n(&SceneParams::default());
+    for method in [Method::Radau5, Method::Dopri5] {
+        let p = DynamicsParams {
+            drive: jamchart::dynamics::DriveSettings {
+                mode: jamchart::dynamics::Drive::Force,
+                ..Default::default()
+            },
+            integrator: jamchart::dynamics::IntegratorSettings {
+                method,
+                ..Default::default()
+            },
+            ..Default::default()
+        };
+        for (ratio, want) in [(1.05, JamStatus::JammedAtStart), (0.95, JamStatus::TooWeak)] {
+            let scene = SceneParams {
+                force_n: ratio * least,
+                ..Default::default()
+            };
+            let s = run(&scene, &p);
+            println!(
+                "{method:?} at {ratio} of the least push: {:?}, {} steps (both runs), stopped at \
+                 t = {:.4} s of the 3 s push",
+                s.status, s.steps, s.simulated_s
+            );
+            assert_eq!(
+                s.status, want,
+                "{method:?} at {ratio} of the least push: {s:?}"
+            );
+            // Held from about 0.3 ms (the palm builds its push), confirmed over two periods of
+            // the disc on the contact at 3.5 N (about 40 ms; the window is the longer of that
+            // and 0.25 deg of commanded turn, 8.3 ms) and stopped at the next step end (RADAU5's
+            // steps are up to 1 deg of turn, 33 ms): 0.1 s is a thirtieth of the push. The
+            // full run took 50,787 and 65,681 DOPRI5 steps; 2000 is well short of that.
+            assert!(s.simulated_s < 0.1, "{method:?} at {ratio}: {s:?}");
+            assert!(s.steps < 2000, "{method:?} at {ratio}: {} steps", s.steps);
+        }
+        let scene = SceneParams {
+            force_n: 6.0,
+            ..Default::default()
+        };
+        let s = run(&scene, &p);
+        assert_eq!(s.status, JamStatus::Jams, "{method:?} at 6 N: {s:?}");
+        let x = s.x_jam_mm.expect("a jam");
+        assert!(x > 11.5, "{method:?} at 6 N: x_jam {x} mm");
+    }
+}

@@ -73,6 +73,17 @@ impl ImpactLaw {
         (p * delta, self.exponent * p)
     }
 
+    /// Period in s of a disc of `mass_kg` oscillating on the contact at penetration `delta`
+    /// (mm): T = 2 pi sqrt(m / k) with k the elastic slope in N/m; 0 without contact.
+    pub fn period_s(&self, mass_kg: f64, delta: f64) -> f64 {
+        let (_, stiffness_n_per_mm) = self.elastic(delta);
+        if stiffness_n_per_mm > 0.0 {
+            std::f64::consts::TAU * (mass_kg / (1e3 * stiffness_n_per_mm)).sqrt()
+        } else {
+            0.0
+        }
+    }
+
     /// The normal force at penetration `delta` (mm) closing at `rate` (mm/s); `elastic` is
     /// [`ImpactLaw::elastic`] at `delta`, which the caller computes once (the force drive needs it
     /// too, and it costs a `powf`).

@@ -36,7 +36,12 @@
 //! jam is read where the disc's speed first falls below the rest speed 2 V_d
 //! ([`rest_speed_mm_s`]) after the collapse, and the run goes on until it does; the collapse is
 //! kept as the half-speed reading.
+//!
+//! A force-driven disc that never arms may be held for good by the stalled palm: the rigid
+//! statics say so ([`super::held`]), and the detector then stops the run after the same
+//! confirmation window instead of letting the regularised disc creep to the end of the push.
 
+use super::held;
 use super::integrators::{Control, DenseStep, Observer};
 use super::system::System;
 
@@ -143,6 +148,8 @@ pub struct JamDetector<'a> {
     bounced: bool,
     /// Period in s of the disc oscillating on the palm contact's stiffness at the candidate.
     contact_period: f64,
+    /// Force drive, never armed: watches for the disc held for good by the stalled palm.
+    held: held::HeldWatch,
     pub series: Vec<SeriesRow>,
     next_sample: f64,
     y: Vec<f64>,
@@ -166,6 +173,7 @@ impl<'a> JamDetector<'a> {
             touching_since: None,
             bounced: false,
             contact_period: 0.0,
+            held: held::HeldWatch::default(),
             series: Vec::new(),
             next_sample: t0,
             y: vec![0.0; 3],
@@ -284,6 +292,15 @@ impl Observer for JamDetector<'_> {
         }
         if !self.armed {
             self.armed = self.ratio_margin(&y, rule.arm_ratio) >= 0.0;
+            // Held for good before it ever armed: the rigid statics end the run; its jam is at
+            // the start, so `after_jam` counts from there.
+            if let Some(v_rest) = rule.rest_speed
+                && !self.armed
+                && self.held.see(sys, &y, t1, v_rest)
+                && t1 >= rule.after_jam
+            {
+                return Control::Stop(t1);
+            }
             return Control::Continue;
         }
         if self.jam.is_none() && sys.evaluate(&y, None).penetration <= 0.0 {
@@ -300,15 +317,9 @@ impl Observer for JamDetector<'_> {
                 self.rest = None;
                 let mut at = [0.0; 3];
                 step.eval(t, &mut at);
-                let (_, stiffness_n_per_mm) =
-                    sys.impact.elastic(sys.evaluate(&at, None).penetration);
-                self.bounced = stiffness_n_per_mm <= 0.0;
-                // T = 2 pi sqrt(m / k), k in N/m.
-                self.contact_period = if stiffness_n_per_mm > 0.0 {
-                    std::f64::consts::TAU * (sys.mass / (1e3 * stiffness_n_per_mm)).sqrt()
-                } else {
-                    0.0
-                };
+                let delta = sys.evaluate(&at, None).penetration;
+                self.contact_period = sys.impact.period_s(sys.mass, delta);
+                self.bounced = self.contact_period <= 0.0;
             } else {
                 return Control::Continue;
             }
@@ -372,8 +383,11 @@ impl Observer for JamDetector<'_> {
 
     /// With a candidate jam and the palm touching the disc: the end of its confirmation
     /// window, or `after_jam_s` after it if later (where the run stops unless the disc
-    /// recovers).
+    /// recovers). Before arming, the end of a held disc's window (`held`), or `after_jam_s`.
     fn horizon(&self) -> Option<f64> {
+        if !self.armed {
+            return self.held.until().map(|t| t.max(self.rule.after_jam));
+        }
         let jam = self.jam?;
         let confirmed_by = match self.at_confirmation {
             Some(_) => jam.t,

@@ -31,7 +31,11 @@
 //!   rest lies within 4.8e-6 of it; RADAU5's at the default contact 0.25-1.04 % short of it (the
 //!   contact's give), and the half-speed reading 0.04-9.55 % short of the rest (most at
 //!   mu 0.15, F 50 N, 90 deg/s). A slow push rests near the closed form at finite F (Fig. 7b's
-//!   force dependence); a fast one coasts past it, most at low mu and low F.
+//!   force dependence); a fast one coasts past it, most at low mu and low F. A palm that
+//!   stalls against a disc at rest before the disc ever reached its speed ends the run there
+//!   when the rigid statics say the disc can never move again (`held`: its push at the limit
+//!   is below the push that slides it at its angle, and the palm only closes): the answer is
+//!   known without integrating to the end of the push, for every method.
 
 //! # Integration and its trust
 //!
@@ -66,6 +70,7 @@
 
 pub(crate) mod accuracy;
 pub(crate) mod contact;
+mod held;
 pub(crate) mod integrators;
 pub(crate) mod jam;
 pub(crate) mod nonsmooth;

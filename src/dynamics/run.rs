@@ -1,5 +1,6 @@
 //! One integration of the scene to the jam, and its reading and quasi-static cross-checks.
 
+use super::held;
 use super::integrators::Failure;
 use super::integrators::{Dopri5, Outcome, Radau5, Stats, Tolerances};
 use super::jam::{JamDetector, JamRule, rest_speed_mm_s};
@@ -106,7 +107,8 @@ fn conclude(
         out.status = if out.failure.is_some() {
             JamStatus::IntegratorFailed
         } else if !det.armed {
-            // The disc never reached the palm's speed: the push could not get it going.
+            // The disc never reached the palm's speed: the push could not get it going (a
+            // force-driven run stops as soon as the stalled palm holds it for good, `held`).
             out.theta_jam_deg = Some(scene.start_angle_deg);
             out.x_jam_mm = Some(sys.touching_x(scene.start_angle_deg.to_radians()));
             out.t_jam_s = Some(0.0);
@@ -169,7 +171,9 @@ fn conclude(
         });
     }
     if let Some((theta, push)) = det.at_confirmation {
-        let needed = sliding_push_n(scene, params, theta);
+        // Against the static frictions: the disc stands still.
+        let (g, p) = (sys.ground_friction.mu_static, sys.palm_friction.mu_static);
+        let needed = held::sliding_push_n(sys.weight, g, p, theta);
         if push > 2.0 * needed {
             out.cross_check = Some(CrossCheck::HeldBelowSlidingPush {
                 x_jam_mm: at.x,
@@ -185,21 +189,6 @@ fn conclude(
         out.status = c.status();
     }
     out
-}
-
-/// The palm's normal push (N) that slides the disc at palm angle `theta` against the static
-/// frictions at both contacts (the corrected Eq. 1 solved for the push), infinite at and below
-/// the self-locking wedge.
-fn sliding_push_n(scene: &SceneParams, params: &DynamicsParams, theta: f64) -> f64 {
-    let mg = params.friction.mu_static_ground.unwrap_or(scene.mu_ground);
-    let mp = params.friction.mu_static_palm.unwrap_or(scene.mu_palm);
-    let (s, c) = theta.sin_cos();
-    let denom = s * (1.0 - mg * mp) - c * (mg + mp);
-    if denom > 0.0 {
-        mg * scene.weight_n() / denom
-    } else {
-        f64::INFINITY
-    }
 }
 
 /// One nonsmooth run read as a solution: a lock-up (motion drive) or the disc and palm at rest

@@ -124,6 +124,14 @@ impl System {
         (self.radius * (1.0 + theta.cos()) + self.offset) / theta.sin()
     }
 
+    /// The palm angle (rad, in (0, pi)) at which the palm just touches a disc at `x` (mm): the
+    /// inverse of [`System::touching_x`]. r cos theta - x sin theta = -(r + h) is
+    /// R cos(theta + phi) = -(r + h) with R = sqrt(r^2 + x^2), phi = atan2(x, r).
+    pub fn touching_theta(&self, x: f64) -> f64 {
+        let r = self.radius;
+        (-(r + self.offset) / r.hypot(x)).clamp(-1.0, 1.0).acos() - x.atan2(r)
+    }
+
     /// The speed (mm/s) at which the disc must move to stay in touch with the palm turning at
     /// omega: -omega d/dtheta of [`System::touching_x`] = omega (r + (r + h) cos theta) / sin^2 theta,
     /// which is r omega / (2 sin^2(theta/2)) for h = 0.
@@ -291,7 +299,8 @@ impl System {
 ///
 /// Why not plain bisection: it halves [-omega, 0] down to adjacent floats, some 60 to 110
 /// evaluations, and a force-driven simulation calls it at every evaluation of the
-/// right-hand side; it was 55 % of the `stability-matrix` chart's time. Newton steps from
+/// right-hand side; it was the larger part of the `stability-matrix` chart's time (issue 21's
+/// profile). Newton steps from
 /// hi (bisection where a step would leave the bracket) take the bracket to its root in a
 /// few; once a step no longer moves, floats across the root are probed, so the bracket
 /// closes to adjacent floats as bisection's does. The answer is then bisection's last midpoint of that
@@ -453,7 +462,7 @@ mod tests {
 
     /// Issue 21, item 1: the force drive bisected its equation for theta_dot to round-off at
     /// every evaluation of the right-hand side, some 60 to 110 halvings, which made
-    /// `System::evaluate` 58 % of the `stability-matrix` chart's time. Its Newton
+    /// `System::evaluate` the larger part of the `stability-matrix` chart's time. Its Newton
     /// replacement must give bisection's answer bit for bit, across the force limit's band
     /// (N from 0.5 to 1.2 N_max), closing and opening, at several palm speeds, in fewer
     /// evaluations; except where the residual is a staircase at round-off (w within a few

@@ -209,7 +209,7 @@ fn an_empty_robust_window_is_empty_on_the_brute_force_grid() {
 }
 
 /// Issue 21, item 1: `holds_sector` recomputed the V's frame and support cone (sin, cos and
-/// tan) for each of its some 80 loads, 80 % of the `vlocator-robust` chart's time; it now
+/// tan) for each of its some 80 loads, most of the `vlocator-robust` chart's time; it now
 /// prepares the V once (`exact::PreparedV`). A V prepared once must answer every load, of
 /// every direction and magnitude, exactly as the V prepared for that load alone: free and
 /// blocked, centre and rim loads, locking and not, asymmetric frictions.

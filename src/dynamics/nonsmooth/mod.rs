@@ -93,8 +93,9 @@
 //! of its start, so at its end the palm has turned into the disc by the second order of the
 //! step, and the disc lags its touching position by that much. Verification runs at twice the
 //! step; the difference (about three times the error) bounds it. The force drive's rest is not
-//! located inside its step: at 30 deg/s 0.1 deg is within 2e-5 of 0.01 deg, but a slow push
-//! (0.5 deg/s) lands 0.1-0.4 % off at 0.1 deg and is often flagged, hence its finer default.
+//! located inside its step: at 30 deg/s 0.1 deg is within 7.8e-5 of 0.01 deg, but a slow push
+//! (0.5 deg/s) lands up to 0.26 % off at 0.1 deg, hence its finer default (mu 0.2-0.4, F 50
+//! and 200 N; `the_step_figures_of_the_nonsmooth_docs` prints them).
 //!
 //! # The disc free to roll
 //!
