@@ -159,7 +159,7 @@ impl Cells {
     /// The file extension.
     pub const EXTENSION: &str = "csv";
 
-    /// Writes the CSV to `out` as it is made (see [`crate::csv_out::write_grid_cells`]).
+    /// Writes the CSV to `out` as it is made, a row buffer at a time (`csv_out::write_grid_cells`).
     pub fn write(&self, out: &mut dyn std::io::Write) -> std::io::Result<()> {
         match self.0.cells() {
             Some(table) => table.write(out),
