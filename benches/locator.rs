@@ -5,9 +5,15 @@
 //! thread) by the exact path per cell, by `grid::capacity_map` (for the free V its closed form,
 //! trigonometry once per axis sample) and the median clarabel time per cell over a 400-cell
 //! sample, extrapolated to the map. Goals: the exact map in <= 10 ms on 2 cores (issue 9); the
-//! closed-form map at least as fast as numpy's closed form (issue 21). numpy is not measured
-//! here, so no ratio to it is printed: a ratio needs its baseline timed in the same run.
+//! closed-form map at least as fast as numpy's closed form (issue 21).
+//!
+//! numpy's closed form for the symmetric V (benches/baseline/vlocator.py, the same 200 x 200
+//! map) is timed in the same run, interleaved with `capacity_map` under free rotation: five
+//! rounds of the script (its median of 101 maps) then the Rust map (median of 15); the
+//! medians of the rounds and their ratio are printed. Without the Python baseline it prints
+//! `no baseline: <why>` and no ratio.
 
+mod baseline;
 mod common;
 
 use common::{median, median_s};
@@ -30,7 +36,51 @@ fn map(rotation: locator::Rotation) -> Grid<LocatorParams> {
     }
 }
 
+/// The median ms of one numpy map, as benches/baseline/vlocator.py prints it.
+fn numpy_ms(python: &std::path::Path) -> Result<f64, String> {
+    let out = std::process::Command::new(python)
+        .arg(baseline::dir().join("vlocator.py"))
+        .arg("101")
+        .output()
+        .map_err(|e| format!("vlocator.py did not start: {e}"))?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    text.split_whitespace()
+        .nth(1)
+        .and_then(|v| v.parse().ok())
+        .filter(|_| out.status.success())
+        .ok_or_else(|| {
+            let err = String::from_utf8_lossy(&out.stderr);
+            format!("vlocator.py printed {text:?} ({})", err.trim())
+        })
+}
+
+/// numpy's map beside `capacity_map` on all threads, interleaved: (numpy, Rust) medians in s.
+fn against_numpy(g: &Grid<LocatorParams>) -> Result<(f64, f64), String> {
+    let python = baseline::python()?;
+    let mut numpy = Vec::new();
+    let mut rust = Vec::new();
+    for _ in 0..5 {
+        numpy.push(numpy_ms(&python)? * 1e-3);
+        rust.push(median_s(15, || {
+            std::hint::black_box(capacity_map(g).expect("valid grid"));
+        }));
+    }
+    Ok((median(numpy), median(rust)))
+}
+
 fn main() {
+    match against_numpy(&map(locator::Rotation::Free)) {
+        Ok((numpy, rust)) => println!(
+            "symmetric V, free rotation, 200 x 200 closed-form map, medians of 5 interleaved \
+             rounds: numpy (benches/baseline/vlocator.py) {:.3} ms, capacity_map {:.3} ms on {} \
+             threads: {:.1}x numpy's speed (goal at least 1x, issue 21)",
+            numpy * 1e3,
+            rust * 1e3,
+            rayon::current_num_threads(),
+            numpy / rust
+        ),
+        Err(why) => println!("symmetric V closed-form map: no baseline: {why}"),
+    }
     let threads = rayon::current_num_threads();
     let one = common::one_thread_pool();
     for rotation in [locator::Rotation::Free, locator::Rotation::Blocked] {

@@ -1,11 +1,15 @@
-//! Whole-process render time: `jamchart render fig3` and `jamchart render` (all scenes).
+//! Whole-process render time: `jamchart render fig3` beside the paper's Fig. 3 in numpy +
+//! matplotlib (benches/baseline/fig3.py: same grid, closed form, PNG and cells CSV), and
+//! `jamchart render` (all scenes).
 //!
-//! `cargo bench --bench render`; runs the release binary 11 times each in a temporary directory
-//! and prints the medians. It prints no ratio to a Python baseline: a ratio needs the baseline
-//! measured in the same run on the same machine, and the repository holds no numpy +
-//! matplotlib script to run (the "2.7 s" it used to divide by was measured rounds ago). Goal
-//! (issue 21): `render fig3` at least 25x faster than such a script, timed beside it.
+//! `cargo bench --bench render`; runs jamchart and the Python script 11 times each,
+//! interleaved (one of each in turn, so the machine's load falls on both alike), each in its
+//! own temporary folder, and prints the median wall time and the median CPU time (user + sys
+//! of the child) of each, and the ratio of the medians. Without the Python baseline (no
+//! python3, no PyPI) it prints `no baseline: <why>` and no ratio. Goals (issue 21): `render
+//! fig3` at least 25x faster than the script; all scenes under 0.8 s on 2 cores.
 
+mod baseline;
 mod common;
 
 use common::median;
@@ -14,36 +18,90 @@ use std::path::Path;
 use std::process::Command;
 use std::time::Instant;
 
-fn time_render(scenes: &[&str], runs: usize) -> f64 {
-    let out = tempfile::tempdir().expect("temp dir");
-    let charts = Path::new(env!("CARGO_MANIFEST_DIR")).join("charts");
-    let times = (0..runs)
-        .map(|_| {
-            let t0 = Instant::now();
-            let status = Command::new(env!("CARGO_BIN_EXE_jamchart"))
-                .arg("render")
-                .args(scenes)
-                .arg("--out")
-                .arg(out.path())
-                .arg("--scenes-dir")
-                .arg(&charts)
-                .output()
-                .expect("the binary runs")
-                .status;
-            assert!(status.success(), "render failed");
-            t0.elapsed().as_secs_f64()
-        })
-        .collect();
-    median(times)
+/// Wall and CPU (user + sys) time of one run of `cmd` in s; panics when it fails.
+fn time_process(cmd: &mut Command) -> (f64, f64) {
+    let cpu = || {
+        // SAFETY: getrusage writes one rusage through a valid pointer.
+        let mut u: libc::rusage = unsafe { std::mem::zeroed() };
+        unsafe { libc::getrusage(libc::RUSAGE_CHILDREN, &mut u) };
+        let s = |t: libc::timeval| t.tv_sec as f64 + t.tv_usec as f64 * 1e-6;
+        s(u.ru_utime) + s(u.ru_stime)
+    };
+    let (c0, t0) = (cpu(), Instant::now());
+    let out = cmd.output().expect("the process starts");
+    let wall = t0.elapsed().as_secs_f64();
+    assert!(
+        out.status.success(),
+        "{cmd:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    (wall, cpu() - c0)
+}
+
+fn render(scenes: &[&str], out: &Path) -> Command {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_jamchart"));
+    cmd.arg("render")
+        .args(scenes)
+        .arg("--out")
+        .arg(out)
+        .arg("--scenes-dir")
+        .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("charts"))
+        .arg("-q");
+    cmd
+}
+
+/// Medians of (wall, cpu) over the runs.
+fn medians(runs: &[(f64, f64)]) -> (f64, f64) {
+    (
+        median(runs.iter().map(|r| r.0).collect()),
+        median(runs.iter().map(|r| r.1).collect()),
+    )
 }
 
 fn main() {
-    let fig3 = time_render(&["fig3"], 11);
-    let all = time_render(&[], 11);
-    println!("whole-process render, median of 11 runs:");
-    println!("  render fig3: {:.1} ms", fig3 * 1e3);
+    const RUNS: usize = 11;
+    let python = baseline::python();
+    let (ours, theirs) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
+    let mut rust = Vec::new();
+    let mut py = Vec::new();
+    for _ in 0..RUNS {
+        rust.push(time_process(&mut render(&["fig3"], ours.path())));
+        if let Ok(python) = &python {
+            let mut cmd = Command::new(python);
+            cmd.arg(baseline::dir().join("fig3.py")).arg(theirs.path());
+            py.push(time_process(&mut cmd));
+        }
+    }
+    let all: Vec<(f64, f64)> = (0..RUNS)
+        .map(|_| time_process(&mut render(&[], ours.path())))
+        .collect();
+    let (rust, all) = (medians(&rust), medians(&all));
+    println!("whole processes, medians of {RUNS} interleaved runs (wall, cpu = user + sys):");
     println!(
-        "  render (all scenes): {:.1} ms (goal under 0.8 s on 2 cores, issue 21)",
-        all * 1e3
+        "  jamchart render fig3: {:.1} ms wall, {:.1} ms cpu",
+        rust.0 * 1e3,
+        rust.1 * 1e3
+    );
+    match &python {
+        Ok(_) => {
+            let py = medians(&py);
+            println!(
+                "  numpy + matplotlib fig3 (benches/baseline/fig3.py): {:.1} ms wall, {:.1} ms cpu",
+                py.0 * 1e3,
+                py.1 * 1e3
+            );
+            println!(
+                "  ratio: {:.1}x wall, {:.1}x cpu (goal at least 25x, issue 21)",
+                py.0 / rust.0,
+                py.1 / rust.1
+            );
+        }
+        Err(why) => println!("  no baseline: {why}"),
+    }
+    println!(
+        "  jamchart render (all scenes): {:.1} ms wall, {:.1} ms cpu (goal under 0.8 s wall on \
+         2 cores, issue 21)",
+        all.0 * 1e3,
+        all.1 * 1e3
     );
 }

@@ -57,11 +57,34 @@ const POW10: [f64; 23] = [
     1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
 ];
 
+/// Exact negative powers of ten as f64, nearest: 10^-1 to 10^-22.
+const POW10_NEG: [f64; 22] = [
+    1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15,
+    1e-16, 1e-17, 1e-18, 1e-19, 1e-20, 1e-21, 1e-22,
+];
+
+/// [`decimals`] by comparing with the powers of ten instead of `log10` (a sixth of a map's
+/// CSV cost, callgrind of `render fig3`); None outside 1e-22..1e22.
+///
+/// The two can differ only for `a` within an ulp or so of a power of ten, where `log10`
+/// rounds onto the integer; such an `a` rounds to that power at 7 significant digits and
+/// at 8, so the digits written are the same (`fast_digits_are_std_digits` checks values
+/// next to every power of ten against std with `log10`).
+fn decimals_by_table(a: f64) -> Option<usize> {
+    let below_one = POW10_NEG.iter().take_while(|&&p| a < p).count();
+    if a >= 1.0 {
+        let above = POW10.iter().take_while(|&&p| p <= a).count();
+        (above < POW10.len()).then(|| (SIGNIFICANT_DIGITS as usize).saturating_sub(above))
+    } else {
+        (below_one < POW10_NEG.len()).then_some(SIGNIFICANT_DIGITS as usize + below_one)
+    }
+}
+
 /// [`push_plain`] by scaled integer rounding; false (nothing written) where it could differ
 /// from std's exact rounding.
 fn push_fast(out: &mut Vec<u8>, v: f64) -> bool {
     let a = v.abs();
-    let decimals = decimals(a);
+    let decimals = decimals_by_table(a).unwrap_or_else(|| decimals(a));
     let Some(&scale) = POW10.get(decimals) else {
         return false;
     };
@@ -179,17 +202,38 @@ impl Column<'_> {
         match self {
             Column::Dense(v) => push_plain(out, v[i]),
             Column::Sparse(v) => v[i].into_iter().for_each(|x| push_plain(out, x)),
-            Column::Text(v) => out.extend_from_slice(v[i].as_bytes()),
+            Column::Text(v) => push_text(out, v[i]),
         }
     }
 }
 
 /// Long-format CSV of a map's cells: one row per cell (x fastest), the x value, the y value,
-/// then each column; `header` names all of them.
-///
-/// A map has 10^5 cells and more, so every number goes through one reused buffer into the
-/// writer's `write_field` (no String per cell) and each axis value is formatted once.
+/// then each column; `header` names all of them. In memory: [`write_grid_cells`] streams it.
+#[cfg(test)]
 pub fn grid_cells(header: &[&str], xs: &[f64], ys: &[f64], columns: &[Column]) -> Vec<u8> {
+    let mut out = Vec::new();
+    write_grid_cells(&mut out, header, xs, ys, columns).expect("memory takes every byte");
+    out
+}
+
+/// Rows buffered before they go to the writer: large enough that a file write is cheap, small
+/// enough that a map of 10^7 cells never holds its CSV (hundreds of MB) in memory.
+const ROWS_BUFFER_BYTES: usize = 1 << 16;
+
+/// Writes [`grid_cells`] to `out` as it is made, [`ROWS_BUFFER_BYTES`] at a time.
+///
+/// The header goes through the csv crate; the rows are written here byte by byte: a number
+/// ([`push_plain`]) is digits, a sign and a point, which never need quoting, and a word is
+/// quoted as the csv crate quotes it ([`push_text`]). The csv crate's field writer, with its
+/// quoting scan per field, was half the cost of a map's CSV (`render fig3`, callgrind);
+/// `streamed_cells_are_the_csv_crates` checks the bytes against it.
+pub fn write_grid_cells<W: std::io::Write>(
+    mut out: W,
+    header: &[&str],
+    xs: &[f64],
+    ys: &[f64],
+    columns: &[Column],
+) -> std::io::Result<()> {
     let fmt = |v: &f64| {
         let mut b = Vec::with_capacity(16);
         push_plain(&mut b, *v);
@@ -197,29 +241,51 @@ pub fn grid_cells(header: &[&str], xs: &[f64], ys: &[f64], columns: &[Column]) -
     };
     let (xs, ys): (Vec<Vec<u8>>, Vec<Vec<u8>>) =
         (xs.iter().map(fmt).collect(), ys.iter().map(fmt).collect());
-    // About 10 bytes per number: the output is allocated once.
-    let capacity = xs.len() * ys.len() * (2 + columns.len()) * 10;
-    let mut w = csv::WriterBuilder::new()
+    let mut head = csv::WriterBuilder::new()
         .has_headers(false)
-        .from_writer(Vec::with_capacity(capacity));
-    // Writing to memory fails only on a bug, not on input.
-    let ok = "memory takes every byte";
-    w.write_record(header).expect(ok);
-    let mut buf = Vec::with_capacity(32);
+        .from_writer(Vec::new());
+    head.write_record(header)?;
+    let mut buf = head.into_inner().map_err(|e| e.into_error())?;
+    buf.reserve(ROWS_BUFFER_BYTES + 256);
     for (iy, y) in ys.iter().enumerate() {
         for (ix, x) in xs.iter().enumerate() {
             let i = iy * xs.len() + ix;
-            w.write_field(x).expect(ok);
-            w.write_field(y).expect(ok);
+            buf.extend_from_slice(x);
+            buf.push(b',');
+            buf.extend_from_slice(y);
             for c in columns {
-                buf.clear();
+                buf.push(b',');
                 c.push(&mut buf, i);
-                w.write_field(&buf).expect(ok);
             }
-            w.write_record(None::<&[u8]>).expect(ok);
+            buf.push(b'\n');
+            if buf.len() >= ROWS_BUFFER_BYTES {
+                out.write_all(&buf)?;
+                buf.clear();
+            }
         }
     }
-    w.into_inner().expect(ok)
+    out.write_all(&buf)?;
+    out.flush()
+}
+
+/// Appends `word` as the csv crate writes a field (its default, quote only where needed):
+/// in double quotes, each quote doubled, when it holds a comma, a quote or a line break.
+fn push_text(out: &mut Vec<u8>, word: &str) {
+    if !word
+        .bytes()
+        .any(|b| matches!(b, b',' | b'"' | b'\n' | b'\r'))
+    {
+        out.extend_from_slice(word.as_bytes());
+        return;
+    }
+    out.push(b'"');
+    for b in word.bytes() {
+        if b == b'"' {
+            out.push(b'"');
+        }
+        out.push(b);
+    }
+    out.push(b'"');
 }
 
 /// How many cells say each word of a text column, in the order the words first appear:
@@ -405,6 +471,17 @@ mod tests {
         // Between 1e-15 and 1e16 the fast path is the common one: std's path takes the exact
         // ties, rare but for values above about 1e13, whose ulp of 1/512 or more lands on x.5.
         assert!(slow.get() <= 200, "{} of 20000 took std's path", slow.get());
+        for k in -22..=22 {
+            let p = 10f64.powi(k);
+            for v in [
+                p,
+                f64::from_bits(p.to_bits() - 1),
+                f64::from_bits(p.to_bits() + 1),
+            ] {
+                check(v);
+                check(-v);
+            }
+        }
         for v in [
             0.12345675,
             1.2345675,
@@ -451,6 +528,98 @@ mod tests {
         assert_eq!(
             String::from_utf8(text).unwrap(),
             "mu,theta_deg,margin_n,x_jam_mm\n0.1,10,0,\n0.2,10,0.3333333,24.35455\n"
+        );
+    }
+
+    /// The rows as the csv crate wrote them before they were streamed: the oracle.
+    fn grid_cells_by_the_csv_crate(
+        header: &[&str],
+        xs: &[f64],
+        ys: &[f64],
+        columns: &[Column],
+    ) -> Vec<u8> {
+        let mut w = csv::WriterBuilder::new()
+            .has_headers(false)
+            .from_writer(Vec::new());
+        w.write_record(header).unwrap();
+        let mut buf = Vec::new();
+        for iy in 0..ys.len() {
+            for ix in 0..xs.len() {
+                for v in [xs[ix], ys[iy]] {
+                    buf.clear();
+                    push_plain(&mut buf, v);
+                    w.write_field(&buf).unwrap();
+                }
+                for c in columns {
+                    buf.clear();
+                    match c {
+                        Column::Dense(v) => push_plain(&mut buf, v[iy * xs.len() + ix]),
+                        Column::Sparse(v) => v[iy * xs.len() + ix]
+                            .into_iter()
+                            .for_each(|x| push_plain(&mut buf, x)),
+                        Column::Text(v) => buf.extend_from_slice(v[iy * xs.len() + ix].as_bytes()),
+                    }
+                    w.write_field(&buf).unwrap();
+                }
+                w.write_record(None::<&[u8]>).unwrap();
+            }
+        }
+        w.into_inner().unwrap()
+    }
+
+    proptest::proptest! {
+        /// Streamed rows are the csv crate's, byte for byte: numbers of every size and sign,
+        /// empty cells, words that need quoting, and maps past the row buffer's size.
+        #[test]
+        fn streamed_cells_are_the_csv_crates(
+            nx in 1usize..40,
+            ny in 1usize..40,
+            values in proptest::collection::vec(proptest::num::f64::ANY, 1..64),
+            words in proptest::collection::vec("[a-z_,\"\n\r ]{0,6}", 1..6),
+        ) {
+            let n = nx * ny;
+            let dense: Vec<f64> = (0..n).map(|i| values[i % values.len()]).collect();
+            let sparse: Vec<Option<f64>> =
+                (0..n).map(|i| (i % 3 != 0).then(|| values[(i * 7) % values.len()])).collect();
+            let leaked: Vec<&'static str> =
+                words.into_iter().map(|w| &*Box::leak(w.into_boxed_str())).collect();
+            let text: Vec<&'static str> = (0..n).map(|i| leaked[i % leaked.len()]).collect();
+            let xs: Vec<f64> = (0..nx).map(|i| values[(i * 3) % values.len()]).collect();
+            let ys: Vec<f64> = (0..ny).map(|i| i as f64 * 0.1 - 1.0).collect();
+            let header = ["x, mm", "y", "a", "b", "c"];
+            let columns = [Column::Dense(&dense), Column::Sparse(&sparse), Column::Text(&text)];
+            proptest::prop_assert_eq!(
+                grid_cells(&header, &xs, &ys, &columns),
+                grid_cells_by_the_csv_crate(&header, &xs, &ys, &columns)
+            );
+        }
+    }
+
+    /// A map larger than the row buffer streams in pieces, with the bytes of the whole.
+    #[test]
+    fn a_large_map_streams_in_pieces_with_the_same_bytes() {
+        struct Counting(Vec<u8>, usize);
+        impl std::io::Write for Counting {
+            fn write(&mut self, b: &[u8]) -> std::io::Result<usize> {
+                self.1 += 1;
+                self.0.extend_from_slice(b);
+                Ok(b.len())
+            }
+            fn flush(&mut self) -> std::io::Result<()> {
+                Ok(())
+            }
+        }
+        let xs: Vec<f64> = (0..300).map(|i| f64::from(i) / 7.0).collect();
+        let margin: Vec<f64> = (0..300 * 300).map(|i| f64::from(i).sin() * 40.0).collect();
+        let header = ["mu", "theta_deg", "margin_n"];
+        let columns = [Column::Dense(&margin)];
+        let mut w = Counting(Vec::new(), 0);
+        write_grid_cells(&mut w, &header, &xs, &xs, &columns).unwrap();
+        assert!(w.0.len() > 20 * ROWS_BUFFER_BYTES, "{} bytes", w.0.len());
+        assert!(w.1 > 20, "{} writes", w.1);
+        assert_eq!(
+            w.0,
+            grid_cells_by_the_csv_crate(&header, &xs, &xs, &columns)
         );
     }
 

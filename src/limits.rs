@@ -25,8 +25,11 @@ pub const MAX_OPTIMUM_POINTS: usize = 100_000;
 /// Estimated peak memory of one computation in bytes (1 GiB).
 pub const MAX_MEMORY_BYTES: u64 = 1 << 30;
 
-/// Estimated size of the files one scene writes, in bytes (256 MiB).
-pub const MAX_OUTPUT_BYTES: u64 = 256 << 20;
+/// Estimated size of the files one scene writes, in bytes (1 GiB): a guard of the disk, not
+/// of memory, since a map's cells CSV, the bulk of its files, is streamed to its file and never
+/// held whole (`charts::Cells`); the same as [`MAX_MEMORY_BYTES`], so that a map the memory
+/// allows (a 3200 x 3200 jam map writes about 340 MB) is not refused for its files.
+pub const MAX_OUTPUT_BYTES: u64 = 1 << 30;
 
 /// Levels of one contour map's x_jam or theta_jam iso-lines: each is a pass over the grid, and
 /// more than 64 lines cannot be told apart on a chart.
@@ -77,11 +80,16 @@ impl PerItem {
 //
 // | item                       | memory B | files B |
 // |----------------------------|----------|---------|
-// | jam map cell (fig3)        |       59 |      33 |
+// | jam map cell (fig3)        |       33 |      33 |
 // | contour map cell (fig7c)   |      168 |      46 |
 // | universal chart cell       |      127 |      44 |
 // | V-locator capacity cell    |      105 |      25 |
 // | sweep point (`sweep`)      |     1200 |      96 |
+//
+// A jam map cell was 59 B while its CSV was built in memory; streamed to its file, 33 B (800 ->
+// 1600 cells a side: 37.0 -> 99.4 MB peak RSS; 3200: see README). The other maps' peaks come
+// before their CSV is written (contour maps: 129.0 MB at 800^2 either way), so streaming left
+// them as they were.
 //
 // Where a sweep point's 1200 B go is not measured item by item: the points, the CSV, the SVG
 // path and the gallery's read-off (JSON values) are all held at once; a whole model solution
@@ -89,7 +97,7 @@ impl PerItem {
 // row is 9 f64 (72 B) held as a row, a drawn sample and a CSV line of about 90 B.
 
 /// A cell of a jam map (statics; the other models cost time, not memory).
-pub const JAM_MAP_CELL: PerItem = PerItem::new("cells of the jam map", 75, 41);
+pub const JAM_MAP_CELL: PerItem = PerItem::new("cells of the jam map", 42, 41);
 
 /// A cell of a contour map.
 pub const CONTOUR_MAP_CELL: PerItem = PerItem::new("cells of the contour map", 210, 58);

@@ -30,17 +30,60 @@ use crate::error::{Error, Result};
 use cleanup::Temp;
 
 /// One output: where and what.
-#[derive(Debug, Clone, Copy)]
+#[derive(Clone, Copy)]
 pub struct Output<'a> {
     /// The final path.
     pub path: &'a Path,
+    /// The content.
+    pub content: Content<'a>,
+}
+
+impl<'a> Output<'a> {
+    /// `bytes` to `path`.
+    pub fn bytes(path: &'a Path, bytes: &'a [u8]) -> Self {
+        Output {
+            path,
+            content: Content::Bytes(bytes),
+        }
+    }
+}
+
+/// What an output holds: its bytes, or a writer that makes them as it writes (a map's cells
+/// CSV, hundreds of MB at 10^7 cells, never held whole in memory; its temporary file is
+/// renamed into place with the rest of the set, as any other).
+#[derive(Clone, Copy)]
+pub enum Content<'a> {
     /// The whole content.
-    pub bytes: &'a [u8],
+    Bytes(&'a [u8]),
+    /// Writes the content into the writer it is given (buffered here).
+    Writer(&'a dyn Writes),
+}
+
+/// Content made as it is written (see [`Content::Writer`]).
+pub trait Writes: Sync {
+    /// Writes the whole content to `out`.
+    fn write_into(&self, out: &mut dyn Write) -> std::io::Result<()>;
+}
+
+impl Content<'_> {
+    /// Writes the content to `out` and flushes it.
+    fn write_to(&self, out: &mut dyn Write) -> std::io::Result<()> {
+        match self {
+            Content::Bytes(b) => out.write_all(b)?,
+            Content::Writer(w) => {
+                // 64 kiB: a few hundred rows of a CSV per write call.
+                let mut buffered = std::io::BufWriter::with_capacity(1 << 16, &mut *out);
+                w.write_into(&mut buffered)?;
+                buffered.flush()?;
+            }
+        }
+        out.flush()
+    }
 }
 
 /// Writes one file atomically (see the module doc): a set of one.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
-    write_all(&[Output { path, bytes }])
+    write_all(&[Output::bytes(path, bytes)])
 }
 
 /// Writes every output, or none of the regular files (see the module doc).
@@ -131,7 +174,8 @@ fn stage<'a>(outputs: &[Output<'a>]) -> Result<Staged<'a>> {
                 }
                 let (temp, mut f) =
                     Temp::create(o.path).map_err(|e| Error::io("write", o.path, e))?;
-                f.write_all(o.bytes)
+                o.content
+                    .write_to(&mut f)
                     .and_then(|_| f.sync_data())
                     .map_err(|e| Error::io("write", o.path, e))?;
                 files.push((temp, o.path));
@@ -139,20 +183,20 @@ fn stage<'a>(outputs: &[Output<'a>]) -> Result<Staged<'a>> {
         }
     }
     for o in streams {
-        write_stream(o.path, o.bytes)?;
+        write_stream(o.path, o.content)?;
     }
     Ok(Staged { files })
 }
 
 /// Writes through a FIFO, terminal or /dev/null (never creating or truncating anything).
-fn write_stream(path: &Path, bytes: &[u8]) -> Result<()> {
+fn write_stream(path: &Path, content: Content) -> Result<()> {
     use std::os::unix::fs::OpenOptionsExt;
     std::fs::File::options()
         .write(true)
         // Never become the controlling terminal of this process.
         .custom_flags(libc::O_NOCTTY)
         .open(path)
-        .and_then(|mut f| f.write_all(bytes).and_then(|_| f.flush()))
+        .and_then(|mut f| content.write_to(&mut f))
         .map_err(|e| Error::io("write", path, e))
 }
 

@@ -31,17 +31,7 @@ fn missing_directories_are_created_and_removed_again_on_failure() {
     let squat = dir.path().join("squat");
     std::fs::create_dir(&squat).unwrap();
     let a = dir.path().join("fresh/a.csv");
-    let err = write_all(&[
-        Output {
-            path: &a,
-            bytes: b"a",
-        },
-        Output {
-            path: &squat,
-            bytes: b"b",
-        },
-    ])
-    .unwrap_err();
+    let err = write_all(&[Output::bytes(&a, b"a"), Output::bytes(&squat, b"b")]).unwrap_err();
     assert!(err.to_string().contains("it is a directory"), "{err}");
     assert_eq!(names(dir.path()), ["new", "squat"]);
 }
@@ -54,10 +44,8 @@ fn a_failed_command_leaves_the_output_folder_as_it_found_it() {
     let dir = tempfile::tempdir().unwrap();
     let [a, b, c] = ["a.csv", "b.svg", "c.png"].map(|n| dir.path().join(n));
     std::fs::write(&a, "old a").unwrap();
-    let outputs = [(&a, b"new a"), (&b, b"new b"), (&c, b"new c")].map(|(path, bytes)| Output {
-        path,
-        bytes: bytes.as_slice(),
-    });
+    let outputs = [(&a, b"new a"), (&b, b"new b"), (&c, b"new c")]
+        .map(|(path, bytes)| Output::bytes(path, bytes.as_slice()));
     let staged = stage(&outputs).unwrap();
     // A directory squats b's name after the checks (as a disk filling up would fail there).
     std::fs::create_dir(&b).unwrap();
@@ -91,14 +79,8 @@ fn a_fifo_is_written_through_and_stays_a_fifo() {
     };
     let file = dir.path().join("f.csv");
     write_all(&[
-        Output {
-            path: &file,
-            bytes: b"file",
-        },
-        Output {
-            path: &fifo,
-            bytes: b"through the pipe",
-        },
+        Output::bytes(&file, b"file"),
+        Output::bytes(&fifo, b"through the pipe"),
     ])
     .unwrap();
     // Checked before the join: had the FIFO been replaced, the reader would stay blocked.

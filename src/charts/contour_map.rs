@@ -15,6 +15,7 @@ use serde_json::json;
 use super::axes::{self, DrawResult, PlotAxis};
 use super::collide::PxBox;
 use super::colorbar::ColorBar;
+use super::data::CellsTable;
 use super::labels;
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
@@ -152,7 +153,7 @@ impl super::kinds::Kind for ContourMapSpec {
         ContourMap::compute(scene, self, models)
     }
 
-    fn cells(chart: &ContourMap) -> Option<DataFile> {
+    fn cells(chart: &ContourMap) -> Option<CellsTable<'_>> {
         Some(chart.cells())
     }
 }
@@ -364,7 +365,7 @@ impl ContourMap {
 
     /// The cells as long-format CSV: the axis values, x_jam_mm and, where computed,
     /// theta_jam_deg and gap_to_x_rigid_pct.
-    pub fn cells(&self) -> DataFile {
+    pub fn cells(&self) -> CellsTable<'_> {
         let (x, y) = (self.spec.x_axis.param, self.spec.y_axis.param);
         cells_csv(&self.grid, x, y, &self.columns())
     }

@@ -1,6 +1,6 @@
 //! The data files written beside a chart: [`DataFile`], and a map's cells as long-format CSV.
 
-use crate::csv_out::{Column, cells_summary, grid_cells};
+use crate::csv_out::{Column, cells_summary, write_grid_cells};
 use crate::grid::GridParam;
 
 /// The data behind a chart: file extension and bytes.
@@ -35,14 +35,38 @@ impl DataFile {
 /// A map's two axes for its cells: (name with unit, values), x then y.
 pub type CellAxes<'a> = [(&'a str, &'a [f64]); 2];
 
-/// The cells of `grid` as long-format CSV: one row per cell (x fastest), the two axis values then
-/// each `(column, values)` (see [`crate::csv_out::grid_cells`]).
-pub fn cells_csv(
-    grid: &crate::grid::GridResult,
+/// A map's cells as they go into its long-format CSV: one row per cell (x fastest), the two
+/// axis values then each column (see [`crate::csv_out::write_grid_cells`]). Borrowed from the
+/// chart and written straight to the file: a map of 10^7 cells never holds its CSV in memory.
+#[derive(Debug, Clone)]
+pub struct CellsTable<'a> {
+    header: Vec<&'a str>,
+    xs: &'a [f64],
+    ys: &'a [f64],
+    columns: Vec<Column<'a>>,
+}
+
+impl CellsTable<'_> {
+    /// Writes the CSV to `out` as it is made.
+    pub fn write(&self, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+        write_grid_cells(out, &self.header, self.xs, self.ys, &self.columns)
+    }
+
+    /// The CSV in memory (tests, hashes).
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let mut out = Vec::new();
+        self.write(&mut out).expect("memory takes every byte");
+        out
+    }
+}
+
+/// The cells of `grid` as a [`CellsTable`], each `(column, values)` named as in its JSON.
+pub fn cells_csv<'a>(
+    grid: &'a crate::grid::GridResult,
     x: GridParam,
     y: GridParam,
-    columns: &[(&str, Column)],
-) -> DataFile {
+    columns: &[(&'a str, Column<'a>)],
+) -> CellsTable<'a> {
     axis_cells_csv(grid_axes(grid, x, y), columns)
 }
 
@@ -66,9 +90,14 @@ fn grid_axes(grid: &crate::grid::GridResult, x: GridParam, y: GridParam) -> Cell
 }
 
 /// [`cells_csv`] over any two named axes (a V-locator's parameters, say).
-pub fn axis_cells_csv(axes: CellAxes, columns: &[(&str, Column)]) -> DataFile {
-    let (header, values) = cells_columns(axes, columns);
-    DataFile::csv(grid_cells(&header, axes[0].1, axes[1].1, &values))
+pub fn axis_cells_csv<'a>(axes: CellAxes<'a>, columns: &[(&'a str, Column<'a>)]) -> CellsTable<'a> {
+    let (header, columns) = cells_columns(axes, columns);
+    CellsTable {
+        header,
+        xs: axes[0].1,
+        ys: axes[1].1,
+        columns,
+    }
 }
 
 /// [`cells_json`] over any two named axes.

@@ -14,6 +14,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::json;
 
 use super::axes::{self, Chart, DrawResult, Margins, PlotAxis, PlotFrame};
+use super::data::CellsTable;
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
 use super::readoff;
@@ -136,7 +137,7 @@ impl super::kinds::Kind for JamMapSpec {
         JamMap::compute(scene, self, models)
     }
 
-    fn cells(chart: &JamMap) -> Option<DataFile> {
+    fn cells(chart: &JamMap) -> Option<CellsTable<'_>> {
         chart.cells()
     }
 }
@@ -295,7 +296,7 @@ impl JamMap {
     }
 
     /// The cells of the margin grid as long-format CSV (None when the regions are not drawn).
-    pub fn cells(&self) -> Option<DataFile> {
+    pub fn cells(&self) -> Option<CellsTable<'_>> {
         let (g, columns) = self.columns()?;
         let (x, y) = (self.spec.x_axis.param, self.spec.y_axis.param);
         Some(cells_csv(g, x, y, &columns))

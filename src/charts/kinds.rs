@@ -73,7 +73,7 @@ pub(crate) trait Kind: Sized + DeserializeOwned + Serialize {
     const CELLS: bool = false;
 
     /// A map's cells as long-format CSV, beside its JSON (None by default).
-    fn cells(_chart: &Self::Chart) -> Option<DataFile> {
+    fn cells(_chart: &Self::Chart) -> Option<super::data::CellsTable<'_>> {
         None
     }
 }
@@ -203,7 +203,7 @@ macro_rules! chart_kinds {
 
             /// A map's cells as long-format CSV: the two parameters and each quantity per
             /// cell, units in the header; None for charts whose data is CSV already.
-            pub fn cells(&self) -> Option<DataFile> {
+            pub fn cells(&self) -> Option<super::data::CellsTable<'_>> {
                 match self {
                     $(Chart::$variant(c) => <$spec as Kind>::cells(c),)+
                 }

@@ -143,11 +143,46 @@ pub struct Rendered {
     pub pdf: Option<Vec<u8>>,
     /// The data behind the chart.
     pub data: DataFile,
-    /// A map's cells as long-format CSV (one row per cell), beside its JSON.
-    pub cells: Option<DataFile>,
+    /// A map's cells as long-format CSV (one row per cell), beside its JSON: written to its
+    /// file as it is made ([`Cells::write`]), never held whole in memory.
+    pub cells: Option<Cells>,
     /// What the gallery's read-off needs, as compact JSON (see `charts/readoff.rs`); None for kinds
     /// without a read-off.
     pub read_off: Option<String>,
+}
+
+/// A map's cells CSV, made from its computed chart when it is written.
+#[derive(Clone)]
+pub struct Cells(std::sync::Arc<Chart>);
+
+impl Cells {
+    /// The file extension.
+    pub const EXTENSION: &str = "csv";
+
+    /// Writes the CSV to `out` as it is made, a row buffer at a time (`csv_out::write_grid_cells`).
+    pub fn write(&self, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+        match self.0.cells() {
+            Some(table) => table.write(out),
+            None => Ok(()),
+        }
+    }
+
+    /// The whole CSV in memory.
+    pub fn to_bytes(&self) -> Vec<u8> {
+        self.0.cells().map(|t| t.to_bytes()).unwrap_or_default()
+    }
+}
+
+impl std::fmt::Debug for Cells {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Cells(..)")
+    }
+}
+
+impl PartialEq for Cells {
+    fn eq(&self, other: &Self) -> bool {
+        std::sync::Arc::ptr_eq(&self.0, &other.0) || self.to_bytes() == other.to_bytes()
+    }
 }
 
 impl Chart {
@@ -192,8 +227,9 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
         message: m,
     };
     let scale = scene.size.scale;
-    // The data (a map's cells CSV is megabytes) is built beside the pictures, not after them.
-    let ((svg, png), (data, cells)) = rayon::join(
+    // The data is built beside the pictures, not after them; a map's cells CSV (megabytes) is
+    // written to its file by whoever writes the files, as it is made.
+    let ((svg, png), data) = rayon::join(
         || {
             rayon::join(
                 || -> Result<Option<(Vec<u8>, Vec<axes::PlotFrame>)>> {
@@ -221,7 +257,7 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
                 },
             )
         },
-        || (chart.data(scene), chart.cells()),
+        || chart.data(scene),
     );
     let (svg, png) = (svg?, png?);
     let pdf = match &svg {
@@ -234,6 +270,8 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
     let read_off = chart
         .read_off(frames.unwrap_or_default())
         .map(|v| readoff::rounded(v).to_string());
+    let chart = std::sync::Arc::new(chart);
+    let cells = chart.cells().is_some().then(|| Cells(chart.clone()));
     Ok(Rendered {
         name: scene.name.clone(),
         svg: svg.map(|(b, _)| b),

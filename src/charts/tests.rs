@@ -517,7 +517,7 @@ fn jam_map_cells_beyond_the_palms_reach_are_their_own_class() {
     .collect();
     let scene = SceneSource::BuiltIn("fig3".into()).load(&set).unwrap();
     let chart = Chart::compute(&scene).unwrap();
-    let csv = String::from_utf8(chart.cells().unwrap().bytes).unwrap();
+    let csv = String::from_utf8(chart.cells().unwrap().to_bytes()).unwrap();
     let mut lines = csv.lines();
     assert_eq!(lines.next(), Some("mu,theta_deg,region,margin_n"));
     let reach = 2.0 * (10.0_f64 / 40.0).atan().to_degrees();

@@ -29,6 +29,7 @@ use super::axes::{self, DrawResult, PlotAxis};
 use super::collide::PxBox;
 use super::colorbar::ColorBar;
 use super::contour_map::{Paths, at_height, level_text, plot_to_value};
+use super::data::CellsTable;
 use super::legend::{self, LegendEntry, Swatch};
 use super::models::Models;
 use super::readoff;
@@ -134,7 +135,7 @@ impl super::kinds::Kind for UniversalSpec {
         Universal::compute(scene, self, models)
     }
 
-    fn cells(chart: &Universal) -> Option<DataFile> {
+    fn cells(chart: &Universal) -> Option<CellsTable<'_>> {
         Some(chart.cells())
     }
 }
@@ -351,7 +352,7 @@ impl Universal {
 
     /// The cells as long-format CSV: the friction, F / (m g), the status, theta_jam_deg and
     /// x_jam_over_r.
-    pub fn cells(&self) -> DataFile {
+    pub fn cells(&self) -> CellsTable<'_> {
         let (x, y) = (self.spec.x_axis.param, self.spec.y_axis.param);
         cells_csv(&self.grid, x, y, &self.columns())
     }

@@ -11,6 +11,7 @@ use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
 use super::colorbar::ColorBar;
+use super::data::CellsTable;
 use super::data::{CellAxes, axis_cells_csv, axis_cells_json};
 use super::legend::{self, LegendEntry, Swatch};
 use super::spec::Scene;
@@ -110,7 +111,7 @@ impl super::kinds::Kind for VlocatorCapacitySpec {
         VlocatorCapacity::compute(scene, self)
     }
 
-    fn cells(chart: &VlocatorCapacity) -> Option<DataFile> {
+    fn cells(chart: &VlocatorCapacity) -> Option<CellsTable<'_>> {
         Some(chart.cells())
     }
 }
@@ -217,7 +218,7 @@ impl VlocatorCapacity {
 
     /// The cells as long-format CSV: the two locator parameters and P_max / W (empty where
     /// every load is held).
-    pub fn cells(&self) -> DataFile {
+    pub fn cells(&self) -> CellsTable<'_> {
         axis_cells_csv(self.axes(), &self.columns())
     }
 

@@ -233,7 +233,7 @@ pub(crate) fn write_set(
         .iter()
         .zip(contents)
         .filter(|(path, _)| keep(path))
-        .map(|(path, bytes)| Output { path, bytes })
+        .map(|(path, bytes)| Output::bytes(path, bytes))
         .collect();
     write_all(&set)
 }

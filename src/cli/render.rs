@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use clap::{Args, ValueEnum};
 use rayon::prelude::*;
 
-use crate::atomic::{Output, check_all, write_all};
+use crate::atomic::{Content, Output, Writes, check_all, write_all};
 use crate::charts::overrides::Setting;
 use crate::charts::{self, Formats, Rendered, Scene, SceneSource};
 use crate::error::{Error, Result};
@@ -240,20 +240,27 @@ fn shell_word(w: &str) -> String {
     }
 }
 
-fn files_of<'a>(out: &Path, r: &'a Rendered) -> Vec<(PathBuf, &'a [u8])> {
-    let cells = r.cells.as_ref();
+/// A map's cells CSV is written to its file as it is made.
+impl Writes for charts::Cells {
+    fn write_into(&self, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+        self.write(out)
+    }
+}
+
+fn files_of<'a>(out: &Path, r: &'a Rendered) -> Vec<(PathBuf, Content<'a>)> {
+    let bytes = |b: Option<&'a Vec<u8>>| b.map(|b| Content::Bytes(b));
     let all = [
-        (r.data.extension, Some(&r.data.bytes)),
+        (r.data.extension, bytes(Some(&r.data.bytes))),
         (
-            cells.map_or("csv", |c| c.extension),
-            cells.map(|c| &c.bytes),
+            charts::Cells::EXTENSION,
+            r.cells.as_ref().map(|c| Content::Writer(c)),
         ),
-        ("svg", r.svg.as_ref()),
-        ("png", r.png.as_ref()),
-        ("pdf", r.pdf.as_ref()),
+        ("svg", bytes(r.svg.as_ref())),
+        ("png", bytes(r.png.as_ref())),
+        ("pdf", bytes(r.pdf.as_ref())),
     ];
     all.into_iter()
-        .filter_map(|(ext, b)| Some((out.join(format!("{}.{ext}", r.name)), b?.as_slice())))
+        .filter_map(|(ext, c)| Some((out.join(format!("{}.{ext}", r.name)), c?)))
         .collect()
 }
 
@@ -264,12 +271,16 @@ pub fn write_rendered(
     rendered: &[Rendered],
     extra: &[(PathBuf, &[u8])],
 ) -> Result<Vec<Vec<PathBuf>>> {
-    let per_scene: Vec<Vec<(PathBuf, &[u8])>> = rendered.iter().map(|r| files_of(out, r)).collect();
+    let per_scene: Vec<Vec<(PathBuf, Content)>> =
+        rendered.iter().map(|r| files_of(out, r)).collect();
     let set: Vec<Output> = per_scene
         .iter()
         .flatten()
-        .chain(extra)
-        .map(|(path, bytes)| Output { path, bytes })
+        .map(|(path, content)| Output {
+            path,
+            content: *content,
+        })
+        .chain(extra.iter().map(|(path, bytes)| Output::bytes(path, bytes)))
         .collect();
     write_all(&set)?;
     Ok(per_scene

@@ -64,7 +64,7 @@ pub fn man(a: &ManArgs) -> Result<String> {
     let set: Vec<Output> = paths
         .iter()
         .zip(&pages)
-        .map(|(path, (_, roff))| Output { path, bytes: roff })
+        .map(|(path, (_, roff))| Output::bytes(path, roff))
         .collect();
     write_all(&set)?;
     Ok(paths.iter().map(|p| format!("{}\n", p.display())).collect())

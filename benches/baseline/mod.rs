@@ -1,0 +1,74 @@
+//! The Python baseline the benches time beside jamchart (issue 21: "benchmarks that compare
+//! print the baseline they measured in the same run, or no ratio").
+//!
+//! The scripts beside this file (`fig3.py`: the paper's Fig. 3 in numpy + matplotlib;
+//! `vlocator.py`: the V-locator's closed-form capacity map in numpy) run in a virtual
+//! environment under the target folder, made on first use by `python3 -m venv` and
+//! `pip install -r requirements.txt` (pinned versions from PyPI) and remade when the
+//! requirements change. Where that cannot be done, [`python`] says why and the bench prints
+//! `no baseline: <why>` and no ratio.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// This folder: the scripts and requirements.txt.
+pub fn dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("benches/baseline")
+}
+
+/// The interpreter of the baseline's virtual environment, made (or remade, when
+/// requirements.txt changed) first; Err says why there is none.
+pub fn python() -> Result<PathBuf, String> {
+    let target = std::env::var_os("CARGO_TARGET_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("target"));
+    let venv = target.join("baseline-venv");
+    let python = venv.join("bin/python");
+    let requirements = dir().join("requirements.txt");
+    let wanted = std::fs::read_to_string(&requirements)
+        .map_err(|e| format!("cannot read {}: {e}", requirements.display()))?;
+    // The requirements the environment was made from: a copy written after pip succeeded.
+    let stamp = venv.join("jamchart-requirements.txt");
+    if python.is_file() && std::fs::read_to_string(&stamp).ok().as_deref() == Some(&wanted) {
+        return Ok(python);
+    }
+    eprintln!(
+        "installing the Python baseline ({}) into {} ...",
+        requirements.display(),
+        venv.display()
+    );
+    run(Command::new("python3")
+        .args(["-m", "venv", "--clear"])
+        .arg(&venv))?;
+    run(Command::new(&python)
+        .args([
+            "-m",
+            "pip",
+            "install",
+            "--quiet",
+            "--disable-pip-version-check",
+            "-r",
+        ])
+        .arg(&requirements))?;
+    std::fs::write(&stamp, &wanted)
+        .map_err(|e| format!("cannot write {}: {e}", stamp.display()))?;
+    Ok(python)
+}
+
+/// Runs `cmd`; Err names the command and what it printed when it fails or cannot start.
+fn run(cmd: &mut Command) -> Result<(), String> {
+    let shown = format!("{cmd:?}");
+    let out = cmd
+        .output()
+        .map_err(|e| format!("{shown} did not start: {e}"))?;
+    if out.status.success() {
+        return Ok(());
+    }
+    let err = String::from_utf8_lossy(&out.stderr);
+    let last = err
+        .lines()
+        .rev()
+        .find(|l| !l.trim().is_empty())
+        .unwrap_or("");
+    Err(format!("{shown} failed ({}): {last}", out.status))
+}
