@@ -19,6 +19,7 @@ use common::median_s;
 use jamchart::dynamics::{Drive, DynamicsParams, Method};
 use jamchart::grid::{Grid, GridAxis, GridParam};
 use jamchart::minnorm::MinNormSettings;
+use jamchart::models::Detail;
 use jamchart::{JamStatus, ModelSpec, SceneParams};
 
 /// The design map sampled at `k` x `k` cells.
@@ -109,13 +110,26 @@ fn main() {
                 )
             })
             .count();
+        // The min-norm rows: programs solved per cell (the search's cost, which the load does
+        // not disturb).
+        let programs: u32 = cells
+            .iter()
+            .map(|s| match &s.detail {
+                Detail::MinNorm(m) => m.solves,
+                _ => 0,
+            })
+            .sum();
+        let programs = match programs {
+            0 => String::new(),
+            n => format!(", {:.2} programs a cell", n as f64 / cells.len() as f64),
+        };
         let all = median_s(3, run);
         let single = one.install(|| median_s(3, run));
         let scale = (n * n) as f64 / (k * k) as f64;
         println!(
             "  {label}: {n} x {n} about {:.2} s on {threads} threads, {:.2} s on 1 thread \
              (extrapolated from {k} x {k}: {:.3} s / {:.3} s, {:.0} us per cell on 1 thread; \
-             {stops} of {} cells jam or are held at the start, {untrusted} untrusted)",
+             {stops} of {} cells jam or are held at the start, {untrusted} untrusted{programs})",
             all * scale,
             single * scale,
             all,

@@ -2,8 +2,10 @@
 //!
 //! The map is mu (both contacts, linear 0.1 ... 0.8) by the push F (log 20 ... 2000 N), the
 //! design map of Fig. 7c's kind, `cells_per_axis` squared cells (default 400 x 400). Each model
-//! answers it through the grid ([`crate::grid::Grid::map`], in parallel on every rayon thread)
-//! at its own sampling: the statics fill the whole map; a model too slow for that answers a
+//! answers it through the grid ([`crate::grid::Grid::map`], in parallel on every rayon thread;
+//! the min-norm model a column at a time, [`crate::grid::Grid::map_columns`] with
+//! [`models::solve_column`], each search started from its neighbours' answers) at its own
+//! sampling: the statics fill the whole map; a model too slow for that answers a
 //! coarser map over the same ranges, and the full map's time is extrapolated from the time per
 //! cell (the row says so). The simulation uses the `force` drive (a map over F asks what a push
 //! of F does); its reference is the converged rigid dynamics of each cell (the nonsmooth method
