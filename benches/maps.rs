@@ -5,7 +5,9 @@
 //!
 //! `cargo bench --bench maps`. Each model answers a coarser map over the same ranges (sampled
 //! cells per axis in the line) and the full map's time is extrapolated from the time per cell,
-//! as `accuracy --map` does; the line says so. Median of 3 runs. Goals (issue 21): min-norm
+//! as `accuracy --map` does; the line says so. The min-norm map by columns is timed whole
+//! (400 x 400), cell by cell at 40 x 40 for comparison. Each line also counts the cells that
+//! jam and those without a trusted answer. Median of 3 runs. Goals (issue 21): min-norm
 //! 400 x 400 and the nonsmooth 100 x 100 (either drive) under 2 s on 2 cores; the regularised
 //! simulation's cost printed beside them.
 //!
@@ -17,7 +19,8 @@ use common::median_s;
 use jamchart::dynamics::{Drive, DynamicsParams, Method};
 use jamchart::grid::{Grid, GridAxis, GridParam};
 use jamchart::minnorm::MinNormSettings;
-use jamchart::{ModelSpec, SceneParams};
+use jamchart::models::Detail;
+use jamchart::{JamStatus, ModelSpec, SceneParams};
 
 /// The design map sampled at `k` x `k` cells.
 fn map(k: usize) -> Grid<SceneParams> {
@@ -52,8 +55,9 @@ fn main() {
             400,
             false,
         ),
-        // Each bisection bracketed from the column's previous jams (`solve_column`); the
-        // sampled map is the full one, as a coarser column's neighbours are further apart.
+        // Each cell's search started from the column's previous jams (`solve_column`: Newton
+        // on the friction utilisation, about 3 programs a cell); the sampled map is the full
+        // one, as a coarser column's neighbours are further apart.
         (
             "min-norm (exact path, by columns)".to_string(),
             min_norm,
@@ -62,7 +66,7 @@ fn main() {
             true,
         ),
     ];
-    for (method, k) in [(Method::Nonsmooth, 25), (Method::Radau5, 10)] {
+    for (method, k) in [(Method::Nonsmooth, 25), (Method::Radau5, 25)] {
         for drive in [Drive::Motion, Drive::Force] {
             let label = format!("{method}, {drive} drive");
             rows.push((label, dynamics(method, drive), k, 100, false));
@@ -84,17 +88,54 @@ fn main() {
             };
             std::hint::black_box(cells.expect("every cell answers"));
         };
+        // What the time buys: how many cells jam (or are held at the start), and how many
+        // the model could not answer with a trusted jam point.
+        let cells = if by_columns {
+            grid.map_columns(|column| jamchart::solve_column(&spec, column))
+        } else {
+            grid.map(|p| jamchart::solve(&spec, p))
+        }
+        .expect("every cell answers")
+        .values;
+        let stops = cells
+            .iter()
+            .filter(|s| matches!(s.status, JamStatus::Jams | JamStatus::JammedAtStart))
+            .count();
+        let untrusted = cells
+            .iter()
+            .filter(|s| {
+                matches!(
+                    s.status,
+                    JamStatus::Inaccurate | JamStatus::IntegratorFailed | JamStatus::OutsideModel
+                )
+            })
+            .count();
+        // The min-norm rows: programs solved per cell (the search's cost, which the load does
+        // not disturb).
+        let programs: u32 = cells
+            .iter()
+            .map(|s| match &s.detail {
+                Detail::MinNorm(m) => m.solves,
+                _ => 0,
+            })
+            .sum();
+        let programs = match programs {
+            0 => String::new(),
+            n => format!(", {:.2} programs a cell", n as f64 / cells.len() as f64),
+        };
         let all = median_s(3, run);
         let single = one.install(|| median_s(3, run));
         let scale = (n * n) as f64 / (k * k) as f64;
         println!(
             "  {label}: {n} x {n} about {:.2} s on {threads} threads, {:.2} s on 1 thread \
-             (extrapolated from {k} x {k}: {:.3} s / {:.3} s, {:.0} us per cell on 1 thread)",
+             (extrapolated from {k} x {k}: {:.3} s / {:.3} s, {:.0} us per cell on 1 thread; \
+             {stops} of {} cells jam or are held at the start, {untrusted} untrusted{programs})",
             all * scale,
             single * scale,
             all,
             single,
             single / (k * k) as f64 * 1e6,
+            k * k,
         );
     }
 }

@@ -273,8 +273,9 @@ pub fn solve(spec: &ModelSpec, scene: &SceneParams) -> Result<Solution> {
 
 /// Solves `scenes` in order with the model of `spec`: a line of a map (one parameter fixed).
 ///
-/// The min-norm model brackets each cell's bisection from its neighbours' answers
-/// ([`crate::minnorm::solve_column`]; each jam within the bisection's tolerance of [`solve`]'s);
+/// The min-norm model starts each cell's search from its neighbours' answers
+/// ([`crate::minnorm::solve_column`]: Newton on the friction utilisation, about three programs a
+/// cell; each jam within the bisection's tolerance of [`solve`]'s, every status the same);
 /// the other models solve cell by cell. A min-norm cell's [`Solution::elapsed_s`] is the
 /// column's time over its cells.
 pub fn solve_column(spec: &ModelSpec, scenes: &[SceneParams]) -> Result<Vec<Solution>> {

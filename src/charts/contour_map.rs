@@ -29,9 +29,7 @@ use super::{
 };
 use crate::csv_out::{Column, Num, nums};
 use crate::error::{Error, Result};
-use crate::grid::{
-    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, Quantity,
-};
+use crate::grid::{AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, Quantity};
 use crate::models::ModelKind;
 use crate::scene::JamStatus;
 use crate::scene::SceneParams;
@@ -241,9 +239,7 @@ impl ContourMap {
     /// Evaluates the grid quantities the layers need.
     pub fn compute(scene: &Scene, spec: &ContourMapSpec, models: &dyn Models) -> Result<Self> {
         let model = spec.model.with(&scene.min_norm, &scene.dynamics);
-        let grid = grid::evaluate(&spec.request(&scene.params), |q| {
-            models.jam_point(&model, q)
-        })?;
+        let grid = super::models::evaluate(models, &model, &spec.request(&scene.params))?;
         let gap_pct: Option<Vec<f64>> = match (&grid.x_jam_mm, &grid.x_rigid_mm) {
             (Some(x), Some(r)) => Some(
                 x.iter()

@@ -26,9 +26,7 @@ use super::{
 };
 use crate::csv_out::{Column, Num};
 use crate::error::{Error, Result};
-use crate::grid::{
-    self, AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, Quantity,
-};
+use crate::grid::{AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, Quantity};
 use crate::models::ModelKind;
 use crate::scene::{SceneParams, disc_position_mm, palm_angle_at};
 
@@ -194,17 +192,15 @@ impl JamMap {
         let p = scene.params;
         let model = spec.model.with(&scene.min_norm, &scene.dynamics);
         let jam_point = |q: &SceneParams| models.jam_point(&model, q);
+        let evaluate = |q: &SceneParams| super::models::evaluate(models, &model, &spec.request(q));
         let grid = match spec.has(JamMapLayer::Regions) {
-            true => Some(grid::evaluate(&spec.request(&p), jam_point)?),
+            true => Some(evaluate(&p)?),
             false => None,
         };
         // With a band, the margins at its two corners: the disc is held at every value of the
         // box where the smaller is >= 0, at some where the larger is.
         let corners = match (&spec.band, &grid) {
-            (Some(b), Some(_)) => Some((
-                grid::evaluate(&spec.request(&b.earliest), jam_point)?,
-                grid::evaluate(&spec.request(&b.latest), jam_point)?,
-            )),
+            (Some(b), Some(_)) => Some((evaluate(&b.earliest)?, evaluate(&b.latest)?)),
             _ => None,
         };
         let end_lines = match &corners {
@@ -250,7 +246,7 @@ impl JamMap {
         let boundary = match spec.has(JamMapLayer::Boundary) {
             true => {
                 let xs = spec.x_axis.values();
-                let points = grid::at_values(&p, param, &xs, jam_point)?;
+                let points = super::models::along(models, &model, &p, param, &xs)?;
                 xs.into_iter().zip(points).collect()
             }
             false => Vec::new(),

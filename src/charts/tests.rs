@@ -212,6 +212,14 @@ impl Models for Counting {
         }
         Live.solve(spec, p)
     }
+    fn min_norm_column(
+        &self,
+        spec: &ModelSpec,
+        scenes: &[SceneParams],
+    ) -> Result<Vec<crate::grid::JamPoint>> {
+        self.min_norm.fetch_add(scenes.len(), Ordering::Relaxed);
+        Live.min_norm_column(spec, scenes)
+    }
     fn min_norm_trace(
         &self,
         p: &SceneParams,

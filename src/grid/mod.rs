@@ -349,12 +349,38 @@ pub fn evaluate(
     req: &GridRequest,
     jam_point: impl Fn(&SceneParams) -> Result<JamPoint> + Sync,
 ) -> Result<GridResult> {
+    evaluate_with(req, JamPoints::Cells(&jam_point))
+}
+
+/// [`evaluate`] with the jam points answered a column at a time (x fixed, y ascending, columns
+/// in parallel): `jam_column` answers one column's scenes in order, so a model may carry each
+/// cell's answer to the next (the min-norm model: [`models::solve_column`]). Bit-identical for
+/// any rayon thread count, as a column is one call.
+pub fn evaluate_columns(
+    req: &GridRequest,
+    jam_column: impl Fn(&[SceneParams]) -> Result<Vec<JamPoint>> + Sync,
+) -> Result<GridResult> {
+    evaluate_with(req, JamPoints::Columns(&jam_column))
+}
+
+/// How a grid's jam points are answered: cell by cell or a column at a time.
+enum JamPoints<'a> {
+    Cells(&'a (dyn Fn(&SceneParams) -> Result<JamPoint> + Sync)),
+    Columns(&'a (dyn Fn(&[SceneParams]) -> Result<Vec<JamPoint>> + Sync)),
+}
+
+fn evaluate_with(req: &GridRequest, jam: JamPoints) -> Result<GridResult> {
     req.validate()?;
     let grid = req.grid();
     let wants = |q| req.quantities.contains(&q);
     let jam_wanted =
         wants(Quantity::Status) || wants(Quantity::ThetaJamDeg) || wants(Quantity::XJamMm);
-    let points = jam_wanted.then(|| grid.map(&jam_point)).transpose()?;
+    let points = jam_wanted
+        .then(|| match jam {
+            JamPoints::Cells(f) => grid.map(f),
+            JamPoints::Columns(f) => grid.map_columns(f),
+        })
+        .transpose()?;
     let x_rigid_mm = wants(Quantity::XRigidMm)
         .then(|| grid.map(|p| Ok(rigid_point(p)?.and_then(|(_, x)| x))))
         .transpose()?

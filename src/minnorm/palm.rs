@@ -198,20 +198,63 @@ impl std::fmt::Display for MinNormCheck {
 /// closed form stays within 1e-6 relative for any mu > 0.
 pub(crate) const RELATIVE_RESOLUTION: f64 = 1e-8;
 
-struct Search<'a> {
-    p: &'a SceneParams,
-    s: &'a MinNormSettings,
+/// A search for theta_jam: the scene, the settings, the answer so far and the held angles met.
+pub(super) struct Search<'a> {
+    pub(super) p: &'a SceneParams,
+    pub(super) s: &'a MinNormSettings,
     out: PalmSolution,
+    /// The last two held angles solved and their friction utilisation.
+    pub(super) trail: HeldTrail,
+}
+
+/// The last two held angles of a search, latest first, each with the largest friction
+/// utilisation |f_t| / (mu f_n) of its contacts: the palm scene is held up to theta_jam, where
+/// a cone binds (utilisation 1, module docs), so the two give a secant estimate of theta_jam
+/// that a column's next cell starts from ([`super::column`]).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(super) struct HeldTrail {
+    pub(super) points: [Option<(f64, f64)>; 2],
+}
+
+impl HeldTrail {
+    /// The largest friction utilisation of a held solution.
+    pub(super) fn utilisation(sol: &ContactSolution) -> f64 {
+        sol.forces.iter().map(|f| f.utilisation).fold(0.0, f64::max)
+    }
+
+    fn push(&mut self, theta: f64, utilisation: f64) {
+        self.points = [Some((theta, utilisation)), self.points[0]];
+    }
+
+    /// d(utilisation)/d(theta) in 1/rad by the secant of the two points; None unless positive
+    /// and finite (utilisation grows towards the jam).
+    pub(super) fn slope(&self) -> Option<f64> {
+        let [Some((t1, u1)), Some((t0, u0))] = self.points else {
+            return None;
+        };
+        let slope = (u1 - u0) / (t1 - t0);
+        (slope.is_finite() && slope > 0.0).then_some(slope)
+    }
+
+    /// Where the utilisation reaches 1 by the secant through the latest point, in rad.
+    pub(super) fn root(&self, slope: f64) -> Option<f64> {
+        let (t, u) = self.points[0]?;
+        let root = t + (1.0 - u) / slope;
+        root.is_finite().then_some(root)
+    }
 }
 
 impl Search<'_> {
-    fn eval(&mut self, theta: f64) -> Result<Option<ContactSolution>> {
+    pub(super) fn eval(&mut self, theta: f64) -> Result<Option<ContactSolution>> {
         let sol = qp::solve(&palm_problem(self.p, theta, self.s.formulation), &self.s.qp)?;
         self.out.solves += 1;
         self.out.iterations += sol.iterations;
         self.out.backend = sol.backend;
         match sol.status {
-            HoldStatus::Held => Ok(Some(sol)),
+            HoldStatus::Held => {
+                self.trail.push(theta, HeldTrail::utilisation(&sol));
+                Ok(Some(sol))
+            }
             HoldStatus::NotHeld => Ok(None),
             HoldStatus::Undetermined => {
                 self.out.undetermined_solves += 1;
@@ -220,7 +263,12 @@ impl Search<'_> {
         }
     }
 
-    fn jam_at(mut self, status: JamStatus, theta: f64, sol: ContactSolution) -> PalmSolution {
+    pub(super) fn jam_at(
+        &mut self,
+        status: JamStatus,
+        theta: f64,
+        sol: ContactSolution,
+    ) -> PalmSolution {
         self.out.status = status;
         self.out.theta_jam_deg = Some(theta.to_degrees());
         let x = self.p.disc_position_mm(theta);
@@ -242,7 +290,7 @@ impl Search<'_> {
             self.out.status = JamStatus::Inaccurate;
         }
         self.out.at_jam = Some(sol);
-        self.out
+        self.out.clone()
     }
 }
 
@@ -283,28 +331,42 @@ pub(crate) fn solve_near(
 ) -> Result<PalmSolution> {
     p.validate()?;
     s.validate()?;
-    let mut search = Search {
-        p,
-        s,
-        out: PalmSolution {
-            status: JamStatus::NeverJams,
-            theta_jam_deg: None,
-            x_jam_mm: None,
-            formulation: s.formulation,
-            solves: 0,
-            iterations: 0,
-            undetermined_solves: 0,
-            backend: Backend::Clarabel,
-            at_jam: None,
-            cross_check: None,
-        },
-    };
+    solve_from(&mut Search::new(p, s), guess)
+}
+
+impl<'a> Search<'a> {
+    /// A search that has solved nothing yet; `p` and `s` are taken as valid.
+    pub(super) fn new(p: &'a SceneParams, s: &'a MinNormSettings) -> Self {
+        Search {
+            p,
+            s,
+            trail: HeldTrail::default(),
+            out: PalmSolution {
+                status: JamStatus::NeverJams,
+                theta_jam_deg: None,
+                x_jam_mm: None,
+                formulation: s.formulation,
+                solves: 0,
+                iterations: 0,
+                undetermined_solves: 0,
+                backend: Backend::Clarabel,
+                at_jam: None,
+                cross_check: None,
+            },
+        }
+    }
+}
+
+/// [`solve_near`] on a search that may have solved some angles already (they count).
+pub(super) fn solve_from(search: &mut Search, guess: Option<JamGuess>) -> Result<PalmSolution> {
+    let p = search.p;
+    let s = search.s;
     let start = p.start_angle_deg.to_radians();
     let reach = p.reach_angle();
     // A disc that starts beyond the palm's end is never touched.
     if start < reach {
         search.out.status = JamStatus::BeyondReach;
-        return Ok(search.out);
+        return Ok(search.out.clone());
     }
     if let Some(g) = guess
         && let Some((lo, hi, held)) = search.bracket(g, reach, start)?
@@ -323,7 +385,7 @@ pub(crate) fn solve_near(
             && search.eval(best)?.is_some()
         {
             search.out.status = JamStatus::TooWeak;
-            return Ok(search.out);
+            return Ok(search.out.clone());
         }
         return Ok(search.jam_at(JamStatus::JammedAtStart, start, sol));
     }
@@ -339,7 +401,7 @@ pub(crate) fn solve_near(
     if s.formulation.can_jam(p) {
         search.out.status = JamStatus::BeyondReach;
     }
-    Ok(search.out)
+    Ok(search.out.clone())
 }
 
 impl Search<'_> {
@@ -389,8 +451,8 @@ impl Search<'_> {
     /// Bisects [lo, hi] (held at `lo`, with solution `held`; not held at `hi`) to
     /// `bisection_tol_rad`, relative below 0.1 rad so that a jam at 1e-9 rad is still found to
     /// 1e-6 of itself (above it the absolute tolerance governs: every chart's jam angle is).
-    fn bisect(
-        mut self,
+    pub(super) fn bisect(
+        &mut self,
         mut lo: f64,
         mut hi: f64,
         mut held: ContactSolution,

@@ -2,8 +2,10 @@
 //!
 //! The map is mu (both contacts, linear 0.1 ... 0.8) by the push F (log 20 ... 2000 N), the
 //! design map of Fig. 7c's kind, `cells_per_axis` squared cells (default 400 x 400). Each model
-//! answers it through the grid ([`crate::grid::Grid::map`], in parallel on every rayon thread)
-//! at its own sampling: the statics fill the whole map; a model too slow for that answers a
+//! answers it through the grid ([`crate::grid::Grid::map`], in parallel on every rayon thread;
+//! the min-norm model a column at a time, [`crate::grid::Grid::map_columns`] with
+//! [`models::solve_column`], each search started from its neighbours' answers) at its own
+//! sampling: the statics fill the whole map; a model too slow for that answers a
 //! coarser map over the same ranges, and the full map's time is extrapolated from the time per
 //! cell (the row says so). The simulation uses the `force` drive (a map over F asks what a push
 //! of F does); its reference is the converged rigid dynamics of each cell (the nonsmooth method
@@ -177,7 +179,15 @@ pub fn run(base: &Config, settings: &MapCostSettings) -> Result<MapCostReport> {
         }
         let refs = disc.and_then(|d| rigid.iter().find(|(key, _)| *key == (k, d)));
         let t0 = std::time::Instant::now();
-        let cells = grid.map(|p| models::solve(&spec, p).map(|s| (s, *p)))?;
+        // The min-norm model a column at a time: each search starts from its neighbours'
+        // answers ([`models::solve_column`]).
+        let cells = match spec {
+            models::ModelSpec::MinNorm(_) => grid.map_columns(|c| {
+                let answers = models::solve_column(&spec, c)?;
+                Ok(answers.into_iter().zip(c.iter().copied()).collect())
+            })?,
+            _ => grid.map(|p| models::solve(&spec, p).map(|s| (s, *p)))?,
+        };
         let measured = t0.elapsed().as_secs_f64();
         let mut max_err: Option<f64> = None;
         let (mut mismatches, mut untrusted) = (0, 0);
