@@ -297,16 +297,22 @@ fn render_scenes(scenes: &[Scene], formats: Formats, quiet: Quiet) -> Result<Vec
         scenes.len() as u64,
         "render {bar:30} {pos}/{len} scenes",
     );
-    let rendered: Vec<Result<Rendered>> = scenes
-        .par_iter()
-        .map(|s| {
-            let r = charts::render(s, formats);
+    // The stability matrix's slowest simulations are the longest single jobs of a render: begun
+    // first, they no longer finish alone after the rest (render of every built-in scene, 2
+    // threads: 0.79 -> 0.77 s wall). The answers keep the scenes' order.
+    let mut order: Vec<usize> = (0..scenes.len()).collect();
+    order.sort_by_key(|&i| !matches!(scenes[i].chart, charts::ChartSpec::Stability(_)));
+    let mut rendered: Vec<(usize, Result<Rendered>)> = order
+        .into_par_iter()
+        .map(|i| {
+            let r = charts::render(&scenes[i], formats);
             bar.inc(1);
-            r
+            (i, r)
         })
         .collect();
     bar.finish_and_clear();
-    rendered.into_iter().collect()
+    rendered.sort_by_key(|(i, _)| *i);
+    rendered.into_iter().map(|(_, r)| r).collect()
 }
 
 pub fn run(a: &RenderArgs) -> Result<Done> {

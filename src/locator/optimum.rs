@@ -109,10 +109,15 @@ pub fn rho_hold(p: &LocatorParams) -> f64 {
     // 80 halvings of the log bracket: far below one ulp of rho.
     for _ in 0..80 {
         let mid = (lo * hi).sqrt();
+        // Once the bracket is two neighbouring floats every later halving repeats this one.
+        let last = mid == lo || mid == hi;
         if held(mid) {
             lo = mid;
         } else {
             hi = mid;
+        }
+        if last {
+            break;
         }
     }
     lo
@@ -163,10 +168,15 @@ pub fn optimum(p: &LocatorParams) -> Optimum {
     // 60 halvings of at most 178 deg: below 1e-15 deg.
     for _ in 0..60 {
         let mid = 0.5 * (a + b);
+        // Once the bracket is two neighbouring floats every later halving repeats this one.
+        let last = mid == a || mid == b;
         if wider(mid) {
             a = mid;
         } else {
             b = mid;
+        }
+        if last {
+            break;
         }
     }
     done(a, false)

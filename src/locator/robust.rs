@@ -157,32 +157,74 @@ pub fn holds_sector(
     load_n: (f64, f64),
     angle_deg: (f64, f64),
 ) -> Result<(), DroppedLoad> {
-    // The V is the same for every load: its frame and cone once (exact::PreparedV).
-    let prepared = exact::PreparedV::new(v);
-    let at = |p: f64, phi: f64| {
-        prepared.held_at(p, phi).map_err(|mode| DroppedLoad {
-            load_n: p,
-            load_angle_deg: phi,
-            mode,
-        })
-    };
-    let (a, b) = angle_deg;
-    let span = b - a;
-    let n = (span / ARC_STEP_DEG).ceil().max(1.0) as usize;
-    let d = span / n as f64;
-    // The tangents' crossing between two arc points d apart.
-    let apex = load_n.1 / (0.5 * d.to_radians()).cos();
-    at(load_n.0, a)?;
-    at(load_n.0, b)?;
-    at(load_n.1, a)?;
-    for k in 1..=n {
-        let phi = if k == n { b } else { a + k as f64 * d };
-        at(load_n.1, phi)?;
-        if span > 0.0 {
-            at(apex, phi - 0.5 * d)?;
+    Sector::new(v, angle_deg).held_by(v, load_n)
+}
+
+/// The load directions a sector is tested at (item 3 of the module docs) and their support
+/// lines, made once for every V of one weight and load point: [`rho_hold_box`] tests the same
+/// directions some 60 times per V, and making each direction's line (a sin and cos) was most
+/// of the `vlocator-robust` and `vlocator-optimum` charts' time.
+struct Sector {
+    /// The arc's step between two test directions, deg.
+    step_deg: f64,
+    /// (direction in deg, its line, which load magnitude is tested there), in test order.
+    tests: Vec<(f64, exact::LoadLine, Magnitude)>,
+}
+
+/// Which load of a sector [p_lo, p_hi] is tested in one direction.
+#[derive(Clone, Copy)]
+enum Magnitude {
+    /// p_lo, at the arc's ends.
+    Low,
+    /// p_hi, along the arc.
+    High,
+    /// Where the tangents at two arc points d apart cross: p_hi / cos(d / 2).
+    Apex,
+}
+
+impl Sector {
+    /// The directions of the sector `angle_deg` for Vs of `v`'s weight and load point.
+    fn new(v: &LocatorParams, (a, b): (f64, f64)) -> Self {
+        let span = b - a;
+        let n = (span / ARC_STEP_DEG).ceil().max(1.0) as usize;
+        let d = span / n as f64;
+        let mut tests = Vec::with_capacity(2 * n + 3);
+        let mut test = |phi: f64, m: Magnitude| {
+            tests.push((phi, exact::LoadLine::at(v, phi), m));
+        };
+        test(a, Magnitude::Low);
+        test(b, Magnitude::Low);
+        test(a, Magnitude::High);
+        for k in 1..=n {
+            let phi = if k == n { b } else { a + k as f64 * d };
+            test(phi, Magnitude::High);
+            if span > 0.0 {
+                test(phi - 0.5 * d, Magnitude::Apex);
+            }
         }
+        Sector { step_deg: d, tests }
     }
-    Ok(())
+
+    /// The V `v` (same weight and load point as the sector's, its frictions set by the caller)
+    /// holds every load of [p_lo, p_hi] in the sector's directions, or the first it drops.
+    fn held_by(&self, v: &LocatorParams, (p_lo, p_hi): (f64, f64)) -> Result<(), DroppedLoad> {
+        // The V is the same for every load: its frame and cone once (exact::PreparedV).
+        let prepared = exact::PreparedV::new(v);
+        let apex = p_hi / (0.5 * self.step_deg.to_radians()).cos();
+        for (phi, line, m) in &self.tests {
+            let p = match m {
+                Magnitude::Low => p_lo,
+                Magnitude::High => p_hi,
+                Magnitude::Apex => apex,
+            };
+            prepared.held_on(line, p).map_err(|mode| DroppedLoad {
+                load_n: p,
+                load_angle_deg: *phi,
+                mode,
+            })?;
+        }
+        Ok(())
+    }
 }
 
 /// What one V does over a whole box.
@@ -228,10 +270,15 @@ fn works(base: &LocatorParams, b: &RobustBox, gamma_deg: f64) -> Result<(), Opti
 fn bisect(mut lo: f64, mut hi: f64, left: impl Fn(f64) -> bool) -> (f64, f64) {
     for _ in 0..ANGLE_BISECTIONS {
         let mid = 0.5 * (lo + hi);
+        // Once the bracket is two neighbouring floats every later halving repeats this one.
+        let last = mid == lo || mid == hi;
         if left(mid) {
             lo = mid;
         } else {
             hi = mid;
+        }
+        if last {
+            break;
         }
     }
     (lo, hi)
@@ -265,10 +312,14 @@ fn rho_hold_box(v: &LocatorParams, b: &RobustBox) -> f64 {
     } else {
         1.0
     };
+    // Every V tested here differs from at_lo in its frictions only.
+    let sector = Sector::new(&at_lo, b.load_angle_deg);
     let held = |rho: f64| {
         let k = (1.0 / rho).min(k_lock);
         let q = at_lo.with_mu(b.mu.0 * k);
-        holds_sector(&q, (rho * b.load_n.0, rho * b.load_n.1), b.load_angle_deg).is_ok()
+        sector
+            .held_by(&q, (rho * b.load_n.0, rho * b.load_n.1))
+            .is_ok()
     };
     let (mut lo, mut hi) = (1.0 / RHO_LIMIT, RHO_LIMIT);
     if held(hi) {
@@ -280,10 +331,15 @@ fn rho_hold_box(v: &LocatorParams, b: &RobustBox) -> f64 {
     // 60 halvings of the log bracket: rho to 1e-16 relative.
     for _ in 0..ANGLE_BISECTIONS {
         let mid = (lo * hi).sqrt();
+        // Once the bracket is two neighbouring floats every later halving repeats this one.
+        let last = mid == lo || mid == hi;
         if held(mid) {
             lo = mid;
         } else {
             hi = mid;
+        }
+        if last {
+            break;
         }
     }
     lo
