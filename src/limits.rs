@@ -16,10 +16,10 @@ pub const MAX_RUNS: usize = 1000;
 pub const MAX_TOLERANCES: usize = 64;
 
 /// Optimum included angles one V-block optimum chart may compute (mus x (directions + loads)):
-/// each is a search over the included angle, measured at 0.23 ms wall on 2 cores (20,000 in
-/// 4.6 s: `render vlocator-optimum --set chart.direction_axis.count=2000 --set
-/// chart.load_axis.count=2000`), so 100,000 is about 25 s. More would run for minutes with no
-/// memory limit to stop it.
+/// each is a search over the included angle (a bisection of exact equilibrium tests per
+/// step), and nothing else bounds it: no memory limit stops a chart that runs for minutes.
+/// `render vlocator-optimum --set chart.direction_axis.count=2000 --set
+/// chart.load_axis.count=2000` (20,000 angles) times one fifth of the limit on your machine.
 pub const MAX_OPTIMUM_POINTS: usize = 100_000;
 
 /// Estimated peak memory of one computation in bytes (1 GiB).
