@@ -137,6 +137,31 @@ pub mod robust;
 mod robust_tests;
 mod solve;
 pub mod symmetric;
+/// Bisects the bracket (lo, hi) where `left(x)` holds on its left part, halving at `mid(lo,
+/// hi)` (the arithmetic or the geometric mean) at most `halvings` times; returns the final
+/// bracket. It stops once the bracket is two neighbouring floats: every later halving would
+/// repeat the last one (mid is lo or hi again), so the bracket is the one the full count gives.
+pub(crate) fn bisect_bracket(
+    (mut lo, mut hi): (f64, f64),
+    halvings: usize,
+    mid: impl Fn(f64, f64) -> f64,
+    mut left: impl FnMut(f64) -> bool,
+) -> (f64, f64) {
+    for _ in 0..halvings {
+        let m = mid(lo, hi);
+        let last = m == lo || m == hi;
+        if left(m) {
+            lo = m;
+        } else {
+            hi = m;
+        }
+        if last {
+            break;
+        }
+    }
+    (lo, hi)
+}
+
 #[cfg(test)]
 mod tests;
 

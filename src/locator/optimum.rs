@@ -99,7 +99,7 @@ pub fn rho_hold(p: &LocatorParams) -> f64 {
         let q = friction_scaled(p, (1.0 / rho).min(k_lock));
         exact::held_at(&q, rho * p.load_n).is_ok()
     };
-    let (mut lo, mut hi) = (1.0 / RHO_LIMIT, RHO_LIMIT);
+    let (lo, hi) = (1.0 / RHO_LIMIT, RHO_LIMIT);
     if held(hi) {
         return f64::INFINITY;
     }
@@ -107,20 +107,7 @@ pub fn rho_hold(p: &LocatorParams) -> f64 {
         return 0.0;
     }
     // 80 halvings of the log bracket: far below one ulp of rho.
-    for _ in 0..80 {
-        let mid = (lo * hi).sqrt();
-        // Once the bracket is two neighbouring floats every later halving repeats this one.
-        let last = mid == lo || mid == hi;
-        if held(mid) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-        if last {
-            break;
-        }
-    }
-    lo
+    super::bisect_bracket((lo, hi), 80, |a, b| (a * b).sqrt(), held).0
 }
 
 /// rho* = min(rho_hold, rho_lock) of the V `p`.
@@ -164,21 +151,8 @@ pub fn optimum(p: &LocatorParams) -> Optimum {
     if !wider(lo) {
         return done(lo, true);
     }
-    let (mut a, mut b) = (lo, hi);
     // 60 halvings of at most 178 deg: below 1e-15 deg.
-    for _ in 0..60 {
-        let mid = 0.5 * (a + b);
-        // Once the bracket is two neighbouring floats every later halving repeats this one.
-        let last = mid == a || mid == b;
-        if wider(mid) {
-            a = mid;
-        } else {
-            b = mid;
-        }
-        if last {
-            break;
-        }
-    }
+    let (a, _) = super::bisect_bracket((lo, hi), 60, |a, b| 0.5 * (a + b), wider);
     done(a, false)
 }
 

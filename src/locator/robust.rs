@@ -267,21 +267,8 @@ fn works(base: &LocatorParams, b: &RobustBox, gamma_deg: f64) -> Result<(), Opti
 
 /// The final bracket (a, b) of a bisection of [lo, hi] where `left(x)` holds on the left
 /// part: left(a), not left(b), to below 1e-15 of the bracket.
-fn bisect(mut lo: f64, mut hi: f64, left: impl Fn(f64) -> bool) -> (f64, f64) {
-    for _ in 0..ANGLE_BISECTIONS {
-        let mid = 0.5 * (lo + hi);
-        // Once the bracket is two neighbouring floats every later halving repeats this one.
-        let last = mid == lo || mid == hi;
-        if left(mid) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-        if last {
-            break;
-        }
-    }
-    (lo, hi)
+fn bisect(lo: f64, hi: f64, left: impl Fn(f64) -> bool) -> (f64, f64) {
+    super::bisect_bracket((lo, hi), ANGLE_BISECTIONS, |a, b| 0.5 * (a + b), left)
 }
 
 /// The largest x in [lo, hi] with `ok(x)`, given ok(lo) and not ok(hi).
@@ -321,7 +308,7 @@ fn rho_hold_box(v: &LocatorParams, b: &RobustBox) -> f64 {
             .held_by(&q, (rho * b.load_n.0, rho * b.load_n.1))
             .is_ok()
     };
-    let (mut lo, mut hi) = (1.0 / RHO_LIMIT, RHO_LIMIT);
+    let (lo, hi) = (1.0 / RHO_LIMIT, RHO_LIMIT);
     if held(hi) {
         return f64::INFINITY;
     }
@@ -329,20 +316,7 @@ fn rho_hold_box(v: &LocatorParams, b: &RobustBox) -> f64 {
         return 0.0;
     }
     // 60 halvings of the log bracket: rho to 1e-16 relative.
-    for _ in 0..ANGLE_BISECTIONS {
-        let mid = (lo * hi).sqrt();
-        // Once the bracket is two neighbouring floats every later halving repeats this one.
-        let last = mid == lo || mid == hi;
-        if held(mid) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-        if last {
-            break;
-        }
-    }
-    lo
+    super::bisect_bracket((lo, hi), ANGLE_BISECTIONS, |a, b| (a * b).sqrt(), held).0
 }
 
 /// rho* of the V of `gamma_deg` over the box: min(rho_lock at mu_hi, rho_hold).
