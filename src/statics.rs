@@ -268,25 +268,22 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
 /// angle, rigid limit or past-palm bisection), for scans that only need the verdict, such
 /// as the status breakpoints of a range answer. `p` must have passed validation.
 pub fn status(p: &SceneParams) -> JamStatus {
-    match decide(p) {
-        Decision::Bare(status) => status,
-        Decision::JammedAtStart => JamStatus::JammedAtStart,
-        Decision::PastPalm { .. } => JamStatus::BeyondReach,
-        Decision::Jams { .. } => JamStatus::Jams,
-    }
+    decide(p).status()
 }
 
 /// [`status`], the raw jam angle [`theta_jam_rad`] (rad) and, where the disc jams on or past
 /// the palm, x at that angle (mm): one evaluation, what a corner of a range answer needs.
 pub fn status_and_jam(p: &SceneParams) -> (JamStatus, f64, Option<f64>) {
     let angles = FrictionAngles::of(p);
-    match decide_with(p, &angles) {
-        Decision::Bare(status) => (status, theta_jam_from(p, &angles), None),
-        Decision::JammedAtStart => (JamStatus::JammedAtStart, theta_jam_from(p, &angles), None),
+    let d = decide_with(p, &angles);
+    match d {
         Decision::PastPalm {
             theta_jam, x_jam, ..
-        } => (JamStatus::BeyondReach, theta_jam, Some(x_jam)),
-        Decision::Jams { theta_jam, x_jam } => (JamStatus::Jams, theta_jam, Some(x_jam)),
+        }
+        | Decision::Jams { theta_jam, x_jam } => (d.status(), theta_jam, Some(x_jam)),
+        Decision::Bare(_) | Decision::JammedAtStart => {
+            (d.status(), theta_jam_from(p, &angles), None)
+        }
     }
 }
 
@@ -304,6 +301,18 @@ enum Decision {
     },
     /// Jams on the palm at `theta_jam` (rad), `x_jam` (mm).
     Jams { theta_jam: f64, x_jam: f64 },
+}
+
+impl Decision {
+    /// The status it decides.
+    fn status(&self) -> JamStatus {
+        match self {
+            Decision::Bare(status) => *status,
+            Decision::JammedAtStart => JamStatus::JammedAtStart,
+            Decision::PastPalm { .. } => JamStatus::BeyondReach,
+            Decision::Jams { .. } => JamStatus::Jams,
+        }
+    }
 }
 
 /// Decides the status in the order beyond_reach (start), never_jams, too_weak,

@@ -468,23 +468,20 @@ impl<'a> PreparedV<'a> {
     /// [`held_at`] for the load `load_n` N in direction `load_angle_deg` (deg), p's load
     /// point kept.
     pub(crate) fn held_at(&self, load_n: f64, load_angle_deg: f64) -> Result<(), FailureMode> {
-        if self.shape.is_none() {
-            return Ok(());
-        }
         self.held_on(&LoadLine::at(self.p, load_angle_deg), load_n)
     }
 
     /// [`Self::held_at`] on a support line made by [`LoadLine::at`] for a V of the same weight
-    /// and load point (lines shared by many Vs are made once: `robust::Sector`).
+    /// and load point (lines shared by many Vs are made once: `robust::Sector`,
+    /// `optimum::rho_hold`).
     pub(crate) fn held_on(&self, line: &LoadLine, load_n: f64) -> Result<(), FailureMode> {
         let Some((f, cone)) = &self.shape else {
             return Ok(());
         };
-        let line = *line;
         match cone {
-            Some(cone) => cone.held_at(&line, load_n),
+            Some(cone) => cone.held_at(line, load_n),
             None => free_held_at(
-                &free_rows(self.p, f, &line),
+                &free_rows(self.p, f, line),
                 load_n,
                 self.p.weight_n() + load_n,
             ),

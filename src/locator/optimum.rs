@@ -95,9 +95,13 @@ pub fn just_unlocked(p: &LocatorParams) -> LocatorParams {
 /// other way). Found by bisection in log rho, held being monotone in rho.
 pub fn rho_hold(p: &LocatorParams) -> f64 {
     let k_lock = rho_lock(p) * UNLOCKED;
+    // Every V tested differs from p in its frictions only: one support line for all of them.
+    let line = exact::LoadLine::new(p);
     let held = |rho: f64| {
         let q = friction_scaled(p, (1.0 / rho).min(k_lock));
-        exact::held_at(&q, rho * p.load_n).is_ok()
+        exact::PreparedV::new(&q)
+            .held_on(&line, rho * p.load_n)
+            .is_ok()
     };
     let (lo, hi) = (1.0 / RHO_LIMIT, RHO_LIMIT);
     if held(hi) {
