@@ -1,6 +1,7 @@
 //! Output files: written whole or not at all, as one set, never onto a special file or a link.
 //!
-//! Every command writes its files through [`write_all`]:
+//! Every command writes its files through [`write_all`], or a [`Set`] (the same steps, with
+//! files staged one at a time as they are made):
 //! 1. each path is checked ([`destination::check`]): a new name or a regular file is replaced,
 //!    a FIFO, terminal or /dev/null is written through, anything else is refused;
 //! 2. every regular file is written to a temporary file beside it, and synced;
@@ -20,8 +21,11 @@
 pub mod cleanup;
 pub mod destination;
 
+use std::collections::HashSet;
 use std::io::Write;
+use std::ops::DerefMut;
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 
 pub use cleanup::install_signal_cleanup;
 pub use destination::{Destination, check_all};
@@ -88,20 +92,9 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
 
 /// Writes every output, or none of the regular files (see the module doc).
 pub fn write_all(outputs: &[Output]) -> Result<()> {
-    check_all(outputs.iter().map(|o| o.path))?;
-    let created = create_parents(outputs)?;
-    let result = stage(outputs).and_then(|staged| {
-        pause_for_tests();
-        staged.commit()
-    });
-    if result.is_err() {
-        // Deepest first; a directory that is not empty (someone else wrote there) stays.
-        for d in created.iter().rev() {
-            let _ = std::fs::remove_dir(d);
-        }
-    }
-    cleanup::forget_dirs(&created);
-    result
+    let set = Set::begin(outputs.iter().map(|o| o.path))?;
+    set.stage_all(outputs)?;
+    set.commit()
 }
 
 /// The environment variable of a test hook: milliseconds to wait between staging a set (its
@@ -124,12 +117,12 @@ fn pause_for_tests() {
     }
 }
 
-/// Creates the missing parent directories of the outputs; returns those it created, outermost
+/// Creates the missing parent directories of `paths`; returns those it created, outermost
 /// first.
-fn create_parents(outputs: &[Output]) -> Result<Vec<PathBuf>> {
+fn create_parents(paths: &[PathBuf]) -> Result<Vec<PathBuf>> {
     let mut created: Vec<PathBuf> = Vec::new();
-    for o in outputs {
-        let Some(parent) = o.path.parent().filter(|p| !p.as_os_str().is_empty()) else {
+    for path in paths {
+        let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) else {
             continue;
         };
         let missing: Vec<&Path> = parent.ancestors().take_while(|a| !a.exists()).collect();
@@ -142,10 +135,7 @@ fn create_parents(outputs: &[Output]) -> Result<Vec<PathBuf>> {
                 // `a/b/..` reads as missing until `a/b` exists: nothing new to remove later.
                 Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists && d.is_dir() => {}
                 Err(e) => {
-                    for c in created.iter().rev() {
-                        let _ = std::fs::remove_dir(c);
-                    }
-                    cleanup::forget_dirs(&created);
+                    remove_dirs(&created);
                     return Err(Error::io("create the directory", d, e));
                 }
             }
@@ -154,70 +144,110 @@ fn create_parents(outputs: &[Output]) -> Result<Vec<PathBuf>> {
     Ok(created)
 }
 
-/// A set whose regular files sit in temporary files and whose streams are written.
-struct Staged<'a> {
-    files: Vec<(Temp, &'a Path)>,
+/// Removes the folders a set created, deepest first (one that is not empty, because someone
+/// else wrote there, stays), and unregisters them.
+fn remove_dirs(created: &[PathBuf]) {
+    for d in created.iter().rev() {
+        let _ = std::fs::remove_dir(d);
+    }
+    cleanup::forget_dirs(created);
 }
 
-/// Steps 2 and 3 of the module doc. On any error the temporary files go (they are dropped).
-fn stage<'a>(outputs: &[Output<'a>]) -> Result<Staged<'a>> {
-    use rayon::prelude::*;
-    let mut regular = Vec::new();
-    let mut streams = Vec::new();
-    let mut swept = std::collections::HashSet::new();
-    for o in outputs {
-        match destination::check(o.path)? {
-            Destination::Stream => streams.push(o),
-            Destination::New | Destination::Regular => {
-                let dir = o.path.parent().filter(|d| !d.as_os_str().is_empty());
-                if swept.insert(dir) {
-                    cleanup::sweep_stale(dir.unwrap_or(Path::new(".")));
-                }
-                regular.push(o);
-            }
+/// A set of outputs written as one ([`write_all`] in steps): declared first, staged from any
+/// thread as each is made, committed together. `render` stages a map's cells CSV while the
+/// map's pictures are still being drawn, so the longest file is written beside the drawing
+/// rather than after it.
+///
+/// Dropped without a commit, it removes its temporary files and the folders it created.
+pub struct Set {
+    /// The declared paths, in the order their files are renamed into place.
+    order: Vec<PathBuf>,
+    /// The folders [`Set::begin`] created, outermost first.
+    created: Vec<PathBuf>,
+    /// The folders whose stale temporaries were swept.
+    swept: Mutex<HashSet<PathBuf>>,
+    /// Staged regular files: their place in `order`, temporary file and final path.
+    staged: Mutex<Vec<(usize, Temp, PathBuf)>>,
+}
+
+impl Set {
+    /// Step 1 of the module doc for every path the set will write, and their missing folders
+    /// created.
+    pub fn begin<'p>(paths: impl IntoIterator<Item = &'p Path>) -> Result<Set> {
+        let order: Vec<PathBuf> = paths.into_iter().map(Path::to_path_buf).collect();
+        check_all(order.iter().map(PathBuf::as_path))?;
+        let created = create_parents(&order)?;
+        Ok(Set {
+            order,
+            created,
+            swept: Mutex::new(HashSet::new()),
+            staged: Mutex::new(Vec::new()),
+        })
+    }
+
+    /// Steps 2 and 3 for one output: a regular file is written to its temporary file and
+    /// synced, a stream is written now.
+    pub fn stage(&self, output: Output) -> Result<()> {
+        match destination::check(output.path)? {
+            Destination::Stream => write_stream(output.path, output.content),
+            Destination::New | Destination::Regular => self.stage_file(output),
         }
     }
-    // Each file is written and synced on its own thread: a render's forty files no longer wait
-    // for one another's sync. The first failure in output order is reported (so the message
-    // does not depend on the thread count); the other temporaries go when dropped.
-    let written: Vec<Result<(Temp, &'a Path)>> = regular
-        .par_iter()
-        .map(|o| {
-            let (temp, mut f) = Temp::create(o.path).map_err(|e| Error::io("write", o.path, e))?;
-            o.content
-                .write_to(&mut f)
-                .and_then(|_| f.sync_data())
-                .map_err(|e| Error::io("write", o.path, e))?;
-            Ok((temp, o.path))
-        })
-        .collect();
-    let files = written.into_iter().collect::<Result<Vec<_>>>()?;
-    for o in streams {
-        write_stream(o.path, o.content)?;
+
+    /// Steps 2 and 3 for `outputs`: each regular file written and synced on its own thread (a
+    /// render's forty files no longer wait for one another's sync), then the streams. The first
+    /// failure in output order is reported, so the message does not depend on the thread
+    /// count.
+    pub fn stage_all(&self, outputs: &[Output]) -> Result<()> {
+        use rayon::prelude::*;
+        let mut regular = Vec::new();
+        let mut streams = Vec::new();
+        for o in outputs {
+            match destination::check(o.path)? {
+                Destination::Stream => streams.push(o),
+                Destination::New | Destination::Regular => regular.push(o),
+            }
+        }
+        let written: Vec<Result<()>> = regular.par_iter().map(|o| self.stage_file(**o)).collect();
+        written.into_iter().collect::<Result<()>>()?;
+        for o in streams {
+            write_stream(o.path, o.content)?;
+        }
+        Ok(())
     }
-    Ok(Staged { files })
-}
 
-/// Writes through a FIFO, terminal or /dev/null (never creating or truncating anything).
-fn write_stream(path: &Path, content: Content) -> Result<()> {
-    use std::os::unix::fs::OpenOptionsExt;
-    std::fs::File::options()
-        .write(true)
-        // Never become the controlling terminal of this process.
-        .custom_flags(libc::O_NOCTTY)
-        .open(path)
-        .and_then(|mut f| content.write_to(&mut f))
-        .map_err(|e| Error::io("write", path, e))
-}
+    /// Writes a regular file's temporary and syncs it.
+    fn stage_file(&self, o: Output) -> Result<()> {
+        let dir = o.path.parent().filter(|d| !d.as_os_str().is_empty());
+        let dir = dir.unwrap_or(Path::new("."));
+        if lock_ignoring_poison(&self.swept).insert(dir.to_path_buf()) {
+            cleanup::sweep_stale(dir);
+        }
+        let (temp, mut f) = Temp::create(o.path).map_err(|e| Error::io("write", o.path, e))?;
+        o.content
+            .write_to(&mut f)
+            .and_then(|_| f.sync_data())
+            .map_err(|e| Error::io("write", o.path, e))?;
+        let place = self.order.iter().position(|p| p == o.path);
+        lock_ignoring_poison(&self.staged).push((
+            place.unwrap_or(usize::MAX),
+            temp,
+            o.path.to_path_buf(),
+        ));
+        Ok(())
+    }
 
-impl Staged<'_> {
-    /// Step 4 of the module doc, under the registry's lock so that a signal waits for it.
-    fn commit(self) -> Result<()> {
+    /// Step 4 of the module doc, under the registry's lock so that a signal waits for it: the
+    /// staged files renamed into place in the declared order.
+    pub fn commit(mut self) -> Result<()> {
+        pause_for_tests();
+        let mut files = std::mem::take(lock_ignoring_poison(&self.staged).deref_mut());
+        files.sort_by(|a, b| (a.0, &a.2).cmp(&(b.0, &b.2)));
         let live = cleanup::lock();
         // Per renamed file: its final path and where its old version is kept (None: it was new).
         let mut done: Vec<(&Path, Option<PathBuf>)> = Vec::new();
         let mut failure = None;
-        for (temp, dest) in &self.files {
+        for (_, temp, dest) in &files {
             let kept = match keep_old(dest) {
                 Ok(k) => k,
                 Err(e) => {
@@ -229,7 +259,7 @@ impl Staged<'_> {
                 if let Some(k) = kept {
                     let _ = std::fs::remove_file(k);
                 }
-                failure = Some(Error::io("write", *dest, e));
+                failure = Some(Error::io("write", dest.as_path(), e));
                 break;
             }
             done.push((dest, kept));
@@ -245,13 +275,42 @@ impl Staged<'_> {
         }
         drop(live);
         if let Some(e) = failure {
+            // The temporaries go, then the folders this set created (`Drop`).
+            drop(files);
             return Err(e);
         }
-        for (temp, _) in self.files {
+        for (_, temp, _) in files {
             temp.keep();
         }
+        // The folders hold the set's files now: they stay.
+        cleanup::forget_dirs(&std::mem::take(&mut self.created));
         Ok(())
     }
+}
+
+impl Drop for Set {
+    fn drop(&mut self) {
+        // Temporaries first, so that the folders they were in are empty.
+        lock_ignoring_poison(&self.staged).clear();
+        remove_dirs(&self.created);
+    }
+}
+
+/// `m` locked; a panic on another thread never makes it unusable.
+fn lock_ignoring_poison<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Writes through a FIFO, terminal or /dev/null (never creating or truncating anything).
+fn write_stream(path: &Path, content: Content) -> Result<()> {
+    use std::os::unix::fs::OpenOptionsExt;
+    std::fs::File::options()
+        .write(true)
+        // Never become the controlling terminal of this process.
+        .custom_flags(libc::O_NOCTTY)
+        .open(path)
+        .and_then(|mut f| content.write_to(&mut f))
+        .map_err(|e| Error::io("write", path, e))
 }
 
 /// Keeps the old version of `dest` under a temporary name (a hard link, or a copy where the

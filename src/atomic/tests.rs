@@ -46,7 +46,8 @@ fn a_failed_command_leaves_the_output_folder_as_it_found_it() {
     std::fs::write(&a, "old a").unwrap();
     let outputs = [(&a, b"new a"), (&b, b"new b"), (&c, b"new c")]
         .map(|(path, bytes)| Output::bytes(path, bytes.as_slice()));
-    let staged = stage(&outputs).unwrap();
+    let staged = Set::begin(outputs.iter().map(|o| o.path)).unwrap();
+    staged.stage_all(&outputs).unwrap();
     // A directory squats b's name after the checks (as a disk filling up would fail there).
     std::fs::create_dir(&b).unwrap();
     std::fs::write(b.join("inside"), "x").unwrap();
@@ -120,4 +121,40 @@ fn a_failed_write_names_the_file_and_leaves_nothing() {
         "{msg}"
     );
     assert_eq!(names(dir.path()), ["plain"]);
+}
+
+/// A set staged a file at a time (`render` stages a map's cells CSV while it draws): when the
+/// command fails before the commit (a later scene's error), dropping the set removes the staged
+/// temporary and the folders the set created, and nothing reaches the final names.
+#[test]
+fn a_set_dropped_before_its_commit_leaves_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let [a, b] = ["new/sub/a.csv", "new/sub/b.svg"].map(|n| dir.path().join(n));
+    let set = Set::begin([a.as_path(), b.as_path()]).unwrap();
+    set.stage(Output::bytes(&a, b"cells")).unwrap();
+    assert_eq!(names(&dir.path().join("new/sub")).len(), 1, "a's temporary");
+    drop(set);
+    assert_eq!(names(dir.path()), Vec::<String>::new());
+}
+
+/// Files staged out of order (as threads finish them) are renamed in the declared order: with
+/// two names taken, the error is the first declared one's, and every rename is undone.
+#[test]
+fn a_set_commits_in_the_declared_order() {
+    let dir = tempfile::tempdir().unwrap();
+    let [a, b, c] = ["a.csv", "b.svg", "c.png"].map(|n| dir.path().join(n));
+    std::fs::write(&a, "old a").unwrap();
+    let set = Set::begin([a.as_path(), b.as_path(), c.as_path()]).unwrap();
+    for (p, bytes) in [(&c, "new c"), (&a, "new a"), (&b, "new b")] {
+        set.stage(Output::bytes(p, bytes.as_bytes())).unwrap();
+    }
+    // Directories take b's and c's names after the checks.
+    for squat in [&b, &c] {
+        std::fs::create_dir(squat).unwrap();
+        std::fs::write(squat.join("inside"), "x").unwrap();
+    }
+    let err = set.commit().unwrap_err();
+    assert!(err.to_string().contains("b.svg"), "{err}");
+    assert_eq!(std::fs::read_to_string(&a).unwrap(), "old a");
+    assert_eq!(names(dir.path()), ["a.csv", "b.svg", "c.png"]);
 }

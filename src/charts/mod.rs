@@ -219,17 +219,29 @@ impl Chart {
 
 /// Computes and draws `scene` into the requested formats.
 pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
+    render_with(scene, formats, &|_| Ok(()))
+}
+
+/// [`render`], with `cells_to` called on a map's cells while the pictures are drawn: a caller
+/// that writes files writes the cells CSV (megabytes, the longest file) there, beside the
+/// drawing instead of after it (`cargo bench --bench render` times `render fig3`). An error of
+/// the drawing comes before one of `cells_to`.
+pub fn render_with(
+    scene: &Scene,
+    formats: Formats,
+    cells_to: &(dyn Fn(&Cells) -> Result<()> + Sync),
+) -> Result<Rendered> {
     style::init_fonts();
-    let chart = Chart::compute(scene)?;
+    let chart = std::sync::Arc::new(Chart::compute(scene)?);
+    let cells = chart.cells().is_some().then(|| Cells(chart.clone()));
     let (w, h) = (scene.size.width_px, scene.size.height_px);
     let draw_err = |m: String| Error::Draw {
         scene: scene.name.clone(),
         message: m,
     };
     let scale = scene.size.scale;
-    // The data is built beside the pictures, not after them; a map's cells CSV (megabytes) is
-    // written to its file by whoever writes the files, as it is made.
-    let ((svg, png), data) = rayon::join(
+    // The data is built beside the pictures, not after them.
+    let ((svg, png), (data, cells_written)) = rayon::join(
         || {
             rayon::join(
                 || -> Result<Option<(Vec<u8>, Vec<axes::PlotFrame>)>> {
@@ -257,7 +269,12 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
                 },
             )
         },
-        || chart.data(scene),
+        || {
+            rayon::join(
+                || chart.data(scene),
+                || cells.as_ref().map_or(Ok(()), cells_to),
+            )
+        },
     );
     let (svg, png) = (svg?, png?);
     let pdf = match &svg {
@@ -270,8 +287,7 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
     let read_off = chart
         .read_off(frames.unwrap_or_default())
         .map(|v| readoff::rounded(v).to_string());
-    let chart = std::sync::Arc::new(chart);
-    let cells = chart.cells().is_some().then(|| Cells(chart.clone()));
+    cells_written?;
     Ok(Rendered {
         name: scene.name.clone(),
         svg: svg.map(|(b, _)| b),

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use clap::{Args, ValueEnum};
 use rayon::prelude::*;
 
-use crate::atomic::{Content, Output, Writes, check_all, write_all};
+use crate::atomic::{Content, Output, Set, Writes};
 use crate::charts::overrides::Setting;
 use crate::charts::{self, Formats, Rendered, Scene, SceneSource};
 use crate::error::{Error, Result};
@@ -197,7 +197,6 @@ pub fn output_paths(
         .collect()
 }
 
-/// The files of rendered scene `r` in `out`: paths and bytes, data first.
 /// The command that renders scene `name` as this run did: the scene by its built-in name, else
 /// the scene arguments as given (a file or folder), with the run's `--set`, `--scenes-dir` and
 /// `--out`.
@@ -247,6 +246,12 @@ impl Writes for charts::Cells {
     }
 }
 
+/// The path of scene `name`'s file with extension `ext` in `out`.
+fn file_path(out: &Path, name: &str, ext: &str) -> PathBuf {
+    out.join(format!("{name}.{ext}"))
+}
+
+/// The files of rendered scene `r` in `out`: paths and contents, data first.
 fn files_of<'a>(out: &Path, r: &'a Rendered) -> Vec<(PathBuf, Content<'a>)> {
     let bytes = |b: Option<&'a Vec<u8>>| b.map(|b| Content::Bytes(b));
     let all = [
@@ -260,7 +265,7 @@ fn files_of<'a>(out: &Path, r: &'a Rendered) -> Vec<(PathBuf, Content<'a>)> {
         ("pdf", bytes(r.pdf.as_ref())),
     ];
     all.into_iter()
-        .filter_map(|(ext, c)| Some((out.join(format!("{}.{ext}", r.name)), c?)))
+        .filter_map(|(ext, c)| Some((file_path(out, &r.name, ext), c?)))
         .collect()
 }
 
@@ -273,25 +278,64 @@ pub fn write_rendered(
 ) -> Result<Vec<Vec<PathBuf>>> {
     let per_scene: Vec<Vec<(PathBuf, Content)>> =
         rendered.iter().map(|r| files_of(out, r)).collect();
-    let set: Vec<Output> = per_scene
+    let declared = per_scene.iter().flatten().map(|(p, _)| p);
+    let set = Set::begin(
+        declared
+            .chain(extra.iter().map(|(p, _)| p))
+            .map(PathBuf::as_path),
+    )?;
+    commit_rendered(set, &per_scene, extra, CellsStaged::No)?;
+    Ok(paths_per_scene(&per_scene))
+}
+
+/// Whether the cells CSVs of a set were staged while their maps were drawn
+/// ([`render_scenes`] with a set).
+#[derive(Clone, Copy, PartialEq)]
+enum CellsStaged {
+    Yes,
+    No,
+}
+
+/// Stages the files of `per_scene` (but the cells CSVs when they are staged already) and
+/// `extra` in `set`, and commits it.
+fn commit_rendered(
+    set: Set,
+    per_scene: &[Vec<(PathBuf, Content)>],
+    extra: &[(PathBuf, &[u8])],
+    cells: CellsStaged,
+) -> Result<()> {
+    // A writer's content is a map's cells CSV, the one file staged while drawing.
+    let staged_already = |c: &Content| cells == CellsStaged::Yes && matches!(c, Content::Writer(_));
+    let outputs: Vec<Output> = per_scene
         .iter()
         .flatten()
+        .filter(|(_, content)| !staged_already(content))
         .map(|(path, content)| Output {
             path,
             content: *content,
         })
         .chain(extra.iter().map(|(path, bytes)| Output::bytes(path, bytes)))
         .collect();
-    write_all(&set)?;
-    Ok(per_scene
+    set.stage_all(&outputs)?;
+    set.commit()
+}
+
+fn paths_per_scene(per_scene: &[Vec<(PathBuf, Content)>]) -> Vec<Vec<PathBuf>> {
+    per_scene
         .iter()
         .map(|files| files.iter().map(|(p, _)| p.clone()).collect())
-        .collect())
+        .collect()
 }
 
 /// Renders every scene in parallel, with a progress bar for a person watching; the first
-/// failure in scene order, so the message does not depend on the thread count.
-fn render_scenes(scenes: &[Scene], formats: Formats, quiet: Quiet) -> Result<Vec<Rendered>> {
+/// failure in scene order, so the message does not depend on the thread count. Given a set and
+/// its folder, each map's cells CSV is staged in it while the map is drawn.
+fn render_scenes(
+    scenes: &[Scene],
+    formats: Formats,
+    quiet: Quiet,
+    staging: Option<(&Set, &Path)>,
+) -> Result<Vec<Rendered>> {
     let bar = progress::bar(
         quiet,
         scenes.len() as u64,
@@ -305,7 +349,16 @@ fn render_scenes(scenes: &[Scene], formats: Formats, quiet: Quiet) -> Result<Vec
     let mut rendered: Vec<(usize, Result<Rendered>)> = order
         .into_par_iter()
         .map(|i| {
-            let r = charts::render(&scenes[i], formats);
+            let r = match staging {
+                Some((set, out)) => charts::render_with(&scenes[i], formats, &|cells| {
+                    let path = file_path(out, &scenes[i].name, charts::Cells::EXTENSION);
+                    set.stage(Output {
+                        path: &path,
+                        content: Content::Writer(cells),
+                    })
+                }),
+                None => charts::render(&scenes[i], formats),
+            };
             bar.inc(1);
             (i, r)
         })
@@ -340,18 +393,19 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
             }
             Err(e) => return Err(Error::io("read", manifest_path, e)),
         };
-        let rendered = render_scenes(&scenes, formats, a.quiet)?;
+        let rendered = render_scenes(&scenes, formats, a.quiet, None)?;
         return check(&manifest_path, &blessed, &rendered).map(|d| quieted(d, a.quiet));
     }
-    // Every output path is checked before anything is computed.
+    // Every output path is checked before anything is computed; the set of files is begun
+    // (its folder made) so that each map's cells CSV is written while the map is drawn.
     let planned: Vec<PathBuf> = scenes
         .iter()
         .flat_map(|s| output_paths(&a.out, &s.name, &s.chart, formats))
         .chain(std::iter::once(a.out.join("index.html")))
         .chain(a.bless.then(|| manifest_path.clone()))
         .collect();
-    check_all(planned.iter().map(PathBuf::as_path))?;
-    let rendered = render_scenes(&scenes, formats, a.quiet)?;
+    let set = Set::begin(planned.iter().map(PathBuf::as_path))?;
+    let rendered = render_scenes(&scenes, formats, a.quiet, Some((&set, &a.out)))?;
     let index = a.out.join("index.html");
     let entries: Vec<charts::gallery::Entry> = scenes
         .iter()
@@ -390,7 +444,10 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
     if a.bless {
         extra.push((manifest_path.clone(), manifest_text.as_bytes()));
     }
-    let written = write_rendered(&a.out, &rendered, &extra)?;
+    let per_scene: Vec<Vec<(PathBuf, Content)>> =
+        rendered.iter().map(|r| files_of(&a.out, r)).collect();
+    commit_rendered(set, &per_scene, &extra, CellsStaged::Yes)?;
+    let written = paths_per_scene(&per_scene);
     let mut text = String::new();
     for (scene, paths) in scenes.iter().zip(written) {
         let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
