@@ -111,7 +111,7 @@ pub enum Formats {
     Png,
     /// SVG and PNG.
     Both,
-    /// PDF only (for print; made from the SVG drawing, see [`output::pdf`]).
+    /// PDF only (for print; made from the SVG drawing by svg2pdf, so it embeds no font).
     Pdf,
 }
 

@@ -13,7 +13,7 @@
 //! high end's, change by change. A change between jams and beyond_reach (or jammed_at_start)
 //! lies where theta_jam crosses the palm's reach angle (or the start angle): Eq. 2 solved for
 //! the input gives it in closed form for the push, the mass and the palm's friction, by
-//! Newton's method in the friction angle for the ground's friction ([`invert`]), and the
+//! Newton's method in the friction angle for the ground's friction (`invert`, derived in its docs), and the
 //! statuses a hair either side of it confirm it (regula falsi on theta_jam, then bisection of
 //! the status, where they do not); other changes are bisected with the cheap
 //! [`statics::status`] (no past-palm extras). So a range answer over one input costs its two
