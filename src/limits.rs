@@ -80,16 +80,18 @@ impl PerItem {
 //
 // | item                       | memory B | files B |
 // |----------------------------|----------|---------|
-// | jam map cell (fig3)        |       33 |      33 |
+// | jam map cell (fig3)        |       17 |      33 |
 // | contour map cell (fig7c)   |      168 |      46 |
-// | universal chart cell       |      127 |      44 |
+// | universal chart cell       |       82 |      44 |
 // | V-locator capacity cell    |      105 |      25 |
 // | sweep point (`sweep`)      |     1200 |      96 |
 //
-// A jam map cell was 59 B while its CSV was built in memory; streamed to its file, 33 B (800 ->
-// 1600 cells a side: 37.0 -> 99.4 MB peak RSS; 3200: see README). The other maps' peaks come
-// before their CSV is written (contour maps: 129.0 MB at 800^2 either way), so streaming left
-// them as they were.
+// A jam map cell was 59 B while its CSV was built in memory; streamed to its file, 33 B; with
+// each cell's region a byte (it was a 16-byte reference to its word), 17 B (800 -> 1600 cells a
+// side: 26.4 -> 57.8 MB peak RSS; 500 -> 1000, as tests/cli_hardening.rs measures: 20-22 B;
+// 3200: see README). The universal chart's status went the same way: 97 -> 82 B (400 -> 800).
+// The other maps' peaks come before their CSV is written (contour maps: 129.0 MB at 800^2
+// either way), so streaming left them as they were.
 //
 // Where a sweep point's 1200 B go is not measured item by item: the points, the CSV, the SVG
 // path and the gallery's read-off (JSON values) are all held at once; a whole model solution
@@ -97,13 +99,13 @@ impl PerItem {
 // row is 9 f64 (72 B) held as a row, a drawn sample and a CSV line of about 90 B.
 
 /// A cell of a jam map (statics; the other models cost time, not memory).
-pub const JAM_MAP_CELL: PerItem = PerItem::new("cells of the jam map", 42, 41);
+pub const JAM_MAP_CELL: PerItem = PerItem::new("cells of the jam map", 27, 41);
 
 /// A cell of a contour map.
 pub const CONTOUR_MAP_CELL: PerItem = PerItem::new("cells of the contour map", 210, 58);
 
 /// A cell of the universal chart.
-pub const UNIVERSAL_CELL: PerItem = PerItem::new("cells of the universal chart", 160, 55);
+pub const UNIVERSAL_CELL: PerItem = PerItem::new("cells of the universal chart", 102, 55);
 
 /// A cell of a V-locator capacity map.
 pub const VLOCATOR_CAPACITY_CELL: PerItem = PerItem::new("cells of the capacity map", 130, 32);

@@ -73,6 +73,14 @@ pub struct JamMapSpec {
     pub band: Option<super::sweep::SweepBand>,
 }
 
+/// A cell's region as the cells CSV writes it; a cell holds its index here.
+const REGIONS: &[&str] = &["jam", "slide", "uncertain", "beyond_reach"];
+/// The indices in [`REGIONS`].
+const JAM: u8 = 0;
+const SLIDE: u8 = 1;
+const UNCERTAIN: u8 = 2;
+const BEYOND_REACH: u8 = 3;
+
 /// The uncertain region of a jam map with a band: Okabe-Ito yellow (#F0E442) at 55 % on white,
 /// apart from the jam tint, white slide and grey beyond-reach in colour and between white and
 /// the jam tint in print (luma about 232).
@@ -171,9 +179,9 @@ pub struct JamMap {
     beyond: Vec<bool>,
     /// The region beyond the palm's reach as rings in plot space.
     beyond_rings: Vec<Vec<(f64, f64)>>,
-    /// The region's cell status as written in the CSV: jam, slide, uncertain (a band's
-    /// corners disagree) or beyond_reach.
-    region: Vec<&'static str>,
+    /// Each cell's region, as its index in [`REGIONS`] (the CSV's words): jam, slide,
+    /// uncertain (a band's corners disagree) or beyond_reach.
+    region: Vec<u8>,
     /// With a band: the region where the disc jams at some corner (drawn under the jam
     /// rings, which are then those where it jams at both), as rings in plot space.
     uncertain_rings: Vec<Vec<(f64, f64)>>,
@@ -236,10 +244,10 @@ impl JamMap {
         };
         let region = (0..beyond.len())
             .map(|i| match (beyond[i], lo[i] >= 0.0, hi[i] >= 0.0) {
-                (true, _, _) => "beyond_reach",
-                (false, true, _) => "jam",
-                (false, false, true) => "uncertain",
-                (false, false, false) => "slide",
+                (true, _, _) => BEYOND_REACH,
+                (false, true, _) => JAM,
+                (false, false, true) => UNCERTAIN,
+                (false, false, false) => SLIDE,
             })
             .collect();
         let param = spec.x_axis.param;
@@ -304,7 +312,13 @@ impl JamMap {
         Some((
             g,
             vec![
-                ("region", Column::Text(&self.region)),
+                (
+                    "region",
+                    Column::Words {
+                        words: REGIONS,
+                        of: &self.region,
+                    },
+                ),
                 ("margin_n", Column::Dense(g.margin_n.as_ref()?)),
             ],
         ))
@@ -494,7 +508,7 @@ impl JamMap {
             (u as i32, v as i32)
         };
         let pos = Pos::new(HPos::Center, VPos::Center);
-        for (label, region, fx, fy) in [("SLIDE", "slide", 0.2, 0.12), ("JAM", "jam", 0.8, 0.88)] {
+        for (label, region, fx, fy) in [("SLIDE", SLIDE, 0.2, 0.12), ("JAM", JAM, 0.8, 0.88)] {
             if let Some(fy) = self.label_height(region, fx, fy) {
                 axes::boxed_text(root, label, at(fx, fy), pos, style::LABEL_PX)?;
             }
@@ -506,7 +520,7 @@ impl JamMap {
     /// top): at `fy` if that cell lies in the region, else in the middle of the region's cells
     /// of that column (the palm's reach may cover the default place); None if the column has
     /// none.
-    fn label_height(&self, region: &str, fx: f64, fy: f64) -> Option<f64> {
+    fn label_height(&self, region: u8, fx: f64, fy: f64) -> Option<f64> {
         let g = self.grid.as_ref()?;
         let (nx, ny) = (g.nx(), g.ny());
         let ix = (fx * (nx - 1) as f64).round() as usize;

@@ -176,8 +176,9 @@ pub struct Universal {
     params: SceneParams,
     title: String,
     grid: GridResult,
-    /// The status per cell, as written.
-    status: Vec<&'static str>,
+    /// The status per cell, as its index in [`JamStatus::ALL`] (its word in
+    /// [`JamStatus::NAMES`]).
+    status: Vec<u8>,
     /// x_jam / r per cell, cot(theta_jam / 2) where it jams.
     x_over_r: Vec<Option<f64>>,
     /// The labelled levels in deg (band edges).
@@ -215,7 +216,10 @@ impl Universal {
                 _ => f64::NAN,
             })
             .collect();
-        let status = statuses.iter().map(|s| s.as_str()).collect();
+        let status = statuses
+            .iter()
+            .map(|s| JamStatus::ALL.iter().position(|a| a == s).unwrap_or(0) as u8)
+            .collect();
         let x_over_r = statuses
             .iter()
             .zip(&theta)
@@ -359,7 +363,13 @@ impl Universal {
 
     fn columns(&self) -> Vec<(&'static str, Column<'_>)> {
         vec![
-            ("status", Column::Text(&self.status)),
+            (
+                "status",
+                Column::Words {
+                    words: JamStatus::NAMES,
+                    of: &self.status,
+                },
+            ),
             (
                 "theta_jam_deg",
                 Column::Sparse(self.grid.theta_jam_deg.as_deref().unwrap_or_default()),
@@ -456,7 +466,9 @@ impl Universal {
             &[
                 ("theta_jam_deg", &|i| serde_json::json!(theta[i])),
                 ("x_over_r", &|i| serde_json::json!(self.x_over_r[i])),
-                ("status", &|i| serde_json::json!(self.status[i])),
+                ("status", &|i| {
+                    serde_json::json!(JamStatus::NAMES[usize::from(self.status[i])])
+                }),
             ],
         );
         Some(serde_json::json!({
