@@ -4,11 +4,13 @@
 //!
 //! `cargo bench --bench uncertain`; prints medians. Goals (issue 19): the range answer within
 //! 2x of a point answer; 1e5 statics samples well under 1 s; about 10,000 simulation samples
-//! per second on 2 cores.
+//! per second on 2 cores. The range answer is timed twice: in the library (its two corners,
+//! and with the status changes it solves for) and as a user gets it, `jamchart solve` with
+//! `--mu 0.12:0.3` against `--mu 0.21` as whole processes, interleaved.
 
 mod common;
 
-use common::median_s;
+use common::{median, median_s, time_process};
 use jamchart::dynamics::{DynamicsParams, IntegratorSettings, Method, Verification};
 use jamchart::uncertain::dist::{self, DistQuestion};
 use jamchart::uncertain::range;
@@ -72,6 +74,29 @@ fn main() {
         whole * 1e9,
         whole / point,
         whole / lo.max(hi)
+    );
+
+    // As a user gets them: the command with a range against the command with a point.
+    let solve = |mu: &str| {
+        let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_jamchart"));
+        cmd.args([
+            "solve", "--radius", "12.5", "--mass", "0.4", "--force", "40",
+        ])
+        .args(["--palm-length", "80", "--mu", mu]);
+        cmd
+    };
+    let (mut at_point, mut over_range) = (Vec::new(), Vec::new());
+    for _ in 0..41 {
+        at_point.push(time_process(&mut solve("0.21")).0);
+        over_range.push(time_process(&mut solve("0.12:0.3")).0);
+    }
+    let (at_point, over_range) = (median(at_point), median(over_range));
+    println!(
+        "  as commands (whole processes, medians of 41 interleaved runs): `jamchart solve \
+         --mu 0.12:0.3` {:.2} ms, `--mu 0.21` {:.2} ms: {:.2}x",
+        over_range * 1e3,
+        at_point * 1e3,
+        over_range / at_point
     );
 
     let threads = rayon::current_num_threads();

@@ -1,5 +1,6 @@
 //! What every benchmark shares: the median of noisy timings.
 
+use std::process::Command;
 use std::time::Instant;
 
 /// The median of `v` (the upper middle for an even count).
@@ -29,4 +30,25 @@ pub fn one_thread_pool() -> rayon::ThreadPool {
         .num_threads(1)
         .build()
         .expect("a one-thread pool")
+}
+
+/// Wall and CPU (user + sys) time of one run of `cmd` in s; panics when it fails.
+#[allow(dead_code)] // not every benchmark times processes
+pub fn time_process(cmd: &mut Command) -> (f64, f64) {
+    let cpu = || {
+        // SAFETY: getrusage writes one rusage through a valid pointer.
+        let mut u: libc::rusage = unsafe { std::mem::zeroed() };
+        unsafe { libc::getrusage(libc::RUSAGE_CHILDREN, &mut u) };
+        let s = |t: libc::timeval| t.tv_sec as f64 + t.tv_usec as f64 * 1e-6;
+        s(u.ru_utime) + s(u.ru_stime)
+    };
+    let (c0, t0) = (cpu(), Instant::now());
+    let out = cmd.output().expect("the process starts");
+    let wall = t0.elapsed().as_secs_f64();
+    assert!(
+        out.status.success(),
+        "{cmd:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    (wall, cpu() - c0)
 }
