@@ -71,7 +71,8 @@ pub struct AccuracyArgs {
     /// Cells per axis of the map whose cost is reported, 2 to 2000; 0 skips it.
     ///
     /// The map is mu 0.1-0.8 by F 20-2000 N (log); the statics answer all of it, the min-norm
-    /// program 40 x 40 cells and the simulation 20 x 20, and their time is extrapolated.
+    /// program 40 of its columns (every F at 40 values of mu) by its exact path and 4 by
+    /// clarabel, the simulation 20 x 20 cells, and their time is extrapolated.
     #[arg(long, value_name = "N", default_value_t = MapCostSettings::default().cells_per_axis)]
     pub map_cells: usize,
     /// Output format on stdout.
@@ -145,7 +146,8 @@ fn settings(a: &AccuracyArgs) -> Result<(AccuracySettings, Option<MapCostSetting
             let s = MapCostSettings {
                 cells_per_axis: cells,
                 statics_per_axis: m.statics_per_axis.min(cells),
-                min_norm_per_axis: m.min_norm_per_axis.min(cells),
+                min_norm_columns: m.min_norm_columns.min(cells),
+                clarabel_columns: m.clarabel_columns.min(cells),
                 dynamics_per_axis: m.dynamics_per_axis.min(cells),
                 reference_step_deg: a.converged_step,
             };
@@ -342,15 +344,16 @@ fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapse
             "\n## A {n} x {n} map (mu 0.1-0.8 by F 20-2000 N) by each model\n\n\
              Errors against the closed form at each cell's F for the statics and min-norm, \
              against each cell's converged rigid dynamics (the nonsmooth method at a fine step) \
-             for the simulations with the force drive. Extrapolated rows scale the measured time by the cell count.\n\n\
-             | model | method | sampled cells | measured [s] | {n} x {n} map [s] | extrapolated | threads | max rel. x error | status mismatches | untrusted cells |\n\
+             for the simulations with the force drive. The min-norm rows answer whole columns (every F \
+             of some mu: a column's search starts from its neighbours). Extrapolated rows scale the measured time by the cell count.\n\n\
+             | model | method | sampled mu x F | measured [s] | {n} x {n} map [s] | extrapolated | threads | max rel. x error | status mismatches | untrusted cells |\n\
              |---|---|---:|---:|---:|---|---:|---:|---:|---:|",
             n = m.cells_per_axis
         );
         for row in &m.rows {
             let _ = writeln!(
                 s,
-                "| {} | {} | {k} x {k} | {:.3} | {:.1} | {} | {} | {} | {} | {} |",
+                "| {} | {} | {kx} x {ky} | {:.3} | {:.1} | {} | {} | {} | {} | {} |",
                 model_name(row.model),
                 row.method,
                 row.measured_s,
@@ -360,7 +363,8 @@ fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapse
                 ratio(row.max_x_rel_error),
                 row.status_mismatches,
                 row.untrusted_cells,
-                k = row.sampled_per_axis
+                kx = row.sampled[0],
+                ky = row.sampled[1]
             );
         }
     }
@@ -509,7 +513,10 @@ fn csv_rows(r: &AccuracyReport) -> Result<String> {
 struct MapCsvRow {
     model: ModelKind,
     method: &'static str,
-    sampled_per_axis: usize,
+    /// Values of mu sampled.
+    sampled_mu: usize,
+    /// Values of F sampled.
+    sampled_f: usize,
     measured_s: Dec,
     full_map_s: Dec,
     extrapolated: bool,
@@ -523,7 +530,8 @@ fn map_csv(m: &MapCostReport) -> Result<String> {
     to_csv(m.rows.iter().map(|x| MapCsvRow {
         model: x.model,
         method: x.method,
-        sampled_per_axis: x.sampled_per_axis,
+        sampled_mu: x.sampled[0],
+        sampled_f: x.sampled[1],
         measured_s: Dec(x.measured_s),
         full_map_s: Dec(x.full_map_s),
         extrapolated: x.extrapolated,

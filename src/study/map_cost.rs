@@ -7,7 +7,10 @@
 //! [`models::solve_column`], each search started from its neighbours' answers) at its own
 //! sampling: the statics fill the whole map; a model too slow for that answers a
 //! coarser map over the same ranges, and the full map's time is extrapolated from the time per
-//! cell (the row says so). The simulation uses the `force` drive (a map over F asks what a push
+//! cell (the row says so). The min-norm model answers whole columns (every F of some mu): its
+//! search in a column starts from the cells below, so a short column spreads its first cells'
+//! full searches over fewer cells, and a square sample overstates the whole map's time
+//! (`cargo bench --bench maps` times the whole 400 x 400 map by columns). The simulation uses the `force` drive (a map over F asks what a push
 //! of F does); its reference is the converged rigid dynamics of each cell (the nonsmooth method
 //! at `reference_step_deg`: a fast palm's disc coasts past the closed form), the other rows'
 //! the closed form at F.
@@ -32,9 +35,12 @@ pub struct MapCostSettings {
     pub cells_per_axis: usize,
     /// Cells per axis the statics answer, 2 to cells_per_axis (default: 400, the whole map).
     pub statics_per_axis: usize,
-    /// Cells per axis the min-norm program answers by each path, 2 to cells_per_axis
-    /// (default: 40: 1600 programs' searches, a few seconds).
-    pub min_norm_per_axis: usize,
+    /// Whole columns (every F of one mu) the min-norm program answers by its exact path, 2 to
+    /// cells_per_axis (default: 40: a tenth of the map, a fraction of a second).
+    pub min_norm_columns: usize,
+    /// Whole columns the min-norm program answers by clarabel, 2 to cells_per_axis (default:
+    /// 4: 1600 cells of the 400 x 400 map, about a second).
+    pub clarabel_columns: usize,
     /// Cells per axis the simulation answers, 2 to cells_per_axis (default: 20: each cell
     /// simulates twice, verification included, about a millisecond with RADAU5).
     pub dynamics_per_axis: usize,
@@ -49,7 +55,8 @@ impl Default for MapCostSettings {
         MapCostSettings {
             cells_per_axis: 400,
             statics_per_axis: 400,
-            min_norm_per_axis: 40,
+            min_norm_columns: 40,
+            clarabel_columns: 4,
             dynamics_per_axis: 20,
             reference_step_deg: 0.002,
         }
@@ -62,7 +69,8 @@ impl MapCostSettings {
         check_count("cells_per_axis", self.cells_per_axis, 2, MAX_CELLS_PER_AXIS)?;
         for (key, n) in [
             ("statics_per_axis", self.statics_per_axis),
-            ("min_norm_per_axis", self.min_norm_per_axis),
+            ("min_norm_columns", self.min_norm_columns),
+            ("clarabel_columns", self.clarabel_columns),
             ("dynamics_per_axis", self.dynamics_per_axis),
         ] {
             check_count(key, n, 2, self.cells_per_axis)?;
@@ -85,8 +93,8 @@ pub struct MapCostRow {
     pub model: ModelKind,
     /// How it answers (closed_form, exact, clarabel, radau5, nonsmooth).
     pub method: &'static str,
-    /// Cells per axis it answered.
-    pub sampled_per_axis: usize,
+    /// The sample it answered: mu values by F values (n by n is the whole map).
+    pub sampled: [usize; 2],
     /// Wall time of those cells in s.
     pub measured_s: f64,
     /// Wall time of the full map in s: measured, or extrapolated from the time per cell.
@@ -128,12 +136,14 @@ pub fn run(base: &Config, settings: &MapCostSettings) -> Result<MapCostReport> {
         ..base.clone()
     };
     let n = settings.cells_per_axis;
+    let square = |k: usize| [k, k];
+    let columns = |k: usize| [k, n];
     let plan = [
-        (Source::Statics, settings.statics_per_axis),
-        (Source::MinNormExact, settings.min_norm_per_axis),
+        (Source::Statics, square(settings.statics_per_axis)),
+        (Source::MinNormExact, columns(settings.min_norm_columns)),
         (
             Source::MinNormClarabel { tol: 1e-8 },
-            settings.min_norm_per_axis,
+            columns(settings.clarabel_columns),
         ),
         (
             Source::Simulation {
@@ -142,24 +152,24 @@ pub fn run(base: &Config, settings: &MapCostSettings) -> Result<MapCostReport> {
                 penetration_um: None,
                 verify: base.dynamics.verification.verify,
             },
-            settings.dynamics_per_axis,
+            square(settings.dynamics_per_axis),
         ),
         (
             Source::Nonsmooth {
                 step_deg: base.dynamics.nonsmooth_step_deg(),
                 verify: base.dynamics.verification.verify,
             },
-            settings.dynamics_per_axis,
+            square(settings.dynamics_per_axis),
         ),
     ];
-    let grid = |k: usize| Grid {
+    let grid = |[kx, ky]: [usize; 2]| Grid {
         base: base.scene,
-        x: GridAxis::linear(GridParam::Mu, 0.1, 0.8, k),
-        y: Some(GridAxis::log(GridParam::ForceN, 20.0, 2000.0, k)),
+        x: GridAxis::linear(GridParam::Mu, 0.1, 0.8, kx),
+        y: Some(GridAxis::log(GridParam::ForceN, 20.0, 2000.0, ky)),
     };
     // The simulation's reference per cell, the converged rigid dynamics, computed once per
     // sampling and disc motion (the regularised disc slides; the nonsmooth rows' as set).
-    let mut rigid: Vec<((usize, DiscMotion), Vec<Reference>)> = Vec::new();
+    let mut rigid: Vec<(([usize; 2], DiscMotion), Vec<Reference>)> = Vec::new();
     let mut rows = Vec::new();
     for (src, k) in plan {
         let grid = grid(k);
@@ -209,14 +219,14 @@ pub fn run(base: &Config, settings: &MapCostSettings) -> Result<MapCostReport> {
                 _ => {}
             }
         }
-        let ratio = (n * n) as f64 / (k * k) as f64;
+        let ratio = (n * n) as f64 / (k[0] * k[1]) as f64;
         rows.push(MapCostRow {
             model: src.model(),
             method: src.method(),
-            sampled_per_axis: k,
+            sampled: k,
             measured_s: measured,
             full_map_s: measured * ratio,
-            extrapolated: k < n,
+            extrapolated: k != [n, n],
             threads: rayon::current_num_threads(),
             max_x_rel_error: max_err,
             status_mismatches: mismatches,
@@ -238,7 +248,8 @@ mod tests {
         let s = MapCostSettings {
             cells_per_axis: 8,
             statics_per_axis: 8,
-            min_norm_per_axis: 4,
+            min_norm_columns: 4,
+            clarabel_columns: 2,
             dynamics_per_axis: 2,
             ..Default::default()
         };
