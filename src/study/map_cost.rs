@@ -169,7 +169,9 @@ pub fn run(base: &Config, settings: &MapCostSettings) -> Result<MapCostReport> {
     };
     // The simulation's reference per cell, the converged rigid dynamics, computed once per
     // sampling and disc motion (the regularised disc slides; the nonsmooth rows' as set).
-    let mut rigid: Vec<(([usize; 2], DiscMotion), Vec<Reference>)> = Vec::new();
+    // Keyed by the sample (mu values, F values) and the disc's motion.
+    type Key = ([usize; 2], DiscMotion);
+    let mut rigid: Vec<(Key, Vec<Reference>)> = Vec::new();
     let mut rows = Vec::new();
     for (src, k) in plan {
         let grid = grid(k);
