@@ -79,7 +79,8 @@ pub struct AccuracyArgs {
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]
     pub format: TableFormat,
     /// Also write accuracy.md, accuracy.csv, accuracy.json, accuracy_map.csv and the chart
-    /// accuracy.svg / accuracy.png (wall time: not byte-identical) here.
+    /// accuracy.svg / accuracy.png (wall time: not byte-identical) here, and index.html, the
+    /// folder's gallery page with the chart's read-off (a render's charts there are kept).
     #[arg(long, value_name = "DIR")]
     pub out_dir: Option<PathBuf>,
     #[command(flatten)]
