@@ -209,15 +209,14 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
     }))
     .expect("plain structs serialise")
         + "\n";
-    if !out_paths.is_empty() {
+    if let Some(dir) = a.out_dir.as_deref() {
         let map_csv = map.as_ref().map(map_csv).transpose()?.unwrap_or_default();
         let drawn = crate::charts::error_time::render(&report, &config.scene)?;
         // Without the map (--map-cells 0) its file is not written.
         let keep = |p: &Path| map.is_some() || !p.ends_with("accuracy_map.csv");
-        let dir = a.out_dir.as_deref().unwrap_or(Path::new("."));
-        let files: Vec<String> = OUT_FILES[..6]
+        let files: Vec<String> = OUT_FILES
             .iter()
-            .filter(|f| keep(Path::new(f)))
+            .filter(|f| **f != "index.html" && keep(Path::new(f)))
             .map(|f| f.to_string())
             .collect();
         let entry = Entry {
