@@ -16,9 +16,14 @@
 //! picture it reads off (161 of 844 px on the V-locator's optimum chart). The pinned read-offs
 //! below the picture hold the whole text.
 //!
+//! `jamchart accuracy --out-dir` writes the same page for its error-time chart, which is not a
+//! scene ([`Entry`] is any chart's section; [`Entry::of_scene`] a scene's): its read-off is
+//! the nearest point's row of `accuracy.csv` ([`super::error_time::read_off`]).
+//!
 //! The page lists every chart in the folder, however many renders wrote it: each chart's section
-//! sits between `<!-- chart NAME -->` and `<!-- /chart -->`, and a render keeps the sections of
-//! the previous page whose pictures are still in the folder ([`index_html`]).
+//! sits between `<!-- chart NAME -->` and `<!-- /chart -->`, and a render (or an accuracy run)
+//! keeps the sections of the previous page whose pictures are still in the folder
+//! ([`index_html`]).
 
 use std::fmt::Write;
 
