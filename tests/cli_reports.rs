@@ -201,3 +201,72 @@ fn stability_runs_the_named_cases_and_refuses_an_unknown_one() {
         "{err}"
     );
 }
+
+/// The section of chart `name` in a gallery page, markers included.
+fn section_of<'a>(page: &'a str, name: &str) -> &'a str {
+    let open = format!("<!-- chart {name} -->");
+    let start = page
+        .find(&open)
+        .unwrap_or_else(|| panic!("no section {name}:\n{page}"));
+    let end = start + page[start..].find("<!-- /chart -->").unwrap();
+    &page[start..end]
+}
+
+/// `accuracy --out-dir` wrote its error-time chart without a gallery page: it writes
+/// index.html with the chart's section (its read-off, the command, links to its files; no
+/// link to the map's CSV it did not write), keeps the section of a chart `render` drew into
+/// the folder before, and a later `render` keeps the accuracy section as written (before, a
+/// picture no render recorded got a bare section without read-off).
+#[test]
+fn accuracy_writes_a_gallery_section_that_render_keeps() {
+    let dir = tempfile::tempdir().unwrap();
+    let render = |scene: &str| {
+        let r = jamchart(
+            dir.path(),
+            &["render", scene, "--out", "o", "--format", "svg"],
+        );
+        assert_eq!(r.status.code(), Some(0), "{}", stderr(&r));
+        std::fs::read_to_string(dir.path().join("o/index.html")).unwrap()
+    };
+    let first = render("fig3");
+    let accuracy = [
+        "accuracy",
+        "--methods",
+        "radau5",
+        "--tolerances",
+        "1e-3",
+        "--penetrations",
+        "none",
+        "--runs",
+        "1",
+        "--map-cells",
+        "0",
+        "--out-dir",
+        "o",
+    ];
+    let r = jamchart(dir.path(), &accuracy);
+    assert_eq!(r.status.code(), Some(0), "{}", stderr(&r));
+    let page = std::fs::read_to_string(dir.path().join("o/index.html")).unwrap();
+    let section = section_of(&page, "accuracy");
+    assert!(
+        section.contains("<figure class=\"readoff\" data-chart=\"accuracy\">"),
+        "{section}"
+    );
+    assert!(section.contains("\"kind\":\"points\""), "{section}");
+    for f in ["md", "csv", "json", "svg", "png"] {
+        let link = format!("<a href=\"accuracy.{f}\">accuracy.{f}</a>");
+        assert!(section.contains(&link), "{link} missing:\n{section}");
+    }
+    assert!(!section.contains("accuracy_map.csv"), "{section}");
+    assert!(
+        section.contains(&format!(
+            "Reproduce: <code>jamchart {}</code>",
+            accuracy.join(" ")
+        )),
+        "{section}"
+    );
+    assert_eq!(section_of(&page, "fig3"), section_of(&first, "fig3"));
+    let again = render("fig7b");
+    assert_eq!(section_of(&again, "accuracy"), section);
+    assert!(again.contains("<section id=\"fig3\">"), "{again}");
+}

@@ -5,17 +5,31 @@
 //! measured table by `jamchart accuracy --out-dir` and is not a scene: it is kept out of the
 //! byte-identity check (`charts/SHA256SUMS`). The counted-cost chart of the integrators is the
 //! scene `integration-error` ([`super::work_precision`]).
+//!
+//! Its read-off in the gallery page that `accuracy --out-dir` writes is of kind `points`
+//! ([`super::readoff`]): each panel's drawn points (median wall time, error) name their row of
+//! `accuracy.csv` ([`rows`]), so the page shows the row of the point nearest the pointer, cell
+//! for cell as the file has it.
 
 use plotters::prelude::*;
+use serde::Serialize;
 
+use super::axes::{PlotFrame, record_frames};
 use super::print::Ink;
 use super::style::{self, LineKind, Marker};
 use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
-use super::{output, scene_subtitle_with};
+use super::{output, readoff, scene_subtitle_with};
+use crate::csv_out::{Dec, dec};
+use crate::dynamics::Method;
 use crate::error::{Error, Result};
 use crate::models::ModelKind;
-use crate::scene::SceneParams;
+use crate::scene::{JamStatus, SceneParams};
+use crate::study::ReferenceKind;
 use crate::study::accuracy::{AccuracyReport, AccuracyRow};
+
+/// The chart's title.
+pub const TITLE: &str =
+    "Error against run time: x_jam against the physics and against the converged answer";
 
 /// Picture size in px.
 const SIZE: (u32, u32) = (1100, 1100);
@@ -29,26 +43,39 @@ const MARKERS: [Marker; 6] = [
     Marker::Diamond,
 ];
 
+/// The y value of row `r` on the error panel (0) or the integration panel (1), where the
+/// figure draws it: the error panel holds the min-norm rows and the simulations, the
+/// integration panel the simulations; a zero or missing error is not drawn (log axes).
+fn drawn_y(panel: usize, r: &AccuracyRow) -> Option<f64> {
+    let simulated = r.penetration_um.is_some() || r.method == "nonsmooth";
+    let y = match panel {
+        0 if simulated || r.method == "clarabel" || r.method == "exact" => r.x_rel_error,
+        1 if simulated => r.integration_error_mm,
+        _ => None,
+    };
+    y.filter(|v| *v > 0.0)
+}
+
 /// The figure of `report` for `scene`.
 pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
     let rows = &report.rows;
     let time = |r: &AccuracyRow| r.median_time_s;
-    let pts = |f: &dyn Fn(&AccuracyRow) -> bool, y: &dyn Fn(&AccuracyRow) -> Option<f64>| {
+    let pts = |f: &dyn Fn(&AccuracyRow) -> bool, panel: usize| {
         rows.iter()
             .filter(|r| f(r))
-            .filter_map(|r| y(r).filter(|v| *v > 0.0).map(|v| (time(r), v)))
+            .filter_map(|r| drawn_y(panel, r).map(|v| (time(r), v)))
             .collect::<Vec<_>>()
     };
     let mut err_curves = vec![
         Curve {
             label: "min-norm by clarabel (tol 1e-2 … 1e-10)".into(),
             style: CurveStyle::LinePoints(LineKind::Dotted, Marker::Triangle),
-            points: pts(&|r| r.method == "clarabel", &|r| r.x_rel_error),
+            points: pts(&|r| r.method == "clarabel", 0),
         },
         Curve {
             label: "min-norm, exact path".into(),
             style: CurveStyle::Points(Marker::Diamond),
-            points: pts(&|r| r.method == "exact", &|r| r.x_rel_error),
+            points: pts(&|r| r.method == "exact", 0),
         },
     ];
     let mut int_curves = Vec::new();
@@ -84,12 +111,12 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
         err_curves.push(Curve {
             label: label.clone(),
             style: CurveStyle::LinePoints(line, marker),
-            points: pts(&sel, &|r| r.x_rel_error),
+            points: pts(&sel, 0),
         });
         int_curves.push(Curve {
             label,
             style: CurveStyle::LinePoints(line, marker),
-            points: pts(&sel, &|r| r.integration_error_mm),
+            points: pts(&sel, 1),
         });
     }
     let ns_label = "nonsmooth, rigid contacts (step 0.3 … 0.01 deg)".to_string();
@@ -98,12 +125,12 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
     err_curves.push(Curve {
         label: ns_label.clone(),
         style: ns_style,
-        points: pts(&ns, &|r| r.x_rel_error),
+        points: pts(&ns, 0),
     });
     int_curves.push(Curve {
         label: ns_label,
         style: ns_style,
-        points: pts(&ns, &|r| r.integration_error_mm),
+        points: pts(&ns, 1),
     });
     err_curves.retain(|c| !c.points.is_empty());
     int_curves.retain(|c| !c.points.is_empty());
@@ -170,8 +197,7 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
         ));
     }
     Figure {
-        title: "Error against run time: x_jam against the physics and against the converged answer"
-            .into(),
+        title: TITLE.into(),
         subtitle: scene_subtitle_with("every model through the port", scene, &[]),
         panels: vec![
             panel(
@@ -184,8 +210,19 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
     }
 }
 
-/// The chart as SVG and PNG bytes.
-pub fn render(report: &AccuracyReport, scene: &SceneParams) -> Result<(Vec<u8>, Vec<u8>)> {
+/// The chart as drawn: its pictures and the gallery's read-off.
+pub struct Drawn {
+    /// The SVG picture.
+    pub svg: Vec<u8>,
+    /// The PNG picture.
+    pub png: Vec<u8>,
+    /// The read-off ([`read_off`]) as compact JSON, numbers rounded as every chart's are.
+    pub read_off: String,
+}
+
+/// The chart as SVG and PNG, and its read-off from the PNG's frames (both pictures are one
+/// drawing at one size).
+pub fn render(report: &AccuracyReport, scene: &SceneParams) -> Result<Drawn> {
     style::init_fonts();
     let fig = figure(report, scene);
     let (w, h) = SIZE;
@@ -194,8 +231,96 @@ pub fn render(report: &AccuracyReport, scene: &SceneParams) -> Result<(Vec<u8>, 
         message: m,
     };
     let svg = output::svg(w, h, 1.0, Ink::Colour, |root| draw_on(&fig, root)).map_err(err)?;
-    let png = output::png(w, h, 1.0, Ink::Colour, |root| draw_on(&fig, root)).map_err(err)?;
-    Ok((svg, png))
+    let (png, frames) =
+        record_frames(|| output::png(w, h, 1.0, Ink::Colour, |root| draw_on(&fig, root)));
+    Ok(Drawn {
+        svg,
+        png: png.map_err(err)?,
+        read_off: readoff::rounded(read_off(report, &fig, &frames)).to_string(),
+    })
+}
+
+/// The gallery's read-off ([`readoff`], kind `points`): in each panel the drawn point nearest
+/// the pointer, with its row of `accuracy.csv` ([`rows`]). Without a frame per panel (nothing
+/// drawn) the panels are empty and the page reads nothing.
+pub fn read_off(report: &AccuracyReport, fig: &Figure, frames: &[PlotFrame]) -> serde_json::Value {
+    let params = ["x_rel_error", "integration_error_mm"];
+    let panels: Vec<_> = (fig.panels.iter().zip(frames).enumerate())
+        .map(|(k, (p, f))| {
+            let points: Vec<_> = (report.rows.iter().enumerate())
+                .filter_map(|(i, r)| drawn_y(k, r).map(|y| (r.median_time_s, y, i)))
+                .collect();
+            let x = readoff::axis("median_time_s", &p.x);
+            readoff::points_panel(f, x, readoff::axis(params[k], &p.y), &points)
+        })
+        .collect();
+    serde_json::json!({
+        "kind": "points",
+        "crosshair": true,
+        "panels": panels,
+        "rows": rows(report),
+    })
+}
+
+/// One row of `accuracy.csv`: the typed row with its reason as a tag and a sentence.
+#[derive(Serialize)]
+pub struct CsvRow<'a> {
+    model: ModelKind,
+    method: &'a str,
+    tolerance: Option<Dec>,
+    penetration_um: Option<Dec>,
+    step_deg: Option<Dec>,
+    status: JamStatus,
+    theta_jam_deg: Option<Dec>,
+    x_jam_mm: Option<Dec>,
+    reference: ReferenceKind,
+    reference_status: JamStatus,
+    theta_ref_deg: Option<Dec>,
+    x_ref_mm: Option<Dec>,
+    x_error_mm: Option<Dec>,
+    x_rel_error: Option<Dec>,
+    theta_error_deg: Option<Dec>,
+    converged_by: Option<Method>,
+    x_converged_mm: Option<Dec>,
+    integration_error_mm: Option<Dec>,
+    median_time_s: Dec,
+    runs: usize,
+    steps: u64,
+    evaluations: u64,
+    reason: Option<&'static str>,
+    reason_detail: Option<String>,
+}
+
+/// The rows of `accuracy.csv`, one per row of `r`, in its order.
+pub fn rows(r: &AccuracyReport) -> Vec<CsvRow<'_>> {
+    (r.rows.iter())
+        .map(|x| CsvRow {
+            model: x.model,
+            method: x.method,
+            tolerance: dec(x.tolerance),
+            penetration_um: dec(x.penetration_um),
+            step_deg: dec(x.step_deg),
+            status: x.status,
+            theta_jam_deg: dec(x.theta_jam_deg),
+            x_jam_mm: dec(x.x_jam_mm),
+            reference: x.reference,
+            reference_status: x.reference_status,
+            theta_ref_deg: dec(x.theta_ref_deg),
+            x_ref_mm: dec(x.x_ref_mm),
+            x_error_mm: dec(x.x_error_mm),
+            x_rel_error: dec(x.x_rel_error),
+            theta_error_deg: dec(x.theta_error_deg),
+            converged_by: x.converged_by,
+            x_converged_mm: dec(x.x_converged_mm),
+            integration_error_mm: dec(x.integration_error_mm),
+            median_time_s: Dec(x.median_time_s),
+            runs: x.runs,
+            steps: x.steps,
+            evaluations: x.evaluations,
+            reason: x.reason.as_ref().map(|w| w.tag()),
+            reason_detail: x.reason.as_ref().map(|w| w.to_string()),
+        })
+        .collect()
 }
 
 fn draw_on<DB: DrawingBackend>(
@@ -204,4 +329,95 @@ fn draw_on<DB: DrawingBackend>(
 ) -> std::result::Result<(), String> {
     root.fill(&WHITE).map_err(|e| e.to_string())?;
     fig.draw(root).map_err(|e| e.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A row of `model` and `method` at `time_s` with errors `rel` and `integration_mm`.
+    fn row(model: ModelKind, method: &'static str, pen: Option<f64>, at: [f64; 3]) -> AccuracyRow {
+        let [time_s, rel, integration_mm] = at;
+        AccuracyRow {
+            model,
+            method,
+            tolerance: Some(1e-3),
+            penetration_um: pen,
+            step_deg: None,
+            status: JamStatus::Jams,
+            theta_jam_deg: Some(43.6),
+            x_jam_mm: Some(25.0),
+            reference: ReferenceKind::Rigid,
+            reference_status: JamStatus::Jams,
+            theta_ref_deg: Some(43.6),
+            x_ref_mm: Some(25.0),
+            x_error_mm: Some(rel * 25.0),
+            x_rel_error: Some(rel),
+            theta_error_deg: Some(0.0),
+            converged_by: None,
+            x_converged_mm: None,
+            integration_error_mm: Some(integration_mm),
+            median_time_s: time_s,
+            runs: 1,
+            steps: 1,
+            evaluations: 1,
+            reason: None,
+        }
+    }
+
+    /// The page's read-off must name the points the chart draws, no more and no fewer: each
+    /// panel's read-off points are exactly the figure's points of that panel (a row the
+    /// figure leaves out, the statics at error 0, a zero integration error on a log axis, is
+    /// not read), each naming a row with that time and error.
+    #[test]
+    fn the_read_off_names_exactly_the_drawn_points_and_their_rows() {
+        let (s, m, d) = (ModelKind::Statics, ModelKind::MinNorm, ModelKind::Dynamics);
+        let report = AccuracyReport {
+            references: Vec::new(),
+            converged: Vec::new(),
+            rows: vec![
+                row(s, "closed_form", None, [3e-6, 0.0, 0.0]),
+                row(m, "clarabel", None, [1e-4, 1e-7, 0.0]),
+                row(m, "exact", None, [2e-4, 1e-9, 0.0]),
+                row(d, "radau5", Some(10.0), [1e-3, 1e-3, 1e-5]),
+                row(d, "dopri5", Some(1.0), [2e-3, 2e-3, 0.0]),
+                row(d, "nonsmooth", None, [3e-3, 3e-4, 1e-6]),
+            ],
+        };
+        let fig = figure(&report, &SceneParams::default());
+        let frame = PlotFrame {
+            left: 0.1,
+            top: 0.1,
+            right: 0.9,
+            bottom: 0.4,
+        };
+        let doc = read_off(&report, &fig, &[frame, frame]);
+        let rows = doc["rows"].as_array().unwrap();
+        assert_eq!(rows.len(), report.rows.len());
+        for (k, panel) in fig.panels.iter().enumerate() {
+            let mut drawn: Vec<(f64, f64)> = (panel.curves.iter())
+                .flat_map(|c| c.points.clone())
+                .collect();
+            let mut read: Vec<(f64, f64)> = (doc["panels"][k]["points"].as_array().unwrap())
+                .iter()
+                .map(|p| {
+                    let (x, y, i) = (
+                        p[0].as_f64().unwrap(),
+                        p[1].as_f64().unwrap(),
+                        p[2].as_u64().unwrap(),
+                    );
+                    let r = &report.rows[i as usize];
+                    let want = [r.x_rel_error, r.integration_error_mm][k];
+                    assert_eq!((r.median_time_s, want), (x, Some(y)), "panel {k}: {p}");
+                    (x, y)
+                })
+                .collect();
+            drawn.sort_by(|a, b| a.0.total_cmp(&b.0));
+            read.sort_by(|a, b| a.0.total_cmp(&b.0));
+            assert_eq!(read, drawn, "panel {k}");
+        }
+        assert_eq!(doc["panels"][0]["points"].as_array().unwrap().len(), 5);
+        assert_eq!(doc["panels"][1]["points"].as_array().unwrap().len(), 2);
+        assert_eq!(rows[3]["median_time_s"], "0.001");
+    }
 }

@@ -16,24 +16,60 @@
 //! picture it reads off (161 of 844 px on the V-locator's optimum chart). The pinned read-offs
 //! below the picture hold the whole text.
 //!
+//! `jamchart accuracy --out-dir` writes the same page for its error-time chart, which is not a
+//! scene ([`Entry`] is any chart's section; [`Entry::of_scene`] a scene's): its read-off is
+//! the nearest point's row of `accuracy.csv` ([`super::error_time::read_off`]).
+//!
 //! The page lists every chart in the folder, however many renders wrote it: each chart's section
-//! sits between `<!-- chart NAME -->` and `<!-- /chart -->`, and a render keeps the sections of
-//! the previous page whose pictures are still in the folder ([`index_html`]).
+//! sits between `<!-- chart NAME -->` and `<!-- /chart -->`, and a render (or an accuracy run)
+//! keeps the sections of the previous page whose pictures are still in the folder
+//! ([`index_html`]).
 
 use std::fmt::Write;
 
 use super::spec::Scene;
 
-/// One rendered scene: the scene and the names of the files written for it (e.g. `fig3.svg`).
+/// One chart's section: a rendered scene ([`Entry::of_scene`]) or a chart drawn by another
+/// command (`jamchart accuracy`'s error-time chart), and the names of the files written for it.
 pub struct Entry<'a> {
-    /// The scene.
-    pub scene: &'a Scene,
+    /// The chart's name: its file stem and its section's id (e.g. `fig3`).
+    pub name: String,
+    /// The chart's title.
+    pub title: String,
+    /// The chart kind (`kinds.rs`), or what drew a chart that is not a scene.
+    pub kind: String,
+    /// A sentence under the name, where the chart needs one (e.g. why it is not hash-checked).
+    pub note: Option<&'a str>,
+    /// The heading of the parameter table ("scene", "V-block") and the parameters by their
+    /// TOML keys.
+    pub parameters: (&'static str, toml::Table),
     /// File names in the output folder, data first.
     pub files: Vec<String>,
     /// The command that reproduces the chart, as a user would type it.
     pub command: String,
     /// The read-off data ([`super::readoff`]) as compact JSON; None for kinds without one.
     pub read_off: Option<&'a str>,
+}
+
+impl<'a> Entry<'a> {
+    /// The section of a rendered scene: its name, title and kind, and the parameters it was
+    /// drawn with (a V-locator chart's V-block, else the palm scene's).
+    pub fn of_scene(scene: &Scene, files: Vec<String>, command: String) -> Entry<'a> {
+        let parameters = match scene.chart.locator() {
+            Some(l) => ("V-block", toml::Table::try_from(l)),
+            None => ("scene", toml::Table::try_from(scene.params)),
+        };
+        Entry {
+            name: scene.name.clone(),
+            title: scene.title.clone(),
+            kind: scene.chart.kind().to_string(),
+            note: None,
+            parameters: (parameters.0, parameters.1.unwrap_or_default()),
+            files,
+            command,
+            read_off: None,
+        }
+    }
 }
 
 /// Opens a chart's section: `<!-- chart NAME -->`.
@@ -50,7 +86,7 @@ pub fn index_html(entries: &[Entry], previous: Option<&str>, files: &[String]) -
         .map(|e| {
             let mut s = String::new();
             section(&mut s, e);
-            (e.scene.name.clone(), s)
+            (e.name.clone(), s)
         })
         .collect();
     let has_picture = |name: &str| {
@@ -169,25 +205,25 @@ fn bare_section(name: &str, files: &[&String]) -> String {
 }
 
 fn section(s: &mut String, e: &Entry) {
-    let sc = e.scene;
-    let name = escape(&sc.name);
+    let (name, title) = (escape(&e.name), escape(&e.title));
     let _ = writeln!(
         s,
-        "{OPEN}{name} -->\n<section id=\"{name}\">\n<h2>{}</h2>\n<p><code>{name}</code>, chart kind <code>{}</code></p>",
-        escape(&sc.title),
-        sc.chart.kind()
+        "{OPEN}{name} -->\n<section id=\"{name}\">\n<h2>{title}</h2>\n<p><code>{name}</code>, chart kind <code>{}</code></p>",
+        escape(&e.kind)
     );
+    if let Some(note) = e.note {
+        let _ = writeln!(s, "<p>{}</p>", escape(note));
+    }
     let picture = ["png", "svg"]
         .iter()
         .find_map(|ext| e.files.iter().find(|f| f.ends_with(&format!(".{ext}"))));
     match (picture, e.read_off) {
-        (Some(p), Some(json)) => read_off_figure(s, &name, &escape(p), &escape(&sc.title), json),
+        (Some(p), Some(json)) => read_off_figure(s, &name, &escape(p), &title, json),
         (Some(p), None) => {
             let p = escape(p);
             let _ = writeln!(
                 s,
-                "<a href=\"{p}\"><img src=\"{p}\" alt=\"{}\" loading=\"lazy\"></a>",
-                escape(&sc.title)
+                "<a href=\"{p}\"><img src=\"{p}\" alt=\"{title}\" loading=\"lazy\"></a>"
             );
         }
         (None, _) => {}
@@ -199,26 +235,21 @@ fn section(s: &mut String, e: &Entry) {
         .collect();
     let _ = writeln!(s, "<p>Files: {}</p>", links.join(" · "));
     let _ = writeln!(s, "<p>Reproduce: <code>{}</code></p>", escape(&e.command));
-    // The parameters the chart was drawn with, by their TOML keys: a V-locator chart's V-block,
-    // else the palm scene's.
-    let (what, table) = match sc.chart.locator() {
-        Some(l) => ("V-block", toml::Table::try_from(l)),
-        None => ("scene", toml::Table::try_from(sc.params)),
-    };
+    let (what, table) = &e.parameters;
     let _ = writeln!(
         s,
         "<table>\n<tr><th>{what} parameter</th><th>value</th></tr>"
     );
-    for (k, v) in table.unwrap_or_default() {
+    for (k, v) in table {
         let v = match v {
-            toml::Value::String(t) => t,
-            toml::Value::Float(f) => crate::settings::number_text(f),
+            toml::Value::String(t) => t.clone(),
+            toml::Value::Float(f) => crate::settings::number_text(*f),
             other => other.to_string(),
         };
         let _ = writeln!(
             s,
             "<tr><td><code>{}</code></td><td>{}</td></tr>",
-            escape(&k),
+            escape(k),
             escape(&v)
         );
     }
@@ -277,12 +308,11 @@ mod tests {
             })
             .unwrap();
         scene.title = "a <b> & c".into();
-        let e = Entry {
-            scene: &scene,
-            files: vec!["x.csv".into(), "x.svg".into(), "x.png".into()],
-            command: "jamchart render x".into(),
-            read_off: None,
-        };
+        let e = Entry::of_scene(
+            &scene,
+            vec!["x.csv".into(), "x.svg".into(), "x.png".into()],
+            "jamchart render x".into(),
+        );
         let html = index_html(&[e], None, &[]);
         assert!(html.contains("a &lt;b&gt; &amp; c"), "{html}");
         assert!(html.contains("<img src=\"x.png\""), "{html}");
@@ -301,15 +331,14 @@ mod tests {
             .unwrap()
     }
 
-    fn entry<'a>(scene: &'a Scene) -> Entry<'a> {
-        Entry {
+    fn entry<'a>(scene: &Scene) -> Entry<'a> {
+        Entry::of_scene(
             scene,
-            files: ["csv", "svg", "png"]
+            ["csv", "svg", "png"]
                 .map(|ext| format!("{}.{ext}", scene.name))
                 .into(),
-            command: format!("jamchart render {}", scene.name),
-            read_off: None,
-        }
+            format!("jamchart render {}", scene.name),
+        )
     }
 
     /// A second `render fig3` into the same folder replaced index.html with fig3 alone: the

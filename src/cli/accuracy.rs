@@ -2,21 +2,22 @@
 //! error beside it, and what a 400 x 400 map costs by each model.
 
 use std::fmt::Write as _;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use clap::{ArgAction, Args};
 use serde::Serialize;
 
 use super::args::{SceneArgs, TableFormat, parse_f64};
 use super::dynamics::DynamicsArgs;
+use super::gallery::{page, typed_command};
 use super::progress::{self, Quiet};
 use crate::atomic::{Output, check_all, write_all};
+use crate::charts::gallery::Entry;
 use crate::csv_out::{Dec, dec};
 use crate::dynamics::Method;
 use crate::error::{Error, Result};
 use crate::models::ModelKind;
 use crate::numbers::{angle_deg, length_mm, ratio};
-use crate::scene::JamStatus;
 use crate::settings::number_text;
 use crate::study::ReferenceKind;
 use crate::study::accuracy::{self, AccuracyReport, AccuracyRow, AccuracySettings};
@@ -79,22 +80,30 @@ pub struct AccuracyArgs {
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]
     pub format: TableFormat,
     /// Also write accuracy.md, accuracy.csv, accuracy.json, accuracy_map.csv and the chart
-    /// accuracy.svg / accuracy.png (wall time: not byte-identical) here.
+    /// accuracy.svg / accuracy.png (wall time: not byte-identical) here, and index.html, the
+    /// folder's gallery page with the chart's read-off (a render's charts there are kept).
     #[arg(long, value_name = "DIR")]
     pub out_dir: Option<PathBuf>,
     #[command(flatten)]
     pub quiet: Quiet,
 }
 
-/// The files of `--out-dir`, in the order they are written.
-const OUT_FILES: [&str; 6] = [
+/// The files of `--out-dir`, in the order they are written: the gallery page last, with the
+/// chart's section and read-off beside those of any charts already in the folder.
+const OUT_FILES: [&str; 7] = [
     "accuracy.md",
     "accuracy.csv",
     "accuracy.json",
     "accuracy_map.csv",
     "accuracy.svg",
     "accuracy.png",
+    "index.html",
 ];
+
+/// Why the error-time chart's section is not like a scene's.
+const GALLERY_NOTE: &str = "Drawn by jamchart accuracy from measured wall time (median of the \
+     runs): the picture and the times differ between machines and runs, so it is not \
+     hash-checked. The read-off shows the nearest point's row of accuracy.csv.";
 
 /// The settings the flags default to: their help shows these, derived, never written by hand.
 fn defaults() -> AccuracySettings {
@@ -202,21 +211,40 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
     }))
     .expect("plain structs serialise")
         + "\n";
-    if !out_paths.is_empty() {
+    if let Some(dir) = a.out_dir.as_deref() {
         let map_csv = map.as_ref().map(map_csv).transpose()?.unwrap_or_default();
-        let (svg, png) = crate::charts::error_time::render(&report, &config.scene)?;
-        let contents: [&[u8]; 6] = [
+        let drawn = crate::charts::error_time::render(&report, &config.scene)?;
+        // Without the map (--map-cells 0) its file is not written.
+        let keep = |p: &Path| map.is_some() || !p.ends_with("accuracy_map.csv");
+        let files: Vec<String> = OUT_FILES
+            .iter()
+            .filter(|f| **f != "index.html" && keep(Path::new(f)))
+            .map(|f| f.to_string())
+            .collect();
+        let entry = Entry {
+            name: "accuracy".into(),
+            title: crate::charts::error_time::TITLE.into(),
+            kind: "error_time".into(),
+            note: Some(GALLERY_NOTE),
+            parameters: (
+                "scene",
+                toml::Table::try_from(config.scene).unwrap_or_default(),
+            ),
+            files,
+            command: typed_command(),
+            read_off: Some(&drawn.read_off),
+        };
+        let html = page(dir, &[entry])?;
+        let contents: [&[u8]; 7] = [
             md.as_bytes(),
             csv.as_bytes(),
             json.as_bytes(),
             map_csv.as_bytes(),
-            &svg,
-            &png,
+            &drawn.svg,
+            &drawn.png,
+            html.as_bytes(),
         ];
-        // Without the map (--map-cells 0) its file is not written.
-        write_set(&out_paths, &contents, |p| {
-            map.is_some() || !p.ends_with("accuracy_map.csv")
-        })?;
+        write_set(&out_paths, &contents, keep)?;
     }
     Ok(match a.format {
         TableFormat::Text => md,
@@ -449,63 +477,8 @@ fn floors(r: &AccuracyReport) -> String {
     s
 }
 
-/// One CSV row: the typed row with its reason as a tag and a sentence.
-#[derive(Serialize)]
-struct CsvRow<'a> {
-    model: ModelKind,
-    method: &'a str,
-    tolerance: Option<Dec>,
-    penetration_um: Option<Dec>,
-    step_deg: Option<Dec>,
-    status: JamStatus,
-    theta_jam_deg: Option<Dec>,
-    x_jam_mm: Option<Dec>,
-    reference: ReferenceKind,
-    reference_status: JamStatus,
-    theta_ref_deg: Option<Dec>,
-    x_ref_mm: Option<Dec>,
-    x_error_mm: Option<Dec>,
-    x_rel_error: Option<Dec>,
-    theta_error_deg: Option<Dec>,
-    converged_by: Option<Method>,
-    x_converged_mm: Option<Dec>,
-    integration_error_mm: Option<Dec>,
-    median_time_s: Dec,
-    runs: usize,
-    steps: u64,
-    evaluations: u64,
-    reason: Option<&'static str>,
-    reason_detail: Option<String>,
-}
-
 fn csv_rows(r: &AccuracyReport) -> Result<String> {
-    let rows = r.rows.iter().map(|x| CsvRow {
-        model: x.model,
-        method: x.method,
-        tolerance: dec(x.tolerance),
-        penetration_um: dec(x.penetration_um),
-        step_deg: dec(x.step_deg),
-        status: x.status,
-        theta_jam_deg: dec(x.theta_jam_deg),
-        x_jam_mm: dec(x.x_jam_mm),
-        reference: x.reference,
-        reference_status: x.reference_status,
-        theta_ref_deg: dec(x.theta_ref_deg),
-        x_ref_mm: dec(x.x_ref_mm),
-        x_error_mm: dec(x.x_error_mm),
-        x_rel_error: dec(x.x_rel_error),
-        theta_error_deg: dec(x.theta_error_deg),
-        converged_by: x.converged_by,
-        x_converged_mm: dec(x.x_converged_mm),
-        integration_error_mm: dec(x.integration_error_mm),
-        median_time_s: Dec(x.median_time_s),
-        runs: x.runs,
-        steps: x.steps,
-        evaluations: x.evaluations,
-        reason: x.reason.as_ref().map(|w| w.tag()),
-        reason_detail: x.reason.as_ref().map(|w| w.to_string()),
-    });
-    to_csv(rows)
+    to_csv(crate::charts::error_time::rows(r).into_iter())
 }
 
 /// One row of the map's CSV: the typed row with plain decimals.
@@ -558,6 +531,7 @@ pub(crate) fn to_csv<T: Serialize>(rows: impl Iterator<Item = T>) -> Result<Stri
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::JamStatus;
     use clap::Parser;
 
     /// The accuracy report's flags carried hand-written `[default: ..]` texts beside the

@@ -5,6 +5,7 @@ mod accuracy;
 mod args;
 mod design;
 mod dynamics;
+mod gallery;
 mod guidance;
 #[cfg(test)]
 mod help_tests;

@@ -12,6 +12,7 @@ use crate::charts::{self, Formats, Rendered, Scene, SceneSource};
 use crate::error::{Error, Result};
 
 use super::Done;
+use super::gallery::{self, shell_word};
 use super::manifest;
 use super::progress::{self, Quiet};
 use super::read_off::{self, ReadOffArg};
@@ -229,16 +230,6 @@ fn reproduce_command(a: &RenderArgs, name: &str) -> String {
         .join(" ")
 }
 
-/// `w` quoted for a POSIX shell when it holds anything but plain characters.
-fn shell_word(w: &str) -> String {
-    let plain = |c: char| c.is_ascii_alphanumeric() || "-_./=:,+@%".contains(c);
-    if !w.is_empty() && w.chars().all(plain) {
-        w.to_string()
-    } else {
-        format!("'{}'", w.replace('\'', "'\\''"))
-    }
-}
-
 /// A map's cells CSV is written to its file as it is made.
 impl Writes for charts::Cells {
     fn write_into(&self, out: &mut dyn std::io::Write) -> std::io::Result<()> {
@@ -411,33 +402,20 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
         .iter()
         .zip(&rendered)
         .map(|(scene, r)| charts::gallery::Entry {
-            scene,
-            files: files_of(Path::new(""), r)
-                .iter()
-                .map(|(p, _)| p.display().to_string())
-                .collect(),
-            command: reproduce_command(a, &scene.name),
             read_off: r.read_off.as_deref(),
+            ..charts::gallery::Entry::of_scene(
+                scene,
+                files_of(Path::new(""), r)
+                    .iter()
+                    .map(|(p, _)| p.display().to_string())
+                    .collect(),
+                reproduce_command(a, &scene.name),
+            )
         })
         .collect();
     // The page lists every chart in the folder: the previous page's sections of charts not
     // drawn now, and the pictures of other runs.
-    let previous = match std::fs::read_to_string(&index) {
-        Ok(text) => Some(text),
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
-        Err(e) => return Err(Error::io("read", index.clone(), e)),
-    };
-    let mut files: Vec<String> = std::fs::read_dir(&a.out)
-        .map(|dir| {
-            dir.filter_map(|e| Some(e.ok()?.file_name().to_str()?.to_string()))
-                .filter(|n| !n.starts_with('.'))
-                .collect()
-        })
-        .unwrap_or_default();
-    files.extend(entries.iter().flat_map(|e| e.files.iter().cloned()));
-    files.sort();
-    files.dedup();
-    let html = charts::gallery::index_html(&entries, previous.as_deref(), &files);
+    let html = gallery::page(&a.out, &entries)?;
     let hashes = manifest::hashes(&rendered);
     let manifest_text = manifest::text(&hashes);
     let mut extra = vec![(index.clone(), html.as_bytes())];
