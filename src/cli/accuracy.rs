@@ -325,9 +325,13 @@ fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapse
                 .map_or(String::new(), |w| format!(": {w}"))
         );
     }
+    let timed = match runs {
+        1 => "Wall times are of one run of one answer.".to_string(),
+        n => format!("Wall times are medians of {n} runs of one answer."),
+    };
     let _ = writeln!(
         s,
-        "\nWall times are medians of {runs} runs of one answer.\n\n\
+        "\n{timed}\n\n\
          | model | method | tolerance | penetration [um] | step [deg] | status | theta_jam [deg] | x_jam [mm] | reference | x error | rel. x error | theta error | converged by | integration error | time [ms] | steps | evaluations |\n\
          |---|---|---:|---:|---:|---|---:|---:|---|---:|---:|---:|---|---:|---:|---:|---:|"
     );
