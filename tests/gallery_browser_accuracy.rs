@@ -12,45 +12,15 @@ mod cli_util;
 mod gallery;
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use browser::Kind;
 use cli_util::jamchart;
-use gallery::{pins, red_pixels};
-use serde_json::Value;
-
-/// accuracy.csv as rows of (column, cell text), through the csv crate (a reason's sentence
-/// may hold a comma).
-fn csv_rows(path: &Path) -> Vec<BTreeMap<String, String>> {
-    let mut r = csv::Reader::from_path(path).unwrap();
-    let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
-    r.records()
-        .map(|rec| {
-            header
-                .iter()
-                .cloned()
-                .zip(rec.unwrap().iter().map(String::from))
-                .collect()
-        })
-        .collect()
-}
+use gallery::{assert_row, csv_rows, pins, red_pixels};
 
 /// A cell as a positive number (drawn on a log axis), or None.
 fn positive(row: &BTreeMap<String, String>, key: &str) -> Option<f64> {
     row[key].parse::<f64>().ok().filter(|v| *v > 0.0)
-}
-
-/// A pinned read-off agrees with its CSV row cell for cell: the same text in every column (a
-/// count by value, an empty cell as none), so the page shows the file's digits.
-fn assert_row(pin: &Value, row: &BTreeMap<String, String>) {
-    for (k, want) in row {
-        let got = match &pin[k] {
-            Value::String(s) => s.clone(),
-            Value::Null => String::new(),
-            other => other.to_string(),
-        };
-        assert_eq!(&got, want, "{k} in {pin}");
-    }
 }
 
 /// The report's drawn points per panel as (row index, x, y) from its CSV: the error panel

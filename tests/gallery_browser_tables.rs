@@ -14,25 +14,12 @@ mod cli_util;
 mod gallery;
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use browser::Kind;
 use cli_util::{jamchart, json};
-use gallery::{gallery_of, num, pins, red_pixels};
+use gallery::{assert_row, csv_rows, gallery_of, num, pins, red_pixels};
 use serde_json::Value;
-
-/// A CSV file as rows of (column, cell text).
-fn csv_rows(path: &Path) -> Vec<BTreeMap<String, String>> {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut lines = text.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    lines
-        .map(|l| {
-            let cells = l.split(',').map(String::from);
-            header.iter().map(|h| h.to_string()).zip(cells).collect()
-        })
-        .collect()
-}
 
 /// A CSV cell as a number.
 fn cell(row: &BTreeMap<String, String>, key: &str) -> f64 {
@@ -44,20 +31,6 @@ fn cell(row: &BTreeMap<String, String>, key: &str) -> f64 {
 /// Relative difference of `got` from `want`.
 fn rel(got: f64, want: f64) -> f64 {
     ((got - want) / want).abs()
-}
-
-/// A pinned read-off of a `points` chart agrees with its data file's row cell for cell: the
-/// same text in every column (a number pinned as a number, e.g. the iteration, by value; an
-/// empty cell as none).
-fn assert_row(pin: &Value, row: &BTreeMap<String, String>) {
-    for (k, want) in row {
-        let got = match &pin[k] {
-            Value::String(s) => s.clone(),
-            Value::Null => String::new(),
-            other => other.to_string(),
-        };
-        assert_eq!(&got, want, "{k} in {pin}");
-    }
 }
 
 in_chromium_and_firefox!(

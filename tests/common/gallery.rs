@@ -84,3 +84,33 @@ pub fn red_pixels(png_path: &Path) -> usize {
         .filter(|p| p[0] > 150 && p[0] > p[1].saturating_add(100) && p[1].abs_diff(p[2]) < 30)
         .count()
 }
+
+/// A pinned read-off of a `points` chart agrees with its data file's row cell for cell: the
+/// same text in every column (a number pinned as a number, e.g. the iteration, by value; an
+/// empty cell as none), so the page shows the file's digits.
+pub fn assert_row(pin: &Value, row: &std::collections::BTreeMap<String, String>) {
+    for (k, want) in row {
+        let got = match &pin[k] {
+            Value::String(s) => s.clone(),
+            Value::Null => String::new(),
+            other => other.to_string(),
+        };
+        assert_eq!(&got, want, "{k} in {pin}");
+    }
+}
+
+/// A CSV file as rows of (column, cell text), through the csv crate (a cell may hold a quoted
+/// comma: a failure's reason in accuracy.csv).
+pub fn csv_rows(path: &Path) -> Vec<std::collections::BTreeMap<String, String>> {
+    let mut r = csv::Reader::from_path(path).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    r.records()
+        .map(|rec| {
+            header
+                .iter()
+                .cloned()
+                .zip(rec.unwrap().iter().map(String::from))
+                .collect()
+        })
+        .collect()
+}
