@@ -12,11 +12,10 @@ mod cli_util;
 mod gallery;
 
 use std::collections::BTreeMap;
-use std::path::PathBuf;
 
 use browser::Kind;
 use cli_util::jamchart;
-use gallery::{assert_row, csv_rows, pins, red_pixels};
+use gallery::{assert_read_off_drawn, assert_row, csv_rows, pins};
 
 /// A cell as a positive number (drawn on a log axis), or None.
 fn positive(row: &BTreeMap<String, String>, key: &str) -> Option<f64> {
@@ -132,21 +131,11 @@ fn reads_the_accuracy_chart_off(kind: Kind) {
     );
 
     // Screenshots to look at, with a point of the integration panel read, desktop and phone.
-    let shots = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("gallery_browser");
-    std::fs::create_dir_all(&shots).unwrap();
-    let tag = format!("{:?}", browser.kind).to_lowercase();
     let (_, t, y) = loneliest(&panels[1]);
-    let hook = format!("readoff=accuracy@1:{t}:{y}");
-    for (name, size) in [("desktop", (1000, 1300)), ("phone", (390, 844))] {
-        let path = shots.join(format!("gallery-accuracy-{name}-{tag}.png"));
-        browser.screenshot(&url(&hook), size, &path);
-        let plain = shots.join(format!("plain-accuracy-{name}-{tag}.png"));
-        browser.screenshot(&url(""), size, &plain);
-        let (red, none) = (red_pixels(&path), red_pixels(&plain));
-        eprintln!(
-            "screenshot {}: {red} red pixels, {none} without",
-            path.display()
-        );
-        assert!(red > none + 20, "no read-off drawn in {}", path.display());
-    }
+    assert_read_off_drawn(
+        &browser,
+        &page,
+        &format!("readoff=accuracy@1:{t}:{y}"),
+        "accuracy",
+    );
 }

@@ -14,11 +14,10 @@ mod cli_util;
 mod gallery;
 
 use std::collections::BTreeMap;
-use std::path::PathBuf;
 
 use browser::Kind;
 use cli_util::{jamchart, json};
-use gallery::{assert_row, csv_rows, gallery_of, num, pins, red_pixels};
+use gallery::{assert_read_off_drawn, assert_row, csv_rows, gallery_of, num, pins};
 use serde_json::Value;
 
 /// A CSV cell as a number.
@@ -178,26 +177,11 @@ fn reads_the_time_series_and_study_charts_off(kind: Kind) {
     // and the matrix (a ring on the cell read), desktop and phone. Each chart alone in its
     // gallery, at the top of the page: headless Chromium's screenshot of a page scrolled by
     // script is blank.
-    let shots = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("gallery_browser");
-    std::fs::create_dir_all(&shots).unwrap();
-    let tag = format!("{:?}", browser.kind).to_lowercase();
     for (scene, hook) in [
         ("fig5", "readoff=fig5@1:1.2"),
         ("stability-matrix", "readoff=stability-matrix:4:-3"),
     ] {
         let (browser, _dir, out) = gallery_of(kind, &[scene]).unwrap();
-        let url = |hash: &str| format!("file://{}#{hash}", out.join("index.html").display());
-        for (name, size) in [("desktop", (1000, 1300)), ("phone", (390, 844))] {
-            let path = shots.join(format!("gallery-{scene}-{name}-{tag}.png"));
-            browser.screenshot(&url(hook), size, &path);
-            let plain = shots.join(format!("plain-{scene}-{name}-{tag}.png"));
-            browser.screenshot(&url(""), size, &plain);
-            let (red, none) = (red_pixels(&path), red_pixels(&plain));
-            eprintln!(
-                "screenshot {}: {red} red pixels, {none} without",
-                path.display()
-            );
-            assert!(red > none + 20, "no read-off drawn in {}", path.display());
-        }
+        assert_read_off_drawn(&browser, &out.join("index.html"), hook, scene);
     }
 }

@@ -114,3 +114,27 @@ pub fn csv_rows(path: &Path) -> Vec<std::collections::BTreeMap<String, String>> 
         })
         .collect()
 }
+
+/// Screenshots of the gallery page `page` at desktop and phone size, with the read-off hook
+/// `hook` and without, saved to look at as `gallery-STEM-SIZE-BROWSER.png` and `plain-...`
+/// under target/tmp/gallery_browser: the read-off must draw its red crosshair or ring (more than
+/// 20 red pixels over the plain page's). A chart alone in its gallery, at the top of the page:
+/// headless Chromium's screenshot of a page scrolled by script is blank.
+pub fn assert_read_off_drawn(browser: &Browser, page: &Path, hook: &str, stem: &str) {
+    let shots = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("gallery_browser");
+    std::fs::create_dir_all(&shots).unwrap();
+    let tag = format!("{:?}", browser.kind).to_lowercase();
+    let url = |hash: &str| format!("file://{}#{hash}", page.display());
+    for (name, size) in [("desktop", (1000, 1300)), ("phone", (390, 844))] {
+        let path = shots.join(format!("gallery-{stem}-{name}-{tag}.png"));
+        browser.screenshot(&url(hook), size, &path);
+        let plain = shots.join(format!("plain-{stem}-{name}-{tag}.png"));
+        browser.screenshot(&url(""), size, &plain);
+        let (red, none) = (red_pixels(&path), red_pixels(&plain));
+        eprintln!(
+            "screenshot {}: {red} red pixels, {none} without",
+            path.display()
+        );
+        assert!(red > none + 20, "no read-off drawn in {}", path.display());
+    }
+}
