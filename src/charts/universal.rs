@@ -216,10 +216,7 @@ impl Universal {
                 _ => f64::NAN,
             })
             .collect();
-        let status = statuses
-            .iter()
-            .map(|s| JamStatus::ALL.iter().position(|a| a == s).unwrap_or(0) as u8)
-            .collect();
+        let status = statuses.iter().map(|s| s.index()).collect();
         let x_over_r = statuses
             .iter()
             .zip(&theta)
