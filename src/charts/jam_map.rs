@@ -71,7 +71,7 @@ impl Picture for JamMap {
                 None => jam_rings = jam_rings_of(c, &c.margin_n, s),
             }
             let beyond: Vec<bool> = c.region.iter().map(|&r| r == BEYOND).collect();
-            beyond_rings = super::contours::mask_rings(&beyond, &s.x_axis, &s.y_axis);
+            beyond_rings = crate::figures::contours::mask_rings(&beyond, &s.x_axis, &s.y_axis);
         }
         JamMap {
             title: title.to_string(),

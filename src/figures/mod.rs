@@ -6,12 +6,15 @@
 //! the chart's data file (JSON), or whose rows are (CSV). [`crate::charts`] draws that data;
 //! any other front end can take it as it is, without a picture.
 //!
-//! Kinds, one module each: [`jam_map`] (Fig. 3).
+//! Kinds, one module each: [`jam_map`] (Fig. 3), [`contour_map`] (Fig. 7c), [`universal`].
 
 pub mod band;
 pub(crate) mod cells;
+pub mod contour_map;
+pub mod contours;
 pub mod jam_map;
 pub(crate) mod models;
+pub mod universal;
 
 use serde::Serialize;
 use serde::de::DeserializeOwned;
