@@ -19,7 +19,8 @@ use super::readoff;
 use super::style::{self, LineKind};
 use super::typeset;
 use super::{axis_label, grid_polygons, param_symbol, param_unit, scene_subtitle};
-use crate::figures::contour_map::{ContourMapData, ContourMapSettings, MapPoint, dense_x_jam};
+use crate::figures::At;
+use crate::figures::contour_map::{ContourMapData, ContourMapSettings, dense_x_jam};
 use crate::figures::contours::{Paths, axis_value};
 use crate::grid::GridParam;
 use crate::scene::JamStatus;
@@ -174,7 +175,7 @@ impl Picture for ContourMap {
 impl ContourMap {
     /// The read-off, where it is drawn: the scene's point lies on the map (a legend never names
     /// a line that is not drawn).
-    fn drawn_read_off(&self) -> Option<&MapPoint> {
+    fn drawn_read_off(&self) -> Option<&At<2>> {
         let (xa, ya) = (&self.data.settings.x_axis, &self.data.settings.y_axis);
         self.data.read_off.as_ref().filter(|r| {
             (xa.min..=xa.max).contains(&r.at[0]) && (ya.min..=ya.max).contains(&r.at[1])
@@ -189,7 +190,7 @@ impl ContourMap {
         chart: &axes::Chart<DB>,
         axes: (&PlotAxis, &PlotAxis),
     ) -> DrawResult<DB> {
-        let Some(&MapPoint {
+        let Some(&At {
             at: [u, v],
             point: p,
             ..
@@ -334,7 +335,7 @@ impl ContourMap {
             );
             e.push(LegendEntry::new(Swatch::Line(LineKind::Dashed), s));
         }
-        if let Some(&MapPoint { at: [u, v], .. }) = self.drawn_read_off() {
+        if let Some(&At { at: [u, v], .. }) = self.drawn_read_off() {
             let (x, y) = (
                 self.data.settings.x_axis.param,
                 self.data.settings.y_axis.param,

@@ -232,7 +232,7 @@ impl Universal {
     fn drawn_read_off(&self) -> Option<&UniversalReadOff> {
         let (xa, ya) = (&self.data.settings.x_axis, &self.data.settings.y_axis);
         self.data.read_off.as_ref().filter(|r| {
-            (xa.min..=xa.max).contains(&r.mu) && (ya.min..=ya.max).contains(&r.push_ratio)
+            (xa.min..=xa.max).contains(&r.at.at[0]) && (ya.min..=ya.max).contains(&r.at.at[1])
         })
     }
 
@@ -291,12 +291,12 @@ impl Universal {
             return Ok(());
         };
         let p = &self.data.params;
-        let answer = match (r.theta_on_a_long_palm_deg, r.point.status) {
+        let answer = match (r.theta_on_a_long_palm_deg, r.at.point.status) {
             (Some(t), JamStatus::Jams) => format!(
                 "3: θ_jam = {}°, x_jam/r = {} → x_jam = {} mm at r = {} mm",
                 style::fmt_num(t, 1),
                 style::fmt_num(cot_half(t), 2),
-                style::fmt_num(r.point.x_jam_mm.unwrap_or(f64::NAN), 1),
+                style::fmt_num(r.at.point.x_jam_mm.unwrap_or(f64::NAN), 1),
                 p.radius_mm
             ),
             (Some(t), JamStatus::BeyondReach) => format!(
@@ -308,6 +308,6 @@ impl Universal {
             (_, status) => format!("3: {status}"),
         };
         let below = super::point_read_off::AnswerAt::Below;
-        super::point_read_off::draw(root, c, (x, y), (r.mu, r.push_ratio), &answer, below)
+        super::point_read_off::draw(root, c, (x, y), (r.at.at[0], r.at.at[1]), &answer, below)
     }
 }

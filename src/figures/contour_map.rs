@@ -11,10 +11,10 @@ use serde::{Deserialize, Serialize};
 use super::cells::{self, CellsTable, HasCells};
 use super::contours::{Traced, grid_lines};
 use super::models::{self, Models};
-use super::{DataFormat, Figure, FigureData, Input};
+use super::{At, DataFormat, Figure, FigureData, Input};
 use crate::csv_out::Column;
 use crate::error::{Error, Result};
-use crate::grid::{GridAxis, GridParam, GridRequest, JamPoint, Quantity};
+use crate::grid::{GridAxis, GridParam, GridRequest, Quantity};
 use crate::models::ModelKind;
 use crate::scene::SceneParams;
 
@@ -176,7 +176,7 @@ impl Figure for ContourMapSettings {
             _ => Vec::new(),
         };
         let read_off = match (settings.read_off, xa.param.get(p), ya.param.get(p)) {
-            (true, Some(x), Some(y)) => Some(MapPoint {
+            (true, Some(x), Some(y)) => Some(At {
                 params: [xa.param, ya.param],
                 at: [x, y],
                 point: models.jam_point(&model, p)?,
@@ -265,7 +265,7 @@ pub struct ContourMapData {
     /// The iso-lines traced.
     pub iso_lines: IsoLines,
     /// The model's jam at the scene's own point (with the read-off).
-    pub read_off: Option<MapPoint>,
+    pub read_off: Option<At<2>>,
     /// The cells: x_jam and, where asked for, theta_jam and the gap to the rigid limit.
     #[serde(serialize_with = "cells::summary_of")]
     pub cells: ContourMapCells,
@@ -300,31 +300,6 @@ pub struct IsoLine {
     pub level: f64,
     /// Its paths.
     pub paths: Traced,
-}
-
-/// A model's jam at one point of a map; its serde form names the two parameters,
-/// `{"force_n": 150, "radius_mm": 12, "status": ..., "theta_jam_deg": ..., "x_jam_mm": ...}`.
-#[derive(Debug, Clone, Copy)]
-pub struct MapPoint {
-    /// The map's x and y parameters.
-    pub params: [GridParam; 2],
-    /// Their values.
-    pub at: [f64; 2],
-    /// The model's answer there.
-    pub point: JamPoint,
-}
-
-impl Serialize for MapPoint {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-        use serde::ser::SerializeMap;
-        let mut map = s.serialize_map(Some(5))?;
-        map.serialize_entry(self.params[0].as_str(), &self.at[0])?;
-        map.serialize_entry(self.params[1].as_str(), &self.at[1])?;
-        map.serialize_entry("status", &self.point.status)?;
-        map.serialize_entry("theta_jam_deg", &self.point.theta_jam_deg)?;
-        map.serialize_entry("x_jam_mm", &self.point.x_jam_mm)?;
-        map.end()
-    }
 }
 
 /// A contour map's cells (x fastest).

@@ -23,10 +23,10 @@ use serde::{Deserialize, Serialize};
 use super::cells::{self, CellsTable, HasCells};
 use super::contours::{Traced, grid_lines};
 use super::models::Models;
-use super::{DataFormat, Figure, FigureData, Input};
+use super::{At, DataFormat, Figure, FigureData, Input};
 use crate::csv_out::Column;
 use crate::error::{Error, Result};
-use crate::grid::{self, GridAxis, GridParam, GridRequest, JamPoint, Quantity};
+use crate::grid::{self, GridAxis, GridParam, GridRequest, Quantity};
 use crate::models::ModelKind;
 use crate::scene::{JamStatus, SceneParams};
 
@@ -180,10 +180,11 @@ impl Figure for UniversalSettings {
                 let long = self.request(&p).base;
                 let on_long = models.jam_point(&model, &long)?;
                 Some(UniversalReadOff {
-                    param: xa.param,
-                    mu,
-                    push_ratio,
-                    point: models.jam_point(&model, &p)?,
+                    at: At {
+                        params: [xa.param, GridParam::PushRatio],
+                        at: [mu, push_ratio],
+                        point: models.jam_point(&model, &p)?,
+                    },
                     theta_on_a_long_palm_deg: on_long
                         .theta_jam_deg
                         .filter(|_| on_long.status == JamStatus::Jams),
@@ -310,36 +311,16 @@ pub struct PalmReach {
     pub paths: Traced,
 }
 
-/// The scene's own part read off the chart.
-#[derive(Debug, Clone, Copy)]
+/// The scene's own part read off the chart: the friction and F / (m g), the closed form's
+/// answer for its own palm, and theta_jam on a long enough palm (the field's value).
+#[derive(Debug, Clone, Copy, Serialize)]
 pub struct UniversalReadOff {
-    /// The friction on the x axis.
-    pub param: GridParam,
-    /// Its value.
-    pub mu: f64,
-    /// F / (m g).
-    pub push_ratio: f64,
-    /// The closed form's answer for the scene (its own palm).
-    pub point: JamPoint,
-    /// theta_jam in deg on a long enough palm (the field's value), if it jams there.
+    /// The scene's friction and F / (m g), and the answer there.
+    #[serde(flatten)]
+    pub at: At<2>,
+    /// theta_jam in deg on a long enough palm, if it jams there.
+    #[serde(rename = "theta_jam_on_a_long_palm_deg")]
     pub theta_on_a_long_palm_deg: Option<f64>,
-}
-
-impl Serialize for UniversalReadOff {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-        use serde::ser::SerializeMap;
-        let mut map = s.serialize_map(Some(6))?;
-        map.serialize_entry(self.param.as_str(), &self.mu)?;
-        map.serialize_entry("push_ratio", &self.push_ratio)?;
-        map.serialize_entry("status", &self.point.status)?;
-        map.serialize_entry("theta_jam_deg", &self.point.theta_jam_deg)?;
-        map.serialize_entry("x_jam_mm", &self.point.x_jam_mm)?;
-        map.serialize_entry(
-            "theta_jam_on_a_long_palm_deg",
-            &self.theta_on_a_long_palm_deg,
-        )?;
-        map.end()
-    }
 }
 
 /// A universal chart's cells (x fastest).
