@@ -320,11 +320,11 @@ chart_kinds! {
     /// error (the accuracy study).
     WorkPrecision("work_precision", "csv", legacy work_precision::WorkPrecisionSpec => work_precision::WorkPrecision),
     /// Holding capacity of a V-locator over included angle and load direction.
-    VlocatorCapacity("vlocator_capacity", "json", legacy vlocator_capacity::VlocatorCapacitySpec => vlocator_capacity::VlocatorCapacity),
+    VlocatorCapacity("vlocator_capacity", "json", figure crate::figures::vlocator_capacity::VlocatorCapacitySettings => vlocator_capacity::VlocatorCapacity),
     /// Optimum included angle of a V-locator against load direction and load.
-    VlocatorOptimum("vlocator_optimum", "json", legacy vlocator_optimum::VlocatorOptimumSpec => vlocator_optimum::VlocatorOptimum),
+    VlocatorOptimum("vlocator_optimum", "json", figure crate::figures::vlocator_optimum::VlocatorOptimumSettings => vlocator_optimum::VlocatorOptimum),
     /// The included-angle window of a V-block over friction and load ranges.
-    VlocatorRobust("vlocator_robust", "csv", legacy vlocator_robust::VlocatorRobustSpec => vlocator_robust::VlocatorRobust),
+    VlocatorRobust("vlocator_robust", "csv", figure crate::figures::vlocator_robust::VlocatorRobustSettings => vlocator_robust::VlocatorRobust),
     /// The stability matrix: case by method, coloured by class.
     Stability("stability", "json", legacy stability::StabilitySpec => stability::Stability),
 }
