@@ -313,9 +313,9 @@ chart_kinds! {
     /// Iso-lines of x_jam and theta_jam over two parameters (Fig. 7c).
     ContourMap("contour_map", "json", legacy contour_map::ContourMapSpec => contour_map::ContourMap),
     /// The min-norm program's convergence trace at theta_jam (Fig. 4).
-    Convergence("convergence", "csv", legacy convergence::ConvergenceSpec => convergence::Convergence),
+    Convergence("convergence", "csv", figure crate::figures::convergence::ConvergenceSettings => convergence::Convergence),
     /// The simulated disc speed and position against time (Fig. 5).
-    TimeSeries("time_series", "csv", legacy time_series::TimeSeriesSpec => time_series::TimeSeries),
+    TimeSeries("time_series", "csv", figure crate::figures::time_series::TimeSeriesSettings => time_series::TimeSeries),
     /// Error of x_jam against cost per integrator, and the min-norm tolerance against its
     /// error (the accuracy study).
     WorkPrecision("work_precision", "csv", legacy work_precision::WorkPrecisionSpec => work_precision::WorkPrecision),

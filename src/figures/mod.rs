@@ -6,13 +6,16 @@
 //! the chart's data file (JSON), or whose rows are (CSV). [`crate::charts`] draws that data;
 //! any other front end can take it as it is, without a picture.
 //!
-//! Kinds, one module each: [`jam_map`] (Fig. 3); [`vlocator_capacity`], [`vlocator_optimum`]
-//! and [`vlocator_robust`] (V-type locators, [`crate::locator`]).
+//! Kinds, one module each: [`jam_map`] (Fig. 3), [`convergence`] (Fig. 4), [`time_series`]
+//! (Fig. 5); [`vlocator_capacity`], [`vlocator_optimum`] and [`vlocator_robust`] (V-type
+//! locators, [`crate::locator`]).
 
 pub mod band;
 pub(crate) mod cells;
+pub mod convergence;
 pub mod jam_map;
 pub(crate) mod models;
+pub mod time_series;
 pub mod vlocator_capacity;
 pub mod vlocator_optimum;
 pub mod vlocator_robust;
