@@ -318,7 +318,7 @@ chart_kinds! {
     TimeSeries("time_series", "csv", figure crate::figures::time_series::TimeSeriesSettings => time_series::TimeSeries),
     /// Error of x_jam against cost per integrator, and the min-norm tolerance against its
     /// error (the accuracy study).
-    WorkPrecision("work_precision", "csv", legacy work_precision::WorkPrecisionSpec => work_precision::WorkPrecision),
+    WorkPrecision("work_precision", "csv", figure crate::figures::work_precision::WorkPrecisionSettings => work_precision::WorkPrecision),
     /// Holding capacity of a V-locator over included angle and load direction.
     VlocatorCapacity("vlocator_capacity", "json", figure crate::figures::vlocator_capacity::VlocatorCapacitySettings => vlocator_capacity::VlocatorCapacity),
     /// Optimum included angle of a V-locator against load direction and load.
@@ -326,7 +326,7 @@ chart_kinds! {
     /// The included-angle window of a V-block over friction and load ranges.
     VlocatorRobust("vlocator_robust", "csv", figure crate::figures::vlocator_robust::VlocatorRobustSettings => vlocator_robust::VlocatorRobust),
     /// The stability matrix: case by method, coloured by class.
-    Stability("stability", "json", legacy stability::StabilitySpec => stability::Stability),
+    Stability("stability", "json", figure crate::figures::stability::StabilitySettings => stability::Stability),
 }
 
 impl ChartSpec {

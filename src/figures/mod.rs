@@ -7,18 +7,21 @@
 //! any other front end can take it as it is, without a picture.
 //!
 //! Kinds, one module each: [`jam_map`] (Fig. 3), [`convergence`] (Fig. 4), [`time_series`]
-//! (Fig. 5); [`vlocator_capacity`], [`vlocator_optimum`] and [`vlocator_robust`] (V-type
-//! locators, [`crate::locator`]).
+//! (Fig. 5), [`work_precision`] (the accuracy study), [`stability`] (the stability matrix);
+//! [`vlocator_capacity`], [`vlocator_optimum`] and [`vlocator_robust`] (V-type locators,
+//! [`crate::locator`]).
 
 pub mod band;
 pub(crate) mod cells;
 pub mod convergence;
 pub mod jam_map;
 pub(crate) mod models;
+pub mod stability;
 pub mod time_series;
 pub mod vlocator_capacity;
 pub mod vlocator_optimum;
 pub mod vlocator_robust;
+pub mod work_precision;
 
 use serde::Serialize;
 use serde::de::DeserializeOwned;
