@@ -1,8 +1,6 @@
 //! The data files written beside a chart: [`DataFile`], and a map's cells as long-format CSV.
 
-use crate::csv_out::Column;
 pub use crate::figures::CellsTable;
-pub use crate::figures::cells::CellAxes;
 use crate::figures::{DataFormat, FigureData};
 
 /// The data behind a chart: file extension and bytes.
@@ -62,21 +60,6 @@ impl DataFile {
             bytes,
         }
     }
-}
-
-/// The cells over two named axes as a [`CellsTable`] (a V-locator's parameters, say).
-pub fn axis_cells_csv<'a>(axes: CellAxes<'a>, columns: &[(&'a str, Column<'a>)]) -> CellsTable<'a> {
-    CellsTable::new(axes, columns)
-}
-
-/// What a map's JSON says about its cells over two named axes.
-pub fn axis_cells_json(
-    scene: &str,
-    axes: CellAxes,
-    columns: &[(&str, Column)],
-) -> serde_json::Value {
-    let _ = scene;
-    serde_json::to_value(CellsTable::new(axes, columns)).expect("a summary serialises")
 }
 
 /// `doc` with every number that is not an integer rounded as [`crate::csv_out::Num`] rounds it.

@@ -313,20 +313,20 @@ chart_kinds! {
     /// Iso-lines of x_jam and theta_jam over two parameters (Fig. 7c).
     ContourMap("contour_map", "json", figure crate::figures::contour_map::ContourMapSettings => contour_map::ContourMap),
     /// The min-norm program's convergence trace at theta_jam (Fig. 4).
-    Convergence("convergence", "csv", legacy convergence::ConvergenceSpec => convergence::Convergence),
+    Convergence("convergence", "csv", figure crate::figures::convergence::ConvergenceSettings => convergence::Convergence),
     /// The simulated disc speed and position against time (Fig. 5).
-    TimeSeries("time_series", "csv", legacy time_series::TimeSeriesSpec => time_series::TimeSeries),
+    TimeSeries("time_series", "csv", figure crate::figures::time_series::TimeSeriesSettings => time_series::TimeSeries),
     /// Error of x_jam against cost per integrator, and the min-norm tolerance against its
     /// error (the accuracy study).
-    WorkPrecision("work_precision", "csv", legacy work_precision::WorkPrecisionSpec => work_precision::WorkPrecision),
+    WorkPrecision("work_precision", "csv", figure crate::figures::work_precision::WorkPrecisionSettings => work_precision::WorkPrecision),
     /// Holding capacity of a V-locator over included angle and load direction.
-    VlocatorCapacity("vlocator_capacity", "json", legacy vlocator_capacity::VlocatorCapacitySpec => vlocator_capacity::VlocatorCapacity),
+    VlocatorCapacity("vlocator_capacity", "json", figure crate::figures::vlocator_capacity::VlocatorCapacitySettings => vlocator_capacity::VlocatorCapacity),
     /// Optimum included angle of a V-locator against load direction and load.
-    VlocatorOptimum("vlocator_optimum", "json", legacy vlocator_optimum::VlocatorOptimumSpec => vlocator_optimum::VlocatorOptimum),
+    VlocatorOptimum("vlocator_optimum", "json", figure crate::figures::vlocator_optimum::VlocatorOptimumSettings => vlocator_optimum::VlocatorOptimum),
     /// The included-angle window of a V-block over friction and load ranges.
-    VlocatorRobust("vlocator_robust", "csv", legacy vlocator_robust::VlocatorRobustSpec => vlocator_robust::VlocatorRobust),
+    VlocatorRobust("vlocator_robust", "csv", figure crate::figures::vlocator_robust::VlocatorRobustSettings => vlocator_robust::VlocatorRobust),
     /// The stability matrix: case by method, coloured by class.
-    Stability("stability", "json", legacy stability::StabilitySpec => stability::Stability),
+    Stability("stability", "json", figure crate::figures::stability::StabilitySettings => stability::Stability),
 }
 
 impl ChartSpec {

@@ -295,31 +295,23 @@ fn fig4_and_fig5_draw_the_jam_of_the_paper_case() {
     let Chart::Convergence(c) = Chart::compute(&fig4).unwrap() else {
         panic!("fig4 is a convergence chart")
     };
-    let csv = String::from_utf8(c.data_file(&fig4).bytes).unwrap();
-    let rows: Vec<&str> = csv.lines().skip(1).collect();
-    assert!(rows.len() >= 3, "{csv}");
-    let theta: f64 = rows[0].split(',').next().unwrap().parse().unwrap();
+    let rows = &c.data().rows;
+    assert!(rows.len() >= 3, "{rows:?}");
+    let theta = rows[0].theta_deg.0;
     assert!((theta - 44.646).abs() < 5e-4, "trace at {theta} deg");
-    let last: Vec<f64> = rows[rows.len() - 1]
-        .split(',')
-        .map(|v| v.parse().unwrap())
-        .collect();
-    assert!(last[3] < 1e-8 && last[4] < 1e-8, "not converged: {last:?}");
+    let last = rows[rows.len() - 1];
+    assert!(
+        last.res_primal.0 < 1e-8 && last.res_dual.0 < 1e-8,
+        "not converged: {last:?}"
+    );
 
     let fig5 = load_scene(&charts_dir(), "fig5").unwrap();
     let Chart::TimeSeries(t) = Chart::compute(&fig5).unwrap() else {
         panic!("fig5 is a time series")
     };
-    let (tj, xj) = t.jam().expect("fig5 jams");
+    let (tj, xj) = t.data().jam.expect("fig5 jams");
     assert!((xj - 25.0).abs() < 0.015 * 25.0, "x_jam {xj} mm");
-    let csv = String::from_utf8(t.data_file(&fig5).bytes).unwrap();
-    let t_last: f64 = csv
-        .lines()
-        .last()
-        .and_then(|l| l.split(',').next())
-        .unwrap()
-        .parse()
-        .unwrap();
+    let t_last = t.data().samples.last().unwrap().t_s.0;
     assert!(
         t_last > tj + 0.1,
         "the series ends at {t_last} s, the jam is at {tj} s"

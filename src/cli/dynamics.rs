@@ -103,7 +103,7 @@ pub fn series_end(config: &Config, s: &DynamicsSolution) -> String {
 /// Writes the time series of `s`, simulated for `config`, to `path` as CSV (atomically), with
 /// the columns of render's fig5.csv.
 pub fn write_series(config: &Config, s: &DynamicsSolution, path: &Path) -> Result<()> {
-    let csv = crate::charts::time_series::series_csv(&config.scene, &config.dynamics, &s.series);
+    let csv = crate::figures::time_series::series_csv(&config.scene, &config.dynamics, &s.series);
     write_atomic(path, &csv)
 }
 

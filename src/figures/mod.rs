@@ -6,15 +6,26 @@
 //! the chart's data file (JSON), or whose rows are (CSV). [`crate::charts`] draws that data;
 //! any other front end can take it as it is, without a picture.
 //!
-//! Kinds, one module each: [`jam_map`] (Fig. 3), [`contour_map`] (Fig. 7c), [`universal`].
+//! Kinds, one module each: [`jam_map`] (Fig. 3), [`convergence`] (Fig. 4), [`time_series`]
+//! (Fig. 5), [`contour_map`] (Fig. 7c), [`universal`] (one chart for any part),
+//! [`work_precision`] (the accuracy study), [`stability`] (the stability matrix);
+//! [`vlocator_capacity`], [`vlocator_optimum`] and [`vlocator_robust`] (V-type locators,
+//! [`crate::locator`]).
 
 pub mod band;
 pub(crate) mod cells;
 pub mod contour_map;
 pub mod contours;
+pub mod convergence;
 pub mod jam_map;
 pub(crate) mod models;
+pub mod stability;
+pub mod time_series;
 pub mod universal;
+pub mod vlocator_capacity;
+pub mod vlocator_optimum;
+pub mod vlocator_robust;
+pub mod work_precision;
 
 use serde::Serialize;
 use serde::de::DeserializeOwned;
