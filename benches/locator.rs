@@ -91,16 +91,10 @@ fn against_numpy(g: &Grid<LocatorParams>) -> Result<([f64; 3], f64), String> {
 /// `map-only` run with 11 maps less the one with 1; None without valgrind.
 fn instructions_per_cell() -> Option<f64> {
     let run = |maps: u32| -> Option<f64> {
-        let out = std::process::Command::new("valgrind")
-            .args(["--tool=callgrind", "--callgrind-out-file=/dev/null"])
-            .arg(std::env::current_exe().ok()?)
-            .args(["map-only", &maps.to_string()])
-            .env("RAYON_NUM_THREADS", "1")
-            .output()
-            .ok()?;
-        let err = String::from_utf8_lossy(&out.stderr);
-        let line = err.lines().find(|l| l.contains("Collected :"))?;
-        line.rsplit(':').next()?.trim().parse().ok()
+        let mut cmd = std::process::Command::new(std::env::current_exe().ok()?);
+        cmd.args(["map-only", &maps.to_string()])
+            .env("RAYON_NUM_THREADS", "1");
+        common::instructions(&mut cmd)
     };
     Some((run(11)? - run(1)?) / 10.0 / 4e4)
 }
