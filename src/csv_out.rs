@@ -381,72 +381,6 @@ fn push_text(out: &mut Vec<u8>, word: &str) {
     out.push(b'"');
 }
 
-/// How many cells say each word of a text column, in the order the words first appear:
-/// `{"cells": {"jams": 53239, "jammed_at_start": 22}}`. Counted by the cells' word indices
-/// (a byte each), then merged by word, so a word listed twice is counted once.
-fn word_counts(words: &[&str], of: &[u8]) -> serde_json::Value {
-    let mut per_index = [0usize; 256];
-    let mut first_seen: Vec<u8> = Vec::new();
-    for &w in of {
-        if per_index[usize::from(w)] == 0 {
-            first_seen.push(w);
-        }
-        per_index[usize::from(w)] += 1;
-    }
-    let mut counts: Vec<(&str, usize)> = Vec::new();
-    for w in first_seen {
-        let (word, n) = (words[usize::from(w)], per_index[usize::from(w)]);
-        match counts.iter_mut().find(|(k, _)| *k == word) {
-            Some((_, total)) => *total += n,
-            None => counts.push((word, n)),
-        }
-    }
-    let counts: serde_json::Map<String, serde_json::Value> = counts
-        .into_iter()
-        .map(|(k, n)| (k.into(), n.into()))
-        .collect();
-    serde_json::json!({ "cells": counts })
-}
-
-/// What a map's JSON says about its long CSV ([`grid_cells`]): the file, the grid's size, the
-/// columns and, per quantity column, its least and greatest value and how many cells have one.
-pub fn cells_summary(
-    file: &str,
-    header: &[&str],
-    (nx, ny): (usize, usize),
-    columns: &[Column],
-) -> serde_json::Value {
-    let summary: serde_json::Map<String, serde_json::Value> = header[2..]
-        .iter()
-        .zip(columns)
-        .map(|(name, c)| {
-            let values: Vec<f64> = match c {
-                Column::Dense(v) => v.iter().copied().filter(|x| x.is_finite()).collect(),
-                Column::Sparse(v) => v
-                    .iter()
-                    .flatten()
-                    .copied()
-                    .filter(|x| x.is_finite())
-                    .collect(),
-                Column::Words { words, of } => {
-                    return (name.to_string(), word_counts(words, of));
-                }
-            };
-            let min = values.iter().copied().reduce(f64::min);
-            let max = values.iter().copied().reduce(f64::max);
-            let s = serde_json::json!({
-                "min": min.map(Num), "max": max.map(Num), "cells_with_value": values.len(),
-            });
-            (name.to_string(), s)
-        })
-        .collect();
-    serde_json::json!({
-        "file": file, "nx": nx, "ny": ny,
-        "order": "one row per cell, x fastest",
-        "columns": header, "summary": summary,
-    })
-}
-
 /// A number for JSON with the digits of [`plain`]: rounded to [`SIGNIFICANT_DIGITS`], so that
 /// serde_json's shortest form prints `24.35455`, not `24.354551362801473`; null for NaN and
 /// infinities, `0` for `-0`.
@@ -471,27 +405,6 @@ pub fn nums(v: impl IntoIterator<Item = f64>) -> Vec<Num> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A status column is summarised by how many cells say each status, in first-seen order,
-    /// and written word for word in the CSV.
-    #[test]
-    fn a_text_column_is_counted_and_written_as_words() {
-        let cols = [Column::Words {
-            words: &["jam", "slide", "beyond_reach"],
-            of: &[0, 1, 0, 2],
-        }];
-        let s = cells_summary("m.csv", &["x", "y", "region"], (2, 2), &cols);
-        assert_eq!(
-            s["summary"]["region"]["cells"],
-            serde_json::json!({"jam": 2, "slide": 1, "beyond_reach": 1})
-        );
-        let csv = grid_cells(&["x", "y", "region"], &[0.0, 1.0], &[0.0, 1.0], &cols);
-        let text = String::from_utf8(csv).unwrap();
-        assert_eq!(
-            text,
-            "x,y,region\n0,0,jam\n1,0,slide\n0,1,jam\n1,1,beyond_reach\n"
-        );
-    }
 
     #[test]
     fn numbers_are_plain_decimals_without_noise() {
@@ -727,30 +640,6 @@ mod tests {
             w.0,
             grid_cells_by_the_csv_crate(&header, &xs, &xs, &columns)
         );
-    }
-
-    proptest::proptest! {
-        /// Counting a word column by its indices is counting it word by word, in the order the
-        /// words first appear, where a word may be listed twice.
-        #[test]
-        fn word_counts_are_counted_word_by_word(
-            words in proptest::collection::vec("[ab]{1,2}", 1..8),
-            picks in proptest::collection::vec(0usize..64, 0..200),
-        ) {
-            let words: Vec<&str> = words.iter().map(String::as_str).collect();
-            let of: Vec<u8> = picks.iter().map(|&p| (p % words.len()) as u8).collect();
-            let mut want: Vec<(&str, usize)> = Vec::new();
-            for &w in &of {
-                let word = words[usize::from(w)];
-                match want.iter_mut().find(|(k, _)| *k == word) {
-                    Some((_, n)) => *n += 1,
-                    None => want.push((word, 1)),
-                }
-            }
-            let want: serde_json::Map<String, serde_json::Value> =
-                want.into_iter().map(|(k, n)| (k.into(), n.into())).collect();
-            proptest::prop_assert_eq!(word_counts(&words, &of), serde_json::json!({ "cells": want }));
-        }
     }
 
     #[test]

@@ -18,7 +18,6 @@ use super::colorbar::ColorBar;
 use super::data::CellsTable;
 use super::labels;
 use super::legend::{self, LegendEntry, Swatch};
-use super::models::Models;
 use super::readoff;
 use super::spec::Scene;
 use super::style::{self, LineKind};
@@ -29,6 +28,7 @@ use super::{
 };
 use crate::csv_out::{Column, Num, nums};
 use crate::error::{Error, Result};
+use crate::figures::models::Models;
 use crate::grid::{AxisScale, GridAxis, GridParam, GridRequest, GridResult, JamPoint, Quantity};
 use crate::models::ModelKind;
 use crate::scene::JamStatus;
@@ -147,7 +147,11 @@ impl super::kinds::Kind for ContourMapSpec {
         crate::limits::check_items(CELLS, cells, crate::limits::CONTOUR_MAP_CELL)
     }
 
-    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<ContourMap> {
+    fn compute(
+        &self,
+        scene: &Scene,
+        models: &dyn crate::figures::models::Models,
+    ) -> Result<ContourMap> {
         ContourMap::compute(scene, self, models)
     }
 
@@ -239,7 +243,7 @@ impl ContourMap {
     /// Evaluates the grid quantities the layers need.
     pub fn compute(scene: &Scene, spec: &ContourMapSpec, models: &dyn Models) -> Result<Self> {
         let model = spec.model.with(&scene.min_norm, &scene.dynamics);
-        let grid = super::models::evaluate(models, &model, &spec.request(&scene.params))?;
+        let grid = crate::figures::models::evaluate(models, &model, &spec.request(&scene.params))?;
         let gap_pct: Option<Vec<f64>> = match (&grid.x_jam_mm, &grid.x_rigid_mm) {
             (Some(x), Some(r)) => Some(
                 x.iter()
@@ -318,7 +322,7 @@ impl ContourMap {
     /// The data behind the chart as JSON: the scene, the levels and the iso-lines drawn, as
     /// polylines of (x, y) axis values; the grids are in the long CSV beside it
     /// ([`ContourMap::cells`]), described under `cells`.
-    pub fn data(&self, scene: &Scene) -> DataFile {
+    pub fn data_file(&self, scene: &Scene) -> DataFile {
         let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
         let lines = |levelled: &mut dyn Iterator<Item = (f64, &Paths)>| {
             levelled
@@ -355,6 +359,7 @@ impl ContourMap {
                 x.as_str(): Num(u), y.as_str(): Num(v), "status": p.status,
                 "theta_jam_deg": p.theta_jam_deg.map(Num), "x_jam_mm": p.x_jam_mm.map(Num),
             })),
+            "cells_file": format!("{}.csv", scene.name),
             "cells": cells_json(&scene.name, &self.grid, x, y, &self.columns()),
         }))
     }

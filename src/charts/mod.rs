@@ -53,7 +53,7 @@ pub(crate) mod jam_map;
 mod kinds;
 pub(crate) mod labels;
 pub(crate) mod legend;
-pub(crate) mod models;
+
 pub(crate) mod output;
 pub(crate) mod overrides;
 pub(crate) mod point_read_off;
@@ -188,26 +188,7 @@ impl PartialEq for Cells {
 impl Chart {
     /// Computes what `scene`'s chart draws, with the model the scene names.
     pub fn compute(scene: &Scene) -> Result<Chart> {
-        Self::compute_with(scene, &models::Live)
-    }
-
-    /// The gallery's read-off data (see [`readoff`]), given the plotting areas the drawing
-    /// built ([`axes::record_frames`]); every kind has one (None only where the frames do not
-    /// match the drawing).
-    pub fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
-        match self {
-            Chart::JamMap(c) => c.read_off(frames),
-            Chart::Sweep(c) => c.read_off(frames),
-            Chart::Universal(c) => c.read_off(frames),
-            Chart::ContourMap(c) => c.read_off(frames),
-            Chart::VlocatorCapacity(c) => c.read_off(frames),
-            Chart::VlocatorOptimum(c) => c.read_off(frames),
-            Chart::VlocatorRobust(c) => c.read_off(frames),
-            Chart::Convergence(c) => c.read_off(frames),
-            Chart::TimeSeries(c) => c.read_off(frames),
-            Chart::WorkPrecision(c) => c.read_off(frames),
-            Chart::Stability(c) => c.read_off(frames),
-        }
+        Self::compute_with(scene, &crate::figures::models::Live)
     }
 
     /// Draws on any plotters backend.
@@ -271,7 +252,7 @@ pub fn render_with(
         },
         || {
             rayon::join(
-                || chart.data(scene),
+                || chart.data_file(scene),
                 || cells.as_ref().map_or(Ok(()), cells_to),
             )
         },

@@ -31,7 +31,6 @@ use super::colorbar::ColorBar;
 use super::contour_map::{Paths, at_height, level_text, plot_to_value};
 use super::data::CellsTable;
 use super::legend::{self, LegendEntry, Swatch};
-use super::models::Models;
 use super::readoff;
 use super::spec::Scene;
 use super::style::{self, GRID_MAJOR, INK, LineKind};
@@ -39,6 +38,7 @@ use super::typeset;
 use super::{DataFile, axis_label, cells_csv, cells_json, grid_lines, grid_polygons, param_symbol};
 use crate::csv_out::{Column, Num, nums};
 use crate::error::{Error, Result};
+use crate::figures::models::Models;
 use crate::grid::{self, GridAxis, GridParam, GridRequest, GridResult, Quantity};
 use crate::models::ModelKind;
 use crate::scene::{JamStatus, SceneParams};
@@ -216,10 +216,7 @@ impl Universal {
                 _ => f64::NAN,
             })
             .collect();
-        let status = statuses
-            .iter()
-            .map(|s| JamStatus::ALL.iter().position(|a| a == s).unwrap_or(0) as u8)
-            .collect();
+        let status = statuses.iter().map(|s| s.index()).collect();
         let x_over_r = statuses
             .iter()
             .zip(&theta)
@@ -309,7 +306,7 @@ impl Universal {
 
     /// The data behind the chart as JSON: the scene, the iso-lines (each with its theta_jam
     /// and x_jam / r), the reach line and the read-off; the cells are in the CSV beside it.
-    pub fn data(&self, scene: &Scene) -> DataFile {
+    pub fn data_file(&self, scene: &Scene) -> DataFile {
         let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
         let paths = |paths: &Paths| -> Vec<Vec<[Num; 2]>> {
             paths
@@ -350,6 +347,7 @@ impl Universal {
                 "paths": paths(&self.reach.1),
             },
             "read_off": read_off,
+            "cells_file": format!("{}.csv", scene.name),
             "cells": cells_json(&scene.name, &self.grid, x, y, &self.columns()),
         }))
     }

@@ -11,7 +11,6 @@ use super::render::{RenderFormat, output_paths, write_rendered};
 use crate::charts::contour_map::ContourMapSpec;
 use crate::charts::spec::Size;
 use crate::charts::sweep::{SweepPanel, SweepSpec};
-use crate::charts::sweep_band;
 use crate::charts::sweep_layers::SweepLayer;
 use crate::charts::{self, ChartSpec, Scene, axis_label};
 use crate::error::{Error, Result};
@@ -177,7 +176,7 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
                 panels: vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg],
                 layers: vec![SweepLayer::Statics, SweepLayer::Rigid],
                 read_off: a.read_off,
-                band: sweep_band::from_uncertain(&config.scene, &uncertain, axis.param)?,
+                band: crate::figures::band::from_uncertain(&config.scene, &uncertain, axis.param)?,
             });
             let title = format!("Jam point against {}", axis_label(axis.param));
             (chart, format!("sweep_{}", axis.param.as_str()), title)
