@@ -134,7 +134,37 @@ fn main() {
         single * 1e3
     );
 
-    // 1e7 samples: how many cores the whole answer keeps busy, and its memory per sample.
+    let rss_of = |samples: &str| {
+        let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_jamchart"));
+        cmd.args([
+            "solve",
+            "--radius",
+            "12.5",
+            "--mass",
+            "0.4",
+            "--palm-length",
+            "80",
+        ])
+        .args(["--force", "uniform(30,50)", "--mu", "normal(0.2,0.03)"])
+        .args(["--samples", samples]);
+        time_process(&mut cmd);
+        // The largest child so far, in KiB: each run here is larger than every one before.
+        // Measured before this process grows (the 1e7 runs below): a spawned child's peak
+        // counts the parent's resident pages until it execs.
+        // SAFETY: getrusage writes one rusage through a valid pointer.
+        let mut u: libc::rusage = unsafe { std::mem::zeroed() };
+        unsafe { libc::getrusage(libc::RUSAGE_CHILDREN, &mut u) };
+        u.ru_maxrss as f64 * 1024.0
+    };
+    let (small, large) = (rss_of("1000000"), rss_of("10000000"));
+    println!(
+        "  jamchart solve --samples 1e7 (mu and force distributed): peak RSS {:.1} MiB, {:.1} \
+         bytes per sample (peaks at 1e7 and 1e6 samples, differenced)",
+        large / 1048576.0,
+        (large - small) / 9e6
+    );
+
+    // 1e7 samples: how many cores the whole answer keeps busy.
     let big = 10_000_000;
     let cpu_self = || {
         // SAFETY: getrusage writes one rusage through a valid pointer.
@@ -162,34 +192,6 @@ fn main() {
         single,
         single / wall
     );
-    let rss_of = |samples: &str| {
-        let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_jamchart"));
-        cmd.args([
-            "solve",
-            "--radius",
-            "12.5",
-            "--mass",
-            "0.4",
-            "--palm-length",
-            "80",
-        ])
-        .args(["--force", "uniform(30,50)", "--mu", "normal(0.2,0.03)"])
-        .args(["--samples", samples]);
-        time_process(&mut cmd);
-        // The largest child so far, in KiB: each run here is larger than every one before.
-        // SAFETY: getrusage writes one rusage through a valid pointer.
-        let mut u: libc::rusage = unsafe { std::mem::zeroed() };
-        unsafe { libc::getrusage(libc::RUSAGE_CHILDREN, &mut u) };
-        u.ru_maxrss as f64 * 1024.0
-    };
-    let (small, large) = (rss_of("1000000"), rss_of("10000000"));
-    println!(
-        "  jamchart solve --samples 1e7 (mu and force distributed): peak RSS {:.1} MiB, {:.1} \
-         bytes per sample (peaks at 1e7 and 1e6 samples, differenced)",
-        large / 1048576.0,
-        (large - small) / 9e6
-    );
-
     let nonsmooth = ModelSpec::Dynamics {
         params: DynamicsParams {
             integrator: IntegratorSettings {
