@@ -9,11 +9,12 @@
 //! Kinds, one module each: [`jam_map`] (Fig. 3), [`convergence`] (Fig. 4), [`time_series`]
 //! (Fig. 5), [`work_precision`] (the accuracy study), [`stability`] (the stability matrix);
 //! [`vlocator_capacity`], [`vlocator_optimum`] and [`vlocator_robust`] (V-type locators,
-//! [`crate::locator`]).
+//! [`crate::locator`]); [`error_time`] is `jamchart accuracy`'s measured study, not a scene.
 
 pub mod band;
 pub(crate) mod cells;
 pub mod convergence;
+pub mod error_time;
 pub mod jam_map;
 pub(crate) mod models;
 pub mod stability;
