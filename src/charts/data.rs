@@ -1,10 +1,7 @@
 //! The data files written beside a chart: [`DataFile`], and a map's cells as long-format CSV.
 
-use crate::csv_out::Column;
 pub use crate::figures::CellsTable;
-pub use crate::figures::cells::CellAxes;
 use crate::figures::{DataFormat, FigureData};
-use crate::grid::GridParam;
 
 /// The data behind a chart: file extension and bytes.
 #[derive(Debug, Clone, PartialEq)]
@@ -63,50 +60,6 @@ impl DataFile {
             bytes,
         }
     }
-}
-
-/// The cells of `grid` as a [`CellsTable`], each `(column, values)` named as in its JSON.
-pub fn cells_csv<'a>(
-    grid: &'a crate::grid::GridResult,
-    x: GridParam,
-    y: GridParam,
-    columns: &[(&'a str, Column<'a>)],
-) -> CellsTable<'a> {
-    axis_cells_csv(grid_axes(grid, x, y), columns)
-}
-
-/// What a map's JSON says about the cells [`cells_csv`] writes to `<scene>.csv` (see
-/// [`crate::csv_out::cells_summary`]): the same column names.
-pub fn cells_json(
-    scene: &str,
-    grid: &crate::grid::GridResult,
-    x: GridParam,
-    y: GridParam,
-    columns: &[(&str, Column)],
-) -> serde_json::Value {
-    axis_cells_json(scene, grid_axes(grid, x, y), columns)
-}
-
-fn grid_axes(grid: &crate::grid::GridResult, x: GridParam, y: GridParam) -> CellAxes<'_> {
-    [
-        (x.as_str(), &grid.x_values[..]),
-        (y.as_str(), &grid.y_values[..]),
-    ]
-}
-
-/// [`cells_csv`] over any two named axes (a V-locator's parameters, say).
-pub fn axis_cells_csv<'a>(axes: CellAxes<'a>, columns: &[(&'a str, Column<'a>)]) -> CellsTable<'a> {
-    CellsTable::new(axes, columns)
-}
-
-/// [`cells_json`] over any two named axes.
-pub fn axis_cells_json(
-    scene: &str,
-    axes: CellAxes,
-    columns: &[(&str, Column)],
-) -> serde_json::Value {
-    let _ = scene;
-    serde_json::to_value(CellsTable::new(axes, columns)).expect("a summary serialises")
 }
 
 /// `doc` with every number that is not an integer rounded as [`crate::csv_out::Num`] rounds it.
