@@ -6,11 +6,11 @@
 //! the chart's data file (JSON), or whose rows are (CSV). [`crate::charts`] draws that data;
 //! any other front end can take it as it is, without a picture.
 //!
-//! Kinds, one module each: [`jam_map`] (Fig. 3), [`contour_map`] (Fig. 7c), [`universal`],
-//! [`convergence`] (Fig. 4), [`time_series`] (Fig. 5), [`work_precision`] (the accuracy
-//! study), [`stability`] (the stability matrix); [`vlocator_capacity`], [`vlocator_optimum`]
-//! and [`vlocator_robust`] (V-type locators, [`crate::locator`]); [`error_time`] is
-//! `jamchart accuracy`'s measured study, not a scene.
+//! Kinds, one module each: [`jam_map`] (Fig. 3), [`convergence`] (Fig. 4), [`time_series`]
+//! (Fig. 5), [`contour_map`] (Fig. 7c), [`universal`] (one chart for any part),
+//! [`work_precision`] (the accuracy study), [`stability`] (the stability matrix);
+//! [`vlocator_capacity`], [`vlocator_optimum`] and [`vlocator_robust`] (V-type locators,
+//! [`crate::locator`]); [`error_time`] is `jamchart accuracy`'s measured study, not a scene.
 
 pub mod band;
 pub(crate) mod cells;
