@@ -6,7 +6,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
-use super::kinds::Picture;
+use super::picture::Picture;
 use super::style::{LineKind, Marker};
 use super::ticks::power_of_ten;
 use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};

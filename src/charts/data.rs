@@ -1,6 +1,5 @@
 //! The data files written beside a chart: [`DataFile`], and a map's cells as long-format CSV.
 
-pub use crate::figures::CellsTable;
 use crate::figures::{DataFormat, FigureData};
 
 /// The data behind a chart: file extension and bytes.

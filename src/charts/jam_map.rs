@@ -14,8 +14,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde_json::json;
 
 use super::axes::{self, Chart, DrawResult, Margins, PlotAxis, PlotFrame};
-use super::kinds::Picture;
 use super::legend::{self, LegendEntry, Swatch};
+use super::picture::Picture;
 use super::readoff;
 use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
 use super::{axis_label, grid_lines, grid_polygons, param_symbol, scene_subtitle};

@@ -10,7 +10,7 @@ use super::*;
 /// the plotting areas.
 fn layout(scene: &Scene) -> (Vec<TextBox>, (u32, u32), Vec<PlotFrame>) {
     style::init_fonts();
-    let chart = Chart::compute(scene).expect("the scene computes");
+    let chart = Chart::of_scene(scene).expect("the scene computes");
     drawn_layout(&chart, scene)
 }
 
@@ -62,8 +62,9 @@ fn fig7c_x_jam_labels_sit_on_no_theta_line() {
         let y = (f.bottom + frac(v, &ya) * (f.top - f.bottom)) * f64::from(h);
         (x.round() as i32, y.round() as i32)
     };
-    let chart = Chart::compute(&scene).unwrap();
-    let doc: serde_json::Value = serde_json::from_slice(&chart.data_file(&scene).bytes).unwrap();
+    let chart = Chart::of_scene(&scene).unwrap();
+    let doc: serde_json::Value =
+        serde_json::from_slice(&chart.data_file(&scene.name, &scene.title).bytes).unwrap();
     let theta_lines: Vec<(f64, Vec<(i32, i32)>)> = doc["iso_lines"]["theta_jam_deg"]
         .as_array()
         .unwrap()

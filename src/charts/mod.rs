@@ -56,6 +56,7 @@ pub(crate) mod legend;
 
 pub(crate) mod output;
 pub(crate) mod overrides;
+pub(crate) mod picture;
 pub(crate) mod point_read_off;
 pub(crate) mod print;
 pub(crate) mod readoff;
@@ -185,8 +186,17 @@ impl PartialEq for Cells {
 
 impl Chart {
     /// Computes what `scene`'s chart draws, with the model the scene names.
-    pub fn compute(scene: &Scene) -> Result<Chart> {
-        Self::compute_with(scene, &crate::figures::models::Live)
+    pub fn of_scene(scene: &Scene) -> Result<Chart> {
+        Self::of_scene_with(scene, &crate::figures::models::Live)
+    }
+
+    /// [`Chart::of_scene`], min-norm programs and simulations through `models`.
+    pub(crate) fn of_scene_with(
+        scene: &Scene,
+        models: &dyn crate::figures::models::Models,
+    ) -> Result<Chart> {
+        Chart::compute(&scene.chart, &scene.input(), &scene.title, models)
+            .map_err(|e| e.in_scene(&scene.name))
     }
 
     /// Draws on any plotters backend.
@@ -211,7 +221,7 @@ pub fn render_with(
     cells_to: &(dyn Fn(&Cells) -> Result<()> + Sync),
 ) -> Result<Rendered> {
     style::init_fonts();
-    let chart = std::sync::Arc::new(Chart::compute(scene)?);
+    let chart = std::sync::Arc::new(Chart::of_scene(scene)?);
     let cells = chart.cells().is_some().then(|| Cells(chart.clone()));
     let (w, h) = (scene.size.width_px, scene.size.height_px);
     let draw_err = |m: String| Error::Draw {
@@ -250,7 +260,7 @@ pub fn render_with(
         },
         || {
             rayon::join(
-                || chart.data_file(scene),
+                || chart.data_file(&scene.name, &scene.title),
                 || cells.as_ref().map_or(Ok(()), cells_to),
             )
         },

@@ -104,7 +104,7 @@ fn every_series_is_told_apart_in_colour_and_in_print() {
             let scene = SceneSource::BuiltIn(name.clone())
                 .load(&settings)
                 .unwrap_or_else(|e| panic!("{name}: {e}"));
-            let chart = Chart::compute(&scene).expect("the scene computes");
+            let chart = Chart::of_scene(&scene).expect("the scene computes");
             let s = &scene.size;
             let (drawn, swatches) = legend::record_swatches(|| {
                 output::svg(s.width_px, s.height_px, s.scale, scene.style, |root| {

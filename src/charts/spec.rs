@@ -474,8 +474,9 @@ impl Scene {
                 ),
             ));
         }
-        self.chart.validate(self)?;
-        self.chart.check_size(self)
+        let input = self.input();
+        self.chart.validate(&input)?;
+        self.chart.check_size(&input)
     }
 }
 

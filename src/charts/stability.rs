@@ -8,7 +8,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axes::{self, DrawResult, PlotAxis, PlotFrame, draw_header};
-use super::kinds::Picture;
+use super::picture::Picture;
 use super::{readoff, style};
 use crate::figures::stability::{StabilityData, StabilitySettings};
 use crate::grid::AxisScale;

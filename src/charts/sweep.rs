@@ -9,8 +9,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axes::{self, DrawResult, Margins, PlotAxis, PlotFrame};
 use super::collide::{self, PxBox};
-use super::kinds::Picture;
 use super::legend::{self, LegendEntry, LegendGroup, Swatch};
+use super::picture::Picture;
 use super::readoff;
 use super::style::{self, LineKind, Marker};
 use super::sweep_band;

@@ -64,7 +64,7 @@ mod tests {
     /// the palm's end ...") beside no line. Now the shade's entry says it runs to the palm's end.
     #[test]
     fn the_latest_edge_past_the_palm_has_no_legend_entry() {
-        use crate::charts::kinds::Picture;
+        use crate::charts::picture::Picture;
         use crate::charts::spec::load_scene;
         use crate::charts::sweep::Sweep;
         use crate::charts::{ChartSpec, Scene};

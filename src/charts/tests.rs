@@ -11,7 +11,7 @@ use crate::minnorm::tolerance::ToleranceRow;
 use crate::minnorm::{ContactSolution, MinNormSettings};
 use crate::models::{ModelKind, ModelSpec, Solution};
 use crate::scene::SceneParams;
-use kinds::Picture;
+use picture::Picture;
 
 fn charts_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("charts")
@@ -25,10 +25,11 @@ fn fig3() -> Scene {
 #[test]
 fn fig3_reads_off_the_errata_values() {
     let scene = fig3();
-    let Chart::JamMap(map) = Chart::compute(&scene).unwrap() else {
+    let Chart::JamMap(map) = Chart::of_scene(&scene).unwrap() else {
         panic!("fig3 is a jam map")
     };
-    let doc: serde_json::Value = serde_json::from_slice(&map.data_file(&scene).bytes).unwrap();
+    let doc: serde_json::Value =
+        serde_json::from_slice(&map.data_file(&scene.name, &scene.title).bytes).unwrap();
     let r = &doc["read_off"];
     let (t, x) = (
         r["theta_jam_deg"].as_f64().unwrap(),
@@ -86,10 +87,11 @@ fn jam_map_without_regions_evaluates_no_grid() {
         panic!("jam map")
     };
     spec.layers = vec![JamMapLayer::Boundary];
-    let Chart::JamMap(map) = Chart::compute(&scene).unwrap() else {
+    let Chart::JamMap(map) = Chart::of_scene(&scene).unwrap() else {
         panic!("jam map")
     };
-    let doc: serde_json::Value = serde_json::from_slice(&map.data_file(&scene).bytes).unwrap();
+    let doc: serde_json::Value =
+        serde_json::from_slice(&map.data_file(&scene.name, &scene.title).bytes).unwrap();
     assert!(doc["cells"].is_null() && doc["read_off"].is_null());
     assert_eq!(doc["boundary"].as_array().unwrap().len(), 401);
 }
@@ -279,7 +281,7 @@ fn every_scene_makes_only_the_model_calls_it_draws() {
     for name in scene_names(&charts_dir()).unwrap() {
         let scene = load_scene(&charts_dir(), &name).unwrap();
         let counting = Counting::default();
-        Chart::compute_with(&scene, &counting).unwrap();
+        Chart::of_scene_with(&scene, &counting).unwrap();
         assert_eq!(
             counting.counts(),
             expected(&name),
@@ -293,7 +295,7 @@ fn every_scene_makes_only_the_model_calls_it_draws() {
 #[test]
 fn fig4_and_fig5_draw_the_jam_of_the_paper_case() {
     let fig4 = load_scene(&charts_dir(), "fig4").unwrap();
-    let Chart::Convergence(c) = Chart::compute(&fig4).unwrap() else {
+    let Chart::Convergence(c) = Chart::of_scene(&fig4).unwrap() else {
         panic!("fig4 is a convergence chart")
     };
     let rows = &c.data().rows;
@@ -307,7 +309,7 @@ fn fig4_and_fig5_draw_the_jam_of_the_paper_case() {
     );
 
     let fig5 = load_scene(&charts_dir(), "fig5").unwrap();
-    let Chart::TimeSeries(t) = Chart::compute(&fig5).unwrap() else {
+    let Chart::TimeSeries(t) = Chart::of_scene(&fig5).unwrap() else {
         panic!("fig5 is a time series")
     };
     let (tj, xj) = t.data().jam.expect("fig5 jams");
@@ -433,10 +435,11 @@ fn the_universal_chart_reads_back_the_closed_form_for_any_part() {
         let scene = SceneSource::BuiltIn("universal".into())
             .load(&set(pairs))
             .unwrap();
-        let Chart::Universal(u) = Chart::compute(&scene).unwrap() else {
+        let Chart::Universal(u) = Chart::of_scene(&scene).unwrap() else {
             panic!("a universal chart")
         };
-        let doc: serde_json::Value = serde_json::from_slice(&u.data_file(&scene).bytes).unwrap();
+        let doc: serde_json::Value =
+            serde_json::from_slice(&u.data_file(&scene.name, &scene.title).bytes).unwrap();
         (scene.params, doc)
     };
     let shaft = [
@@ -522,7 +525,7 @@ fn jam_map_cells_beyond_the_palms_reach_are_their_own_class() {
     .map(|s| s.parse().unwrap())
     .collect();
     let scene = SceneSource::BuiltIn("fig3".into()).load(&set).unwrap();
-    let chart = Chart::compute(&scene).unwrap();
+    let chart = Chart::of_scene(&scene).unwrap();
     let csv = String::from_utf8(chart.cells().unwrap().to_bytes()).unwrap();
     let mut lines = csv.lines();
     assert_eq!(lines.next(), Some("mu,theta_deg,region,margin_n"));

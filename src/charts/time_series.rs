@@ -6,7 +6,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
-use super::kinds::Picture;
+use super::picture::Picture;
 use super::style::LineKind;
 use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, padded_axis};
 use super::{readoff, scene_subtitle_with};

@@ -11,8 +11,8 @@ use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
 use super::colorbar::ColorBar;
-use super::kinds::Picture;
 use super::legend::{self, LegendEntry, Swatch};
+use super::picture::Picture;
 use super::style::{self, INK, LineKind, PAPER};
 use super::{grid_lines, grid_polygons, readoff};
 use crate::figures::vlocator_capacity::{

@@ -8,7 +8,7 @@ use plotters::prelude::*;
 use serde_json::json;
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
-use super::kinds::Picture;
+use super::picture::Picture;
 use super::readoff;
 use super::style::LineKind;
 use super::vlocator_capacity::locator_subtitle;

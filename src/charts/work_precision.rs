@@ -8,7 +8,7 @@ use plotters::prelude::*;
 
 use super::axes::{DrawResult, PlotFrame};
 use super::convergence::sci;
-use super::kinds::Picture;
+use super::picture::Picture;
 use super::style::{LineKind, Marker};
 use super::xy::{Curve, CurveStyle, Figure, Panel, Tag, decade_axis};
 use super::{readoff, scene_subtitle_with};

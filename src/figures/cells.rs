@@ -8,7 +8,7 @@ use crate::csv_out::{Column, Num, write_grid_cells};
 pub type CellAxes<'a> = [(&'a str, &'a [f64]); 2];
 
 /// A map's cells as they go into its long-format CSV: one row per cell (x fastest), the two
-/// axis values then each column (see [`crate::csv_out::write_grid_cells`]). Borrowed from the
+/// axis values then each column (as `csv_out::write_grid_cells` writes them). Borrowed from the
 /// figure and written straight to the file: a map of 10^7 cells never holds its CSV in memory.
 ///
 /// Its serde form is what a map's JSON says of its cells: the grid's size, the columns and,

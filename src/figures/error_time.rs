@@ -3,7 +3,7 @@
 //! wall time of one answer; the rows are `accuracy.csv`.
 //!
 //! Wall time differs from machine to machine and run to run, so this figure comes from the
-//! measured report ([`crate::study::accuracy::run`]), not from a computation of its own.
+//! measured report (`jamchart accuracy`), not from a computation of its own.
 
 use serde::Serialize;
 

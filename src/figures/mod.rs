@@ -125,7 +125,7 @@ impl<const N: usize> Serialize for At<N> {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum DataFormat {
     /// The data's serde form as JSON, every number to
-    /// [`SIGNIFICANT_DIGITS`](crate::csv_out::SIGNIFICANT_DIGITS); a map's cells go beside it
+    /// seven significant digits; a map's cells go beside it
     /// as long-format CSV.
     Json,
     /// The data's rows as CSV (a table: a sweep, a trace, a study).

@@ -21,21 +21,21 @@ use crate::scene::SceneParams;
 pub trait Models: Sync {
     /// One model's answer through the port ([`models::solve`]).
     fn solve(&self, spec: &ModelSpec, p: &SceneParams) -> Result<Solution>;
-    /// clarabel's trace at one palm angle ([`palm::trace_at`]).
+    /// clarabel's trace at one palm angle (`palm::trace_at`).
     fn min_norm_trace(
         &self,
         p: &SceneParams,
         theta_deg: f64,
         s: &MinNormSettings,
     ) -> Result<ContactSolution>;
-    /// The min-norm tolerance study ([`tolerance_study`]).
+    /// The min-norm tolerance study (`minnorm::tolerance_study`).
     fn min_norm_tolerances(
         &self,
         p: &SceneParams,
         s: &MinNormSettings,
         tolerances: &[f64],
     ) -> Result<Vec<ToleranceRow>>;
-    /// The integrators' work-precision study ([`run_study`]).
+    /// The integrators' work-precision study (`accuracy::run_study`).
     fn accuracy_study(
         &self,
         p: &SceneParams,
@@ -49,8 +49,8 @@ pub trait Models: Sync {
     }
 
     /// A rigid disc touching the palm of scene `p`, turning at `d`'s omega, at each palm angle
-    /// of `theta_deg` (deg): its speed and position ([`System::geometric_speed`],
-    /// [`System::touching_x`]). A closed form of the scene's geometry, not a model run.
+    /// of `theta_deg` (deg): its speed and position (`System::geometric_speed`,
+    /// `System::touching_x`). A closed form of the scene's geometry, not a model run.
     fn touching_disc(
         &self,
         p: &SceneParams,

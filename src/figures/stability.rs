@@ -1,6 +1,6 @@
 //! The stability matrix as a figure (scene `stability-matrix`): one row per case and one
 //! column per model and method, each answer classed against the case's physical reference
-//! ([`crate::study::stability::Class`]).
+//! (the stability study's classes).
 //!
 //! The classes, statuses and x_jam do not depend on timing, so the figure is the same on
 //! every machine; wall times are in `jamchart stability`'s table, not here.

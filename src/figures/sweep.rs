@@ -261,7 +261,7 @@ pub struct Series {
     pub callout: Option<String>,
 }
 
-/// The computed sweep; its rows are its CSV data file ([`SweepData::csv`]).
+/// The computed sweep; its rows are its CSV data file (one row per swept value).
 #[derive(Debug, Clone, Serialize)]
 pub struct SweepData {
     /// The scene's parameters.

@@ -186,7 +186,7 @@ pub struct VlocatorCapacityCells {
     /// P_max / W (None: unbounded, every load held).
     pub p_max_over_w: Vec<Option<f64>>,
     /// P_max / W of the same V with friction just below locking
-    /// ([`locator::just_unlocked`]): where the V locks, the capacity the iso-lines follow
+    /// (`locator::just_unlocked`): where the V locks, the capacity the iso-lines follow
     /// under the locking band; elsewhere `p_max_over_w`. Not in the CSV.
     pub unlocked_over_w: Vec<Option<f64>>,
 }

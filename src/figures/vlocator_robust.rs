@@ -121,7 +121,7 @@ impl VlocatorRobustSettings {
 }
 
 /// The computed robust designs, one per friction-range width: the data file is a row per
-/// width ([`FigureData::csv`]).
+/// width (its CSV data file).
 #[derive(Debug, Clone, Serialize)]
 pub struct VlocatorRobustData {
     /// The settings it was computed with.
