@@ -123,11 +123,12 @@ impl VlocatorRobustSpec {
     /// The box at friction-range width `w`.
     fn box_of(&self, w: f64) -> RobustBox {
         let c = self.mu_center;
-        RobustBox {
-            mu: ((c - 0.5 * w).max(0.0), c + 0.5 * w),
-            load_n: (self.load_n[0], self.load_n[1]),
-            load_angle_deg: (self.load_angle_deg[0], self.load_angle_deg[1]),
-        }
+        RobustBox::both_flanks(
+            &self.locator,
+            ((c - 0.5 * w).max(0.0), c + 0.5 * w),
+            (self.load_n[0], self.load_n[1]),
+            (self.load_angle_deg[0], self.load_angle_deg[1]),
+        )
     }
 }
 
@@ -162,8 +163,8 @@ impl VlocatorRobust {
             let win = d.windows.first();
             Row {
                 mu_width: Dec(w),
-                mu_lo: Dec(b.mu.0),
-                mu_hi: Dec(b.mu.1),
+                mu_lo: Dec(b.mu_left.0),
+                mu_hi: Dec(b.mu_left.1),
                 lock_bound_deg: Dec(d.lock_bound_deg),
                 window_lo_deg: dec(win.map(|w| w.0)),
                 window_hi_deg: dec(win.map(|w| w.1)),
@@ -189,8 +190,8 @@ impl VlocatorRobust {
         let boxes: Vec<RobustBox> = self.widths.iter().map(|&w| self.spec.box_of(w)).collect();
         let series = json!({
             "label": "robust design",
-            "mu_lo": readoff::column(boxes.iter().map(|b| b.mu.0)),
-            "mu_hi": readoff::column(boxes.iter().map(|b| b.mu.1)),
+            "mu_lo": readoff::column(boxes.iter().map(|b| b.mu_left.0)),
+            "mu_hi": readoff::column(boxes.iter().map(|b| b.mu_left.1)),
             "lock_bound_deg": col(&|d| Some(d.lock_bound_deg)),
             "window_lo_deg": col(&|d| d.windows.first().map(|w| w.0)),
             "window_hi_deg": col(&|d| d.windows.first().map(|w| w.1)),
@@ -340,11 +341,11 @@ mod tests {
             let width = s.width_max * k as f64 / (s.count - 1) as f64;
             let b = s.box_of(width);
             let d = robust_design(&s.locator, &b);
-            let lock = 2.0 * b.mu.1.atan().to_degrees();
-            if b.mu.1 < x_top * (1.0 - 1e-9) {
+            let lock = 2.0 * b.mu_left.1.atan().to_degrees();
+            if b.mu_left.1 < x_top * (1.0 - 1e-9) {
                 let (lo, hi) = d.windows[0];
                 worst = worst.max((lo - lock).abs()).max((hi - top).abs());
-            } else if b.mu.1 > x_top * (1.0 + 1e-9) {
+            } else if b.mu_left.1 > x_top * (1.0 + 1e-9) {
                 assert!(d.windows.is_empty(), "{width}: {d:?}");
             }
         }
