@@ -280,7 +280,7 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
                 let _ = writeln!(
                     s,
                     "  the jam lies past the palm's end ({} mm): the palm loses the disc first",
-                    p.palm_length_mm
+                    Num(p.palm_length_mm)
                 );
             }
             (JamStatus::BeyondReach, ..) => {
@@ -288,7 +288,7 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
                     s,
                     "  the jam point lies beyond the palm's end ({} mm), or the disc starts past \
                      it: the palm loses the disc first",
-                    p.palm_length_mm
+                    Num(p.palm_length_mm)
                 );
             }
             _ => {}

@@ -291,16 +291,16 @@ fn distribution_text(s: &mut String, d: &DistAnswer) {
         DistMethod::Exact => String::new(),
         DistMethod::MonteCarlo { .. } => format!(
             " [{:.digits$}, {:.digits$}] (width {:.digits$})",
-            e.lo,
-            e.hi,
-            e.hi - e.lo
+            Num(e.lo),
+            Num(e.hi),
+            Num(e.hi - e.lo)
         ),
     };
     for b in &d.before {
         let _ = writeln!(
             s,
             "    P(jams before x = {} mm) = {:.4}{}",
-            b.x_mm,
+            Num(b.x_mm),
             Num(b.probability.value),
             interval(&b.probability, 4)
         );
@@ -345,14 +345,5 @@ fn segments_text(i: &InputEnds) -> String {
 
 /// Four significant digits: a breakpoint found to 1e-9 of the range reads as 0.1484.
 fn round(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return v.to_string();
-    }
-    let digits = (3 - v.abs().log10().floor() as i32).max(0) as usize;
-    let t = format!("{v:.digits$}");
-    if t.contains('.') {
-        t.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        t
-    }
+    crate::numbers::sig(v, 4)
 }

@@ -223,22 +223,25 @@ impl Uncertain {
     /// CLI adds its flag) and quotes the value as written.
     pub(crate) fn check(&self, decl: &Decl) -> Result<()> {
         let refuse = |why: String| Err(Error::invalid(decl.key, self, why));
+        // Each number as short as it reads back (`1e-308`, not 308 zeros).
+        let t = crate::settings::number_text;
         let must = |what: &str, v: f64| -> Result<()> {
             match decl.check.refuse(v) {
                 None => Ok(()),
-                Some(why) => refuse(format!("{what} {v} {why}")),
+                Some(why) => refuse(format!("{what} {} {why}", t(v))),
             }
         };
         match *self {
             Uncertain::Point { value } => decl.check_real(value),
             Uncertain::Range { lo, hi } | Uncertain::Uniform { lo, hi } => {
+                let (l, h) = (t(lo), t(hi));
                 if lo > hi {
                     return refuse(format!(
-                        "the range is reversed ({lo} > {hi}); write LOW:HIGH, e.g. {hi}:{lo}"
+                        "the range is reversed ({l} > {h}); write LOW:HIGH, e.g. {h}:{l}"
                     ));
                 }
                 if lo == hi {
-                    return refuse(format!("the range is empty; for a single value write {lo}"));
+                    return refuse(format!("the range is empty; for a single value write {l}"));
                 }
                 must("its low end", lo)?;
                 must("its high end", hi)
@@ -262,12 +265,13 @@ impl Uncertain {
                     _ => ("its median", "its log standard deviation sigma"),
                 };
                 if sd <= 0.0 {
-                    return refuse(format!("{spread} must be > 0 (it is {sd})"));
+                    return refuse(format!("{spread} must be > 0 (it is {})", t(sd)));
                 }
                 if mean <= 0.0 {
                     return refuse(format!(
-                        "{centre} must be > 0 (it is {mean}): the distribution lives on \
-                         positive values"
+                        "{centre} must be > 0 (it is {}): the distribution lives on positive \
+                         values",
+                        t(mean)
                     ));
                 }
                 must(centre, mean)?;
