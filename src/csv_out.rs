@@ -294,63 +294,6 @@ fn push_text(out: &mut Vec<u8>, word: &str) {
     out.push(b'"');
 }
 
-/// How many cells say each word of a text column, in the order the words first appear:
-/// `{"cells": {"jams": 53239, "jammed_at_start": 22}}`.
-fn word_counts<'a>(words: impl Iterator<Item = &'a str>) -> serde_json::Value {
-    let mut counts: Vec<(&str, usize)> = Vec::new();
-    for w in words {
-        match counts.iter_mut().find(|(k, _)| *k == w) {
-            Some((_, n)) => *n += 1,
-            None => counts.push((w, 1)),
-        }
-    }
-    let counts: serde_json::Map<String, serde_json::Value> = counts
-        .into_iter()
-        .map(|(k, n)| (k.into(), n.into()))
-        .collect();
-    serde_json::json!({ "cells": counts })
-}
-
-/// What a map's JSON says about its long CSV ([`grid_cells`]): the file, the grid's size, the
-/// columns and, per quantity column, its least and greatest value and how many cells have one.
-pub fn cells_summary(
-    file: &str,
-    header: &[&str],
-    (nx, ny): (usize, usize),
-    columns: &[Column],
-) -> serde_json::Value {
-    let summary: serde_json::Map<String, serde_json::Value> = header[2..]
-        .iter()
-        .zip(columns)
-        .map(|(name, c)| {
-            let values: Vec<f64> = match c {
-                Column::Dense(v) => v.iter().copied().filter(|x| x.is_finite()).collect(),
-                Column::Sparse(v) => v
-                    .iter()
-                    .flatten()
-                    .copied()
-                    .filter(|x| x.is_finite())
-                    .collect(),
-                Column::Words { words, of } => {
-                    let each = of.iter().map(|&w| words[usize::from(w)]);
-                    return (name.to_string(), word_counts(each));
-                }
-            };
-            let min = values.iter().copied().reduce(f64::min);
-            let max = values.iter().copied().reduce(f64::max);
-            let s = serde_json::json!({
-                "min": min.map(Num), "max": max.map(Num), "cells_with_value": values.len(),
-            });
-            (name.to_string(), s)
-        })
-        .collect();
-    serde_json::json!({
-        "file": file, "nx": nx, "ny": ny,
-        "order": "one row per cell, x fastest",
-        "columns": header, "summary": summary,
-    })
-}
-
 /// A number for JSON with the digits of [`plain`]: rounded to [`SIGNIFICANT_DIGITS`], so that
 /// serde_json's shortest form prints `24.35455`, not `24.354551362801473`; null for NaN and
 /// infinities, `0` for `-0`.
@@ -367,35 +310,9 @@ impl Serialize for Num {
     }
 }
 
-/// Numbers as [`Num`]s, for a JSON array.
-pub fn nums(v: impl IntoIterator<Item = f64>) -> Vec<Num> {
-    v.into_iter().map(Num).collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A status column is summarised by how many cells say each status, in first-seen order,
-    /// and written word for word in the CSV.
-    #[test]
-    fn a_text_column_is_counted_and_written_as_words() {
-        let cols = [Column::Words {
-            words: &["jam", "slide", "beyond_reach"],
-            of: &[0, 1, 0, 2],
-        }];
-        let s = cells_summary("m.csv", &["x", "y", "region"], (2, 2), &cols);
-        assert_eq!(
-            s["summary"]["region"]["cells"],
-            serde_json::json!({"jam": 2, "slide": 1, "beyond_reach": 1})
-        );
-        let csv = grid_cells(&["x", "y", "region"], &[0.0, 1.0], &[0.0, 1.0], &cols);
-        let text = String::from_utf8(csv).unwrap();
-        assert_eq!(
-            text,
-            "x,y,region\n0,0,jam\n1,0,slide\n0,1,jam\n1,1,beyond_reach\n"
-        );
-    }
 
     #[test]
     fn numbers_are_plain_decimals_without_noise() {
@@ -635,7 +552,10 @@ mod tests {
 
     #[test]
     fn json_numbers_have_the_csv_digits() {
-        let doc = serde_json::to_string(&nums([24.354551362801473, -0.0, 1e-9, f64::NAN, 40.0]));
+        let nums: Vec<Num> = [24.354551362801473, -0.0, 1e-9, f64::NAN, 40.0]
+            .map(Num)
+            .into();
+        let doc = serde_json::to_string(&nums);
         assert_eq!(doc.unwrap(), "[24.35455,0.0,1e-9,null,40.0]");
     }
 }

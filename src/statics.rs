@@ -50,16 +50,18 @@
 //! the end of growing theta_jam. x_jam = r cot(theta/2) + h / sin(theta) falls as theta grows:
 //! dx/dtheta = -(2 (r + h) cos^2(theta/2) - h) / sin^2(theta) < 0 while cos^2(theta/2) >
 //! h / (2 (r + h)), which is every theta up to 90 deg at least (cos^2(theta/2) >= 1/2 there)
-//! and every theta below 180 deg for h = 0 ([`crate::uncertain::range::x_turn_rad`]). So over a
-//! box of inputs theta_jam and x_jam take their extremes at two corners: every input at the end
-//! that raises theta_jam (high frictions and mass, low push: the earliest jam, nearest the
-//! hinge) and the opposite corner (the latest jam, furthest out). The status is decided by
-//! theta_jam against the start angle and the palm's reach angle (neither depends on these
-//! inputs), so it changes at most once per boundary along each input; each breakpoint is
-//! where theta_jam crosses that boundary's angle ([`reach_angle_rad`], the start angle), found
-//! by regula falsi, or by bisection of [`status`] for the other changes (`jamchart solve --mu
-//! 0.12:0.3`). The tests check the corners against a
-//! brute-force grid over the box (`tests/uncertain_range.rs`).
+//! and every theta below 180 deg for h = 0. So over a box of inputs theta_jam takes its
+//! extremes at two corners: every input at the end that raises theta_jam (high frictions and
+//! mass, low push: the earliest jam, nearest the hinge) and the opposite corner (the latest
+//! jam, furthest out). What a point of the box answers is theta_jam clamped at the start angle
+//! where the disc is held there, and none where the jam lies past the palm or the push is too
+//! weak; [`crate::uncertain::range`] derives the interval of those answers from the two
+//! corners (`jamchart solve --mu 0.12:0.3`). The status is decided by theta_jam against the
+//! start angle and the palm's reach angle (neither depends on these inputs), so it changes at
+//! most once per boundary along each input; each breakpoint is where theta_jam crosses that
+//! boundary's angle ([`reach_angle_rad`], the start angle), found by regula falsi, or by
+//! bisection of [`status`] for the other changes. The tests check the interval against a
+//! dense grid of point answers over random boxes (`tests/range_promise.rs`).
 
 use std::f64::consts::FRAC_PI_2;
 
@@ -114,15 +116,12 @@ fn margin_at(p: &SceneParams, alpha_palm: f64, theta: f64) -> f64 {
 pub struct StaticsSolution {
     /// Outcome, decided in the order beyond_reach (the disc starts past the palm's end),
     /// never_jams, too_weak, jammed_at_start, beyond_reach (the jam lies past it), jams.
-    #[serde(skip)] // shared by every model: the record carries it
     pub status: JamStatus,
     /// Palm angle at the jam in degrees (the start angle if jammed at start; None if it never jams
     /// or the jam is beyond reach).
-    #[serde(skip)] // shared by every model: the record carries it
     pub theta_jam_deg: Option<f64>,
     /// Disc position at the jam in mm, r cot(theta_jam/2) + h / sin(theta_jam) (None as for
     /// `theta_jam_deg`).
-    #[serde(skip)] // shared by every model: the record carries it
     pub x_jam_mm: Option<f64>,
     /// The F -> infinity limit of theta_jam in degrees, alpha_g + alpha_p: what a palm driven by
     /// prescribed motion reaches (the classic self-locking wedge).
@@ -236,32 +235,44 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
         past_palm: None,
     };
 
-    match decide_with(p, &angles) {
-        Decision::Bare(status) => out.status = status,
-        Decision::JammedAtStart => {
-            out.status = JamStatus::JammedAtStart;
-            out.theta_jam_deg = Some(p.start_angle_deg);
-            out.x_jam_mm = finite_or_none(p.disc_position_mm(start));
-        }
-        Decision::PastPalm {
-            theta_jam,
-            x_jam,
-            s_b,
-        } => {
-            out.status = JamStatus::BeyondReach;
-            out.past_palm = (x_jam.is_finite() && s_b.is_finite()).then(|| PastPalm {
-                theta_jam_deg: theta_jam.to_degrees(),
-                x_jam_mm: x_jam,
-                palm_length_needed_mm: s_b,
-                friction_factor_needed: friction_factor_to_reach(p),
-            });
-        }
-        Decision::Jams { theta_jam, x_jam } => {
-            out.theta_jam_deg = Some(theta_jam.to_degrees());
-            out.x_jam_mm = Some(x_jam);
-        }
+    let decision = decide_with(p, &angles);
+    (out.status, out.theta_jam_deg, out.x_jam_mm) = jam_of(p, &decision);
+    if let Decision::PastPalm {
+        theta_jam,
+        x_jam,
+        s_b,
+    } = decision
+    {
+        out.past_palm = (x_jam.is_finite() && s_b.is_finite()).then(|| PastPalm {
+            theta_jam_deg: theta_jam.to_degrees(),
+            x_jam_mm: x_jam,
+            palm_length_needed_mm: s_b,
+            friction_factor_needed: friction_factor_to_reach(p),
+        });
     }
     out
+}
+
+/// [`solve`]'s status, theta_jam in deg and x_jam in mm without its extras (lift-off, rigid
+/// limit, the jam past the palm): what a batch of pushes needs. `p` must have passed
+/// [`SceneParams::validate`].
+pub fn jam(p: &SceneParams) -> (JamStatus, Option<f64>, Option<f64>) {
+    jam_of(p, &decide(p))
+}
+
+/// The status, theta_jam (deg) and x_jam (mm) of decision `d` for `p`.
+fn jam_of(p: &SceneParams, d: &Decision) -> (JamStatus, Option<f64>, Option<f64>) {
+    match *d {
+        Decision::JammedAtStart => (
+            JamStatus::JammedAtStart,
+            Some(p.start_angle_deg),
+            finite_or_none(p.disc_position_mm(p.start_angle_deg.to_radians())),
+        ),
+        Decision::Jams { theta_jam, x_jam } => {
+            (JamStatus::Jams, Some(theta_jam.to_degrees()), Some(x_jam))
+        }
+        _ => (d.status(), None, None),
+    }
 }
 
 /// The closed form's status alone: [`solve`]'s `status` without the extras (no lift-off

@@ -9,7 +9,6 @@ use plotters::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
-use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
 use super::ticks::power_of_ten;
@@ -17,6 +16,7 @@ use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
 use super::{DataFile, readoff, scene_subtitle_with};
 use crate::csv_out::{Dec, to_csv};
 use crate::error::{Error, Result};
+use crate::figures::models::Models;
 use crate::grid::AxisScale;
 use crate::minnorm::HoldStatus;
 use crate::minnorm::qp::TracePoint;
@@ -52,7 +52,11 @@ impl super::kinds::Kind for ConvergenceSpec {
         Ok(())
     }
 
-    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<Convergence> {
+    fn compute(
+        &self,
+        scene: &Scene,
+        models: &dyn crate::figures::models::Models,
+    ) -> Result<Convergence> {
         Convergence::compute(scene, self, models)
     }
 }
@@ -207,7 +211,7 @@ impl Convergence {
     }
 
     /// The trace as CSV: the palm angle (deg), iteration, objective (N^2), residuals.
-    pub fn data(&self, _scene: &Scene) -> DataFile {
+    pub fn data_file(&self, _scene: &Scene) -> DataFile {
         DataFile::csv(to_csv(self.rows()))
     }
 

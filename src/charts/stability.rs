@@ -11,11 +11,11 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::{Deserialize, Serialize};
 
 use super::axes::{self, DrawResult, PlotAxis, PlotFrame, draw_header};
-use super::models::Models;
 use super::spec::Scene;
 use super::{DataFile, readoff, style};
 use crate::config::Config;
 use crate::error::{Error, Result};
+use crate::figures::models::Models;
 use crate::grid::AxisScale;
 use crate::scene::JamStatus;
 use crate::study::stability::{self, Class, StabilityReport};
@@ -66,7 +66,11 @@ impl super::kinds::Kind for StabilitySpec {
         Ok(())
     }
 
-    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<Stability> {
+    fn compute(
+        &self,
+        scene: &Scene,
+        models: &dyn crate::figures::models::Models,
+    ) -> Result<Stability> {
         Stability::compute(scene, self, models)
     }
 }
@@ -141,7 +145,7 @@ impl Stability {
     }
 
     /// The classes and answers as JSON (no wall times: the picture's data is deterministic).
-    pub fn data(&self, _scene: &Scene) -> DataFile {
+    pub fn data_file(&self, _scene: &Scene) -> DataFile {
         DataFile::json(&serde_json::json!({
             "methods": self.report.methods,
             "cases": self.report.cases.iter().map(|c| serde_json::json!({"name": c.name, "what": c.what})).collect::<Vec<_>>(),

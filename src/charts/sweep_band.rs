@@ -2,18 +2,13 @@
 //! the swept parameter.
 //!
 //! theta_jam is monotone in every uncertain input (the proof is in [`crate::statics`]), so at
-//! each swept value the jams over the box run from the earliest-jam corner's to the
-//! latest-jam corner's ([`crate::uncertain::range`]); the band's two edges are those corners'
-//! curves. The shaded interval at a swept value is
-//!
-//! - from the earliest corner's jam (it `jams`, or is `jammed_at_start`);
-//! - to the latest corner's jam where that one jams; where it lies past the palm's end
-//!   (`beyond_reach`, or `never_jams`, which slides past every palm), to the palm's end: the
-//!   contact at s_B = L, palm angle [`statics::reach_angle_rad`], disc position
-//!   x = r cot(theta/2) + h / sin(theta) there. Between that corner and the palm's end every
-//!   jam is on the palm (theta_jam is continuous along the box), so the shading is exact;
-//! - nothing where the earliest corner itself does not jam on the palm (then no corner of the
-//!   box does, or the earliest one cannot move the disc: `too_weak`).
+//! each swept value the box's answers run between its earliest-jam corner's and its
+//! latest-jam corner's; the band's two edges are those corners' curves. The shaded interval at
+//! a swept value is [`crate::uncertain::range::hull`] of the two corners' answers: a corner
+//! that jams or is held at the start gives its own end, a too weak earliest corner the start
+//! angle (the points where the push just moves the disc are held there), a latest corner whose
+//! jam lies past the palm's end (or that never jams) the palm's end; nothing where no point of
+//! the box jams on the palm or is held.
 //!
 //! With a distribution, the corners are its 5 % and 95 % quantiles, so the shaded interval is the
 //! exact 5-95 % quantile band of x_jam and theta_jam for one input (they are monotone in it).
@@ -26,12 +21,11 @@ use plotters::prelude::*;
 use super::axes::{self, DrawResult, PlotAxis};
 use super::legend::{LegendEntry, Swatch};
 use super::style::BAND_FILL;
-use super::sweep::{SeriesPoint, SweepBand, SweepPanel};
-use crate::error::{Error, Result};
+use super::sweep::{SeriesPoint, SweepPanel};
+
 use crate::grid::GridParam;
 use crate::scene::{JamStatus, SceneParams};
-use crate::statics;
-use crate::uncertain::{Uncertain, UncertainSet};
+use crate::uncertain::range;
 
 /// The band at one value of the swept parameter.
 #[derive(Debug, Clone, PartialEq)]
@@ -71,30 +65,17 @@ pub fn rows(
         .zip(latest)
         .map(|(e, l)| {
             let p = param.apply(*latest_params, e.at);
-            let reach = statics::reach_angle_rad(&p);
-            let palm_end = (p.disc_position_mm(reach), reach.to_degrees());
-            let jam = |s: &SeriesPoint| {
-                matches!(s.status, Some(JamStatus::Jams | JamStatus::JammedAtStart))
-                    .then_some((s.x_jam_mm?, s.theta_jam_deg?))
+            let answer = |s: &SeriesPoint| {
+                let status = s.status.unwrap_or(JamStatus::OutsideModel);
+                (status, s.theta_jam_deg.zip(s.x_jam_mm))
             };
-            let past_palm = matches!(
-                l.status,
-                Some(JamStatus::BeyondReach | JamStatus::NeverJams)
-            );
-            let far = jam(l).or(past_palm.then_some(palm_end));
-            let (x, theta) = match (jam(e), far) {
-                (Some(a), Some(b)) => (
-                    Some((a.0.min(b.0), a.0.max(b.0))),
-                    Some((a.1.min(b.1), a.1.max(b.1))),
-                ),
-                _ => (None, None),
-            };
+            let hull = range::hull(&p, answer(e), answer(l));
             BandRow {
                 at: e.at,
                 earliest: e.clone(),
                 latest: l.clone(),
-                x_jam_mm: x,
-                theta_jam_deg: theta,
+                x_jam_mm: hull.map(|h| (h.x_jam_mm[0], h.x_jam_mm[1])),
+                theta_jam_deg: hull.map(|h| (h.theta_jam_deg[0], h.theta_jam_deg[1])),
             }
         })
         .collect()
@@ -146,62 +127,6 @@ pub fn legend_entry(rows: &[BandRow], label: &str) -> Option<LegendEntry> {
     ))
 }
 
-/// The band of the uncertain inputs along a sweep of `param`: the closed form at the box's two
-/// extreme corners (ranges at their ends; a distribution at its 5 % and 95 % quantiles, which
-/// is the exact quantile band for one input, as x_jam is monotone in it).
-pub fn from_uncertain(
-    p: &SceneParams,
-    uncertain: &UncertainSet,
-    param: GridParam,
-) -> Result<Option<SweepBand>> {
-    if uncertain.is_empty() {
-        return Ok(None);
-    }
-    let swept = param.decl();
-    let mut edges = uncertain.clone();
-    let mut label = Vec::new();
-    for i in &mut edges.inputs {
-        let clash = i.keys.contains(&swept.key) || i.name == swept.key;
-        if clash || swept.sets.iter().any(|k| i.keys.contains(k)) {
-            return Err(Error::invalid(
-                i.name,
-                i.value,
-                format!(
-                    "it is the swept parameter {}; give it a single value",
-                    swept.key
-                ),
-            ));
-        }
-        if i.value.is_distribution() {
-            let (lo, hi) = (
-                i.value.quantile(BAND_QUANTILE),
-                i.value.quantile(1.0 - BAND_QUANTILE),
-            );
-            let pct = 100.0 * BAND_QUANTILE;
-            label.push(format!(
-                "{} {} ({pct}–{} % quantiles)",
-                i.name,
-                i.value,
-                100.0 - pct
-            ));
-            i.value = Uncertain::Range { lo, hi };
-        } else {
-            // A range's ends as the user wrote them (shortest form: 0.12, not 0.1200).
-            let (lo, hi) = i.value.ends();
-            label.push(format!("{} {lo} to {hi}", i.name));
-        }
-    }
-    let box_answer = crate::uncertain::range::ends(p, &edges);
-    Ok(Some(SweepBand {
-        earliest: edges.apply(p, &box_answer.earliest.values),
-        latest: edges.apply(p, &box_answer.latest.values),
-        label: format!("band over {}", label.join(", ")),
-    }))
-}
-
-/// The quantile of a distributed input at the band's lower edge (5 %; 95 % at the upper).
-const BAND_QUANTILE: f64 = 0.05;
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -235,8 +160,16 @@ mod tests {
         let want = 2.0 * (p.radius_mm / 80.0).atan().to_degrees();
         let (tlo, thi) = r.theta_jam_deg.unwrap();
         assert!((tlo - want).abs() < 1e-9 && (thi - 35.0).abs() < 1e-12);
+        // A too weak earliest corner: the pushes that just move the disc hold it at the start
+        // (90 deg, x = r = 10 mm), so the shade runs from there to the palm's end.
         let too_weak = [pt(40.0, JamStatus::TooWeak, None, None)];
-        assert_eq!(rows(GridParam::ForceN, &p, &too_weak, &l)[0].x_jam_mm, None);
+        let (lo, hi) = rows(GridParam::ForceN, &p, &too_weak, &l)[0]
+            .x_jam_mm
+            .unwrap();
+        assert!(
+            (lo - 10.0).abs() < 1e-9 && (hi - 80.0).abs() < 1e-9,
+            "{lo} {hi}"
+        );
     }
 
     /// The legend never names a line that is not drawn: with mu 0.12 to 0.3 on the issue's
@@ -245,10 +178,11 @@ mod tests {
     /// the palm's end ...") beside no line. Now the shade's entry says it runs to the palm's end.
     #[test]
     fn the_latest_edge_past_the_palm_has_no_legend_entry() {
-        use crate::charts::models::Live;
         use crate::charts::spec::load_scene;
-        use crate::charts::sweep::{Sweep, SweepBand};
+        use crate::charts::sweep::Sweep;
         use crate::charts::{ChartSpec, Scene};
+        use crate::figures::band::Band;
+        use crate::figures::models::Live;
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("charts");
         let mut scene: Scene = load_scene(&dir, "fig7b").expect("fig7b loads");
         scene.params = crate::uncertain::shaft_25mm();
@@ -258,7 +192,7 @@ mod tests {
         spec.axis.min = 10.0;
         spec.axis.max = 100.0;
         spec.axis.count = 11;
-        spec.band = Some(SweepBand {
+        spec.band = Some(Band {
             earliest: scene.params.with_mu(0.3),
             latest: scene.params.with_mu(0.12),
             label: "band over mu 0.12 to 0.3".into(),

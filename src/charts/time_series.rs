@@ -12,7 +12,6 @@ use plotters::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
-use super::models::Models;
 use super::spec::Scene;
 use super::style::LineKind;
 use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, padded_axis};
@@ -22,6 +21,7 @@ use crate::dynamics::DynamicsParams;
 use crate::dynamics::jam::SeriesRow;
 use crate::dynamics::system::System;
 use crate::error::{Error, Result};
+use crate::figures::models::Models;
 use crate::grid::AxisScale;
 use crate::models::{Detail, ModelSpec};
 use crate::scene::{JamStatus, SceneParams};
@@ -72,7 +72,11 @@ impl super::kinds::Kind for TimeSeriesSpec {
         )
     }
 
-    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<TimeSeries> {
+    fn compute(
+        &self,
+        scene: &Scene,
+        models: &dyn crate::figures::models::Models,
+    ) -> Result<TimeSeries> {
         TimeSeries::compute(scene, self, models)
     }
 }
@@ -310,7 +314,7 @@ impl TimeSeries {
     }
 
     /// The series as CSV, with the rigid-disc references.
-    pub fn data(&self, _scene: &Scene) -> DataFile {
+    pub fn data_file(&self, _scene: &Scene) -> DataFile {
         DataFile::csv(to_csv(self.samples.iter().map(SeriesCsvRow::from)))
     }
 

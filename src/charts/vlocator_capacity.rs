@@ -106,7 +106,7 @@ impl super::kinds::Kind for VlocatorCapacitySpec {
     fn compute(
         &self,
         scene: &Scene,
-        _models: &dyn super::models::Models,
+        _models: &dyn crate::figures::models::Models,
     ) -> Result<VlocatorCapacity> {
         VlocatorCapacity::compute(scene, self)
     }
@@ -205,13 +205,14 @@ impl VlocatorCapacity {
     }
 
     /// The data behind the chart as JSON (P_max / W per cell, null where unbounded).
-    pub fn data(&self, scene: &Scene) -> DataFile {
+    pub fn data_file(&self, scene: &Scene) -> DataFile {
         DataFile::json(&json!({
             "scene": scene.name, "title": self.title, "locator": self.spec.locator,
             "x_axis": self.spec.x_axis, "y_axis": self.spec.y_axis,
             "weight_n": self.spec.locator.weight_n(),
             "self_locking_below_included_angle_deg": self.locking_deg,
             "levels_over_w": self.spec.levels_over_w,
+            "cells_file": format!("{}.csv", scene.name),
             "cells": axis_cells_json(&scene.name, self.axes(), &self.columns()),
         }))
     }

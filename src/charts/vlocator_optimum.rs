@@ -8,13 +8,13 @@ use serde::{Deserialize, Serialize};
 use serde_json::json;
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
-use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
 use super::vlocator_capacity::{STANDARD_V_DEG, locator_subtitle};
 use super::xy::{Curve, CurveStyle, Figure, Panel, Tag, decade_axis};
 use super::{DataFile, readoff};
 use crate::error::{Error, Result};
+use crate::figures::models::Models;
 use crate::grid::{AxisScale, Grid, GridAxis, LocatorParam};
 use crate::locator::{self, LocatorParams, Optimum};
 
@@ -190,7 +190,7 @@ pub struct VlocatorOptimum {
 
 impl VlocatorOptimum {
     /// The data behind the chart as JSON.
-    pub fn data(&self, scene: &Scene) -> DataFile {
+    pub fn data_file(&self, scene: &Scene) -> DataFile {
         DataFile::json(&json!({
             "scene": scene.name, "title": self.title, "locator": self.spec.locator,
             "p_over_w_of_direction_sweep": self.spec.p_over_w,

@@ -10,7 +10,6 @@ use serde::{Deserialize, Serialize};
 use serde_json::json;
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
-use super::models::Models;
 use super::spec::Scene;
 use super::style::LineKind;
 use super::vlocator_capacity::{STANDARD_V_DEG, locator_subtitle};
@@ -18,6 +17,7 @@ use super::xy::{Curve, CurveStyle, Figure, Panel, Tag};
 use super::{DataFile, readoff};
 use crate::csv_out::{Dec, dec, to_csv};
 use crate::error::{Error, Result};
+use crate::figures::models::Models;
 use crate::grid::AxisScale;
 use crate::locator::{LocatorParams, RobustBox, RobustDesign, robust_design};
 
@@ -157,7 +157,7 @@ struct Row {
 impl VlocatorRobust {
     /// The data behind the chart as CSV, one row per width; empty window cells where no V
     /// works.
-    pub fn data(&self, _scene: &Scene) -> DataFile {
+    pub fn data_file(&self, _scene: &Scene) -> DataFile {
         let rows = self.widths.iter().zip(&self.designs).map(|(&w, d)| {
             let b = self.spec.box_of(w);
             let win = d.windows.first();

@@ -17,7 +17,6 @@ use serde::{Deserialize, Serialize};
 
 use super::axes::{DrawResult, PlotFrame};
 use super::convergence::sci;
-use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
 use super::xy::{Curve, CurveStyle, Figure, Panel, Tag, decade_axis};
@@ -26,6 +25,7 @@ use crate::csv_out::{Dec, dec, to_csv};
 use crate::dynamics::Method;
 use crate::dynamics::accuracy::{Study, StudyRow, StudySettings};
 use crate::error::{Error, Result};
+use crate::figures::models::Models;
 use crate::minnorm::tolerance::ToleranceRow;
 use crate::scene::JamStatus;
 
@@ -129,7 +129,11 @@ impl super::kinds::Kind for WorkPrecisionSpec {
         Ok(())
     }
 
-    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<WorkPrecision> {
+    fn compute(
+        &self,
+        scene: &Scene,
+        models: &dyn crate::figures::models::Models,
+    ) -> Result<WorkPrecision> {
         WorkPrecision::compute(scene, self, models)
     }
 }
@@ -387,7 +391,7 @@ impl WorkPrecision {
     }
 
     /// Both studies as one CSV: a row per point, `study` telling them apart.
-    pub fn data(&self, _scene: &Scene) -> DataFile {
+    pub fn data_file(&self, _scene: &Scene) -> DataFile {
         DataFile::csv(to_csv(self.rows()))
     }
 

@@ -58,7 +58,7 @@ pub trait Models: Sync {
 /// The jam points of `spec` at `base` with `param` set to each of `values`, in order: the
 /// min-norm model as one line of scenes ([`Models::min_norm_column`]), every other model at
 /// each value in parallel ([`grid::at_values`]).
-pub(super) fn along(
+pub(crate) fn along(
     models: &dyn Models,
     spec: &ModelSpec,
     base: &SceneParams,
@@ -77,7 +77,7 @@ pub(super) fn along(
 /// The grid of `req` with the jam points of `spec`: the min-norm model a column at a time
 /// (each search starts from its neighbours' answers, about three programs a cell against 31
 /// for a bisection from the reach), every other model cell by cell.
-pub(super) fn evaluate(
+pub(crate) fn evaluate(
     models: &dyn Models,
     spec: &ModelSpec,
     req: &GridRequest,
