@@ -9,6 +9,7 @@ mod cli_util;
 mod check_folder;
 mod manifest_forms;
 mod printed_text;
+mod sampled_work;
 mod scripted_callers;
 mod special_files;
 mod vlocator_edges;
