@@ -256,11 +256,21 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
                 );
             }
             (JamStatus::TooWeak, ..) => {
+                let least = statics::least_push_n(p);
+                // A weight past the float range (--mass 1e308) made the least push inf N.
+                let needs = match least.is_finite() {
+                    true => format!(
+                        "it takes more than m g sin(atan mu_ground) = {:.4} N (--force), or less \
+                         ground friction",
+                        Num(least)
+                    ),
+                    false => "the weight m g is beyond the range of a 64-bit float, and no \
+                              finite push moves it"
+                        .into(),
+                };
                 let _ = writeln!(
                     s,
-                    "  the push cannot move the disc at any palm angle: it takes more than \
-                     m g sin(atan mu_ground) = {:.4} N (--force), or less ground friction",
-                    Num(statics::least_push_n(p))
+                    "  the push cannot move the disc at any palm angle: {needs}"
                 );
             }
             (JamStatus::NeverJams, ..) => {
