@@ -13,7 +13,7 @@
 
 mod common;
 
-use common::{median, median_s, time_process};
+use common::{median, median_cpu_s, median_s, time_process};
 use jamchart::dynamics::{DynamicsParams, IntegratorSettings, Method, Verification};
 use jamchart::uncertain::dist::{self, DistQuestion};
 use jamchart::uncertain::range;
@@ -215,4 +215,45 @@ fn main() {
         n as f64 / all,
         n as f64 / single
     );
+
+    // What one sample costs each model as `solve` runs it (the default scene and settings,
+    // verification included), on one thread: the table behind limits::PerSample, which bounds
+    // --samples.
+    let with = |method: Method| ModelSpec::Dynamics {
+        params: DynamicsParams {
+            integrator: IntegratorSettings {
+                method,
+                ..Default::default()
+            },
+            ..Default::default()
+        },
+        series_dt_s: None,
+    };
+    let per_model: [(&str, ModelSpec, u64); 5] = [
+        ("the closed form", ModelSpec::Statics, 100_000),
+        ("min-norm", ModelSpec::MinNorm(Default::default()), 1_000),
+        ("dynamics, RADAU5", with(Method::Radau5), 300),
+        ("dynamics, DOPRI5", with(Method::Dopri5), 60),
+        ("dynamics, nonsmooth", with(Method::Nonsmooth), 2_000),
+    ];
+    let one_mu = mu(Uncertain::Normal {
+        mean: 0.3,
+        sd: 0.01,
+    });
+    let scene = jamchart::SceneParams::default();
+    for (what, spec, n) in per_model {
+        let run = || {
+            std::hint::black_box(
+                dist::monte_carlo(&spec, &scene, &one_mu, &ask(n)).expect("valid"),
+            );
+        };
+        let wall = one.install(|| median_s(3, run));
+        let cpu = one.install(|| median_cpu_s(3, run));
+        println!(
+            "per sample, default scene, mu normal(0.3,0.01), 1 thread, {what}: {:.2e} s of CPU \
+             ({:.2e} s wall; {n} samples, medians of 3)",
+            cpu / n as f64,
+            wall / n as f64
+        );
+    }
 }

@@ -3,6 +3,7 @@
 //! Every section is optional and every key has a default, so a partial file works; an unknown key
 //! is refused with the file, line and column.
 
+mod file;
 mod merge;
 mod read;
 
@@ -15,6 +16,7 @@ use crate::error::{Error, Result};
 use crate::minnorm::MinNormSettings;
 use crate::scene::SceneParams;
 use crate::uncertain::UncertainSet;
+pub use file::{MAX_INPUT_BYTES, MAX_PAGE_BYTES, read_regular, regular_or_missing};
 pub(crate) use merge::{Refusal, overlay, read_section};
 pub use read::{
     array_for_table, cut_quotes, key_line_column, keyed, not_a_table, parse_toml, seq_for_struct,
@@ -99,41 +101,10 @@ pub(crate) fn take_scene_uncertain(
     Ok((nominal, set))
 }
 
-/// Largest settings or scene file read, in bytes: the committed ones are under 2 kB, and a
-/// file pointing at /dev/zero was once read until memory ran out.
-pub const MAX_INPUT_BYTES: u64 = 4 << 20;
-
-/// Reads a settings or scene file: a regular file of at most [`MAX_INPUT_BYTES`].
-///
-/// A FIFO without a writer once blocked forever and /dev/zero was read until memory ran out:
-/// the file is opened without blocking, refused unless it is a regular file, and read no
-/// further than the cap.
+/// Reads a settings or scene file: a regular file of at most [`MAX_INPUT_BYTES`] (see
+/// [`read_regular`]).
 pub fn read_text(path: &Path) -> Result<String> {
-    use std::io::Read;
-    use std::os::unix::fs::OpenOptionsExt;
-    let refuse = |why: String| Error::io("read", path, std::io::Error::other(why));
-    let file = std::fs::OpenOptions::new()
-        .read(true)
-        .custom_flags(libc::O_NONBLOCK | libc::O_NOCTTY)
-        .open(path)
-        .map_err(|e| Error::io("read", path, e))?;
-    let meta = file.metadata().map_err(|e| Error::io("read", path, e))?;
-    if !meta.is_file() {
-        return Err(refuse(
-            "not a regular file (a FIFO, device or directory); give a TOML file".into(),
-        ));
-    }
-    let mut text = String::new();
-    file.take(MAX_INPUT_BYTES + 1)
-        .read_to_string(&mut text)
-        .map_err(|e| Error::io("read", path, e))?;
-    if text.len() as u64 > MAX_INPUT_BYTES {
-        return Err(refuse(format!(
-            "larger than {} MiB; a settings or scene file is a few kB",
-            MAX_INPUT_BYTES >> 20
-        )));
-    }
-    Ok(text)
+    read_regular(path, MAX_INPUT_BYTES, "give a TOML file")
 }
 
 /// What is wrong with a number written as `raw` that parsed to `v`: None if it is fine.

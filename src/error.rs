@@ -52,6 +52,24 @@ pub enum Error {
         limit_source: &'static str,
     },
 
+    /// A request whose estimated run time exceeds its limit (`crate::limits`): a time bound, as
+    /// [`Error::TooLarge`] is a memory bound.
+    #[error(
+        "{what} would take about {} of one core, over the limit of {} (set by {key}); lower it",
+        crate::limits::human_seconds(*estimate_s),
+        crate::limits::human_seconds(*limit_s)
+    )]
+    TooLong {
+        /// The setting that sizes the request (e.g. `--samples`).
+        key: String,
+        /// What would take too long ("10000000 samples of min-norm, 0.25 ms each").
+        what: String,
+        /// The estimated CPU time in s.
+        estimate_s: f64,
+        /// The limit in s.
+        limit_s: f64,
+    },
+
     /// A settings table (a scene file's section, `--set`, a flag) the settings refuse: an unknown
     /// key, a wrong type, an array for a table.
     #[error("{message}")]

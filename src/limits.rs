@@ -116,6 +116,119 @@ pub const SWEEP_POINT: PerItem = PerItem::new("points of the sweep", 1500, 120);
 /// A row of a simulated time series.
 pub const SERIES_ROW: PerItem = PerItem::new("rows of the time series", 300, 100);
 
+/// What one Monte Carlo sample of a model costs on one core at the default settings, for the
+/// estimate that bounds `solve --samples` by time, as [`PerItem`] bounds the maps by memory.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PerSample {
+    /// The model in words ("min-norm").
+    pub what: &'static str,
+    /// CPU time per sample in s.
+    pub cpu_s: f64,
+}
+
+// Measured by `cargo bench --bench uncertain` (its "per sample" lines: the default scene,
+// mu normal(0.3, 0.01), one thread, CPU time, so that other processes on the cores do not
+// count; medians of 3):
+//
+// | model               | s of CPU per sample |
+// |---------------------|---------------------|
+// | closed form         |              2.1e-7 |
+// | min-norm            |              2.6e-4 |
+// | dynamics, RADAU5    |              6.3e-4 |
+// | dynamics, DOPRI5    |              9.3e-3 |
+// | dynamics, nonsmooth |              8.7e-5 |
+//
+// A scene's cost moves with its settings (a stiffer contact, a tighter tolerance, a slower
+// palm): `uncertain::dist` times one sample at the nominal values and takes the larger of the
+// two ([`PerSample::at_least`]).
+
+/// A sample of the closed form.
+pub const STATICS_SAMPLE: PerSample = PerSample::new("the closed form", 2.1e-7);
+
+/// A sample of the minimum-norm model.
+pub const MIN_NORM_SAMPLE: PerSample = PerSample::new("min-norm", 2.6e-4);
+
+/// A sample of the simulation by RADAU5.
+pub const RADAU5_SAMPLE: PerSample = PerSample::new("the simulation by RADAU5", 6.3e-4);
+
+/// A sample of the simulation by DOPRI5.
+pub const DOPRI5_SAMPLE: PerSample = PerSample::new("the simulation by DOPRI5", 9.3e-3);
+
+/// A sample of the simulation by the nonsmooth method.
+pub const NONSMOOTH_SAMPLE: PerSample =
+    PerSample::new("the simulation by the nonsmooth method", 8.7e-5);
+
+impl PerSample {
+    /// `what`, at `cpu_s` seconds of one core a sample.
+    const fn new(what: &'static str, cpu_s: f64) -> Self {
+        PerSample { what, cpu_s }
+    }
+
+    /// This cost, or `cpu_s` where a sample was timed dearer.
+    pub fn at_least(self, cpu_s: f64) -> PerSample {
+        PerSample {
+            cpu_s: self.cpu_s.max(cpu_s),
+            ..self
+        }
+    }
+}
+
+/// CPU time of the calling thread so far, in s (`CLOCK_THREAD_CPUTIME_ID`): what one sample
+/// costs, whatever else runs on the cores.
+pub fn thread_cpu_s() -> f64 {
+    let mut t = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: clock_gettime writes one timespec through a valid pointer.
+    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut t) };
+    t.tv_sec as f64 + t.tv_nsec as f64 * 1e-9
+}
+
+/// The cost of one sample of the model `spec`.
+pub fn per_sample(spec: &crate::models::ModelSpec) -> PerSample {
+    use crate::dynamics::Method;
+    use crate::models::ModelSpec;
+    match spec {
+        ModelSpec::Statics => STATICS_SAMPLE,
+        ModelSpec::MinNorm(_) => MIN_NORM_SAMPLE,
+        ModelSpec::Dynamics { params, .. } => match params.integrator.method {
+            Method::Radau5 => RADAU5_SAMPLE,
+            Method::Dopri5 => DOPRI5_SAMPLE,
+            Method::Nonsmooth => NONSMOOTH_SAMPLE,
+        },
+    }
+}
+
+/// CPU time one sampled answer may be estimated to take (10 min of one core, 5 min of a
+/// 2-core machine's wall time), with a progress bar on a terminal while it runs: hours of work
+/// were accepted (`solve --model min-norm --samples 10000000`).
+pub const MAX_SAMPLED_CPU_S: f64 = 600.0;
+
+/// The estimated CPU time of `samples` samples of `per`, in s.
+pub fn sampled_cpu_s(samples: u64, per: PerSample) -> f64 {
+    samples as f64 * per.cpu_s
+}
+
+/// Refuses `samples` samples of `per` whose estimated CPU time exceeds [`MAX_SAMPLED_CPU_S`];
+/// `key` names the setting to lower.
+pub fn check_samples(key: &str, samples: u64, per: PerSample) -> Result<()> {
+    let estimate_s = sampled_cpu_s(samples, per);
+    if estimate_s <= MAX_SAMPLED_CPU_S {
+        return Ok(());
+    }
+    Err(Error::TooLong {
+        key: key.to_string(),
+        what: format!(
+            "{samples} samples of {}, about {} each,",
+            per.what,
+            human_seconds(per.cpu_s)
+        ),
+        estimate_s,
+        limit_s: MAX_SAMPLED_CPU_S,
+    })
+}
+
 /// Refuses `count` items whose estimated memory or output exceeds [`memory_limit_bytes`] or
 /// [`MAX_OUTPUT_BYTES`]; `key` names the setting to lower.
 pub fn check_items(key: &str, count: f64, per: PerItem) -> Result<()> {
@@ -238,9 +351,45 @@ pub fn human_bytes(b: u64) -> String {
     }
 }
 
+/// A duration in a human unit: `0.25 ms`, `12 s`, `10 min`, `2.8 h`.
+pub fn human_seconds(s: f64) -> String {
+    let shown = |v: f64, unit: &str| format!("{} {unit}", crate::numbers::sig(v, 2));
+    match s {
+        _ if s < 1e-3 => shown(s * 1e6, "us"),
+        _ if s < 1.0 => shown(s * 1e3, "ms"),
+        _ if s < 120.0 => shown(s, "s"),
+        _ if s < 7200.0 => shown(s / 60.0, "min"),
+        _ if s < 172_800.0 => shown(s / 3600.0, "h"),
+        _ => shown(s / 86_400.0, "days"),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn human_seconds_reads_well() {
+        assert_eq!(human_seconds(2.2e-4), "220 us");
+        assert_eq!(human_seconds(0.0092), "9.2 ms");
+        assert_eq!(human_seconds(600.0), "10 min");
+        assert_eq!(human_seconds(2200.0), "37 min");
+        assert_eq!(human_seconds(1e4), "2.8 h");
+    }
+
+    /// `solve --model min-norm --samples 10000000` was accepted (hours of work); the sampled
+    /// models are bounded by their estimated time, the closed form by its count alone.
+    #[test]
+    fn sampled_work_is_bounded_by_its_estimated_time() {
+        let msg = check_samples("--samples", 10_000_000, MIN_NORM_SAMPLE)
+            .unwrap_err()
+            .to_string();
+        assert!(msg.contains("--samples") && msg.contains("43 min"), "{msg}");
+        assert!(msg.contains("10 min"), "{msg}");
+        check_samples("--samples", 2_000, DOPRI5_SAMPLE).unwrap();
+        check_samples("--samples", 10_000_000, STATICS_SAMPLE).unwrap();
+        assert!(check_samples("--samples", 100_000, DOPRI5_SAMPLE).is_err());
+    }
 
     #[test]
     fn human_bytes_reads_well() {

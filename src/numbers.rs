@@ -65,21 +65,48 @@ pub(crate) fn fixed(v: f64, decimals: usize) -> String {
         // As many significant digits as the fixed form shows of an ordinary value.
         let e = format!("{v:.decimals$e}");
         let (mantissa, exponent) = e.split_once('e').unwrap_or((&e, "0"));
-        let mantissa = if mantissa.contains('.') {
-            mantissa.trim_end_matches('0').trim_end_matches('.')
-        } else {
-            mantissa
-        };
-        format!("{mantissa}e{exponent}")
+        format!("{}e{exponent}", trim_zeros(mantissa))
     } else {
         format!("{v:.decimals$}")
     }
 }
 
-/// `v` with three significant digits, no exponent (`0.0102`, `24.7`, `254`).
+/// `v` with `digits` significant digits, trailing zeros dropped (`0.1484`, `14.84`, `1484`,
+/// and `12346` for 12345.6: the integer part is kept whole), in exponent form outside
+/// 1e-4..1e15 (`1e308`, `2.5e-300`), where the fixed form ran to 309 digits.
+pub(crate) fn sig(v: f64, digits: usize) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return v.to_string();
+    }
+    let digits = digits.max(1);
+    let a = v.abs();
+    if !(PLAIN_MIN..PLAIN_MAX).contains(&a) {
+        let e = format!("{v:.prec$e}", prec = digits - 1);
+        let (mantissa, exponent) = e.split_once('e').unwrap_or((&e, "0"));
+        return format!("{}e{exponent}", trim_zeros(mantissa));
+    }
+    let magnitude = a.log10().floor() as i32;
+    let decimals = (digits as i32 - 1 - magnitude).max(0) as usize;
+    trim_zeros(&format!("{v:.decimals$}")).to_string()
+}
+
+/// `1.2500` as `1.25`, `2.000` as `2`; a number without a point as it is.
+fn trim_zeros(t: &str) -> &str {
+    if t.contains('.') {
+        t.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        t
+    }
+}
+
+/// `v` with three significant digits (`0.0102`, `24.7`, `254`, `1.00e300`): the fixed form
+/// up to 1e15, an exponent beyond (1e300 printed 301 digits).
 fn sig3(v: f64) -> String {
     if v == 0.0 {
         return "0".into();
+    }
+    if !v.is_finite() || v.abs() >= PLAIN_MAX {
+        return sci3(v);
     }
     let magnitude = v.abs().log10().floor() as i32;
     let decimals = (2 - magnitude).max(0) as usize;
@@ -168,6 +195,27 @@ mod tests {
         assert_eq!(format!("{:.3} mm", Num(1.2e-7)), "1.2e-7 mm");
         assert_eq!(format!("{:.3}", Num(1e300)), "1e300");
         assert_eq!(format!("{}", Num(0.1 + 0.2)), "0.3");
+    }
+
+    /// Numbers of four significant digits (a range's breakpoints) printed 1e308 with 309
+    /// digits and 1e-300 with 300 zeros; the fixed form of ordinary values is kept as it was.
+    #[test]
+    fn significant_digits_read_short_at_every_magnitude() {
+        assert_eq!(sig(0.148437, 4), "0.1484");
+        assert_eq!(sig(14.84, 4), "14.84");
+        assert_eq!(sig(12345.6, 4), "12346");
+        assert_eq!(sig(0.3, 4), "0.3");
+        assert_eq!(sig(1e308, 4), "1e308");
+        assert_eq!(sig(-2.345678e-300, 4), "-2.346e-300");
+        assert_eq!(sig(5e-324, 4), "4.941e-324");
+        assert_eq!(sig(0.0, 4), "0");
+        assert_eq!(length_mm(Some(1e300)), "1.00e300 mm");
+        assert_eq!(angle_deg(Some(-1e20)), "-1.00e20 deg");
+        for v in [1e308, f64::MAX, 1e-308, 5e-324, 123456789.123, -1e15] {
+            for text in [sig(v, 4), Num(v).to_string(), fixed(v, 3), ratio(Some(v))] {
+                assert!(text.len() <= 20, "{v}: {text}");
+            }
+        }
     }
 
     #[test]

@@ -85,9 +85,10 @@ fn jamchart_redirected(dir: &Path, redirect: &str, args: &[&str]) -> Output {
 }
 
 /// Regression (issue 23, class 4, "lost output reported as success"): `table --format csv >
-/// /dev/full` and `solve >&-` exited 0 with nothing written (an empty file on a full disk):
-/// the write's error was dropped, and Rust's stdout swallows EBADF. A failed write and a closed
-/// stdout are now errors with exit 2 and a message; a closed pipe (`| head`) still is not.
+/// /dev/full` exited 0 with nothing written (an empty file on a full disk): the write's error
+/// was dropped. A failed write is now an error with exit 2 and a message; a closed pipe (`|
+/// head`) still is not. (A closed stdout, `>&-`, is reopened on /dev/null read-write by Rust's
+/// runtime: it cannot be told from the /dev/null a script hands over, and both are answered.)
 #[test]
 fn a_failed_write_to_stdout_is_an_error() {
     let dir = tempfile::tempdir().unwrap();
@@ -95,7 +96,6 @@ fn a_failed_write_to_stdout_is_an_error() {
     for (redirect, args, says) in [
         ("> /dev/full", &["table", "--format", "csv"][..], "space"),
         ("> /dev/full", &["solve"][..], "space"),
-        (">&-", &["solve"][..], "closed"),
     ] {
         let o = jamchart_redirected(d, redirect, args);
         let e = stderr(&o);

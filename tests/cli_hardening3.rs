@@ -9,7 +9,7 @@ use std::time::{Duration, Instant};
 
 #[path = "common/cli.rs"]
 mod cli_util;
-use cli_util::{kill_and_wait, stderr, stdout};
+use cli_util::{kill_and_wait, longest_digit_run, stderr, stdout};
 
 /// The test hook of `atomic::write_all`: a pause between staging a set and committing it.
 const PAUSE_VAR: &str = "JAMCHART_TEST_PAUSE_AFTER_STAGING_MS";
@@ -393,15 +393,6 @@ fn lost_output_on_the_new_surfaces_is_an_error() {
 fn run_in_empty(args: &[&str]) -> Output {
     let dir = tempfile::tempdir().unwrap();
     cli_util::jamchart(dir.path(), args)
-}
-
-/// The longest run of digits in `s`: a number printed in full (1e300 as 301 digits, 1e-300
-/// with 300 zeros) shows as a long run.
-fn longest_digit_run(s: &str) -> usize {
-    s.split(|c: char| !c.is_ascii_digit())
-        .map(str::len)
-        .max()
-        .unwrap_or(0)
 }
 
 /// Polish, item 1: `solve --mu 1e-300` printed its `x_rigid` line (and the echoed mu) with

@@ -193,14 +193,15 @@ fn robust_v_block_window_is_the_closed_forms() {
 }
 
 /// Bad ranges exit 2 naming the flag: reversed, a distribution (the robust V-block holds a
-/// range, it does not weigh one), and an uncertain mass, which it does not search.
+/// range, it does not weigh one), a mass range reaching 0, a direction range over 360 deg.
 #[test]
 fn robust_v_block_refuses_bad_ranges_naming_the_flag() {
     let dir = tempfile::tempdir().unwrap();
     for (args, want) in [
         (vec!["--mu", "0.3:0.12", "--load", "30"], "--mu"),
         (vec!["--mu", "normal(0.2,0.03)", "--load", "30"], "--mu"),
-        (vec!["--mu", "0.1:0.2", "--mass", "0.1:1"], "--mass"),
+        (vec!["--mu", "0.1:0.2", "--mass", "0:1"], "--mass"),
+        (vec!["--mass", "normal(1,0.1)", "--load", "3"], "--mass"),
         (
             vec!["--mu", "0.1:0.2", "--load-angle", "-200:200"],
             "--load-angle",
@@ -218,53 +219,48 @@ fn robust_v_block_refuses_bad_ranges_naming_the_flag() {
     }
 }
 
-/// `vlocator --mu 0.2:0.4 --mu-left 0.3` was refused naming `--mu`, with "mu = 0.3 left, 0.3
-/// right" (the range's midpoint 0.30000000000000004 beside 0.3): the conflict is `--mu-left`,
-/// which keeps the left flank off the range. Each way of breaking "one friction range on both
-/// flanks" names the flank flag that breaks it, and exits 2.
+/// The help promises ranges on `--mu-left`, `--mu-right` and `--mass`, and each was refused
+/// (`--mu 0.2:0.4 --mu-left 0.3` named the flank flag that "broke one friction range"). Each
+/// combination is now a box of its own: a flank given as a number keeps it, a flank's range is
+/// its own, and the mass ranges too; the JSON box says which.
 #[test]
-fn robust_v_block_names_the_flank_flag_that_breaks_one_friction_range() {
+fn robust_v_block_takes_flank_and_mass_ranges() {
     let dir = tempfile::tempdir().unwrap();
-    for (args, flag, value) in [
+    // The arguments, then the box's ends: mu_left, mu_right, mass_kg.
+    let cases: [(&[&str], [f64; 6]); 5] = [
         (
-            &["--mu", "0.2:0.4", "--mu-left", "0.3"][..],
-            "--mu-left",
-            "0.3",
+            &["--mu", "0.2:0.4", "--mu-left", "0.3"],
+            [0.3, 0.3, 0.2, 0.4, 1.0, 1.0],
         ),
         (
-            &["--mu", "0.2:0.4", "--mu-right", "0.25"][..],
-            "--mu-right",
-            "0.25",
+            &["--mu", "0.2:0.4", "--mu-right", "0.25"],
+            [0.2, 0.4, 0.25, 0.25, 1.0, 1.0],
         ),
-        (&["--mu-left", "0.2:0.4"][..], "--mu-left", "0.2:0.4"),
+        (&["--mu-left", "0.2:0.4"], [0.2, 0.4, 0.3, 0.3, 1.0, 1.0]),
         (
-            &["--mu", "0.2:0.4", "--mu-left", "0.2:0.4"][..],
-            "--mu-left",
-            "0.2:0.4",
+            &["--mu-left", "0.1:0.2", "--mu-right", "0.3:0.5"],
+            [0.1, 0.2, 0.3, 0.5, 1.0, 1.0],
         ),
         (
-            &["--load", "6:9", "--mu-right", "0.2"][..],
-            "--mu-right",
-            "0.2",
+            &["--load", "6:9", "--mass", "0.5:2"],
+            [0.3, 0.3, 0.3, 0.3, 0.5, 2.0],
         ),
-    ] {
-        let mut all = vec!["vlocator"];
+    ];
+    for (args, [l0, l1, r0, r1, m0, m1]) in cases {
+        let (left, right, mass) = ((l0, l1), (r0, r1), (m0, m1));
+        let mut all = vec!["vlocator", "--format", "json"];
         all.extend(args);
-        let r = jamchart(dir.path(), &all);
-        let err = stderr(&r);
-        assert_eq!(r.status.code(), Some(2), "{args:?}: {err}");
-        let key = flag.trim_start_matches("--").replace('-', "_");
-        // The key's flags are "--mu-left or --mu": the reason names the one that conflicts.
-        assert!(
-            err.contains(&format!("invalid {key} = {value} (flag {flag}")),
-            "{args:?}: {err}"
-        );
-        assert!(err.contains(&format!("without {flag} ")), "{args:?}: {err}");
-        assert!(
-            err.contains("one friction range for both flanks"),
-            "{args:?}: {err}"
-        );
-        assert!(!err.contains("(flag --mu)"), "{args:?}: {err}");
-        eprintln!("{}", err.trim());
+        let v = json(&jamchart(dir.path(), &all));
+        let ends = |k: &str| {
+            let e = &v["box"][k];
+            (e[0].as_f64().unwrap(), e[1].as_f64().unwrap())
+        };
+        assert_eq!(ends("mu_left"), left, "{args:?}");
+        assert_eq!(ends("mu_right"), right, "{args:?}");
+        assert_eq!(ends("mass_kg"), mass, "{args:?}");
+        // Locking is decided by the smaller of the highs (free rotation): 2 atan min.
+        let lock = v["design"]["lock_bound_deg"].as_f64().unwrap();
+        let want = 2.0 * left.1.min(right.1).atan().to_degrees();
+        assert!((lock - want).abs() < 1e-12, "{args:?}: {lock}");
     }
 }

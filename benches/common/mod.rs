@@ -24,6 +24,31 @@ pub fn median_s(runs: usize, mut f: impl FnMut()) -> f64 {
     )
 }
 
+/// CPU time (user + sys) of this process so far, in s: unlike wall time, it does not grow
+/// when other processes share the cores.
+#[allow(dead_code)] // not every benchmark counts CPU time
+pub fn process_cpu_s() -> f64 {
+    // SAFETY: getrusage writes one rusage through a valid pointer.
+    let mut u: libc::rusage = unsafe { std::mem::zeroed() };
+    unsafe { libc::getrusage(libc::RUSAGE_SELF, &mut u) };
+    let s = |t: libc::timeval| t.tv_sec as f64 + t.tv_usec as f64 * 1e-6;
+    s(u.ru_utime) + s(u.ru_stime)
+}
+
+/// The median CPU time ([`process_cpu_s`]) of `runs` calls of `f`, in s.
+#[allow(dead_code)] // not every benchmark counts CPU time
+pub fn median_cpu_s(runs: usize, mut f: impl FnMut()) -> f64 {
+    median(
+        (0..runs)
+            .map(|_| {
+                let c0 = process_cpu_s();
+                f();
+                process_cpu_s() - c0
+            })
+            .collect(),
+    )
+}
+
 /// A rayon pool of one thread, to time a parallel computation on one core.
 #[allow(dead_code)] // not every benchmark compares thread counts
 pub fn one_thread_pool() -> rayon::ThreadPool {

@@ -59,8 +59,8 @@ impl Picture for VlocatorRobust {
             .collect();
         let series = json!({
             "label": "robust design",
-            "mu_lo": readoff::column(boxes.iter().map(|b| b.mu.0)),
-            "mu_hi": readoff::column(boxes.iter().map(|b| b.mu.1)),
+            "mu_lo": readoff::column(boxes.iter().map(|b| b.mu_left.0)),
+            "mu_hi": readoff::column(boxes.iter().map(|b| b.mu_left.1)),
             "lock_bound_deg": col(&|d| Some(d.lock_bound_deg)),
             "window_lo_deg": col(&|d| d.windows.first().map(|w| w.0)),
             "window_hi_deg": col(&|d| d.windows.first().map(|w| w.1)),
@@ -216,11 +216,11 @@ mod tests {
             let width = s.width_max * k as f64 / (s.count - 1) as f64;
             let b = s.box_of(width);
             let d = robust_design(&s.locator, &b);
-            let lock = 2.0 * b.mu.1.atan().to_degrees();
-            if b.mu.1 < x_top * (1.0 - 1e-9) {
+            let lock = 2.0 * b.mu_left.1.atan().to_degrees();
+            if b.mu_left.1 < x_top * (1.0 - 1e-9) {
                 let (lo, hi) = d.windows[0];
                 worst = worst.max((lo - lock).abs()).max((hi - top).abs());
-            } else if b.mu.1 > x_top * (1.0 + 1e-9) {
+            } else if b.mu_left.1 > x_top * (1.0 + 1e-9) {
                 assert!(d.windows.is_empty(), "{width}: {d:?}");
             }
         }

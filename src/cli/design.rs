@@ -188,8 +188,8 @@ fn sim_line(c: &SimCheck) -> String {
         "  check (F = {:.3} N, mu {} / {}): closed form x_jam = {}, nonsmooth simulation (force \
          drive) x_jam = {}",
         Num(c.force_n),
-        c.mu.0,
-        c.mu.1,
+        Num(c.mu.0),
+        Num(c.mu.1),
         mm(c.x_jam_closed_form_mm),
         mm(c.x_jam_nonsmooth_mm)
     )
@@ -254,8 +254,8 @@ fn text(
             "least push: none: at mu_ground {} / mu_palm {} the friction wedge locks at {:.3} deg \
              (x = {x_rigid_mm:.3} mm) before the target whatever the push; lower the friction \
              or move the target nearer",
-            e.mu_ground,
-            e.mu_palm,
+            Num(e.mu_ground),
+            Num(e.mu_palm),
             Num(theta_rigid_deg),
             x_rigid_mm = Num(x_rigid_mm)
         ),
@@ -279,9 +279,9 @@ fn text(
         out,
         "largest friction for the push F = {} N: mu_ground up to {} (mu_palm {}; closed form), \
          or mu up to {} on both",
-        e.force_n,
+        Num(e.force_n),
         mu(d.mu_ground_max),
-        e.mu_palm,
+        Num(e.mu_palm),
         mu(d.mu_max)
     );
     match (d.palm_length_needed_mm, d.x_jam_latest_mm) {

@@ -5,17 +5,22 @@
 use std::path::Path;
 
 use crate::charts::{self, gallery::Entry};
-use crate::error::{Error, Result};
+use crate::config;
+use crate::error::Result;
 
 /// The page of folder `out` with the sections of `entries` (drawn now, their files about to
 /// be written): the previous page's sections of charts not drawn now, and a bare section for
 /// any other picture in the folder.
 pub(crate) fn page(out: &Path, entries: &[Entry]) -> Result<String> {
     let index = out.join("index.html");
-    let previous = match std::fs::read_to_string(&index) {
-        Ok(text) => Some(text),
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
-        Err(e) => return Err(Error::io("read", index, e)),
+    // A FIFO or /dev/null there is written through: it holds no page to extend.
+    let previous = match config::regular_or_missing(&index)? {
+        Some(true) => Some(config::read_regular(
+            &index,
+            config::MAX_PAGE_BYTES,
+            "remove it, or write into another folder",
+        )?),
+        Some(false) | None => None,
     };
     let mut files: Vec<String> = std::fs::read_dir(out)
         .map(|dir| {

@@ -4,10 +4,12 @@
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
+use std::path::Path;
 
 use sha2::{Digest, Sha256};
 
 use crate::charts::Rendered;
+use crate::error::{Error, Result};
 
 /// The manifest's file name in the output folder.
 pub const MANIFEST: &str = "SHA256SUMS";
@@ -44,12 +46,102 @@ pub fn text(hashes: &Hashes) -> String {
     hashes.iter().map(|(f, h)| format!("{h}  {f}\n")).collect()
 }
 
-/// Reads a manifest's text back; lines that are not `HASH  FILE` (blank, comments) are skipped.
-pub fn parse(text: &str) -> Hashes {
-    text.lines()
-        .filter_map(|l| l.split_once("  "))
-        .map(|(h, f)| (f.trim().to_string(), h.trim().to_string()))
-        .collect()
+/// Reads a manifest back as `sha256sum -c` reads it: `HASH  FILE` (text mode), `HASH *FILE`
+/// (`sha256sum -b`), `SHA256 (FILE) = HASH` (`--tag`) and `HASH FILE` (BSD `-r`), hex in either
+/// case, leading blanks, a CR before the newline, a backslash that escapes the name (`\\`,
+/// `\n`, `\r`) and a `./` before it. A line of none of these forms (blank, a comment) is
+/// skipped, as `sha256sum -c` skips it with a warning; a file listed twice with two hashes is
+/// an error naming the line. `path` names the manifest in that error.
+pub fn parse(text: &str, path: &Path) -> Result<Hashes> {
+    let mut out = Hashes::new();
+    // sha256sum takes the first checksum line's form, GNU or BSD `-r`, for every later line.
+    let mut reversed = None;
+    for (i, line) in text.split('\n').enumerate() {
+        let line = line.strip_suffix('\r').unwrap_or(line);
+        let Some((file, hash)) = checksum_line(line, &mut reversed) else {
+            continue;
+        };
+        let file = file.trim_start_matches("./").to_string();
+        match out.get(&file) {
+            Some(h) if *h != hash => {
+                return Err(Error::Config {
+                    path: path.to_path_buf(),
+                    line: i + 1,
+                    column: 1,
+                    message: format!(
+                        "{file} is listed twice with different hashes; keep one line per \
+                         picture (render --bless writes the manifest afresh)"
+                    ),
+                });
+            }
+            _ => {
+                out.insert(file, hash);
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Hex digits of a SHA-256.
+const HEX_LEN: usize = 64;
+
+/// One line's (file, lowercase hash), as coreutils' `split_3` reads it; None when the line is
+/// not a checksum line. `reversed` is the form of the first checksum line (see [`parse`]).
+fn checksum_line(line: &str, reversed: &mut Option<bool>) -> Option<(String, String)> {
+    let line = line.trim_start_matches(|c: char| c.is_ascii_whitespace());
+    let (escaped, line) = match line.strip_prefix('\\') {
+        Some(rest) => (true, rest),
+        None => (false, line),
+    };
+    let name = |raw: &str| {
+        if escaped {
+            unescape(raw)
+        } else {
+            Some(raw.to_string())
+        }
+    };
+    if let Some(rest) = line.strip_prefix("SHA256") {
+        // BSD tagged: the name runs to the last ')', whatever it holds.
+        let rest = rest.strip_prefix(' ').unwrap_or(rest).strip_prefix('(')?;
+        let (file, after) = rest.rsplit_once(')')?;
+        let hash = after.trim_start_matches([' ', '\t']).strip_prefix('=')?;
+        let hash = hash.trim_start_matches([' ', '\t']);
+        return Some((name(file)?, hex(hash)?));
+    }
+    let hash = hex(line.get(..HEX_LEN)?)?;
+    let rest = line[HEX_LEN..].strip_prefix([' ', '\t'])?;
+    // `HASH  FILE` or `HASH *FILE`; anything else after one blank is BSD `-r`'s `HASH FILE`.
+    let gnu = rest.len() > 1 && (rest.starts_with(' ') || rest.starts_with('*'));
+    let file = match (gnu, *reversed.get_or_insert(!gnu)) {
+        (true, false) => &rest[1..],
+        (false, true) => rest,
+        _ => return None,
+    };
+    Some((name(file)?, hash))
+}
+
+/// `h` as lowercase hex when it is 64 hex digits and nothing else.
+fn hex(h: &str) -> Option<String> {
+    (h.len() == HEX_LEN && h.bytes().all(|b| b.is_ascii_hexdigit())).then(|| h.to_ascii_lowercase())
+}
+
+/// A name escaped by sha256sum (`\\` a backslash, `\n` a newline, `\r` a CR); None for any
+/// other escape.
+fn unescape(raw: &str) -> Option<String> {
+    let mut out = String::with_capacity(raw.len());
+    let mut chars = raw.chars();
+    while let Some(c) = chars.next() {
+        out.push(match c {
+            '\\' => match chars.next()? {
+                '\\' => '\\',
+                'n' => '\n',
+                'r' => '\r',
+                _ => return None,
+            },
+            c => c,
+        });
+    }
+    Some(out)
 }
 
 /// How one picture differs from the manifest.
@@ -127,7 +219,11 @@ mod tests {
         let blessed: Hashes = [("a.png", "11"), ("b.png", "22"), ("c.png", "33")]
             .map(|(f, h)| (f.to_string(), h.to_string()))
             .into();
-        assert_eq!(parse(&text(&blessed)), blessed);
+        let hashed: Hashes = blessed
+            .iter()
+            .map(|(f, h)| (f.clone(), sha256_hex(h.as_bytes())))
+            .collect();
+        assert_eq!(parse(&text(&hashed), Path::new("S")).unwrap(), hashed);
         assert!(compare(&blessed, &blessed).is_empty());
         let now: Hashes = [("a.png", "11"), ("b.png", "99"), ("d.png", "44")]
             .map(|(f, h)| (f.to_string(), h.to_string()))
@@ -147,6 +243,52 @@ mod tests {
                     file: "d.png".into()
                 },
             ]
+        );
+    }
+
+    /// Every form `sha256sum -c` accepts reads as the same hash: a `sha256sum -b` manifest
+    /// (`HASH *FILE`) and upper-case hex were read as changed pictures where `sha256sum -c`
+    /// says OK. `tests/hostile` checks the same forms against `sha256sum -c` itself.
+    #[test]
+    fn every_form_sha256sum_reads_gives_the_same_hash() {
+        let h = sha256_hex(b"abc");
+        let up = h.to_ascii_uppercase();
+        let read = |text: &str| parse(text, Path::new("S")).unwrap();
+        for text in [
+            format!("{h}  a.png\n"),
+            format!("{h} *a.png\n"),
+            format!("{up}  a.png\n"),
+            format!("{h}  a.png\r\n"),
+            format!("  {h}  ./a.png"),
+            format!("{h} a.png\n"),
+            format!("{h}\ta.png\n"),
+            format!("SHA256 (a.png) = {up}\n"),
+            format!("\\{h}  a.png\n"),
+            format!("# pictures\n\n{h}  a.png\n"),
+        ] {
+            let hashes = read(&text);
+            assert_eq!(hashes.len(), 1, "{text:?}: {hashes:?}");
+            assert_eq!(hashes.get("a.png"), Some(&h), "{text:?}");
+        }
+        // Names as sha256sum escapes them, and lines it does not read.
+        assert!(read(&format!("\\{h}  a\\\\b\\nc.png\n")).contains_key("a\\b\nc.png"));
+        for text in [
+            format!("{h}0  a.png\n"),
+            format!("{}  a.png\n", &h[1..]),
+            format!("\\{h}  a\\x.png\n"),
+            // The first line is GNU's form; BSD -r's after it is not read (nor the reverse).
+            format!("{h}  b.png\n{h} a.png\n"),
+        ] {
+            assert!(!read(&text).contains_key("a.png"), "{text:?}");
+        }
+        let twice = parse(
+            &format!("{h}  a.png\n{}  a.png\n", sha256_hex(b"x")),
+            Path::new("S"),
+        );
+        let msg = twice.unwrap_err().to_string();
+        assert!(
+            msg.contains("S:2:") && msg.contains("a.png is listed twice"),
+            "{msg}"
         );
     }
 }

@@ -21,6 +21,7 @@ mod solve_range;
 mod stability;
 mod sweep;
 mod table;
+mod terminal;
 mod threads;
 mod vlocator;
 mod vlocator_robust;
@@ -124,15 +125,16 @@ pub enum Command {
     ///
     /// A disc of weight m g in a V of two flat flanks (a symmetric V by --included-angle, any
     /// V by --flank-angles), with an external force P at --load-angle, at the centre or at a
-    /// rim point. Prints whether the V holds it (wedged, slips, lifts_off or held), the
+    /// rim point. Prints whether the V holds it (wedged, slips, unloaded, lifts_off or held), the
     /// minimum-norm flank forces (N), the largest load P_max (N) held in that direction and
     /// the included angle that best survives errors in load and friction.
     ///
-    /// With a range (--mu 0.12:0.3, --load 20:30, --load-angle -10:10) it designs the V over
-    /// the whole box instead: the window of included angles that holds every load without
-    /// self-locking at any friction of the range, the most robust angle in it, or, when no
-    /// single V works, what would open a window; and the verdict of your V (if given) and of
-    /// the standard 60/90/120 deg V-blocks over the box.
+    /// With a range (--mu 0.12:0.3, --mu-left 0.1:0.2, --mu-right 0.3:0.5, --mass 0.3:2, --load
+    /// 20:30, --load-angle -10:10) it designs the V over the whole box instead: the window of
+    /// included angles that holds every load and weight without self-locking at any friction of
+    /// the ranges, the most robust angle in it, or, when no single V works, what would open a
+    /// window; and the verdict of your V (if given) and of the standard 60/90/120 deg V-blocks
+    /// over the box. A distribution is refused: a robust V holds every value of a range.
     Vlocator(vlocator::VlocatorArgs),
     /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
     ///
@@ -175,17 +177,10 @@ pub fn main() -> i32 {
         Ok(cli) => cli,
         Err(e) => return clap_exit(e),
     };
-    if !stdout_is_open() {
-        eprintln!(
-            "jamchart: standard output is closed, so the answer would be lost; redirect it to a \
-             file or /dev/null instead of closing it (>&-)"
-        );
-        return 2;
-    }
     let pool = match threads::start() {
         Ok(pool) => pool,
         Err(e) => {
-            eprintln!("jamchart: {}", describe(&e));
+            eprintln!("jamchart: {}", terminal::safe(&describe(&e)));
             return 2;
         }
     };
@@ -211,13 +206,13 @@ pub fn main() -> i32 {
             };
             let printed = print(text);
             if let Done::Failed { summary, .. } = &done {
-                eprintln!("jamchart: {summary}");
+                eprintln!("jamchart: {}", terminal::safe(summary));
             }
             // A lost answer (exit 2) outranks a failed check (exit 1).
             printed.max(code)
         }
         Err(e) => {
-            eprintln!("jamchart: {}", describe(&e));
+            eprintln!("jamchart: {}", terminal::safe(&describe(&e)));
             2
         }
     }
@@ -227,15 +222,17 @@ pub fn main() -> i32 {
 /// likely a mistake, where the answer still follows.
 pub(crate) fn warn(lines: &[String]) {
     for l in lines {
-        eprintln!("jamchart: warning: {l}");
+        eprintln!("jamchart: warning: {}", terminal::safe(l));
     }
 }
 
-/// Writes the answer to stdout and returns the exit code: a failed write (a full disk,
-/// `> /dev/full`) lost the answer and is an error, once reported as success with an empty
-/// file. A closed pipe (`| head`) is the reader's choice and not worth a message.
+/// Writes the answer to stdout (control characters escaped: [`terminal::safe`]) and returns
+/// the exit code: a failed write (a full disk, `> /dev/full`) lost the answer and is an error,
+/// once reported as success with an empty file. A closed pipe (`| head`) is the reader's
+/// choice and not worth a message.
 fn print(text: &str) -> i32 {
     let mut out = std::io::stdout().lock();
+    let text = terminal::safe(text);
     match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
         Ok(()) => 0,
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => 0,
@@ -243,24 +240,6 @@ fn print(text: &str) -> i32 {
             eprintln!("jamchart: writing the answer to standard output: {e}");
             2
         }
-    }
-}
-
-/// Whether file descriptor 1 was open when the process started: `jamchart solve >&-` printed
-/// nothing and exited 0. Rust's runtime reopens a closed standard descriptor on /dev/null
-/// read-write before `main` (a user's `> /dev/null` is write-only), so that is what a closed
-/// stdout looks like here.
-fn stdout_is_open() -> bool {
-    // SAFETY: fcntl and fstat only read the descriptor's state into the local `st`.
-    unsafe {
-        let mut st: libc::stat = std::mem::zeroed();
-        let flags = libc::fcntl(1, libc::F_GETFL);
-        if flags == -1 || libc::fstat(1, &mut st) != 0 {
-            return false;
-        }
-        let dev_null = st.st_mode & libc::S_IFMT == libc::S_IFCHR
-            && (libc::major(st.st_rdev), libc::minor(st.st_rdev)) == (1, 3);
-        !(dev_null && flags & libc::O_ACCMODE == libc::O_RDWR)
     }
 }
 
@@ -274,7 +253,7 @@ fn clap_exit(e: clap::Error) -> i32 {
         }
         // `jamchart` alone: the help is the answer, but it is still a usage error.
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            eprint!("{}", e.render());
+            eprint!("{}", terminal::safe(&e.render().to_string()));
             2
         }
         _ => {
@@ -285,7 +264,7 @@ fn clap_exit(e: clap::Error) -> i32 {
             {
                 rendered = rendered.replace(&format!("'{v}'"), &format!("'{}'", error::cut(v)));
             }
-            eprintln!("jamchart: {}", one_line(&rendered));
+            eprintln!("jamchart: {}", terminal::safe(&one_line(&rendered)));
             2
         }
     }
@@ -300,7 +279,9 @@ fn one_line(rendered: &str) -> String {
     // "the following required arguments were not provided:" lists them on the next lines.
     let listed = text.ends_with(':');
     for line in lines.take_while(|l| !l.starts_with("Usage:")) {
-        if line.starts_with("[possible values:") || (listed && line.starts_with('<')) {
+        // A listed argument is a flag (`--x-target <MM>`) or a positional (`<PARAM=...>...`).
+        let argument = listed && (line.starts_with('<') || line.starts_with('-'));
+        if line.starts_with("[possible values:") || argument {
             text = format!("{} {line}", text.trim_end_matches(':'));
         } else if let Some(tip) = line.strip_prefix("tip: ") {
             text = format!("{text}; {tip}");

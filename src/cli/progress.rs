@@ -1,5 +1,6 @@
-//! Progress on stderr for the long commands (`render`, `accuracy`) and `--quiet`, which
-//! silences it and the other notes they write there (`stability`'s timing line).
+//! Progress on stderr for the long commands (`render`, `accuracy`, a long Monte Carlo of
+//! `solve`) and `--quiet`, which silences it and the other notes they write there
+//! (`stability`'s timing line).
 
 use std::io::IsTerminal;
 
@@ -32,6 +33,23 @@ pub fn bar(quiet: Quiet, len: u64, template: &str) -> ProgressBar {
         b.set_style(style);
     }
     b
+}
+
+/// Estimated CPU time above which sampled work shows a bar, s: below it the bar would only
+/// flash.
+const LONG_WORK_CPU_S: f64 = 2.0;
+
+/// A bar over `count` Monte Carlo samples for a person watching, when their estimated CPU time
+/// `estimated_cpu_s` is long enough to want one; hidden otherwise.
+pub fn long_work(count: u64, estimated_cpu_s: f64) -> ProgressBar {
+    if estimated_cpu_s < LONG_WORK_CPU_S {
+        return ProgressBar::hidden();
+    }
+    bar(
+        Quiet::default(),
+        count,
+        "Monte Carlo {bar:30} {pos}/{len} samples, {eta} left",
+    )
 }
 
 #[cfg(test)]

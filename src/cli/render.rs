@@ -375,15 +375,17 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
     let manifest_path = a.out.join(manifest::MANIFEST);
     if a.check {
         // The manifest is read before anything is computed.
-        let blessed = match std::fs::read_to_string(&manifest_path) {
-            Ok(text) => manifest::parse(&text),
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-                return Err(Error::NoManifest {
-                    path: manifest_path,
-                });
-            }
-            Err(e) => return Err(Error::io("read", manifest_path, e)),
-        };
+        if crate::config::regular_or_missing(&manifest_path)?.is_none() {
+            return Err(Error::NoManifest {
+                path: manifest_path,
+            });
+        }
+        let text = crate::config::read_regular(
+            &manifest_path,
+            crate::config::MAX_INPUT_BYTES,
+            "give the manifest that render --bless wrote",
+        )?;
+        let blessed = manifest::parse(&text, &manifest_path)?;
         let rendered = render_scenes(&scenes, formats, a.quiet, None)?;
         return check(&manifest_path, &blessed, &rendered).map(|d| quieted(d, a.quiet));
     }
@@ -490,9 +492,13 @@ fn check(manifest_path: &Path, blessed: &manifest::Hashes, rendered: &[Rendered]
             ),
         };
     }
-    // The new renders, to look at beside the old ones; nothing is written into the checked folder.
-    let dir = std::env::temp_dir().join(format!("jamchart-check-{}", std::process::id()));
-    write_rendered(&dir, rendered, &[])?;
+    // The new renders, to look at beside the old ones; nothing is written into the checked
+    // folder. A fresh private folder: a predictable name in the shared temporary directory was
+    // reused as found, and a link planted there redirected the writes. It is removed if the
+    // writing fails, and kept for the person reading the report otherwise.
+    let dir = crate::atomic::PrivateDir::new("jamchart-check-")?;
+    write_rendered(dir.path(), rendered, &[])?;
+    let dir = dir.keep();
     let _ = writeln!(text, "the new renders are in {}", dir.display());
     let names: Vec<&str> = diffs.iter().map(manifest::Difference::file).collect();
     Ok(Done::Failed {

@@ -256,11 +256,21 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
                 );
             }
             (JamStatus::TooWeak, ..) => {
+                let least = statics::least_push_n(p);
+                // A weight past the float range (--mass 1e308) made the least push inf N.
+                let needs = match least.is_finite() {
+                    true => format!(
+                        "it takes more than m g sin(atan mu_ground) = {:.4} N (--force), or less \
+                         ground friction",
+                        Num(least)
+                    ),
+                    false => "the weight m g is beyond the range of a 64-bit float, and no \
+                              finite push moves it"
+                        .into(),
+                };
                 let _ = writeln!(
                     s,
-                    "  the push cannot move the disc at any palm angle: it takes more than \
-                     m g sin(atan mu_ground) = {:.4} N (--force), or less ground friction",
-                    Num(statics::least_push_n(p))
+                    "  the push cannot move the disc at any palm angle: {needs}"
                 );
             }
             (JamStatus::NeverJams, ..) => {
@@ -273,7 +283,7 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
                 let _ = writeln!(
                     s,
                     "  the jam lies past the palm's end ({} mm): the palm loses the disc first",
-                    p.palm_length_mm
+                    Num(p.palm_length_mm)
                 );
             }
             (JamStatus::BeyondReach, ..) => {
@@ -281,7 +291,7 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
                     s,
                     "  the jam point lies beyond the palm's end ({} mm), or the disc starts past \
                      it: the palm loses the disc first",
-                    p.palm_length_mm
+                    Num(p.palm_length_mm)
                 );
             }
             _ => {}

@@ -96,6 +96,26 @@ const STATICS_SAMPLES: u64 = 100_000;
 /// Monte Carlo samples of min-norm and the simulation unless --samples says otherwise.
 const MODEL_SAMPLES: u64 = 2_000;
 
+/// Monte Carlo of `spec`, with a progress bar on a terminal where it is estimated to take more
+/// than a few seconds ([`super::progress::long_work`]).
+fn sampled(
+    spec: &crate::models::ModelSpec,
+    config: &Config,
+    uncertain: &UncertainSet,
+    ask: &DistQuestion,
+) -> Result<DistAnswer> {
+    let bar = std::sync::OnceLock::new();
+    let answer = dist::monte_carlo_observed(spec, &config.scene, uncertain, ask, &|p| match p {
+        dist::Progress::Started {
+            samples,
+            estimated_cpu_s,
+        } => drop(bar.set(super::progress::long_work(samples, estimated_cpu_s))),
+        dist::Progress::Drawn(k) => bar.get().iter().for_each(|b| b.inc(k)),
+    });
+    bar.get().iter().for_each(|b| b.finish_and_clear());
+    answer
+}
+
 /// The long help of --samples, with the counts of the code.
 fn samples_help() -> String {
     format!(
@@ -154,9 +174,9 @@ pub(super) fn run(a: &SolveArgs, config: &Config, uncertain: &UncertainSet) -> R
             true if kind == ModelKind::Statics => match dist::exact(&config.scene, uncertain, &ask)
             {
                 Some(x) => Some(x),
-                None => Some(dist::monte_carlo(&spec, &config.scene, uncertain, &ask)?),
+                None => Some(sampled(&spec, config, uncertain, &ask)?),
             },
-            true => Some(dist::monte_carlo(&spec, &config.scene, uncertain, &ask)?),
+            true => Some(sampled(&spec, config, uncertain, &ask)?),
         };
         let range = match kind {
             ModelKind::Statics => range::closed_form(&config.scene, uncertain)?,
@@ -326,16 +346,16 @@ fn distribution_text(s: &mut String, d: &DistAnswer) {
         DistMethod::Exact => String::new(),
         DistMethod::MonteCarlo { .. } => format!(
             " [{:.digits$}, {:.digits$}] (width {:.digits$})",
-            e.lo,
-            e.hi,
-            e.hi - e.lo
+            Num(e.lo),
+            Num(e.hi),
+            Num(e.hi - e.lo)
         ),
     };
     for b in &d.before {
         let _ = writeln!(
             s,
             "    P(jams before x = {} mm) = {:.4}{}",
-            b.x_mm,
+            Num(b.x_mm),
             Num(b.probability.value),
             interval(&b.probability, 4)
         );
@@ -380,14 +400,5 @@ fn segments_text(i: &InputEnds) -> String {
 
 /// Four significant digits: a breakpoint found to 1e-9 of the range reads as 0.1484.
 fn round(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return v.to_string();
-    }
-    let digits = (3 - v.abs().log10().floor() as i32).max(0) as usize;
-    let t = format!("{v:.digits$}");
-    if t.contains('.') {
-        t.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        t
-    }
+    crate::numbers::sig(v, 4)
 }

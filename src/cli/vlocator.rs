@@ -194,6 +194,10 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
             flank.other().as_str(),
             flank.as_str()
         ),
+        Verdict::Unloaded => "unloaded: the load cancels the weight, so nothing presses the \
+                              disc into the V; it rests on neither flank, and any further lift \
+                              takes it out"
+            .to_string(),
         Verdict::Held => "held on both flanks".to_string(),
     };
     let _ = writeln!(out, "verdict: {verdict}");
@@ -213,16 +217,17 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
                 ""
             };
             let _ = writeln!(out, "minimum-norm flank forces{lower}:");
+            let scale = w.max(p.load_n);
             for f in forces {
                 let _ = writeln!(
                     out,
                     "  {:<5} flank: normal {:.3} N, friction {:.3} N up the flank, \
                      (fx, fy) = ({:.3}, {:.3}) N, friction utilisation {:.1} %",
                     f.flank.as_str(),
-                    Num(clean(f.normal_n)),
-                    Num(clean(f.tangential_up_n)),
-                    Num(clean(f.fx_n)),
-                    Num(clean(f.fy_n)),
+                    Num(clean(f.normal_n, scale)),
+                    Num(clean(f.tangential_up_n, scale)),
+                    Num(clean(f.fx_n, scale)),
+                    Num(clean(f.fy_n, scale)),
                     Num(100.0 * f.utilisation)
                 );
             }
@@ -248,7 +253,7 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
     let _ = writeln!(
         out,
         "holding capacity at {} deg {at}: {cap}",
-        p.load_angle_deg
+        Num(p.load_angle_deg)
     );
     let o = &s.optimum;
     let bound = if o.at_bound {
@@ -305,12 +310,17 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
 /// Where the load acts: "at the centre" or "at the rim point 30 deg".
 pub(super) fn load_point(p: &LocatorParams) -> String {
     match p.load_at_rim_deg {
-        Some(psi) => format!("at the rim point {psi} deg"),
+        Some(psi) => format!("at the rim point {} deg", Num(psi)),
         None => "at the centre".to_string(),
     }
 }
 
-/// Roundoff below the printed digits shows as 0.000, not -0.000.
-fn clean(v: f64) -> f64 {
-    if v.abs() < 5e-4 { 0.0 } else { v }
+/// Roundoff shows as 0.000, not -0.000 or 3e-17: below the printed digits of a force of order
+/// `scale` (the larger of weight and load, N), and below the solver's resolution of it.
+fn clean(v: f64, scale: f64) -> f64 {
+    if v.abs() < 5e-4_f64.min(1e-12 * scale) {
+        0.0
+    } else {
+        v
+    }
 }

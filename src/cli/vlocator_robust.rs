@@ -8,7 +8,8 @@ use serde::Serialize;
 use super::vlocator::VlocatorFormat;
 use crate::error::{Error, Result};
 use crate::locator::{
-    BoxVerdict, LocatorParams, RobustBox, RobustDesign, robust_design, verdict_over_box,
+    BoxVerdict, DroppedLoad, LocatorParams, RobustBox, RobustDesign, lock_angle_deg, robust_design,
+    verdict_over_box,
 };
 use crate::numbers::Num;
 use crate::uncertain::{Uncertain, UncertainSet};
@@ -17,15 +18,18 @@ use crate::uncertain::{Uncertain, UncertainSet};
 const STANDARD_V_DEG: [f64; 3] = [60.0, 90.0, 120.0];
 
 /// The box of `p`'s nominal V from the uncertain inputs: a friction range on both flanks
-/// (`mu`), a load range (`load_n`) and a direction range (`load_angle_deg`); every other
-/// uncertain input is refused naming it.
+/// (`mu`) or on each (`mu_left`, `mu_right`; a flank given as a number keeps it), a mass range
+/// (`mass_kg`), a load range (`load_n`) and a direction range (`load_angle_deg`). A
+/// distribution is refused naming it: a robust V holds every value of a range.
 pub fn robust_box(p: &LocatorParams, uncertain: &UncertainSet) -> Result<RobustBox> {
+    let point = |v: f64| (v, v);
     let mut b = RobustBox {
-        mu: (p.mu_left, p.mu_right),
-        load_n: (p.load_n, p.load_n),
-        load_angle_deg: (p.load_angle_deg, p.load_angle_deg),
+        mu_left: point(p.mu_left),
+        mu_right: point(p.mu_right),
+        mass_kg: point(p.mass_kg),
+        load_n: point(p.load_n),
+        load_angle_deg: point(p.load_angle_deg),
     };
-    one_friction_range(p, uncertain)?;
     for i in &uncertain.inputs {
         let Uncertain::Range { lo, hi } = i.value else {
             return Err(Error::invalid(
@@ -35,91 +39,39 @@ pub fn robust_box(p: &LocatorParams, uncertain: &UncertainSet) -> Result<RobustB
                  distribution's probabilities are not asked here)",
             ));
         };
-        match i.name {
-            "mu" if i.keys.len() == 2 => b.mu = (lo, hi),
-            "load_n" => b.load_n = (lo, hi),
-            "load_angle_deg" if hi - lo <= 360.0 => b.load_angle_deg = (lo, hi),
-            "load_angle_deg" => {
-                return Err(Error::invalid(
-                    i.name,
-                    i.value,
-                    "a direction range spans at most 360 deg",
-                ));
-            }
-            _ => {
-                return Err(Error::invalid(
-                    i.name,
-                    i.value,
-                    "a robust V-block takes ranges of --mu (both flanks), --load and \
-                     --load-angle; give this one as a number",
-                ));
-            }
-        }
-    }
-    Ok(b)
-}
-
-/// Refuses friction that is not one range on both flanks, naming the flank flag that breaks
-/// it: `--mu 0.2:0.4 --mu-left 0.3` named `--mu` (and showed "0.3 left, 0.3 right", the range's
-/// midpoint 0.30000000000000004 beside 0.3), where the conflict is `--mu-left`.
-fn one_friction_range(p: &LocatorParams, uncertain: &UncertainSet) -> Result<()> {
-    const FLANKS: [&str; 2] = ["mu_left", "mu_right"];
-    let value = |k: &str| match uncertain.inputs.iter().find(|i| i.name == k) {
-        Some(i) => i.value.to_string(),
-        None => Num(if k == "mu_left" {
-            p.mu_left
-        } else {
-            p.mu_right
-        })
-        .to_string(),
-    };
-    let refuse = |k: &str, why: String| {
-        let flag = format!("--{}", k.replace('_', "-"));
-        Err(Error::invalid(
-            k,
-            value(k),
-            format!(
-                "{why}; a robust V-block takes one friction range for both flanks: give --mu \
-                 LOW:HIGH alone, without {flag} (unequal flanks are not searched)"
-            ),
-        ))
-    };
-    let side = |k: &str| k.trim_start_matches("mu_").to_string();
-    for i in &uncertain.inputs {
-        match i.name {
-            // --mu's range with a flank's own flag beside it: that flank keeps its own value.
-            "mu" => {
-                if let Some(k) = FLANKS.into_iter().find(|k| !i.keys.contains(k)) {
-                    let why = format!(
-                        "--{} {} keeps the {} flank off --mu's range {}",
-                        k.replace('_', "-"),
-                        value(k),
-                        side(k),
-                        i.value
-                    );
-                    return refuse(k, why);
+        for key in &i.keys {
+            match *key {
+                "mu_left" => b.mu_left = (lo, hi),
+                "mu_right" => b.mu_right = (lo, hi),
+                "mass_kg" => b.mass_kg = (lo, hi),
+                "load_n" => b.load_n = (lo, hi),
+                "load_angle_deg" if hi - lo <= 360.0 => b.load_angle_deg = (lo, hi),
+                "load_angle_deg" => {
+                    return Err(Error::invalid(
+                        i.name,
+                        i.value,
+                        "a direction range spans at most 360 deg",
+                    ));
+                }
+                _ => {
+                    return Err(Error::invalid(
+                        i.name,
+                        i.value,
+                        "a robust V-block takes ranges of --mu, --mu-left, --mu-right, --mass, \
+                         --load and --load-angle; give this one as a number",
+                    ));
                 }
             }
-            k if FLANKS.contains(&k) => {
-                return refuse(k, format!("a range on the {} flank alone", side(k)));
-            }
-            _ => {}
         }
     }
-    if p.mu_left != p.mu_right {
-        // Point frictions that differ: the flank that is not at its default was given.
-        let k = match p.mu_left == LocatorParams::default().mu_left {
-            true => "mu_right",
-            false => "mu_left",
-        };
-        let why = format!(
-            "the flanks' frictions differ ({} left, {} right)",
-            Num(p.mu_left),
-            Num(p.mu_right)
-        );
-        return refuse(k, why);
+    // Each corner's weight and load are checked as the point's are (within the float range).
+    LocatorParams {
+        mass_kg: b.mass_kg.1,
+        load_n: b.load_n.1,
+        ..*p
     }
-    Ok(())
+    .validate()?;
+    Ok(b)
 }
 
 /// The JSON document of the robust answer.
@@ -173,24 +125,45 @@ pub fn run(
 }
 
 /// "holds every load", "locks at mu = 0.3", "drops 30 N at 0 deg: the part rolls out ...".
-fn describe(v: &BoxVerdict) -> String {
+fn describe(v: &BoxVerdict, b: &RobustBox) -> String {
     match v {
         BoxVerdict::Works => "works: holds every load at every friction, never locks".into(),
-        BoxVerdict::Locks { mu } => format!("self-locks at mu = {mu}"),
-        BoxVerdict::Drops { load } => format!(
-            "drops {:.3} N at {:.2} deg (at the lowest friction): the part {}",
-            Num(load.load_n),
-            Num(load.load_angle_deg),
-            load.mode.describe()
-        ),
+        BoxVerdict::Locks { mu_left, mu_right } => {
+            format!("self-locks at {}", frictions(*mu_left, *mu_right))
+        }
+        BoxVerdict::Drops { load } => dropped(load, b),
     }
 }
 
-fn range(lo: f64, hi: f64, unit: &str) -> String {
+/// "drops 30.000 N at 0.00 deg (at the lowest friction[, m = 0.4 kg]): the part ...".
+fn dropped(load: &DroppedLoad, b: &RobustBox) -> String {
+    let mass = match b.mass_kg.0 == b.mass_kg.1 {
+        true => String::new(),
+        false => format!(", m = {} kg", Num(load.mass_kg)),
+    };
+    format!(
+        "drops {:.3} N at {:.2} deg (at the lowest friction{mass}): the part {}",
+        Num(load.load_n),
+        Num(load.load_angle_deg),
+        load.mode.describe()
+    )
+}
+
+/// `0.3`, `0.12 to 0.3`, with the unit after.
+fn range((lo, hi): (f64, f64), unit: &str) -> String {
     if lo == hi {
-        format!("{lo}{unit}")
+        format!("{}{unit}", Num(lo))
     } else {
-        format!("{lo} to {hi}{unit}")
+        format!("{} to {}{unit}", Num(lo), Num(hi))
+    }
+}
+
+/// The frictions at one end of the box: `mu = 0.3`, or `mu = 0.1 left / 0.3 right`.
+fn frictions(left: f64, right: f64) -> String {
+    if left == right {
+        format!("mu = {}", Num(left))
+    } else {
+        format!("mu = {} left / {} right", Num(left), Num(right))
     }
 }
 
@@ -204,58 +177,84 @@ fn text(
 ) -> String {
     let mut out = String::new();
     let at = super::vlocator::load_point(p);
+    let flanks = match b.one_friction_range() {
+        true => format!("mu {} (both flanks)", range(b.mu_left, "")),
+        false => format!(
+            "mu {} left, {} right",
+            range(b.mu_left, ""),
+            range(b.mu_right, "")
+        ),
+    };
+    let weight = |m: f64| m * p.gravity_m_s2;
+    let disc = match b.mass_kg.0 == b.mass_kg.1 {
+        true => format!("W = {:.3} N", Num(weight(b.mass_kg.0))),
+        false => format!(
+            "m {} (W = {:.3} to {:.3} N)",
+            range(b.mass_kg, " kg"),
+            Num(weight(b.mass_kg.0)),
+            Num(weight(b.mass_kg.1))
+        ),
+    };
     let _ = writeln!(
         out,
-        "robust V-block over mu {} (both flanks), load {} at {} {at}; W = {:.3} N, {} rotation",
-        range(b.mu.0, b.mu.1, ""),
-        range(b.load_n.0, b.load_n.1, " N"),
-        range(b.load_angle_deg.0, b.load_angle_deg.1, " deg"),
-        Num(p.weight_n()),
+        "robust V-block over {flanks}, load {} at {} {at}; {disc}, {} rotation",
+        range(b.load_n, " N"),
+        range(b.load_angle_deg, " deg"),
         p.rotation.as_str()
     );
+    let (lows, highs) = (
+        frictions(b.mu_left.0, b.mu_right.0),
+        frictions(b.mu_left.1, b.mu_right.1),
+    );
+    let every_weight = match b.mass_kg.0 == b.mass_kg.1 {
+        true => "",
+        false => " and every weight",
+    };
     let _ = writeln!(
         out,
-        "a V works when it holds every load at the lowest friction, mu = {}, and does not \
-         self-lock at the highest, mu = {} (narrower than {:.2} deg locks)",
-        b.mu.0,
-        b.mu.1,
+        "a V works when it holds every load{every_weight} at the lowest friction, {lows}, and \
+         does not self-lock at the highest, {highs} (narrower than {:.2} deg locks)",
         Num(d.lock_bound_deg)
     );
     match d.windows.as_slice() {
         [] => {
             let _ = writeln!(
                 out,
-                "no single V works over this range: every V that does not lock at mu = {} \
-                 drops a load",
-                b.mu.1
+                "no single V works over this range: every V that does not lock at {highs} drops \
+                 a load"
             );
-            if let Some(load) = d.dropped_at_lock_bound {
+            if let Some(load) = &d.dropped_at_lock_bound {
                 let _ = writeln!(
                     out,
                     "  the narrowest V that does not lock, {:.2} deg, {}",
                     Num(d.lock_bound_deg),
-                    describe(&BoxVerdict::Drops { load })
+                    dropped(load, b)
                 );
             }
             if let Some(o) = d.opening {
                 let _ = writeln!(out, "what would open a window:");
                 match o.mu_hi_max {
                     Some(m) => {
+                        let cut = (b.mu_left.1.min(m), b.mu_right.1.min(m));
+                        let narrower = match b.one_friction_range() {
+                            true => {
+                                format!("mu from {} up to {:.4} at most", Num(b.mu_left.0), Num(m))
+                            }
+                            false => {
+                                format!("no flank's friction above {:.4}, the lows kept", Num(m))
+                            }
+                        };
                         let _ = writeln!(
                             out,
-                            "  a narrower friction range: mu from {} up to {m:.4} at most (a \
-                             {:.2} deg V then works)",
-                            b.mu.0,
-                            Num(2.0 * m.atan().to_degrees()),
-                            m = Num(m)
+                            "  a narrower friction range: {narrower} (a {:.2} deg V then works)",
+                            Num(lock_angle_deg(p.rotation, cut)),
                         );
                     }
                     None => {
                         let _ = writeln!(
                             out,
-                            "  no friction range from mu = {} does: even a single friction \
-                             leaves no V that holds these loads",
-                            b.mu.0
+                            "  no friction range from {lows} does: even single frictions leave \
+                             no V that holds these loads"
                         );
                     }
                 }
@@ -317,7 +316,7 @@ fn text(
             out,
             "your {:.2} deg V: {}",
             Num(g.included_angle_deg),
-            describe(&g.verdict)
+            describe(&g.verdict, b)
         );
     }
     for s in standard {
@@ -325,7 +324,7 @@ fn text(
             out,
             "standard {:.0} deg V-block: {}",
             Num(s.included_angle_deg),
-            describe(&s.verdict)
+            describe(&s.verdict, b)
         );
     }
     out

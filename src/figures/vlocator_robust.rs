@@ -112,11 +112,12 @@ impl VlocatorRobustSettings {
     /// The box at friction-range width `w`.
     pub fn box_of(&self, w: f64) -> RobustBox {
         let c = self.mu_center;
-        RobustBox {
-            mu: ((c - 0.5 * w).max(0.0), c + 0.5 * w),
-            load_n: (self.load_n[0], self.load_n[1]),
-            load_angle_deg: (self.load_angle_deg[0], self.load_angle_deg[1]),
-        }
+        RobustBox::both_flanks(
+            &self.locator,
+            ((c - 0.5 * w).max(0.0), c + 0.5 * w),
+            (self.load_n[0], self.load_n[1]),
+            (self.load_angle_deg[0], self.load_angle_deg[1]),
+        )
     }
 }
 
@@ -156,8 +157,8 @@ impl FigureData for VlocatorRobustData {
             let win = d.windows.first();
             Row {
                 mu_width: Dec(w),
-                mu_lo: Dec(b.mu.0),
-                mu_hi: Dec(b.mu.1),
+                mu_lo: Dec(b.mu_left.0),
+                mu_hi: Dec(b.mu_left.1),
                 lock_bound_deg: Dec(d.lock_bound_deg),
                 window_lo_deg: dec(win.map(|w| w.0)),
                 window_hi_deg: dec(win.map(|w| w.1)),

@@ -81,6 +81,19 @@ pub struct Capacity {
 /// machine epsilons, far below clarabel's 1e-8.
 pub(crate) const TOL: f64 = 1e-12;
 
+/// [`TOL`] times the sum of `terms` (forces in N), without overflow: near the top of the
+/// float range the sum alone is inf, and an infinite tolerance held every load (a sideways load
+/// of 9e307 N was `held`); there each term is scaled before it is added. Below it, the same
+/// bits as `TOL * (a + b + ...)`.
+pub(crate) fn tol_of<const N: usize>(terms: [f64; N]) -> f64 {
+    let sum: f64 = terms.iter().sum();
+    if sum.is_finite() {
+        TOL * sum
+    } else {
+        terms.iter().map(|t| TOL * t).sum()
+    }
+}
+
 /// The support the flanks must give at load P: force q0 + P q1 in N and moment / r equal to
 /// P m1 in N (the negative of weight and load).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -195,15 +208,23 @@ impl PlaneCone {
                 }
             }
         };
-        // A cone that does not self-lock spans less than 180 deg, so "clockwise of" is a
-        // total order on its generators: g is clockwise of h iff g x h > 0.
+        // A cone that does not self-lock spans less than 180 deg, so "clockwise of" orders its
+        // generators: g is clockwise of h iff g x h > 0. Just wider than the locking angle it
+        // spans 180 deg less a rounding error, and two of its generators are opposite (with
+        // unequal frictions, `n1 / mu1 + n2 / mu2 - (u1 + u2)` and n2): their cross product's
+        // sign was rounding, and the cone came out as its complement (a 22.62 deg V with mu
+        // 0.2 / 0.225 dropped its own weight). So the clockwise end is sought only among the
+        // generators clockwise of n1 + n2, which lies inside the cone, and the other end on the
+        // other side: no two generators compared are near opposite.
+        let inside = [n1[0] + n2[0], n1[1] + n2[1]];
         let nonzero = gens.into_iter().filter(|(g, _)| g[0] != 0.0 || g[1] != 0.0);
         let (mut lo, mut hi) = (None::<(V2, FailureMode)>, None::<(V2, FailureMode)>);
         for g in nonzero {
-            if lo.is_none_or(|l| cross(g.0, l.0) > 0.0) {
+            let side = cross(inside, g.0);
+            if side <= 0.0 && lo.is_none_or(|l| cross(g.0, l.0) > 0.0) {
                 lo = Some(g);
             }
-            if hi.is_none_or(|h| cross(h.0, g.0) > 0.0) {
+            if side >= 0.0 && hi.is_none_or(|h| cross(h.0, g.0) > 0.0) {
                 hi = Some(g);
             }
         }
@@ -230,7 +251,7 @@ impl PlaneCone {
     /// Held at `load_n`, or how the part leaves.
     fn held_at(&self, line: &LoadLine, load_n: f64) -> Result<(), FailureMode> {
         let q = line.force_at(load_n);
-        let tol = TOL * (q[0].abs() + q[1].abs() + load_n + line.q0[1]);
+        let tol = tol_of([q[0].abs(), q[1].abs(), load_n, line.q0[1]]);
         let [lo, hi] = self.rows(line).map(|(a, b, m)| (a + b * load_n >= -tol, m));
         match (lo, hi) {
             ((true, _), (true, _)) => Ok(()),
@@ -354,9 +375,9 @@ fn free_rows(p: &LocatorParams, f: &Frame, line: &LoadLine) -> [(Affine, Row); 7
     ]
 }
 
-/// Held at `load_n` under free rotation (any load point): the interval of t left by the rows.
-fn free_held_at(rows: &[(Affine, Row)], load_n: f64, scale: f64) -> Result<(), FailureMode> {
-    let tol = TOL * scale;
+/// Held at `load_n` under free rotation (any load point): the interval of t left by the rows,
+/// to `tol` in N.
+fn free_held_at(rows: &[(Affine, Row)], load_n: f64, tol: f64) -> Result<(), FailureMode> {
     let (mut lo, mut hi) = ((f64::NEG_INFINITY, Row::Load), (f64::INFINITY, Row::Load));
     for &(c, row) in rows {
         let a = c[1] * load_n + c[2];
@@ -383,7 +404,7 @@ fn free_held_at(rows: &[(Affine, Row)], load_n: f64, scale: f64) -> Result<(), F
 fn free_capacity(rows: &[(Affine, Row)], weight_n: f64) -> Capacity {
     // Scale of every row's values: forces of order W + P.
     let feasible = |t: f64, pl: f64| {
-        let tol = TOL * (weight_n + pl.abs() + t.abs());
+        let tol = tol_of([weight_n, pl.abs(), t.abs()]);
         rows.iter()
             .all(|(c, _)| c[0] * t + c[1] * pl + c[2] >= -tol)
     };
@@ -406,7 +427,7 @@ fn free_capacity(rows: &[(Affine, Row)], weight_n: f64) -> Capacity {
     }
     let Some((pl, ra, rb)) = best else {
         // No vertex is feasible: the weight alone is not held, and neither is any load.
-        let m = free_held_at(rows, 0.0, weight_n)
+        let m = free_held_at(rows, 0.0, tol_of([weight_n]))
             .err()
             .unwrap_or(FailureMode::PulledOut);
         return Capacity {
@@ -483,7 +504,7 @@ impl<'a> PreparedV<'a> {
             None => free_held_at(
                 &free_rows(self.p, f, line),
                 load_n,
-                self.p.weight_n() + load_n,
+                tol_of([self.p.weight_n(), load_n]),
             ),
         }
     }

@@ -60,9 +60,11 @@
 //!    bound (any squeeze can be added).
 //! 2. `slips`: no equilibrium; the [`FailureMode`] says how the part leaves (rolls out over a
 //!    flank, slides along one, slips on both, or is pulled off both).
-//! 3. `lifts_off`: held, but one flank's normal force is zero at the minimum-norm solution,
+//! 3. `unloaded`: the load cancels the weight (force and moment, to `solve::LIFT_OFF_RTOL`
+//!    of the larger), so nothing presses the disc into the V and both flank forces are zero.
+//! 4. `lifts_off`: held, but one flank's normal force is zero at the minimum-norm solution,
 //!    to `solve::LIFT_OFF_RTOL` of the largest load.
-//! 4. `held`.
+//! 5. `held`.
 //!
 //! Flags: `friction_held` (held, but with mu = 0 on both flanks it would not be) and
 //! `locking_needed` (wedged, and with friction just below the locking friction it would not
@@ -178,7 +180,7 @@ pub use params::{Flank, LocatorParams, Rotation};
 pub use reference::{ReferenceCapacity, capacity_clarabel};
 pub use robust::{
     ARC_STEP_DEG, BoxVerdict, DroppedLoad, Opening, RobustAngle, RobustBox, RobustDesign,
-    SCAN_STEP_DEG, box_rho, holds_sector, robust_design, verdict_over_box,
+    SCAN_STEP_DEG, box_rho, holds_sector, lock_angle_deg, robust_design, verdict_over_box,
 };
 pub use solve::{FlankForce, LocatorSolution, Verdict, solve};
 #[cfg(test)]

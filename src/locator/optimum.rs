@@ -103,7 +103,11 @@ pub fn rho_hold(p: &LocatorParams) -> f64 {
             .held_on(&line, rho * p.load_n)
             .is_ok()
     };
-    let (lo, hi) = (1.0 / RHO_LIMIT, RHO_LIMIT);
+    // A load scaled past the largest float made the support NaN (`--load 9e307`); held at
+    // the top of the float range it pushes into the V, and rho is unbounded (see
+    // `robust::rho_hold_box`).
+    let top = f64::MAX / p.load_n.max(1.0);
+    let (lo, hi) = (1.0 / RHO_LIMIT, RHO_LIMIT.min(top));
     if held(hi) {
         return f64::INFINITY;
     }

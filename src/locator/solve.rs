@@ -36,22 +36,27 @@ pub enum Verdict {
         /// The flank that carries nothing.
         flank: Flank,
     },
+    /// Weight and load cancel (force and moment, to `LIFT_OFF_RTOL` of the larger): nothing
+    /// presses the disc into the V, both flank forces are zero, and any further lift takes it
+    /// out. Not `held`: the V does nothing here.
+    Unloaded,
     /// Held on both flanks.
     Held,
 }
 
 impl Verdict {
-    /// `wedged`, `slips`, `lifts_off` or `held`.
+    /// `wedged`, `slips`, `lifts_off`, `unloaded` or `held`.
     pub fn as_str(self) -> &'static str {
         match self {
             Verdict::Wedged => "wedged",
             Verdict::Slips { .. } => "slips",
             Verdict::LiftsOff { .. } => "lifts_off",
+            Verdict::Unloaded => "unloaded",
             Verdict::Held => "held",
         }
     }
 
-    /// Whether the part stays in the V (held, lifts off or wedged).
+    /// Whether the part stays in the V (held, lifts off, unloaded or wedged).
     pub fn holds(self) -> bool {
         !matches!(self, Verdict::Slips { .. })
     }
@@ -110,8 +115,8 @@ pub fn solve(p: &LocatorParams) -> Result<LocatorSolution> {
     let verdict = match (self_locking, held, &forces) {
         (true, _, _) => Verdict::Wedged,
         (false, Err(mode), _) => Verdict::Slips { mode },
-        // Zero forces on both flanks is not a lift-off from one of them.
-        (false, Ok(()), Some(_)) if unloaded => Verdict::Held,
+        // Zero forces on both flanks: neither held nor a lift-off from one of them.
+        (false, Ok(()), Some(_)) if unloaded => Verdict::Unloaded,
         (false, Ok(()), Some(f)) => Flank::BOTH
             .into_iter()
             .find(|fl| f[fl.index()].normal_n <= LIFT_OFF_RTOL * scale)
@@ -198,7 +203,22 @@ pub fn min_norm_forces(
     p: &LocatorParams,
     settings: &QpSettings,
 ) -> Result<Option<[FlankForce; 2]>> {
-    let sol = minnorm::solve(&contact_problem(p), settings)?;
+    // The solver decides to tolerances of order one newton: loads of 9e307 N or weights of
+    // 1e-300 N are solved at unit scale and the forces scaled back (the minimum-norm forces
+    // are linear in the load). A power of two, so that both scalings are exact.
+    let e = p
+        .weight_n()
+        .max(p.load_n)
+        .log2()
+        .round()
+        .clamp(-1022.0, 1023.0) as i32;
+    let (down, up_scale) = (2f64.powi(-e), 2f64.powi(e));
+    let mut problem = contact_problem(p);
+    let load = &mut problem.load;
+    for c in load.force_n.iter_mut().chain(load.moment_nmm.iter_mut()) {
+        *c *= down;
+    }
+    let sol = minnorm::solve(&problem, settings)?;
     if sol.status != HoldStatus::Held {
         return Ok(None);
     }
@@ -208,13 +228,14 @@ pub fn min_norm_forces(
         // The solver's tangent is z x n: up the left flank, down the right one.
         let up = if i == 0 { 1.0 } else { -1.0 };
         let (n, u) = (f.n[i], f.u[i]);
-        let tangential_up_n = up * c.tangential_n[0];
+        let tangential_up_n = up * c.tangential_n[0] * up_scale;
+        let normal_n = c.normal_n * up_scale;
         FlankForce {
             flank: Flank::BOTH[i],
-            normal_n: c.normal_n,
+            normal_n,
             tangential_up_n,
-            fx_n: c.normal_n * n[0] + tangential_up_n * u[0],
-            fy_n: c.normal_n * n[1] + tangential_up_n * u[1],
+            fx_n: normal_n * n[0] + tangential_up_n * u[0],
+            fy_n: normal_n * n[1] + tangential_up_n * u[1],
             utilisation: c.utilisation,
         }
     })))

@@ -4,7 +4,7 @@
 use crate::SceneParams;
 use crate::locator::{
     self, FailureMode, Flank, LocatorParams, ReferenceCapacity, Rotation, Verdict, capacity,
-    capacity_by_enumeration, capacity_clarabel, closed_form_free_centre, held_at,
+    capacity_by_enumeration, capacity_clarabel, closed_form_free_centre, held_at, self_locking,
 };
 use crate::minnorm::{HoldStatus, QpSettings, solve_clarabel};
 use crate::statics;
@@ -461,19 +461,20 @@ fn bad_input_names_the_key_and_value() {
     }
 }
 
-/// Regression (issue 20, item 7): a load that cancels the weight (`vlocator --mu 0.3 --load
-/// 9.806 --load-angle 90`) printed `held` next to "flank forces: none (no equilibrium)". With no
-/// net load the equilibrium is the trivial one: both flank forces are zero, and the verdict and
-/// the forces must say the same thing.
+/// Regression: a load that cancels the weight (`vlocator --mu 0.3 --load 9.806 --load-angle
+/// 90`) printed `held` next to "flank forces: none (no equilibrium)", and then `held` beside
+/// zero forces, though nothing presses the disc into the V. With no net load the equilibrium is
+/// the trivial one: both flank forces are zero, and the verdict says the disc is unloaded.
 #[test]
-fn zero_net_load_is_held_with_zero_forces_not_no_equilibrium() {
+fn zero_net_load_is_unloaded_with_zero_forces() {
     let p = LocatorParams {
         load_n: 9.806,
         load_angle_deg: 90.0,
         ..free_v(90.0, 0.3)
     };
     let s = locator::solve(&p).unwrap();
-    assert_eq!(s.verdict, Verdict::Held);
+    assert_eq!(s.verdict, Verdict::Unloaded);
+    assert_eq!(s.verdict.as_str(), "unloaded");
     let forces = s
         .forces
         .expect("zero net load has an equilibrium: zero flank forces");
@@ -566,4 +567,30 @@ fn a_pure_lift_reports_the_plateau_of_equally_good_vs() {
         ..p
     };
     assert_eq!(locator::optimum(&side).plateau_to_deg, None);
+}
+
+/// Regression: a free V just wider than its locking angle with unequal frictions dropped its own
+/// weight (`vlocator --mu-left 0.2 --mu-right 0.225 --included-angle 22.61986494804043` slipped
+/// on both flanks). There its support cone spans 180 deg less a rounding error, two generators
+/// are opposite, and the sign of their cross product picked the cone's complement. The weight
+/// lies 90 deg inside the cone: held at every angle from the locking one up.
+#[test]
+fn a_v_just_wider_than_its_locking_angle_holds_its_weight() {
+    for (mu_left, mu_right) in [(0.2, 0.225), (0.2, 0.4), (0.45, 0.3), (0.1, 0.1)] {
+        let lock_deg = 2.0 * f64::atan(f64::min(mu_left, mu_right)).to_degrees();
+        for rel in [0.0, 1e-16, 1e-15, 1e-13, 1e-11, 1e-9, 1e-6] {
+            let p = LocatorParams {
+                mu_left,
+                mu_right,
+                ..LocatorParams::default()
+            }
+            .with_included_angle(lock_deg * (1.0 + rel));
+            if self_locking(&p) {
+                continue;
+            }
+            assert_eq!(held_at(&p, 0.0), Ok(()), "{mu_left}/{mu_right} at +{rel:e}");
+            let s = locator::solve(&p).unwrap();
+            assert!(s.verdict.holds(), "{mu_left}/{mu_right} at +{rel:e}: {s:?}");
+        }
+    }
 }

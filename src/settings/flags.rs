@@ -133,7 +133,7 @@ fn arg(d: &'static Decl, heading: Option<&'static str>, takers: &str) -> Arg {
         _ => format!("; {}, in {unit}", d.check.describe()),
     };
     let valid = if d.uncertain {
-        format!("{valid}; or {UNCERTAIN_FORMS}")
+        format!("{valid}; or {}", uncertain_forms(d))
     } else {
         valid
     };
@@ -194,6 +194,19 @@ fn arg(d: &'static Decl, heading: Option<&'static str>, takers: &str) -> Arg {
 pub(crate) const UNCERTAIN_FORMS: &str = "a range LOW:HIGH (worst case over it) or a \
     distribution uniform(LOW,HIGH), normal(MEAN,SD) (truncated at 0) or \
     lognormal(MEDIAN,SIGMA)";
+
+/// The V-locator's forms of an uncertain value: it designs a V over every value of a range,
+/// and weighs no distribution.
+pub(crate) const RANGE_FORMS: &str = "a range LOW:HIGH (the V is designed to hold every value \
+    of it)";
+
+/// The uncertain forms `d` takes: ranges only for the V-locator, else ranges and distributions.
+pub(crate) fn uncertain_forms(d: &Decl) -> &'static str {
+    match d.section {
+        "locator" => RANGE_FORMS,
+        _ => UNCERTAIN_FORMS,
+    }
+}
 
 /// `MM` for a length: the unit in capitals, or the declared value name.
 fn value_name(d: &Decl) -> String {

@@ -444,6 +444,9 @@ pub(crate) fn reference_rows(keep: impl Fn(&str) -> bool) -> String {
         let valid = match d.kind {
             Kind::Choice(c) => c.join(", "),
             Kind::Switch => "true, false".into(),
+            _ if d.uncertain && d.section == "locator" => {
+                format!("{}, or a range", d.check.describe())
+            }
             _ if d.uncertain => format!("{}, or a range or distribution", d.check.describe()),
             _ => d.check.describe(),
         };

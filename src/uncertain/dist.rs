@@ -253,17 +253,67 @@ pub(super) fn unit(bits: u64) -> f64 {
     ((bits >> 11) as f64 + 0.5) * (1.0 / (1u64 << 53) as f64)
 }
 
+/// What one sample of `spec` costs: the default scene's figure ([`crate::limits::per_sample`]),
+/// or, dearer, one sample at the nominal values timed (a stiff contact or a slow palm costs a
+/// hundred times the default scene's).
+fn cost_per_sample(
+    spec: &ModelSpec,
+    p: &SceneParams,
+    set: &UncertainSet,
+) -> Result<crate::limits::PerSample> {
+    let per = crate::limits::per_sample(spec);
+    if matches!(spec, ModelSpec::Statics) {
+        return Ok(per);
+    }
+    let nominal: Vec<f64> = set.inputs.iter().map(|i| i.value.nominal()).collect();
+    let t0 = crate::limits::thread_cpu_s();
+    models::solve(spec, &set.apply(p, &nominal))?;
+    Ok(per.at_least(crate::limits::thread_cpu_s() - t0))
+}
+
 /// Monte Carlo: `ask.samples` draws through `spec` (the closed form directly for statics),
-/// in parallel, bit-identical for any thread count.
+/// in parallel, bit-identical for any thread count; refused before any draw when its
+/// estimated time is over [`crate::limits::MAX_SAMPLED_CPU_S`].
 pub fn monte_carlo(
     spec: &ModelSpec,
     p: &SceneParams,
     set: &UncertainSet,
     ask: &DistQuestion,
 ) -> Result<DistAnswer> {
+    monte_carlo_observed(spec, p, set, ask, &|_| {})
+}
+
+/// What a Monte Carlo reports as it goes, for a progress bar.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Progress {
+    /// Accepted, before the first draw: how many samples, and their estimated CPU time in s.
+    Started {
+        /// The samples to draw.
+        samples: u64,
+        /// What they are estimated to cost on one core, s.
+        estimated_cpu_s: f64,
+    },
+    /// This many more samples are drawn (reported from any thread).
+    Drawn(u64),
+}
+
+/// [`monte_carlo`], telling `progress` its estimate once accepted and each chunk as it is done.
+pub fn monte_carlo_observed(
+    spec: &ModelSpec,
+    p: &SceneParams,
+    set: &UncertainSet,
+    ask: &DistQuestion,
+    progress: &(dyn Fn(Progress) + Sync),
+) -> Result<DistAnswer> {
     ask.validate()?;
+    let per = cost_per_sample(spec, p, set)?;
+    crate::limits::check_samples("--samples", ask.samples, per)?;
+    progress(Progress::Started {
+        samples: ask.samples,
+        estimated_cpu_s: crate::limits::sampled_cpu_s(ask.samples, per),
+    });
     let n = ask.samples;
-    let xs = super::sorted_samples(set, ask.seed, n, |v| {
+    let xs = super::sorted_samples(set, ask.seed, n, &|drawn| progress(Progress::Drawn(drawn)), |v| {
         let q = set.apply(p, v);
         Ok(match spec {
             ModelSpec::Statics => raw_x(&q),

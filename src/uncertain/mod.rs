@@ -223,22 +223,25 @@ impl Uncertain {
     /// CLI adds its flag) and quotes the value as written.
     pub(crate) fn check(&self, decl: &Decl) -> Result<()> {
         let refuse = |why: String| Err(Error::invalid(decl.key, self, why));
+        // Each number as short as it reads back (`1e-308`, not 308 zeros).
+        let t = crate::settings::number_text;
         let must = |what: &str, v: f64| -> Result<()> {
             match decl.check.refuse(v) {
                 None => Ok(()),
-                Some(why) => refuse(format!("{what} {v} {why}")),
+                Some(why) => refuse(format!("{what} {} {why}", t(v))),
             }
         };
         match *self {
             Uncertain::Point { value } => decl.check_real(value),
             Uncertain::Range { lo, hi } | Uncertain::Uniform { lo, hi } => {
+                let (l, h) = (t(lo), t(hi));
                 if lo > hi {
                     return refuse(format!(
-                        "the range is reversed ({lo} > {hi}); write LOW:HIGH, e.g. {hi}:{lo}"
+                        "the range is reversed ({l} > {h}); write LOW:HIGH, e.g. {h}:{l}"
                     ));
                 }
                 if lo == hi {
-                    return refuse(format!("the range is empty; for a single value write {lo}"));
+                    return refuse(format!("the range is empty; for a single value write {l}"));
                 }
                 must("its low end", lo)?;
                 must("its high end", hi)
@@ -262,12 +265,13 @@ impl Uncertain {
                     _ => ("its median", "its log standard deviation sigma"),
                 };
                 if sd <= 0.0 {
-                    return refuse(format!("{spread} must be > 0 (it is {sd})"));
+                    return refuse(format!("{spread} must be > 0 (it is {})", t(sd)));
                 }
                 if mean <= 0.0 {
                     return refuse(format!(
-                        "{centre} must be > 0 (it is {mean}): the distribution lives on \
-                         positive values"
+                        "{centre} must be > 0 (it is {}): the distribution lives on positive \
+                         values",
+                        t(mean)
                     ));
                 }
                 must(centre, mean)?;
@@ -396,7 +400,7 @@ impl UncertainSet {
 /// `each` of `n` samples of `set`'s inputs (its values in declaration order) drawn with
 /// `seed` as [`dist::draw`] draws them, in parallel: the values it returns, sorted by
 /// `f64::total_cmp`, the samples without one left out; on an error, the error of a sample
-/// (the rest are not drawn).
+/// (the rest are not drawn). `drawn` is told each chunk's size as it is done, from its thread.
 ///
 /// Every sample's value depends on the seed and its index alone, and the sorted list on the
 /// values alone, so it is the same for any thread count. Each chunk of [`dist::CHUNK`]
@@ -407,6 +411,7 @@ pub(crate) fn sorted_samples(
     set: &UncertainSet,
     seed: u64,
     n: u64,
+    drawn: &(dyn Fn(u64) + Sync),
     each: impl Fn(&[f64]) -> Result<Option<f64>> + Sync,
 ) -> Result<Vec<f64>> {
     use rand_chacha::ChaCha8Rng;
@@ -434,6 +439,7 @@ pub(crate) fn sorted_samples(
                     k += 1;
                 }
             }
+            drawn(slot.len() as u64);
             Ok(k)
         })
         .collect::<Result<_>>()?;

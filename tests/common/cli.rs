@@ -61,3 +61,12 @@ pub const SHAFT: [&str; 8] = [
     "--palm-length",
     "80",
 ];
+
+/// The longest run of digits in `s`: a number printed in full (1e300 as 301 digits, 1e-300
+/// with 300 zeros) shows as a long run.
+pub fn longest_digit_run(s: &str) -> usize {
+    s.split(|c: char| !c.is_ascii_digit())
+        .map(str::len)
+        .max()
+        .unwrap_or(0)
+}

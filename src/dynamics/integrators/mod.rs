@@ -106,19 +106,21 @@ impl Failure {
 
 impl std::fmt::Display for Failure {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        // A time past 1e15 s (a palm at 1e-300 deg/s) printed with all its digits.
+        let t_s = crate::numbers::Num(self.t_s());
         match *self {
-            Failure::StepLimit { t_s, steps } => {
+            Failure::StepLimit { steps, .. } => {
                 write!(f, "step limit of {steps} reached at t = {t_s:.4} s")
             }
-            Failure::Stiff { t_s, steps } => write!(
+            Failure::Stiff { steps, .. } => write!(
                 f,
                 "the problem is stiff at t = {t_s:.4} s: the explicit method's step is held at \
                  its stability limit (stopped after {steps} steps)"
             ),
-            Failure::StepSizeTooSmall { t_s, h_s } => {
+            Failure::StepSizeTooSmall { h_s, .. } => {
                 write!(f, "step size {h_s:.3e} s too small at t = {t_s:.4} s")
             }
-            Failure::NoConsistentContact { t_s } => write!(
+            Failure::NoConsistentContact { .. } => write!(
                 f,
                 "no contact impulses obey the contact laws at t = {t_s:.4} s"
             ),
