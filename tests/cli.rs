@@ -539,17 +539,36 @@ fn the_too_weak_advice_is_a_push_that_slides_the_disc() {
         .parse()
         .unwrap();
     assert!((advised - 502.9231).abs() < 1e-4, "{out}");
-    for (force, want) in [(advised * 1.0001, "jams"), (advised * 0.9999, "jammed_at_start")] {
+    for (force, want) in [
+        (advised * 1.0001, "jams"),
+        (advised * 0.9999, "jammed_at_start"),
+    ] {
         let f = force.to_string();
-        assert_eq!(statics_status(&["--mass", "100", "--force", &f]), want, "{f} N");
+        assert_eq!(
+            statics_status(&["--mass", "100", "--force", &f]),
+            want,
+            "{f} N"
+        );
     }
     let wedge = ["--mu", "0.9", "--mass", "2.68", "--start-angle", "80"];
     let mut weak = vec!["solve", "--force", "1.6354"];
     weak.extend(wedge);
     let out = stdout(&jamchart(repo(), &weak));
     assert!(out.contains("no push slides it"), "{out}");
-    assert!(out.contains("83.97 deg holds it at the start angle 80 deg"), "{out}");
+    assert!(
+        out.contains("83.97 deg holds it at the start angle 80 deg"),
+        "{out}"
+    );
     let mut strong = vec!["--force", "1000"];
     strong.extend(wedge);
     assert_eq!(statics_status(&strong), "jammed_at_start");
+}
+
+/// Regression (docs): Table 1's footer said the paper's theta is truncated, then that its x is
+/// r cot(theta/2) "of that rounded theta".
+#[test]
+fn the_table_footer_says_the_papers_theta_is_truncated() {
+    let md = stdout(&jamchart(repo(), &["table"]));
+    assert!(md.contains("of that truncated theta"), "{md}");
+    assert!(!md.contains("rounded theta"), "{md}");
 }
