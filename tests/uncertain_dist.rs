@@ -3,6 +3,9 @@
 //! quantiles, Monte Carlo against the exact answer, and Monte Carlo bit-identical for any
 //! thread count.
 
+#[path = "common/cli.rs"]
+mod cli_util;
+
 use jamchart::SceneParams;
 use jamchart::statics;
 use jamchart::uncertain::dist::{self, DistMethod, DistQuestion};
@@ -137,15 +140,6 @@ fn a_normal_input_with_its_spread_equal_to_its_mean_answers() {
         assert!((above - below) < 1e-9 * at, "{below} {at} {above}");
     }
     let dir = tempfile::tempdir().unwrap();
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_jamchart"))
-        .args(["solve", "--mu", "normal(0.05,0.05)"])
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
+    let o = cli_util::jamchart(dir.path(), &["solve", "--mu", "normal(0.05,0.05)"]);
+    assert_eq!(o.status.code(), Some(0), "{}", cli_util::stderr(&o));
 }
