@@ -6,8 +6,10 @@
 //! interleaved (one of each in turn, so the machine's load falls on both alike), each in its
 //! own temporary folder, and prints the median wall time and the median CPU time (user + sys
 //! of the child) of each, and the ratio of the medians. Without the Python baseline (no
-//! python3, no PyPI) it prints `no baseline: <why>` and no ratio. Goals (issue 21): `render
-//! fig3` at least 25x faster than the script; all scenes under 0.8 s on 2 cores.
+//! python3, no PyPI) it prints `no baseline: <why>` and no ratio. Goals: `render fig3` at
+//! least 60x faster than the script; all scenes under 0.8 s on 2 cores. Where valgrind is
+//! installed it also prints the instructions of one `render fig3` (callgrind: the same on a
+//! loaded machine as on a quiet one).
 
 mod baseline;
 mod common;
@@ -70,16 +72,23 @@ fn main() {
                 py.1 * 1e3
             );
             println!(
-                "  ratio: {:.1}x wall, {:.1}x cpu (goal at least 25x, issue 21)",
+                "  ratio: {:.1}x wall, {:.1}x cpu (goal at least 60x)",
                 py.0 / rust.0,
                 py.1 / rust.1
             );
         }
         Err(why) => println!("  no baseline: {why}"),
     }
+    match common::instructions(&mut render(&["fig3"], ours.path())) {
+        Some(n) => println!(
+            "  jamchart render fig3: {:.1} M instructions (callgrind)",
+            n / 1e6
+        ),
+        None => println!("  instructions: no valgrind"),
+    }
     println!(
         "  jamchart render (all scenes): {:.1} ms wall, {:.1} ms cpu (goal under 0.8 s wall on \
-         2 cores, issue 21)",
+         2 cores)",
         all.0 * 1e3,
         all.1 * 1e3
     );

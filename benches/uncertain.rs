@@ -1,10 +1,13 @@
-//! Uncertain inputs (issue 19): a range answer of the closed form against a point answer, a
+//! Uncertain inputs: a range answer of the closed form against a point answer, a
 //! 100,000-sample Monte Carlo of the statics, and Monte Carlo of the nonsmooth motion-drive
 //! simulation in samples per second on 1 thread and on all.
 //!
-//! `cargo bench --bench uncertain`; prints medians. Goals (issue 19): the range answer within
-//! 2x of a point answer; 1e5 statics samples well under 1 s; about 10,000 simulation samples
-//! per second on 2 cores. The range answer is timed twice: in the library (its two corners,
+//! `cargo bench --bench uncertain`; prints medians. Goals: the range answer within 2x of a
+//! point answer; 1e5 statics samples well under 1 s; about 10,000 simulation samples per
+//! second on 2 cores; at 1e7 statics samples at least 1.8 cores busy (CPU time over wall time
+//! of the library call, and its speed-up over one thread, interleaved) and the memory per
+//! sample of `jamchart solve --samples`, from the peak RSS of whole processes at 1e6 and
+//! 1e7 samples. The range answer is timed twice: in the library (its two corners,
 //! and with the status changes it solves for) and as a user gets it, `jamchart solve` with
 //! `--mu 0.12:0.3` against `--mu 0.21` as whole processes, interleaved.
 
@@ -131,6 +134,64 @@ fn main() {
         single * 1e3
     );
 
+    let rss_of = |samples: &str| {
+        let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_jamchart"));
+        cmd.args([
+            "solve",
+            "--radius",
+            "12.5",
+            "--mass",
+            "0.4",
+            "--palm-length",
+            "80",
+        ])
+        .args(["--force", "uniform(30,50)", "--mu", "normal(0.2,0.03)"])
+        .args(["--samples", samples]);
+        time_process(&mut cmd);
+        // The largest child so far, in KiB: each run here is larger than every one before.
+        // Measured before this process grows (the 1e7 runs below): a spawned child's peak
+        // counts the parent's resident pages until it execs.
+        // SAFETY: getrusage writes one rusage through a valid pointer.
+        let mut u: libc::rusage = unsafe { std::mem::zeroed() };
+        unsafe { libc::getrusage(libc::RUSAGE_CHILDREN, &mut u) };
+        u.ru_maxrss as f64 * 1024.0
+    };
+    let (small, large) = (rss_of("1000000"), rss_of("10000000"));
+    println!(
+        "  jamchart solve --samples 1e7 (mu and force distributed): peak RSS {:.1} MiB, {:.1} \
+         bytes per sample (peaks at 1e7 and 1e6 samples, differenced)",
+        large / 1048576.0,
+        (large - small) / 9e6
+    );
+
+    // 1e7 samples: how many cores the whole answer keeps busy.
+    let big = 10_000_000;
+    let cpu_self = || {
+        // SAFETY: getrusage writes one rusage through a valid pointer.
+        let mut u: libc::rusage = unsafe { std::mem::zeroed() };
+        unsafe { libc::getrusage(libc::RUSAGE_SELF, &mut u) };
+        let s = |t: libc::timeval| t.tv_sec as f64 + t.tv_usec as f64 * 1e-6;
+        s(u.ru_utime) + s(u.ru_stime)
+    };
+    let (mut walls, mut cores, mut singles) = (Vec::new(), Vec::new(), Vec::new());
+    for _ in 0..3 {
+        let (c0, t0) = (cpu_self(), std::time::Instant::now());
+        mc(&two_inputs, &ModelSpec::Statics, big);
+        let wall = t0.elapsed().as_secs_f64();
+        walls.push(wall);
+        cores.push((cpu_self() - c0) / wall);
+        singles.push(one.install(|| median_s(1, || mc(&two_inputs, &ModelSpec::Statics, big))));
+    }
+    let (wall, single) = (median(walls), median(singles));
+    println!(
+        "statics Monte Carlo, 1e7 samples, medians of 3 interleaved runs: {:.2} s on {threads} \
+         threads, {:.2} cores busy (CPU / wall; goal at least 1.8 of 2), {:.2} s on 1 thread: \
+         {:.2}x",
+        wall,
+        median(cores),
+        single,
+        single / wall
+    );
     let nonsmooth = ModelSpec::Dynamics {
         params: DynamicsParams {
             integrator: IntegratorSettings {

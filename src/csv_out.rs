@@ -70,18 +70,43 @@ const POW10_NEG: [f64; 22] = [
 /// rounds onto the integer; such an `a` rounds to that power at 7 significant digits and
 /// at 8, so the digits written are the same (`fast_digits_are_std_digits` checks values
 /// next to every power of ten against std with `log10`).
+///
+/// The search starts at the decimal magnitude of `a`'s binary exponent (floor(e log10 2),
+/// one off at most) and steps to the table's answer, one or two compares where a scan from
+/// the table's end took up to 22.
 fn decimals_by_table(a: f64) -> Option<usize> {
-    let below_one = POW10_NEG.iter().take_while(|&&p| a < p).count();
+    // floor(e log10 2) for the binary exponent e: 1233 / 4096 is log10 2 to 5e-6.
+    let exponent = ((a.to_bits() >> 52) & 0x7ff) as i64 - 1023;
+    let magnitude = (exponent * 1233) >> 12;
     if a >= 1.0 {
-        let above = POW10.iter().take_while(|&&p| p <= a).count();
+        // How many of POW10 are <= a.
+        let mut above = (magnitude + 1).clamp(0, POW10.len() as i64) as usize;
+        while above < POW10.len() && POW10[above] <= a {
+            above += 1;
+        }
+        while above > 0 && POW10[above - 1] > a {
+            above -= 1;
+        }
         (above < POW10.len()).then(|| (SIGNIFICANT_DIGITS as usize).saturating_sub(above))
     } else {
+        // How many of POW10_NEG (falling) are > a: the leading run of them.
+        let mut below_one = (-magnitude - 1).clamp(0, POW10_NEG.len() as i64) as usize;
+        while below_one < POW10_NEG.len() && a < POW10_NEG[below_one] {
+            below_one += 1;
+        }
+        while below_one > 0 && a >= POW10_NEG[below_one - 1] {
+            below_one -= 1;
+        }
         (below_one < POW10_NEG.len()).then_some(SIGNIFICANT_DIGITS as usize + below_one)
     }
 }
 
 /// [`push_plain`] by scaled integer rounding; false (nothing written) where it could differ
 /// from std's exact rounding.
+///
+/// Below 2^53 the scaled value's floor is its conversion to an integer and its fraction the
+/// exact difference, so no libm `floor` or `round`; trailing zeros of the fraction are
+/// divided off the integer before its digits are written.
 fn push_fast(out: &mut Vec<u8>, v: f64) -> bool {
     let a = v.abs();
     let decimals = decimals_by_table(a).unwrap_or_else(|| decimals(a));
@@ -100,37 +125,37 @@ fn push_fast(out: &mut Vec<u8>, v: f64) -> bool {
         out.extend_from_slice(itoa::Buffer::new().format(a as u64).as_bytes());
         return true;
     }
-    let floor = scaled.floor();
-    if ((scaled - floor) - 0.5).abs() < 1e-6 {
+    let floor = scaled as u64;
+    let fraction = scaled - floor as f64;
+    if (fraction - 0.5).abs() < 1e-6 {
         return false;
     }
-    let q = scaled.round() as u64;
+    // Round half away from zero, as f64::round; no tie gets here.
+    let mut q = floor + u64::from(fraction > 0.5);
     if q == 0 {
         out.push(b'0');
         return true;
+    }
+    let mut decimals = decimals;
+    while decimals > 0 && q % 10 == 0 {
+        q /= 10;
+        decimals -= 1;
     }
     if v < 0.0 {
         out.push(b'-');
     }
     let mut digits = itoa::Buffer::new();
     let d = digits.format(q).as_bytes();
-    if decimals == 0 {
-        out.extend_from_slice(d);
-        return true;
+    // Integer part, then the fraction padded with leading zeros.
+    match d.len().checked_sub(decimals) {
+        Some(0) | None => out.push(b'0'),
+        Some(int_len) => out.extend_from_slice(&d[..int_len]),
     }
-    // Integer part, then the fraction padded with leading zeros, trailing zeros dropped.
-    let int_len = d.len().saturating_sub(decimals);
-    match int_len {
-        0 => out.push(b'0'),
-        n => out.extend_from_slice(&d[..n]),
+    if decimals > 0 {
+        out.push(b'.');
+        out.extend(std::iter::repeat_n(b'0', decimals.saturating_sub(d.len())));
+        out.extend_from_slice(&d[d.len().saturating_sub(decimals)..]);
     }
-    let frac_digits = &d[int_len..];
-    let Some(last) = frac_digits.iter().rposition(|c| *c != b'0') else {
-        return true;
-    };
-    out.push(b'.');
-    out.extend(std::iter::repeat_n(b'0', decimals - frac_digits.len()));
-    out.extend_from_slice(&frac_digits[..=last]);
     true
 }
 
@@ -203,12 +228,72 @@ pub enum Column<'a> {
     },
 }
 
-impl Column<'_> {
+/// A [`Column`] as its rows write it: a word column's words quoted once, not once a cell.
+enum Prepared<'a> {
+    /// A value in every cell.
+    Dense(&'a [f64]),
+    /// An empty field where a cell has no value.
+    Sparse(&'a [Option<f64>]),
+    /// Each cell's word as its index into the words, quoted as the csv crate quotes them.
+    Words { quoted: Vec<Field>, of: &'a [u8] },
+}
+
+impl Prepared<'_> {
+    fn of<'a>(column: &Column<'a>) -> Prepared<'a> {
+        match *column {
+            Column::Dense(v) => Prepared::Dense(v),
+            Column::Sparse(v) => Prepared::Sparse(v),
+            Column::Words { words, of } => Prepared::Words {
+                quoted: words
+                    .iter()
+                    .map(|w| {
+                        let mut b = Vec::new();
+                        push_text(&mut b, w);
+                        Field::new(b)
+                    })
+                    .collect(),
+                of,
+            },
+        }
+    }
+
     fn push(&self, out: &mut Vec<u8>, i: usize) {
         match self {
-            Column::Dense(v) => push_plain(out, v[i]),
-            Column::Sparse(v) => v[i].into_iter().for_each(|x| push_plain(out, x)),
-            Column::Words { words, of } => push_text(out, words[usize::from(of[i])]),
+            Prepared::Dense(v) => push_plain(out, v[i]),
+            Prepared::Sparse(v) => v[i].into_iter().for_each(|x| push_plain(out, x)),
+            Prepared::Words { quoted, of } => quoted[usize::from(of[i])].push(out),
+        }
+    }
+}
+
+/// Bytes written once per map and copied into many rows (an axis value, a word).
+///
+/// Copied by a fixed [`Field::SHORT`]-byte copy, which the compiler inlines, then cut back to
+/// its length: a call to memcpy per field of a few bytes was a tenth of a map's CSV.
+struct Field {
+    /// The bytes, padded with zeros to at least SHORT.
+    padded: Vec<u8>,
+    /// How many of them are the field.
+    len: usize,
+}
+
+impl Field {
+    /// Fields up to this long take the fixed copy.
+    const SHORT: usize = 32;
+
+    fn new(mut bytes: Vec<u8>) -> Self {
+        let len = bytes.len();
+        bytes.resize(len.max(Self::SHORT), 0);
+        Field { padded: bytes, len }
+    }
+
+    #[inline]
+    fn push(&self, out: &mut Vec<u8>) {
+        if self.len <= Self::SHORT {
+            out.extend_from_slice(&self.padded[..Self::SHORT]);
+            out.truncate(out.len() - (Self::SHORT - self.len));
+        } else {
+            out.extend_from_slice(&self.padded[..self.len]);
         }
     }
 }
@@ -240,13 +325,16 @@ pub fn write_grid_cells<W: std::io::Write>(
     ys: &[f64],
     columns: &[Column],
 ) -> std::io::Result<()> {
-    let fmt = |v: &f64| {
-        let mut b = Vec::with_capacity(16);
+    // "x," and "y": each axis value formatted once.
+    let field = |v: &f64, tail: Option<u8>| {
+        let mut b = Vec::with_capacity(Field::SHORT);
         push_plain(&mut b, *v);
-        b
+        b.extend(tail);
+        Field::new(b)
     };
-    let (xs, ys): (Vec<Vec<u8>>, Vec<Vec<u8>>) =
-        (xs.iter().map(fmt).collect(), ys.iter().map(fmt).collect());
+    let xs: Vec<Field> = xs.iter().map(|x| field(x, Some(b','))).collect();
+    let ys: Vec<Field> = ys.iter().map(|y| field(y, None)).collect();
+    let columns: Vec<Prepared> = columns.iter().map(Prepared::of).collect();
     let mut head = csv::WriterBuilder::new()
         .has_headers(false)
         .from_writer(Vec::new());
@@ -256,10 +344,9 @@ pub fn write_grid_cells<W: std::io::Write>(
     for (iy, y) in ys.iter().enumerate() {
         for (ix, x) in xs.iter().enumerate() {
             let i = iy * xs.len() + ix;
-            buf.extend_from_slice(x);
-            buf.push(b',');
-            buf.extend_from_slice(y);
-            for c in columns {
+            x.push(&mut buf);
+            y.push(&mut buf);
+            for c in &columns {
                 buf.push(b',');
                 c.push(&mut buf, i);
             }
@@ -294,63 +381,6 @@ fn push_text(out: &mut Vec<u8>, word: &str) {
     out.push(b'"');
 }
 
-/// How many cells say each word of a text column, in the order the words first appear:
-/// `{"cells": {"jams": 53239, "jammed_at_start": 22}}`.
-fn word_counts<'a>(words: impl Iterator<Item = &'a str>) -> serde_json::Value {
-    let mut counts: Vec<(&str, usize)> = Vec::new();
-    for w in words {
-        match counts.iter_mut().find(|(k, _)| *k == w) {
-            Some((_, n)) => *n += 1,
-            None => counts.push((w, 1)),
-        }
-    }
-    let counts: serde_json::Map<String, serde_json::Value> = counts
-        .into_iter()
-        .map(|(k, n)| (k.into(), n.into()))
-        .collect();
-    serde_json::json!({ "cells": counts })
-}
-
-/// What a map's JSON says about its long CSV ([`grid_cells`]): the file, the grid's size, the
-/// columns and, per quantity column, its least and greatest value and how many cells have one.
-pub fn cells_summary(
-    file: &str,
-    header: &[&str],
-    (nx, ny): (usize, usize),
-    columns: &[Column],
-) -> serde_json::Value {
-    let summary: serde_json::Map<String, serde_json::Value> = header[2..]
-        .iter()
-        .zip(columns)
-        .map(|(name, c)| {
-            let values: Vec<f64> = match c {
-                Column::Dense(v) => v.iter().copied().filter(|x| x.is_finite()).collect(),
-                Column::Sparse(v) => v
-                    .iter()
-                    .flatten()
-                    .copied()
-                    .filter(|x| x.is_finite())
-                    .collect(),
-                Column::Words { words, of } => {
-                    let each = of.iter().map(|&w| words[usize::from(w)]);
-                    return (name.to_string(), word_counts(each));
-                }
-            };
-            let min = values.iter().copied().reduce(f64::min);
-            let max = values.iter().copied().reduce(f64::max);
-            let s = serde_json::json!({
-                "min": min.map(Num), "max": max.map(Num), "cells_with_value": values.len(),
-            });
-            (name.to_string(), s)
-        })
-        .collect();
-    serde_json::json!({
-        "file": file, "nx": nx, "ny": ny,
-        "order": "one row per cell, x fastest",
-        "columns": header, "summary": summary,
-    })
-}
-
 /// A number for JSON with the digits of [`plain`]: rounded to [`SIGNIFICANT_DIGITS`], so that
 /// serde_json's shortest form prints `24.35455`, not `24.354551362801473`; null for NaN and
 /// infinities, `0` for `-0`.
@@ -367,35 +397,9 @@ impl Serialize for Num {
     }
 }
 
-/// Numbers as [`Num`]s, for a JSON array.
-pub fn nums(v: impl IntoIterator<Item = f64>) -> Vec<Num> {
-    v.into_iter().map(Num).collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A status column is summarised by how many cells say each status, in first-seen order,
-    /// and written word for word in the CSV.
-    #[test]
-    fn a_text_column_is_counted_and_written_as_words() {
-        let cols = [Column::Words {
-            words: &["jam", "slide", "beyond_reach"],
-            of: &[0, 1, 0, 2],
-        }];
-        let s = cells_summary("m.csv", &["x", "y", "region"], (2, 2), &cols);
-        assert_eq!(
-            s["summary"]["region"]["cells"],
-            serde_json::json!({"jam": 2, "slide": 1, "beyond_reach": 1})
-        );
-        let csv = grid_cells(&["x", "y", "region"], &[0.0, 1.0], &[0.0, 1.0], &cols);
-        let text = String::from_utf8(csv).unwrap();
-        assert_eq!(
-            text,
-            "x,y,region\n0,0,jam\n1,0,slide\n0,1,jam\n1,1,beyond_reach\n"
-        );
-    }
 
     #[test]
     fn numbers_are_plain_decimals_without_noise() {
@@ -635,7 +639,10 @@ mod tests {
 
     #[test]
     fn json_numbers_have_the_csv_digits() {
-        let doc = serde_json::to_string(&nums([24.354551362801473, -0.0, 1e-9, f64::NAN, 40.0]));
+        let nums: Vec<Num> = [24.354551362801473, -0.0, 1e-9, f64::NAN, 40.0]
+            .map(Num)
+            .into();
+        let doc = serde_json::to_string(&nums);
         assert_eq!(doc.unwrap(), "[24.35455,0.0,1e-9,null,40.0]");
     }
 }

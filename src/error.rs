@@ -139,6 +139,23 @@ impl Error {
             source,
         }
     }
+
+    /// The error of a figure computed for scene `scene`: a [`Error::ModelFailed`] a figure
+    /// returns without a scene (it computes from its input alone) gets the scene's name.
+    pub(crate) fn in_scene(self, scene: &str) -> Self {
+        match self {
+            Error::ModelFailed {
+                scene: s,
+                model,
+                reason,
+            } if s.is_empty() => Error::ModelFailed {
+                scene: scene.to_string(),
+                model,
+                reason,
+            },
+            e => e,
+        }
+    }
 }
 
 /// Values quoted in messages are cut to this many characters: a message stays one readable line

@@ -121,6 +121,7 @@ mod csv_out;
 pub mod design;
 pub mod dynamics;
 mod error;
+pub mod figures;
 pub mod grid;
 mod limits;
 pub mod locator;

@@ -116,15 +116,12 @@ fn margin_at(p: &SceneParams, alpha_palm: f64, theta: f64) -> f64 {
 pub struct StaticsSolution {
     /// Outcome, decided in the order beyond_reach (the disc starts past the palm's end),
     /// never_jams, too_weak, jammed_at_start, beyond_reach (the jam lies past it), jams.
-    #[serde(skip)] // shared by every model: the record carries it
     pub status: JamStatus,
     /// Palm angle at the jam in degrees (the start angle if jammed at start; None if it never jams
     /// or the jam is beyond reach).
-    #[serde(skip)] // shared by every model: the record carries it
     pub theta_jam_deg: Option<f64>,
     /// Disc position at the jam in mm, r cot(theta_jam/2) + h / sin(theta_jam) (None as for
     /// `theta_jam_deg`).
-    #[serde(skip)] // shared by every model: the record carries it
     pub x_jam_mm: Option<f64>,
     /// The F -> infinity limit of theta_jam in degrees, alpha_g + alpha_p: what a palm driven by
     /// prescribed motion reaches (the classic self-locking wedge).
@@ -238,32 +235,44 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
         past_palm: None,
     };
 
-    match decide_with(p, &angles) {
-        Decision::Bare(status) => out.status = status,
-        Decision::JammedAtStart => {
-            out.status = JamStatus::JammedAtStart;
-            out.theta_jam_deg = Some(p.start_angle_deg);
-            out.x_jam_mm = finite_or_none(p.disc_position_mm(start));
-        }
-        Decision::PastPalm {
-            theta_jam,
-            x_jam,
-            s_b,
-        } => {
-            out.status = JamStatus::BeyondReach;
-            out.past_palm = (x_jam.is_finite() && s_b.is_finite()).then(|| PastPalm {
-                theta_jam_deg: theta_jam.to_degrees(),
-                x_jam_mm: x_jam,
-                palm_length_needed_mm: s_b,
-                friction_factor_needed: friction_factor_to_reach(p),
-            });
-        }
-        Decision::Jams { theta_jam, x_jam } => {
-            out.theta_jam_deg = Some(theta_jam.to_degrees());
-            out.x_jam_mm = Some(x_jam);
-        }
+    let decision = decide_with(p, &angles);
+    (out.status, out.theta_jam_deg, out.x_jam_mm) = jam_of(p, &decision);
+    if let Decision::PastPalm {
+        theta_jam,
+        x_jam,
+        s_b,
+    } = decision
+    {
+        out.past_palm = (x_jam.is_finite() && s_b.is_finite()).then(|| PastPalm {
+            theta_jam_deg: theta_jam.to_degrees(),
+            x_jam_mm: x_jam,
+            palm_length_needed_mm: s_b,
+            friction_factor_needed: friction_factor_to_reach(p),
+        });
     }
     out
+}
+
+/// [`solve`]'s status, theta_jam in deg and x_jam in mm without its extras (lift-off, rigid
+/// limit, the jam past the palm): what a batch of pushes needs. `p` must have passed
+/// [`SceneParams::validate`].
+pub fn jam(p: &SceneParams) -> (JamStatus, Option<f64>, Option<f64>) {
+    jam_of(p, &decide(p))
+}
+
+/// The status, theta_jam (deg) and x_jam (mm) of decision `d` for `p`.
+fn jam_of(p: &SceneParams, d: &Decision) -> (JamStatus, Option<f64>, Option<f64>) {
+    match *d {
+        Decision::JammedAtStart => (
+            JamStatus::JammedAtStart,
+            Some(p.start_angle_deg),
+            finite_or_none(p.disc_position_mm(p.start_angle_deg.to_radians())),
+        ),
+        Decision::Jams { theta_jam, x_jam } => {
+            (JamStatus::Jams, Some(theta_jam.to_degrees()), Some(x_jam))
+        }
+        _ => (d.status(), None, None),
+    }
 }
 
 /// The closed form's status alone: [`solve`]'s `status` without the extras (no lift-off

@@ -333,7 +333,7 @@ fn reads_the_vlocator_optimum_and_robust_charts_off(kind: Kind) {
     let loc = &data["locator"];
     let (mass, g) = (num(loc, "mass_kg"), num(loc, "gravity_m_s2"));
     let w = mass * g;
-    let p_over_w = num(&data, "p_over_w_of_direction_sweep");
+    let p_over_w = num(&data, "p_over_w");
     let loads: Vec<f64> = serde_json::from_value(data["load_over_w"].clone()).unwrap();
     // (panel, x, on a sample): direction samples every 5 deg, P / W samples on a log axis.
     let reads = [

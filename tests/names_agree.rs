@@ -79,7 +79,7 @@ fn chart_csv_columns_are_json_names() {
     let axes = [&doc["x_axis"]["param"], &doc["y_axis"]["param"]];
     assert_eq!(map[..2], axes.map(|a| a.as_str().unwrap().to_string()));
     let cells = &doc["cells"];
-    assert_eq!(cells["file"], "fig7c.csv");
+    assert_eq!(doc["cells_file"], "fig7c.csv");
     let listed = listed_columns(cells);
     assert_eq!(
         listed, map,
@@ -254,7 +254,7 @@ fn every_map_writes_its_cells_as_long_csv_listed_in_its_json() {
         let doc: serde_json::Value = serde_json::from_str(&read("json")).unwrap();
         let csv = read("csv");
         let cells = &doc["cells"];
-        assert_eq!(cells["file"], format!("{name}.csv"));
+        assert_eq!(doc["cells_file"], format!("{name}.csv"));
         let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
         assert_eq!(listed_columns(cells), header, "{name}");
         let (nx, ny) = (cells["nx"].as_u64().unwrap(), cells["ny"].as_u64().unwrap());

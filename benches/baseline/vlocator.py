@@ -7,10 +7,19 @@ where the bracket is <= 0. Grid: included angle gamma 10-170 deg (columns), load
 phi -90-90 deg (rows), mu = 0.3 on both flanks (LocatorParams' default). The trigonometry is
 done once per axis sample and the cells by broadcasting, as the Rust fast path does.
 
-Prints the median wall time of RUNS maps in ms on one line: `numpy_ms <value>`.
+Timed warm: one process, a warm-up map first, then RUNS maps. Warm needs one more thing than a
+warm-up: glibc gives the top of its heap back to the kernel whenever more than its trim
+threshold is free there, and a map's temporaries (five 320 kB arrays) are freed at its end, so
+every map would fault its pages in anew (about 300 minor faults a map, most of its time).
+The bench runs this script with MALLOC_TOP_PAD_ set, which keeps that much of the heap when it
+trims; the minor faults per timed map are printed to show the heap stayed warm (0 when it did).
+
+Prints the median wall time of RUNS maps in ms and the minor page faults per timed map on one
+line: `numpy_ms <value> faults_per_map <value>`.
 Usage: python vlocator.py [RUNS]
 """
 
+import resource
 import sys
 import time
 
@@ -32,13 +41,15 @@ def capacity_map():
 
 def main(runs):
     capacity_map()  # warm up
+    faults = resource.getrusage(resource.RUSAGE_SELF).ru_minflt
     times = []
     for _ in range(runs):
         t0 = time.perf_counter()
         capacity_map()
         times.append(time.perf_counter() - t0)
+    faults = resource.getrusage(resource.RUSAGE_SELF).ru_minflt - faults
     times.sort()
-    print(f"numpy_ms {times[len(times) // 2] * 1e3:.4f}")
+    print(f"numpy_ms {times[len(times) // 2] * 1e3:.4f} faults_per_map {faults / runs:.2f}")
 
 
 if __name__ == "__main__":

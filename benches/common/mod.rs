@@ -1,4 +1,5 @@
-//! What every benchmark shares: the median of noisy timings.
+//! What every benchmark shares: the median of noisy timings, whole-process times and
+//! instruction counts.
 
 use std::process::Command;
 use std::time::Instant;
@@ -51,4 +52,25 @@ pub fn time_process(cmd: &mut Command) -> (f64, f64) {
         String::from_utf8_lossy(&out.stderr)
     );
     (wall, cpu() - c0)
+}
+
+/// The instructions `cmd` executes on all its threads, by callgrind (the same on a loaded
+/// machine as on a quiet one); None without valgrind.
+#[allow(dead_code)] // not every benchmark counts instructions
+pub fn instructions(cmd: &mut Command) -> Option<f64> {
+    let mut grind = Command::new("valgrind");
+    grind
+        .args(["--tool=callgrind", "--callgrind-out-file=/dev/null"])
+        .arg(cmd.get_program())
+        .args(cmd.get_args());
+    for (key, value) in cmd.get_envs() {
+        match value {
+            Some(v) => grind.env(key, v),
+            None => grind.env_remove(key),
+        };
+    }
+    let out = grind.output().ok()?;
+    let err = String::from_utf8_lossy(&out.stderr);
+    let line = err.lines().find(|l| l.contains("Collected :"))?;
+    line.rsplit(':').next()?.trim().parse().ok()
 }

@@ -14,8 +14,7 @@ use plotters::prelude::*;
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 
-use super::axes::DrawResult;
-use super::models::Models;
+use super::axes::{DrawResult, PlotFrame};
 use super::spec::Scene;
 use super::{
     DataFile, contour_map, convergence, jam_map, stability, sweep, time_series, universal,
@@ -23,6 +22,8 @@ use super::{
 };
 use crate::config::read_section;
 use crate::error::Result;
+use crate::figures::models::Models;
+use crate::figures::{CellsTable, Figure, FigureData};
 use crate::grid::GridAxis;
 
 /// A chart kind's `[chart]` settings: how they are checked and how they compute their chart.
@@ -78,9 +79,83 @@ pub(crate) trait Kind: Sized + DeserializeOwned + Serialize {
     }
 }
 
+/// A chart kind's picture: its figure's data ([`crate::figures`]) ready to draw, on any
+/// backend, with the gallery's read-off derived from the same data.
+pub(crate) trait Picture: Sized {
+    /// The kind's `[chart]` settings, which compute the data.
+    type Settings: Figure;
+
+    /// `data` prepared for drawing (geometry traced once for both formats) under `title`.
+    fn new(data: <Self::Settings as Figure>::Data, title: &str) -> Self;
+
+    /// The data drawn.
+    fn data(&self) -> &<Self::Settings as Figure>::Data;
+
+    /// Draws on a white root.
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB>;
+
+    /// What the gallery's read-off needs (see [`super::readoff`]), given the plotting areas the
+    /// drawing built; None where the frames do not match the drawing.
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value>;
+
+    /// The data file of `scene`: the data's serde form (JSON) or rows (CSV).
+    fn data_file(&self, scene: &Scene) -> DataFile {
+        DataFile::of(self.data(), &scene.name, &scene.title)
+    }
+}
+
+/// The [`Kind`] of a kind split into a figure and a picture: computes the figure from the
+/// scene's input and prepares it for drawing. (A kind not yet split implements [`Kind`]
+/// itself.)
+macro_rules! split_kind {
+    (legacy $spec:ty => $chart:ty) => {};
+    (figure $spec:ty => $chart:ty) => {
+        impl Kind for $spec {
+            const CELLS: bool = <<$spec as Figure>::Data as FigureData>::CELLS;
+            type Chart = $chart;
+
+            fn param_axes(&self) -> Vec<(&'static str, GridAxis)> {
+                Figure::param_axes(self)
+            }
+
+            fn takes_scene(&self) -> bool {
+                Figure::takes_scene(self)
+            }
+
+            fn marks_scene_value(&self) -> bool {
+                Figure::marks_scene_value(self)
+            }
+
+            fn enable_read_off(&mut self) -> bool {
+                Figure::enable_read_off(self)
+            }
+
+            fn validate(&self, scene: &Scene) -> Result<()> {
+                Figure::validate(self, &scene.input())
+            }
+
+            fn check_size(&self, scene: &Scene) -> Result<()> {
+                Figure::check_size(self, &scene.input())
+            }
+
+            fn compute(&self, scene: &Scene, models: &dyn Models) -> Result<$chart> {
+                let data = Figure::compute(self, &scene.input(), models)
+                    .map_err(|e| e.in_scene(&scene.name))?;
+                Ok(<$chart as Picture>::new(data, &scene.title))
+            }
+
+            fn cells(chart: &$chart) -> Option<CellsTable<'_>> {
+                chart.data().cells()
+            }
+        }
+    };
+}
+
 /// Generates [`ChartSpec`], [`Chart`] and their dispatch from the list of kinds.
 macro_rules! chart_kinds {
-    ($($(#[$doc:meta])* $variant:ident($name:literal, $data:literal, $spec:ty => $chart:ty),)+) => {
+    ($($(#[$doc:meta])* $variant:ident($name:literal, $data:literal, $mode:ident $spec:ty => $chart:ty),)+) => {
+        $(split_kind!($mode $spec => $chart);)+
+
         /// The chart kind and its settings (`[chart]`, chosen by its `kind` key).
         #[derive(Debug, Clone, PartialEq)]
         pub enum ChartSpec {
@@ -209,10 +284,19 @@ macro_rules! chart_kinds {
                 }
             }
 
-            /// The data behind the chart.
-            pub fn data(&self, scene: &Scene) -> DataFile {
+            /// The gallery's read-off data (see [`super::readoff`]), given the plotting areas
+            /// the drawing built ([`super::axes::record_frames`]); every kind has one (None only
+            /// where the frames do not match the drawing).
+            pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
                 match self {
-                    $(Chart::$variant(c) => c.data(scene),)+
+                    $(Chart::$variant(c) => c.read_off(frames),)+
+                }
+            }
+
+            /// The data behind the chart.
+            pub fn data_file(&self, scene: &Scene) -> DataFile {
+                match self {
+                    $(Chart::$variant(c) => c.data_file(scene),)+
                 }
             }
         }
@@ -221,28 +305,28 @@ macro_rules! chart_kinds {
 
 chart_kinds! {
     /// A jam/slide map over a parameter and the palm angle (Fig. 3).
-    JamMap("jam_map", "json", jam_map::JamMapSpec => jam_map::JamMap),
+    JamMap("jam_map", "json", figure crate::figures::jam_map::JamMapSettings => jam_map::JamMap),
     /// theta_jam and x_jam against one parameter (Figs. 6, 7a, 7b).
-    Sweep("sweep", "csv", sweep::SweepSpec => sweep::Sweep),
+    Sweep("sweep", "csv", legacy sweep::SweepSpec => sweep::Sweep),
     /// theta_jam and x_jam / r over a friction and F / (m g): one chart for any part.
-    Universal("universal", "json", universal::UniversalSpec => universal::Universal),
+    Universal("universal", "json", figure crate::figures::universal::UniversalSettings => universal::Universal),
     /// Iso-lines of x_jam and theta_jam over two parameters (Fig. 7c).
-    ContourMap("contour_map", "json", contour_map::ContourMapSpec => contour_map::ContourMap),
+    ContourMap("contour_map", "json", figure crate::figures::contour_map::ContourMapSettings => contour_map::ContourMap),
     /// The min-norm program's convergence trace at theta_jam (Fig. 4).
-    Convergence("convergence", "csv", convergence::ConvergenceSpec => convergence::Convergence),
+    Convergence("convergence", "csv", figure crate::figures::convergence::ConvergenceSettings => convergence::Convergence),
     /// The simulated disc speed and position against time (Fig. 5).
-    TimeSeries("time_series", "csv", time_series::TimeSeriesSpec => time_series::TimeSeries),
+    TimeSeries("time_series", "csv", figure crate::figures::time_series::TimeSeriesSettings => time_series::TimeSeries),
     /// Error of x_jam against cost per integrator, and the min-norm tolerance against its
     /// error (the accuracy study).
-    WorkPrecision("work_precision", "csv", work_precision::WorkPrecisionSpec => work_precision::WorkPrecision),
+    WorkPrecision("work_precision", "csv", figure crate::figures::work_precision::WorkPrecisionSettings => work_precision::WorkPrecision),
     /// Holding capacity of a V-locator over included angle and load direction.
-    VlocatorCapacity("vlocator_capacity", "json", vlocator_capacity::VlocatorCapacitySpec => vlocator_capacity::VlocatorCapacity),
+    VlocatorCapacity("vlocator_capacity", "json", figure crate::figures::vlocator_capacity::VlocatorCapacitySettings => vlocator_capacity::VlocatorCapacity),
     /// Optimum included angle of a V-locator against load direction and load.
-    VlocatorOptimum("vlocator_optimum", "json", vlocator_optimum::VlocatorOptimumSpec => vlocator_optimum::VlocatorOptimum),
+    VlocatorOptimum("vlocator_optimum", "json", figure crate::figures::vlocator_optimum::VlocatorOptimumSettings => vlocator_optimum::VlocatorOptimum),
     /// The included-angle window of a V-block over friction and load ranges.
-    VlocatorRobust("vlocator_robust", "csv", vlocator_robust::VlocatorRobustSpec => vlocator_robust::VlocatorRobust),
+    VlocatorRobust("vlocator_robust", "csv", figure crate::figures::vlocator_robust::VlocatorRobustSettings => vlocator_robust::VlocatorRobust),
     /// The stability matrix: case by method, coloured by class.
-    Stability("stability", "json", stability::StabilitySpec => stability::Stability),
+    Stability("stability", "json", figure crate::figures::stability::StabilitySettings => stability::Stability),
 }
 
 impl ChartSpec {

@@ -63,7 +63,7 @@ fn fig7c_x_jam_labels_sit_on_no_theta_line() {
         (x.round() as i32, y.round() as i32)
     };
     let chart = Chart::compute(&scene).unwrap();
-    let doc: serde_json::Value = serde_json::from_slice(&chart.data(&scene).bytes).unwrap();
+    let doc: serde_json::Value = serde_json::from_slice(&chart.data_file(&scene).bytes).unwrap();
     let theta_lines: Vec<(f64, Vec<(i32, i32)>)> = doc["iso_lines"]["theta_jam_deg"]
         .as_array()
         .unwrap()

@@ -44,7 +44,7 @@ pub(crate) mod builtin;
 pub(crate) mod collide;
 pub(crate) mod colorbar;
 pub(crate) mod contour_map;
-pub(crate) mod contours;
+
 pub(crate) mod convergence;
 pub(crate) mod data;
 pub(crate) mod error_time;
@@ -53,7 +53,7 @@ pub(crate) mod jam_map;
 mod kinds;
 pub(crate) mod labels;
 pub(crate) mod legend;
-pub(crate) mod models;
+
 pub(crate) mod output;
 pub(crate) mod overrides;
 pub(crate) mod point_read_off;
@@ -81,12 +81,11 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use crate::error::{Error, Result};
+pub(crate) use crate::figures::contours::{grid_lines, grid_polygons};
 use axes::DrawResult;
 pub use builtin::SCENE_KEYS;
 pub use builtin::scene_names as builtin_scene_names;
-pub(crate) use contours::{grid_lines, grid_polygons};
 pub(crate) use data::DataFile;
-pub(crate) use data::{cells_csv, cells_json};
 pub(crate) use kinds::Chart;
 pub use kinds::ChartSpec;
 pub(crate) use labels::{
@@ -188,26 +187,7 @@ impl PartialEq for Cells {
 impl Chart {
     /// Computes what `scene`'s chart draws, with the model the scene names.
     pub fn compute(scene: &Scene) -> Result<Chart> {
-        Self::compute_with(scene, &models::Live)
-    }
-
-    /// The gallery's read-off data (see [`readoff`]), given the plotting areas the drawing
-    /// built ([`axes::record_frames`]); every kind has one (None only where the frames do not
-    /// match the drawing).
-    pub fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
-        match self {
-            Chart::JamMap(c) => c.read_off(frames),
-            Chart::Sweep(c) => c.read_off(frames),
-            Chart::Universal(c) => c.read_off(frames),
-            Chart::ContourMap(c) => c.read_off(frames),
-            Chart::VlocatorCapacity(c) => c.read_off(frames),
-            Chart::VlocatorOptimum(c) => c.read_off(frames),
-            Chart::VlocatorRobust(c) => c.read_off(frames),
-            Chart::Convergence(c) => c.read_off(frames),
-            Chart::TimeSeries(c) => c.read_off(frames),
-            Chart::WorkPrecision(c) => c.read_off(frames),
-            Chart::Stability(c) => c.read_off(frames),
-        }
+        Self::compute_with(scene, &crate::figures::models::Live)
     }
 
     /// Draws on any plotters backend.
@@ -271,7 +251,7 @@ pub fn render_with(
         },
         || {
             rayon::join(
-                || chart.data(scene),
+                || chart.data_file(scene),
                 || cells.as_ref().map_or(Ok(()), cells_to),
             )
         },

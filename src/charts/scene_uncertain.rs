@@ -8,7 +8,6 @@
 //! chart has no place for a band.
 
 use super::overrides::Setting;
-use super::sweep_band;
 use super::{ChartSpec, Scene};
 use crate::error::{Error, Result};
 use crate::uncertain::{self, UncertainSet};
@@ -76,7 +75,7 @@ pub(super) fn attach(scene: &mut Scene, taken: &Taken) -> Result<()> {
         },
         e => e,
     };
-    let band = |param| sweep_band::from_uncertain(&scene.params, &taken.set, param);
+    let band = |param| crate::figures::band::from_uncertain(&scene.params, &taken.set, param);
     match &mut scene.chart {
         ChartSpec::Sweep(spec) => {
             spec.band = band(spec.axis.param).map_err(as_written)?;

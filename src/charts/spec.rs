@@ -406,6 +406,15 @@ fn parse_scene(
 }
 
 impl Scene {
+    /// What the scene's figure is computed from besides its settings.
+    pub fn input(&self) -> crate::figures::Input {
+        crate::figures::Input {
+            params: self.params,
+            min_norm: self.min_norm,
+            dynamics: self.dynamics,
+        }
+    }
+
     /// What `--set` changed that this scene does not show, one sentence per key: a `[scene]`
     /// key of a V-locator chart (it has its own parameters) or a key the chart varies along an
     /// axis.

@@ -1,81 +1,25 @@
 //! Chart kind `stability` (scene `stability-matrix`): the stability matrix at a glance, one row per
 //! case and one column per model and method, each cell coloured by its class
-//! ([`crate::study::stability::Class`]) and labelled with x_jam or the status.
-//!
-//! The classes, statuses and x_jam do not depend on timing, so the picture is byte-identical;
-//! wall times are in `jamchart stability`'s table, not here.
+//! ([`crate::study::stability::Class`]) and labelled with x_jam or the status; drawn from
+//! [`StabilityData`].
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use serde::{Deserialize, Serialize};
 
 use super::axes::{self, DrawResult, PlotAxis, PlotFrame, draw_header};
-use super::models::Models;
-use super::spec::Scene;
-use super::{DataFile, readoff, style};
-use crate::config::Config;
-use crate::error::{Error, Result};
+use super::kinds::Picture;
+use super::{readoff, style};
+use crate::figures::stability::{StabilityData, StabilitySettings};
 use crate::grid::AxisScale;
 use crate::scene::JamStatus;
-use crate::study::stability::{self, Class, StabilityReport};
+use crate::study::stability::Class;
 
-/// `[chart]` keys of `kind = "stability"`.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct StabilitySpec {
-    /// Case names to draw, in the matrix's order (default: every case). An empty list is
-    /// refused: it once drew every case, the opposite of what it says.
-    pub cases: Option<Vec<String>>,
-}
-
-impl super::kinds::Kind for StabilitySpec {
-    type Chart = Stability;
-
-    /// Checks that the list names at least one case and that every named case exists.
-    fn validate(&self, _scene: &Scene) -> Result<()> {
-        let Some(cases) = &self.cases else {
-            return Ok(());
-        };
-        if cases.is_empty() {
-            return Err(Error::invalid(
-                "chart.cases",
-                "[]",
-                "name at least one case, or leave chart.cases out to draw every case",
-            ));
-        }
-        let all = stability::cases(&Config::default());
-        for name in cases {
-            if !all.iter().any(|c| &c.name == name) {
-                let known: Vec<&str> = all.iter().map(|c| c.name.as_str()).collect();
-                return Err(Error::invalid(
-                    "chart.cases",
-                    name,
-                    format!(
-                        "not a case of the matrix; the cases are {}",
-                        known.join(", ")
-                    ),
-                ));
-            }
-        }
-        Ok(())
-    }
-
-    fn check_size(&self, _scene: &Scene) -> Result<()> {
-        // Its cases are names from the fixed matrix (checked by validate): at most its 26 rows.
-        Ok(())
-    }
-
-    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<Stability> {
-        Stability::compute(scene, self, models)
-    }
-}
-
-/// The computed matrix.
+/// The matrix ready to draw.
 #[derive(Debug, Clone)]
 pub struct Stability {
+    data: StabilityData,
     title: String,
-    report: StabilityReport,
 }
 
 /// Each class's tint; their greys (luma about 230, 198, 172, 126) differ too, so the classes
@@ -91,74 +35,30 @@ fn fill(c: Class) -> RGBColor {
     FILL.iter().find(|f| f.0 == c).map_or(style::PAPER, |f| f.1)
 }
 
-impl Stability {
-    /// Runs the matrix of the scene's parameters through `models`.
-    pub fn compute(scene: &Scene, spec: &StabilitySpec, models: &dyn Models) -> Result<Self> {
-        let base = Config {
-            scene: scene.params,
-            min_norm: scene.min_norm,
-            dynamics: scene.dynamics,
-        };
-        super::kinds::Kind::validate(spec, scene)?;
-        let all = stability::cases(&base);
-        let cases: Vec<_> = match &spec.cases {
-            None => all,
-            Some(named) => all
-                .into_iter()
-                .filter(|c| named.contains(&c.name))
-                .collect(),
-        };
-        let solve =
-            |s: &crate::models::ModelSpec, p: &crate::scene::SceneParams| models.solve(s, p);
-        let report = stability::run_with(&solve, &base, &cases, &stability::methods(&base))?;
-        Ok(Stability {
-            title: scene.title.clone(),
-            report,
-        })
+impl Picture for Stability {
+    type Settings = StabilitySettings;
+
+    fn new(data: StabilityData, title: &str) -> Self {
+        Stability {
+            data,
+            title: title.to_string(),
+        }
     }
 
-    /// One JSON row per cell, case by case and method by method: the data file's and the
-    /// read-off's.
-    fn rows(&self) -> Vec<serde_json::Value> {
-        self.report
-            .rows
-            .iter()
-            .map(|r| {
-                serde_json::json!({
-                    "case": r.case,
-                    "model": r.model,
-                    "method": r.method,
-                    "status": r.status,
-                    "x_jam_mm": r.x_jam_mm,
-                    "reference": r.reference,
-                    "x_error_mm": r.x_error_mm,
-                    "allowance_mm": r.allowance_mm,
-                    "class": r.class,
-                    "reason": r.reason.as_ref().map(|w| w.tag()),
-                })
-            })
-            .collect()
-    }
-
-    /// The classes and answers as JSON (no wall times: the picture's data is deterministic).
-    pub fn data(&self, _scene: &Scene) -> DataFile {
-        DataFile::json(&serde_json::json!({
-            "methods": self.report.methods,
-            "cases": self.report.cases.iter().map(|c| serde_json::json!({"name": c.name, "what": c.what})).collect::<Vec<_>>(),
-            "rows": self.rows(),
-        }))
+    fn data(&self) -> &StabilityData {
+        &self.data
     }
 
     /// The gallery's read-off ([`readoff`], kind `points`, no crosshair): the cell under the
     /// pointer, with its row of the data file (case, method, status, x_jam, the reference, the
     /// error and its allowance, the class). The cells are points at (method index, -case
     /// index) over the matrix's frame, so the nearest point is the cell under the pointer.
-    pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
         let [frame] = frames else { return None };
-        let (n_m, n_c) = (self.report.methods.len(), self.report.cases.len());
+        let (n_m, n_c) = (self.data.methods.len(), self.data.cases.len());
         let x = PlotAxis::new(-0.5, n_m as f64 - 0.5, AxisScale::Linear, "method");
         let y = PlotAxis::new(0.5 - n_c as f64, 0.5, AxisScale::Linear, "case");
-        let cells: Vec<_> = (0..self.report.rows.len().min(n_m * n_c))
+        let cells: Vec<_> = (0..self.data.rows.len().min(n_m * n_c))
             .map(|k| ((k % n_m) as f64, -((k / n_m) as f64), k))
             .collect();
         Some(serde_json::json!({
@@ -166,15 +66,15 @@ impl Stability {
             "crosshair": false,
             "cell": [1.0, 1.0],
             "panels": [readoff::points_panel(frame, readoff::axis("", &x), readoff::axis("", &y), &cells)],
-            "rows": self.rows(),
+            "rows": serde_json::to_value(&self.data.rows).ok()?,
         }))
     }
 
     /// Draws the matrix.
-    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
         let (w, h) = root.dim_in_pixel();
         let (w, h) = (w as i32, h as i32);
-        let r = &self.report;
+        let r = &self.data;
         let n_cases = r.cases.len().max(1) as i32;
         let n_methods = r.methods.len().max(1) as i32;
         draw_header(

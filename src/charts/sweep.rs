@@ -12,7 +12,6 @@ use serde::{Deserialize, Serialize};
 use super::axes::{self, DrawResult, Margins, PlotAxis, PlotFrame};
 use super::collide::{self, PxBox};
 use super::legend::{self, LegendEntry, LegendGroup, Swatch};
-use super::models::Models;
 use super::readoff;
 use super::spec::Scene;
 use super::style::{self, LineKind, Marker};
@@ -21,6 +20,7 @@ use super::sweep_layers;
 use super::{DataFile, axis_label, scene_subtitle_with};
 use crate::csv_out::{Dec, dec, to_csv_with_header};
 use crate::error::{Error, Result};
+use crate::figures::models::Models;
 use crate::grid::{AxisScale, GridAxis, GridParam};
 use crate::scene::{JamStatus, SceneParams};
 
@@ -83,20 +83,7 @@ pub struct SweepSpec {
     /// `band` per swept value ([`super::sweep_band`]) (default: none; the built-in scenes
     /// have none).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub band: Option<SweepBand>,
-}
-
-/// The two edges of a band: the scene at the corner where the jam comes earliest and at the
-/// one where it comes latest ([`crate::uncertain::range`]).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SweepBand {
-    /// The scene at the earliest-jam corner.
-    pub earliest: crate::scene::SceneParams,
-    /// The scene at the latest-jam corner.
-    pub latest: crate::scene::SceneParams,
-    /// What the band spans, for the legend, e.g. `μ 0.12 to 0.3`.
-    pub label: String,
+    pub band: Option<crate::figures::band::Band>,
 }
 
 /// The ten columns a band adds to a sweep's CSV ([`Sweep::band_data`]).
@@ -173,7 +160,7 @@ impl super::kinds::Kind for SweepSpec {
         )
     }
 
-    fn compute(&self, scene: &Scene, models: &dyn super::models::Models) -> Result<Sweep> {
+    fn compute(&self, scene: &Scene, models: &dyn crate::figures::models::Models) -> Result<Sweep> {
         Sweep::compute(scene, self, models)
     }
 }
@@ -397,7 +384,7 @@ impl Sweep {
 
     /// The data behind the chart: one CSV row per point of every series; with a band, its
     /// edges as one row of layer `band` per swept value instead ([`Self::band_data`]).
-    pub fn data(&self, _scene: &Scene) -> DataFile {
+    pub fn data_file(&self, _scene: &Scene) -> DataFile {
         if !self.band.is_empty() {
             return self.band_data();
         }

@@ -21,11 +21,11 @@ use plotters::prelude::*;
 use super::axes::{self, DrawResult, PlotAxis};
 use super::legend::{LegendEntry, Swatch};
 use super::style::BAND_FILL;
-use super::sweep::{SeriesPoint, SweepBand, SweepPanel};
-use crate::error::{Error, Result};
+use super::sweep::{SeriesPoint, SweepPanel};
+
 use crate::grid::GridParam;
 use crate::scene::{JamStatus, SceneParams};
-use crate::uncertain::{Uncertain, UncertainSet, range};
+use crate::uncertain::range;
 
 /// The band at one value of the swept parameter.
 #[derive(Debug, Clone, PartialEq)]
@@ -127,62 +127,6 @@ pub fn legend_entry(rows: &[BandRow], label: &str) -> Option<LegendEntry> {
     ))
 }
 
-/// The band of the uncertain inputs along a sweep of `param`: the closed form at the box's two
-/// extreme corners (ranges at their ends; a distribution at its 5 % and 95 % quantiles, which
-/// is the exact quantile band for one input, as x_jam is monotone in it).
-pub fn from_uncertain(
-    p: &SceneParams,
-    uncertain: &UncertainSet,
-    param: GridParam,
-) -> Result<Option<SweepBand>> {
-    if uncertain.is_empty() {
-        return Ok(None);
-    }
-    let swept = param.decl();
-    let mut edges = uncertain.clone();
-    let mut label = Vec::new();
-    for i in &mut edges.inputs {
-        let clash = i.keys.contains(&swept.key) || i.name == swept.key;
-        if clash || swept.sets.iter().any(|k| i.keys.contains(k)) {
-            return Err(Error::invalid(
-                i.name,
-                i.value,
-                format!(
-                    "it is the swept parameter {}; give it a single value",
-                    swept.key
-                ),
-            ));
-        }
-        if i.value.is_distribution() {
-            let (lo, hi) = (
-                i.value.quantile(BAND_QUANTILE),
-                i.value.quantile(1.0 - BAND_QUANTILE),
-            );
-            let pct = 100.0 * BAND_QUANTILE;
-            label.push(format!(
-                "{} {} ({pct}–{} % quantiles)",
-                i.name,
-                i.value,
-                100.0 - pct
-            ));
-            i.value = Uncertain::Range { lo, hi };
-        } else {
-            // A range's ends as the user wrote them (shortest form: 0.12, not 0.1200).
-            let (lo, hi) = i.value.ends();
-            label.push(format!("{} {lo} to {hi}", i.name));
-        }
-    }
-    let box_answer = range::ends(p, &edges)?;
-    Ok(Some(SweepBand {
-        earliest: edges.apply(p, &box_answer.earliest.values),
-        latest: edges.apply(p, &box_answer.latest.values),
-        label: format!("band over {}", label.join(", ")),
-    }))
-}
-
-/// The quantile of a distributed input at the band's lower edge (5 %; 95 % at the upper).
-const BAND_QUANTILE: f64 = 0.05;
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -234,10 +178,11 @@ mod tests {
     /// the palm's end ...") beside no line. Now the shade's entry says it runs to the palm's end.
     #[test]
     fn the_latest_edge_past_the_palm_has_no_legend_entry() {
-        use crate::charts::models::Live;
         use crate::charts::spec::load_scene;
-        use crate::charts::sweep::{Sweep, SweepBand};
+        use crate::charts::sweep::Sweep;
         use crate::charts::{ChartSpec, Scene};
+        use crate::figures::band::Band;
+        use crate::figures::models::Live;
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("charts");
         let mut scene: Scene = load_scene(&dir, "fig7b").expect("fig7b loads");
         scene.params = crate::uncertain::shaft_25mm();
@@ -247,7 +192,7 @@ mod tests {
         spec.axis.min = 10.0;
         spec.axis.max = 100.0;
         spec.axis.count = 11;
-        spec.band = Some(SweepBand {
+        spec.band = Some(Band {
             earliest: scene.params.with_mu(0.3),
             latest: scene.params.with_mu(0.12),
             label: "band over mu 0.12 to 0.3".into(),

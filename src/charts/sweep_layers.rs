@@ -11,12 +11,13 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::models::Models;
 use super::spec::Scene;
 use super::style::{LineKind, Marker};
-use super::sweep::{Series, SeriesPoint, SeriesStyle, SweepBand, SweepSpec};
+use super::sweep::{Series, SeriesPoint, SeriesStyle, SweepSpec};
 use crate::dynamics::{Drive, DynamicsParams};
 use crate::error::{Error, Result};
+use crate::figures::band::Band;
+use crate::figures::models::Models;
 use crate::grid::{self, GridParam};
 use crate::minnorm::{Formulation, MinNormSettings};
 use crate::models::{self, Detail, ModelSpec, Solution};
@@ -124,7 +125,7 @@ pub fn series(
 }
 
 /// The band's two edges: the closed form at the earliest-jam corner and at the latest.
-pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &SweepBand) -> Result<[Series; 2]> {
+pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &Band) -> Result<[Series; 2]> {
     let edge = |params, layer, which: &str, line| -> Result<Series> {
         let at = Scene {
             params,

@@ -1,15 +1,16 @@
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use super::jam_map::JamMapLayer;
-use super::models::{Live, Models};
 use super::*;
 use crate::dynamics::DynamicsParams;
 use crate::dynamics::accuracy::{Study, StudySettings};
+use crate::figures::jam_map::JamMapLayer;
+use crate::figures::models::{Live, Models};
 use crate::minnorm::tolerance::ToleranceRow;
 use crate::minnorm::{ContactSolution, MinNormSettings};
 use crate::models::{ModelKind, ModelSpec, Solution};
 use crate::scene::SceneParams;
+use kinds::Picture;
 
 fn charts_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("charts")
@@ -26,7 +27,7 @@ fn fig3_reads_off_the_errata_values() {
     let Chart::JamMap(map) = Chart::compute(&scene).unwrap() else {
         panic!("fig3 is a jam map")
     };
-    let doc: serde_json::Value = serde_json::from_slice(&map.data(&scene).bytes).unwrap();
+    let doc: serde_json::Value = serde_json::from_slice(&map.data_file(&scene).bytes).unwrap();
     let r = &doc["read_off"];
     let (t, x) = (
         r["theta_jam_deg"].as_f64().unwrap(),
@@ -40,7 +41,7 @@ fn fig3_reads_off_the_errata_values() {
     // >= 400 x 400 cells, as the issue asks.
     let m = &doc["cells"];
     assert!(m["nx"].as_u64().unwrap() >= 400 && m["ny"].as_u64().unwrap() >= 400);
-    assert_eq!(m["file"], "fig3.csv");
+    assert_eq!(doc["cells_file"], "fig3.csv");
 }
 
 /// The margin grid's jam cells lie exactly below the closed-form boundary of their column.
@@ -87,7 +88,7 @@ fn jam_map_without_regions_evaluates_no_grid() {
     let Chart::JamMap(map) = Chart::compute(&scene).unwrap() else {
         panic!("jam map")
     };
-    let doc: serde_json::Value = serde_json::from_slice(&map.data(&scene).bytes).unwrap();
+    let doc: serde_json::Value = serde_json::from_slice(&map.data_file(&scene).bytes).unwrap();
     assert!(doc["cells"].is_null() && doc["read_off"].is_null());
     assert_eq!(doc["boundary"].as_array().unwrap().len(), 401);
 }
@@ -294,31 +295,23 @@ fn fig4_and_fig5_draw_the_jam_of_the_paper_case() {
     let Chart::Convergence(c) = Chart::compute(&fig4).unwrap() else {
         panic!("fig4 is a convergence chart")
     };
-    let csv = String::from_utf8(c.data(&fig4).bytes).unwrap();
-    let rows: Vec<&str> = csv.lines().skip(1).collect();
-    assert!(rows.len() >= 3, "{csv}");
-    let theta: f64 = rows[0].split(',').next().unwrap().parse().unwrap();
+    let rows = &c.data().rows;
+    assert!(rows.len() >= 3, "{rows:?}");
+    let theta = rows[0].theta_deg.0;
     assert!((theta - 44.646).abs() < 5e-4, "trace at {theta} deg");
-    let last: Vec<f64> = rows[rows.len() - 1]
-        .split(',')
-        .map(|v| v.parse().unwrap())
-        .collect();
-    assert!(last[3] < 1e-8 && last[4] < 1e-8, "not converged: {last:?}");
+    let last = rows[rows.len() - 1];
+    assert!(
+        last.res_primal.0 < 1e-8 && last.res_dual.0 < 1e-8,
+        "not converged: {last:?}"
+    );
 
     let fig5 = load_scene(&charts_dir(), "fig5").unwrap();
     let Chart::TimeSeries(t) = Chart::compute(&fig5).unwrap() else {
         panic!("fig5 is a time series")
     };
-    let (tj, xj) = t.jam().expect("fig5 jams");
+    let (tj, xj) = t.data().jam.expect("fig5 jams");
     assert!((xj - 25.0).abs() < 0.015 * 25.0, "x_jam {xj} mm");
-    let csv = String::from_utf8(t.data(&fig5).bytes).unwrap();
-    let t_last: f64 = csv
-        .lines()
-        .last()
-        .and_then(|l| l.split(',').next())
-        .unwrap()
-        .parse()
-        .unwrap();
+    let t_last = t.data().samples.last().unwrap().t_s.0;
     assert!(
         t_last > tj + 0.1,
         "the series ends at {t_last} s, the jam is at {tj} s"
@@ -438,7 +431,7 @@ fn the_universal_chart_reads_back_the_closed_form_for_any_part() {
         let Chart::Universal(u) = Chart::compute(&scene).unwrap() else {
             panic!("a universal chart")
         };
-        let doc: serde_json::Value = serde_json::from_slice(&u.data(&scene).bytes).unwrap();
+        let doc: serde_json::Value = serde_json::from_slice(&u.data_file(&scene).bytes).unwrap();
         (scene.params, doc)
     };
     let shaft = [

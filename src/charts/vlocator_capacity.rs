@@ -1,142 +1,35 @@
 //! Chart kind `vlocator_capacity`: the holding capacity P_max / W of a V over its included
 //! angle and the load direction, with the self-locking (wedged) band, the region where every
-//! load is held, iso-lines of capacity and the standard 60 / 90 / 120 deg V-blocks.
+//! load is held, iso-lines of capacity and the standard 60 / 90 / 120 deg V-blocks, drawn from
+//! [`VlocatorCapacityData`].
 
 use contour::ContourBuilder;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use serde::{Deserialize, Serialize};
 use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
 use super::colorbar::ColorBar;
-use super::data::CellsTable;
-use super::data::{CellAxes, axis_cells_csv, axis_cells_json};
+use super::kinds::Picture;
 use super::legend::{self, LegendEntry, Swatch};
-use super::spec::Scene;
 use super::style::{self, INK, LineKind, PAPER};
-use super::{DataFile, grid_lines, grid_polygons, readoff};
-use crate::csv_out::Column;
-use crate::error::{Error, Result};
-use crate::grid::{Grid, GridAxis, LocatorParam};
-use crate::locator::{self, LocatorParams, Rotation};
+use super::{grid_lines, grid_polygons, readoff};
+use crate::figures::vlocator_capacity::{
+    STANDARD_V_DEG, UNBOUNDED_OVER_W, VlocatorCapacityData, VlocatorCapacitySettings,
+};
+use crate::locator::{LocatorParams, Rotation};
 use crate::numbers::Num;
-
-/// The standard V-blocks a fixture designer buys, included angle in deg.
-pub const STANDARD_V_DEG: [f64; 3] = [60.0, 90.0, 120.0];
 
 /// Tint of the self-locking band (under its hatch).
 const WEDGED_FILL: RGBColor = RGBColor(236, 214, 214);
 
-/// A capacity standing for "unbounded" in the contoured field: above every level.
-const UNBOUNDED_OVER_W: f64 = 1e3;
-
-/// `[chart]` keys of `kind = "vlocator_capacity"`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct VlocatorCapacitySpec {
-    /// The V, friction, rotation and load point (default: [`LocatorParams::default`]); the
-    /// axes set the included angle and the load direction.
-    #[serde(default)]
-    pub locator: LocatorParams,
-    /// Horizontal axis: `included_angle_deg`.
-    pub x_axis: GridAxis<LocatorParam>,
-    /// Vertical axis: `load_angle_deg`.
-    pub y_axis: GridAxis<LocatorParam>,
-    /// Capacity iso-lines, multiples of W, increasing; the bands between them are shaded.
-    pub levels_over_w: Vec<f64>,
-}
-
-const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
-
-impl super::kinds::Kind for VlocatorCapacitySpec {
-    /// The V-block's parameters are `[chart.locator]`'s, not the palm scene's.
-    fn takes_scene(&self) -> bool {
-        false
-    }
-
-    const CELLS: bool = true;
-    type Chart = VlocatorCapacity;
-
-    /// Checks the axes and levels (and the locator at the grid's corners).
-    fn validate(&self, _scene: &Scene) -> Result<()> {
-        if self.x_axis.param != LocatorParam::IncludedAngleDeg {
-            return Err(Error::invalid(
-                "chart.x_axis.param",
-                self.x_axis.param.as_str(),
-                "the capacity map has the included angle on x: use included_angle_deg",
-            ));
-        }
-        if self.y_axis.param != LocatorParam::LoadAngleDeg {
-            return Err(Error::invalid(
-                "chart.y_axis.param",
-                self.y_axis.param.as_str(),
-                "the capacity map has the load direction on y: use load_angle_deg",
-            ));
-        }
-        let l = &self.levels_over_w;
-        if l.is_empty()
-            || !l.windows(2).all(|w| w[0] < w[1])
-            || !l
-                .iter()
-                .all(|v| v.is_finite() && *v > 0.0 && *v < UNBOUNDED_OVER_W)
-        {
-            return Err(Error::invalid(
-                "chart.levels_over_w",
-                format!("{l:?}"),
-                "give increasing levels in (0, 1000) W",
-            ));
-        }
-        self.grid().validate()
-    }
-
-    fn check_size(&self, _scene: &Scene) -> Result<()> {
-        // A contoured map as the contour map is (its cells hold less: two capacities).
-        crate::limits::check_count(
-            "chart.levels_over_w",
-            self.levels_over_w.len(),
-            crate::limits::MAX_LEVELS,
-            "levels",
-        )?;
-        let cells = self.x_axis.count as f64 * self.y_axis.count as f64;
-        crate::limits::check_items(CELLS, cells, crate::limits::VLOCATOR_CAPACITY_CELL)
-    }
-
-    fn compute(
-        &self,
-        scene: &Scene,
-        _models: &dyn super::models::Models,
-    ) -> Result<VlocatorCapacity> {
-        VlocatorCapacity::compute(scene, self)
-    }
-
-    fn cells(chart: &VlocatorCapacity) -> Option<CellsTable<'_>> {
-        Some(chart.cells())
-    }
-}
-
-impl VlocatorCapacitySpec {
-    fn grid(&self) -> Grid<LocatorParams> {
-        Grid {
-            base: self.locator,
-            x: self.x_axis,
-            y: Some(self.y_axis),
-        }
-    }
-}
-
-/// The computed capacity map.
+/// A capacity map ready to draw: its data, and the bands and iso-lines traced once in plot
+/// space.
 #[derive(Debug, Clone)]
 pub struct VlocatorCapacity {
-    spec: VlocatorCapacitySpec,
+    data: VlocatorCapacityData,
     title: String,
-    x_values: Vec<f64>,
-    y_values: Vec<f64>,
-    /// P_max / W per cell (None: unbounded), index order iy * nx + ix.
-    p_max_over_w: Vec<Option<f64>>,
-    /// The included angle below which the V self-locks, deg.
-    locking_deg: f64,
     /// Shaded bands, lowest first (the last is the unbounded region).
     bands: Vec<Paths>,
     /// Capacity iso-lines (level in W, paths).
@@ -148,31 +41,23 @@ pub struct VlocatorCapacity {
 /// Polylines or rings in plot space.
 type Paths = Vec<Vec<(f64, f64)>>;
 
-impl VlocatorCapacity {
-    /// Evaluates P_max / W on every cell by the exact path, through the grid.
-    pub fn compute(scene: &Scene, spec: &VlocatorCapacitySpec) -> Result<Self> {
-        // Where the V locks every load is held; the drawn field carries the capacity just
-        // below locking there, so the iso-lines run on under the hatched band instead of
-        // piling up on its edge.
-        let cells = spec.grid().map(|p| {
-            let drawn = locator::capacity(&locator::just_unlocked(p));
-            Ok((locator::capacity(p), drawn))
-        })?;
-        let over_w = |c: &locator::Capacity| match (c.unbounded, c.p_max_over_w) {
-            (true, _) => None,
-            (false, v) => Some(v.unwrap_or(0.0)),
-        };
-        let p_max_over_w: Vec<Option<f64>> = cells.values.iter().map(|c| over_w(&c.0)).collect();
-        let field: Vec<f64> = cells
-            .values
+impl Picture for VlocatorCapacity {
+    type Settings = VlocatorCapacitySettings;
+
+    /// Traces the bands and iso-lines of the capacity the lines follow (the V just unlocked
+    /// under the locking band), unbounded cells above every level.
+    fn new(data: VlocatorCapacityData, title: &str) -> Self {
+        let c = &data.cells;
+        let field: Vec<f64> = c
+            .unlocked_over_w
             .iter()
-            .map(|c| over_w(&c.1).map_or(UNBOUNDED_OVER_W, |v| v.min(UNBOUNDED_OVER_W)))
+            .map(|v| v.map_or(UNBOUNDED_OVER_W, |v| v.min(UNBOUNDED_OVER_W)))
             .collect();
-        let (nx, ny) = (cells.x_values.len(), cells.y_values.len());
-        let (xa, ya) = (&spec.x_axis, &spec.y_axis);
-        let b = ContourBuilder::new(nx, ny, true);
+        let s = &data.settings;
+        let (xa, ya) = (&s.x_axis, &s.y_axis);
+        let b = ContourBuilder::new(c.included_angle_deg.len(), c.load_angle_deg.len(), true);
         let mut edges = vec![f64::MIN];
-        edges.extend(&spec.levels_over_w);
+        edges.extend(&s.levels_over_w);
         edges.push(0.5 * UNBOUNDED_OVER_W);
         edges.push(f64::MAX);
         // Finite values and levels cannot fail; nothing is drawn if they ever did.
@@ -182,7 +67,7 @@ impl VlocatorCapacity {
             .iter()
             .map(|band| grid_polygons(band.geometry(), xa, ya))
             .collect();
-        let mut levels = spec.levels_over_w.clone();
+        let mut levels = s.levels_over_w.clone();
         levels.push(0.5 * UNBOUNDED_OVER_W);
         let mut lines: Vec<(f64, Paths)> = b
             .lines(&field, &levels)
@@ -191,49 +76,32 @@ impl VlocatorCapacity {
             .map(|l| (l.threshold(), grid_lines(&l.into_inner().0, xa, ya)))
             .collect();
         let unbounded_edge = lines.pop().map(|(_, p)| p).unwrap_or_default();
-        Ok(VlocatorCapacity {
-            spec: spec.clone(),
-            title: scene.title.clone(),
-            locking_deg: locking_angle_deg(&spec.locator),
-            x_values: cells.x_values,
-            y_values: cells.y_values,
-            p_max_over_w,
+        VlocatorCapacity {
+            title: title.to_string(),
+            data,
             bands,
             lines,
             unbounded_edge,
-        })
+        }
     }
 
-    /// The data behind the chart as JSON (P_max / W per cell, null where unbounded).
-    pub fn data(&self, scene: &Scene) -> DataFile {
-        DataFile::json(&json!({
-            "scene": scene.name, "title": self.title, "locator": self.spec.locator,
-            "x_axis": self.spec.x_axis, "y_axis": self.spec.y_axis,
-            "weight_n": self.spec.locator.weight_n(),
-            "self_locking_below_included_angle_deg": self.locking_deg,
-            "levels_over_w": self.spec.levels_over_w,
-            "cells": axis_cells_json(&scene.name, self.axes(), &self.columns()),
-        }))
-    }
-
-    /// The cells as long-format CSV: the two locator parameters and P_max / W (empty where
-    /// every load is held).
-    pub fn cells(&self) -> CellsTable<'_> {
-        axis_cells_csv(self.axes(), &self.columns())
+    fn data(&self) -> &VlocatorCapacityData {
+        &self.data
     }
 
     /// What the gallery's read-off needs (see [`super::readoff`]): the plotting area, the axes
     /// and per cell P_max / W, P_max in N (null where every load is held) and whether the
     /// capacity is unbounded, as `jamchart vlocator` names them (model `vlocator`: the exact
-    /// path of [`locator::capacity`]).
-    pub fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
+    /// path of [`crate::locator::capacity`]).
+    fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
         let (x, y) = self.plot_axes();
-        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
-        let w = self.spec.locator.weight_n();
-        let over_w = &self.p_max_over_w;
+        let (xa, ya) = (&self.data.settings.x_axis, &self.data.settings.y_axis);
+        let w = self.data.weight_n;
+        let c = &self.data.cells;
+        let over_w = &c.p_max_over_w;
         let cells = readoff::cells(
-            &self.x_values,
-            &self.y_values,
+            &c.included_angle_deg,
+            &c.load_angle_deg,
             &[
                 ("p_max_over_w", &|i| json!(over_w[i])),
                 ("p_max_n", &|i| json!(over_w[i].map(|v| v * w))),
@@ -249,44 +117,15 @@ impl VlocatorCapacity {
         }))
     }
 
-    /// The drawn axes: included angle on x, load direction on y.
-    fn plot_axes(&self) -> (PlotAxis, PlotAxis) {
-        let (xa, ya) = (&self.spec.x_axis, &self.spec.y_axis);
-        let x = PlotAxis::new(xa.min, xa.max, xa.scale, "included angle γ of the V (deg)");
-        let y = PlotAxis::new(
-            ya.min,
-            ya.max,
-            ya.scale,
-            "load direction φ (deg from +x; −90 pushes into the V, 0 sideways, 90 lifts)",
-        );
-        (x, y)
-    }
-
-    fn axes(&self) -> CellAxes<'_> {
-        [
-            (self.spec.x_axis.param.as_str(), &self.x_values[..]),
-            (self.spec.y_axis.param.as_str(), &self.y_values[..]),
-        ]
-    }
-
-    fn columns(&self) -> Vec<(&'static str, Column<'_>)> {
-        vec![("p_max_over_w", Column::Sparse(&self.p_max_over_w))]
-    }
-
-    /// Draws the map on `root`.
-    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
         let (x, y) = self.plot_axes();
         let entries = self.legend();
         // Darker = holds more; the unbounded region stays white.
-        let mut colors = style::band_colors(self.spec.levels_over_w.len() + 1);
+        let levels = &self.data.settings.levels_over_w;
+        let mut colors = style::band_colors(levels.len() + 1);
         let bar = ColorBar {
             colors: colors.clone(),
-            levels: self
-                .spec
-                .levels_over_w
-                .iter()
-                .map(|v| level_text(*v))
-                .collect(),
+            levels: levels.iter().map(|v| level_text(*v)).collect(),
             title: "holding capacity P_max (multiples of W)".into(),
         };
         colors.push(PAPER);
@@ -305,7 +144,7 @@ impl VlocatorCapacity {
         for (level, paths) in &self.lines {
             // Labelled off the sideways line (the standard V-blocks are read there), right
             // of the locking band.
-            let clear = x.to_plot(self.locking_deg) + 3.0;
+            let clear = x.to_plot(self.data.self_locking_below_included_angle_deg) + 3.0;
             let pt = [-25.0, -50.0, 25.0, 50.0].into_iter().find_map(|h| {
                 nearest_to_height(paths, y.to_plot(h))
                     .filter(|p| p.0 > clear && (p.1 - y.to_plot(h)).abs() < 2.0)
@@ -326,10 +165,25 @@ impl VlocatorCapacity {
         axes::draw_header(
             root,
             &self.title,
-            &locator_subtitle(&self.spec.locator, "load at any angle", true),
+            &locator_subtitle(&self.data.settings.locator, "load at any angle", true),
         )?;
         let (_, py) = area.get_pixel_range();
         legend::draw_legend(root, &entries, py.end + 62)
+    }
+}
+
+impl VlocatorCapacity {
+    /// The drawn axes: included angle on x, load direction on y.
+    fn plot_axes(&self) -> (PlotAxis, PlotAxis) {
+        let (xa, ya) = (&self.data.settings.x_axis, &self.data.settings.y_axis);
+        let x = PlotAxis::new(xa.min, xa.max, xa.scale, "included angle γ of the V (deg)");
+        let y = PlotAxis::new(
+            ya.min,
+            ya.max,
+            ya.scale,
+            "load direction φ (deg from +x; −90 pushes into the V, 0 sideways, 90 lifts)",
+        );
+        (x, y)
     }
 
     /// The self-locking band, hatched, labelled with its bound.
@@ -341,7 +195,9 @@ impl VlocatorCapacity {
         y: &PlotAxis,
     ) -> DrawResult<DB> {
         let (xr, yr) = (x.plot_range(), y.plot_range());
-        let right = x.to_plot(self.locking_deg).min(xr.end);
+        let right = x
+            .to_plot(self.data.self_locking_below_included_angle_deg)
+            .min(xr.end);
         if right <= xr.start {
             return Ok(());
         }
@@ -364,7 +220,10 @@ impl VlocatorCapacity {
             }
             k += 12;
         }
-        let label = format!("wedged: self-locks below γ = {:.1}°", self.locking_deg);
+        let label = format!(
+            "wedged: self-locks below γ = {:.1}°",
+            self.data.self_locking_below_included_angle_deg
+        );
         let font = style::text(style::TICK_PX)
             .transform(FontTransform::Rotate270)
             .pos(Pos::new(HPos::Center, VPos::Center));
@@ -412,9 +271,9 @@ impl VlocatorCapacity {
                 style::TICK_PX,
             )?;
             // The read-off a designer wants first: what it holds sideways.
-            if (y.min..=y.max).contains(&0.0) {
-                let v = locator::capacity(&self.spec.locator.with_included_angle_same_tilt(g));
-                let s = match v.p_max_over_w {
+            let blocks = &self.data.standard_v_blocks;
+            if let Some(v) = blocks.iter().find(|v| v.included_angle_deg == g) {
+                let s = match v.sideways.p_max_over_w {
                     Some(c) => format!("sideways: {} W", style::fmt_num(c, 2)),
                     None => "sideways: unbounded".to_string(),
                 };
@@ -451,15 +310,6 @@ impl VlocatorCapacity {
                 "standard V-blocks, with P_max / W for a sideways load (φ = 0)",
             ),
         ]
-    }
-}
-
-/// The included angle below which a symmetric V with `p`'s friction self-locks, deg:
-/// 2 atan(min mu) free, atan mu1 + atan mu2 blocked.
-pub fn locking_angle_deg(p: &LocatorParams) -> f64 {
-    match p.rotation {
-        Rotation::Free => 2.0 * p.mu_left.min(p.mu_right).atan().to_degrees(),
-        Rotation::Blocked => (p.mu_left.atan() + p.mu_right.atan()).to_degrees(),
     }
 }
 

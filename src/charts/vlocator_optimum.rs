@@ -1,166 +1,27 @@
 //! Chart kind `vlocator_optimum`: the balanced optimum included angle gamma* of a V and its
-//! safety factor rho*, against the load direction (at a given P / W) and against P / W (at a
-//! given direction), one curve per friction coefficient; the standard V-blocks marked.
+//! safety factor rho* against the load direction (at a given P / W) and against P / W (at a
+//! given direction), one curve per friction coefficient; the standard V-blocks marked; drawn
+//! from [`VlocatorOptimumData`].
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use serde::{Deserialize, Serialize};
 use serde_json::json;
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
-use super::models::Models;
-use super::spec::Scene;
+use super::kinds::Picture;
+use super::readoff;
 use super::style::{LineKind, Marker};
-use super::vlocator_capacity::{STANDARD_V_DEG, locator_subtitle};
+use super::vlocator_capacity::locator_subtitle;
 use super::xy::{Curve, CurveStyle, Figure, Panel, Tag, decade_axis};
-use super::{DataFile, readoff};
-use crate::error::{Error, Result};
-use crate::grid::{AxisScale, Grid, GridAxis, LocatorParam};
-use crate::locator::{self, LocatorParams, Optimum};
-
-/// `[chart]` keys of `kind = "vlocator_optimum"`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct VlocatorOptimumSpec {
-    /// The V's tilt, rotation, load point and weight (default: [`LocatorParams::default`]);
-    /// the included angle is the unknown, the axes and `mus` set the rest.
-    #[serde(default)]
-    pub locator: LocatorParams,
-    /// One curve per friction coefficient (both flanks), increasing.
-    pub mus: Vec<f64>,
-    /// Upper panels: the load direction axis (`load_angle_deg`).
-    pub direction_axis: GridAxis<LocatorParam>,
-    /// P / W of the upper panels.
-    pub p_over_w: f64,
-    /// Lower panels: the load axis (`load_over_w`), at the locator's load direction.
-    pub load_axis: GridAxis<LocatorParam>,
-}
-
-impl super::kinds::Kind for VlocatorOptimumSpec {
-    /// The V-block's parameters are `[chart.locator]`'s, not the palm scene's.
-    fn takes_scene(&self) -> bool {
-        false
-    }
-
-    type Chart = VlocatorOptimum;
-
-    /// Checks the axes, the frictions and the load.
-    fn validate(&self, _scene: &Scene) -> Result<()> {
-        if self.direction_axis.param != LocatorParam::LoadAngleDeg {
-            return Err(Error::invalid(
-                "chart.direction_axis.param",
-                self.direction_axis.param.as_str(),
-                "use load_angle_deg",
-            ));
-        }
-        if self.load_axis.param != LocatorParam::LoadOverW {
-            return Err(Error::invalid(
-                "chart.load_axis.param",
-                self.load_axis.param.as_str(),
-                "use load_over_w",
-            ));
-        }
-        let m = &self.mus;
-        if m.is_empty()
-            || m.len() > MARKERS.len()
-            || !m.windows(2).all(|w| w[0] < w[1])
-            || !m.iter().all(|v| v.is_finite() && *v > 0.0)
-        {
-            return Err(Error::invalid(
-                "chart.mus",
-                format!("{m:?}"),
-                format!("give 1 to {} increasing frictions > 0", MARKERS.len()),
-            ));
-        }
-        if !(self.p_over_w.is_finite() && self.p_over_w > 0.0) {
-            return Err(Error::invalid(
-                "chart.p_over_w",
-                self.p_over_w,
-                "the load of the direction panels is a finite P / W > 0",
-            ));
-        }
-        for mu in m {
-            for g in self.grids(*mu) {
-                g.validate()?;
-            }
-        }
-        Ok(())
-    }
-
-    /// The optimum at every sample of both sweeps, through the grid.
-    fn compute(&self, scene: &Scene, _models: &dyn Models) -> Result<VlocatorOptimum> {
-        let spec = self;
-        let mut curves = Vec::with_capacity(spec.mus.len());
-        let (mut directions, mut loads) = (Vec::new(), Vec::new());
-        for &mu in &spec.mus {
-            let [by_dir, by_load] = spec.grids(mu);
-            let d = by_dir.map(|p| Ok(locator::optimum(p)))?;
-            let l = by_load.map(|p| Ok(locator::optimum(p)))?;
-            directions = d.x_values;
-            loads = l.x_values;
-            curves.push(MuCurves {
-                mu,
-                by_direction: d.values,
-                by_load: l.values,
-            });
-        }
-        Ok(VlocatorOptimum {
-            spec: spec.clone(),
-            title: scene.title.clone(),
-            directions,
-            loads,
-            curves,
-        })
-    }
-
-    fn check_size(&self, _scene: &Scene) -> Result<()> {
-        // At most five curves (one per marker) of two sweeps.
-        let n = (self.direction_axis.count + self.load_axis.count) as f64 * self.mus.len() as f64;
-        // Work, not only memory: each point is a search over the included angle.
-        let max = crate::limits::MAX_OPTIMUM_POINTS;
-        if n > max as f64 {
-            return Err(Error::invalid(
-                "chart.direction_axis.count + chart.load_axis.count",
-                format!("{n} optima ({} mus)", self.mus.len()),
-                format!(
-                    "a V-block optimum chart computes at most {max} optima (about 25 s on 2 \
-                     cores); lower the counts or the number of mus"
-                ),
-            ));
-        }
-        crate::limits::check_items(
-            "chart.direction_axis.count + chart.load_axis.count",
-            n,
-            crate::limits::SWEEP_POINT,
-        )
-    }
-}
-
-impl VlocatorOptimumSpec {
-    /// The two sweeps at friction `mu`: over the direction, over the load.
-    fn grids(&self, mu: f64) -> [Grid<LocatorParams>; 2] {
-        let base = self.locator.with_mu(mu);
-        let at_load = LocatorParams {
-            load_n: self.p_over_w * base.weight_n(),
-            ..base
-        };
-        [
-            Grid {
-                base: at_load,
-                x: self.direction_axis,
-                y: None,
-            },
-            Grid {
-                base,
-                x: self.load_axis,
-                y: None,
-            },
-        ]
-    }
-}
+use crate::figures::vlocator_capacity::STANDARD_V_DEG;
+use crate::figures::vlocator_optimum::{
+    MAX_MUS, MuCurves, VlocatorOptimumData, VlocatorOptimumSettings,
+};
+use crate::grid::{AxisScale, LocatorParam};
+use crate::locator::Optimum;
 
 /// Markers of the friction curves, in order.
-const MARKERS: [Marker; 5] = [
+const MARKERS: [Marker; MAX_MUS] = [
     Marker::Circle,
     Marker::Dot,
     Marker::Triangle,
@@ -168,42 +29,32 @@ const MARKERS: [Marker; 5] = [
     Marker::Diamond,
 ];
 
-/// One friction's two sweeps.
-#[derive(Debug, Clone, Serialize)]
-struct MuCurves {
-    mu: f64,
-    /// Optimum per load direction (the direction axis' values).
-    by_direction: Vec<Optimum>,
-    /// Optimum per P / W (the load axis' values).
-    by_load: Vec<Optimum>,
-}
-
-/// The computed optimum chart.
+/// An optimum chart ready to draw.
 #[derive(Debug, Clone)]
 pub struct VlocatorOptimum {
-    spec: VlocatorOptimumSpec,
+    data: VlocatorOptimumData,
     title: String,
-    directions: Vec<f64>,
-    loads: Vec<f64>,
-    curves: Vec<MuCurves>,
 }
 
-impl VlocatorOptimum {
-    /// The data behind the chart as JSON.
-    pub fn data(&self, scene: &Scene) -> DataFile {
-        DataFile::json(&json!({
-            "scene": scene.name, "title": self.title, "locator": self.spec.locator,
-            "p_over_w_of_direction_sweep": self.spec.p_over_w,
-            "load_angle_deg": self.directions, "load_over_w": self.loads,
-            "curves": self.curves,
-        }))
+impl Picture for VlocatorOptimum {
+    type Settings = VlocatorOptimumSettings;
+
+    fn new(data: VlocatorOptimumData, title: &str) -> Self {
+        VlocatorOptimum {
+            data,
+            title: title.to_string(),
+        }
+    }
+
+    fn data(&self) -> &VlocatorOptimumData {
+        &self.data
     }
 
     /// What the gallery's read-off needs (see [`super::readoff`], kind `panels`): the four
     /// frames, each with its x axis (direction above, P / W below), and per friction gamma*
     /// and rho* at every sample as `jamchart vlocator` names them (`null` where the optimum
     /// lies at the search bound, a gap in the chart).
-    pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
         let fig = self.figure();
         if frames.len() != fig.panels.len() {
             return None;
@@ -223,6 +74,7 @@ impl VlocatorOptimum {
             .collect();
         let sweep = |at: &[f64], pick: fn(&MuCurves) -> &Vec<Optimum>| {
             let series: Vec<_> = self
+                .data
                 .curves
                 .iter()
                 .map(|c| {
@@ -240,11 +92,11 @@ impl VlocatorOptimum {
             json!({ "at": at, "series": series })
         };
         let mut sweeps = [
-            sweep(&self.directions, |c| &c.by_direction),
-            sweep(&self.loads, |c| &c.by_load),
+            sweep(&self.data.load_angle_deg, |c| &c.by_direction),
+            sweep(&self.data.load_over_w, |c| &c.by_load),
         ];
-        sweeps[0]["fixed"] = json!({ "load_over_w": self.spec.p_over_w });
-        sweeps[1]["fixed"] = json!({ "load_angle_deg": self.spec.locator.load_angle_deg });
+        sweeps[0]["fixed"] = json!({ "load_over_w": self.data.settings.p_over_w });
+        sweeps[1]["fixed"] = json!({ "load_angle_deg": self.data.settings.locator.load_angle_deg });
         for (s, p) in sweeps.iter_mut().zip(params) {
             s["param"] = p.as_str().into();
         }
@@ -257,23 +109,29 @@ impl VlocatorOptimum {
     }
 
     /// Draws the four panels.
-    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
         self.figure().draw(root)
     }
+}
 
+impl VlocatorOptimum {
     fn figure(&self) -> Figure {
         let dir_label = "load direction φ (deg from +x; 0 sideways, 90 lifts, −90 pushes in)";
         // The load in N too: P = (P / W) W, with this chart's weight.
         let load_label = format!(
             "load P / W at φ = {}° (-; P in N = value × W = {} N)",
-            self.spec.locator.load_angle_deg,
-            super::style::fmt_num(self.spec.locator.weight_n(), 3)
+            self.data.settings.locator.load_angle_deg,
+            super::style::fmt_num(self.data.settings.locator.weight_n(), 3)
         );
-        let (da, la) = (&self.spec.direction_axis, &self.spec.load_axis);
+        let (da, la) = (
+            &self.data.settings.direction_axis,
+            &self.data.settings.load_axis,
+        );
         let gamma_axis = |label: &str| PlotAxis::new(0.0, 180.0, AxisScale::Linear, label);
         let x_dir = PlotAxis::new(da.min, da.max, da.scale, dir_label);
         let x_load = PlotAxis::new(la.min, la.max, la.scale, load_label);
         let rhos = self
+            .data
             .curves
             .iter()
             .flat_map(|c| c.by_direction.iter().chain(&c.by_load))
@@ -285,34 +143,34 @@ impl VlocatorOptimum {
         );
         let gamma_label = format!(
             "optimum included angle γ* (deg), P / W = {}",
-            self.spec.p_over_w
+            self.data.settings.p_over_w
         );
         let mut panels = vec![
             self.panel(
                 x_dir.clone(),
                 gamma_axis(&gamma_label),
-                &self.directions,
+                &self.data.load_angle_deg,
                 |c| &c.by_direction,
                 |o| o.included_angle_deg,
             ),
             self.panel(
                 x_dir,
                 rho_axis.clone(),
-                &self.directions,
+                &self.data.load_angle_deg,
                 |c| &c.by_direction,
                 |o| o.safety_factor,
             ),
             self.panel(
                 x_load.clone(),
                 gamma_axis("optimum included angle γ* (deg)"),
-                &self.loads,
+                &self.data.load_over_w,
                 |c| &c.by_load,
                 |o| o.included_angle_deg,
             ),
             self.panel(
                 x_load,
                 rho_axis,
-                &self.loads,
+                &self.data.load_over_w,
                 |c| &c.by_load,
                 |o| o.safety_factor,
             ),
@@ -332,7 +190,7 @@ impl VlocatorOptimum {
         }
         Figure {
             title: self.title.clone(),
-            subtitle: locator_subtitle(&self.spec.locator, "load", false),
+            subtitle: locator_subtitle(&self.data.settings.locator, "load", false),
             panels,
             notes: vec![
                 "γ* balances two failures: the V drops the part when the load grows by ρ and \
@@ -355,7 +213,7 @@ impl VlocatorOptimum {
         value: impl Fn(&Optimum) -> f64,
     ) -> Panel {
         let mut curves = Vec::new();
-        for (n, (c, marker)) in self.curves.iter().zip(MARKERS).enumerate() {
+        for (n, (c, marker)) in self.data.curves.iter().zip(MARKERS).enumerate() {
             let label = format!("μ = {}", c.mu);
             let points: Vec<Option<(f64, f64)>> = xs
                 .iter()

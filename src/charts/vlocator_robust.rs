@@ -1,192 +1,62 @@
 //! Chart kind `vlocator_robust`: the window of included angles of a V-block that holds every
 //! load of a range without self-locking at any friction of a range, against the width of the
-//! friction range (centred on a nominal friction), with the most robust angle and the
-//! standard 60/90/120 deg V-blocks marked ([`crate::locator::robust`]).
+//! friction range, with the most robust angle and the standard 60/90/120 deg V-blocks marked;
+//! drawn from [`VlocatorRobustData`].
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use rayon::prelude::*;
-use serde::{Deserialize, Serialize};
 use serde_json::json;
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
-use super::models::Models;
-use super::spec::Scene;
+use super::kinds::Picture;
+use super::readoff;
 use super::style::LineKind;
-use super::vlocator_capacity::{STANDARD_V_DEG, locator_subtitle};
+use super::vlocator_capacity::locator_subtitle;
 use super::xy::{Curve, CurveStyle, Figure, Panel, Tag};
-use super::{DataFile, readoff};
-use crate::csv_out::{Dec, dec, to_csv};
-use crate::error::{Error, Result};
+use crate::figures::vlocator_capacity::STANDARD_V_DEG;
+use crate::figures::vlocator_robust::{VlocatorRobustData, VlocatorRobustSettings};
 use crate::grid::AxisScale;
-use crate::locator::{LocatorParams, RobustBox, RobustDesign, robust_design};
+use crate::locator::{RobustBox, RobustDesign};
 
-/// `[chart]` keys of `kind = "vlocator_robust"`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct VlocatorRobustSpec {
-    /// The V's tilt, rotation, load point and weight (default: [`LocatorParams::default`]);
-    /// the included angle is the unknown, the frictions and the load come from the keys below.
-    #[serde(default)]
-    pub locator: LocatorParams,
-    /// The nominal friction mu0 the ranges are centred on (both flanks).
-    pub mu_center: f64,
-    /// The widest friction range drawn: [mu0 - w/2, mu0 + w/2] up to w = `width_max`
-    /// (<= 2 mu0, so the range stays >= 0).
-    pub width_max: f64,
-    /// Range widths drawn, from 0 to `width_max` (2 to 201).
-    pub count: usize,
-    /// The load magnitude range [lo, hi] in N.
-    pub load_n: [f64; 2],
-    /// The load direction range [lo, hi] in deg from +x (0 sideways, 90 lifts).
-    pub load_angle_deg: [f64; 2],
-}
-
-/// Most range widths a chart draws: each is a robust design (a few ms with a direction range).
-const MAX_COUNT: usize = 201;
-
-impl super::kinds::Kind for VlocatorRobustSpec {
-    type Chart = VlocatorRobust;
-
-    /// The V-block's parameters are `[chart.locator]`'s, not the palm scene's.
-    fn takes_scene(&self) -> bool {
-        false
-    }
-
-    fn validate(&self, _scene: &Scene) -> Result<()> {
-        self.locator.validate()?;
-        let (c, w) = (self.mu_center, self.width_max);
-        if !(c.is_finite() && c > 0.0) {
-            return Err(Error::invalid(
-                "chart.mu_center",
-                c,
-                "the nominal friction is a finite number > 0",
-            ));
-        }
-        if !(w.is_finite() && w > 0.0 && w <= 2.0 * c) {
-            return Err(Error::invalid(
-                "chart.width_max",
-                w,
-                format!("give a width in (0, 2 mu_center] = (0, {}]", 2.0 * c),
-            ));
-        }
-        if !(2..=MAX_COUNT).contains(&self.count) {
-            return Err(Error::invalid(
-                "chart.count",
-                self.count,
-                format!("draw 2 to {MAX_COUNT} widths"),
-            ));
-        }
-        let [p0, p1] = self.load_n;
-        if !(p0.is_finite() && p1.is_finite() && 0.0 <= p0 && p0 <= p1) {
-            return Err(Error::invalid(
-                "chart.load_n",
-                format!("[{p0}, {p1}]"),
-                "give [lo, hi] in N with 0 <= lo <= hi",
-            ));
-        }
-        let [a0, a1] = self.load_angle_deg;
-        if !(a0.is_finite() && a1.is_finite() && a0 <= a1 && a1 - a0 <= 360.0) {
-            return Err(Error::invalid(
-                "chart.load_angle_deg",
-                format!("[{a0}, {a1}]"),
-                "give [lo, hi] in deg with lo <= hi, at most 360 apart",
-            ));
-        }
-        Ok(())
-    }
-
-    fn check_size(&self, _scene: &Scene) -> Result<()> {
-        // `validate` caps the count; the memory is a few numbers per width.
-        Ok(())
-    }
-
-    /// One robust design per width, in parallel, in index order.
-    fn compute(&self, scene: &Scene, _models: &dyn Models) -> Result<VlocatorRobust> {
-        let widths: Vec<f64> = (0..self.count)
-            .map(|k| self.width_max * k as f64 / (self.count - 1) as f64)
-            .collect();
-        let designs = widths
-            .par_iter()
-            .map(|&w| robust_design(&self.locator, &self.box_of(w)))
-            .collect();
-        Ok(VlocatorRobust {
-            spec: self.clone(),
-            title: scene.title.clone(),
-            widths,
-            designs,
-        })
-    }
-}
-
-impl VlocatorRobustSpec {
-    /// The box at friction-range width `w`.
-    fn box_of(&self, w: f64) -> RobustBox {
-        let c = self.mu_center;
-        RobustBox {
-            mu: ((c - 0.5 * w).max(0.0), c + 0.5 * w),
-            load_n: (self.load_n[0], self.load_n[1]),
-            load_angle_deg: (self.load_angle_deg[0], self.load_angle_deg[1]),
-        }
-    }
-}
-
-/// The computed chart.
+/// A robust-design chart ready to draw.
 #[derive(Debug, Clone)]
 pub struct VlocatorRobust {
-    spec: VlocatorRobustSpec,
+    data: VlocatorRobustData,
     title: String,
-    widths: Vec<f64>,
-    designs: Vec<RobustDesign>,
 }
 
-/// A CSV row: one friction-range width.
-#[derive(Serialize)]
-struct Row {
-    mu_width: Dec,
-    mu_lo: Dec,
-    mu_hi: Dec,
-    lock_bound_deg: Dec,
-    window_lo_deg: Option<Dec>,
-    window_hi_deg: Option<Dec>,
-    robust_deg: Option<Dec>,
-    safety_factor: Option<Dec>,
-}
+impl Picture for VlocatorRobust {
+    type Settings = VlocatorRobustSettings;
 
-impl VlocatorRobust {
-    /// The data behind the chart as CSV, one row per width; empty window cells where no V
-    /// works.
-    pub fn data(&self, _scene: &Scene) -> DataFile {
-        let rows = self.widths.iter().zip(&self.designs).map(|(&w, d)| {
-            let b = self.spec.box_of(w);
-            let win = d.windows.first();
-            Row {
-                mu_width: Dec(w),
-                mu_lo: Dec(b.mu.0),
-                mu_hi: Dec(b.mu.1),
-                lock_bound_deg: Dec(d.lock_bound_deg),
-                window_lo_deg: dec(win.map(|w| w.0)),
-                window_hi_deg: dec(win.map(|w| w.1)),
-                robust_deg: dec(d.robust.map(|r| r.included_angle_deg)),
-                safety_factor: dec(d.robust.map(|r| r.safety_factor).filter(|r| r.is_finite())),
-            }
-        });
-        DataFile::csv(to_csv(rows))
+    fn new(data: VlocatorRobustData, title: &str) -> Self {
+        VlocatorRobust {
+            data,
+            title: title.to_string(),
+        }
+    }
+
+    fn data(&self) -> &VlocatorRobustData {
+        &self.data
     }
 
     /// What the gallery's read-off needs (see [`super::readoff`], kind `panels`): the frame,
     /// and per width the friction range and the design as the CSV names them (the first
     /// window; `null` where no V works), the box's loads as fixed inputs.
-    pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
         let fig = self.figure();
         let (p, frame) = (fig.panels.first()?, frames.first()?);
         // The pointer's y is read against the most robust angle (the crosshair lands on it).
         let y = readoff::axis("included_angle_deg", &p.y);
         let x = readoff::axis("mu_width", &p.x);
         let panel = readoff::sweep_panel(frame, x, y, "robust_deg", 0);
-        let d = &self.designs;
+        let d = &self.data.designs;
         let col = |v: &dyn Fn(&RobustDesign) -> Option<f64>| readoff::column(d.iter().map(v));
-        let boxes: Vec<RobustBox> = self.widths.iter().map(|&w| self.spec.box_of(w)).collect();
+        let boxes: Vec<RobustBox> = self
+            .data
+            .widths
+            .iter()
+            .map(|&w| self.data.settings.box_of(w))
+            .collect();
         let series = json!({
             "label": "robust design",
             "mu_lo": readoff::column(boxes.iter().map(|b| b.mu.0)),
@@ -197,14 +67,14 @@ impl VlocatorRobust {
             "robust_deg": col(&|d| d.robust.map(|r| r.included_angle_deg)),
             "safety_factor": col(&|d| d.robust.map(|r| r.safety_factor).filter(|r| r.is_finite())),
         });
-        let s = &self.spec;
+        let s = &self.data.settings;
         Some(json!({
             "kind": "panels",
             "model": "vlocator",
             "panels": [panel],
             "sweeps": [{
                 "param": "mu_width",
-                "at": self.widths,
+                "at": self.data.widths,
                 "fixed": { "mu_center": s.mu_center, "load_n": s.load_n, "load_angle_deg": s.load_angle_deg },
                 "series": [series],
             }],
@@ -212,12 +82,14 @@ impl VlocatorRobust {
     }
 
     /// Draws the panel.
-    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
         self.figure().draw(root)
     }
+}
 
+impl VlocatorRobust {
     fn figure(&self) -> Figure {
-        let s = &self.spec;
+        let s = &self.data.settings;
         let x = PlotAxis::new(
             0.0,
             s.width_max,
@@ -230,7 +102,7 @@ impl VlocatorRobust {
         let y = PlotAxis::new(0.0, 180.0, AxisScale::Linear, "included angle γ (deg)");
         let mut curves = Vec::new();
         // The window as vertical bars, one per width: a band without a fill style.
-        for (&w, d) in self.widths.iter().zip(&self.designs) {
+        for (&w, d) in self.data.widths.iter().zip(&self.data.designs) {
             for &(lo, hi) in &d.windows {
                 curves.push(Curve {
                     label: "window: holds every load, never locks".into(),
@@ -240,9 +112,10 @@ impl VlocatorRobust {
             }
         }
         let lock: Vec<(f64, f64)> = self
+            .data
             .widths
             .iter()
-            .zip(&self.designs)
+            .zip(&self.data.designs)
             .map(|(&w, d)| (w, d.lock_bound_deg))
             .collect();
         curves.push(Curve {
@@ -251,9 +124,10 @@ impl VlocatorRobust {
             points: lock,
         });
         let robust: Vec<(f64, f64)> = self
+            .data
             .widths
             .iter()
-            .zip(&self.designs)
+            .zip(&self.data.designs)
             .filter_map(|(&w, d)| d.robust.map(|r| (w, r.included_angle_deg)))
             .collect();
         if !robust.is_empty() {
@@ -278,9 +152,10 @@ impl VlocatorRobust {
             });
         }
         let closes = self
+            .data
             .widths
             .iter()
-            .zip(&self.designs)
+            .zip(&self.data.designs)
             .find(|(_, d)| d.windows.is_empty())
             .map(|(&w, _)| w);
         let mut notes = vec![format!(
@@ -316,8 +191,9 @@ impl VlocatorRobust {
 mod tests {
     use super::*;
     use crate::charts::builtin::scene_text;
+    use crate::locator::robust_design;
 
-    fn built_in() -> VlocatorRobustSpec {
+    fn built_in() -> VlocatorRobustSettings {
         let table: toml::Table = toml::from_str(scene_text("vlocator-robust").unwrap()).unwrap();
         let mut chart = table["chart"].as_table().unwrap().clone();
         chart.remove("kind");

@@ -127,7 +127,12 @@ impl ValueEnum for ModelChoice {
             ModelChoice::One(k) => (k.as_str(), k.summary()),
             ModelChoice::All => ("all", "every model, with a line on which to design to"),
         };
-        Some(clap::builder::PossibleValue::new(name).help(help))
+        // The spelling of scene files and settings (`min_norm`) is taken too.
+        let value = clap::builder::PossibleValue::new(name).help(help);
+        Some(match name.contains('-') {
+            true => value.alias(name.replace('-', "_")),
+            false => value,
+        })
     }
 }
 

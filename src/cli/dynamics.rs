@@ -21,12 +21,10 @@ pub type DynamicsArgs = Flags<DynamicsSet>;
 pub const LIFTS_DISC_ADVICE: &str = "start the push at 90 deg or below (--start-angle): above it \
      the palm's push points upwards and lifts the disc, which no model here represents";
 
-/// The dynamics' own JSON keys in `solve`'s record: the solution's, the series file and the
+/// What `solve` adds to a simulation's answer in its JSON: the series file and the
 /// `[dynamics]` settings in force, so that the answer can be reproduced.
 #[derive(Debug, Serialize)]
 pub struct Record<'a> {
-    #[serde(flatten)]
-    solution: &'a DynamicsSolution,
     #[serde(skip_serializing_if = "Option::is_none")]
     series: Option<String>,
     /// Rows written to the series.
@@ -48,7 +46,6 @@ pub fn record<'a>(
     series: Option<&Path>,
 ) -> Record<'a> {
     Record {
-        solution: s,
         series: series.map(|p| p.display().to_string()),
         series_rows: series.map(|_| s.series.len()),
         series_end: series.map(|_| series_end(config, s)),
@@ -106,7 +103,7 @@ pub fn series_end(config: &Config, s: &DynamicsSolution) -> String {
 /// Writes the time series of `s`, simulated for `config`, to `path` as CSV (atomically), with
 /// the columns of render's fig5.csv.
 pub fn write_series(config: &Config, s: &DynamicsSolution, path: &Path) -> Result<()> {
-    let csv = crate::charts::time_series::series_csv(&config.scene, &config.dynamics, &s.series);
+    let csv = crate::figures::time_series::series_csv(&config.scene, &config.dynamics, &s.series);
     write_atomic(path, &csv)
 }
 

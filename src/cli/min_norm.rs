@@ -10,31 +10,12 @@ use crate::minnorm::qp::{Backend, ContactSolution, HoldStatus, TracePoint};
 use crate::minnorm::{MinNormCheck, PalmSolution, palm};
 use crate::numbers::Num;
 
-/// The min-norm model's own JSON keys in `solve`'s record.
+/// What `solve --trace` adds to the min-norm model's answer.
 #[derive(Debug, Serialize)]
 pub struct Record<'a> {
-    iterations: u32,
-    solves: u32,
-    formulation: &'static str,
-    backend: Backend,
-    undetermined_solves: u32,
-    contacts_at_jam: Vec<ContactRecord>,
-    cross_check: Option<MinNormCheck>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    trace_theta_deg: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    trace_status: Option<HoldStatus>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    trace: Option<&'a [TracePoint]>,
-}
-
-/// One contact's force at the jam, in its normal-tangent frame.
-#[derive(Debug, Serialize)]
-struct ContactRecord {
-    contact: &'static str,
-    normal_n: f64,
-    tangential_n: f64,
-    utilisation: f64,
+    trace_theta_deg: f64,
+    trace_status: HoldStatus,
+    trace: &'a [TracePoint],
 }
 
 /// clarabel's convergence trace at one palm angle (the paper's Fig. 4), for `--trace`.
@@ -56,34 +37,12 @@ pub fn trace(config: &Config, s: &PalmSolution) -> Result<Trace> {
     })
 }
 
-/// The JSON keys of `s` (and of its trace).
-pub fn record<'a>(s: &PalmSolution, trace: Option<&'a Trace>) -> Record<'a> {
-    let contacts_at_jam = s
-        .at_jam
-        .iter()
-        .flat_map(|sol| {
-            sol.forces
-                .iter()
-                .zip(s.formulation.contact_names())
-                .map(|(f, name)| ContactRecord {
-                    contact: name,
-                    normal_n: f.normal_n,
-                    tangential_n: f.tangential_n[0],
-                    utilisation: f.utilisation,
-                })
-        })
-        .collect();
+/// The JSON keys of `trace`.
+pub fn record(trace: &Trace) -> Record<'_> {
     Record {
-        iterations: s.iterations,
-        solves: s.solves,
-        formulation: s.formulation.as_str(),
-        backend: s.backend,
-        undetermined_solves: s.undetermined_solves,
-        contacts_at_jam,
-        cross_check: s.cross_check,
-        trace_theta_deg: trace.map(|t| t.theta_deg),
-        trace_status: trace.map(|t| t.solution.status),
-        trace: trace.map(|t| t.solution.trace.as_slice()),
+        trace_theta_deg: trace.theta_deg,
+        trace_status: trace.solution.status,
+        trace: &trace.solution.trace,
     }
 }
 

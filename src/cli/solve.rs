@@ -58,26 +58,24 @@ struct Answer {
     trace: Option<min_norm::Trace>,
 }
 
-/// One model's answer in `solve`'s JSON: the keys every model shares, then its own.
+/// One model's answer in `solve`'s JSON: the port's form of the solution
+/// ([`crate::models::Solution`]), then what `solve` asked beyond it (a min-norm trace; a
+/// simulation's series, settings and advice).
 #[derive(Serialize)]
 struct Record<'a> {
-    model: &'static str,
-    status: JamStatus,
-    theta_jam_deg: Option<f64>,
-    x_jam_mm: Option<f64>,
-    elapsed_s: f64,
     #[serde(flatten)]
-    detail: DetailRecord<'a>,
+    solution: &'a Solution,
+    #[serde(flatten)]
+    asked: Asked<'a>,
 }
 
-/// A model's own keys.
+/// What `solve` adds to a model's answer.
 #[derive(Serialize)]
 #[serde(untagged)]
-enum DetailRecord<'a> {
-    Statics(&'a StaticsSolution),
+enum Asked<'a> {
+    Nothing {},
     MinNorm(min_norm::Record<'a>),
     Dynamics(dynamics::Record<'a>),
-    Outside { outside_model: &'a OutsideModel },
 }
 
 /// The JSON document of `solve --format json`.
@@ -142,22 +140,17 @@ pub fn run(a: &SolveArgs) -> Result<String> {
 
 /// The JSON record of one answer.
 fn record<'a>(x: &'a Answer, config: &'a Config, a: &SolveArgs) -> Record<'a> {
-    let s = &x.solution;
-    let detail = match &s.detail {
-        Detail::Statics(d) => DetailRecord::Statics(d),
-        Detail::MinNorm(d) => DetailRecord::MinNorm(min_norm::record(d, x.trace.as_ref())),
-        Detail::Dynamics(d) => {
-            DetailRecord::Dynamics(dynamics::record(d, config, a.series.as_deref()))
-        }
-        Detail::Outside(why) => DetailRecord::Outside { outside_model: why },
+    let asked = match &x.solution.detail {
+        Detail::MinNorm(_) => x
+            .trace
+            .as_ref()
+            .map_or(Asked::Nothing {}, |t| Asked::MinNorm(min_norm::record(t))),
+        Detail::Dynamics(d) => Asked::Dynamics(dynamics::record(d, config, a.series.as_deref())),
+        Detail::Statics(_) | Detail::Outside(_) => Asked::Nothing {},
     };
     Record {
-        model: s.model.as_str(),
-        status: s.status,
-        theta_jam_deg: s.theta_jam_deg,
-        x_jam_mm: s.x_jam_mm,
-        elapsed_s: s.elapsed_s,
-        detail,
+        solution: &x.solution,
+        asked,
     }
 }
 

@@ -125,15 +125,12 @@ pub(crate) const LOOSEST_RTOL: f64 = 1e-2;
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DynamicsSolution {
     /// Outcome: jams, jammed_at_start, never_jams, beyond_reach, inaccurate or integrator_failed.
-    #[serde(skip)] // shared by every model: the record carries it
     pub status: JamStatus,
     /// Palm angle at the jam in deg: where the disc comes to rest (force drive) or the palm locks
     /// up (motion drive).
-    #[serde(skip)] // shared by every model: the record carries it
     pub theta_jam_deg: Option<f64>,
     /// Disc position at the jam in mm: where the disc comes to rest (force drive, every method)
     /// or where the motion-driven palm locks up against it.
-    #[serde(skip)] // shared by every model: the record carries it
     pub x_jam_mm: Option<f64>,
     /// Time of the jam in s (for the force drive, when the disc came to rest).
     pub t_jam_s: Option<f64>,

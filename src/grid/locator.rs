@@ -7,7 +7,7 @@ use rayon::prelude::*;
 
 use super::{Cells, Grid, GridAxis, ParamSet};
 use crate::error::Result;
-use crate::locator::symmetric::{self, LoadDirection, SymmetricV};
+use crate::locator::symmetric::{self, LoadDirection, LoadDirections, SymmetricV, Vs};
 use crate::locator::{self, Capacity, LocatorParams};
 
 /// A V-locator parameter a grid axis can vary. TOML spellings are the snake_case names.
@@ -89,37 +89,32 @@ pub fn capacity_map(grid: &Grid<LocatorParams>) -> Result<Cells<Capacity>> {
     grid.validate()?;
     let x_values = grid.x.values();
     let y_values = grid.y.as_ref().map_or_else(Vec::new, GridAxis::values);
-    let (gammas, phis) = match gamma_on_x {
-        true => (&x_values, &y_values),
-        false => (&y_values, &x_values),
-    };
-    let vs: Vec<SymmetricV> = gammas
-        .iter()
-        .map(|&g| SymmetricV::of(&grid.base.with(IncludedAngleDeg, g)))
-        .collect();
-    let ds: Vec<LoadDirection> = phis.iter().map(|&phi| LoadDirection::new(phi)).collect();
+    let v_of = |g: f64| SymmetricV::of(&grid.base.with(IncludedAngleDeg, g));
     let weight_n = grid.base.weight_n();
     let nx = x_values.len();
-    let mut values = vec![PLACEHOLDER; nx * y_values.len()];
-    values.par_chunks_mut(nx).enumerate().for_each(|(iy, row)| {
-        for (ix, cell) in row.iter_mut().enumerate() {
-            *cell = match gamma_on_x {
-                true => vs[ix].capacity(&ds[iy], weight_n),
-                false => vs[iy].capacity(&ds[ix], weight_n),
-            };
+    let n = nx * y_values.len();
+    // Each row is written once, straight into the map's memory: the kernel writes every cell
+    // of its row (`capacities`), so no placeholder pass over the 40-byte cells comes first.
+    let mut values = Vec::with_capacity(n);
+    let rows = values.spare_capacity_mut()[..n].par_chunks_mut(nx);
+    match gamma_on_x {
+        true => {
+            let vs = Vs::new(&x_values.iter().map(|&g| v_of(g)).collect::<Vec<_>>());
+            rows.zip(&y_values)
+                .for_each(|(row, &phi)| LoadDirection::new(phi).capacities(&vs, weight_n, row));
         }
-    });
+        false => {
+            let ds: Vec<LoadDirection> = x_values.iter().map(|&p| LoadDirection::new(p)).collect();
+            let ds = LoadDirections::new(&ds);
+            rows.zip(&y_values)
+                .for_each(|(row, &g)| v_of(g).capacities(&ds, weight_n, row));
+        }
+    }
+    // SAFETY: the rows cover values[..n], and each row's kernel wrote every cell of it.
+    unsafe { values.set_len(n) };
     Ok(Cells {
         x_values,
         y_values,
         values,
     })
 }
-
-/// What every cell of [`capacity_map`]'s closed-form path holds before it is computed.
-const PLACEHOLDER: Capacity = Capacity {
-    p_max_n: None,
-    p_max_over_w: None,
-    unbounded: false,
-    failure_mode: None,
-};

@@ -126,6 +126,11 @@ macro_rules! choice {
                     $($name::$variant => $text,)*
                 }
             }
+
+            /// The value's index in [`Self::ALL`] and [`Self::NAMES`].
+            pub fn index(self) -> u8 {
+                self as u8
+            }
         }
 
         impl std::fmt::Display for $name {

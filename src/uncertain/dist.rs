@@ -22,7 +22,6 @@
 
 use rand_chacha::ChaCha8Rng;
 use rand_core::{Rng, SeedableRng};
-use rayon::prelude::*;
 use serde::Serialize;
 
 use super::UncertainSet;
@@ -251,7 +250,7 @@ pub fn draw(set: &UncertainSet, seed: u64, index: u64) -> Vec<f64> {
 }
 
 /// A u64 to (0, 1): the top 53 bits, offset by half a step so neither end is reached.
-fn unit(bits: u64) -> f64 {
+pub(super) fn unit(bits: u64) -> f64 {
     ((bits >> 11) as f64 + 0.5) * (1.0 / (1u64 << 53) as f64)
 }
 
@@ -265,32 +264,13 @@ pub fn monte_carlo(
 ) -> Result<DistAnswer> {
     ask.validate()?;
     let n = ask.samples;
-    let chunks = n.div_ceil(CHUNK as u64);
-    let per_chunk: Vec<Vec<Option<f64>>> = (0..chunks)
-        .into_par_iter()
-        .map(|c| -> Result<Vec<Option<f64>>> {
-            let mut rng = ChaCha8Rng::seed_from_u64(ask.seed);
-            rng.set_stream(c);
-            let end = ((c + 1) * CHUNK as u64).min(n);
-            (c * CHUNK as u64..end)
-                .map(|_| {
-                    let v: Vec<f64> = set
-                        .inputs
-                        .iter()
-                        .map(|i| i.value.quantile(unit(rng.next_u64())))
-                        .collect();
-                    let q = set.apply(p, &v);
-                    Ok(match spec {
-                        ModelSpec::Statics => raw_x(&q),
-                        _ => models::solve(spec, &q)?.x_jam_mm,
-                    })
-                })
-                .collect()
+    let xs = super::sorted_samples(set, ask.seed, n, |v| {
+        let q = set.apply(p, v);
+        Ok(match spec {
+            ModelSpec::Statics => raw_x(&q),
+            _ => models::solve(spec, &q)?.x_jam_mm,
         })
-        .collect::<Result<_>>()?;
-    let all: Vec<Option<f64>> = per_chunk.into_iter().flatten().collect();
-    let mut xs: Vec<f64> = all.iter().flatten().copied().collect();
-    xs.sort_by(f64::total_cmp);
+    })?;
     let without_jam = n - xs.len() as u64;
     let nf = n as f64;
     let before = ask

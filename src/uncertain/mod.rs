@@ -400,5 +400,62 @@ impl UncertainSet {
     }
 }
 
+/// `each` of `n` samples of `set`'s inputs (its values in declaration order) drawn with
+/// `seed` as [`dist::draw`] draws them, in parallel: the values it returns, sorted by
+/// `f64::total_cmp`, the samples without one left out; on an error, the error of a sample
+/// (the rest are not drawn).
+///
+/// Every sample's value depends on the seed and its index alone, and the sorted list on the
+/// values alone, so it is the same for any thread count. Each chunk of [`dist::CHUNK`]
+/// samples writes its values into its own slot of one list of `n` (8 bytes a sample, the
+/// peak: no per-chunk lists, no list of options), which is then closed up and sorted in
+/// parallel in place.
+pub(crate) fn sorted_samples(
+    set: &UncertainSet,
+    seed: u64,
+    n: u64,
+    each: impl Fn(&[f64]) -> Result<Option<f64>> + Sync,
+) -> Result<Vec<f64>> {
+    use rand_chacha::ChaCha8Rng;
+    use rand_core::{Rng, SeedableRng};
+    use rayon::prelude::*;
+    let n = usize::try_from(n).map_err(|_| Error::invalid("samples", n, "is too many"))?;
+    let mut xs = vec![0.0; n];
+    let kept: Vec<usize> = xs
+        .par_chunks_mut(dist::CHUNK)
+        .enumerate()
+        .map(|(c, slot)| {
+            let mut rng = ChaCha8Rng::seed_from_u64(seed);
+            rng.set_stream(c as u64);
+            let mut values = Vec::with_capacity(set.inputs.len());
+            let mut k = 0;
+            for _ in 0..slot.len() {
+                values.clear();
+                let draws = set
+                    .inputs
+                    .iter()
+                    .map(|i| i.value.quantile(dist::unit(rng.next_u64())));
+                values.extend(draws);
+                if let Some(x) = each(&values)? {
+                    slot[k] = x;
+                    k += 1;
+                }
+            }
+            Ok(k)
+        })
+        .collect::<Result<_>>()?;
+    // Close up: chunk c's k values move down to follow the values of the chunks before it.
+    let mut len = 0;
+    for (c, k) in kept.into_iter().enumerate() {
+        let start = c * dist::CHUNK;
+        xs.copy_within(start..start + k, len);
+        len += k;
+    }
+    xs.truncate(len);
+    // Values equal under total_cmp have the same bits: the unstable sort's order is the order.
+    xs.par_sort_unstable_by(f64::total_cmp);
+    Ok(xs)
+}
+
 #[cfg(test)]
 mod tests;

@@ -180,3 +180,44 @@ fn quantile_inverts_cdf_and_normal_is_truncated_at_zero() {
     assert!((n.cdf(0.23) - 0.841_344_746).abs() < 1e-6);
     assert_eq!(n.cdf(-1.0), 0.0);
 }
+
+/// The sorted samples are the values of every sample drawn one by one ([`dist::draw`] at its
+/// index), sorted: over partial and whole chunks, with samples that have no value, on one
+/// thread and on two.
+#[test]
+fn sorted_samples_are_each_draw_sorted() {
+    let set = UncertainSet {
+        inputs: vec![
+            UncertainInput {
+                name: "mu",
+                keys: vec!["mu_ground", "mu_palm"],
+                value: Uncertain::Normal {
+                    mean: 0.2,
+                    sd: 0.05,
+                },
+            },
+            UncertainInput {
+                name: "force_n",
+                keys: vec!["force_n"],
+                value: Uncertain::Uniform { lo: 30.0, hi: 50.0 },
+            },
+        ],
+    };
+    // No value for a third of the samples, negative and repeated values among the rest.
+    let each = |v: &[f64]| Ok((v[1] > 36.6).then(|| ((v[0] - 0.2) * 1e3).round() / v[1]));
+    for n in [0, 1, 1000, dist::CHUNK as u64, 3 * dist::CHUNK as u64 + 17] {
+        let mut want: Vec<f64> = (0..n)
+            .filter_map(|i| each(&dist::draw(&set, 7, i)).unwrap())
+            .collect();
+        want.sort_by(f64::total_cmp);
+        for threads in [1, 2] {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            let got = pool.install(|| sorted_samples(&set, 7, n, each)).unwrap();
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&got), bits(&want), "{n} samples on {threads} threads");
+        }
+    }
+}

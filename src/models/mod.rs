@@ -29,6 +29,9 @@
 //! upwards there and can lift the disc, and every model keeps it on the ground. `Err` is left
 //! for misuse: parameters that no model accepts.
 
+pub mod columns;
+mod record;
+
 use std::time::Instant;
 
 use serde::{Deserialize, Serialize};
@@ -39,15 +42,18 @@ use crate::minnorm::{MinNormSettings, PalmSolution, palm};
 use crate::scene::{JamStatus, SceneParams};
 use crate::statics::{self, StaticsSolution};
 
-/// Which model answers: its name in scene files (`model = "min_norm"`), flags and output.
+/// Which model answers: its name in scene files (`model = "min-norm"`), flags and output.
+///
+/// One spelling is printed everywhere, [`ModelKind::as_str`]'s (`min-norm`); `min_norm` is read
+/// too, in scene files, settings and flags.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[serde(rename_all = "kebab-case")]
 pub enum ModelKind {
     /// The closed-form statics of the corrected Eq. 1-2 ([`crate::statics`]).
     #[default]
     Statics,
     /// The minimum-norm contact forces, a convex program ([`crate::minnorm`]).
-    #[serde(alias = "min-norm")]
+    #[serde(alias = "min_norm")]
     MinNorm,
     /// The dynamic simulation of the paper's Adams model ([`crate::dynamics`]).
     Dynamics,
@@ -108,6 +114,38 @@ pub enum ModelSpec {
         /// Record the time series at this interval in s (None: no series).
         series_dt_s: Option<f64>,
     },
+}
+
+/// A model and its settings as data (a dict from Python, a section of a file): the model's
+/// name under `model` beside its own keys, those of its `[min_norm]` or `[dynamics]` section,
+/// each at its default when left out: `{"model": "statics"}`,
+/// `{"model": "min-norm", "formulation": "paper"}`,
+/// `{"model": "dynamics", "integrator": {"method": "nonsmooth"}}`. Unknown keys are refused.
+/// Check it with [`ModelSpec::validate`] ([`solve`] does).
+impl<'de> Deserialize<'de> for ModelSpec {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        /// The statics take no settings.
+        #[derive(Deserialize)]
+        #[serde(deny_unknown_fields)]
+        struct NoSettings {}
+
+        #[derive(Deserialize)]
+        #[serde(tag = "model", rename_all = "kebab-case")]
+        enum Written {
+            Statics(NoSettings),
+            #[serde(alias = "min_norm")]
+            MinNorm(MinNormSettings),
+            Dynamics(DynamicsParams),
+        }
+        Ok(match Written::deserialize(d)? {
+            Written::Statics(NoSettings {}) => ModelSpec::Statics,
+            Written::MinNorm(s) => ModelSpec::MinNorm(s),
+            Written::Dynamics(params) => ModelSpec::Dynamics {
+                params,
+                series_dt_s: None,
+            },
+        })
+    }
 }
 
 impl ModelSpec {
@@ -305,6 +343,171 @@ pub fn solve_column(spec: &ModelSpec, scenes: &[SceneParams]) -> Result<Vec<Solu
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A model's settings read from data take its name in either spelling, default every key
+    /// left out, and refuse a key the model does not have.
+    #[test]
+    fn a_model_spec_is_read_from_its_name_and_keys() {
+        let read = |text: &str| serde_json::from_str::<ModelSpec>(text);
+        assert_eq!(read(r#"{"model": "statics"}"#).unwrap(), ModelSpec::Statics);
+        let paper = MinNormSettings::default();
+        for name in ["min-norm", "min_norm"] {
+            let spec = read(&format!(r#"{{"model": "{name}"}}"#)).unwrap();
+            assert_eq!(spec, ModelSpec::MinNorm(paper), "{name}");
+        }
+        let nonsmooth = read(r#"{"model": "dynamics", "integrator": {"method": "nonsmooth"}}"#);
+        let ModelSpec::Dynamics { params, .. } = nonsmooth.unwrap() else {
+            panic!("dynamics")
+        };
+        assert_eq!(params.integrator.method, dynamics::Method::Nonsmooth);
+        assert_eq!(params.drive, DynamicsParams::default().drive);
+        for wrong in [
+            r#"{"model": "statics", "formulation": "paper"}"#,
+            r#"{"model": "min-norm", "rtol": 1e-6}"#,
+            r#"{"model": "adams"}"#,
+            r#"{"formulation": "paper"}"#,
+        ] {
+            assert!(read(wrong).is_err(), "{wrong} was read");
+        }
+    }
+
+    /// The array entry answers every push as `solve` does alone, in order, for every model,
+    /// with a column that varies and one that stays; NaN where `solve` has no number.
+    #[test]
+    fn columns_answer_each_push_as_solve_does() {
+        use crate::grid::GridParam;
+        // Out of order, with a weak push, a held start and a jam past the palm among them.
+        let mu = [0.3, 0.05, 0.9, 0.12, 0.4, 0.2, 1e-9, 0.6];
+        let force = [40.0, 2.0, 40.0, 40.0, 200.0, 40.0, 40.0, 5.0];
+        let base = SceneParams {
+            palm_length_mm: 80.0,
+            start_angle_deg: 80.0,
+            ..SceneParams::default()
+        };
+        let pushes = columns::Pushes {
+            base,
+            columns: vec![
+                (GridParam::named("mu").unwrap(), &mu[..]),
+                (GridParam::named("force_n").unwrap(), &force[..]),
+                (GridParam::named("radius_mm").unwrap(), &[12.5][..]),
+            ],
+        };
+        let fast = DynamicsParams {
+            integrator: crate::dynamics::IntegratorSettings {
+                method: crate::dynamics::Method::Nonsmooth,
+                ..DynamicsParams::default().integrator
+            },
+            ..DynamicsParams::default()
+        };
+        for spec in [
+            ModelSpec::Statics,
+            ModelSpec::MinNorm(MinNormSettings::default()),
+            ModelKind::Dynamics.with(&MinNormSettings::default(), &fast),
+        ] {
+            let n = mu.len();
+            let (mut st, mut th, mut x) = (vec![0; n], vec![0.0; n], vec![0.0; n]);
+            let out = columns::Answers {
+                status: &mut st,
+                theta_jam_deg: &mut th,
+                x_jam_mm: &mut x,
+            };
+            columns::solve_into(&spec, &pushes, out).unwrap();
+            let mut seen = std::collections::HashSet::new();
+            for i in 0..n {
+                let p = SceneParams {
+                    radius_mm: 12.5,
+                    force_n: force[i],
+                    ..base.with_mu(mu[i])
+                };
+                let one = solve(&spec, &p).unwrap();
+                seen.insert(one.status);
+                assert_eq!(JamStatus::ALL[st[i] as usize], one.status, "{spec:?} {i}");
+                for (got, want) in [(th[i], one.theta_jam_deg), (x[i], one.x_jam_mm)] {
+                    match want {
+                        // The min-norm column search lands within its bisection's tolerance.
+                        Some(w) => assert!((got - w).abs() <= 1e-6 * w.abs(), "{i}: {got} {w}"),
+                        None => assert!(got.is_nan(), "{i}: {got}"),
+                    }
+                }
+            }
+            if spec == ModelSpec::Statics {
+                assert!(seen.len() >= 4, "{seen:?}");
+            }
+        }
+    }
+
+    /// A column of another length than the rest, a palm-angle column, an answer buffer of the
+    /// wrong length and an invalid value are refused before anything is solved, naming them.
+    #[test]
+    fn columns_refuse_what_solve_would() {
+        use crate::grid::GridParam;
+        let mu = GridParam::named("mu").unwrap();
+        let run = |columns: Vec<(GridParam, &[f64])>, n: usize| {
+            let pushes = columns::Pushes {
+                base: SceneParams::default(),
+                columns,
+            };
+            let (mut st, mut th, mut x) = (vec![0; n], vec![0.0; n], vec![0.0; n]);
+            let out = columns::Answers {
+                status: &mut st,
+                theta_jam_deg: &mut th,
+                x_jam_mm: &mut x,
+            };
+            columns::solve_into(&ModelSpec::Statics, &pushes, out)
+                .unwrap_err()
+                .to_string()
+        };
+        let force = GridParam::named("force_n").unwrap();
+        let msg = run(vec![(mu, &[0.1, 0.2]), (force, &[1.0, 2.0, 3.0])], 3);
+        assert!(msg.contains("mu") && msg.contains("2 values"), "{msg}");
+        let msg = run(vec![(GridParam::ThetaDeg, &[10.0])], 1);
+        assert!(msg.contains("theta_deg"), "{msg}");
+        let msg = run(vec![(mu, &[0.1, 0.2])], 3);
+        assert!(msg.contains("answers"), "{msg}");
+        let msg = run(vec![(mu, &[0.1, -0.2])], 2);
+        assert!(msg.contains("mu") && msg.contains("-0.2"), "{msg}");
+    }
+
+    /// A solution's serde form is the port's one record: the shared keys, then the model's own
+    /// (each model's status once), then the wall time.
+    #[test]
+    fn a_solution_serialises_with_its_models_own_keys() {
+        let scene = SceneParams::default();
+        for kind in ModelKind::ALL {
+            let spec = kind.with(&MinNormSettings::default(), &DynamicsParams::default());
+            let s = solve(&spec, &scene).unwrap();
+            let doc = serde_json::to_value(&s).unwrap();
+            let keys: Vec<&str> = doc
+                .as_object()
+                .unwrap()
+                .keys()
+                .map(|k| k.as_str())
+                .collect();
+            assert_eq!(
+                keys[..4],
+                ["model", "status", "theta_jam_deg", "x_jam_mm"],
+                "{kind}"
+            );
+            assert_eq!(keys.last(), Some(&"elapsed_s"), "{kind}");
+            assert_eq!(doc["model"], kind.as_str());
+            assert_eq!(doc["status"], "jams");
+            assert_eq!(doc["x_jam_mm"].as_f64(), s.x_jam_mm);
+            let own = match kind {
+                ModelKind::Statics => "x_rigid_mm",
+                ModelKind::MinNorm => "contacts_at_jam",
+                ModelKind::Dynamics => "steps",
+            };
+            assert!(doc.get(own).is_some(), "{kind} lacks {own}: {doc}");
+        }
+        let lifted = SceneParams {
+            start_angle_deg: 120.0,
+            ..scene
+        };
+        let s = solve(&ModelSpec::Statics, &lifted).unwrap();
+        let doc = serde_json::to_value(&s).unwrap();
+        assert_eq!(doc["status"], "outside_model");
+        assert_eq!(doc["outside_model"]["reason"], "palm_lifts_disc");
+    }
 
     #[test]
     fn every_model_answers_the_paper_case_through_the_port() {

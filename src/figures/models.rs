@@ -9,6 +9,7 @@
 
 use crate::dynamics::DynamicsParams;
 use crate::dynamics::accuracy::{Study, StudySettings, run_study};
+use crate::dynamics::system::System;
 use crate::error::Result;
 use crate::grid::{self, GridParam, GridRequest, GridResult, JamPoint, ParamSet};
 use crate::minnorm::tolerance::{ToleranceRow, tolerance_study};
@@ -47,6 +48,28 @@ pub trait Models: Sync {
         self.solve(spec, p).map(|s| JamPoint::from(&s))
     }
 
+    /// A rigid disc touching the palm of scene `p`, turning at `d`'s omega, at each palm angle
+    /// of `theta_deg` (deg): its speed and position ([`System::geometric_speed`],
+    /// [`System::touching_x`]). A closed form of the scene's geometry, not a model run.
+    fn touching_disc(
+        &self,
+        p: &SceneParams,
+        d: &DynamicsParams,
+        theta_deg: &[f64],
+    ) -> Vec<TouchingDisc> {
+        let sys = System::new(p, d);
+        theta_deg
+            .iter()
+            .map(|t| {
+                let theta = t.to_radians();
+                TouchingDisc {
+                    speed_mm_s: sys.geometric_speed(theta),
+                    x_mm: sys.touching_x(theta),
+                }
+            })
+            .collect()
+    }
+
     /// The jam points of the min-norm model `spec` along a column of a map, in order
     /// ([`models::solve_column`]: each search starts from its neighbours' answers).
     fn min_norm_column(&self, spec: &ModelSpec, scenes: &[SceneParams]) -> Result<Vec<JamPoint>> {
@@ -55,10 +78,20 @@ pub trait Models: Sync {
     }
 }
 
+/// A rigid disc touching the turning palm ([`Models::touching_disc`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TouchingDisc {
+    /// Its speed in mm/s: omega (r + (r + h) cos theta) / sin^2 theta, which is
+    /// r omega / (2 sin^2(theta/2)) for h = 0.
+    pub speed_mm_s: f64,
+    /// Its position in mm: (r (1 + cos theta) + h) / sin theta, r cot(theta/2) for h = 0.
+    pub x_mm: f64,
+}
+
 /// The jam points of `spec` at `base` with `param` set to each of `values`, in order: the
 /// min-norm model as one line of scenes ([`Models::min_norm_column`]), every other model at
 /// each value in parallel ([`grid::at_values`]).
-pub(super) fn along(
+pub(crate) fn along(
     models: &dyn Models,
     spec: &ModelSpec,
     base: &SceneParams,
@@ -77,7 +110,7 @@ pub(super) fn along(
 /// The grid of `req` with the jam points of `spec`: the min-norm model a column at a time
 /// (each search starts from its neighbours' answers, about three programs a cell against 31
 /// for a bisection from the reach), every other model cell by cell.
-pub(super) fn evaluate(
+pub(crate) fn evaluate(
     models: &dyn Models,
     spec: &ModelSpec,
     req: &GridRequest,
