@@ -8,24 +8,19 @@
 //!
 //! Its read-off in the gallery page that `accuracy --out-dir` writes is of kind `points`
 //! ([`super::readoff`]): each panel's drawn points (median wall time, error) name their row of
-//! `accuracy.csv` ([`rows`]), so the page shows the row of the point nearest the pointer, cell
-//! for cell as the file has it.
+//! `accuracy.csv` ([`ErrorTimeData::rows`]), so the page shows the row of the point nearest
+//! the pointer, cell for cell as the file has it.
 
 use plotters::prelude::*;
-use serde::Serialize;
 
 use super::axes::{PlotFrame, record_frames};
 use super::print::Ink;
 use super::style::{self, LineKind, Marker};
 use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
 use super::{output, readoff, scene_subtitle_with};
-use crate::csv_out::{Dec, dec};
-use crate::dynamics::Method;
 use crate::error::{Error, Result};
+use crate::figures::error_time::{ErrorTimeData, ErrorTimeRow};
 use crate::models::ModelKind;
-use crate::scene::{JamStatus, SceneParams};
-use crate::study::ReferenceKind;
-use crate::study::accuracy::{AccuracyReport, AccuracyRow};
 
 /// The chart's title.
 pub const TITLE: &str =
@@ -46,21 +41,21 @@ const MARKERS: [Marker; 6] = [
 /// The y value of row `r` on the error panel (0) or the integration panel (1), where the
 /// figure draws it: the error panel holds the min-norm rows and the simulations, the
 /// integration panel the simulations; a zero or missing error is not drawn (log axes).
-fn drawn_y(panel: usize, r: &AccuracyRow) -> Option<f64> {
+fn drawn_y(panel: usize, r: &ErrorTimeRow) -> Option<f64> {
     let simulated = r.penetration_um.is_some() || r.method == "nonsmooth";
     let y = match panel {
         0 if simulated || r.method == "clarabel" || r.method == "exact" => r.x_rel_error,
         1 if simulated => r.integration_error_mm,
         _ => None,
     };
-    y.filter(|v| *v > 0.0)
+    y.map(|v| v.0).filter(|v| *v > 0.0)
 }
 
-/// The figure of `report` for `scene`.
-pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
-    let rows = &report.rows;
-    let time = |r: &AccuracyRow| r.median_time_s;
-    let pts = |f: &dyn Fn(&AccuracyRow) -> bool, panel: usize| {
+/// The figure of `data`.
+pub fn figure(data: &ErrorTimeData) -> Figure {
+    let rows = &data.rows;
+    let time = |r: &ErrorTimeRow| r.median_time_s.0;
+    let pts = |f: &dyn Fn(&ErrorTimeRow) -> bool, panel: usize| {
         rows.iter()
             .filter(|r| f(r))
             .filter_map(|r| drawn_y(panel, r).map(|v| (time(r), v)))
@@ -81,7 +76,7 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
     let mut int_curves = Vec::new();
     let mut keys: Vec<(&str, u64)> = Vec::new();
     for r in rows.iter().filter(|r| r.penetration_um.is_some()) {
-        let k = (r.method, r.penetration_um.unwrap_or(0.0).to_bits());
+        let k = (r.method, r.penetration_um.map_or(0.0, |p| p.0).to_bits());
         if !keys.contains(&k) {
             keys.push(k);
         }
@@ -105,8 +100,8 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
             "{method}, contact {:.1} um at F (rtol 1e-2 … 1e-8)",
             f64::from_bits(pen)
         );
-        let sel = move |r: &AccuracyRow| {
-            r.method == method && r.penetration_um.map(f64::to_bits) == Some(pen)
+        let sel = move |r: &ErrorTimeRow| {
+            r.method == method && r.penetration_um.map(|p| p.0.to_bits()) == Some(pen)
         };
         err_curves.push(Curve {
             label: label.clone(),
@@ -121,7 +116,7 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
     }
     let ns_label = "nonsmooth, rigid contacts (step 0.3 … 0.01 deg)".to_string();
     let ns_style = CurveStyle::LinePoints(LineKind::Dotted, Marker::Plus);
-    let ns = |r: &AccuracyRow| r.method == "nonsmooth";
+    let ns = |r: &ErrorTimeRow| r.method == "nonsmooth";
     err_curves.push(Curve {
         label: ns_label.clone(),
         style: ns_style,
@@ -155,7 +150,7 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
          and is not hash-checked; the counted-cost chart is the scene 'integration-error'."
             .to_string(),
     ];
-    for r in &report.references {
+    for r in &data.references {
         notes.push(format!(
             "reference {}: x_jam = {} mm",
             r.kind.as_str(),
@@ -165,21 +160,21 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
     if let Some(s) = rows.iter().find(|r| r.model == ModelKind::Statics) {
         notes.push(format!(
             "statics (the closed form, error 0 by definition): {:.1} us per answer",
-            s.median_time_s * 1e6
+            s.median_time_s.0 * 1e6
         ));
     }
     let missing: Vec<String> = rows
         .iter()
         .filter_map(|r| {
-            r.reason.as_ref().map(|w| {
+            r.reason.map(|tag| {
                 format!(
-                    "{} {}{}{}: {}",
+                    "{} {}{}{}: {tag}",
                     r.method,
-                    r.tolerance.map_or(String::new(), |t| format!("{t:.0e}")),
-                    r.step_deg.map_or(String::new(), |h| format!("{h} deg")),
+                    r.tolerance
+                        .map_or(String::new(), |t| format!("{:.0e}", t.0)),
+                    r.step_deg.map_or(String::new(), |h| format!("{} deg", h.0)),
                     r.penetration_um
-                        .map_or(String::new(), |p| format!(" {p:.1} um")),
-                    w.tag()
+                        .map_or(String::new(), |p| format!(" {:.1} um", p.0)),
                 )
             })
         })
@@ -198,7 +193,7 @@ pub fn figure(report: &AccuracyReport, scene: &SceneParams) -> Figure {
     }
     Figure {
         title: TITLE.into(),
-        subtitle: scene_subtitle_with("every model through the port", scene, &[]),
+        subtitle: scene_subtitle_with("every model through the port", &data.params, &[]),
         panels: vec![
             panel(
                 err_curves,
@@ -220,11 +215,11 @@ pub struct Drawn {
     pub read_off: String,
 }
 
-/// The chart as SVG and PNG, and its read-off from the PNG's frames (both pictures are one
-/// drawing at one size).
-pub fn render(report: &AccuracyReport, scene: &SceneParams) -> Result<Drawn> {
+/// The chart of `data` as SVG and PNG, and its read-off from the PNG's frames (both pictures
+/// are one drawing at one size).
+pub fn render(data: &ErrorTimeData) -> Result<Drawn> {
     style::init_fonts();
-    let fig = figure(report, scene);
+    let fig = figure(data);
     let (w, h) = SIZE;
     let err = |m: String| Error::Draw {
         scene: "accuracy (wall time)".into(),
@@ -236,19 +231,19 @@ pub fn render(report: &AccuracyReport, scene: &SceneParams) -> Result<Drawn> {
     Ok(Drawn {
         svg,
         png: png.map_err(err)?,
-        read_off: readoff::rounded(read_off(report, &fig, &frames)).to_string(),
+        read_off: readoff::rounded(read_off(data, &fig, &frames)).to_string(),
     })
 }
 
 /// The gallery's read-off ([`readoff`], kind `points`): in each panel the drawn point nearest
-/// the pointer, with its row of `accuracy.csv` ([`rows`]). Without a frame per panel (nothing
-/// drawn) the panels are empty and the page reads nothing.
-pub fn read_off(report: &AccuracyReport, fig: &Figure, frames: &[PlotFrame]) -> serde_json::Value {
+/// the pointer, with its row of `accuracy.csv`. Without a frame per panel (nothing drawn) the
+/// panels are empty and the page reads nothing.
+pub fn read_off(data: &ErrorTimeData, fig: &Figure, frames: &[PlotFrame]) -> serde_json::Value {
     let params = ["x_rel_error", "integration_error_mm"];
     let panels: Vec<_> = (fig.panels.iter().zip(frames).enumerate())
         .map(|(k, (p, f))| {
-            let points: Vec<_> = (report.rows.iter().enumerate())
-                .filter_map(|(i, r)| drawn_y(k, r).map(|y| (r.median_time_s, y, i)))
+            let points: Vec<_> = (data.rows.iter().enumerate())
+                .filter_map(|(i, r)| drawn_y(k, r).map(|y| (r.median_time_s.0, y, i)))
                 .collect();
             let x = readoff::axis("median_time_s", &p.x);
             readoff::points_panel(f, x, readoff::axis(params[k], &p.y), &points)
@@ -258,69 +253,8 @@ pub fn read_off(report: &AccuracyReport, fig: &Figure, frames: &[PlotFrame]) -> 
         "kind": "points",
         "crosshair": true,
         "panels": panels,
-        "rows": rows(report),
+        "rows": data.rows,
     })
-}
-
-/// One row of `accuracy.csv`: the typed row with its reason as a tag and a sentence.
-#[derive(Serialize)]
-pub struct CsvRow<'a> {
-    model: ModelKind,
-    method: &'a str,
-    tolerance: Option<Dec>,
-    penetration_um: Option<Dec>,
-    step_deg: Option<Dec>,
-    status: JamStatus,
-    theta_jam_deg: Option<Dec>,
-    x_jam_mm: Option<Dec>,
-    reference: ReferenceKind,
-    reference_status: JamStatus,
-    theta_ref_deg: Option<Dec>,
-    x_ref_mm: Option<Dec>,
-    x_error_mm: Option<Dec>,
-    x_rel_error: Option<Dec>,
-    theta_error_deg: Option<Dec>,
-    converged_by: Option<Method>,
-    x_converged_mm: Option<Dec>,
-    integration_error_mm: Option<Dec>,
-    median_time_s: Dec,
-    runs: usize,
-    steps: u64,
-    evaluations: u64,
-    reason: Option<&'static str>,
-    reason_detail: Option<String>,
-}
-
-/// The rows of `accuracy.csv`, one per row of `r`, in its order.
-pub fn rows(r: &AccuracyReport) -> Vec<CsvRow<'_>> {
-    (r.rows.iter())
-        .map(|x| CsvRow {
-            model: x.model,
-            method: x.method,
-            tolerance: dec(x.tolerance),
-            penetration_um: dec(x.penetration_um),
-            step_deg: dec(x.step_deg),
-            status: x.status,
-            theta_jam_deg: dec(x.theta_jam_deg),
-            x_jam_mm: dec(x.x_jam_mm),
-            reference: x.reference,
-            reference_status: x.reference_status,
-            theta_ref_deg: dec(x.theta_ref_deg),
-            x_ref_mm: dec(x.x_ref_mm),
-            x_error_mm: dec(x.x_error_mm),
-            x_rel_error: dec(x.x_rel_error),
-            theta_error_deg: dec(x.theta_error_deg),
-            converged_by: x.converged_by,
-            x_converged_mm: dec(x.x_converged_mm),
-            integration_error_mm: dec(x.integration_error_mm),
-            median_time_s: Dec(x.median_time_s),
-            runs: x.runs,
-            steps: x.steps,
-            evaluations: x.evaluations,
-            reason: x.reason.as_ref().map(|w| w.tag()),
-            reason_detail: x.reason.as_ref().map(|w| w.to_string()),
-        })
-        .collect()
 }
 
 fn draw_on<DB: DrawingBackend>(
@@ -334,6 +268,9 @@ fn draw_on<DB: DrawingBackend>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::{JamStatus, SceneParams};
+    use crate::study::ReferenceKind;
+    use crate::study::accuracy::{AccuracyReport, AccuracyRow};
 
     /// A row of `model` and `method` at `time_s` with errors `rel` and `integration_mm`.
     fn row(model: ModelKind, method: &'static str, pen: Option<f64>, at: [f64; 3]) -> AccuracyRow {
@@ -384,14 +321,15 @@ mod tests {
                 row(d, "nonsmooth", None, [3e-3, 3e-4, 1e-6]),
             ],
         };
-        let fig = figure(&report, &SceneParams::default());
+        let data = ErrorTimeData::of(&report, &SceneParams::default());
+        let fig = figure(&data);
         let frame = PlotFrame {
             left: 0.1,
             top: 0.1,
             right: 0.9,
             bottom: 0.4,
         };
-        let doc = read_off(&report, &fig, &[frame, frame]);
+        let doc = read_off(&data, &fig, &[frame, frame]);
         let rows = doc["rows"].as_array().unwrap();
         assert_eq!(rows.len(), report.rows.len());
         for (k, panel) in fig.panels.iter().enumerate() {

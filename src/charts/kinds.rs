@@ -307,7 +307,7 @@ chart_kinds! {
     /// A jam/slide map over a parameter and the palm angle (Fig. 3).
     JamMap("jam_map", "json", figure crate::figures::jam_map::JamMapSettings => jam_map::JamMap),
     /// theta_jam and x_jam against one parameter (Figs. 6, 7a, 7b).
-    Sweep("sweep", "csv", legacy sweep::SweepSpec => sweep::Sweep),
+    Sweep("sweep", "csv", figure crate::figures::sweep::SweepSettings => sweep::Sweep),
     /// theta_jam and x_jam / r over a friction and F / (m g): one chart for any part.
     Universal("universal", "json", figure crate::figures::universal::UniversalSettings => universal::Universal),
     /// Iso-lines of x_jam and theta_jam over two parameters (Fig. 7c).

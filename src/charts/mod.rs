@@ -65,7 +65,6 @@ pub(crate) mod stability;
 pub(crate) mod style;
 pub(crate) mod sweep;
 pub(crate) mod sweep_band;
-pub(crate) mod sweep_layers;
 mod tape;
 pub(crate) mod ticks;
 pub(crate) mod time_series;

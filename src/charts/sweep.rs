@@ -1,169 +1,24 @@
-//! Chart kind `sweep` (Figs. 6, 7a, 7b): x_jam and theta_jam against one scene parameter.
-//!
-//! Each layer contributes [`Series`] (a curve or a point set); each panel plots one quantity of
-//! every series. The layers live in [`super::sweep_layers`]: a new model's points (min-norm,
-//! simulation) are one more [`SweepLayer`] variant and one function there.
+//! Chart kind `sweep` (Figs. 6, 7a, 7b): x_jam and theta_jam against one scene parameter,
+//! drawn from [`SweepData`] ([`crate::figures::sweep`]): each panel plots one quantity of
+//! every series, a curve or a marker per point as its [`Curve`] says, under an uncertain
+//! input's shaded band.
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use serde::{Deserialize, Serialize};
 
 use super::axes::{self, DrawResult, Margins, PlotAxis, PlotFrame};
 use super::collide::{self, PxBox};
+use super::kinds::Picture;
 use super::legend::{self, LegendEntry, LegendGroup, Swatch};
 use super::readoff;
-use super::spec::Scene;
 use super::style::{self, LineKind, Marker};
-use super::sweep_band::{self, BandRow};
-use super::sweep_layers;
-use super::{DataFile, axis_label, scene_subtitle_with};
-use crate::csv_out::{Dec, dec, to_csv_with_header};
-use crate::error::{Error, Result};
-use crate::figures::models::Models;
-use crate::grid::{AxisScale, GridAxis, GridParam};
-use crate::scene::{JamStatus, SceneParams};
-
-pub use super::sweep_layers::SweepLayer;
-
-/// A quantity plotted in one panel of a sweep.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SweepPanel {
-    /// x_jam in mm.
-    XJamMm,
-    /// theta_jam in deg.
-    ThetaJamDeg,
-}
-
-impl SweepPanel {
-    fn label(self) -> &'static str {
-        match self {
-            SweepPanel::XJamMm => "disc position at the jam x_jam (mm)",
-            SweepPanel::ThetaJamDeg => "palm angle at the jam θ_jam (deg)",
-        }
-    }
-
-    /// The quantity's name in the data (`x_jam_mm`, `theta_jam_deg`).
-    fn key(self) -> &'static str {
-        match self {
-            SweepPanel::XJamMm => "x_jam_mm",
-            SweepPanel::ThetaJamDeg => "theta_jam_deg",
-        }
-    }
-
-    fn value(self, p: &SeriesPoint) -> Option<f64> {
-        match self {
-            SweepPanel::XJamMm => p.x_jam_mm,
-            SweepPanel::ThetaJamDeg => p.theta_jam_deg,
-        }
-    }
-}
-
-/// `[chart]` keys of `kind = "sweep"`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SweepSpec {
-    /// The swept parameter, its range, sample count (curves) and scale.
-    pub axis: GridAxis,
-    /// The panels, top to bottom (default: x_jam_mm then theta_jam_deg).
-    #[serde(default = "both_panels")]
-    pub panels: Vec<SweepPanel>,
-    /// The layers to draw (default: statics).
-    #[serde(default = "statics_only")]
-    pub layers: Vec<SweepLayer>,
-    /// Draw the read-off at the scene's own value of the swept parameter: the closed form's
-    /// x_jam and theta_jam there, with lines to the axes and the values printed (default:
-    /// false; `--set chart.read_off=true --set mu=0.27`).
-    #[serde(default)]
-    pub read_off: bool,
-    /// The band of an uncertain input (`sweep ... --mu 0.12:0.3`, or a range in a sweep
-    /// scene's `[scene]` or `--set`): the closed form at the box's two extreme corners, drawn
-    /// as two edges with the band shaded between them and written as one CSV row of layer
-    /// `band` per swept value ([`super::sweep_band`]) (default: none; the built-in scenes
-    /// have none).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub band: Option<crate::figures::band::Band>,
-}
-
-/// The ten columns a band adds to a sweep's CSV ([`Sweep::band_data`]).
-const BAND_COLUMNS: [&str; 10] = [
-    "earliest_status",
-    "earliest_x_jam_mm",
-    "earliest_theta_jam_deg",
-    "latest_status",
-    "latest_x_jam_mm",
-    "latest_theta_jam_deg",
-    "band_x_jam_lo_mm",
-    "band_x_jam_hi_mm",
-    "band_theta_jam_lo_deg",
-    "band_theta_jam_hi_deg",
-];
-
-fn both_panels() -> Vec<SweepPanel> {
-    vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg]
-}
-
-fn statics_only() -> Vec<SweepLayer> {
-    vec![SweepLayer::Statics]
-}
-
-impl super::kinds::Kind for SweepSpec {
-    type Chart = Sweep;
-
-    fn param_axes(&self) -> Vec<(&'static str, crate::grid::GridAxis)> {
-        vec![("axis", self.axis)]
-    }
-
-    /// With the read-off, the chart marks the scene's value of the swept parameter.
-    fn marks_scene_value(&self) -> bool {
-        self.read_off
-    }
-
-    fn enable_read_off(&mut self) -> bool {
-        self.read_off = true;
-        true
-    }
-
-    /// Checks the axis, panels and layers against the scene.
-    fn validate(&self, scene: &Scene) -> Result<()> {
-        let base = &scene.params;
-        self.axis.validate("chart.axis")?;
-        if self.axis.param == GridParam::ThetaDeg {
-            return Err(Error::invalid(
-                "chart.axis.param",
-                "theta_deg",
-                "a sweep varies a scene parameter",
-            ));
-        }
-        for v in [self.axis.min, self.axis.max] {
-            self.axis.param.apply(*base, v).validate()?;
-        }
-        if self.panels.is_empty() || self.panels.len() > 3 {
-            return Err(Error::invalid(
-                "chart.panels",
-                self.panels.len(),
-                "a sweep has 1 to 3 panels",
-            ));
-        }
-        for l in &self.layers {
-            sweep_layers::validate(*l, self)?;
-        }
-        Ok(())
-    }
-
-    fn check_size(&self, _scene: &Scene) -> Result<()> {
-        crate::limits::check_items(
-            "chart.axis.count",
-            self.axis.count as f64,
-            crate::limits::SWEEP_POINT,
-        )
-    }
-
-    fn compute(&self, scene: &Scene, models: &dyn crate::figures::models::Models) -> Result<Sweep> {
-        Sweep::compute(scene, self, models)
-    }
-}
+use super::sweep_band;
+use super::{axis_label, scene_subtitle_with};
+use crate::figures::sweep::{Curve, Series, SweepData, SweepPanel, SweepSettings};
+use crate::figures::sweep_layers::SweepLayer;
+use crate::grid::{AxisScale, GridParam};
+use crate::scene::JamStatus;
 
 /// How a series is drawn.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -174,59 +29,152 @@ pub enum SeriesStyle {
     Points(Marker),
 }
 
-/// One point of a series: the swept value and the quantities (None where not given).
-#[derive(Debug, Clone, PartialEq)]
-pub struct SeriesPoint {
-    /// The swept parameter's value.
-    pub at: f64,
-    /// x_jam in mm.
-    pub x_jam_mm: Option<f64>,
-    /// theta_jam in deg.
-    pub theta_jam_deg: Option<f64>,
-    /// The model's verdict at the point (None for a limit or a printed number).
-    pub status: Option<JamStatus>,
-}
-
-/// A curve or point set of one layer.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Series {
-    /// The layer's name in the data file, e.g. `statics`.
-    pub layer: &'static str,
-    /// Legend text.
-    pub label: String,
-    /// Line or marker.
-    pub style: SeriesStyle,
-    /// The points, in order of the swept value.
-    pub points: Vec<SeriesPoint>,
-    /// Names of a curve's value in the x_jam and theta_jam panels, written with the value at
-    /// the curve's right end where the curve is flat in that panel (thresholds, constants).
-    pub flat_names: Option<[&'static str; 2]>,
-    /// A note drawn beside the first point of a point set (e.g. what is wrong with it).
-    pub callout: Option<String>,
-}
-
-impl Series {
-    /// The series' legend entry: its line or marker and its label.
-    fn legend_entry(&self) -> LegendEntry {
-        let sw = match self.style {
-            SeriesStyle::Line(k) => Swatch::Line(k),
-            SeriesStyle::Points(m) => Swatch::Marker(m),
-        };
-        LegendEntry::new(sw, self.label.clone())
+impl SeriesStyle {
+    /// The line or marker of curve `c`.
+    fn of(c: Curve) -> Self {
+        use SeriesStyle::{Line, Points};
+        match c {
+            Curve::Statics => Line(LineKind::Solid),
+            Curve::Rigid => Line(LineKind::Dashed),
+            Curve::BandEarliest => Line(LineKind::BandEarliest),
+            Curve::BandLatest => Line(LineKind::BandLatest),
+            Curve::PaperTable1ForceAnalysis => Points(Marker::Circle),
+            Curve::PaperTable1MinNorm => Points(Marker::Triangle),
+            Curve::PaperTable1Erratum => Points(Marker::Cross),
+            Curve::PaperAdams => Points(Marker::Square),
+            Curve::MinNorm => Points(Marker::OpenSquare),
+            Curve::MinNormRolling => Points(Marker::Plus),
+            Curve::SimulationMotion => Points(Marker::Diamond),
+            Curve::SimulationForce => Points(Marker::OpenDiamond),
+        }
     }
 }
 
-/// The computed sweep.
+/// A panel's quantity, as its axis is labelled.
+fn panel_label(panel: SweepPanel) -> &'static str {
+    match panel {
+        SweepPanel::XJamMm => "disc position at the jam x_jam (mm)",
+        SweepPanel::ThetaJamDeg => "palm angle at the jam θ_jam (deg)",
+    }
+}
+
+/// A sweep ready to draw.
 #[derive(Debug, Clone)]
 pub struct Sweep {
-    spec: SweepSpec,
-    params: SceneParams,
+    data: SweepData,
     title: String,
-    series: Vec<Series>,
-    /// The closed form at the scene's own value of the swept parameter, when read off.
-    read_off: Option<(f64, JamStatus, SeriesPoint)>,
-    /// The shaded band of an uncertain input, one row per swept value (empty without one).
-    band: Vec<BandRow>,
+}
+
+impl Picture for Sweep {
+    type Settings = SweepSettings;
+
+    fn new(data: SweepData, title: &str) -> Self {
+        Sweep {
+            data,
+            title: title.to_string(),
+        }
+    }
+
+    fn data(&self) -> &SweepData {
+        &self.data
+    }
+
+    /// One plotting area of `frames` per panel with its quantity, the x axis, and every
+    /// series' points.
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+        if frames.len() != self.data.settings.panels.len() {
+            return None;
+        }
+        let a = &self.data.settings.axis;
+        let x = PlotAxis::new(a.min, a.max, a.scale, axis_label(a.param));
+        let panels: Vec<_> = self
+            .data
+            .settings
+            .panels
+            .iter()
+            .zip(frames)
+            .map(|(panel, frame)| {
+                let y = readoff::axis(panel.key(), &self.panel_axis(*panel));
+                readoff::panel(frame, y, Some(panel.key()))
+            })
+            .collect();
+        let series: Vec<_> = self
+            .data
+            .series
+            .iter()
+            .map(|s| {
+                serde_json::json!({
+                    "label": s.label,
+                    "layer": s.curve.name(),
+                    "line": s.curve.is_line(),
+                    "at": readoff::column(s.points.iter().map(|p| p.at)),
+                    "x_jam_mm": readoff::column(s.points.iter().map(|p| p.x_jam_mm)),
+                    "theta_jam_deg": readoff::column(s.points.iter().map(|p| p.theta_jam_deg)),
+                })
+            })
+            .collect();
+        Some(serde_json::json!({
+            "kind": "sweep",
+            "x": readoff::axis(a.param.as_str(), &x),
+            "panels": panels,
+            "series": series,
+        }))
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
+        let h = root.dim_in_pixel().1 as i32;
+        let entries = self.legend();
+        let groups = self.legend_groups();
+        let rows = match &groups {
+            Some(g) => legend::grouped_rows_needed(root, g)?,
+            None => legend::rows_needed(root, &entries)?,
+        };
+        let legend_top = h - 12 - rows * legend::ROW_PX;
+        let a = &self.data.settings.axis;
+        let x = PlotAxis::new(a.min, a.max, a.scale, axis_label(a.param));
+        let (top, gap, n) = (72, 78, self.data.settings.panels.len() as i32);
+        let panel_h = (legend_top - 70 - top - gap * (n - 1)) / n;
+        for (i, panel) in self.data.settings.panels.iter().enumerate() {
+            let y = self.panel_axis(*panel);
+            let t = top + i as i32 * (panel_h + gap);
+            let m = Margins {
+                top: t as u32,
+                bottom: (h - t - panel_h) as u32,
+                left: 95,
+                right: 40,
+            };
+            let chart = axes::build_chart(root, &x, &y, m)?;
+            // Under the grid and every curve: the band is the background the curves are read on.
+            sweep_band::draw(&chart, &self.data.band, *panel, (&x, &y))?;
+            axes::draw_grid(&chart, &x, &y)?;
+            let area = chart.plotting_area();
+            for s in &self.data.series {
+                let pts: Vec<(f64, f64)> = s
+                    .points
+                    .iter()
+                    .filter_map(|p| panel.value(p).map(|v| (x.to_plot(p.at), y.to_plot(v))))
+                    .collect();
+                match SeriesStyle::of(s.curve) {
+                    SeriesStyle::Line(k) => style::draw_line(area, &pts, k, k.color())?,
+                    SeriesStyle::Points(mk) => {
+                        for p in pts {
+                            style::draw_marker(area, mk, p)?;
+                        }
+                    }
+                }
+                self.annotate(root, &chart, (&x, &y), *panel, s)?;
+            }
+            self.draw_palm_end(root, &chart, (&x, &y), *panel)?;
+            self.draw_read_off(root, &chart, (&x, &y), *panel)?;
+            axes::draw_frame(root, &chart, &x, &y)?;
+        }
+        let sub = scene_subtitle_with(self.source(), &self.data.params, &[a.param]);
+        axes::draw_header(root, &self.title, &sub)?;
+        match &groups {
+            Some(g) => legend::draw_grouped_legend(root, g, legend_top),
+            None => legend::draw_legend(root, &entries, legend_top),
+        }
+    }
 }
 
 impl Sweep {
@@ -241,10 +189,10 @@ impl Sweep {
         (x, y): (&PlotAxis, &PlotAxis),
         panel: SweepPanel,
     ) -> DrawResult<DB> {
-        let l = self.params.palm_length_mm;
+        let l = self.data.params.palm_length_mm;
         let shown = panel == SweepPanel::XJamMm
-            && self.params.palm_offset_mm == 0.0
-            && self.spec.axis.param != GridParam::PalmLengthMm
+            && self.data.params.palm_offset_mm == 0.0
+            && self.data.settings.axis.param != GridParam::PalmLengthMm
             && (y.min..=y.max).contains(&l);
         if !shown {
             return Ok(());
@@ -271,9 +219,10 @@ impl Sweep {
         (x, y): (&PlotAxis, &PlotAxis),
         panel: SweepPanel,
     ) -> DrawResult<DB> {
-        let Some((v, _, p)) = &self.read_off else {
+        let Some(p) = &self.data.read_off else {
             return Ok(());
         };
+        let v = &p.at;
         let Some(q) = panel.value(p) else {
             return Ok(());
         };
@@ -288,6 +237,7 @@ impl Sweep {
         root.draw(&Circle::new(corner, 5, style::INK.filled()))?;
         // Every curve of the panel: the step numbers and the value's box cover none.
         let mut lines: Vec<Vec<(i32, i32)>> = self
+            .data
             .series
             .iter()
             .map(|c| {
@@ -326,7 +276,7 @@ impl Sweep {
 
     /// The models behind the drawn layers, for the subtitle.
     fn source(&self) -> &'static str {
-        let has = |f: fn(&SweepLayer) -> bool| self.spec.layers.iter().any(f);
+        let has = |f: fn(&SweepLayer) -> bool| self.data.settings.layers.iter().any(f);
         let min_norm = has(|l| matches!(l, SweepLayer::MinNorm | SweepLayer::MinNormRolling));
         let sim = has(|l| {
             matches!(
@@ -342,190 +292,9 @@ impl Sweep {
         }
     }
 
-    /// Computes the series of every layer.
-    pub fn compute(scene: &Scene, spec: &SweepSpec, models: &dyn Models) -> Result<Self> {
-        let mut series = Vec::new();
-        for l in &spec.layers {
-            series.extend(sweep_layers::series(*l, spec, scene, models)?);
-        }
-        let mut rows = Vec::new();
-        if let Some(band) = &spec.band {
-            let [earliest, latest] = sweep_layers::band(spec, scene, band)?;
-            rows = sweep_band::rows(
-                spec.axis.param,
-                &band.latest,
-                &earliest.points,
-                &latest.points,
-            );
-            series.extend([earliest, latest]);
-        }
-        let read_off = match (spec.read_off, spec.axis.param.get(&scene.params)) {
-            (true, Some(v)) => {
-                let s = crate::models::solve(&crate::models::ModelSpec::Statics, &scene.params)?;
-                let p = SeriesPoint {
-                    at: v,
-                    x_jam_mm: s.x_jam_mm.filter(|_| s.status == JamStatus::Jams),
-                    theta_jam_deg: s.theta_jam_deg.filter(|_| s.status == JamStatus::Jams),
-                    status: Some(s.status),
-                };
-                Some((v, s.status, p))
-            }
-            _ => None,
-        };
-        Ok(Sweep {
-            spec: spec.clone(),
-            params: scene.params,
-            title: scene.title.clone(),
-            series,
-            read_off,
-            band: rows,
-        })
-    }
-
-    /// The data behind the chart: one CSV row per point of every series; with a band, its
-    /// edges as one row of layer `band` per swept value instead ([`Self::band_data`]).
-    pub fn data_file(&self, _scene: &Scene) -> DataFile {
-        if !self.band.is_empty() {
-            return self.band_data();
-        }
-        let header = self.header();
-        // The read-off, when asked for, as one more row of layer `read_off`.
-        let read_off = self.read_off.iter().map(|(_, _, p)| ("read_off", p));
-        let rows = self
-            .series
-            .iter()
-            .flat_map(|ser| ser.points.iter().map(|p| (ser.layer, p)))
-            .chain(read_off)
-            .map(|(layer, p)| {
-                let status = p.status.map_or("", JamStatus::as_str);
-                (
-                    layer,
-                    Dec(p.at),
-                    status,
-                    dec(p.x_jam_mm),
-                    dec(p.theta_jam_deg),
-                )
-            });
-        DataFile::csv(to_csv_with_header(&header, rows))
-    }
-
-    /// The columns of every sweep's CSV.
-    fn header(&self) -> [&'static str; 5] {
-        [
-            "layer",
-            self.spec.axis.param.as_str(),
-            "status",
-            "x_jam_mm",
-            "theta_jam_deg",
-        ]
-    }
-
-    /// The CSV of a sweep with a band: the other layers' rows as without one, then one row of
-    /// layer `band` per swept value with each corner's status, x_jam and theta_jam and the
-    /// shaded interval (empty where nothing is shaded), in ten more columns. The columns the
-    /// band rows leave empty are the other layers' (and the other way round).
-    fn band_data(&self) -> DataFile {
-        let mut header = self.header().to_vec();
-        header.extend(BAND_COLUMNS);
-        let status = |p: &SeriesPoint| p.status.map_or("", JamStatus::as_str);
-        let ends = |i: Option<(f64, f64)>| (dec(i.map(|i| i.0)), dec(i.map(|i| i.1)));
-        let layers = self
-            .series
-            .iter()
-            .filter(|s| !s.layer.starts_with("band_"))
-            .flat_map(|ser| ser.points.iter().map(|p| (ser.layer, p)))
-            .chain(self.read_off.iter().map(|(_, _, p)| ("read_off", p)))
-            .map(|(layer, p)| {
-                let (x, t) = (dec(p.x_jam_mm), dec(p.theta_jam_deg));
-                let n = None;
-                (
-                    layer,
-                    Dec(p.at),
-                    status(p),
-                    x,
-                    t,
-                    "",
-                    n,
-                    n,
-                    "",
-                    n,
-                    n,
-                    n,
-                    n,
-                    n,
-                    n,
-                )
-            });
-        let band = self.band.iter().map(|r| {
-            let (e, l) = (&r.earliest, &r.latest);
-            let ((x0, x1), (t0, t1)) = (ends(r.x_jam_mm), ends(r.theta_jam_deg));
-            let (ex, et) = (dec(e.x_jam_mm), dec(e.theta_jam_deg));
-            let (lx, lt) = (dec(l.x_jam_mm), dec(l.theta_jam_deg));
-            let n = None;
-            let (es, ls) = (status(e), status(l));
-            (
-                "band",
-                Dec(r.at),
-                "",
-                n,
-                n,
-                es,
-                ex,
-                et,
-                ls,
-                lx,
-                lt,
-                x0,
-                x1,
-                t0,
-                t1,
-            )
-        });
-        DataFile::csv(to_csv_with_header(&header, layers.chain(band)))
-    }
-
-    /// What the gallery's read-off needs (see [`super::readoff`]): one plotting area of
-    /// `frames` per panel with its quantity, the x axis, and every series' points.
-    pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
-        if frames.len() != self.spec.panels.len() {
-            return None;
-        }
-        let a = &self.spec.axis;
-        let x = PlotAxis::new(a.min, a.max, a.scale, axis_label(a.param));
-        let panels: Vec<_> = self
-            .spec
-            .panels
-            .iter()
-            .zip(frames)
-            .map(|(panel, frame)| {
-                let y = readoff::axis(panel.key(), &self.panel_axis(*panel));
-                readoff::panel(frame, y, Some(panel.key()))
-            })
-            .collect();
-        let series: Vec<_> = self
-            .series
-            .iter()
-            .map(|s| {
-                serde_json::json!({
-                    "label": s.label,
-                    "layer": s.layer,
-                    "line": matches!(s.style, SeriesStyle::Line(_)),
-                    "at": readoff::column(s.points.iter().map(|p| p.at)),
-                    "x_jam_mm": readoff::column(s.points.iter().map(|p| p.x_jam_mm)),
-                    "theta_jam_deg": readoff::column(s.points.iter().map(|p| p.theta_jam_deg)),
-                })
-            })
-            .collect();
-        Some(serde_json::json!({
-            "kind": "sweep",
-            "x": readoff::axis(a.param.as_str(), &x),
-            "panels": panels,
-            "series": series,
-        }))
-    }
-
     pub(super) fn legend(&self) -> Vec<LegendEntry> {
         let mut e: Vec<LegendEntry> = self
+            .data
             .series
             .iter()
             .filter(|s| self.drawn(s))
@@ -541,7 +310,8 @@ impl Sweep {
     /// entry, with no line anywhere).
     fn drawn(&self, s: &Series) -> bool {
         s.points.iter().any(|p| {
-            self.spec
+            self.data
+                .settings
                 .panels
                 .iter()
                 .any(|panel| panel.value(p).is_some())
@@ -550,15 +320,16 @@ impl Sweep {
 
     /// The shaded band's legend entry, if anything is shaded.
     fn band_entry(&self) -> Option<LegendEntry> {
-        let label = &self.spec.band.as_ref()?.label;
-        sweep_band::legend_entry(&self.band, label)
+        let label = &self.data.settings.band.as_ref()?.label;
+        sweep_band::legend_entry(&self.data.band, label)
     }
 
     /// The read-off's legend entry when it is drawn (a legend never names a line that is not
     /// drawn: off the axis, or no jam there).
     fn read_off_entry(&self) -> Option<LegendEntry> {
-        let (v, _, p) = self.read_off.as_ref()?;
-        let a = &self.spec.axis;
+        let p = self.data.read_off.as_ref()?;
+        let v = &p.at;
+        let a = &self.data.settings.axis;
         if !(a.min..=a.max).contains(v) || p.x_jam_mm.is_none() {
             return None;
         }
@@ -574,7 +345,11 @@ impl Sweep {
     /// A series' legend entry, saying where a curve has no jam and why (a curve that just
     /// stops would read as "no data"): "no jam for μ < 0.148: beyond_reach".
     fn legend_entry(&self, s: &Series) -> LegendEntry {
-        let mut e = s.legend_entry();
+        let sw = match SeriesStyle::of(s.curve) {
+            SeriesStyle::Line(k) => Swatch::Line(k),
+            SeriesStyle::Points(m) => Swatch::Marker(m),
+        };
+        let mut e = LegendEntry::new(sw, s.label.clone());
         if let Some(gaps) = self.gaps(s) {
             e.label = format!("{}; {gaps}", e.label);
         }
@@ -583,10 +358,10 @@ impl Sweep {
 
     /// The runs of points of a curve whose verdict is not `jams`, as text, or None.
     fn gaps(&self, s: &Series) -> Option<String> {
-        if !matches!(s.style, SeriesStyle::Line(_)) {
+        if !s.curve.is_line() {
             return None;
         }
-        let param = self.spec.axis.param;
+        let param = self.data.settings.axis.param;
         let fmt = |v: f64| style::fmt_num(v, 3);
         let mut runs: Vec<(JamStatus, f64, f64)> = Vec::new();
         let mut prev = None;
@@ -610,7 +385,7 @@ impl Sweep {
                 let why = match st {
                     JamStatus::BeyondReach => format!(
                         "past the palm's end (L = {} mm)",
-                        self.params.palm_length_mm
+                        self.data.params.palm_length_mm
                     ),
                     other => other.as_str().replace('_', " "),
                 };
@@ -634,10 +409,8 @@ impl Sweep {
     /// The legend in two groups when the paper's numbers are drawn beside the models: the
     /// paper's (layers `paper_*`) and the tool's; None with one group (a plain legend).
     fn legend_groups(&self) -> Option<Vec<LegendGroup>> {
-        let (paper, ours): (Vec<&Series>, Vec<&Series>) = self
-            .series
-            .iter()
-            .partition(|s| s.layer.starts_with("paper_"));
+        let (paper, ours): (Vec<&Series>, Vec<&Series>) =
+            self.data.series.iter().partition(|s| s.curve.is_paper());
         if paper.is_empty() || ours.is_empty() {
             return None;
         }
@@ -658,8 +431,9 @@ impl Sweep {
     /// The panel's y axis over every series' values and the shaded band (which may run to the
     /// palm's end, beyond every curve).
     fn panel_axis(&self, panel: SweepPanel) -> PlotAxis {
-        let shaded = self.band.iter().filter_map(|r| r.interval(panel));
+        let shaded = self.data.band.iter().filter_map(|r| r.interval(panel));
         let vals: Vec<f64> = self
+            .data
             .series
             .iter()
             .flat_map(|s| s.points.iter().filter_map(|p| panel.value(p)))
@@ -674,63 +448,7 @@ impl Sweep {
         };
         // 8 % headroom, and at least +-1 unit so that a constant quantity still gets an axis.
         let pad = (0.08 * (hi - lo)).max(1.0);
-        PlotAxis::new(lo - pad, hi + pad, AxisScale::Linear, panel.label())
-    }
-
-    /// Draws the panels on `root`.
-    pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
-        let h = root.dim_in_pixel().1 as i32;
-        let entries = self.legend();
-        let groups = self.legend_groups();
-        let rows = match &groups {
-            Some(g) => legend::grouped_rows_needed(root, g)?,
-            None => legend::rows_needed(root, &entries)?,
-        };
-        let legend_top = h - 12 - rows * legend::ROW_PX;
-        let a = &self.spec.axis;
-        let x = PlotAxis::new(a.min, a.max, a.scale, axis_label(a.param));
-        let (top, gap, n) = (72, 78, self.spec.panels.len() as i32);
-        let panel_h = (legend_top - 70 - top - gap * (n - 1)) / n;
-        for (i, panel) in self.spec.panels.iter().enumerate() {
-            let y = self.panel_axis(*panel);
-            let t = top + i as i32 * (panel_h + gap);
-            let m = Margins {
-                top: t as u32,
-                bottom: (h - t - panel_h) as u32,
-                left: 95,
-                right: 40,
-            };
-            let chart = axes::build_chart(root, &x, &y, m)?;
-            // Under the grid and every curve: the band is the background the curves are read on.
-            sweep_band::draw(&chart, &self.band, *panel, (&x, &y))?;
-            axes::draw_grid(&chart, &x, &y)?;
-            let area = chart.plotting_area();
-            for s in &self.series {
-                let pts: Vec<(f64, f64)> = s
-                    .points
-                    .iter()
-                    .filter_map(|p| panel.value(p).map(|v| (x.to_plot(p.at), y.to_plot(v))))
-                    .collect();
-                match s.style {
-                    SeriesStyle::Line(k) => style::draw_line(area, &pts, k, k.color())?,
-                    SeriesStyle::Points(mk) => {
-                        for p in pts {
-                            style::draw_marker(area, mk, p)?;
-                        }
-                    }
-                }
-                self.annotate(root, &chart, (&x, &y), *panel, s)?;
-            }
-            self.draw_palm_end(root, &chart, (&x, &y), *panel)?;
-            self.draw_read_off(root, &chart, (&x, &y), *panel)?;
-            axes::draw_frame(root, &chart, &x, &y)?;
-        }
-        let sub = scene_subtitle_with(self.source(), &self.params, &[a.param]);
-        axes::draw_header(root, &self.title, &sub)?;
-        match &groups {
-            Some(g) => legend::draw_grouped_legend(root, g, legend_top),
-            None => legend::draw_legend(root, &entries, legend_top),
-        }
+        PlotAxis::new(lo - pad, hi + pad, AxisScale::Linear, panel_label(panel))
     }
 }
 
@@ -768,7 +486,7 @@ impl Sweep {
                 let text = format!("{name} = {}{unit}", style::fmt_num(v1, 2));
                 // On the side of the line where fewer other points lie, so the box hides none.
                 let (mut above, mut below) = (0, 0);
-                for other in self.series.iter().filter(|o| !std::ptr::eq(*o, s)) {
+                for other in self.data.series.iter().filter(|o| !std::ptr::eq(*o, s)) {
                     for v in other.points.iter().filter_map(|p| panel.value(p)) {
                         if v > v1 { above += 1 } else { below += 1 }
                     }

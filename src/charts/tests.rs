@@ -6,6 +6,7 @@ use crate::dynamics::DynamicsParams;
 use crate::dynamics::accuracy::{Study, StudySettings};
 use crate::figures::jam_map::JamMapLayer;
 use crate::figures::models::{Live, Models};
+use crate::figures::sweep_layers::{self, SweepLayer};
 use crate::minnorm::tolerance::ToleranceRow;
 use crate::minnorm::{ContactSolution, MinNormSettings};
 use crate::models::{ModelKind, ModelSpec, Solution};
@@ -327,7 +328,7 @@ fn rolling_points_lie_on_the_rigid_limit() {
         panic!("fig6 is a sweep")
     };
     let series =
-        sweep_layers::series(sweep::SweepLayer::MinNormRolling, spec, &scene, &Live).unwrap();
+        sweep_layers::series(SweepLayer::MinNormRolling, spec, &scene.input(), &Live).unwrap();
     let mut worst: f64 = 0.0;
     for p in &series[0].points {
         let s = crate::statics::solve(&scene.params.with_mu(p.at));
@@ -380,23 +381,27 @@ fn a_sweep_layer_that_failed_at_some_points_names_them() {
     let ChartSpec::Sweep(spec) = &scene.chart else {
         panic!("fig6 is a sweep")
     };
-    use sweep::SweepLayer::{SimulationForce, SimulationMotion};
+    use SweepLayer::{SimulationForce, SimulationMotion};
     let failing = Counting {
         fail_dynamics_below_mu: Some(0.2),
         ..Counting::default()
     };
     for layer in [SimulationMotion, SimulationForce] {
-        let s = &sweep_layers::series(layer, spec, &scene, &failing).unwrap()[0];
+        let s = &sweep_layers::series(layer, spec, &scene.input(), &failing).unwrap()[0];
         let note = s.callout.as_deref().unwrap_or_default();
         assert!(
             note.contains("no answer at μ = 0.175 ("),
             "{}: {note}",
-            s.layer
+            s.curve.name()
         );
-        assert!(s.points.iter().any(|p| p.x_jam_mm.is_some()), "{}", s.layer);
+        assert!(
+            s.points.iter().any(|p| p.x_jam_mm.is_some()),
+            "{}",
+            s.curve.name()
+        );
     }
     // Where the model answers everywhere there is no note.
-    let s = &sweep_layers::series(SimulationMotion, spec, &scene, &Live).unwrap()[0];
+    let s = &sweep_layers::series(SimulationMotion, spec, &scene.input(), &Live).unwrap()[0];
     assert_eq!(s.callout, None);
 }
 

@@ -213,7 +213,8 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
         + "\n";
     if let Some(dir) = a.out_dir.as_deref() {
         let map_csv = map.as_ref().map(map_csv).transpose()?.unwrap_or_default();
-        let drawn = crate::charts::error_time::render(&report, &config.scene)?;
+        let data = crate::figures::error_time::ErrorTimeData::of(&report, &config.scene);
+        let drawn = crate::charts::error_time::render(&data)?;
         // Without the map (--map-cells 0) its file is not written.
         let keep = |p: &Path| map.is_some() || !p.ends_with("accuracy_map.csv");
         let files: Vec<String> = OUT_FILES
@@ -482,7 +483,7 @@ fn floors(r: &AccuracyReport) -> String {
 }
 
 fn csv_rows(r: &AccuracyReport) -> Result<String> {
-    to_csv(crate::charts::error_time::rows(r).into_iter())
+    to_csv(crate::figures::error_time::rows(r).into_iter())
 }
 
 /// One row of the map's CSV: the typed row with plain decimals.

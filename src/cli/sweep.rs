@@ -9,11 +9,11 @@ use serde::Deserialize;
 use super::args::{SceneArgs, parse_f64};
 use super::render::{RenderFormat, output_paths, write_rendered};
 use crate::charts::spec::Size;
-use crate::charts::sweep::{SweepPanel, SweepSpec};
-use crate::charts::sweep_layers::SweepLayer;
 use crate::charts::{self, ChartSpec, Scene, axis_label};
 use crate::error::{Error, Result};
 use crate::figures::contour_map::ContourMapSettings;
+use crate::figures::sweep::{SweepPanel, SweepSettings};
+use crate::figures::sweep_layers::SweepLayer;
 
 use crate::grid::{AxisScale, GridAxis, GridParam};
 use crate::models::ModelKind;
@@ -171,7 +171,7 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
     let (chart, default_name, title) = match a.axes.as_slice() {
         [x] => {
             let axis = x.axis(201);
-            let chart = ChartSpec::Sweep(SweepSpec {
+            let chart = ChartSpec::Sweep(SweepSettings {
                 axis,
                 panels: vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg],
                 layers: vec![SweepLayer::Statics, SweepLayer::Rigid],

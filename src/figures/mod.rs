@@ -7,19 +7,22 @@
 //! any other front end can take it as it is, without a picture.
 //!
 //! Kinds, one module each: [`jam_map`] (Fig. 3), [`convergence`] (Fig. 4), [`time_series`]
-//! (Fig. 5), [`contour_map`] (Fig. 7c), [`universal`] (one chart for any part),
+//! (Fig. 5), [`sweep`] (Figs. 6, 7a, 7b, with [`sweep_layers`] and [`band`]), [`contour_map`] (Fig. 7c), [`universal`] (one chart for any part),
 //! [`work_precision`] (the accuracy study), [`stability`] (the stability matrix);
 //! [`vlocator_capacity`], [`vlocator_optimum`] and [`vlocator_robust`] (V-type locators,
-//! [`crate::locator`]).
+//! [`crate::locator`]); [`error_time`] is `jamchart accuracy`'s measured study, not a scene.
 
 pub mod band;
 pub(crate) mod cells;
 pub mod contour_map;
 pub mod contours;
 pub mod convergence;
+pub mod error_time;
 pub mod jam_map;
 pub(crate) mod models;
 pub mod stability;
+pub mod sweep;
+pub mod sweep_layers;
 pub mod time_series;
 pub mod universal;
 pub mod vlocator_capacity;

@@ -4,7 +4,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::cells::{CellsTable, HasCells};
+use super::cells::{self, CellsTable, HasCells};
 use super::{DataFormat, Figure, FigureData, Input, Models};
 use crate::csv_out::Column;
 use crate::error::{Error, Result};
@@ -154,6 +154,7 @@ pub struct VlocatorCapacityData {
     /// leave sideways out.
     pub standard_v_blocks: Vec<StandardV>,
     /// P_max / W per cell.
+    #[serde(serialize_with = "cells::summary_of")]
     pub cells: VlocatorCapacityCells,
 }
 
@@ -206,13 +207,6 @@ impl HasCells for VlocatorCapacityCells {
             axes,
             &[("p_max_over_w", Column::Sparse(&self.p_max_over_w))],
         )
-    }
-}
-
-/// As its summary in the data file.
-impl Serialize for VlocatorCapacityCells {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-        self.table().serialize(s)
     }
 }
 

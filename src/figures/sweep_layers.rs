@@ -2,8 +2,8 @@
 //!
 //! To add a model's points: add a variant to [`SweepLayer`], say in [`validate`] which swept
 //! parameters it supports, and return its series from [`series`] by calling the model (through
-//! `Models`) at the points it should be drawn. Nothing else changes: panels, legend, data file
-//! and hashes follow.
+//! `Models`) at the points it should be drawn, a [`Curve`] naming them; the chart gives the
+//! curve its line or marker.
 //!
 //! The min-norm points sit at the Table 1 mu values, beside the paper's; the simulation points
 //! sit halfway between them ([`SIMULATION_MU`]), so that no marker hides another (at
@@ -11,13 +11,12 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::spec::Scene;
-use super::style::{LineKind, Marker};
-use super::sweep::{Series, SeriesPoint, SeriesStyle, SweepSpec};
+use super::Input;
+use super::band::Band;
+use super::models::Models;
+use super::sweep::{Curve, Series, SeriesPoint, SweepSettings};
 use crate::dynamics::{Drive, DynamicsParams};
 use crate::error::{Error, Result};
-use crate::figures::band::Band;
-use crate::figures::models::Models;
 use crate::grid::{self, GridParam};
 use crate::minnorm::{Formulation, MinNormSettings};
 use crate::models::{self, Detail, ModelSpec, Solution};
@@ -57,7 +56,7 @@ pub enum SweepLayer {
 }
 
 /// Checks that `layer` can be drawn on `spec`'s sweep.
-pub fn validate(layer: SweepLayer, spec: &SweepSpec) -> Result<()> {
+pub fn validate(layer: SweepLayer, spec: &SweepSettings) -> Result<()> {
     let at_mu = !matches!(layer, SweepLayer::Statics | SweepLayer::Rigid);
     if at_mu && spec.axis.param != GridParam::Mu {
         return Err(Error::invalid(
@@ -73,15 +72,14 @@ pub fn validate(layer: SweepLayer, spec: &SweepSpec) -> Result<()> {
 /// The series of `layer` over `spec`'s axis for `scene`, its model points computed by `models`.
 pub fn series(
     layer: SweepLayer,
-    spec: &SweepSpec,
-    scene: &Scene,
+    spec: &SweepSettings,
+    scene: &Input,
     models: &dyn Models,
 ) -> Result<Vec<Series>> {
     Ok(match layer {
         SweepLayer::Statics => vec![Series {
-            layer: "statics",
+            curve: Curve::Statics,
             label: "closed-form statics (corrected Eq. 1)".into(),
-            style: SeriesStyle::Line(LineKind::Solid),
             points: closed_form(spec, scene, |v, s| SeriesPoint {
                 status: Some(s.status),
                 ..point(v, s.x_jam_mm, s.theta_jam_deg)
@@ -99,9 +97,8 @@ pub fn series(
                 }
             })?;
             vec![Series {
-                layer: "rigid",
+                curve: Curve::Rigid,
                 label: "F → ∞ limit (palm driven by motion): x = r/μ, θ = 2·atan μ".into(),
-                style: SeriesStyle::Line(LineKind::Dashed),
                 points,
                 flat_names: Some(["threshold r/μ", "threshold 2·atan μ"]),
                 callout: None,
@@ -109,9 +106,8 @@ pub fn series(
         }
         SweepLayer::PaperTable1 => table1(),
         SweepLayer::PaperAdams => vec![Series {
-            layer: "paper_adams",
+            curve: Curve::PaperAdams,
             label: format!("Adams simulation: x_jam = {ADAMS_X_JAM_MM_MU_0_4} mm at μ = 0.4"),
-            style: SeriesStyle::Points(Marker::Square),
             // The paper prints x only; its theta would be 2 atan(r/x), not a printed number.
             points: vec![point(0.4, Some(ADAMS_X_JAM_MM_MU_0_4), None)],
             flat_names: None,
@@ -125,17 +121,16 @@ pub fn series(
 }
 
 /// The band's two edges: the closed form at the earliest-jam corner and at the latest.
-pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &Band) -> Result<[Series; 2]> {
-    let edge = |params, layer, which: &str, line| -> Result<Series> {
-        let at = Scene {
+pub(super) fn band(spec: &SweepSettings, scene: &Input, band: &Band) -> Result<[Series; 2]> {
+    let edge = |params, curve, which: &str| -> Result<Series> {
+        let at = Input {
             params,
             ..scene.clone()
         };
         Ok(Series {
-            layer,
+            curve,
             // The band's own label is the shade's legend entry; an edge says which it is.
             label: format!("band edge: {which}"),
-            style: SeriesStyle::Line(line),
             points: closed_form(spec, &at, |v, s| SeriesPoint {
                 status: Some(s.status),
                 ..point(v, s.x_jam_mm, s.theta_jam_deg)
@@ -145,18 +140,8 @@ pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &Band) -> Result<[Seri
         })
     };
     Ok([
-        edge(
-            band.earliest,
-            "band_earliest",
-            "earliest jam",
-            LineKind::BandEarliest,
-        )?,
-        edge(
-            band.latest,
-            "band_latest",
-            "latest jam",
-            LineKind::BandLatest,
-        )?,
+        edge(band.earliest, Curve::BandEarliest, "earliest jam")?,
+        edge(band.latest, Curve::BandLatest, "latest jam")?,
     ])
 }
 
@@ -167,10 +152,10 @@ pub(super) fn band(spec: &SweepSpec, scene: &Scene, band: &Band) -> Result<[Seri
 /// outside it at every point would be an empty chart and fails instead, with the reason.
 ///
 /// Each answer is made into its point by `keep` as it comes: a whole `Solution` per point was
-/// most of a long sweep's memory (issue 21: 1.4 kB per point at 200,000 points).
+/// most of a long sweep's memory (1.4 kB per point at 200,000 points).
 fn closed_form(
-    spec: &SweepSpec,
-    scene: &Scene,
+    spec: &SweepSettings,
+    scene: &Input,
     keep: impl Fn(f64, Solution) -> SeriesPoint,
 ) -> Result<Vec<SeriesPoint>> {
     let param = spec.axis.param;
@@ -188,7 +173,7 @@ fn closed_form(
     }
     if let (Some(why), true) = (first_outside, all_outside) {
         return Err(Error::ModelFailed {
-            scene: scene.name.clone(),
+            scene: String::new(),
             model: "closed-form statics",
             reason: format!(
                 "at each of its {} points, {} = {} to {} (first: {why}); its sweep would be empty",
@@ -228,7 +213,7 @@ fn jam_point(mu: f64, status: JamStatus, x: Option<f64>, theta: Option<f64>) -> 
 /// Where it failed at some points only, the second value is a note for the chart naming them,
 /// so that a gap is never read as "no jam".
 fn model_points(
-    scene: &Scene,
+    scene: &Input,
     models: &dyn Models,
     spec: &ModelSpec,
     mu: &[f64],
@@ -245,7 +230,7 @@ fn model_points(
         let (first, why) = &answers[0];
         let why = why.as_ref().map_or(String::new(), |w| w.to_string());
         return Err(Error::ModelFailed {
-            scene: scene.name.clone(),
+            scene: String::new(),
             model,
             reason: format!(
                 "at each of its {} points, mu = {} to {} (first, at mu = {}: {why}); its sweep \
@@ -272,7 +257,7 @@ fn model_points(
 }
 
 /// Min-norm points at the Table 1 mu values.
-fn min_norm(scene: &Scene, models: &dyn Models, formulation: Formulation) -> Result<Series> {
+fn min_norm(scene: &Input, models: &dyn Models, formulation: Formulation) -> Result<Series> {
     let s = MinNormSettings {
         formulation,
         ..scene.min_norm
@@ -285,17 +270,15 @@ fn min_norm(scene: &Scene, models: &dyn Models, formulation: Formulation) -> Res
         model_points(scene, models, &ModelSpec::MinNorm(s), &table1_mu(), model)?;
     Ok(match formulation {
         Formulation::Translational => Series {
-            layer: "min_norm",
+            curve: Curve::MinNorm,
             label: "min-norm model, translational joint (as the paper)".into(),
-            style: SeriesStyle::Points(Marker::OpenSquare),
             points,
             flat_names: None,
             callout,
         },
         Formulation::Rolling => Series {
-            layer: "min_norm_rolling",
+            curve: Curve::MinNormRolling,
             label: "min-norm model, disc free to roll (on the F → ∞ limit)".into(),
-            style: SeriesStyle::Points(Marker::Plus),
             points,
             flat_names: None,
             callout,
@@ -304,7 +287,7 @@ fn min_norm(scene: &Scene, models: &dyn Models, formulation: Formulation) -> Res
 }
 
 /// Simulated jams at [`SIMULATION_MU`] with the scene's `[dynamics]` settings and `drive`.
-fn simulation(scene: &Scene, models: &dyn Models, drive: Drive) -> Result<Series> {
+fn simulation(scene: &Input, models: &dyn Models, drive: Drive) -> Result<Series> {
     let d = DynamicsParams {
         drive: crate::dynamics::DriveSettings {
             mode: drive,
@@ -323,17 +306,15 @@ fn simulation(scene: &Scene, models: &dyn Models, drive: Drive) -> Result<Series
     let (points, callout) = model_points(scene, models, &spec, &SIMULATION_MU, model)?;
     Ok(match drive {
         Drive::Motion => Series {
-            layer: "simulation_motion",
+            curve: Curve::SimulationMotion,
             label: format!("simulation, motion drive ω = {} deg/s", d.drive.omega_deg_s),
-            style: SeriesStyle::Points(Marker::Diamond),
             points,
             flat_names: None,
             callout,
         },
         Drive::Force => Series {
-            layer: "simulation_force",
+            curve: Curve::SimulationForce,
             label: format!("simulation, force drive F = {} N", scene.params.force_n),
-            style: SeriesStyle::Points(Marker::OpenDiamond),
             points,
             flat_names: None,
             callout,
@@ -373,17 +354,15 @@ fn table1() -> Vec<Series> {
     }
     let mut out = vec![
         Series {
-            layer: "paper_table1_force_analysis",
+            curve: Curve::PaperTable1ForceAnalysis,
             label: "Table 1, force analysis".into(),
-            style: SeriesStyle::Points(Marker::Circle),
             points: force,
             flat_names: None,
             callout: None,
         },
         Series {
-            layer: "paper_table1_min_norm",
+            curve: Curve::PaperTable1MinNorm,
             label: "Table 1, minimum norm".into(),
-            style: SeriesStyle::Points(Marker::Triangle),
             points: min_norm,
             flat_names: None,
             callout: None,
@@ -397,13 +376,12 @@ fn table1() -> Vec<Series> {
         // Table 1 is for the paper's r = 10 mm.
         let consistent = disc_position_mm(10.0, 0.0, theta.to_radians());
         out.push(Series {
-            layer: "paper_table1_erratum",
+            curve: Curve::PaperTable1Erratum,
             label: format!(
                 "Table 1 erratum at μ = {:.2}: x = {:.2} mm printed",
                 e.at,
                 e.x_jam_mm.unwrap_or(0.0)
             ),
-            style: SeriesStyle::Points(Marker::Cross),
             points: erratum,
             flat_names: None,
             callout: Some(format!(

@@ -1,0 +1,396 @@
+//! The sweep (Figs. 6, 7a, 7b): x_jam and theta_jam against one scene parameter.
+//!
+//! Each layer contributes [`Series`] (a curve or a point set, named by its [`Curve`]); each
+//! panel of the chart plots one quantity of every series. The layers live in
+//! [`super::sweep_layers`]: a new model's points are one more [`SweepLayer`] variant and one
+//! function there. An uncertain input adds its band ([`super::band`]).
+
+use serde::{Deserialize, Serialize};
+
+use super::band::{self, BandRow};
+use super::models::Models;
+use super::sweep_layers::{self, SweepLayer};
+use super::{DataFormat, Figure, FigureData, Input};
+use crate::csv_out::{Dec, dec, to_csv_with_header};
+use crate::error::{Error, Result};
+use crate::grid::{GridAxis, GridParam};
+use crate::scene::{JamStatus, SceneParams};
+
+/// A quantity plotted in one panel of a sweep.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SweepPanel {
+    /// x_jam in mm.
+    XJamMm,
+    /// theta_jam in deg.
+    ThetaJamDeg,
+}
+
+impl SweepPanel {
+    /// The quantity's name in the data (`x_jam_mm`, `theta_jam_deg`).
+    pub fn key(self) -> &'static str {
+        match self {
+            SweepPanel::XJamMm => "x_jam_mm",
+            SweepPanel::ThetaJamDeg => "theta_jam_deg",
+        }
+    }
+
+    /// The quantity at point `p`.
+    pub fn value(self, p: &SeriesPoint) -> Option<f64> {
+        match self {
+            SweepPanel::XJamMm => p.x_jam_mm,
+            SweepPanel::ThetaJamDeg => p.theta_jam_deg,
+        }
+    }
+}
+
+/// `[chart]` keys of `kind = "sweep"`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepSettings {
+    /// The swept parameter, its range, sample count (curves) and scale.
+    pub axis: GridAxis,
+    /// The panels, top to bottom (default: x_jam_mm then theta_jam_deg).
+    #[serde(default = "both_panels")]
+    pub panels: Vec<SweepPanel>,
+    /// The layers to draw (default: statics).
+    #[serde(default = "statics_only")]
+    pub layers: Vec<SweepLayer>,
+    /// Draw the read-off at the scene's own value of the swept parameter: the closed form's
+    /// x_jam and theta_jam there, with lines to the axes and the values printed (default:
+    /// false; `--set chart.read_off=true --set mu=0.27`).
+    #[serde(default)]
+    pub read_off: bool,
+    /// The band of an uncertain input (`sweep ... --mu 0.12:0.3`, or a range in a sweep
+    /// scene's `[scene]` or `--set`): the closed form at the box's two extreme corners, drawn
+    /// as two edges with the band shaded between them and written as one CSV row of layer
+    /// `band` per swept value ([`super::band`]) (default: none; the built-in scenes have
+    /// none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub band: Option<band::Band>,
+}
+
+fn both_panels() -> Vec<SweepPanel> {
+    vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg]
+}
+
+fn statics_only() -> Vec<SweepLayer> {
+    vec![SweepLayer::Statics]
+}
+
+impl Figure for SweepSettings {
+    type Data = SweepData;
+
+    fn param_axes(&self) -> Vec<(&'static str, GridAxis)> {
+        vec![("axis", self.axis)]
+    }
+
+    /// With the read-off, the chart marks the scene's value of the swept parameter.
+    fn marks_scene_value(&self) -> bool {
+        self.read_off
+    }
+
+    fn enable_read_off(&mut self) -> bool {
+        self.read_off = true;
+        true
+    }
+
+    /// Checks the axis, panels and layers against the scene.
+    fn validate(&self, input: &Input) -> Result<()> {
+        self.axis.validate("chart.axis")?;
+        if self.axis.param == GridParam::ThetaDeg {
+            return Err(Error::invalid(
+                "chart.axis.param",
+                "theta_deg",
+                "a sweep varies a scene parameter",
+            ));
+        }
+        for v in [self.axis.min, self.axis.max] {
+            self.axis.param.apply(input.params, v).validate()?;
+        }
+        if self.panels.is_empty() || self.panels.len() > 3 {
+            return Err(Error::invalid(
+                "chart.panels",
+                self.panels.len(),
+                "a sweep has 1 to 3 panels",
+            ));
+        }
+        for l in &self.layers {
+            sweep_layers::validate(*l, self)?;
+        }
+        Ok(())
+    }
+
+    fn check_size(&self, _input: &Input) -> Result<()> {
+        crate::limits::check_items(
+            "chart.axis.count",
+            self.axis.count as f64,
+            crate::limits::SWEEP_POINT,
+        )
+    }
+
+    /// Computes the series of every layer, the band and the read-off.
+    fn compute(&self, input: &Input, models: &dyn Models) -> Result<SweepData> {
+        let mut series = Vec::new();
+        for l in &self.layers {
+            series.extend(sweep_layers::series(*l, self, input, models)?);
+        }
+        let mut rows = Vec::new();
+        if let Some(band) = &self.band {
+            let [earliest, latest] = sweep_layers::band(self, input, band)?;
+            rows = band::rows(
+                self.axis.param,
+                &band.latest,
+                &earliest.points,
+                &latest.points,
+            );
+            series.extend([earliest, latest]);
+        }
+        let read_off = match (self.read_off, self.axis.param.get(&input.params)) {
+            (true, Some(v)) => {
+                let s = crate::models::solve(&crate::models::ModelSpec::Statics, &input.params)?;
+                let jams = s.status == JamStatus::Jams;
+                Some(SeriesPoint {
+                    at: v,
+                    x_jam_mm: s.x_jam_mm.filter(|_| jams),
+                    theta_jam_deg: s.theta_jam_deg.filter(|_| jams),
+                    status: Some(s.status),
+                })
+            }
+            _ => None,
+        };
+        Ok(SweepData {
+            params: input.params,
+            settings: self.clone(),
+            series,
+            read_off,
+            band: rows,
+        })
+    }
+}
+
+/// Which curve or point set a series is: its layer's name in the data file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Curve {
+    /// The closed-form statics.
+    Statics,
+    /// The F -> infinity limit.
+    Rigid,
+    /// Table 1's force analysis, as printed.
+    PaperTable1ForceAnalysis,
+    /// Table 1's minimum norm, as printed.
+    PaperTable1MinNorm,
+    /// Table 1's erratum row (its x as printed).
+    PaperTable1Erratum,
+    /// The paper's Adams result.
+    PaperAdams,
+    /// Min-norm jam points, translational joint.
+    MinNorm,
+    /// Min-norm jam points, a rolling disc.
+    MinNormRolling,
+    /// Simulated jams, motion drive.
+    SimulationMotion,
+    /// Simulated jams, force drive.
+    SimulationForce,
+    /// A band's earliest-jam edge.
+    BandEarliest,
+    /// A band's latest-jam edge.
+    BandLatest,
+}
+
+impl Curve {
+    /// The layer's name in the data file (`statics`, `paper_adams`, ...).
+    pub fn name(self) -> &'static str {
+        match self {
+            Curve::Statics => "statics",
+            Curve::Rigid => "rigid",
+            Curve::PaperTable1ForceAnalysis => "paper_table1_force_analysis",
+            Curve::PaperTable1MinNorm => "paper_table1_min_norm",
+            Curve::PaperTable1Erratum => "paper_table1_erratum",
+            Curve::PaperAdams => "paper_adams",
+            Curve::MinNorm => "min_norm",
+            Curve::MinNormRolling => "min_norm_rolling",
+            Curve::SimulationMotion => "simulation_motion",
+            Curve::SimulationForce => "simulation_force",
+            Curve::BandEarliest => "band_earliest",
+            Curve::BandLatest => "band_latest",
+        }
+    }
+
+    /// Whether it is a curve through its points (else a point set).
+    pub fn is_line(self) -> bool {
+        matches!(
+            self,
+            Curve::Statics | Curve::Rigid | Curve::BandEarliest | Curve::BandLatest
+        )
+    }
+
+    /// Whether it is the paper's own numbers.
+    pub fn is_paper(self) -> bool {
+        self.name().starts_with("paper_")
+    }
+}
+
+/// One point of a series: the swept value and the quantities (None where not given).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SeriesPoint {
+    /// The swept parameter's value.
+    pub at: f64,
+    /// x_jam in mm.
+    pub x_jam_mm: Option<f64>,
+    /// theta_jam in deg.
+    pub theta_jam_deg: Option<f64>,
+    /// The model's verdict at the point (None for a limit or a printed number).
+    pub status: Option<JamStatus>,
+}
+
+/// A curve or point set of one layer.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Series {
+    /// Which curve it is.
+    pub curve: Curve,
+    /// What it shows, for a legend.
+    pub label: String,
+    /// The points, in order of the swept value.
+    pub points: Vec<SeriesPoint>,
+    /// Names of a curve's value in the x_jam and theta_jam panels, for a curve that is flat
+    /// in a panel (thresholds, constants).
+    pub flat_names: Option<[&'static str; 2]>,
+    /// A note about its first point (e.g. what is wrong with it).
+    pub callout: Option<String>,
+}
+
+/// The computed sweep; its rows are its CSV data file ([`SweepData::csv`]).
+#[derive(Debug, Clone, Serialize)]
+pub struct SweepData {
+    /// The scene's parameters.
+    pub params: SceneParams,
+    /// The settings it was computed with.
+    #[serde(flatten)]
+    pub settings: SweepSettings,
+    /// Every layer's series (with a band, its two edges last).
+    pub series: Vec<Series>,
+    /// The closed form at the scene's own value of the swept parameter, when read off.
+    pub read_off: Option<SeriesPoint>,
+    /// The shaded band of an uncertain input, one row per swept value (empty without one).
+    pub band: Vec<BandRow>,
+}
+
+/// The ten columns a band adds to a sweep's CSV.
+const BAND_COLUMNS: [&str; 10] = [
+    "earliest_status",
+    "earliest_x_jam_mm",
+    "earliest_theta_jam_deg",
+    "latest_status",
+    "latest_x_jam_mm",
+    "latest_theta_jam_deg",
+    "band_x_jam_lo_mm",
+    "band_x_jam_hi_mm",
+    "band_theta_jam_lo_deg",
+    "band_theta_jam_hi_deg",
+];
+
+impl FigureData for SweepData {
+    const FORMAT: DataFormat = DataFormat::Csv;
+
+    /// One CSV row per point of every series, the read-off as a row of layer `read_off`; with
+    /// a band, its edges as one row of layer `band` per swept value instead.
+    fn csv(&self) -> Vec<u8> {
+        if !self.band.is_empty() {
+            return self.band_csv();
+        }
+        let rows = self.layer_rows().map(|(layer, p)| {
+            let status = p.status.map_or("", JamStatus::as_str);
+            (
+                layer,
+                Dec(p.at),
+                status,
+                dec(p.x_jam_mm),
+                dec(p.theta_jam_deg),
+            )
+        });
+        to_csv_with_header(&self.header(), rows)
+    }
+}
+
+impl SweepData {
+    /// The columns of every sweep's CSV.
+    fn header(&self) -> [&'static str; 5] {
+        [
+            "layer",
+            self.settings.axis.param.as_str(),
+            "status",
+            "x_jam_mm",
+            "theta_jam_deg",
+        ]
+    }
+
+    /// Every point of the layers but a band's edges (written in the band's own rows), then
+    /// the read-off, each with its layer's name.
+    fn layer_rows(&self) -> impl Iterator<Item = (&'static str, &SeriesPoint)> {
+        self.series
+            .iter()
+            .filter(|s| !matches!(s.curve, Curve::BandEarliest | Curve::BandLatest))
+            .flat_map(|ser| ser.points.iter().map(|p| (ser.curve.name(), p)))
+            .chain(self.read_off.iter().map(|p| ("read_off", p)))
+    }
+
+    /// The CSV of a sweep with a band: the other layers' rows as without one, then one row of
+    /// layer `band` per swept value with each corner's status, x_jam and theta_jam and the
+    /// shaded interval (empty where nothing is shaded), in ten more columns. The columns the
+    /// band rows leave empty are the other layers' (and the other way round).
+    fn band_csv(&self) -> Vec<u8> {
+        let mut header = self.header().to_vec();
+        header.extend(BAND_COLUMNS);
+        let status = |p: &SeriesPoint| p.status.map_or("", JamStatus::as_str);
+        let ends = |i: Option<(f64, f64)>| (dec(i.map(|i| i.0)), dec(i.map(|i| i.1)));
+        let layers = self.layer_rows().map(|(layer, p)| {
+            let (x, t) = (dec(p.x_jam_mm), dec(p.theta_jam_deg));
+            let n = None;
+            (
+                layer,
+                Dec(p.at),
+                status(p),
+                x,
+                t,
+                "",
+                n,
+                n,
+                "",
+                n,
+                n,
+                n,
+                n,
+                n,
+                n,
+            )
+        });
+        let band = self.band.iter().map(|r| {
+            let (e, l) = (&r.earliest, &r.latest);
+            let ((x0, x1), (t0, t1)) = (ends(r.x_jam_mm), ends(r.theta_jam_deg));
+            let (ex, et) = (dec(e.x_jam_mm), dec(e.theta_jam_deg));
+            let (lx, lt) = (dec(l.x_jam_mm), dec(l.theta_jam_deg));
+            let n = None;
+            let (es, ls) = (status(e), status(l));
+            (
+                "band",
+                Dec(r.at),
+                "",
+                n,
+                n,
+                es,
+                ex,
+                et,
+                ls,
+                lx,
+                lt,
+                x0,
+                x1,
+                t0,
+                t1,
+            )
+        });
+        to_csv_with_header(&header, layers.chain(band))
+    }
+}
