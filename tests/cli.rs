@@ -513,3 +513,62 @@ fn likely_unit_mistakes_are_answered_with_a_warning() {
     let o = jamchart(repo(), &["solve"]);
     assert!(!stderr(&o).contains("warning"), "{}", stderr(&o));
 }
+
+/// The closed form's status for `solve ARGS` (JSON).
+fn statics_status(args: &[&str]) -> String {
+    let mut all = vec!["solve", "--format", "json"];
+    all.extend(args);
+    let v = json(&jamchart(repo(), &all));
+    v["results"][0]["status"].as_str().unwrap().to_string()
+}
+
+/// Regression: the too_weak advice did not work where the disc, once moved, is held at the
+/// start. `solve --mu 0.9 --mass 2.68 --force 1.6354 --start-angle 80` said "it takes more than
+/// 17.58 N", but at 1000 N the disc is still held at the start (the wedge atan 0.9 + atan 0.9
+/// = 83.97 deg passes the 80 deg start); the paper's disc of 100 kg was told 364.2 N, where
+/// everything up to 502.9 N is held at the start. The advice now names the push that slides
+/// the disc from the start (checked a hair either side), or says none does and why.
+#[test]
+fn the_too_weak_advice_is_a_push_that_slides_the_disc() {
+    let out = stdout(&jamchart(repo(), &["solve", "--mass", "100"]));
+    let advised: f64 = out
+        .split("it slides from there above ")
+        .nth(1)
+        .and_then(|r| r.split(' ').next())
+        .unwrap_or_else(|| panic!("no push advised: {out}"))
+        .parse()
+        .unwrap();
+    assert!((advised - 502.9231).abs() < 1e-4, "{out}");
+    for (force, want) in [
+        (advised * 1.0001, "jams"),
+        (advised * 0.9999, "jammed_at_start"),
+    ] {
+        let f = force.to_string();
+        assert_eq!(
+            statics_status(&["--mass", "100", "--force", &f]),
+            want,
+            "{f} N"
+        );
+    }
+    let wedge = ["--mu", "0.9", "--mass", "2.68", "--start-angle", "80"];
+    let mut weak = vec!["solve", "--force", "1.6354"];
+    weak.extend(wedge);
+    let out = stdout(&jamchart(repo(), &weak));
+    assert!(out.contains("no push slides it"), "{out}");
+    assert!(
+        out.contains("83.97 deg holds it at the start angle 80 deg"),
+        "{out}"
+    );
+    let mut strong = vec!["--force", "1000"];
+    strong.extend(wedge);
+    assert_eq!(statics_status(&strong), "jammed_at_start");
+}
+
+/// Regression (docs): Table 1's footer said the paper's theta is truncated, then that its x is
+/// r cot(theta/2) "of that rounded theta".
+#[test]
+fn the_table_footer_says_the_papers_theta_is_truncated() {
+    let md = stdout(&jamchart(repo(), &["table"]));
+    assert!(md.contains("of that truncated theta"), "{md}");
+    assert!(!md.contains("rounded theta"), "{md}");
+}

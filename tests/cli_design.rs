@@ -36,7 +36,9 @@ fn design_least_push_is_the_closed_form_at_the_top_friction() {
     assert!((c["x_jam_closed_form_mm"].as_f64().unwrap() - 35.0).abs() < 1e-9);
     assert!(c["x_jam_nonsmooth_mm"].as_f64().is_some(), "{c}");
     // The latest jam (mu 0.12) lies past the 80 mm palm: the length needed says how far.
-    let l = v["design"]["palm_length_needed_mm"].as_f64().unwrap();
+    let l = v["design"]["palm_length_keeping_jams_on_mm"]
+        .as_f64()
+        .unwrap();
     assert!(l > 80.0, "{l}");
     assert!(
         v["check_latest_jam"]["x_jam_nonsmooth_mm"]
@@ -53,7 +55,9 @@ fn design_least_push_is_the_closed_form_at_the_top_friction() {
 fn design_says_when_the_disc_coasts_past_the_palm_length_it_gives() {
     let dir = tempfile::tempdir().unwrap();
     let v = json(&jamchart(dir.path(), &shaft_design("35")));
-    let l = v["design"]["palm_length_needed_mm"].as_f64().unwrap();
+    let l = v["design"]["palm_length_keeping_jams_on_mm"]
+        .as_f64()
+        .unwrap();
     let coast = v["check_latest_jam"]["coasts_to_mm"].as_f64().unwrap();
     assert!(coast > l * 1.05, "{coast} vs {l}");
     let mut args = shaft_design("35");
@@ -90,4 +94,84 @@ fn design_refuses_bad_input_and_answers_impossible_targets() {
             "{all:?}: {err}"
         );
     }
+}
+
+/// `design ARGS --format json` in a fresh folder: its exit code and its JSON.
+fn design_json(args: &[&str]) -> serde_json::Value {
+    let dir = tempfile::tempdir().unwrap();
+    let mut all = vec!["design", "--format", "json"];
+    all.extend(args);
+    json(&jamchart(dir.path(), &all))
+}
+
+/// Regression: a target behind the disc's start was answered with numbers that meant nothing:
+/// `design --x-target 11 --start-angle 80 --mu 0.3:0.4` gave a least push of 5.557 N and
+/// mu_ground up to 1.7535, but the disc starts at x(80 deg) = 11.918 mm, already past the
+/// target. Now the answer says so, whatever the push and the friction.
+#[test]
+fn design_says_when_the_disc_starts_past_the_target() {
+    let v = design_json(&["--x-target", "11", "--start-angle", "80", "--mu", "0.3:0.4"]);
+    let d = &v["design"];
+    assert_eq!(d["carry"], "starts_past", "{d}");
+    assert!(
+        (d["x_start_mm"].as_f64().unwrap() - 11.918).abs() < 5e-4,
+        "{d}"
+    );
+    assert!(
+        d.get("least_push").is_none() && d.get("mu_ground_max").is_none(),
+        "{d}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let text = cli_util::stdout(&jamchart(
+        dir.path(),
+        &[
+            "design",
+            "--x-target",
+            "11",
+            "--start-angle",
+            "80",
+            "--mu",
+            "0.3:0.4",
+        ],
+    ));
+    assert!(
+        text.contains("the disc starts at x = 11.918 mm, at or past the target"),
+        "{text}"
+    );
+    assert!(!text.contains("least push that carries"), "{text}");
+}
+
+/// Regression: a least push of 0 N was refused as invalid input. Without weight or ground
+/// friction (`--mu 0`, `--mass 0`, `--gravity 0`, `--mu-ground 0`) the jam angle does not
+/// depend on the push, and `design --x-target 40` exited 2 with "invalid force_n = 0 (flag
+/// --force)" from the simulation of that push. Any push reaches a target the wedge allows: an
+/// answer, exit 0; where the wedge locks first (mu 0.4 on the palm) that is the answer.
+#[test]
+fn design_answers_a_least_push_of_zero() {
+    for (args, status) in [
+        (vec!["--mu", "0"], "any_push_that_moves"),
+        (vec!["--mu-ground", "0"], "any_push_that_moves"),
+        (vec!["--mu", "0.1", "--mass", "0"], "any_push_that_moves"),
+        (vec!["--mu", "0.1", "--gravity", "0"], "any_push_that_moves"),
+        (vec!["--mass", "0"], "wedge_locks_first"),
+    ] {
+        let mut all = vec!["--x-target", "40"];
+        all.extend(args.iter().copied());
+        let v = design_json(&all);
+        let push = &v["design"]["least_push"];
+        assert_eq!(push["status"], status, "{all:?}: {push}");
+        if status == "any_push_that_moves" {
+            assert_eq!(push["least_moving_n"].as_f64(), Some(0.0), "{all:?}");
+        }
+    }
+}
+
+/// Regression: `design` answered scenes `solve` calls outside_model: a push starting at 100 deg
+/// got a least push and palm lengths from the closed form, which keeps the disc on the ground
+/// the palm would lift it from. Now it answers outside_model with the port's reason, exit 0.
+#[test]
+fn design_answers_outside_the_model_as_solve_does() {
+    let v = design_json(&["--x-target", "40", "--start-angle", "100"]);
+    assert_eq!(v["status"], "outside_model", "{v}");
+    assert_eq!(v["reason"], "palm_lifts_disc", "{v}");
 }

@@ -356,15 +356,25 @@ fn run_within(args: &[&str], secs: u64) -> (Option<i32>, String) {
 /// was bisected to 1e-9 of the range's width with no cap on the halvings: 1e-17 for `--force
 /// 3.64185697:3.64185698`, below the spacing of floats at 3.6 (4.4e-16), so the bracket never
 /// shrank to it; likewise a mass range 1e-7 wide at 55 kg and a lognormal friction of median
-/// 5e-324 (every value subnormal). Each now answers within seconds.
+/// 5e-324 (every value subnormal), and P(x_jam < x) of a friction normal(0.4,1e-15) at an x
+/// inside its support (bisected to 1e-12 of a support 6e-15 wide). Each now answers within
+/// seconds.
 #[test]
 fn a_range_narrower_than_the_float_spacing_answers() {
     for range in [
-        ["--force", "3.64185697:3.64185698"],
-        ["--mass", "54.9170386:54.9170387"],
-        ["--mu", "lognormal(5e-324,1)"],
+        &["--force", "3.64185697:3.64185698"][..],
+        &["--mass", "54.9170386:54.9170387"],
+        &["--mu", "lognormal(5e-324,1)"],
+        &[
+            "--mu",
+            "normal(0.4,1e-15)",
+            "--before",
+            "24.354551362801473",
+        ],
     ] {
-        let (code, out) = run_within(&["solve", range[0], range[1]], 30);
+        let mut args = vec!["solve"];
+        args.extend(range);
+        let (code, out) = run_within(&args, 30);
         assert_eq!(code, Some(0), "{range:?} did not answer in 30 s");
         assert!(out.contains("statuses in the box"), "{range:?}: {out}");
     }
@@ -433,4 +443,33 @@ fn a_sweep_band_with_a_too_weak_corner_is_shaded() {
         too_weak, 120,
         "the rows whose earliest corner cannot move the disc"
     );
+}
+
+/// Regression (docs): `solve --help` said the statics with one distributed input are exact, and
+/// `solve --mu normal(0.2,0.03) --force 30:50` (one distribution beside a range) is answered by
+/// Monte Carlo. The help now says when it is exact, and the answers say which they are.
+#[test]
+fn the_help_says_when_a_distribution_is_answered_exactly() {
+    let dir = tempfile::tempdir().unwrap();
+    let help = cli_util::stdout(&jamchart(dir.path(), &["solve", "--help"]));
+    let flat = help.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(
+        flat.contains("where one distribution is the only uncertain input (no range beside it)"),
+        "{help}"
+    );
+    for (args, how) in [
+        (
+            &["--mu", "normal(0.2,0.03)"][..],
+            "(exact, by the monotone map",
+        ),
+        (
+            &["--mu", "normal(0.2,0.03)", "--force", "30:50"],
+            "(Monte Carlo, 100000 samples",
+        ),
+    ] {
+        let mut all = vec!["solve"];
+        all.extend(args);
+        let out = cli_util::stdout(&jamchart(dir.path(), &all));
+        assert!(out.contains(how), "{args:?}: {out}");
+    }
 }

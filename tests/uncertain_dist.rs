@@ -3,6 +3,9 @@
 //! quantiles, Monte Carlo against the exact answer, and Monte Carlo bit-identical for any
 //! thread count.
 
+#[path = "common/cli.rs"]
+mod cli_util;
+
 use jamchart::SceneParams;
 use jamchart::statics;
 use jamchart::uncertain::dist::{self, DistMethod, DistQuestion};
@@ -119,4 +122,24 @@ fn monte_carlo_is_bit_identical_for_any_thread_count() {
     };
     let three = dist::monte_carlo(&jamchart::ModelSpec::Statics, &p, &set, &other_seed).unwrap();
     assert_ne!(format!("{one:?}"), format!("{three:?}"));
+}
+
+/// Regression: a normal input whose standard deviation equals its mean was refused ("the
+/// highest value a sample can take is inf") while one a hair either side was taken: below +
+/// p (1 - below), the truncated normal's share at p = 1 - 2^-53, rounded to 1 there. Every
+/// quantile up to that p is now finite and continuous in the spread, and `solve --mu
+/// normal(0.05,0.05)` answers.
+#[test]
+fn a_normal_input_with_its_spread_equal_to_its_mean_answers() {
+    let top = 1.0 - jamchart::uncertain::REACH;
+    for mean in [0.05, 0.2, 1.0, 40.0] {
+        let q = |sd: f64| Uncertain::Normal { mean, sd }.quantile(top);
+        let (at, below, above) = (q(mean), q(mean * (1.0 - 1e-12)), q(mean * (1.0 + 1e-12)));
+        assert!(at.is_finite(), "normal({mean},{mean}): {at}");
+        assert!(below < at && at < above, "{below} {at} {above}");
+        assert!((above - below) < 1e-9 * at, "{below} {at} {above}");
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let o = cli_util::jamchart(dir.path(), &["solve", "--mu", "normal(0.05,0.05)"]);
+    assert_eq!(o.status.code(), Some(0), "{}", cli_util::stderr(&o));
 }

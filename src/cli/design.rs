@@ -7,10 +7,10 @@ use clap::Args;
 use serde::Serialize;
 
 use super::args::{OutputFormat, SceneArgs, parse_f64};
-use crate::design::{self, Design, DesignBox, LeastPush};
+use crate::design::{self, AvoidJams, Carry, Design, DesignBox, LeastPush};
 use crate::dynamics::{Drive, DynamicsParams, Method};
 use crate::error::{Error, Result};
-use crate::models::{self, ModelSpec};
+use crate::models::{self, ModelKind, ModelSpec, OutsideModel};
 use crate::numbers::{Num, fixed};
 use crate::scene::SceneParams;
 use crate::uncertain::UncertainSet;
@@ -119,6 +119,11 @@ pub fn run(args: &DesignArgs) -> Result<String> {
     for corner in [&b.earliest, &b.latest] {
         corner.validate()?;
     }
+    // The closed form answers a push starting at 90 deg or below, as `solve` does: above it
+    // the answer is the port's outside_model, with its reason (no input moves the start).
+    if let Some(why) = models::outside(ModelKind::Statics, &b.earliest) {
+        return Ok(outside(args.format, &why));
+    }
     let Some(d) = design::design(&b, x_t) else {
         return Err(Error::invalid(
             "x_target_mm",
@@ -130,8 +135,11 @@ pub fn run(args: &DesignArgs) -> Result<String> {
             ),
         ));
     };
-    let check_least_push = match d.least_push {
-        LeastPush::Push { force_n } => Some(check(
+    let check_least_push = match d.carry {
+        Carry::Ahead {
+            least_push: LeastPush::Push { force_n },
+            ..
+        } => Some(check(
             &SceneParams {
                 force_n,
                 ..b.earliest
@@ -144,7 +152,7 @@ pub fn run(args: &DesignArgs) -> Result<String> {
     // is still located: the force drive's disc runs on past the closed form's jam (112.6 mm
     // against 99.3 mm for the issue's shaft at mu 0.12, 40 N), and 10 % more palm lost it.
     let check_latest_jam = d
-        .palm_length_needed_mm
+        .palm_length_keeping_jams_on_mm
         .map(|l| {
             let long = SceneParams {
                 palm_length_mm: b.latest.palm_length_mm.max(2.0 * l),
@@ -177,10 +185,58 @@ pub fn run(args: &DesignArgs) -> Result<String> {
     })
 }
 
+/// The answer for a scene outside the closed form: the port's status and reason.
+fn outside(format: OutputFormat, why: &OutsideModel) -> String {
+    match format {
+        OutputFormat::Json => {
+            #[derive(Serialize)]
+            struct Outside<'a> {
+                status: crate::scene::JamStatus,
+                #[serde(flatten)]
+                why: &'a OutsideModel,
+            }
+            let doc = Outside {
+                status: crate::scene::JamStatus::OutsideModel,
+                why,
+            };
+            serde_json::to_string_pretty(&doc).expect("the answer serialises") + "\n"
+        }
+        OutputFormat::Text => format!("design: outside_model\n  not run: {why}\n"),
+    }
+}
+
 /// How far the simulated jam may lie from the closed form's before the answer says so. The
 /// nonsmooth force drive meets an independent rigid ODE to 5e-6 (tests/force_drive_rest.rs), so
 /// a gap of 0.5 % is the disc's coast at the drive's speed, not the method's error.
 const COAST_TOLERANCE: f64 = 0.005;
+
+/// The least push's line of the text answer.
+fn push_line(e: &SceneParams, least_push: LeastPush) -> String {
+    match least_push {
+        LeastPush::Push { force_n } => format!(
+            "least push that carries it there without jamming at any friction: F = {force_n:.3} N \
+             (closed form m g sin(alpha_g) / sin(theta_t - alpha_g - alpha_p))",
+            force_n = Num(force_n)
+        ),
+        LeastPush::AnyPushThatMoves { least_moving_n } => format!(
+            "least push: any push above {least_moving_n:.3} N (the least that moves the disc) \
+             carries it there",
+            least_moving_n = Num(least_moving_n)
+        ),
+        LeastPush::WedgeLocksFirst {
+            theta_rigid_deg,
+            x_rigid_mm,
+        } => format!(
+            "least push: none: at mu_ground {} / mu_palm {} the friction wedge locks at {:.3} deg \
+             (x = {x_rigid_mm:.3} mm) before the target whatever the push; lower the friction \
+             or move the target nearer",
+            Num(e.mu_ground),
+            Num(e.mu_palm),
+            Num(theta_rigid_deg),
+            x_rigid_mm = Num(x_rigid_mm)
+        ),
+    }
+}
 
 fn sim_line(c: &SimCheck) -> String {
     let mm = |v: Option<f64>| v.map_or("no jam".into(), |x| format!("{x:.3} mm", x = Num(x)));
@@ -236,60 +292,53 @@ fn text(
             Num(e.palm_length_mm)
         );
     }
-    let push_line = match d.least_push {
-        LeastPush::Push { force_n } => format!(
-            "least push that carries it there without jamming at any friction: F = {force_n:.3} N \
-             (closed form m g sin(alpha_g) / sin(theta_t - alpha_g - alpha_p))",
-            force_n = Num(force_n)
-        ),
-        LeastPush::AnyPushThatMoves { least_moving_n } => format!(
-            "least push: any push above {least_moving_n:.3} N (the least that moves the disc) \
-             carries it there",
-            least_moving_n = Num(least_moving_n)
-        ),
-        LeastPush::WedgeLocksFirst {
-            theta_rigid_deg,
-            x_rigid_mm,
-        } => format!(
-            "least push: none: at mu_ground {} / mu_palm {} the friction wedge locks at {:.3} deg \
-             (x = {x_rigid_mm:.3} mm) before the target whatever the push; lower the friction \
-             or move the target nearer",
-            Num(e.mu_ground),
-            Num(e.mu_palm),
-            Num(theta_rigid_deg),
-            x_rigid_mm = Num(x_rigid_mm)
-        ),
-    };
-    let _ = writeln!(out, "{push_line}");
-    if let Some(c) = push {
-        let _ = writeln!(out, "{}", sim_line(c));
-        if let (Some(x_cf), Some(x_sim)) = (c.x_jam_closed_form_mm, c.x_jam_nonsmooth_mm)
-            && x_sim < x_cf * (1.0 - COAST_TOLERANCE)
-        {
+    match d.carry {
+        Carry::StartsPast { x_start_mm } => {
             let _ = writeln!(
                 out,
-                "  the simulated disc stops short of the target ({x_sim:.3} mm): push harder than \
-                 the closed form's least push",
-                x_sim = Num(x_sim)
+                "the disc starts at x = {:.3} mm, at or past the target: it is there before the \
+                 palm moves, whatever the push and the friction (and held there if it jams at \
+                 once); no least push or largest friction applies",
+                Num(x_start_mm)
+            );
+        }
+        Carry::Ahead {
+            least_push,
+            mu_ground_max,
+            mu_max,
+        } => {
+            let _ = writeln!(out, "{}", push_line(e, least_push));
+            if let Some(c) = push {
+                let _ = writeln!(out, "{}", sim_line(c));
+                if let (Some(x_cf), Some(x_sim)) = (c.x_jam_closed_form_mm, c.x_jam_nonsmooth_mm)
+                    && x_sim < x_cf * (1.0 - COAST_TOLERANCE)
+                {
+                    let _ = writeln!(
+                        out,
+                        "  the simulated disc stops short of the target ({x_sim:.3} mm): push \
+                         harder than the closed form's least push",
+                        x_sim = Num(x_sim)
+                    );
+                }
+            }
+            let mu = |v: Option<f64>| v.map_or("none".into(), |m| format!("{m:.4}", m = Num(m)));
+            let _ = writeln!(
+                out,
+                "largest friction for the push F = {} N: mu_ground up to {} (mu_palm {}; closed \
+                 form), or mu up to {} on both",
+                Num(e.force_n),
+                mu(mu_ground_max),
+                Num(e.mu_palm),
+                mu(mu_max)
             );
         }
     }
-    let mu = |v: Option<f64>| v.map_or("none".into(), |m| format!("{m:.4}", m = Num(m)));
-    let _ = writeln!(
-        out,
-        "largest friction for the push F = {} N: mu_ground up to {} (mu_palm {}; closed form), \
-         or mu up to {} on both",
-        Num(e.force_n),
-        mu(d.mu_ground_max),
-        Num(e.mu_palm),
-        mu(d.mu_max)
-    );
-    match (d.palm_length_needed_mm, d.x_jam_latest_mm) {
+    match (d.palm_length_keeping_jams_on_mm, d.x_jam_latest_mm) {
         (Some(l), Some(x)) => {
             let _ = writeln!(
                 out,
-                "palm length that keeps every jam on the palm: {l:.3} mm (the latest jam, x = \
-                 {x:.3} mm)",
+                "palm length that keeps every jam on the palm: at least {l:.3} mm (the latest \
+                 jam, x = {x:.3} mm)",
                 l = Num(l),
                 x = Num(x)
             );
@@ -297,10 +346,32 @@ fn text(
         _ => {
             let _ = writeln!(
                 out,
-                "palm length: none suffices: at the latest corner the disc never jams"
+                "palm length that keeps every jam on the palm: none: at the latest corner the \
+                 disc never jams"
             );
         }
     }
+    let _ = writeln!(
+        out,
+        "palm length that ends before every jam: {}",
+        match d.palm_length_avoiding_jams {
+            AvoidJams::ShorterThan {
+                below_mm,
+                x_jam_earliest_mm,
+                touches_mm,
+            } => format!(
+                "under {below_mm:.3} mm (the earliest jam, x = {x:.3} mm), and at least \
+                 {touches_mm:.3} mm to touch the disc at the start",
+                below_mm = Num(below_mm),
+                x = Num(x_jam_earliest_mm),
+                touches_mm = Num(touches_mm)
+            ),
+            AvoidJams::AnyPalm => "any: no point of the box jams (no friction)".into(),
+            AvoidJams::None => "none: at the earliest corner the disc is held where the palm \
+                                first touches it, or the push cannot move it"
+                .into(),
+        }
+    );
     if let Some(c) = late {
         let _ = writeln!(out, "{}", sim_line(c));
         if let Some(x_sim) = c.coasts_to_mm {

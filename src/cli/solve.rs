@@ -11,6 +11,7 @@ use super::args::{ModelChoice, OutputFormat, SceneArgs};
 use super::dynamics::{self, DynamicsArgs};
 use super::min_norm;
 use crate::config::Config;
+use crate::design::LeastPush;
 use crate::error::{Error, Result};
 use crate::models::{self, Detail, ModelKind, ModelSpec, OutsideModel, Solution};
 use crate::numbers::{Num, fixed};
@@ -256,22 +257,7 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
                 );
             }
             (JamStatus::TooWeak, ..) => {
-                let least = statics::least_push_n(p);
-                // A weight past the float range (--mass 1e308) made the least push inf N.
-                let needs = match least.is_finite() {
-                    true => format!(
-                        "it takes more than m g sin(atan mu_ground) = {:.4} N (--force), or less \
-                         ground friction",
-                        Num(least)
-                    ),
-                    false => "the weight m g is beyond the range of a 64-bit float, and no \
-                              finite push moves it"
-                        .into(),
-                };
-                let _ = writeln!(
-                    s,
-                    "  the push cannot move the disc at any palm angle: {needs}"
-                );
+                let _ = writeln!(s, "  {}", too_weak_advice(p));
             }
             (JamStatus::NeverJams, ..) => {
                 let _ = writeln!(
@@ -323,4 +309,50 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
         ));
     }
     s
+}
+
+/// What it takes to slide a disc the push cannot move: the least push that slides it from the
+/// start angle ([`crate::design::least_push`] at the start), which is more than the least push
+/// that moves it at all where the wedge would hold it at the start, and none where the wedge
+/// alone, atan mu_ground + atan mu_palm, reaches the start angle: more push then only holds it
+/// there (at 1000 N as at 20 N for mu 0.9 and a start at 80 deg).
+fn too_weak_advice(p: &SceneParams) -> String {
+    let moves = statics::least_push_n(p);
+    let head = "the push cannot move the disc at any palm angle";
+    if !moves.is_finite() {
+        // A weight past the float range (--mass 1e308) made the least push inf N.
+        return format!(
+            "{head}: the weight m g is beyond the range of a 64-bit float, and no finite push \
+             moves it"
+        );
+    }
+    match crate::design::least_push(p, p.start_angle_deg.to_radians()) {
+        LeastPush::AnyPushThatMoves { .. } => format!(
+            "{head}: it takes more than m g sin(atan mu_ground) = {:.4} N (--force), or less \
+             ground friction",
+            Num(moves)
+        ),
+        LeastPush::Push { force_n } => format!(
+            "{head}: above m g sin(atan mu_ground) = {:.4} N it moves but is held at the start \
+             angle; it slides from there above {:.4} N (--force), or with less friction",
+            Num(moves),
+            Num(force_n)
+        ),
+        LeastPush::WedgeLocksFirst {
+            theta_rigid_deg, ..
+        } => format!(
+            "{head}, and no push slides it: above m g sin(atan mu_ground) = {:.4} N it moves, \
+             but the friction wedge atan mu_ground + atan mu_palm = {:.2} deg holds it at the \
+             start angle {} deg; lower the frictions (--mu-ground, --mu-palm) until the wedge is \
+             below the start angle{}",
+            Num(moves),
+            theta_rigid_deg,
+            Num(p.start_angle_deg),
+            if theta_rigid_deg < 90.0 {
+                " or start the palm above the wedge (--start-angle, at most 90 deg)"
+            } else {
+                ""
+            }
+        ),
+    }
 }

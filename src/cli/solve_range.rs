@@ -120,9 +120,10 @@ fn sampled(
 fn samples_help() -> String {
     format!(
         "Monte Carlo samples where the answer is not exact (unset: {STATICS_SAMPLES} for the \
-         statics, {MODEL_SAMPLES} for min-norm and dynamics).\n\nThe statics with one \
-         distributed input are exact (the monotone map); several inputs or the other models are \
-         sampled, with 95 % intervals printed. At most {}.",
+         statics, {MODEL_SAMPLES} for min-norm and dynamics).\n\nThe statics are exact (the \
+         monotone map) where one distribution is the only uncertain input (no range beside it) \
+         and its support keeps some friction; several inputs or the other models are sampled, \
+         with 95 % intervals printed. At most {}.",
         dist::MAX_SAMPLES
     )
 }

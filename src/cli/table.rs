@@ -36,7 +36,8 @@ pub struct TableRow {
     pub paper_x_jam_mm: f64,
     /// (paper - ours) / ours for x_jam, in percent.
     pub x_rel_diff_pct: f64,
-    /// r cot(theta/2) of the paper's rounded theta, in mm: what the printed x should be.
+    /// r cot(theta/2) of the paper's printed (truncated) theta, in mm: what the printed x should
+    /// be.
     pub x_of_paper_theta_mm: f64,
     /// The paper's second-model (min-norm) x_jam in mm, as printed.
     pub paper_min_norm_x_jam_mm: f64,
@@ -167,7 +168,7 @@ fn markdown(rows: &[TableRow]) -> String {
     }
     s.push_str(
         "\nThe paper's theta is the closed form truncated (not rounded) to 0.1 deg and its x is r cot(theta/2) of \
-         that rounded theta.\n",
+         that truncated theta.\n",
     );
     for n in notes {
         s.push_str(&n);

@@ -168,7 +168,8 @@ fn raw_x(p: &SceneParams) -> Option<f64> {
 }
 
 /// The exact answer for the closed form with one distributed input; None when it does not
-/// apply (several inputs, no distribution, or a push too weak somewhere in the support).
+/// apply (several inputs, a range among them, no distribution, or a support that reaches no
+/// friction at all at an end, where the disc never jams).
 pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<DistAnswer> {
     let [input] = &set.inputs[..] else {
         return None;
@@ -204,12 +205,12 @@ pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<
             } else if x > xa.max(xb) {
                 1.0
             } else {
-                let (mut lo, mut hi) = (a, b);
-                while hi - lo > 1e-12 * (b - a) {
-                    let m = 0.5 * (lo + hi);
-                    let below = x_of(m).is_some_and(|xm| xm < x);
-                    if below == falls { hi = m } else { lo = m }
-                }
+                // 40 halvings: 2^-40 < 1e-12 of the support; fewer where the bracket reaches
+                // neighbouring floats first (a support 1e-15 wide hung at 1e-27).
+                let below = |m: f64| x_of(m).is_some_and(|xm| xm < x);
+                let mid = |lo: f64, hi: f64| 0.5 * (lo + hi);
+                let (lo, hi) =
+                    crate::locator::bisect_bracket((a, b), 40, mid, |m| below(m) != falls);
                 let f = u.cdf(0.5 * (lo + hi));
                 if falls { 1.0 - f } else { f }
             };

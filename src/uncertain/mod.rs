@@ -188,7 +188,14 @@ impl Uncertain {
             Uncertain::Normal { mean, sd } => {
                 // Truncated at 0: the untruncated CDF's share above 0 is rescaled to [0, 1].
                 let below = std_normal_cdf(-mean / sd);
-                (mean + sd * std_normal_quantile(below + p * (1.0 - below))).max(0.0)
+                // Above the median, by the upper tail (1 - p)(1 - below): below + p (1 - below)
+                // loses the tail's digits near p = 1 and can round to 1 (an infinite quantile:
+                // normal(0.05,0.05) was refused as reaching inf).
+                let z = match p <= 0.5 {
+                    true => std_normal_quantile(below + p * (1.0 - below)),
+                    false => -std_normal_quantile((1.0 - p) * (1.0 - below)),
+                };
+                (mean + sd * z).max(0.0)
             }
             Uncertain::LogNormal { median, sigma } => {
                 median * (sigma * std_normal_quantile(p)).exp()
