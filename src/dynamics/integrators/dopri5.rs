@@ -129,13 +129,13 @@ impl StiffnessTest {
     }
 }
 
-struct Dense<'a> {
+struct Dense<'a, const N: usize> {
     t0: f64,
     h: f64,
-    r: &'a [Vec<f64>; 5],
+    r: &'a [[f64; N]; 5],
 }
 
-impl DenseStep for Dense<'_> {
+impl<const N: usize> DenseStep for Dense<'_, N> {
     fn t_start(&self) -> f64 {
         self.t0
     }
@@ -154,22 +154,22 @@ impl DenseStep for Dense<'_> {
 
 impl Dopri5 {
     /// Integrates from (t0, y0) to t_end; `y0` holds the last accepted state on return.
-    pub fn integrate<S: OdeSystem + ?Sized>(
+    pub fn integrate<const N: usize, S: OdeSystem<N> + ?Sized>(
         &self,
         sys: &S,
         t0: f64,
-        y0: &mut [f64],
+        y0: &mut [f64; N],
         t_end: f64,
         tol: &Tolerances,
         obs: &mut dyn Observer,
     ) -> (Outcome, Stats) {
-        let n = sys.dim();
+        let n = N;
         let mut st = Stats::default();
-        let mut k: [Vec<f64>; 7] = std::array::from_fn(|_| vec![0.0; n]);
-        let mut r: [Vec<f64>; 5] = std::array::from_fn(|_| vec![0.0; n]);
-        let mut ys = vec![0.0; n];
-        let mut y1 = vec![0.0; n];
-        let mut err = vec![0.0; n];
+        let mut k = [[0.0; N]; 7];
+        let mut r = [[0.0; N]; 5];
+        let mut ys = [0.0; N];
+        let mut y1 = [0.0; N];
+        let mut err = [0.0; N];
         sys.rhs(t0, y0, &mut k[0]);
         st.rhs_evals += 1;
         let mut h = initial_step(sys, t0, y0, &k[0], 5.0, tol, &mut st.rhs_evals);
@@ -184,7 +184,7 @@ impl Dopri5 {
                 Err(end) => return (end, lp.stats),
             };
             let t = lp.t;
-            let stage = |ys: &mut [f64], k: &[Vec<f64>; 7], coef: &[(usize, f64)]| {
+            let stage = |ys: &mut [f64; N], k: &[[f64; N]; 7], coef: &[(usize, f64)]| {
                 for i in 0..n {
                     ys[i] = y0[i] + h * coef.iter().map(|&(j, a)| a * k[j][i]).sum::<f64>();
                 }
