@@ -84,11 +84,17 @@ pub enum Failure {
     /// The step controller asked for a step of `h_s` s (or NaN) at `t_s`, too small to advance
     /// the time in floating point.
     StepSizeTooSmall { t_s: f64, h_s: f64 },
-    /// DOPRI5's stiffness test (Hairer's: h * |lambda| estimated from the last two stages
-    /// stayed above 3.25 for 15 accepted steps in a row) stopped it at `t_s` after `steps`
-    /// accepted steps: the step size is held at the explicit method's stability limit, so the
-    /// run would grind on to its step limit. An implicit method is built for this.
-    Stiff { t_s: f64, steps: u64 },
+    /// DOPRI5 stopped at `t_s` after `steps` accepted steps because it could not finish within
+    /// its step budget: Hairer's stiffness test (h * |lambda| estimated from the last two
+    /// stages stayed above 3.25 for 15 accepted steps in a row) found its step held at the
+    /// explicit method's stability limit, and at the pace held there it still needed at least
+    /// `steps_needed` steps (attempts), more than the budget had left. The run would have met
+    /// its step limit; this says so sooner. An implicit method is built for this.
+    Stiff {
+        t_s: f64,
+        steps: u64,
+        steps_needed: u64,
+    },
     /// The nonsmooth method found no contact impulses that obey the contact laws at `t_s`
     /// although the drive could give way.
     NoConsistentContact { t_s: f64 },
@@ -112,10 +118,15 @@ impl std::fmt::Display for Failure {
             Failure::StepLimit { t_s, steps } => {
                 write!(f, "step limit of {steps} reached at t = {t_s:.4} s")
             }
-            Failure::Stiff { t_s, steps } => write!(
+            Failure::Stiff {
+                t_s,
+                steps,
+                steps_needed,
+            } => write!(
                 f,
                 "the problem is stiff at t = {t_s:.4} s: the explicit method's step is held at \
-                 its stability limit (stopped after {steps} steps)"
+                 its stability limit, where it needs at least {steps_needed} more steps, more \
+                 than its step limit leaves (stopped after {steps} steps)"
             ),
             Failure::StepSizeTooSmall { t_s, h_s } => {
                 write!(f, "step size {h_s:.3e} s too small at t = {t_s:.4} s")

@@ -256,22 +256,96 @@ impl OdeSystem<1> for StiffCosine {
     }
 }
 
-/// Regression (issue 20, item 8): DOPRI5 ground on a stiff problem to its step limit. Hairer's
-/// stiffness test stops it once its pace cannot reach the end within the budget (10 s needs
-/// about 3e6 steps at the stability limit, the budget is 1e6), soon after the first test
-/// at 1000 steps, as `Failure::Stiff`; a short stiff run within the budget still finishes
-/// (Robertson above), and RADAU5 solves this one.
+/// DOPRI5 ground on a stiff problem to its step limit. Hairer's stiffness test stops it once
+/// its pace cannot reach the end within the budget (10 s needs about 3e6 steps at the
+/// stability limit, the budget is 1e6), soon after the first test at 1000 steps, as
+/// `Failure::Stiff`; a short stiff run within the budget still finishes (Robertson above), and
+/// RADAU5 solves this one.
 #[test]
 fn dopri5_stops_early_on_a_stiff_problem_it_cannot_finish() {
     let (t, mut y, mut z) = (tol(1e-6, 1e-9), [1.0], [1.0]);
     let (out, st) = Dopri5.integrate(&StiffCosine, 0.0, &mut y, 10.0, &t, &mut Nothing);
     match out {
-        Outcome::Failed(Failure::Stiff { t_s, steps }) => {
+        Outcome::Failed(Failure::Stiff {
+            t_s,
+            steps,
+            steps_needed,
+        }) => {
             assert!(steps < 1100 && t_s > 0.0 && t_s < 0.01, "{t_s} {steps}");
+            assert!(
+                steps_needed > t.max_steps - st.steps - st.rejected,
+                "{steps_needed}"
+            );
         }
         other => panic!("expected Failure::Stiff, got {other:?} after {st:?}"),
     }
     let (out, _) = Radau5.integrate(&StiffCosine, 0.0, &mut z, 10.0, &t, &mut Nothing);
     assert_eq!(out, Outcome::Finished);
     assert_close("cos(10)", &z, &[10f64.cos()], 1e-5, 1e-8);
+}
+
+/// y' = -lambda(t) (y - cos t) with lambda = 1e5 (1 + t / 1 s): stiff for an explicit method,
+/// whose step is held at h lambda(t) ~ 3.3, and ever stiffer, as a contact pressed ever harder.
+/// Reaching t needs about 1e5 (t + t^2 / 2) / 3.3 steps.
+struct StiffRamp;
+impl OdeSystem<1> for StiffRamp {
+    fn rhs(&self, t: f64, y: &[f64; 1], dy: &mut [f64; 1]) {
+        dy[0] = -1e5 * (1.0 + t) * (y[0] - t.cos());
+    }
+    fn jacobian(&self, t: f64, _y: &[f64; 1], j: &mut [[f64; 1]; 1]) {
+        j[0][0] = -1e5 * (1.0 + t);
+    }
+}
+
+/// DOPRI5's `Stiff` is a promise: it is said only where the run could not have finished within
+/// its step budget. Regression: the verdict extrapolated a shrinking step as decaying
+/// exponentially and stopped runs that would have finished (`solve --model dynamics --method
+/// dopri5 --mu 0.35 --omega 10 --stiffness 1e7` after 8,014 of the 556,074 steps it needed of
+/// 2e6). Here 6 s take about 7.3e5 steps at the stability limit: with a budget of 1e6 the run
+/// finishes (the exponential extrapolation said 1.2e7 steps at the first test), with 5e5 it
+/// stops as stiff before its limit, and the steps it says it still needs are no more than it
+/// would have taken.
+#[test]
+fn dopri5_says_stiff_only_when_the_budget_cannot_be_met() {
+    let budget = |max_steps| Tolerances {
+        max_steps,
+        ..tol(1e-6, 1e-9)
+    };
+    let mut y = [1.0];
+    let (out, st) = Dopri5.integrate(
+        &StiffRamp,
+        0.0,
+        &mut y,
+        6.0,
+        &budget(1_000_000),
+        &mut Nothing,
+    );
+    assert_eq!(out, Outcome::Finished, "{st:?}");
+    let taken = st.steps + st.rejected;
+    eprintln!("6 s of the stiff ramp in {taken} steps");
+    assert!(taken > 500_000 && taken < 1_000_000, "{st:?}");
+    assert_close("y(6)", &y, &[6f64.cos()], 1e-5, 1e-8);
+
+    let mut y = [1.0];
+    let small = budget(500_000);
+    let (out, st) = Dopri5.integrate(&StiffRamp, 0.0, &mut y, 6.0, &small, &mut Nothing);
+    match out {
+        Outcome::Failed(Failure::Stiff {
+            t_s, steps_needed, ..
+        }) => {
+            let used = st.steps + st.rejected;
+            assert!(used < small.max_steps, "{st:?}");
+            assert!(
+                steps_needed > small.max_steps - used,
+                "{steps_needed} {st:?}"
+            );
+            // No more than the finished run took from where this one stopped.
+            assert!(
+                used + steps_needed <= taken,
+                "{used} + {steps_needed} vs {taken}"
+            );
+            eprintln!("stopped as stiff at t = {t_s:.3} s after {used} of 500000 steps");
+        }
+        other => panic!("expected Failure::Stiff, got {other:?} after {st:?}"),
+    }
 }
