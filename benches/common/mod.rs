@@ -52,3 +52,17 @@ pub fn time_process(cmd: &mut Command) -> (f64, f64) {
     );
     (wall, cpu() - c0)
 }
+
+/// Wall time in s of one `jamchart render SCENES...` (all built-in scenes when `scenes` is
+/// empty) as a whole process drawing into `out`: `render fig3` is the unit the speed goals are
+/// ratios of.
+#[allow(dead_code)] // not every benchmark compares with it
+pub fn render_s(scenes: &[&str], out: &std::path::Path) -> f64 {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_jamchart"));
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("charts");
+    cmd.arg("render")
+        .args(scenes)
+        .args(["-q", "--out"])
+        .arg(out);
+    time_process(cmd.arg("--scenes-dir").arg(dir)).0
+}
