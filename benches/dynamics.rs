@@ -6,6 +6,11 @@
 //! with the verification run that `solve` does by default (which also runs the rigid contact for
 //! the model's uncertainty). Run: `cargo bench --bench dynamics`; the nonsmooth method alone:
 //! `cargo bench --bench dynamics -- nonsmooth`.
+//!
+//! First, `jamchart render` of every built-in scene against `jamchart render fig3` (goal: at most
+//! 12x), whole processes, interleaved round by round so that the machine's load falls on both
+//! alike: the median of the rounds' ratios. `cargo bench --bench dynamics -- render` runs only
+//! that.
 
 mod common;
 
@@ -30,7 +35,30 @@ fn median_ms(scene: &SceneParams, p: &DynamicsParams) -> f64 {
     })
 }
 
+/// `render` of every built-in scene against `render fig3`: medians of 7 interleaved rounds.
+fn render_ratio() {
+    const ROUNDS: usize = 7;
+    let out = tempfile::tempdir().expect("a temporary folder");
+    let (mut all, mut fig3) = (Vec::new(), Vec::new());
+    for _ in 0..ROUNDS {
+        all.push(common::render_s(&[], out.path()));
+        fig3.push(common::render_s(&["fig3"], out.path()));
+    }
+    let ratios = all.iter().zip(&fig3).map(|(a, b)| a / b).collect();
+    println!(
+        "render (every scene) {:.0} ms, render fig3 {:.1} ms: ratio {:.1}x (goal at most 12x), \
+         medians of {ROUNDS} interleaved rounds, wall time",
+        common::median(all) * 1e3,
+        common::median(fig3) * 1e3,
+        common::median(ratios)
+    );
+}
+
 fn main() {
+    render_ratio();
+    if std::env::args().any(|a| a == "render") {
+        return;
+    }
     nonsmooth();
     // `cargo bench --bench dynamics -- nonsmooth` stops here.
     if std::env::args().any(|a| a == "nonsmooth") {

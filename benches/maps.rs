@@ -12,6 +12,13 @@
 //! simulation's cost printed beside them.
 //!
 //! `cargo bench --bench maps -- min-norm` measures only the rows whose label contains the word.
+//!
+//! Two goals are ratios measured in the same run, interleaved round by round so that the
+//! machine's load falls on both sides alike (medians of the rounds' ratios): the min-norm
+//! 400 x 400 map by columns against a whole `jamchart render fig3` (goal: at most 20x), and the
+//! nonsmooth method's force drive against its motion drive per cell (goal: at most 1.5x),
+//! beside the step problems each solves per cell, a count the load does not disturb.
+//! `cargo bench --bench maps -- goals` runs only these.
 
 mod common;
 
@@ -42,7 +49,93 @@ fn dynamics(method: Method, drive: Drive) -> ModelSpec {
     }
 }
 
+/// Rounds of each interleaved ratio.
+const ROUNDS: usize = 7;
+
+/// The min-norm 400 x 400 map by columns (all threads) against `render fig3`, and the nonsmooth
+/// force drive against the motion drive per cell, each a median of `ROUNDS` interleaved ratios.
+fn goals() {
+    let out = tempfile::tempdir().expect("a temporary folder");
+    let spec = ModelSpec::MinNorm(MinNormSettings::default());
+    let grid = map(400);
+    let min_norm_map = || {
+        let cells = grid.map_columns(|column| jamchart::solve_column(&spec, column));
+        cells.expect("every cell answers").values
+    };
+    let programs: u32 = min_norm_map()
+        .iter()
+        .map(|s| match &s.detail {
+            Detail::MinNorm(m) => m.solves,
+            _ => 0,
+        })
+        .sum();
+    let (mut map_s, mut fig3_s) = (Vec::new(), Vec::new());
+    for _ in 0..ROUNDS {
+        map_s.push(median_s(1, || {
+            std::hint::black_box(min_norm_map());
+        }));
+        fig3_s.push(common::render_s(&["fig3"], out.path()));
+    }
+    let ratios = map_s.iter().zip(&fig3_s).map(|(a, b)| a / b).collect();
+    println!(
+        "min-norm 400 x 400 map by columns ({:.2} programs a cell): {:.3} s; render fig3 {:.1} ms; \
+         ratio {:.1}x (goal at most 20x), medians of {ROUNDS} interleaved rounds",
+        f64::from(programs) / (400.0 * 400.0),
+        common::median(map_s),
+        common::median(fig3_s) * 1e3,
+        common::median(ratios),
+    );
+
+    // The nonsmooth method, force drive against motion drive, per cell of the design map.
+    let k = 25;
+    let grid = map(k);
+    let per_cell = |drive: Drive| {
+        let spec = dynamics(Method::Nonsmooth, drive);
+        let mut solves = 0;
+        let s = median_s(1, || {
+            let cells = grid
+                .map(|p| jamchart::solve(&spec, p))
+                .expect("every cell answers");
+            solves = cells
+                .values
+                .iter()
+                .map(|s| match &s.detail {
+                    Detail::Dynamics(d) => d.rhs_evals,
+                    _ => 0,
+                })
+                .sum::<u64>();
+        });
+        (s / (k * k) as f64, solves as f64 / (k * k) as f64)
+    };
+    let (mut force, mut motion) = (Vec::new(), Vec::new());
+    for _ in 0..ROUNDS {
+        force.push(per_cell(Drive::Force));
+        motion.push(per_cell(Drive::Motion));
+    }
+    let (force_solves, motion_solves) = (force[0].1, motion[0].1);
+    let ratios = force.iter().zip(&motion).map(|(f, m)| f.0 / m.0).collect();
+    println!(
+        "nonsmooth per cell ({k} x {k} design map, all threads): force drive {:.1} us, motion \
+         drive {:.1} us, ratio {:.2}x (goal at most 1.5x), medians of {ROUNDS} interleaved \
+         rounds; step problems a cell: force {force_solves:.0}, motion {motion_solves:.0} \
+         ({:.2}x)",
+        common::median(force.iter().map(|f| f.0).collect()) * 1e6,
+        common::median(motion.iter().map(|m| m.0).collect()) * 1e6,
+        common::median(ratios),
+        force_solves / motion_solves,
+    );
+}
+
 fn main() {
+    // A word after `--` keeps the rows whose label contains it (the simulations take minutes);
+    // `goals` runs the interleaved ratios alone.
+    let filter = std::env::args().skip(1).find(|a| !a.starts_with('-'));
+    if filter.as_deref().is_none_or(|f| f == "goals") {
+        goals();
+    }
+    if filter.as_deref() == Some("goals") {
+        return;
+    }
     let threads = rayon::current_num_threads();
     let one = common::one_thread_pool();
     // (label, model, cells per axis sampled, cells per axis of the full map, by columns)
@@ -72,8 +165,6 @@ fn main() {
             rows.push((label, dynamics(method, drive), k, 100, false));
         }
     }
-    // A word after `--` keeps the rows whose label contains it (the simulations take minutes).
-    let filter = std::env::args().skip(1).find(|a| !a.starts_with('-'));
     println!("maps by every model (mu 0.1-0.8 x F 20-2000 N), median of 3 runs:");
     for (label, spec, k, n, by_columns) in rows {
         if filter.as_ref().is_some_and(|f| !label.contains(f.as_str())) {

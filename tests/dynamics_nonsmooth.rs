@@ -420,3 +420,43 @@ fn the_step_figures_of_the_nonsmooth_docs() {
     );
     assert!(slow_fine < 5e-5, "{slow_fine}");
 }
+
+/// Regression: the motion drive judged the palm's reach at the end of the step in which the
+/// palm locked up, not at the lock-up located inside that step. `solve --model dynamics
+/// --method nonsmooth --mu 0.15 --palm-length 66.8` said `beyond_reach`, while on a long palm the
+/// same push locks up at x = 66.665 mm with the contact 66.67 mm from the hinge, on the 66.8 mm
+/// palm (the step that locked up ends up to a step's travel, 0.24 mm, further out). A palm that
+/// reaches the lock-up jams there; one that ends short of it is still `beyond_reach`.
+#[test]
+fn a_lock_up_on_the_palm_jams_even_when_its_step_ends_past_the_palm() {
+    let scene = SceneParams::default().with_mu(0.15);
+    let p = nonsmooth(Drive::Motion, 30.0);
+    let long = simulate(&scene, &p, None).unwrap();
+    let x_long = x_jam(&long);
+    let lock = long.lock_up.expect("a lock-up");
+    let theta = lock.theta_deg.to_radians();
+    let reach_mm = lock.x_mm * theta.cos() + scene.radius_mm * theta.sin();
+    assert!(reach_mm < 66.8, "the lock-up's contact at {reach_mm} mm");
+    // 0.05 mm either side of the lock-up's contact: the check at twice the step locks up within
+    // its own error of it (a few um), and says the same.
+    for palm_length_mm in [66.8, reach_mm + 0.05] {
+        let short = SceneParams {
+            palm_length_mm,
+            ..scene
+        };
+        let s = simulate(&short, &p, None).unwrap();
+        let x = x_jam(&s);
+        // Cruising stops a cruise short of the palm's end, so the steps before the lock-up
+        // differ a little from the long palm's.
+        assert!(
+            rel(x, x_long) < 1e-5,
+            "palm {palm_length_mm} mm: {x} vs {x_long}"
+        );
+    }
+    let shorter = SceneParams {
+        palm_length_mm: reach_mm - 0.05,
+        ..scene
+    };
+    let s = simulate(&shorter, &p, None).unwrap();
+    assert_eq!(s.status, JamStatus::BeyondReach, "{s:?}");
+}

@@ -99,3 +99,17 @@ pub fn instructions(cmd: &mut Command) -> Option<f64> {
     let line = err.lines().find(|l| l.contains("Collected :"))?;
     line.rsplit(':').next()?.trim().parse().ok()
 }
+
+/// Wall time in s of one `jamchart render SCENES...` (all built-in scenes when `scenes` is
+/// empty) as a whole process drawing into `out`: `render fig3` is the unit the speed goals are
+/// ratios of.
+#[allow(dead_code)] // not every benchmark compares with it
+pub fn render_s(scenes: &[&str], out: &std::path::Path) -> f64 {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_jamchart"));
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("charts");
+    cmd.arg("render")
+        .args(scenes)
+        .args(["-q", "--out"])
+        .arg(out);
+    time_process(cmd.arg("--scenes-dir").arg(dir)).0
+}

@@ -81,7 +81,7 @@ impl HeldWatch {
             self.until = None;
             return false;
         }
-        let delta = sys.evaluate(y, None).penetration;
+        let delta = sys.geometry(y).penetration;
         let window = (super::jam::CONFIRM_DEG.to_radians() / sys.omega)
             .max(2.0 * sys.impact.period_s(sys.mass, delta));
         t >= *self.until.get_or_insert(t + window)

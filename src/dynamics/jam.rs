@@ -180,10 +180,6 @@ impl<'a> JamDetector<'a> {
         }
     }
 
-    fn ratio_margin(&self, y: &[f64], ratio: f64) -> f64 {
-        y[2] - ratio * self.sys.geometric_speed(y[0])
-    }
-
     /// The confirmation window after a candidate at palm angle `theta`: 0.25 deg of palm turn, and
     /// two periods of the disc oscillating on the contact (a soft contact slows the disc below
     /// the threshold while it compresses, then throws it ahead); if the palm lost the disc since
@@ -284,14 +280,17 @@ impl Observer for JamDetector<'_> {
             self.touching_since = None;
         }
         let jam_ratio = rule.jam_ratio;
+        let geometry = sys.geometry(&y);
+        // How far the disc's speed lies above `ratio` of the geometric speed, in mm/s.
+        let margin = |ratio: f64| y[2] - ratio * geometry.geometric_speed;
         // The contact passes the palm's end before any jam: the disc is lost.
-        if self.jam.is_none() && sys.contact_distance(&y) > rule.palm_length {
+        if self.jam.is_none() && geometry.contact_distance > rule.palm_length {
             let t = first_root(step, t0, t1, |y| rule.palm_length - sys.contact_distance(y));
             self.beyond_reach = Some(instant(t));
             return Control::Stop(t);
         }
         if !self.armed {
-            self.armed = self.ratio_margin(&y, rule.arm_ratio) >= 0.0;
+            self.armed = margin(rule.arm_ratio) >= 0.0;
             // Held for good before it ever armed: the rigid statics end the run; its jam is at
             // the start, so `after_jam` counts from there.
             if let Some(v_rest) = rule.rest_speed
@@ -303,11 +302,11 @@ impl Observer for JamDetector<'_> {
             }
             return Control::Continue;
         }
-        if self.jam.is_none() && sys.evaluate(&y, None).penetration <= 0.0 {
+        if self.jam.is_none() && geometry.penetration <= 0.0 {
             self.separated = true;
         }
         if self.jam.is_none() {
-            if self.ratio_margin(&y, jam_ratio) < 0.0 {
+            if margin(jam_ratio) < 0.0 {
                 let t = first_root(step, t0, t1, |y| {
                     y[2] - jam_ratio * sys.geometric_speed(y[0])
                 });
@@ -317,7 +316,7 @@ impl Observer for JamDetector<'_> {
                 self.rest = None;
                 let mut at = [0.0; 3];
                 step.eval(t, &mut at);
-                let delta = sys.evaluate(&at, None).penetration;
+                let delta = sys.geometry(&at).penetration;
                 self.contact_period = sys.impact.period_s(sys.mass, delta);
                 self.bounced = self.contact_period <= 0.0;
             } else {
@@ -325,11 +324,9 @@ impl Observer for JamDetector<'_> {
             }
         }
         let jam = self.jam.expect("set above");
-        let forces = sys.evaluate(&y, None);
-        let penetration = forces.penetration;
-        let (elastic_push, _) = sys.impact.elastic(penetration);
+        let penetration = geometry.penetration;
         if !self.confirmed {
-            if self.ratio_margin(&y, rule.arm_ratio) >= 0.0 {
+            if margin(rule.arm_ratio) >= 0.0 {
                 // The disc recovered: it was slowed, not jammed.
                 self.jam = None;
                 self.stiction = None;
@@ -338,7 +335,7 @@ impl Observer for JamDetector<'_> {
                 return Control::Continue;
             }
             // The whole contact force, which the force drive's limit senses.
-            self.push_after_jam = self.push_after_jam.max(forces.normal);
+            self.push_after_jam = self.push_after_jam.max(sys.evaluate(&y, None).normal);
         }
         if self.stiction.is_none() && y[2] < rule.v_stiction {
             let a = t0.max(jam.t);
@@ -371,6 +368,7 @@ impl Observer for JamDetector<'_> {
                 .is_some_and(|t| t1 >= t + self.confirm_time(jam.theta))
         {
             self.confirmed = true;
+            let (elastic_push, _) = sys.impact.elastic(penetration);
             self.at_confirmation = Some((y[0], elastic_push));
         }
         let at_rest = rule.rest_speed.is_none() || self.rest.is_some();

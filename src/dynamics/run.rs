@@ -22,7 +22,7 @@ pub(super) fn run_once(
     }
     let sys = System::new(scene, params);
     let theta0 = scene.start_angle_deg.to_radians();
-    let mut y = vec![theta0, sys.touching_x(theta0), 0.0];
+    let mut y = [theta0, sys.touching_x(theta0), 0.0];
     let t_end = theta0 / sys.omega;
     let tol = Tolerances {
         rtol: params.integrator.rtol,

@@ -80,6 +80,17 @@ pub struct Forces {
     pub accel: f64,
 }
 
+/// The palm's geometry at one state (see [`System::geometry`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Geometry {
+    /// delta in mm (negative: the palm is clear of the disc).
+    pub penetration: f64,
+    /// s_B in mm.
+    pub contact_distance: f64,
+    /// The disc speed a rigid contact would impose, [`System::geometric_speed`], in mm/s.
+    pub geometric_speed: f64,
+}
+
 type Grad = [f64; 3];
 
 fn axpy(a: f64, x: &Grad, y: &Grad) -> Grad {
@@ -137,23 +148,60 @@ impl System {
     /// which is r omega / (2 sin^2(theta/2)) for h = 0.
     pub fn geometric_speed(&self, theta: f64) -> f64 {
         let (s, c) = theta.sin_cos();
-        self.omega * (self.radius + (self.radius + self.offset) * c) / (s * s)
+        self.geometric_speed_at(s, c)
     }
 
     /// Contact distance s_B from the hinge along the palm, in mm, for state `y`.
     pub fn contact_distance(&self, y: &[f64]) -> f64 {
         let (s, c) = y[0].sin_cos();
-        y[1] * c + self.radius * s
+        self.contact_distance_at(y[1], s, c)
+    }
+
+    /// s_B = x cos theta + r sin theta in mm, given sin theta and cos theta.
+    fn contact_distance_at(&self, x: f64, s: f64, c: f64) -> f64 {
+        x * c + self.radius * s
+    }
+
+    /// delta = r + h + r cos theta - x sin theta in mm, given sin theta and cos theta.
+    fn penetration_at(&self, x: f64, s: f64, c: f64) -> f64 {
+        let (r, h) = (self.radius, self.offset);
+        r + h + r * c - x * s
+    }
+
+    /// [`System::geometric_speed`] given sin theta and cos theta.
+    fn geometric_speed_at(&self, s: f64, c: f64) -> f64 {
+        self.omega * (self.radius + (self.radius + self.offset) * c) / (s * s)
+    }
+
+    /// The palm's geometry at state `y`, from one sin_cos: what the jam reading looks at after
+    /// every step (the forces cost a `powf` more and are not needed there).
+    pub fn geometry(&self, y: &[f64]) -> Geometry {
+        let (s, c) = y[0].sin_cos();
+        Geometry {
+            penetration: self.penetration_at(y[1], s, c),
+            contact_distance: self.contact_distance_at(y[1], s, c),
+            geometric_speed: self.geometric_speed_at(s, c),
+        }
     }
 
     /// Forces at state `y`, and, if `jac` is given, the Jacobian d f / d y (row-major 3x3).
     pub fn evaluate(&self, y: &[f64], jac: Option<&mut [f64]>) -> Forces {
+        // Two copies of the body: the one without a Jacobian drops the gradients' arithmetic,
+        // about half of it (the right-hand side of every step of every integrator).
+        match jac {
+            Some(j) => self.evaluate_inline(y, Some(j)),
+            None => self.evaluate_inline(y, None),
+        }
+    }
+
+    #[inline(always)]
+    fn evaluate_inline(&self, y: &[f64], jac: Option<&mut [f64]>) -> Forces {
         let (theta, x, v) = (y[0], y[1], y[2]);
         let (s, c) = theta.sin_cos();
         let (r, h) = (self.radius, self.offset);
-        let delta = r + h + r * c - x * s;
+        let delta = self.penetration_at(x, s, c);
         let g_delta: Grad = [-(x * c + r * s), -s, 0.0];
-        let s_b = self.contact_distance(y);
+        let s_b = self.contact_distance_at(x, s, c);
         let g_sb: Grad = [r * c - x * s, c, 0.0];
 
         let elastic = self.impact.elastic(delta);
@@ -225,6 +273,7 @@ impl System {
     /// unique; it is found to round-off ([`rate_root`]), and its gradient by the implicit
     /// function theorem, d theta_dot (1 + omega w' c s_B) = omega w' dN|theta_dot.
     #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
     fn force_drive(
         &self,
         (el, d_el): (f64, f64),
@@ -373,15 +422,12 @@ fn floats_away(x: f64, n: i64) -> f64 {
     f64::from_bits(x.to_bits().wrapping_add_signed(n))
 }
 
-impl OdeSystem for System {
-    fn dim(&self) -> usize {
-        3
-    }
-    fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+impl OdeSystem<3> for System {
+    fn rhs(&self, _t: f64, y: &[f64; 3], dy: &mut [f64; 3]) {
         System::rhs(self, y, dy);
     }
-    fn jacobian(&self, _t: f64, y: &[f64], jac: &mut [f64]) {
-        self.evaluate(y, Some(jac));
+    fn jacobian(&self, _t: f64, y: &[f64; 3], jac: &mut [[f64; 3]; 3]) {
+        self.evaluate(y, Some(jac.as_flattened_mut()));
     }
 }
 

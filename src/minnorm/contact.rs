@@ -124,15 +124,16 @@ fn fmt3(v: [f64; 3]) -> String {
     format!("({}, {}, {})", v[0], v[1], v[2])
 }
 
-/// Normalises `v`; the error names `key` when it is not finite or has no length.
-fn unit(key: &str, v: [f64; 3], space: Space) -> Result<Vector3<f64>> {
+/// Normalises `v`; the error names the key `key()` when it is not finite or has no length
+/// (the key is written only then: a grid lowers millions of valid problems).
+fn unit(key: impl FnOnce() -> String, v: [f64; 3], space: Space) -> Result<Vector3<f64>> {
     let vec = Vector3::from(v);
     if !v.iter().all(|c| c.is_finite()) {
-        return Err(Error::invalid(key, fmt3(v), "components must be finite"));
+        return Err(Error::invalid(&key(), fmt3(v), "components must be finite"));
     }
     if space == Space::Planar && v[2] != 0.0 {
         return Err(Error::invalid(
-            key,
+            &key(),
             fmt3(v),
             "a planar problem lies in z = 0",
         ));
@@ -143,20 +144,25 @@ fn unit(key: &str, v: [f64; 3], space: Space) -> Result<Vector3<f64>> {
         Ok(u)
     } else {
         Err(Error::invalid(
-            key,
+            &key(),
             fmt3(v),
             "a direction needs a non-zero length",
         ))
     }
 }
 
-fn point(key: &str, p: [f64; 3], space: Space) -> Result<Vector3<f64>> {
+/// The point `p`; the error names the key `key()` when it is not finite or leaves the plane.
+fn point(key: impl FnOnce() -> String, p: [f64; 3], space: Space) -> Result<Vector3<f64>> {
     if !p.iter().all(|c| c.is_finite()) {
-        return Err(Error::invalid(key, fmt3(p), "coordinates must be finite"));
+        return Err(Error::invalid(
+            &key(),
+            fmt3(p),
+            "coordinates must be finite",
+        ));
     }
     if space == Space::Planar && p[2] != 0.0 {
         return Err(Error::invalid(
-            key,
+            &key(),
             fmt3(p),
             "a planar problem lies in z = 0",
         ));
@@ -240,8 +246,12 @@ impl ContactProblem {
                 "a contact problem needs at least one contact",
             ));
         }
-        let load_f = point("load.force_n", self.load.force_n, Space::Spatial)?;
-        let load_m = point("load.moment_nmm", self.load.moment_nmm, Space::Spatial)?;
+        let load_f = point(|| "load.force_n".into(), self.load.force_n, Space::Spatial)?;
+        let load_m = point(
+            || "load.moment_nmm".into(),
+            self.load.moment_nmm,
+            Space::Spatial,
+        )?;
         if space == Space::Planar && (load_f.z != 0.0 || load_m.x != 0.0 || load_m.y != 0.0) {
             return Err(Error::invalid(
                 "load",
@@ -259,8 +269,12 @@ impl ContactProblem {
         let mut next = 0;
         let mut prescribed = Vec::new();
         for (i, c) in self.contacts.iter().enumerate() {
-            let p = point(&format!("contacts[{i}].position_mm"), c.position_mm, space)?;
-            let n = unit(&format!("contacts[{i}].normal"), c.normal, space)?;
+            let p = point(
+                || format!("contacts[{i}].position_mm"),
+                c.position_mm,
+                space,
+            )?;
+            let n = unit(|| format!("contacts[{i}].normal"), c.normal, space)?;
             if !(c.mu.is_finite() && c.mu >= 0.0) {
                 return Err(Error::invalid(
                     &format!("contacts[{i}].mu"),
@@ -302,13 +316,13 @@ impl ContactProblem {
                     position_mm,
                     direction,
                 } => {
-                    let p = point(&format!("joints[{k}].position_mm"), position_mm, space)?;
-                    let d = unit(&format!("joints[{k}].direction"), direction, space)?;
+                    let p = point(|| format!("joints[{k}].position_mm"), position_mm, space)?;
+                    let d = unit(|| format!("joints[{k}].direction"), direction, space)?;
                     positions.push(p);
                     (d, p.cross(&d), false)
                 }
                 Joint::Moment { axis } => {
-                    let a = unit(&format!("joints[{k}].axis"), axis, Space::Spatial)?;
+                    let a = unit(|| format!("joints[{k}].axis"), axis, Space::Spatial)?;
                     if space == Space::Planar && (a.x != 0.0 || a.y != 0.0) {
                         return Err(Error::invalid(
                             &format!("joints[{k}].axis"),

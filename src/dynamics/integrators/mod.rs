@@ -13,7 +13,6 @@
 //! [`Outcome`], never a panic.
 
 mod dopri5;
-mod linalg;
 mod radau5;
 #[cfg(test)]
 mod tests;
@@ -23,14 +22,17 @@ pub use radau5::Radau5;
 
 use serde::Serialize;
 
-/// A system y' = f(t, y) of `dim()` equations with its Jacobian.
-pub trait OdeSystem {
-    /// Number of equations.
-    fn dim(&self) -> usize;
+/// A system y' = f(t, y) of `N` equations with its Jacobian.
+///
+/// The size is a constant of the type, so that every vector and matrix of a step lives on the
+/// stack in arrays and nalgebra's fixed-size types: our systems have 1 to 4 equations, and a
+/// heap allocation per step cost more than the step's algebra.
+pub trait OdeSystem<const N: usize> {
     /// Writes f(t, y) into `dy`.
-    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]);
-    /// Writes d f / d y (row-major, dim x dim) into `jac`; only implicit methods call it.
-    fn jacobian(&self, t: f64, y: &[f64], jac: &mut [f64]);
+    fn rhs(&self, t: f64, y: &[f64; N], dy: &mut [f64; N]);
+    /// Writes d f / d y into `jac` (row i holds the gradient of f_i); only implicit methods
+    /// call it.
+    fn jacobian(&self, t: f64, y: &[f64; N], jac: &mut [[f64; N]; N]);
 }
 
 /// Error control and limits shared by the methods.
@@ -82,11 +84,17 @@ pub enum Failure {
     /// The step controller asked for a step of `h_s` s (or NaN) at `t_s`, too small to advance
     /// the time in floating point.
     StepSizeTooSmall { t_s: f64, h_s: f64 },
-    /// DOPRI5's stiffness test (Hairer's: h * |lambda| estimated from the last two stages
-    /// stayed above 3.25 for 15 accepted steps in a row) stopped it at `t_s` after `steps`
-    /// accepted steps: the step size is held at the explicit method's stability limit, so the
-    /// run would grind on to its step limit. An implicit method is built for this.
-    Stiff { t_s: f64, steps: u64 },
+    /// DOPRI5 stopped at `t_s` after `steps` accepted steps because it could not finish within
+    /// its step budget: Hairer's stiffness test (h * |lambda| estimated from the last two
+    /// stages stayed above 3.25 for 15 accepted steps in a row) found its step held at the
+    /// explicit method's stability limit, and at the pace held there it still needed at least
+    /// `steps_needed` steps (attempts), more than the budget had left. The run would have met
+    /// its step limit; this says so sooner. An implicit method is built for this.
+    Stiff {
+        t_s: f64,
+        steps: u64,
+        steps_needed: u64,
+    },
     /// The nonsmooth method found no contact impulses that obey the contact laws at `t_s`
     /// although the drive could give way.
     NoConsistentContact { t_s: f64 },
@@ -112,10 +120,15 @@ impl std::fmt::Display for Failure {
             Failure::StepLimit { steps, .. } => {
                 write!(f, "step limit of {steps} reached at t = {t_s:.4} s")
             }
-            Failure::Stiff { steps, .. } => write!(
+            Failure::Stiff {
+                steps,
+                steps_needed,
+                ..
+            } => write!(
                 f,
                 "the problem is stiff at t = {t_s:.4} s: the explicit method's step is held at \
-                 its stability limit (stopped after {steps} steps)"
+                 its stability limit, where it needs at least {steps_needed} more steps, more \
+                 than its step limit leaves (stopped after {steps} steps)"
             ),
             Failure::StepSizeTooSmall { h_s, .. } => {
                 write!(f, "step size {h_s:.3e} s too small at t = {t_s:.4} s")
@@ -210,13 +223,13 @@ impl StepLoop {
     /// observer and moves (t, `y`) to its end. Returns the next step, `h_new` capped at `h` after
     /// a rejection (a step size that just failed does not grow at once), or `Err(Stopped)` if the
     /// observer stops the integration.
-    pub fn accept_step(
+    pub fn accept_step<const N: usize>(
         &mut self,
         dense: &dyn DenseStep,
         h: f64,
         h_new: f64,
-        y1: &[f64],
-        y: &mut [f64],
+        y1: &[f64; N],
+        y: &mut [f64; N],
         obs: &mut dyn Observer,
     ) -> Result<f64, Outcome> {
         let h_new = if self.last_rejected {
@@ -228,7 +241,7 @@ impl StepLoop {
         self.stats.steps += 1;
         let control = obs.on_step(dense);
         self.t += h;
-        y.copy_from_slice(y1);
+        *y = *y1;
         match control {
             Control::Stop(t) => Err(Outcome::Stopped { t }),
             Control::Continue => Ok(h_new),
@@ -251,11 +264,11 @@ pub(crate) fn scaled_norm(e: &[f64], a: &[f64], b: &[f64], tol: &Tolerances) -> 
 }
 
 /// Hairer's starting step guess for a method of order `order`.
-pub(crate) fn initial_step<S: OdeSystem + ?Sized>(
+pub(crate) fn initial_step<const N: usize, S: OdeSystem<N> + ?Sized>(
     sys: &S,
     t0: f64,
-    y0: &[f64],
-    f0: &[f64],
+    y0: &[f64; N],
+    f0: &[f64; N],
     order: f64,
     tol: &Tolerances,
     evals: &mut u64,
@@ -268,11 +281,11 @@ pub(crate) fn initial_step<S: OdeSystem + ?Sized>(
         0.01 * d0 / d1
     };
     h0 = h0.min(tol.max_step);
-    let y1: Vec<f64> = y0.iter().zip(f0).map(|(y, f)| y + h0 * f).collect();
-    let mut f1 = vec![0.0; y0.len()];
+    let y1: [f64; N] = std::array::from_fn(|i| y0[i] + h0 * f0[i]);
+    let mut f1 = [0.0; N];
     sys.rhs(t0 + h0, &y1, &mut f1);
     *evals += 1;
-    let df: Vec<f64> = f1.iter().zip(f0).map(|(a, b)| a - b).collect();
+    let df: [f64; N] = std::array::from_fn(|i| f1[i] - f0[i]);
     let d2 = scaled_norm(&df, y0, y0, tol) / h0;
     let dm = d1.max(d2);
     let h1 = if dm <= 1e-15 {

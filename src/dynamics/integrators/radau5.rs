@@ -6,12 +6,16 @@
 //! `Z = h (A (x) I) F(Z)`. The simplified Newton iteration uses the Jacobian J at the step start:
 //! `(I - h A (x) J) dZ = -Z + h (A (x) I) F(Z)`, a dense 3n x 3n system (RADAU5 diagonalises A
 //! into one real and one complex n x n system; at n <= 3 the direct LU is as cheap and simpler).
+//! Every vector and matrix of a step has its size in its type (nalgebra's fixed-size matrices,
+//! 3n given by [`StageDim`]), so a step allocates nothing.
 //! The error estimate is RADAU5's
 //! `err = (I - h g0 J)^-1 [g0 h f(y_0) + g0 (e_1 z_1 + e_2 z_2 + e_3 z_3)]`, refined once with
 //! f(y_0 + err) after a rejection. As in RADAU5 the user's tolerances are mapped to
 //! rtol' = 0.1 rtol^(2/3), atol' = rtol' atol / rtol, because the estimate is of lower order.
 
-use super::linalg::Lu;
+use nalgebra::allocator::Allocator;
+use nalgebra::{Const, DefaultAllocator, DimMin, DimName, OMatrix, OVector, SMatrix, SVector};
+
 use super::{
     DenseStep, Observer, OdeSystem, Outcome, Stats, StepLoop, Tolerances, initial_step, scaled_norm,
 };
@@ -60,17 +64,49 @@ fn coeffs() -> Coeffs {
     }
 }
 
+/// The size 3n of the stacked stage system of n equations, as a nalgebra dimension (a type: the
+/// stable compiler cannot compute 3n from a generic n).
+pub trait StageDim {
+    /// 3n.
+    type Stages: DimName + DimMin<Self::Stages, Output = Self::Stages>;
+}
+
+macro_rules! stage_dims {
+    ($($n:literal => $m:literal),*) => {
+        $(impl StageDim for Const<$n> {
+            type Stages = Const<$m>;
+        })*
+    };
+}
+stage_dims!(1 => 3, 2 => 6, 3 => 9, 4 => 12);
+
+/// The stage system's dimension for `N` equations.
+type Stages<const N: usize> = <Const<N> as StageDim>::Stages;
+
+/// LU factors of a square matrix with partial pivoting (nalgebra's), or None when it is
+/// singular or not finite.
+fn factor<D>(a: OMatrix<f64, D, D>) -> Option<nalgebra::LU<f64, D, D>>
+where
+    D: DimName + DimMin<D, Output = D>,
+    DefaultAllocator: Allocator<D, D> + Allocator<D>,
+{
+    if !a.iter().all(|v| v.is_finite()) {
+        return None;
+    }
+    Some(a.lu()).filter(|lu| lu.is_invertible())
+}
+
 /// The collocation polynomial of one step: y(t0 + s h) = y0 + P(s), P(0) = 0, P(c_i) = z_i.
-struct Collocation<'a> {
+struct Collocation<'a, const N: usize> {
     t0: f64,
     h: f64,
-    y0: &'a [f64],
+    y0: &'a [f64; N],
     /// Newton divided differences on the nodes 0, c1, c2, 1, per component: [d1, d2, d3].
-    dd: &'a [[f64; 3]],
+    dd: &'a [[f64; 3]; N],
     c: [f64; 3],
 }
 
-impl Collocation<'_> {
+impl<const N: usize> Collocation<'_, N> {
     fn increment(&self, s: f64, i: usize) -> f64 {
         let [c1, c2, _] = self.c;
         let d = self.dd[i];
@@ -78,7 +114,7 @@ impl Collocation<'_> {
     }
 }
 
-impl DenseStep for Collocation<'_> {
+impl<const N: usize> DenseStep for Collocation<'_, N> {
     fn t_start(&self) -> f64 {
         self.t0
     }
@@ -94,7 +130,8 @@ impl DenseStep for Collocation<'_> {
 }
 
 /// Divided differences of (0, 0), (c1, z1), (c2, z2), (1, z3) for each component.
-fn divided_differences(c: [f64; 3], z: &[f64], n: usize, out: &mut [[f64; 3]]) {
+fn divided_differences<const N: usize>(c: [f64; 3], z: &[f64], out: &mut [[f64; 3]; N]) {
+    let n = N;
     let [c1, c2, c3] = c;
     for i in 0..n {
         let (z1, z2, z3) = (z[i], z[n + i], z[2 * n + i]);
@@ -109,17 +146,20 @@ fn divided_differences(c: [f64; 3], z: &[f64], n: usize, out: &mut [[f64; 3]]) {
 
 impl Radau5 {
     /// Integrates from (t0, y0) to t_end; `y0` holds the last accepted state on return.
-    pub fn integrate<S: OdeSystem + ?Sized>(
+    pub fn integrate<const N: usize, S: OdeSystem<N> + ?Sized>(
         &self,
         sys: &S,
         t0: f64,
-        y0: &mut [f64],
+        y0: &mut [f64; N],
         t_end: f64,
         user: &Tolerances,
         obs: &mut dyn Observer,
-    ) -> (Outcome, Stats) {
-        let n = sys.dim();
-        let m = 3 * n;
+    ) -> (Outcome, Stats)
+    where
+        Const<N>: StageDim + DimMin<Const<N>, Output = Const<N>>,
+        DefaultAllocator: Allocator<Stages<N>, Stages<N>> + Allocator<Stages<N>>,
+    {
+        let n = N;
         let cf = coeffs();
         let rtol = 0.1 * user.rtol.powf(2.0 / 3.0);
         let tol = Tolerances {
@@ -132,21 +172,17 @@ impl Radau5 {
         let (safe, nit, fac_grow, fac_shrink): (f64, usize, f64, f64) = (0.9, 7, 8.0, 5.0);
 
         let mut st = Stats::default();
-        let mut f0 = vec![0.0; n];
-        let mut jac = vec![0.0; n * n];
-        let mut big = vec![0.0; m * m];
-        let mut small = vec![0.0; n * n];
-        let (mut lu_big, mut lu_small) = (Lu::default(), Lu::default());
-        let mut z = vec![0.0; m];
-        let mut dz = vec![0.0; m];
-        let mut fz = vec![0.0; m];
-        let mut ys = vec![0.0; n];
-        let mut y1 = vec![0.0; n];
-        let mut cont = vec![0.0; n];
-        let mut f2 = vec![0.0; n];
-        let mut ddiff = vec![[0.0; 3]; n];
-        // y0 at the start of the step: the Newton iteration's scale and the dense output's base.
-        let mut y_start = vec![0.0; n];
+        let mut f0 = [0.0; N];
+        let mut jac = [[0.0; N]; N];
+        // The stages' vectors, stage k's component i at k n + i.
+        let mut z = OVector::<f64, Stages<N>>::zeros();
+        let mut dz = OVector::<f64, Stages<N>>::zeros();
+        let mut fz = OVector::<f64, Stages<N>>::zeros();
+        let mut ys = [0.0; N];
+        let mut y1 = [0.0; N];
+        let mut cont = SVector::<f64, N>::zeros();
+        let mut f2 = [0.0; N];
+        let mut ddiff = [[0.0; 3]; N];
 
         sys.rhs(t0, y0, &mut f0);
         st.rhs_evals += 1;
@@ -170,28 +206,21 @@ impl Radau5 {
                 need_jac = false;
             }
             // I - h (A (x) J) and u1/h I - J.
-            for bi in 0..3 {
-                for bj in 0..3 {
-                    let ha = h * cf.a[bi][bj];
-                    for i in 0..n {
-                        for j in 0..n {
-                            let id = if bi == bj && i == j { 1.0 } else { 0.0 };
-                            big[(bi * n + i) * m + bj * n + j] = id - ha * jac[i * n + j];
-                        }
-                    }
-                }
-            }
-            for i in 0..n {
-                for j in 0..n {
-                    let id = if i == j { cf.u1 / h } else { 0.0 };
-                    small[i * n + j] = id - jac[i * n + j];
-                }
-            }
-            if !lu_big.factor(m, &big) || !lu_small.factor(n, &small) {
+            let big = OMatrix::<f64, Stages<N>, Stages<N>>::from_fn(|r, c| {
+                let (bi, i, bj, j) = (r / n, r % n, c / n, c % n);
+                let id = if bi == bj && i == j { 1.0 } else { 0.0 };
+                id - h * cf.a[bi][bj] * jac[i][j]
+            });
+            let small = SMatrix::<f64, N, N>::from_fn(|i, j| {
+                let id = if i == j { cf.u1 / h } else { 0.0 };
+                id - jac[i][j]
+            });
+            let Some((lu_big, lu_small)) = factor::<Stages<N>>(big).zip(factor::<Const<N>>(small))
+            else {
                 lp.reject();
                 h *= 0.5;
                 continue;
-            }
+            };
             // Starting values: the previous collocation polynomial extrapolated, or zero.
             if !first {
                 for i in 0..n {
@@ -205,7 +234,9 @@ impl Radau5 {
             } else {
                 z.fill(0.0);
             }
-            y_start.copy_from_slice(y0);
+            // y0 at the start of the step: the Newton iteration's scale and the dense output's
+            // base.
+            let y_start = *y0;
             // Simplified Newton iteration.
             let mut converged = false;
             let mut newt = 0usize;
@@ -217,7 +248,9 @@ impl Radau5 {
                     for i in 0..n {
                         ys[i] = y0[i] + z[k * n + i];
                     }
-                    sys.rhs(t + cf.c[k] * h, &ys, &mut fz[k * n..(k + 1) * n]);
+                    let mut f = [0.0; N];
+                    sys.rhs(t + cf.c[k] * h, &ys, &mut f);
+                    fz.rows_mut(k * n, n).copy_from_slice(&f);
                 }
                 lp.stats.rhs_evals += 3;
                 for k in 0..3 {
@@ -226,9 +259,12 @@ impl Radau5 {
                         dz[k * n + i] = -z[k * n + i] + h * s;
                     }
                 }
-                lu_big.solve(&mut dz);
+                lu_big.solve_mut(&mut dz);
                 let dyno = (0..3)
-                    .map(|k| scaled_norm(&dz[k * n..(k + 1) * n], &y_start, &y_start, &tol).powi(2))
+                    .map(|k| {
+                        let dz_k = &dz.as_slice()[k * n..(k + 1) * n];
+                        scaled_norm(dz_k, &y_start, &y_start, &tol).powi(2)
+                    })
                     .sum::<f64>();
                 let dyno = (dyno / 3.0).sqrt();
                 if !dyno.is_finite() {
@@ -278,19 +314,20 @@ impl Radau5 {
                 cont[i] = f0[i] + f2[i];
                 y1[i] = y0[i] + z[2 * n + i];
             }
-            lu_small.solve(&mut cont);
-            let mut err = scaled_norm(&cont, y0, &y1, &tol);
+            lu_small.solve_mut(&mut cont);
+            let mut err = scaled_norm(cont.as_slice(), y0, &y1, &tol);
             if err >= 1.0 && (first || lp.last_rejected) {
                 for i in 0..n {
                     ys[i] = y0[i] + cont[i];
                 }
-                sys.rhs(t, &ys, &mut cont);
+                let mut f = [0.0; N];
+                sys.rhs(t, &ys, &mut f);
                 lp.stats.rhs_evals += 1;
                 for i in 0..n {
-                    cont[i] += f2[i];
+                    cont[i] = f[i] + f2[i];
                 }
-                lu_small.solve(&mut cont);
-                err = scaled_norm(&cont, y0, &y1, &tol);
+                lu_small.solve_mut(&mut cont);
+                err = scaled_norm(cont.as_slice(), y0, &y1, &tol);
             }
             if !err.is_finite() {
                 lp.reject();
@@ -308,7 +345,7 @@ impl Radau5 {
                 h_acc = h;
                 err_acc = err.max(1e-2);
                 let hnew = (h / quot).min(tol.max_step);
-                divided_differences(cf.c, &z, n, &mut ddiff);
+                divided_differences(cf.c, z.as_slice(), &mut ddiff);
                 let dense = Collocation {
                     t0: t,
                     h,

@@ -456,16 +456,34 @@ fn run_with(
         }
         let built = st.build(&q, &v, theta);
         if rest.is_none() && built.contact_distance > scene.palm_length_mm {
-            out.end = End::BeyondReach { t, theta, x: q[0] };
+            // The contact left the palm during the last step, unless the palm locked up inside
+            // that step before it did: the reach is judged where the lock-up is, not at the
+            // end of the step that ran into it (up to a step's travel, 0.24 mm at mu = 0.15).
+            let locked = match (params.drive.mode, last) {
+                (Drive::Motion, Some(last)) if built.problem.solve(modes).is_none() => {
+                    out.mode_solves += 1;
+                    let located = locate_lock_up(&st, &last, modes, last_push);
+                    out.mode_solves += located.probes;
+                    (located.contact_distance_mm <= scene.palm_length_mm).then_some(located)
+                }
+                _ => None,
+            };
+            out.end = match locked {
+                Some(located) => {
+                    out.jam_resolution_mm = located.resolution_mm;
+                    End::LockUp(located.lock)
+                }
+                None => End::BeyondReach { t, theta, x: q[0] },
+            };
             break;
         }
         let Some(sol) = built.problem.solve(modes) else {
             out.end = match (params.drive.mode, last) {
                 (Drive::Motion, Some(last)) => {
-                    let (lock, resolution, probes) = locate_lock_up(&st, &last, modes, last_push);
-                    out.mode_solves += probes;
-                    out.jam_resolution_mm = resolution;
-                    End::LockUp(lock)
+                    let located = locate_lock_up(&st, &last, modes, last_push);
+                    out.mode_solves += located.probes;
+                    out.jam_resolution_mm = located.resolution_mm;
+                    End::LockUp(located.lock)
                 }
                 // Locked at the start: the disc is where it started.
                 (Drive::Motion, None) => End::LockUp(LockUp {
@@ -558,11 +576,21 @@ fn run_with(
     out
 }
 
+/// A lock-up located inside the last step solved.
+struct Located {
+    lock: LockUp,
+    /// The bisection bracket's width in mm of the disc's travel.
+    resolution_mm: f64,
+    /// Step problems solved to locate it.
+    probes: u64,
+    /// The contact's distance from the hinge at the lock-up, s_B, in mm.
+    contact_distance_mm: f64,
+}
+
 /// Locates a lock-up inside the last step solved by bisection: the state moves along that step
 /// (q + s dt v, theta + s dt theta_dot) and the step problem from there either has a solution
-/// (the palm can still turn) or not. Returns the lock-up at the first state found locked, the
-/// bracket's width in mm and the number of step problems solved.
-fn locate_lock_up(st: &Stepper, last: &LastStep, modes: Modes, push_n: f64) -> (LockUp, f64, u64) {
+/// (the palm can still turn) or not. The lock-up is the first state found locked.
+fn locate_lock_up(st: &Stepper, last: &LastStep, modes: Modes, push_n: f64) -> Located {
     let at = |s: f64| {
         let h = s * st.dt;
         let q = [
@@ -584,14 +612,18 @@ fn locate_lock_up(st: &Stepper, last: &LastStep, modes: Modes, push_n: f64) -> (
         }
     }
     let (q, theta, t) = at(hi);
-    let lock = LockUp {
-        t_s: t,
-        theta_deg: theta.to_degrees(),
-        x_mm: q[0],
-        push_n,
-    };
-    let resolution = (hi - lo) * st.dt * last.v[0].abs();
-    (lock, resolution, u64::from(LOCATE_HALVINGS))
+    let (s, c) = theta.sin_cos();
+    Located {
+        lock: LockUp {
+            t_s: t,
+            theta_deg: theta.to_degrees(),
+            x_mm: q[0],
+            push_n,
+        },
+        resolution_mm: (hi - lo) * st.dt * last.v[0].abs(),
+        probes: u64::from(LOCATE_HALVINGS),
+        contact_distance_mm: q[0] * c + q[1] * s,
+    }
 }
 
 #[cfg(test)]
