@@ -191,9 +191,9 @@ impl Solutions {
             .map(|(n, name)| format!("{name} {n}"))
             .collect();
         Ok(format!(
-            "jamchart.Solutions({}, shape {:?}: {})",
+            "jamchart.Solutions({}, shape {}: {})",
             self.model,
-            self.theta_jam_deg.bind(py).shape(),
+            super::solve::shape_text(self.theta_jam_deg.bind(py).shape()),
             seen.join(", ")
         ))
     }

@@ -206,12 +206,12 @@ fn broadcast_shape(arrays: &[(GridParam, Bound<'_, PyArrayDyn<f64>>)]) -> PyResu
             }
             let other = &arrays[from[at].unwrap_or(0)];
             return Err(PyValueError::new_err(format!(
-                "{} has shape {:?} and {} has shape {:?}: they do not broadcast together (numpy's \
+                "{} has shape {} and {} has shape {}: they do not broadcast together (numpy's \
                  rules: equal lengths or 1 along each axis, counted from the last)",
                 other.0.as_str(),
-                other.1.shape(),
+                shape_text(other.1.shape()),
                 param.as_str(),
-                a.shape()
+                shape_text(a.shape())
             )));
         }
     }
@@ -270,4 +270,15 @@ fn warn(py: Python<'_>, lines: Vec<String>) -> PyResult<()> {
         PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 1)?;
     }
     Ok(())
+}
+
+/// A shape as Python prints it: `(3,)`, `(4, 3)`.
+pub(super) fn shape_text(shape: &[usize]) -> String {
+    match shape {
+        [one] => format!("({one},)"),
+        dims => {
+            let all: Vec<String> = dims.iter().map(usize::to_string).collect();
+            format!("({})", all.join(", "))
+        }
+    }
 }

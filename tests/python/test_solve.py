@@ -185,7 +185,7 @@ def test_reprs_say_what_was_answered():
     assert repr(jc.solve(mu=0.3)) == \
         "jamchart.Solution(statics: jams, theta_jam_deg=34.206, x_jam_mm=32.500)"
     r = jc.solve(mu=np.array([0.05, 0.3, 0.4]), palm_length_mm=80)
-    assert repr(r) == "jamchart.Solutions(statics, shape [3]: beyond_reach 1, jams 2)"
+    assert repr(r) == "jamchart.Solutions(statics, shape (3,): beyond_reach 1, jams 2)"
     assert repr(jc.normal(0.2, 0.03)) == "jamchart.normal(0.2, 0.03)"
 
 
@@ -208,7 +208,7 @@ def test_a_bad_element_is_named_by_its_index():
     with pytest.raises(ValueError, match=r"invalid mu\[1, 0\] = -0.2: .* must be a finite "
                                          r"number >= 0"):
         jc.solve(mu=np.array([[0.1], [-0.2]]))
-    with pytest.raises(ValueError, match=r"invalid force_n\[2\] = nan"):
+    with pytest.raises(ValueError, match=r"invalid force_n\[2\] = NaN: palm push \(N\) must be a finite number > 0"):
         jc.solve(force_n=[40.0, 50.0, float("nan")])
 
 
@@ -217,7 +217,7 @@ def test_a_models_setting_is_refused_with_its_section(cli_error):
     with pytest.raises(ValueError) as e:
         jc.solve(model="dynamics", rtol=-1)
     assert str(e.value) == cli.replace(" (flag --rtol)", "")
-    with pytest.raises(ValueError, match="radau5, dopri5, nonsmooth"):
+    with pytest.raises(ValueError, match="expected one of `radau5`, `dopri5`, `nonsmooth`"):
         jc.solve(model="dynamics", method="euler")
     with pytest.raises(ValueError, match="the models are statics, min-norm, dynamics"):
         jc.solve(model="adams")
@@ -248,7 +248,7 @@ def test_a_likely_unit_mistake_warns():
 
 def test_help_answers_with_units_defaults_and_ranges():
     doc = jc.solve.__doc__
-    assert "radius_mm : float or array_like, default 10.0" in doc
+    assert "radius_mm : float or array_like, default 10\n" in doc
     assert "In mm; a finite number > 0." in doc
     assert "mu : float, array_like, (low, high) or Distribution, default 0.4" in doc
     assert 'method : {"radau5", "dopri5", "nonsmooth"}, default "radau5"' in doc
