@@ -38,12 +38,12 @@ fn main() {
     }) / reps as f64;
     let whole = median_s(15, || {
         for _ in 0..reps {
-            std::hint::black_box(range::closed_form(std::hint::black_box(&p), &box_mu));
+            std::hint::black_box(range::closed_form(std::hint::black_box(&p), &box_mu).unwrap());
         }
     }) / reps as f64;
     let corners = median_s(15, || {
         for _ in 0..reps {
-            std::hint::black_box(range::ends(std::hint::black_box(&p), &box_mu));
+            std::hint::black_box(range::ends(std::hint::black_box(&p), &box_mu).unwrap());
         }
     }) / reps as f64;
     // A point answer's cost depends on its status: past the palm `solve` also finds the friction

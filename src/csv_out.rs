@@ -310,11 +310,6 @@ impl Serialize for Num {
     }
 }
 
-/// Numbers as [`Num`]s, for a JSON array.
-pub fn nums(v: impl IntoIterator<Item = f64>) -> Vec<Num> {
-    v.into_iter().map(Num).collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -557,7 +552,10 @@ mod tests {
 
     #[test]
     fn json_numbers_have_the_csv_digits() {
-        let doc = serde_json::to_string(&nums([24.354551362801473, -0.0, 1e-9, f64::NAN, 40.0]));
+        let nums: Vec<Num> = [24.354551362801473, -0.0, 1e-9, f64::NAN, 40.0]
+            .map(Num)
+            .into();
+        let doc = serde_json::to_string(&nums);
         assert_eq!(doc.unwrap(), "[24.35455,0.0,1e-9,null,40.0]");
     }
 }

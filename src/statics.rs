@@ -50,16 +50,18 @@
 //! the end of growing theta_jam. x_jam = r cot(theta/2) + h / sin(theta) falls as theta grows:
 //! dx/dtheta = -(2 (r + h) cos^2(theta/2) - h) / sin^2(theta) < 0 while cos^2(theta/2) >
 //! h / (2 (r + h)), which is every theta up to 90 deg at least (cos^2(theta/2) >= 1/2 there)
-//! and every theta below 180 deg for h = 0 ([`crate::uncertain::range::x_turn_rad`]). So over a
-//! box of inputs theta_jam and x_jam take their extremes at two corners: every input at the end
-//! that raises theta_jam (high frictions and mass, low push: the earliest jam, nearest the
-//! hinge) and the opposite corner (the latest jam, furthest out). The status is decided by
-//! theta_jam against the start angle and the palm's reach angle (neither depends on these
-//! inputs), so it changes at most once per boundary along each input; each breakpoint is
-//! where theta_jam crosses that boundary's angle ([`reach_angle_rad`], the start angle), found
-//! by regula falsi, or by bisection of [`status`] for the other changes (`jamchart solve --mu
-//! 0.12:0.3`). The tests check the corners against a
-//! brute-force grid over the box (`tests/uncertain_range.rs`).
+//! and every theta below 180 deg for h = 0. So over a box of inputs theta_jam takes its
+//! extremes at two corners: every input at the end that raises theta_jam (high frictions and
+//! mass, low push: the earliest jam, nearest the hinge) and the opposite corner (the latest
+//! jam, furthest out). What a point of the box answers is theta_jam clamped at the start angle
+//! where the disc is held there, and none where the jam lies past the palm or the push is too
+//! weak; [`crate::uncertain::range`] derives the interval of those answers from the two
+//! corners (`jamchart solve --mu 0.12:0.3`). The status is decided by theta_jam against the
+//! start angle and the palm's reach angle (neither depends on these inputs), so it changes at
+//! most once per boundary along each input; each breakpoint is where theta_jam crosses that
+//! boundary's angle ([`reach_angle_rad`], the start angle), found by regula falsi, or by
+//! bisection of [`status`] for the other changes. The tests check the interval against a
+//! dense grid of point answers over random boxes (`tests/range_promise.rs`).
 
 use std::f64::consts::FRAC_PI_2;
 

@@ -99,7 +99,10 @@ fn the_shaft_job_is_one_command() {
     let out = cli_util::stdout(&o);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     for line in [
-        "theta_jam from 14.355 to 35.013 deg, x_jam from 39.629 to 99.261 mm",
+        "theta_jam from 17.761 to 35.013 deg, x_jam from 39.629 to 80.000 mm, over the points \
+         that jam on the palm or are held at the start",
+        "latest jam (furthest out): theta_jam = 17.761 deg, x_jam = 80.000 mm, at the palm's \
+         end; the corner mu = 0.12 is beyond_reach",
         "beyond_reach for mu < 0.1489, jams from 0.1489 to 0.3",
         "the jam comes earliest at the high end",
     ] {
@@ -320,4 +323,114 @@ fn a_jam_map_with_a_range_shades_the_uncertain_region() {
     let o = jamchart(dir.path(), &["render", "fig3", "--set", "mu=0.12:0.3"]);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("swept parameter mu"), "{}", stderr(&o));
+}
+
+/// Runs `jamchart ARGS` in a fresh temp dir, killing it after `secs` seconds: (exit code,
+/// stdout), None for the code when it had to be killed.
+fn run_within(args: &[&str], secs: u64) -> (Option<i32>, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_jamchart"))
+        .args(args)
+        .current_dir(dir.path())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(secs);
+    while std::time::Instant::now() < deadline {
+        if child.try_wait().unwrap().is_some() {
+            let o = child.wait_with_output().unwrap();
+            return (
+                o.status.code(),
+                String::from_utf8_lossy(&o.stdout).into_owned(),
+            );
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    (None, String::new())
+}
+
+/// Regression: a range narrower than the bisection's tolerance hung. The status change along it
+/// was bisected to 1e-9 of the range's width with no cap on the halvings: 1e-17 for `--force
+/// 3.64185697:3.64185698`, below the spacing of floats at 3.6 (4.4e-16), so the bracket never
+/// shrank to it; likewise a mass range 1e-7 wide at 55 kg and a lognormal friction of median
+/// 5e-324 (every value subnormal). Each now answers within seconds.
+#[test]
+fn a_range_narrower_than_the_float_spacing_answers() {
+    for range in [
+        ["--force", "3.64185697:3.64185698"],
+        ["--mass", "54.9170386:54.9170387"],
+        ["--mu", "lognormal(5e-324,1)"],
+    ] {
+        let (code, out) = run_within(&["solve", range[0], range[1]], 30);
+        assert_eq!(code, Some(0), "{range:?} did not answer in 30 s");
+        assert!(out.contains("statuses in the box"), "{range:?}: {out}");
+    }
+}
+
+/// Regression: at subnormal frictions every point's jam lies past the palm (x_jam overflows to
+/// infinity), and `solve --mu 1e-320:1e-310` printed "x_jam from inf to inf mm". No point
+/// answers a jam there: the output says so, with no infinite number in it.
+#[test]
+fn a_box_of_subnormal_frictions_prints_no_infinite_jam() {
+    let (code, out) = run_within(&["solve", "--mu", "1e-320:1e-310"], 30);
+    assert_eq!(code, Some(0));
+    assert!(!out.contains("inf"), "{out}");
+    assert!(
+        out.contains("no point of the box jams on the palm or is held at the start"),
+        "{out}"
+    );
+    assert!(out.contains("statuses in the box: beyond_reach"), "{out}");
+}
+
+/// Regression: a sweep's band was empty wherever its earliest-jam corner could not move the
+/// disc. `sweep mu=0.2:0.5 --force 3:10 --start-angle 80` shaded nothing for mu >= 0.3215
+/// (120 of 201 values), where pushes a little above the least that moves the disc hold it at
+/// the start (80 deg, 11.918 mm) and 10 N jams it. Every row now shades from the start angle.
+#[test]
+fn a_sweep_band_with_a_too_weak_corner_is_shaded() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = [
+        "sweep",
+        "mu=0.2:0.5",
+        "--force",
+        "3:10",
+        "--start-angle",
+        "80",
+        "--out",
+        "o",
+        "--format",
+        "svg",
+    ];
+    let o = jamchart(dir.path(), &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let mut r = csv::Reader::from_path(dir.path().join("o/sweep_mu.csv")).unwrap();
+    let header = r.headers().unwrap().clone();
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let (mut too_weak, mut rows) = (0, 0);
+    for rec in r.records() {
+        let rec = rec.unwrap();
+        if &rec[0] != "band" {
+            continue;
+        }
+        rows += 1;
+        let hi: f64 = rec[col("band_theta_jam_hi_deg")]
+            .parse()
+            .expect("a shaded row");
+        let x_lo: f64 = rec[col("band_x_jam_lo_mm")].parse().unwrap();
+        if &rec[col("earliest_status")] == "too_weak" {
+            too_weak += 1;
+            assert!(
+                (hi - 80.0).abs() < 1e-9 && (x_lo - 11.91754).abs() < 1e-5,
+                "{rec:?}"
+            );
+        }
+    }
+    assert_eq!(rows, 201);
+    assert_eq!(
+        too_weak, 120,
+        "the rows whose earliest corner cannot move the disc"
+    );
 }

@@ -3,7 +3,7 @@
 //! status breakpoints against the closed form.
 
 use jamchart::statics;
-use jamchart::uncertain::range::{self, End};
+use jamchart::uncertain::range::{self, End, Reached};
 use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
 use jamchart::{JamStatus, SceneParams};
 
@@ -24,22 +24,26 @@ fn raw(p: &SceneParams) -> (f64, f64) {
     (t.to_degrees(), p.disc_position_mm(t))
 }
 
-/// The ends of `solve --mu 0.12:0.3` for the shaft are the point solves at mu = 0.12 and 0.3,
-/// and the status changes where the jam leaves the palm: s_B(theta_jam(mu)) = 80 mm.
+/// The ends of `solve --mu 0.12:0.3` for the shaft: the point solve at mu = 0.3 (it jams),
+/// and the palm's end at mu = 0.12, whose jam lies past it (the points between jam up to the
+/// palm's end, x = L = 80 mm, and no further); the status changes where the jam leaves the
+/// palm: s_B(theta_jam(mu)) = 80 mm.
 #[test]
-fn the_shafts_ends_are_the_point_solves_and_the_breakpoint_is_the_palms_end() {
+fn the_shafts_ends_are_the_point_solve_and_the_palms_end() {
     let p = shaft();
     let set = UncertainSet {
         inputs: vec![input("mu", &["mu_ground", "mu_palm"], 0.12, 0.3)],
     };
-    let a = range::closed_form(&p, &set);
+    let a = range::closed_form(&p, &set).unwrap();
     let (t_hi, x_lo) = raw(&p.with_mu(0.3));
-    let (t_lo, x_hi) = raw(&p.with_mu(0.12));
+    let reach = statics::reach_angle_rad(&p);
+    let (t_lo, x_hi) = (reach.to_degrees(), 80.0);
     let [a0, a1] = a.theta_jam_deg.unwrap();
     let [b0, b1] = a.x_jam_mm.unwrap();
     for (got, want) in [(a0, t_lo), (a1, t_hi), (b0, x_lo), (b1, x_hi)] {
         assert!((got - want).abs() < 1e-12 * want, "{got} vs {want}");
     }
+    assert_eq!(a.reached, Some([Reached::PalmEnd, Reached::Corner]));
     assert_eq!(a.earliest.status, statics::solve(&p.with_mu(0.3)).status);
     assert_eq!(a.latest.status, JamStatus::BeyondReach);
     assert_eq!(a.inputs[0].earliest_at, End::High);
@@ -58,12 +62,13 @@ fn the_shafts_ends_are_the_point_solves_and_the_breakpoint_is_the_palms_end() {
 }
 
 /// Over a box of four independent inputs the corners' interval is the brute-force grid's
-/// extremes: no grid point lies outside it, and the grid's own extremes (it holds the
-/// corners) equal it.
+/// extremes of the point answers (through the port; a palm long enough for every jam): no
+/// grid point lies outside it, and the grid's own extremes (it holds the corners) equal it.
 #[test]
 fn the_corners_interval_is_a_brute_force_grids() {
     let p = SceneParams {
         palm_offset_mm: 0.5,
+        palm_length_mm: 1000.0,
         ..shaft()
     };
     let set = UncertainSet {
@@ -74,7 +79,7 @@ fn the_corners_interval_is_a_brute_force_grids() {
             input("mass_kg", &["mass_kg"], 0.2, 0.6),
         ],
     };
-    let a = range::closed_form(&p, &set);
+    let a = range::closed_form(&p, &set).unwrap();
     let [t0, t1] = a.theta_jam_deg.unwrap();
     let [x0, x1] = a.x_jam_mm.unwrap();
     let n = 9;
@@ -95,7 +100,9 @@ fn the_corners_interval_is_a_brute_force_grids() {
                 lo + (hi - lo) * j as f64 / (n - 1) as f64
             })
             .collect();
-        let (t, x) = raw(&set.apply(&p, &v));
+        let s = jamchart::solve(&jamchart::ModelSpec::Statics, &set.apply(&p, &v)).unwrap();
+        assert_eq!(s.status, JamStatus::Jams, "{v:?}");
+        let (t, x) = (s.theta_jam_deg.unwrap(), s.x_jam_mm.unwrap());
         gt = [gt[0].min(t), gt[1].max(t)];
         gx = [gx[0].min(x), gx[1].max(x)];
         worst_outside = worst_outside
@@ -127,7 +134,7 @@ fn a_sampled_box_spans_the_corners_interval() {
     let set = UncertainSet {
         inputs: vec![input("mu", &["mu_ground", "mu_palm"], 0.15, 0.3)],
     };
-    let exact = range::closed_form(&p, &set);
+    let exact = range::closed_form(&p, &set).unwrap();
     let s = range::sampled(&jamchart::ModelSpec::Statics, &p, &set).unwrap();
     assert_eq!(
         s.method,
@@ -159,7 +166,7 @@ fn a_status_on_a_stretch_narrower_than_the_old_scan_step_is_reported() {
     let set = UncertainSet {
         inputs: vec![input("mu", &["mu_ground", "mu_palm"], 0.01, 3.0)],
     };
-    let a = range::closed_form(&p, &set);
+    let a = range::closed_form(&p, &set).unwrap();
     let segs = &a.inputs[0].segments;
     let statuses: Vec<JamStatus> = segs.iter().map(|s| s.status).collect();
     assert_eq!(
@@ -209,7 +216,7 @@ fn each_inputs_change_at_the_palms_end_is_where_s_b_is_the_palm_length() {
         let set = UncertainSet {
             inputs: vec![input(name, keys, lo, hi)],
         };
-        let a = range::closed_form(&p, &set);
+        let a = range::closed_form(&p, &set).unwrap();
         let segs = &a.inputs[0].segments;
         assert_eq!(segs.len(), 2, "{name}: {segs:?}");
         let at = |x: f64| set.apply(&p, &[x]);
@@ -231,6 +238,133 @@ fn each_inputs_change_at_the_palms_end_is_where_s_b_is_the_palm_length() {
         assert!(
             statuses.contains(&JamStatus::BeyondReach) && statuses.contains(&JamStatus::Jams),
             "{name}: {segs:?}"
+        );
+    }
+}
+
+/// The paper's scene (r 10 mm, 1 kg, mu 0.4) with `start_angle_deg` and one input's range.
+fn paper_box(
+    start_angle_deg: f64,
+    name: &'static str,
+    lo: f64,
+    hi: f64,
+) -> (SceneParams, UncertainSet) {
+    let p = SceneParams {
+        start_angle_deg,
+        ..SceneParams::default()
+    };
+    let keys: &[&'static str] = match name {
+        "mu" => &["mu_ground", "mu_palm"],
+        "force_n" => &["force_n"],
+        other => panic!("{other}"),
+    };
+    let set = UncertainSet {
+        inputs: vec![input(name, keys, lo, hi)],
+    };
+    let mid = set.apply(&p, &[0.5 * (lo + hi)]);
+    (mid, set)
+}
+
+/// Asserts `got` is [lo, hi] to `tol`.
+fn assert_interval(got: Option<[f64; 2]>, want: [f64; 2], tol: f64) {
+    let [a, b] = got.expect("an interval");
+    assert!(
+        (a - want[0]).abs() < tol && (b - want[1]).abs() < tol,
+        "{got:?} vs {want:?}"
+    );
+}
+
+/// Regression: a too weak earliest corner lost the jams beside it. `solve --force 2:10 --mu 0.4
+/// --start-angle 80` printed theta_jam from 64.960 to 64.960 deg, while the push of 8 N alone
+/// jams at 70.683 deg (14.102 mm), and pushes from 3.64 to 6.14 N are held at the start (80
+/// deg, 11.918 mm): the push that just moves the disc leaves it held at the start.
+#[test]
+fn a_too_weak_corner_keeps_the_jams_and_the_holds_beside_it() {
+    let (p, set) = paper_box(80.0, "force_n", 2.0, 10.0);
+    let a = range::closed_form(&p, &set).unwrap();
+    assert_eq!(a.earliest.status, JamStatus::TooWeak);
+    assert_interval(a.theta_jam_deg, [64.960, 80.0], 5e-4);
+    assert_interval(a.x_jam_mm, [11.918, 15.709], 5e-4);
+    assert_eq!(a.reached, Some([Reached::Corner, Reached::HeldAtStart]));
+    let at_8 = statics::solve(&set.apply(&p, &[8.0]));
+    let [t0, t1] = a.theta_jam_deg.unwrap();
+    assert!((t0..=t1).contains(&at_8.theta_jam_deg.unwrap()), "{at_8:?}");
+    // Two inputs: the earliest corner (mu_ground 0.5046, 3.39 kg) is too weak, while mu_ground
+    // 0.3 with 2 kg jams at 75.842 deg; it was printed as 40.745 to 40.745 deg.
+    let p = SceneParams {
+        radius_mm: 4.895,
+        palm_offset_mm: 4.169,
+        mu_palm: 0.69,
+        force_n: 13.57,
+        ..SceneParams::default()
+    };
+    let set = UncertainSet {
+        inputs: vec![
+            input("mu_ground", &["mu_ground"], 0.0839, 0.5046),
+            input("mass_kg", &["mass_kg"], 0.388, 3.39),
+        ],
+    };
+    let a = range::closed_form(&set.apply(&p, &[0.3, 2.0]), &set).unwrap();
+    assert_interval(a.theta_jam_deg, [40.745, 90.0], 5e-4);
+    let inside = statics::solve(&set.apply(&p, &[0.3, 2.0]));
+    assert!((inside.theta_jam_deg.unwrap() - 75.842).abs() < 5e-4);
+}
+
+/// Regression: a corner held at the start was printed at its unclamped closed form. `solve --mu
+/// 0.4 --start-angle 60 --force 5:20` printed theta_jam up to 90.353 deg and x_jam down to
+/// 9.939 mm; at 5 N the disc is held at the start, 60 deg, 17.321 mm, and the palm never turns
+/// past it.
+#[test]
+fn a_corner_held_at_the_start_answers_the_start_angle() {
+    let (p, set) = paper_box(60.0, "force_n", 5.0, 20.0);
+    let a = range::closed_form(&p, &set).unwrap();
+    assert_eq!(a.earliest.status, JamStatus::JammedAtStart);
+    assert_interval(a.theta_jam_deg, [54.095, 60.0], 5e-4);
+    assert_interval(a.x_jam_mm, [17.321, 19.586], 5e-4);
+}
+
+/// Regression: a range whose lower friction is 0 lost its interval. `solve --mu 0:0.3` printed
+/// "no point of the box jams" above "jams from 0.06507 to 0.3" (the JSON interval null): the
+/// corner mu = 0 never jams, and between it and mu = 0.065 the jam lies past the palm, so the
+/// latest jam is at the palm's end (x = L = 150 mm).
+#[test]
+fn a_friction_range_from_zero_keeps_its_interval() {
+    let (p, set) = paper_box(90.0, "mu", 0.0, 0.3);
+    let a = range::closed_form(&p, &set).unwrap();
+    assert_eq!(a.latest.status, JamStatus::NeverJams);
+    let reach = statics::reach_angle_rad(&p).to_degrees();
+    let top = statics::solve(&p.with_mu(0.3));
+    assert_interval(a.theta_jam_deg, [reach, top.theta_jam_deg.unwrap()], 1e-9);
+    assert_interval(a.x_jam_mm, [top.x_jam_mm.unwrap(), 150.0], 1e-9);
+    assert_eq!(a.reached, Some([Reached::PalmEnd, Reached::Corner]));
+}
+
+/// Regression: the statics' interval counted the jams past the palm's end (the closed form on
+/// a long enough palm) while the sampled models left those points out. Now both are over the
+/// points that jam on the palm or are held at the start: for the shaft with mu 0.12 to 0.3
+/// (beyond the 80 mm palm below mu = 0.149) every sample of the port lies inside the exact
+/// interval, no sample that answers lies past the palm, and the exact interval's lower end is
+/// the palm's end, not the 14.355 deg at mu = 0.12 that no point answers.
+#[test]
+fn every_model_leaves_the_jams_past_the_palm_out_of_its_interval() {
+    let p = shaft();
+    let set = UncertainSet {
+        inputs: vec![input("mu", &["mu_ground", "mu_palm"], 0.12, 0.3)],
+    };
+    let exact = range::closed_form(&p, &set).unwrap();
+    let [t0, t1] = exact.theta_jam_deg.unwrap();
+    let reach = statics::reach_angle_rad(&p).to_degrees();
+    assert!((t0 - reach).abs() < 1e-9, "{t0} vs the palm's end {reach}");
+    for spec in [
+        jamchart::ModelSpec::Statics,
+        jamchart::ModelKind::MinNorm.with(&Default::default(), &Default::default()),
+    ] {
+        let s = range::sampled(&spec, &p, &set).unwrap();
+        assert!(s.statuses.contains(&JamStatus::BeyondReach), "{spec:?}");
+        let [s0, s1] = s.theta_jam_deg.unwrap();
+        assert!(
+            s0 >= reach && s1 <= t1 + 1e-6,
+            "{spec:?}: {s0} .. {s1} vs {t0} .. {t1}"
         );
     }
 }

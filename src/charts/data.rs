@@ -4,7 +4,6 @@ use crate::csv_out::Column;
 pub use crate::figures::CellsTable;
 pub use crate::figures::cells::CellAxes;
 use crate::figures::{DataFormat, FigureData};
-use crate::grid::GridParam;
 
 /// The data behind a chart: file extension and bytes.
 #[derive(Debug, Clone, PartialEq)]
@@ -65,41 +64,12 @@ impl DataFile {
     }
 }
 
-/// The cells of `grid` as a [`CellsTable`], each `(column, values)` named as in its JSON.
-pub fn cells_csv<'a>(
-    grid: &'a crate::grid::GridResult,
-    x: GridParam,
-    y: GridParam,
-    columns: &[(&'a str, Column<'a>)],
-) -> CellsTable<'a> {
-    axis_cells_csv(grid_axes(grid, x, y), columns)
-}
-
-/// What a map's JSON says about the cells [`cells_csv`] writes to `<scene>.csv` (see
-/// [`crate::csv_out::cells_summary`]): the same column names.
-pub fn cells_json(
-    scene: &str,
-    grid: &crate::grid::GridResult,
-    x: GridParam,
-    y: GridParam,
-    columns: &[(&str, Column)],
-) -> serde_json::Value {
-    axis_cells_json(scene, grid_axes(grid, x, y), columns)
-}
-
-fn grid_axes(grid: &crate::grid::GridResult, x: GridParam, y: GridParam) -> CellAxes<'_> {
-    [
-        (x.as_str(), &grid.x_values[..]),
-        (y.as_str(), &grid.y_values[..]),
-    ]
-}
-
-/// [`cells_csv`] over any two named axes (a V-locator's parameters, say).
+/// The cells over two named axes as a [`CellsTable`] (a V-locator's parameters, say).
 pub fn axis_cells_csv<'a>(axes: CellAxes<'a>, columns: &[(&'a str, Column<'a>)]) -> CellsTable<'a> {
     CellsTable::new(axes, columns)
 }
 
-/// [`cells_json`] over any two named axes.
+/// What a map's JSON says about its cells over two named axes.
 pub fn axis_cells_json(
     scene: &str,
     axes: CellAxes,

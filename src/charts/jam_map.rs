@@ -19,9 +19,9 @@ use super::legend::{self, LegendEntry, Swatch};
 use super::readoff;
 use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
 use super::{axis_label, grid_lines, grid_polygons, param_symbol, scene_subtitle};
+use crate::figures::At;
 use crate::figures::jam_map::{
-    AtValue, BEYOND_REACH as BEYOND, JAM, JamMapCells, JamMapData, JamMapLayer, JamMapSettings,
-    SLIDE,
+    BEYOND_REACH as BEYOND, JAM, JamMapCells, JamMapData, JamMapLayer, JamMapSettings, SLIDE,
 };
 use crate::grid::AxisScale;
 use crate::scene::{disc_position_mm, palm_angle_at};
@@ -71,7 +71,7 @@ impl Picture for JamMap {
                 None => jam_rings = jam_rings_of(c, &c.margin_n, s),
             }
             let beyond: Vec<bool> = c.region.iter().map(|&r| r == BEYOND).collect();
-            beyond_rings = super::contours::mask_rings(&beyond, &s.x_axis, &s.y_axis);
+            beyond_rings = crate::figures::contours::mask_rings(&beyond, &s.x_axis, &s.y_axis);
         }
         JamMap {
             title: title.to_string(),
@@ -96,7 +96,7 @@ impl Picture for JamMap {
         let b = &self.data.boundary;
         let reach_deg = b.iter().map(|a| {
             param
-                .apply(self.data.params, a.value)
+                .apply(self.data.params, a.at[0])
                 .reach_angle()
                 .to_degrees()
         });
@@ -107,7 +107,7 @@ impl Picture for JamMap {
             "x": readoff::axis(param.as_str(), &x),
             "panels": [readoff::panel(frame, readoff::axis(self.data.settings.y_axis.param.as_str(), &y), None)],
             "columns": {
-                param.as_str(): readoff::column(b.iter().map(|a| a.value)),
+                param.as_str(): readoff::column(b.iter().map(|a| a.at[0])),
                 "theta_jam_deg": readoff::column(b.iter().map(|a| a.point.theta_jam_deg)),
                 "x_jam_mm": readoff::column(b.iter().map(|a| a.point.x_jam_mm)),
                 "status": readoff::column(b.iter().map(|a| a.point.status)),
@@ -165,7 +165,7 @@ impl Picture for JamMap {
             .filter_map(|a| {
                 a.point
                     .theta_jam_deg
-                    .map(|t| (x.to_plot(a.value), y.to_plot(t)))
+                    .map(|t| (x.to_plot(a.at[0]), y.to_plot(t)))
             })
             .collect();
         style::draw_line(area, &curve, LineKind::Solid, LineKind::Solid.color())?;
@@ -245,7 +245,7 @@ impl JamMap {
                 "boundary θ_jam (closed form)",
             ));
         }
-        if let Some(v) = self.drawn_read_off().map(|a| a.value) {
+        if let Some(v) = self.drawn_read_off().map(|a| a.at[0]) {
             let s = format!(
                 "read-off lines 1-2-3 at {} = {}",
                 param_symbol(self.data.settings.x_axis.param),
@@ -258,10 +258,10 @@ impl JamMap {
 
     /// The read-off, where its lines are drawn: the scene's value lies on the x axis and its
     /// jam on the theta axis (a legend never names a line that is not drawn).
-    fn drawn_read_off(&self) -> Option<&AtValue> {
+    fn drawn_read_off(&self) -> Option<&At<1>> {
         let (xa, ya) = (&self.data.settings.x_axis, &self.data.settings.y_axis);
         self.data.read_off.as_ref().filter(|a| {
-            (xa.min..=xa.max).contains(&a.value)
+            (xa.min..=xa.max).contains(&a.at[0])
                 && a.point.x_jam_mm.is_some()
                 && a.point
                     .theta_jam_deg
@@ -380,8 +380,8 @@ impl JamMap {
         x: &PlotAxis,
         y: &PlotAxis,
     ) -> DrawResult<DB> {
-        let Some(&AtValue {
-            value: v, point: p, ..
+        let Some(&At {
+            at: [v], point: p, ..
         }) = self.drawn_read_off()
         else {
             return Ok(());

@@ -309,9 +309,9 @@ chart_kinds! {
     /// theta_jam and x_jam against one parameter (Figs. 6, 7a, 7b).
     Sweep("sweep", "csv", legacy sweep::SweepSpec => sweep::Sweep),
     /// theta_jam and x_jam / r over a friction and F / (m g): one chart for any part.
-    Universal("universal", "json", legacy universal::UniversalSpec => universal::Universal),
+    Universal("universal", "json", figure crate::figures::universal::UniversalSettings => universal::Universal),
     /// Iso-lines of x_jam and theta_jam over two parameters (Fig. 7c).
-    ContourMap("contour_map", "json", legacy contour_map::ContourMapSpec => contour_map::ContourMap),
+    ContourMap("contour_map", "json", figure crate::figures::contour_map::ContourMapSettings => contour_map::ContourMap),
     /// The min-norm program's convergence trace at theta_jam (Fig. 4).
     Convergence("convergence", "csv", legacy convergence::ConvergenceSpec => convergence::Convergence),
     /// The simulated disc speed and position against time (Fig. 5).

@@ -44,7 +44,7 @@ pub(crate) mod builtin;
 pub(crate) mod collide;
 pub(crate) mod colorbar;
 pub(crate) mod contour_map;
-pub(crate) mod contours;
+
 pub(crate) mod convergence;
 pub(crate) mod data;
 pub(crate) mod error_time;
@@ -81,12 +81,11 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use crate::error::{Error, Result};
+pub(crate) use crate::figures::contours::{grid_lines, grid_polygons};
 use axes::DrawResult;
 pub use builtin::SCENE_KEYS;
 pub use builtin::scene_names as builtin_scene_names;
-pub(crate) use contours::{grid_lines, grid_polygons};
 pub(crate) use data::DataFile;
-pub(crate) use data::{cells_csv, cells_json};
 pub(crate) use kinds::Chart;
 pub use kinds::ChartSpec;
 pub(crate) use labels::{

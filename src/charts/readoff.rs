@@ -91,14 +91,9 @@ pub fn points_panel(frame: &PlotFrame, x: Value, y: Value, points: &[(f64, f64, 
 /// test measures the error against `solve`).
 pub const GRID_SAMPLES: usize = 101;
 
-/// A map's cells for the read-off: every k-th sample of each axis (the last one always), and
-/// per quantity its value at those cells, row by row with x fastest.
-pub fn grid(g: &crate::grid::GridResult, quantities: &[(&str, &dyn Fn(usize) -> Value)]) -> Value {
-    cells(&g.x_values, &g.y_values, quantities)
-}
-
-/// [`grid`] for any map whose cell (ix, iy) is at flat index `iy * xs.len() + ix` (the
-/// V-locator's capacity map has its own cells, not a [`crate::grid::GridResult`]).
+/// A map's cells as the read-off carries them, every k-th row and column so that at most
+/// [`GRID_SAMPLES`] per axis (cell (ix, iy) at flat index `iy * xs.len() + ix`): each
+/// quantity's value per kept cell, row by row.
 pub fn cells(xs: &[f64], ys: &[f64], quantities: &[(&str, &dyn Fn(usize) -> Value)]) -> Value {
     let picks = |n: usize| {
         let mut v: Vec<usize> = (0..n).step_by(n.div_ceil(GRID_SAMPLES).max(1)).collect();

@@ -2,18 +2,13 @@
 //! the swept parameter.
 //!
 //! theta_jam is monotone in every uncertain input (the proof is in [`crate::statics`]), so at
-//! each swept value the jams over the box run from the earliest-jam corner's to the
-//! latest-jam corner's ([`crate::uncertain::range`]); the band's two edges are those corners'
-//! curves. The shaded interval at a swept value is
-//!
-//! - from the earliest corner's jam (it `jams`, or is `jammed_at_start`);
-//! - to the latest corner's jam where that one jams; where it lies past the palm's end
-//!   (`beyond_reach`, or `never_jams`, which slides past every palm), to the palm's end: the
-//!   contact at s_B = L, palm angle [`statics::reach_angle_rad`], disc position
-//!   x = r cot(theta/2) + h / sin(theta) there. Between that corner and the palm's end every
-//!   jam is on the palm (theta_jam is continuous along the box), so the shading is exact;
-//! - nothing where the earliest corner itself does not jam on the palm (then no corner of the
-//!   box does, or the earliest one cannot move the disc: `too_weak`).
+//! each swept value the box's answers run between its earliest-jam corner's and its
+//! latest-jam corner's; the band's two edges are those corners' curves. The shaded interval at
+//! a swept value is [`crate::uncertain::range::hull`] of the two corners' answers: a corner
+//! that jams or is held at the start gives its own end, a too weak earliest corner the start
+//! angle (the points where the push just moves the disc are held there), a latest corner whose
+//! jam lies past the palm's end (or that never jams) the palm's end; nothing where no point of
+//! the box jams on the palm or is held.
 //!
 //! With a distribution, the corners are its 5 % and 95 % quantiles, so the shaded interval is the
 //! exact 5-95 % quantile band of x_jam and theta_jam for one input (they are monotone in it).
@@ -30,7 +25,7 @@ use super::sweep::{SeriesPoint, SweepPanel};
 
 use crate::grid::GridParam;
 use crate::scene::{JamStatus, SceneParams};
-use crate::statics;
+use crate::uncertain::range;
 
 /// The band at one value of the swept parameter.
 #[derive(Debug, Clone, PartialEq)]
@@ -70,30 +65,17 @@ pub fn rows(
         .zip(latest)
         .map(|(e, l)| {
             let p = param.apply(*latest_params, e.at);
-            let reach = statics::reach_angle_rad(&p);
-            let palm_end = (p.disc_position_mm(reach), reach.to_degrees());
-            let jam = |s: &SeriesPoint| {
-                matches!(s.status, Some(JamStatus::Jams | JamStatus::JammedAtStart))
-                    .then_some((s.x_jam_mm?, s.theta_jam_deg?))
+            let answer = |s: &SeriesPoint| {
+                let status = s.status.unwrap_or(JamStatus::OutsideModel);
+                (status, s.theta_jam_deg.zip(s.x_jam_mm))
             };
-            let past_palm = matches!(
-                l.status,
-                Some(JamStatus::BeyondReach | JamStatus::NeverJams)
-            );
-            let far = jam(l).or(past_palm.then_some(palm_end));
-            let (x, theta) = match (jam(e), far) {
-                (Some(a), Some(b)) => (
-                    Some((a.0.min(b.0), a.0.max(b.0))),
-                    Some((a.1.min(b.1), a.1.max(b.1))),
-                ),
-                _ => (None, None),
-            };
+            let hull = range::hull(&p, answer(e), answer(l));
             BandRow {
                 at: e.at,
                 earliest: e.clone(),
                 latest: l.clone(),
-                x_jam_mm: x,
-                theta_jam_deg: theta,
+                x_jam_mm: hull.map(|h| (h.x_jam_mm[0], h.x_jam_mm[1])),
+                theta_jam_deg: hull.map(|h| (h.theta_jam_deg[0], h.theta_jam_deg[1])),
             }
         })
         .collect()
@@ -178,8 +160,16 @@ mod tests {
         let want = 2.0 * (p.radius_mm / 80.0).atan().to_degrees();
         let (tlo, thi) = r.theta_jam_deg.unwrap();
         assert!((tlo - want).abs() < 1e-9 && (thi - 35.0).abs() < 1e-12);
+        // A too weak earliest corner: the pushes that just move the disc hold it at the start
+        // (90 deg, x = r = 10 mm), so the shade runs from there to the palm's end.
         let too_weak = [pt(40.0, JamStatus::TooWeak, None, None)];
-        assert_eq!(rows(GridParam::ForceN, &p, &too_weak, &l)[0].x_jam_mm, None);
+        let (lo, hi) = rows(GridParam::ForceN, &p, &too_weak, &l)[0]
+            .x_jam_mm
+            .unwrap();
+        assert!(
+            (lo - 10.0).abs() < 1e-9 && (hi - 80.0).abs() < 1e-9,
+            "{lo} {hi}"
+        );
     }
 
     /// The legend never names a line that is not drawn: with mu 0.12 to 0.3 on the issue's

@@ -11,12 +11,12 @@ use super::args::{OutputFormat, parse_count, parse_f64};
 use super::solve::SolveArgs;
 use crate::config::Config;
 use crate::error::{Error, Result};
-use crate::models::ModelKind;
+use crate::models::{self, ModelKind};
 use crate::numbers::Num;
-use crate::scene::SceneParams;
+use crate::scene::{JamStatus, SceneParams};
 use crate::uncertain::UncertainSet;
 use crate::uncertain::dist::{self, DistAnswer, DistMethod, DistQuestion, Estimate};
-use crate::uncertain::range::{self, End, InputEnds, Method, RangeAnswer};
+use crate::uncertain::range::{self, Corner, End, InputEnds, Method, RangeAnswer, Reached};
 
 /// Flags of `solve` for distributed inputs (ignored without one). Each takes a negative number
 /// as its value, to refuse it naming the flag (clap otherwise read `--samples -1` as an unknown
@@ -180,7 +180,7 @@ pub(crate) fn answer(
         true => Some(dist::monte_carlo(&spec, &config.scene, uncertain, &ask)?),
     };
     let range = match kind {
-        ModelKind::Statics => range::closed_form(&config.scene, uncertain),
+        ModelKind::Statics => range::closed_form(&config.scene, uncertain)?,
         _ => range::sampled(&spec, &config.scene, uncertain)?,
     };
     Ok(Record {
@@ -218,7 +218,7 @@ fn text(p: &SceneParams, uncertain: &UncertainSet, results: &[Record]) -> String
         let a = &r.range;
         let how = match a.method {
             Method::Corners => "exact: theta_jam is monotone in every input, so the box is \
-                                answered at its corners"
+                                answered from its corners"
                 .to_string(),
             Method::Sampled { samples } => format!(
                 "sampled at {samples} points of a grid over the box: the range of the samples, \
@@ -226,44 +226,79 @@ fn text(p: &SceneParams, uncertain: &UncertainSet, results: &[Record]) -> String
             ),
         };
         let _ = writeln!(s, "\n{} over the box ({how}):", r.model);
-        match (a.theta_jam_deg, a.x_jam_mm) {
-            (Some([t0, t1]), Some([x0, x1])) => {
+        let names: Vec<&str> = a.inputs.iter().map(|i| i.name).collect();
+        let at = |c: &Corner| {
+            let v: Vec<String> = names
+                .iter()
+                .zip(&c.values)
+                .map(|(n, v)| format!("{n} = {}", round(*v)))
+                .collect();
+            v.join(", ")
+        };
+        let point = match a.method {
+            Method::Corners => "corner",
+            Method::Sampled { .. } => "sample",
+        };
+        match (a.theta_jam_deg, a.x_jam_mm, a.reached) {
+            (Some([t0, t1]), Some([x0, x1]), Some([low, high])) => {
                 let _ = writeln!(
                     s,
-                    "  theta_jam from {t0:.3} to {t1:.3} deg, x_jam from {x0:.3} to {x1:.3} mm{}",
-                    match a.method {
-                        Method::Corners => " (where it jams on a long enough palm)",
-                        Method::Sampled { .. } => "",
-                    },
+                    "  theta_jam from {t0:.3} to {t1:.3} deg, x_jam from {x0:.3} to {x1:.3} mm, \
+                     over the points that jam on the palm or are held at the start",
                     t0 = Num(t0),
                     t1 = Num(t1),
                     x0 = Num(x0),
                     x1 = Num(x1)
                 );
+                for (what, c, how, t, x) in [
+                    (
+                        "earliest jam (nearest the hinge)",
+                        &a.earliest,
+                        high,
+                        t1,
+                        x0,
+                    ),
+                    ("latest jam (furthest out)", &a.latest, low, t0, x1),
+                ] {
+                    let reached = match how {
+                        Reached::Corner => format!("at the {point} {}, {}", at(c), c.status),
+                        Reached::HeldAtStart => format!(
+                            "held at the start where the push just moves the disc; the corner \
+                             {} is {}",
+                            at(c),
+                            c.status
+                        ),
+                        Reached::PalmEnd => {
+                            format!("at the palm's end; the corner {} is {}", at(c), c.status)
+                        }
+                    };
+                    let _ = writeln!(
+                        s,
+                        "  {what}: theta_jam = {t:.3} deg, x_jam = {x:.3} mm, {reached}",
+                        t = Num(t),
+                        x = Num(x)
+                    );
+                }
+            }
+            _ if a.statuses == [JamStatus::OutsideModel] => {
+                if let Some(why) = models::outside(ModelKind::Statics, p) {
+                    let _ = writeln!(s, "  not run: {why}");
+                }
             }
             _ => {
-                let _ = writeln!(s, "  no point of the box jams");
+                let _ = writeln!(
+                    s,
+                    "  no point of the box jams on the palm or is held at the start"
+                );
+                let _ = writeln!(
+                    s,
+                    "  the {point}s where it would jam earliest and latest: {}, {}; {}, {}",
+                    at(&a.earliest),
+                    a.earliest.status,
+                    at(&a.latest),
+                    a.latest.status
+                );
             }
-        }
-        let names: Vec<&str> = a.inputs.iter().map(|i| i.name).collect();
-        for (what, c) in [
-            ("jams earliest (nearest the hinge)", &a.earliest),
-            ("jams latest (furthest out)", &a.latest),
-        ] {
-            let at: Vec<String> = names
-                .iter()
-                .zip(&c.values)
-                .map(|(n, v)| format!("{n} = {}", round(*v)))
-                .collect();
-            let jam = match (c.theta_jam_deg, c.x_jam_mm) {
-                (Some(t), Some(x)) => format!(
-                    ": theta_jam = {t:.3} deg, x_jam = {x:.3} mm",
-                    t = Num(t),
-                    x = Num(x)
-                ),
-                _ => String::new(),
-            };
-            let _ = writeln!(s, "  {what} at {}{jam}, {}", at.join(", "), c.status);
         }
         let others = if a.inputs.len() > 1 {
             " (the other inputs at their nominal values)"

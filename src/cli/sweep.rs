@@ -8,12 +8,12 @@ use serde::Deserialize;
 
 use super::args::{SceneArgs, parse_f64};
 use super::render::{RenderFormat, output_paths, write_rendered};
-use crate::charts::contour_map::ContourMapSpec;
 use crate::charts::spec::Size;
 use crate::charts::sweep::{SweepPanel, SweepSpec};
 use crate::charts::sweep_layers::SweepLayer;
 use crate::charts::{self, ChartSpec, Scene, axis_label};
 use crate::error::{Error, Result};
+use crate::figures::contour_map::ContourMapSettings;
 
 use crate::grid::{AxisScale, GridAxis, GridParam};
 use crate::models::ModelKind;
@@ -183,7 +183,7 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
         }
         [x, y] => {
             let (x_axis, y_axis) = (x.axis(101), y.axis(101));
-            let chart = ChartSpec::ContourMap(ContourMapSpec {
+            let chart = ChartSpec::ContourMap(ContourMapSettings {
                 x_axis,
                 y_axis,
                 x_jam_levels_mm: Vec::new(),

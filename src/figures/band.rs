@@ -66,7 +66,7 @@ pub fn from_uncertain(
             label.push(format!("{} {lo} to {hi}", i.name));
         }
     }
-    let box_answer = crate::uncertain::range::ends(p, &edges);
+    let box_answer = crate::uncertain::range::ends(p, &edges)?;
     Ok(Some(Band {
         earliest: edges.apply(p, &box_answer.earliest.values),
         latest: edges.apply(p, &box_answer.latest.values),

@@ -148,6 +148,15 @@ where
     }
 }
 
+/// Serialises a map's cells as their summary (serde's `serialize_with`).
+pub(crate) fn summary_of<C, S>(cells: &C, s: S) -> Result<S::Ok, S::Error>
+where
+    C: HasCells,
+    S: Serializer,
+{
+    cells.table().serialize(s)
+}
+
 /// A figure's grid of cells, written as a [`CellsTable`].
 pub(crate) trait HasCells {
     /// The cells as they go into the CSV.

@@ -8,10 +8,10 @@ use serde::{Deserialize, Serialize};
 
 use super::cells::{self, CellsTable, HasCells};
 use super::models::{self, Models};
-use super::{DataFormat, Figure, FigureData, Input};
+use super::{At, DataFormat, Figure, FigureData, Input};
 use crate::csv_out::Column;
 use crate::error::{Error, Result};
-use crate::grid::{GridAxis, GridParam, GridRequest, GridResult, JamPoint, Quantity};
+use crate::grid::{GridAxis, GridParam, GridRequest, GridResult, Quantity};
 use crate::models::ModelKind;
 use crate::scene::SceneParams;
 
@@ -144,9 +144,9 @@ impl Figure for JamMapSettings {
                 let points = models::along(models, &model, &p, param, &xs)?;
                 xs.into_iter()
                     .zip(points)
-                    .map(|(value, point)| AtValue {
-                        param,
-                        value,
+                    .map(|(value, point)| At {
+                        params: [param],
+                        at: [value],
                         point,
                     })
                     .collect()
@@ -154,9 +154,9 @@ impl Figure for JamMapSettings {
             false => Vec::new(),
         };
         let read_off = match (self.has(JamMapLayer::ReadOff), param.get(&p)) {
-            (true, Some(value)) => Some(AtValue {
-                param,
-                value,
+            (true, Some(value)) => Some(At {
+                params: [param],
+                at: [value],
                 point: models.jam_point(&model, &p)?,
             }),
             _ => None,
@@ -187,30 +187,6 @@ impl JamMapSettings {
     }
 }
 
-/// A jam point at one value of the x parameter; its serde form names the parameter,
-/// `{"mu": 0.4, "status": "jams", "theta_jam_deg": 44.64619, "x_jam_mm": 24.35455}`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct AtValue {
-    /// The parameter.
-    pub param: GridParam,
-    /// Its value, in its unit.
-    pub value: f64,
-    /// The model's answer there.
-    pub point: JamPoint,
-}
-
-impl Serialize for AtValue {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-        use serde::ser::SerializeMap;
-        let mut map = s.serialize_map(Some(4))?;
-        map.serialize_entry(self.param.as_str(), &self.value)?;
-        map.serialize_entry("status", &self.point.status)?;
-        map.serialize_entry("theta_jam_deg", &self.point.theta_jam_deg)?;
-        map.serialize_entry("x_jam_mm", &self.point.x_jam_mm)?;
-        map.end()
-    }
-}
-
 /// The computed jam map: its serde form is its data file (the cells go to the CSV beside it,
 /// summarised under `cells`).
 #[derive(Debug, Clone, Serialize)]
@@ -221,9 +197,9 @@ pub struct JamMapData {
     #[serde(flatten)]
     pub settings: JamMapSettings,
     /// The model's jam at the scene's own x value (with the read-off layer).
-    pub read_off: Option<AtValue>,
+    pub read_off: Option<At<1>>,
     /// The model's jam at each x sample (with the boundary layer).
-    pub boundary: Vec<AtValue>,
+    pub boundary: Vec<At<1>>,
     /// The margin grid and each cell's region (with the regions layer).
     #[serde(serialize_with = "cells::summary")]
     pub cells: Option<JamMapCells>,

@@ -6,19 +6,22 @@
 //! the chart's data file (JSON), or whose rows are (CSV). [`crate::charts`] draws that data;
 //! any other front end can take it as it is, without a picture.
 //!
-//! Kinds, one module each: [`jam_map`] (Fig. 3).
+//! Kinds, one module each: [`jam_map`] (Fig. 3), [`contour_map`] (Fig. 7c), [`universal`].
 
 pub mod band;
 pub(crate) mod cells;
+pub mod contour_map;
+pub mod contours;
 pub mod jam_map;
 pub(crate) mod models;
+pub mod universal;
 
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 
 use crate::dynamics::DynamicsParams;
 use crate::error::Result;
-use crate::grid::GridAxis;
+use crate::grid::{GridAxis, GridParam, JamPoint};
 use crate::minnorm::MinNormSettings;
 use crate::scene::SceneParams;
 
@@ -76,6 +79,32 @@ pub(crate) trait Figure: Sized + DeserializeOwned + Serialize {
 
     /// Computes the figure; min-norm programs and simulations go through `models`.
     fn compute(&self, input: &Input, models: &dyn Models) -> Result<Self::Data>;
+}
+
+/// A model's jam at a point of a figure's parameters; its serde form names them,
+/// `{"mu": 0.4, "status": "jams", "theta_jam_deg": 44.64619, "x_jam_mm": 24.35455}`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct At<const N: usize> {
+    /// The parameters.
+    pub params: [GridParam; N],
+    /// Their values, in their units.
+    pub at: [f64; N],
+    /// The model's answer there.
+    pub point: JamPoint,
+}
+
+impl<const N: usize> Serialize for At<N> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut map = s.serialize_map(Some(N + 3))?;
+        for (param, v) in self.params.iter().zip(&self.at) {
+            map.serialize_entry(param.as_str(), v)?;
+        }
+        map.serialize_entry("status", &self.point.status)?;
+        map.serialize_entry("theta_jam_deg", &self.point.theta_jam_deg)?;
+        map.serialize_entry("x_jam_mm", &self.point.x_jam_mm)?;
+        map.end()
+    }
 }
 
 /// How a figure's data file is written.

@@ -1,24 +1,78 @@
-//! The answer over a box of inputs: the interval of theta_jam and x_jam, which end of each input
-//! makes the jam come earliest or latest, and where the status changes.
+//! The answer over a box of inputs: the interval of theta_jam and x_jam, where each of its ends
+//! is reached, and where the status changes.
 //!
-//! The closed form answers exactly from the box's corners: theta_jam is monotone in every
-//! uncertain input (the proof is in [`crate::statics`], "Monotone in every uncertain input"),
-//! so its extremes over the box lie at the corner with every input at its theta-raising end
-//! (the earliest jam, nearest the hinge) and the opposite corner (the latest). x_jam falls as
-//! theta_jam grows up to the angle [`x_turn_rad`] (180 deg without a palm offset), so its
-//! extremes are the corners' as well, or x at that angle when the interval of theta crosses it.
-//! Those two corners are [`ends`]. The status changes are found along each input (the others
-//! at their nominal values) to 1e-9 of the range's width: the status is monotone along each
-//! input (each status holds on one stretch), so a walk goes from the low end's status to the
-//! high end's, change by change. A change between jams and beyond_reach (or jammed_at_start)
-//! lies where theta_jam crosses the palm's reach angle (or the start angle): Eq. 2 solved for
-//! the input gives it in closed form for the push, the mass and the palm's friction, by
-//! Newton's method in the friction angle for the ground's friction (`invert`, derived in its docs), and the
-//! statuses a hair either side of it confirm it (regula falsi on theta_jam, then bisection of
-//! the status, where they do not); other changes are bisected with the cheap
-//! [`statics::status`] (no past-palm extras). So a range answer over one input costs its two
-//! corners, a root and two statuses per change (`cargo bench --bench uncertain` prints it
-//! against a point answer).
+//! ## What the interval promises
+//!
+//! Every point of the box answers inside it, and each end is a value some point answers (or
+//! the limit of such values): the interval of theta_jam and x_jam over the points that answer
+//! one, those that jam on the palm or are held at the start (a held disc answers the start
+//! angle). A point beyond the palm's reach, too weak to be moved or never jamming answers none,
+//! and the statuses say where those lie. The same meaning for every model: the closed form
+//! computes the interval exactly from the box's corners, the other models report the range of
+//! their samples' answers.
+//!
+//! ## Why the closed form's interval is exact
+//!
+//! Write theta* for the closed form's raw angle alpha_g + alpha_p + asin(m g sin(alpha_g) / F)
+//! (+inf where m g sin(alpha_g) >= F), S for the start angle and rho for the palm's reach angle
+//! ([`statics::reach_angle_rad`], the contact at the palm's end). Neither S nor rho depends on
+//! an input that takes a range, and S <= 90 deg wherever the closed form answers (above it the
+//! port answers `outside_model` at every point of the box). A point answers ([`statics`]):
+//!
+//! | theta*                      | status            | theta_jam |
+//! |-----------------------------|-------------------|-----------|
+//! | 0 (no friction at all)      | never_jams        | none      |
+//! | in (0, rho)                 | beyond_reach      | none      |
+//! | in [rho, S)                 | jams              | theta*    |
+//! | in [S, inf)                 | jammed_at_start   | S         |
+//! | inf, alpha_g + alpha_p < 90 | too_weak          | none      |
+//! | inf, alpha_g + alpha_p >= 90| jammed_at_start   | S         |
+//!
+//! (The margin at the start, which the statics check as well, adds nothing for S <= 90 deg:
+//! with psi = S - alpha_g - alpha_p <= 90 deg, sin(psi) <= m g sin(alpha_g) / F iff psi <=
+//! asin(m g sin(alpha_g) / F), i.e. theta* >= S.) So the answer is min(theta*, S) wherever
+//! theta* >= rho: a non-decreasing function of theta*, clamped at the start.
+//!
+//! theta* is monotone in every input (the proof is in [`crate::statics`], "Monotone in every
+//! uncertain input"): over the box it is least at the corner with every input at its
+//! theta-lowering end (the latest jam, [`End`]) and greatest at the opposite corner (the
+//! earliest). The points where it is finite form a down-set of the box (m g sin(alpha_g) / F
+//! grows towards the earliest corner), so they are connected, and theta* is continuous there:
+//! it takes every value from the latest corner's up to its supremum. Hence, with the two
+//! corners' answers:
+//!
+//! - **The highest theta_jam** (the earliest jam, smallest x_jam) is the earliest corner's
+//!   answer where it jams or is held. Where that corner is too weak but the latest is not, it is
+//!   S: approaching the push that just moves the disc, asin(...) tends to 90 deg, so theta*
+//!   tends to alpha_g + alpha_p + 90 deg > 90 deg >= S (alpha_g > 0 wherever a push is too
+//!   weak), and the points there are held at the start ([`Reached::HeldAtStart`]). Where the
+//!   earliest corner jams beyond the palm or never jams, theta* < rho at every point and no
+//!   point answers; likewise where every point is too weak.
+//! - **The lowest theta_jam** (the latest jam, largest x_jam) is the latest corner's answer
+//!   where it jams or is held. Where its jam lies beyond the palm (or it never jams) while the
+//!   highest answer exists, theta* passes rho on its way up, so the jam at the palm's end, rho,
+//!   is answered ([`Reached::PalmEnd`]). Where the latest corner is too weak, every point is
+//!   too weak or held at the start by a locked wedge: S.
+//! - **x_jam** = r cot(theta/2) + h / sin(theta) falls as theta grows on (0, 90 deg] (dx/dtheta
+//!   < 0 there, the statics docs), so its interval is x at the two ends of theta's, swapped.
+//!
+//! [`hull`] is this rule on two corners' answers; the sweep band calls it at each swept value.
+//! `tests/range_promise.rs` checks it on random boxes against a dense grid of point answers.
+//!
+//! ## The status changes
+//!
+//! Found along each input (the others at their nominal values) to 1e-9 of the range's width:
+//! the status is monotone along each input (each status holds on one stretch), so a walk goes
+//! from the low end's status to the high end's, change by change. A change between jams and
+//! beyond_reach (or jammed_at_start) lies where theta_jam crosses the palm's reach angle (or
+//! the start angle): Eq. 2 solved for the input gives it in closed form for the push, the mass
+//! and the palm's friction, by Newton's method in the friction angle for the ground's friction
+//! (`invert`, derived in its docs), and the statuses a hair either side of it confirm it
+//! (regula falsi on theta_jam, then bisection of the status, where they do not); other changes
+//! are bisected with the cheap [`statics::status`] (no past-palm extras), at most 30 halvings
+//! and never below the spacing of floats (a range 1e-8 wide at 3.6 is 45 floats wide). So a
+//! range answer over one input costs its two corners, a root and two statuses per change
+//! (`cargo bench --bench uncertain` prints it against a point answer).
 //!
 //! The other models answer the box by sampling it: a grid of [`SAMPLES_PER_INPUT`] values per
 //! input (at most [`MAX_GRID`] points), whose range of answers is reported, not a bound.
@@ -27,7 +81,7 @@ use serde::Serialize;
 
 use super::UncertainSet;
 use crate::error::Result;
-use crate::models::{self, ModelSpec};
+use crate::models::{self, ModelKind, ModelSpec};
 use crate::scene::{JamStatus, SceneParams};
 use crate::statics;
 
@@ -36,6 +90,9 @@ pub const SAMPLES_PER_INPUT: usize = 9;
 
 /// Largest sampling grid: with more inputs each gets fewer values (at least 2, its ends).
 pub const MAX_GRID: usize = 81;
+
+/// Halvings of a bisection of the status along an input: 2^-30 < 1e-9 of the range's width.
+const HALVINGS: usize = 30;
 
 /// Which end of an input's range.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -58,6 +115,21 @@ pub enum Method {
         /// How many points.
         samples: usize,
     },
+}
+
+/// How an end of the interval is reached (module docs, "Why the closed form's interval is
+/// exact").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Reached {
+    /// By the corner given beside it (for a sampled model, the sample): its own answer.
+    Corner,
+    /// The corner is too weak to move the disc; the points where the push just moves it are
+    /// held at the start angle.
+    HeldAtStart,
+    /// The corner's jam lies past the palm's end (or it never jams); the points between jam
+    /// exactly at the palm's end, at the reach angle.
+    PalmEnd,
 }
 
 /// The statuses along one input's range, the other inputs at their nominal values.
@@ -86,15 +158,15 @@ pub struct Segment {
     pub status: JamStatus,
 }
 
-/// One point of the box and the answer there.
+/// One point of the box and the model's answer there, as the port gives it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Corner {
     /// Each input's value, in the order of the inputs.
     pub values: Vec<f64>,
     /// The status there.
     pub status: JamStatus,
-    /// theta_jam in deg: for the closed form where the disc jams on a long enough palm (also
-    /// when the status is beyond_reach), for a sampled model its own answer.
+    /// theta_jam in deg where the disc jams on the palm or is held at the start (the start
+    /// angle); None otherwise.
     pub theta_jam_deg: Option<f64>,
     /// x_jam in mm, as for `theta_jam_deg`.
     pub x_jam_mm: Option<f64>,
@@ -106,53 +178,104 @@ pub struct RangeAnswer {
     /// Exact from the corners, or sampled.
     #[serde(flatten)]
     pub method: Method,
-    /// Where the jam comes earliest (largest theta_jam, smallest x_jam).
+    /// The corner with every input at its theta-raising end (sampled: the sample with the
+    /// largest theta_jam, or the first sample when none answers).
     pub earliest: Corner,
-    /// Where the jam comes latest (smallest theta_jam, largest x_jam).
+    /// The opposite corner (sampled: the sample with the smallest theta_jam).
     pub latest: Corner,
-    /// The interval [min, max] of theta_jam in deg over the box (None where no point jams).
+    /// The interval [min, max] of theta_jam in deg over the points that jam on the palm or are
+    /// held at the start (None where no point does).
     pub theta_jam_deg: Option<[f64; 2]>,
-    /// The interval [min, max] of x_jam in mm over the box.
+    /// The interval [min, max] of x_jam in mm over the same points.
     pub x_jam_mm: Option<[f64; 2]>,
+    /// How the interval's ends are reached: [the lowest theta_jam (at `latest`), the highest
+    /// (at `earliest`)]; None with the interval.
+    pub reached: Option<[Reached; 2]>,
     /// Each input's ends and statuses.
     pub inputs: Vec<InputEnds>,
     /// Every status met in the box, in the order of [`JamStatus::ALL`].
     pub statuses: Vec<JamStatus>,
 }
 
-/// The palm angle in rad up to which x_jam = r cot(theta/2) + h / sin(theta) falls as theta
-/// grows: dx/dtheta = -(2 (r + h) cos^2(theta/2) - h) / sin^2(theta) < 0 while
-/// cos^2(theta/2) > h / (2 (r + h)), which holds up to 90 deg at least and to 180 deg for h = 0.
-pub fn x_turn_rad(p: &SceneParams) -> f64 {
-    let (r, h) = (p.radius_mm, p.palm_offset_mm);
-    2.0 * (h / (2.0 * (r + h))).sqrt().acos()
+/// The interval of a box from the closed form's answers at its two extreme corners ([`hull`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Hull {
+    /// [min, max] of theta_jam in deg over the box's answering points.
+    pub theta_jam_deg: [f64; 2],
+    /// [min, max] of x_jam in mm over the same points.
+    pub x_jam_mm: [f64; 2],
+    /// How [the lowest theta_jam, the highest] are reached.
+    pub reached: [Reached; 2],
 }
 
-/// The two corners of a box and the interval between them: the part of a [`RangeAnswer`]
-/// without the status changes along each input.
+/// A point's answer as [`hull`] reads it: its status and, where it answers one, (theta_jam in
+/// deg, x_jam in mm).
+pub type PointAnswer = (JamStatus, Option<(f64, f64)>);
+
+/// The interval of theta_jam and x_jam over a box from the closed form's answers at its
+/// earliest-jam and latest-jam corners (every input at its theta-raising end, and at the
+/// other), by the rule derived in the module docs: a corner that jams or is held answers its
+/// own end; a too weak earliest corner gives the start angle, a latest corner beyond the palm
+/// or never jamming the palm's end, a too weak latest corner the start angle. `p` is the
+/// scene at either corner (the start angle, the radius, the palm offset and its length, which
+/// no uncertain input moves). None where no point of the box answers.
+pub fn hull(p: &SceneParams, earliest: PointAnswer, latest: PointAnswer) -> Option<Hull> {
+    use JamStatus::{BeyondReach, JammedAtStart, Jams, NeverJams, TooWeak};
+    let start = p.start_angle_deg.to_radians();
+    let held = (
+        p.start_angle_deg,
+        p.disc_position_mm(start),
+        Reached::HeldAtStart,
+    );
+    let hi = match earliest {
+        (Jams | JammedAtStart, Some((t, x))) => (t, x, Reached::Corner),
+        (TooWeak, _) if latest.0 != TooWeak => held,
+        _ => return None,
+    };
+    let lo = match latest {
+        (Jams | JammedAtStart, Some((t, x))) => (t, x, Reached::Corner),
+        (BeyondReach | NeverJams, _) => {
+            let reach = statics::reach_angle_rad(p);
+            (
+                reach.to_degrees(),
+                p.disc_position_mm(reach),
+                Reached::PalmEnd,
+            )
+        }
+        (TooWeak, _) => held,
+        _ => return None,
+    };
+    Some(Hull {
+        theta_jam_deg: [lo.0, hi.0],
+        x_jam_mm: [hi.1, lo.1],
+        reached: [lo.2, hi.2],
+    })
+}
+
+/// The box's two extreme corners and its interval: the part of a [`RangeAnswer`] without the
+/// status changes along each input.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BoxEnds {
-    /// Where the jam comes earliest (every input at its theta-raising end).
+    /// Every input at its theta-raising end (the earliest jam), and the answer there.
     pub earliest: Corner,
-    /// Where the jam comes latest (the opposite corner).
+    /// The opposite corner (the latest jam).
     pub latest: Corner,
-    /// The interval [min, max] of theta_jam in deg over the box (None where no point jams).
-    pub theta_jam_deg: Option<[f64; 2]>,
-    /// The interval [min, max] of x_jam in mm over the box.
-    pub x_jam_mm: Option<[f64; 2]>,
+    /// The interval, None where no point of the box jams on the palm or is held at the start.
+    pub hull: Option<Hull>,
     /// Each input's (low end, high end, the end that raises theta_jam), in the set's order.
     pub inputs: Vec<(f64, f64, End)>,
 }
 
 /// The closed form over the box of `set` around `p` (which holds the nominal values).
-pub fn closed_form(p: &SceneParams, set: &UncertainSet) -> RangeAnswer {
+pub fn closed_form(p: &SceneParams, set: &UncertainSet) -> Result<RangeAnswer> {
     let BoxEnds {
         earliest,
         latest,
-        theta_jam_deg,
-        x_jam_mm,
+        hull,
         inputs: per_input,
-    } = ends(p, set);
+    } = ends(p, set)?;
+    // A start above 90 deg is outside the model at every point of the box (no input moves it).
+    let outside = models::outside(ModelKind::Statics, p).is_some();
     let inputs: Vec<InputEnds> = set
         .inputs
         .iter()
@@ -163,54 +286,63 @@ pub fn closed_form(p: &SceneParams, set: &UncertainSet) -> RangeAnswer {
                 End::High => (latest.status, earliest.status),
                 End::Low => (earliest.status, latest.status),
             });
+            let segments = match outside {
+                true => vec![Segment {
+                    from: lo,
+                    to: hi,
+                    status: JamStatus::OutsideModel,
+                }],
+                false => walk((lo, hi), known, Some(&input.keys), |x| {
+                    with_input(p, &input.keys, x)
+                }),
+            };
             InputEnds {
                 name: input.name,
                 lo,
                 hi,
                 earliest_at,
-                segments: walk((lo, hi), known, Some(&input.keys), |x| {
-                    with_input(p, &input.keys, x)
-                }),
+                segments,
             }
         })
         .collect();
     // Every status in the box lies on the diagonal from the latest corner to the earliest:
     // the status is decided by theta_jam (and the start, which no input changes), which is
     // monotone along it. With one input the diagonal is that input's range.
-    let statuses = if let [only] = inputs.as_slice() {
-        distinct(only.segments.iter().map(|s| s.status))
-    } else {
-        let (a, b) = (&latest.values, &earliest.values);
-        let diagonal = walk((0.0, 1.0), None, None, |t| {
-            let v: Vec<f64> = a.iter().zip(b).map(|(a, b)| a + t * (b - a)).collect();
-            set.apply(p, &v)
-        });
-        distinct(diagonal.iter().map(|s| s.status))
+    let statuses = match inputs.as_slice() {
+        _ if outside => vec![JamStatus::OutsideModel],
+        [only] => distinct(only.segments.iter().map(|s| s.status)),
+        _ => {
+            let (a, b) = (&latest.values, &earliest.values);
+            let known = Some((latest.status, earliest.status));
+            let diagonal = walk((0.0, 1.0), known, None, |t| {
+                let v: Vec<f64> = a.iter().zip(b).map(|(a, b)| a + t * (b - a)).collect();
+                set.apply(p, &v)
+            });
+            distinct(diagonal.iter().map(|s| s.status))
+        }
     };
-    RangeAnswer {
+    Ok(RangeAnswer {
         method: Method::Corners,
+        theta_jam_deg: hull.map(|h| h.theta_jam_deg),
+        x_jam_mm: hull.map(|h| h.x_jam_mm),
+        reached: hull.map(|h| h.reached),
         earliest,
         latest,
-        theta_jam_deg,
-        x_jam_mm,
         inputs,
         statuses,
-    }
+    })
 }
 
-/// The box's two corners and its intervals of theta_jam and x_jam, exactly (theta_jam is
-/// monotone in every input): two point answers' work, without the status changes that
-/// [`closed_form`] adds.
-pub fn ends(p: &SceneParams, set: &UncertainSet) -> BoxEnds {
-    // Per input: its ends and the end that raises theta_jam.
+/// The box's two extreme corners, answered through the port, and its interval ([`hull`]):
+/// two point answers' work, without the status changes that [`closed_form`] adds.
+pub fn ends(p: &SceneParams, set: &UncertainSet) -> Result<BoxEnds> {
     let per_input: Vec<(f64, f64, End)> = set
         .inputs
         .iter()
         .map(|input| {
             let (lo, hi) = input.value.ends();
-            let earliest_at = known_earliest_end(p, &input.keys).unwrap_or_else(|| {
-                // The direction by theta_jam at its ends, the others nominal. The proof says
-                // the sign does not depend on the others.
+            let earliest_at = known_earliest_end(&input.keys).unwrap_or_else(|| {
+                // A setting the proof does not cover: the direction by theta_jam at its ends.
                 let at = |x: f64| statics::theta_jam_rad(&with_input(p, &input.keys, x));
                 if at(hi) >= at(lo) {
                     End::High
@@ -227,45 +359,24 @@ pub fn ends(p: &SceneParams, set: &UncertainSet) -> BoxEnds {
             .map(|&(lo, hi, e)| if (e == End::High) == early { hi } else { lo })
             .collect()
     };
-    let corner = |values: Vec<f64>| {
-        let q = set.apply(p, &values);
-        let (status, theta, x) = statics::status_and_jam(&q);
-        let jam = (theta.is_finite() && theta > 0.0).then_some(theta);
-        Corner {
-            status,
-            theta_jam_deg: jam.map(f64::to_degrees),
-            x_jam_mm: jam.map(|t| x.unwrap_or_else(|| q.disc_position_mm(t))),
+    let corner = |values: Vec<f64>| -> Result<Corner> {
+        let s = models::solve(&ModelSpec::Statics, &set.apply(p, &values))?;
+        Ok(Corner {
             values,
-        }
+            status: s.status,
+            theta_jam_deg: s.theta_jam_deg,
+            x_jam_mm: s.x_jam_mm,
+        })
     };
-    let earliest = corner(pick(true));
-    let latest = corner(pick(false));
-    let theta_jam_deg = match (latest.theta_jam_deg, earliest.theta_jam_deg) {
-        (Some(a), Some(b)) => Some([a, b]),
-        (Some(a), None) => Some([a, a]),
-        _ => None,
-    };
-    // x at the corners' angles, which they hold already (no input moves r or h), or at the
-    // turning angle where the interval of theta passes it.
-    let x_jam_mm = match (latest.x_jam_mm, earliest.x_jam_mm) {
-        (Some(x_hi), earliest_x) => {
-            let turn = x_turn_rad(p);
-            let x_lo = match (earliest.theta_jam_deg, earliest_x) {
-                (Some(b), _) if b.to_radians() > turn => p.disc_position_mm(turn),
-                (Some(_), Some(x)) => x,
-                _ => x_hi,
-            };
-            Some([x_lo.min(x_hi), x_hi.max(x_lo)])
-        }
-        _ => None,
-    };
-    BoxEnds {
+    let earliest = corner(pick(true))?;
+    let latest = corner(pick(false))?;
+    let answer = |c: &Corner| (c.status, c.theta_jam_deg.zip(c.x_jam_mm));
+    Ok(BoxEnds {
+        hull: hull(p, answer(&earliest), answer(&latest)),
         earliest,
         latest,
-        theta_jam_deg,
-        x_jam_mm,
         inputs: per_input,
-    }
+    })
 }
 
 /// `p` with every field in `keys` set to `x`.
@@ -279,15 +390,13 @@ fn with_input(p: &SceneParams, keys: &[&'static str], x: f64) -> SceneParams {
 
 /// The end of an input (setting `keys`) that raises theta_jam, from the proof in
 /// [`crate::statics`] ("Monotone in every uncertain input"): the high end of a friction or the
-/// mass, the low end of the push. None where the proof gives no strict sign (no ground
-/// friction or no weight: the push and the mass then leave theta_jam alone) or for a key it
-/// does not cover; the caller then compares theta_jam at the ends.
-fn known_earliest_end(p: &SceneParams, keys: &[&'static str]) -> Option<End> {
-    let strict = p.mu_ground > 0.0 && p.weight_n() > 0.0;
-    let raises = |k: &&str| matches!(*k, "mu_ground" | "mu_palm") || (*k == "mass_kg" && strict);
+/// mass, the low end of the push (where the push or the mass leaves theta_jam alone, without
+/// ground friction or weight, either end is both). None for a key the proof does not cover.
+fn known_earliest_end(keys: &[&'static str]) -> Option<End> {
+    let raises = |k: &&str| matches!(*k, "mu_ground" | "mu_palm" | "mass_kg");
     if keys.iter().all(raises) {
         Some(End::High)
-    } else if strict && keys == ["force_n"] {
+    } else if keys == ["force_n"] {
         Some(End::Low)
     } else {
         None
@@ -411,10 +520,16 @@ pub fn sampled(spec: &ModelSpec, p: &SceneParams, set: &UncertainSet) -> Result<
         x_jam_mm: s.x_jam_mm,
     };
     let theta = |x: &&(Vec<f64>, models::Solution)| x.1.theta_jam_deg.unwrap_or(f64::NAN);
-    let jams: Vec<&(Vec<f64>, models::Solution)> = points
-        .iter()
-        .filter(|x| x.1.theta_jam_deg.is_some())
-        .collect();
+    // The interval's one meaning (module docs): over the samples that jam on the palm or are
+    // held at the start; a model's number beside another status (beyond_reach, inaccurate) is
+    // left out, and the statuses say it was met.
+    let answers = |s: &models::Solution| {
+        matches!(s.status, JamStatus::Jams | JamStatus::JammedAtStart)
+            && s.theta_jam_deg.is_some()
+            && s.x_jam_mm.is_some()
+    };
+    let jams: Vec<&(Vec<f64>, models::Solution)> =
+        points.iter().filter(|x| answers(&x.1)).collect();
     let by_theta = |a: &&&(Vec<f64>, models::Solution), b: &&&(Vec<f64>, models::Solution)| {
         theta(a).total_cmp(&theta(b))
     };
@@ -427,7 +542,7 @@ pub fn sampled(spec: &ModelSpec, p: &SceneParams, set: &UncertainSet) -> Result<
         .min_by(by_theta)
         .map_or_else(|| corner(&points[0]), |x| corner(x));
     let span = |f: fn(&models::Solution) -> Option<f64>| {
-        let vals: Vec<f64> = points.iter().filter_map(|x| f(&x.1)).collect();
+        let vals: Vec<f64> = jams.iter().filter_map(|x| f(&x.1)).collect();
         (!vals.is_empty()).then(|| {
             let lo = vals.iter().copied().fold(f64::INFINITY, f64::min);
             [lo, vals.iter().copied().fold(f64::NEG_INFINITY, f64::max)]
@@ -465,6 +580,7 @@ pub fn sampled(spec: &ModelSpec, p: &SceneParams, set: &UncertainSet) -> Result<
         },
         theta_jam_deg: span(|s| s.theta_jam_deg),
         x_jam_mm: span(|s| s.x_jam_mm),
+        reached: (!jams.is_empty()).then_some([Reached::Corner; 2]),
         statuses: distinct(points.iter().map(|x| x.1.status)),
         earliest,
         latest,
@@ -487,8 +603,8 @@ fn earliest_end(earliest: &[f64], latest: &[f64], i: usize) -> End {
 /// `hi` is reached. `known` gives the statuses at the ends where the caller has them; `keys`
 /// the settings `at` moves, when the walk is along one input (its changes are then solved for
 /// in closed form, [`invert`]). The status alone is asked ([`statics::status`]):
-/// `statics::solve` would run its past-palm bisection at every point beyond the palm (issue 19:
-/// the range answer took 1450x a point answer).
+/// `statics::solve` would run its past-palm bisection at every point beyond the palm (the range
+/// answer took 1450x a point answer).
 fn walk(
     (lo, hi): (f64, f64),
     known: Option<(JamStatus, JamStatus)>,
@@ -503,10 +619,8 @@ fn walk(
     // Each status has one stretch, so there are fewer changes than statuses; the bound only
     // guards against a status that is not monotone after all.
     while here != last && out.len() < JamStatus::ALL.len() {
-        let (to, next) = change_by_theta((from, hi), tol, here, last, keys, &at).map_or_else(
-            || bisect_change((from, hi), tol, here, status),
-            |to| (to, last),
-        );
+        let (to, next) = change_by_theta((from, hi), tol, here, last, keys, &at)
+            .map_or_else(|| bisect_change((from, hi), here, status), |to| (to, last));
         out.push(Segment {
             from,
             to,
@@ -589,17 +703,15 @@ fn change_by_theta(
 }
 
 /// Where the status changes from `here` on `[a, b]` (status(a) = here != status(b)), by
-/// bisection of the status to `tol`: the upper end of the final bracket and its status.
+/// bisection of the status ([`HALVINGS`] halvings, fewer where the bracket reaches two
+/// neighbouring floats first): the upper end of the final bracket and its status.
 fn bisect_change(
-    (mut a, mut b): (f64, f64),
-    tol: f64,
+    (a, b): (f64, f64),
     here: JamStatus,
     status: impl Fn(f64) -> JamStatus,
 ) -> (f64, JamStatus) {
-    while b - a > tol {
-        let m = 0.5 * (a + b);
-        if status(m) == here { a = m } else { b = m }
-    }
+    let mid = |a: f64, b: f64| 0.5 * (a + b);
+    let (_, b) = crate::locator::bisect_bracket((a, b), HALVINGS, mid, |x| status(x) == here);
     (b, status(b))
 }
 

@@ -1,0 +1,133 @@
+//! Contour-crate geometry over a map: the bands and iso-lines that the `contour` crate traces
+//! on a grid, in the axes' own coordinates (the value on a linear axis, its ln on a log axis:
+//! what a chart strokes), written in the axes' units.
+
+use geo_types::{MultiLineString, MultiPolygon};
+use serde::ser::{Serialize, SerializeSeq, Serializer};
+
+use crate::grid::{AxisScale, GridAxis};
+
+/// Polylines or rings in the axes' own coordinates (ln of the value on a log axis).
+pub type Paths = Vec<Vec<(f64, f64)>>;
+
+/// Paths traced over a map, with the scales that turn them into axis values: their serde form
+/// is the polylines of `[x, y]` axis values.
+#[derive(Debug, Clone, Default)]
+pub struct Traced {
+    /// The paths in the axes' own coordinates.
+    pub paths: Paths,
+    /// The x and y axes' scales.
+    pub scales: [AxisScale; 2],
+}
+
+impl Traced {
+    /// `paths` traced over the axes `xa` and `ya`.
+    pub fn over<P>(paths: Paths, xa: &GridAxis<P>, ya: &GridAxis<P>) -> Self {
+        Traced {
+            paths,
+            scales: [xa.scale, ya.scale],
+        }
+    }
+}
+
+impl Serialize for Traced {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let [sx, sy] = self.scales;
+        let mut seq = s.serialize_seq(Some(self.paths.len()))?;
+        for p in &self.paths {
+            let values: Vec<[f64; 2]> = p
+                .iter()
+                .map(|&(u, v)| [axis_value(u, sx), axis_value(v, sy)])
+                .collect();
+            seq.serialize_element(&values)?;
+        }
+        seq.end()
+    }
+}
+
+/// The axis value of coordinate `u` on an axis of scale `scale` (ln of the value on a log axis).
+pub fn axis_value(u: f64, scale: AxisScale) -> f64 {
+    match scale {
+        AxisScale::Log => u.exp(),
+        AxisScale::Linear => u,
+    }
+}
+
+/// The exterior rings of contour polygons, mapped from the contour crate's grid coordinates to
+/// the axes' own coordinates (ln for log axes). The crate puts sample i at the centre of cell [i, i + 1].
+pub fn grid_polygons<P>(
+    mp: &MultiPolygon<f64>,
+    xa: &GridAxis<P>,
+    ya: &GridAxis<P>,
+) -> Vec<Vec<(f64, f64)>> {
+    mp.0.iter()
+        .map(|poly| {
+            poly.exterior()
+                .0
+                .iter()
+                .map(|c| (grid_to_axis(c.x, xa), grid_to_axis(c.y, ya)))
+                .collect()
+        })
+        .collect()
+}
+
+/// The rings, in the axes' own coordinates, around the cells of an `xa` x `ya` grid where `mask` holds (x
+/// fastest); none when no cell does. A jam map's cells past the palm's end and a universal
+/// chart's cells held at the start are traced by it.
+pub fn mask_rings<P>(mask: &[bool], xa: &GridAxis<P>, ya: &GridAxis<P>) -> Vec<Vec<(f64, f64)>> {
+    if !mask.contains(&true) {
+        return Vec::new();
+    }
+    let values: Vec<f64> = mask.iter().map(|b| f64::from(u8::from(*b))).collect();
+    let builder = contour::ContourBuilder::new(xa.count, ya.count, true);
+    // A single threshold on a finite grid cannot fail; no polygon is drawn if it ever did.
+    let rings = builder.contours(&values, &[0.5]).unwrap_or_default();
+    rings
+        .iter()
+        .flat_map(|c| grid_polygons(c.geometry(), xa, ya))
+        .collect()
+}
+
+/// The axis coordinate (ln for a log axis) of contour-crate grid coordinate `g` on axis `a`.
+pub fn grid_to_axis<P>(g: f64, a: &GridAxis<P>) -> f64 {
+    let (lo, hi) = match a.scale {
+        crate::grid::AxisScale::Linear => (a.min, a.max),
+        crate::grid::AxisScale::Log => (a.min.ln(), a.max.ln()),
+    };
+    lo + (hi - lo) * (g - 0.5) / (a.count - 1) as f64
+}
+
+/// Contour-crate polylines mapped to the axes' own coordinates, split where they run along the grid's border.
+///
+/// The crate closes every ring around the edge of the grid; those pieces are not iso-lines and
+/// would be drawn on the frame.
+pub fn grid_lines<P>(
+    ml: &MultiLineString<f64>,
+    xa: &GridAxis<P>,
+    ya: &GridAxis<P>,
+) -> Vec<Vec<(f64, f64)>> {
+    let (nx, ny) = (xa.count as f64, ya.count as f64);
+    let on_border =
+        |c: &geo_types::Coord<f64>| c.x <= 0.5 || c.x >= nx - 0.5 || c.y <= 0.5 || c.y >= ny - 0.5;
+    let mut out = Vec::new();
+    for ls in &ml.0 {
+        let mut cur: Vec<(f64, f64)> = Vec::new();
+        for w in ls.0.windows(2) {
+            if on_border(&w[0]) && on_border(&w[1]) {
+                if cur.len() > 1 {
+                    out.push(std::mem::take(&mut cur));
+                }
+                cur.clear();
+                continue;
+            }
+            if cur.is_empty() {
+                cur.push((grid_to_axis(w[0].x, xa), grid_to_axis(w[0].y, ya)));
+            }
+            cur.push((grid_to_axis(w[1].x, xa), grid_to_axis(w[1].y, ya)));
+        }
+        if cur.len() > 1 {
+            out.push(cur);
+        }
+    }
+    out
+}
