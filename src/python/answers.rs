@@ -238,8 +238,8 @@ impl BoxAnswer {
             .collect()
     }
 
-    /// P(x_jam < x) for each x asked (`before_mm`), as {x_mm: probability}; empty without a
-    /// distribution.
+    /// P(x_jam < x) for each x asked (`before_mm`), as [(x_mm, probability)]; empty without
+    /// a distribution.
     #[getter]
     fn probability(&self) -> Vec<(f64, f64)> {
         self.record

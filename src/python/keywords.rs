@@ -131,6 +131,13 @@ pub(super) fn read<'py>(
     for (k, v) in kwargs.into_iter().flat_map(|d| d.iter()) {
         let key: String = k.extract()?;
         let key = key.as_str();
+        if v.is_none() && key != "model" && !extras.contains(&key) {
+            // None is the keyword's default, as the signature shows it.
+            if scene_param(key).is_none() && settings::find(key).is_none() {
+                return Err(unknown(function, key, extras));
+            }
+            continue;
+        }
         if key == "model" {
             model = model_named(&v)?;
         } else if let Some(x) = extras.iter().find(|x| **x == key) {
@@ -138,9 +145,7 @@ pub(super) fn read<'py>(
         } else if let Some(param) = scene_param(key) {
             scene.push((param, given(py, param, &v)?));
         } else if let Some(decl) = settings::find(key).filter(|d| d.section != "scene") {
-            if !v.is_none() {
-                insert_at(&mut others, decl, toml_value(decl, &v)?);
-            }
+            insert_at(&mut others, decl, toml_value(decl, &v)?);
         } else {
             return Err(unknown(function, key, extras));
         }

@@ -108,8 +108,9 @@ fn solve_arrays<'py>(py: Python<'py>, read: &Read<'py>, spec: &ModelSpec) -> PyR
     };
     let status = PyArrayDyn::<u8>::zeros(py, shape.clone(), false);
     let theta = PyArrayDyn::<f64>::zeros(py, shape.clone(), false);
-    let x = PyArrayDyn::<f64>::zeros(py, shape, false);
-    {
+    let x = PyArrayDyn::<f64>::zeros(py, shape.clone(), false);
+    // An empty array asks nothing: its answers are empty too.
+    if shape.iter().product::<usize>() > 0 {
         let (mut s, mut t, mut xw): (
             PyReadwriteArrayDyn<u8>,
             PyReadwriteArrayDyn<f64>,
@@ -263,13 +264,28 @@ fn dist_args(read: &Read) -> PyResult<DistArgs> {
     Ok(d)
 }
 
-/// Each line as a Python `UserWarning` (the CLI's warnings on stderr).
+/// Each line as a Python `UserWarning` at the caller's line (the CLI's warnings on stderr),
+/// without the flags the CLI names: a keyword is its TOML key.
 fn warn(py: Python<'_>, lines: Vec<String>) -> PyResult<()> {
     for line in lines {
-        let text = std::ffi::CString::new(line.replace('\0', " ")).expect("no NUL");
-        PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 1)?;
+        let text = without_flags(&line).replace('\0', " ");
+        let text = std::ffi::CString::new(text).expect("no NUL");
+        // 2: past `jamchart.solve` in __init__.py, to the user's call.
+        PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 2)?;
     }
     Ok(())
+}
+
+/// `line` without its ` (--flag ...)` asides.
+fn without_flags(line: &str) -> String {
+    let mut out = String::with_capacity(line.len());
+    let mut rest = line;
+    while let Some(at) = rest.find(" (--") {
+        out.push_str(&rest[..at]);
+        rest = rest[at..].find(')').map_or("", |end| &rest[at + end + 1..]);
+    }
+    out.push_str(rest);
+    out
 }
 
 /// A shape as Python prints it: `(3,)`, `(4, 3)`.

@@ -238,9 +238,10 @@ def test_arrays_of_non_numbers_and_bools_are_refused():
         jc.solve(radius_mm=(10, 12))
 
 
-def test_a_likely_unit_mistake_warns():
-    with pytest.warns(UserWarning, match="radius_mm .* is under 0.5 mm"):
+def test_a_likely_unit_mistake_warns_at_the_callers_line():
+    with pytest.warns(UserWarning, match=r"^radius_mm = 0.01 mm is under 0.5 mm") as w:
         jc.solve(radius_mm=0.01)
+    assert w[0].filename == __file__
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         jc.solve(radius_mm=10)
@@ -289,7 +290,7 @@ def test_each_element_of_an_array_is_the_single_answer(mu, force, start):
 
 
 @settings(max_examples=40, deadline=None)
-@given(mu=st.floats(0.05, 1.0), more=st.floats(1.001, 3.0))
+@given(mu=st.floats(0.05, 0.6), more=st.floats(1.001, 3.0))
 def test_more_friction_jams_earlier(mu, more):
     """theta_jam grows with mu (every term of the closed form does), so x_jam falls."""
     a = jc.solve(mu=mu, palm_length_mm=1e6)
@@ -305,3 +306,12 @@ def test_scalars_give_scalars_and_the_shaft_example_runs():
     jams = r.status == "jams"
     assert jams.any() and np.isnan(r.x_jam_mm[~jams]).all()
     assert not np.isnan(r.x_jam_mm[jams]).any()
+
+
+def test_none_is_a_keywords_default():
+    assert jc.solve(push_ratio=None, atol=None, mu=None).x_jam_mm == jc.solve().x_jam_mm
+
+
+def test_an_empty_array_gives_empty_answers():
+    r = jc.solve(mu=np.zeros((0, 3)), force_n=np.array([40.0, 50.0, 60.0]))
+    assert r.shape == (0, 3) and r.x_jam_mm.shape == (0, 3) and r.status.shape == (0, 3)
