@@ -36,7 +36,11 @@ def numpy_statics(mu):
     beyond = x > L
     jams = ~too_weak & ~held & ~beyond
     status = np.where(too_weak, 1, np.where(held, 2, np.where(beyond, 3, 4))).astype(np.uint8)
-    return status, np.where(jams, np.degrees(theta), np.nan), np.where(jams, x, np.nan)
+    # Held at the start: the answer is the start angle and the disc's place there.
+    at_start = held & ~too_weak
+    theta_deg = np.where(jams, np.degrees(theta), np.where(at_start, np.degrees(START), np.nan))
+    x_mm = np.where(jams, x, np.where(at_start, R / np.tan(0.5 * START), np.nan))
+    return status, theta_deg, x_mm
 
 
 def main():

@@ -39,9 +39,14 @@ pub(super) fn solve<'py>(
     keywords: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let read = keywords::read(py, "solve", keywords, &DIST_KEYWORDS)?;
-    let dist = dist_args(&read)?;
     warn(py, read.config.scene.unit_warnings())?;
-    if !read.uncertain.is_empty() {
+    // The question's keywords are checked whether or not an input is distributed, as the CLI
+    // checks its flags; without them there is nothing to check.
+    let dist = match read.uncertain.is_empty() && read.extras.is_empty() {
+        true => None,
+        false => Some(dist_args(&read)?),
+    };
+    if let Some(dist) = dist.filter(|_| !read.uncertain.is_empty()) {
         let record =
             solve_range::answer(read.model, &read.config, &read.uncertain, &dist).map_err(error)?;
         return Ok(Bound::new(py, BoxAnswer { record })?.into_any());
