@@ -338,4 +338,45 @@ mod tests {
         assert_eq!(st, st1);
         assert!(th.iter().zip(&th1).all(|(a, b)| a.to_bits() == b.to_bits()));
     }
+
+    /// Of several invalid pushes the first in order is refused, whichever column holds it, with
+    /// the message `solve` gives that push alone; a push-ratio column (a force from each push's
+    /// mass) is checked push by push.
+    #[test]
+    fn the_first_invalid_push_is_refused_as_solve_refuses_it() {
+        let mu = [0.1, 0.2, 0.3, -0.4];
+        let force = [40.0, -1.0, 40.0, 40.0];
+        let run = |columns: Vec<(GridParam, &[f64])>| {
+            let pushes = Pushes {
+                base: SceneParams::default(),
+                columns,
+            };
+            let n = pushes.len();
+            let (mut st, mut th, mut x) = (vec![0; n], vec![0.0; n], vec![0.0; n]);
+            let out = Answers {
+                status: &mut st,
+                theta_jam_deg: &mut th,
+                x_jam_mm: &mut x,
+            };
+            let e = solve_into(&ModelSpec::Statics, &pushes, out).unwrap_err();
+            (e.to_string(), pushes)
+        };
+        let (msg, pushes) = run(vec![
+            (GridParam::named("mu").unwrap(), &mu[..]),
+            (GridParam::named("force_n").unwrap(), &force[..]),
+        ]);
+        let alone = pushes
+            .resolved()
+            .scene(pushes.base, 1)
+            .validate()
+            .unwrap_err();
+        assert_eq!(msg, alone.to_string());
+        assert!(msg.contains("force_n") && msg.contains("-1"), "{msg}");
+        let mass = [1.0, 0.0, 2.0];
+        let (msg, _) = run(vec![
+            (GridParam::named("mass_kg").unwrap(), &mass[..]),
+            (GridParam::PushRatio, &[10.0][..]),
+        ]);
+        assert!(msg.contains("force_n") && msg.contains("= 0"), "{msg}");
+    }
 }
