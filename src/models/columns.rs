@@ -198,7 +198,7 @@ pub enum Finished {
 /// [`solve_into`] that looks at `stop` before each chunk of the pool's work and leaves the
 /// chunks not yet begun once it is set: a caller on another thread (a binding polling for
 /// Ctrl-C) ends a long map within one chunk of work per thread (one simulation, a min-norm
-/// column, or [`CHUNK`] closed-form answers).
+/// column, or one chunk of closed-form answers).
 pub fn solve_into_until(
     spec: &ModelSpec,
     pushes: &Pushes,
@@ -346,7 +346,7 @@ mod tests {
     fn the_first_invalid_push_is_refused_as_solve_refuses_it() {
         let mu = [0.1, 0.2, 0.3, -0.4];
         let force = [40.0, -1.0, 40.0, 40.0];
-        let run = |columns: Vec<(GridParam, &[f64])>| {
+        fn run(columns: Vec<(GridParam, &[f64])>) -> (String, Pushes<'_>) {
             let pushes = Pushes {
                 base: SceneParams::default(),
                 columns,
@@ -360,7 +360,7 @@ mod tests {
             };
             let e = solve_into(&ModelSpec::Statics, &pushes, out).unwrap_err();
             (e.to_string(), pushes)
-        };
+        }
         let (msg, pushes) = run(vec![
             (GridParam::named("mu").unwrap(), &mu[..]),
             (GridParam::named("force_n").unwrap(), &force[..]),
