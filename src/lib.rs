@@ -129,6 +129,9 @@ pub mod minnorm;
 pub mod models;
 mod numbers;
 pub mod paper;
+// The Python package (`pip install .`); no Rust API of its own.
+#[cfg(feature = "python")]
+mod python;
 mod scene;
 pub mod statics;
 mod study;

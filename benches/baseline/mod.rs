@@ -19,13 +19,24 @@ pub fn dir() -> PathBuf {
 /// The interpreter of the baseline's virtual environment, made (or remade, when
 /// requirements.txt changed) first; Err says why there is none.
 pub fn python() -> Result<PathBuf, String> {
-    let target = std::env::var_os("CARGO_TARGET_DIR")
+    venv("baseline-venv", &dir().join("requirements.txt"))
+}
+
+/// The target folder: `CARGO_TARGET_DIR`, or `target/` beside Cargo.toml.
+pub fn target() -> PathBuf {
+    std::env::var_os("CARGO_TARGET_DIR")
         .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("target"));
-    let venv = target.join("baseline-venv");
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("target"))
+}
+
+/// The interpreter of the virtual environment `name` under the target folder with the
+/// packages of `requirements` (pinned, from PyPI), made first, or remade when the file
+/// changed; Err says why there is none. The Python package's test shares it
+/// (`tests/python_package.rs`).
+pub fn venv(name: &str, requirements: &Path) -> Result<PathBuf, String> {
+    let venv = target().join(name);
     let python = venv.join("bin/python");
-    let requirements = dir().join("requirements.txt");
-    let wanted = std::fs::read_to_string(&requirements)
+    let wanted = std::fs::read_to_string(requirements)
         .map_err(|e| format!("cannot read {}: {e}", requirements.display()))?;
     // The requirements the environment was made from: a copy written after pip succeeded.
     let stamp = venv.join("jamchart-requirements.txt");
@@ -33,30 +44,34 @@ pub fn python() -> Result<PathBuf, String> {
         return Ok(python);
     }
     eprintln!(
-        "installing the Python baseline ({}) into {} ...",
+        "installing {} into {} ...",
         requirements.display(),
         venv.display()
     );
     run(Command::new("python3")
         .args(["-m", "venv", "--clear"])
         .arg(&venv))?;
-    run(Command::new(&python)
-        .args([
-            "-m",
-            "pip",
-            "install",
-            "--quiet",
-            "--disable-pip-version-check",
-            "-r",
-        ])
-        .arg(&requirements))?;
+    run(pip_install(&python).arg("-r").arg(requirements))?;
     std::fs::write(&stamp, &wanted)
         .map_err(|e| format!("cannot write {}: {e}", stamp.display()))?;
     Ok(python)
 }
 
+/// `python -m pip install`, quiet: add what to install.
+pub fn pip_install(python: &Path) -> Command {
+    let mut cmd = Command::new(python);
+    cmd.args([
+        "-m",
+        "pip",
+        "install",
+        "--quiet",
+        "--disable-pip-version-check",
+    ]);
+    cmd
+}
+
 /// Runs `cmd`; Err names the command and what it printed when it fails or cannot start.
-fn run(cmd: &mut Command) -> Result<(), String> {
+pub fn run(cmd: &mut Command) -> Result<(), String> {
     let shown = format!("{cmd:?}");
     let out = cmd
         .output()

@@ -3,7 +3,7 @@
 
 mod accuracy;
 mod args;
-mod design;
+pub(crate) mod design;
 mod dynamics;
 mod gallery;
 mod guidance;
@@ -13,17 +13,17 @@ mod manifest;
 mod min_norm;
 
 mod progress;
-mod read_off;
+pub(crate) mod read_off;
 pub mod render;
 mod shell;
 mod solve;
-mod solve_range;
+pub(crate) mod solve_range;
 mod stability;
 mod sweep;
 mod table;
 mod terminal;
 mod threads;
-mod vlocator;
+pub(crate) mod vlocator;
 mod vlocator_robust;
 
 use std::io::Write;

@@ -67,10 +67,7 @@ pub(super) fn check_distribution_flags(d: &DistArgs, uncertain: &UncertainSet) -
     if uncertain.inputs.iter().any(|i| i.value.is_distribution()) {
         return Ok(());
     }
-    let default: Vec<f64> = DEFAULT_QUANTILES
-        .split(',')
-        .map(|q| q.parse().expect("a number"))
-        .collect();
+    let default = default_quantiles();
     let unused: Vec<&str> = [
         (!d.before_mm.is_empty(), "--before"),
         (d.quantiles != default, "--quantiles"),
@@ -128,14 +125,15 @@ fn samples_help() -> String {
     )
 }
 
-/// One model's answer over the box, and over the distribution where an input has one.
+/// One model's answer over the box, and over the distribution where an input has one: the
+/// record `solve --format json` prints for it (and the Python package returns).
 #[derive(Serialize)]
-struct Record {
-    model: &'static str,
+pub(crate) struct Record {
+    pub(crate) model: &'static str,
     #[serde(flatten)]
-    range: RangeAnswer,
+    pub(crate) range: RangeAnswer,
     #[serde(skip_serializing_if = "Option::is_none")]
-    distribution: Option<DistAnswer>,
+    pub(crate) distribution: Option<DistAnswer>,
 }
 
 /// The JSON document of `solve --format json` with uncertain inputs.
@@ -155,44 +153,12 @@ pub(super) fn run(a: &SolveArgs, config: &Config, uncertain: &UncertainSet) -> R
                 .into(),
         ));
     }
-    let d = &a.distribution;
-    let has_distribution = uncertain.inputs.iter().any(|i| i.value.is_distribution());
-    let mut results = Vec::new();
-    for kind in a.model.models() {
-        let spec = kind.with(&config.min_norm, &config.dynamics);
-        let ask = DistQuestion {
-            before_mm: d.before_mm.clone(),
-            quantiles: d.quantiles.clone(),
-            samples: d.samples.unwrap_or(match kind {
-                ModelKind::Statics => STATICS_SAMPLES,
-                _ => MODEL_SAMPLES,
-            }),
-            seed: d.seed,
-        };
-        ask.validate()?;
-        let distribution = match has_distribution {
-            false => None,
-            true if kind == ModelKind::Statics => match dist::exact(&config.scene, uncertain, &ask)
-            {
-                Some(x) => Some(x),
-                None => Some(sampled(&spec, config, uncertain, &ask)?),
-            },
-            true => Some(sampled(&spec, config, uncertain, &ask)?),
-        };
-        let range = match kind {
-            ModelKind::Statics => range::closed_form(&config.scene, uncertain)?,
-            _ => range::sampled(
-                &kind.with(&config.min_norm, &config.dynamics),
-                &config.scene,
-                uncertain,
-            )?,
-        };
-        results.push(Record {
-            model: kind.as_str(),
-            range,
-            distribution,
-        });
-    }
+    let results = a
+        .model
+        .models()
+        .into_iter()
+        .map(|kind| answer(kind, config, uncertain, &a.distribution))
+        .collect::<Result<Vec<Record>>>()?;
     Ok(match a.format {
         OutputFormat::Json => {
             let doc = Document {
@@ -204,6 +170,53 @@ pub(super) fn run(a: &SolveArgs, config: &Config, uncertain: &UncertainSet) -> R
         }
         OutputFormat::Text => text(&config.scene, uncertain, &results),
     })
+}
+
+/// Model `kind`'s answer over the box of `uncertain` around `config`, and over the
+/// distribution where an input has one, as `d` asks.
+pub(crate) fn answer(
+    kind: ModelKind,
+    config: &Config,
+    uncertain: &UncertainSet,
+    d: &DistArgs,
+) -> Result<Record> {
+    let has_distribution = uncertain.inputs.iter().any(|i| i.value.is_distribution());
+    let spec = kind.with(&config.min_norm, &config.dynamics);
+    let ask = DistQuestion {
+        before_mm: d.before_mm.clone(),
+        quantiles: d.quantiles.clone(),
+        samples: d.samples.unwrap_or(match kind {
+            ModelKind::Statics => STATICS_SAMPLES,
+            _ => MODEL_SAMPLES,
+        }),
+        seed: d.seed,
+    };
+    ask.validate()?;
+    let distribution = match has_distribution {
+        false => None,
+        true if kind == ModelKind::Statics => match dist::exact(&config.scene, uncertain, &ask) {
+            Some(x) => Some(x),
+            None => Some(sampled(&spec, config, uncertain, &ask)?),
+        },
+        true => Some(sampled(&spec, config, uncertain, &ask)?),
+    };
+    let range = match kind {
+        ModelKind::Statics => range::closed_form(&config.scene, uncertain)?,
+        _ => range::sampled(&spec, &config.scene, uncertain)?,
+    };
+    Ok(Record {
+        model: kind.as_str(),
+        range,
+        distribution,
+    })
+}
+
+/// The quantiles asked unless --quantiles says otherwise.
+pub(crate) fn default_quantiles() -> Vec<f64> {
+    DEFAULT_QUANTILES
+        .split(',')
+        .map(|q| q.parse().expect("a number"))
+        .collect()
 }
 
 fn text(p: &SceneParams, uncertain: &UncertainSet, results: &[Record]) -> String {

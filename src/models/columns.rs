@@ -7,6 +7,8 @@
 //! detail); the other models go through [`super::solve`], min-norm pushes that differ in one
 //! parameter only a column at a time ([`super::solve_column`]).
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
 use rayon::prelude::*;
 
 use super::{ModelSpec, outside, solve, solve_column};
@@ -47,16 +49,27 @@ impl Pushes<'_> {
         self.columns.iter().any(|(_, v)| v.is_empty())
     }
 
-    /// Push `i`'s scene.
-    fn scene(&self, i: usize) -> SceneParams {
-        self.columns.iter().fold(self.base, |p, (param, values)| {
-            let v = if values.len() == 1 {
-                values[0]
-            } else {
-                values[i]
-            };
-            param.apply(p, v)
-        })
+    /// The columns with the fields each one sets looked up once: a map of 10^6 pushes looked
+    /// each column's declaration up by name 10^6 times.
+    fn resolved(&self) -> Resolved<'_> {
+        let columns = self
+            .columns
+            .iter()
+            .map(|(param, values)| {
+                let set = match *param {
+                    GridParam::PushRatio => Sets::PushRatio,
+                    p => {
+                        let d = p.decl();
+                        match d.sets {
+                            [] => Sets::Fields(std::slice::from_ref(&d.key)),
+                            keys => Sets::Fields(keys),
+                        }
+                    }
+                };
+                (set, *values)
+            })
+            .collect();
+        Resolved { columns }
     }
 
     /// Checks the columns' lengths and that each parameter is a scene parameter.
@@ -81,6 +94,81 @@ impl Pushes<'_> {
     }
 }
 
+/// What a column sets in a push's scene.
+#[derive(Debug, Clone, Copy)]
+enum Sets {
+    /// These fields, to the column's value (an alias sets several).
+    Fields(&'static [&'static str]),
+    /// The push as a multiple of the weight: force_n = value m g.
+    PushRatio,
+}
+
+/// [`Pushes`]'s columns, each with what it sets.
+struct Resolved<'a> {
+    columns: Vec<(Sets, &'a [f64])>,
+}
+
+impl Resolved<'_> {
+    /// The first push whose scene from `base` is invalid, if any. Each field's check stands
+    /// alone ([`SceneParams::validate`]), so a column's values are checked against the fields
+    /// they set, one pass over each column; a column of push ratios (a force from the mass
+    /// and gravity) is checked push by push.
+    fn first_invalid(&self, base: SceneParams, n: usize) -> Option<usize> {
+        if base.validate().is_err() {
+            return Some(0);
+        }
+        if self
+            .columns
+            .iter()
+            .any(|(set, _)| matches!(set, Sets::PushRatio))
+        {
+            return (0..n)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .find_first(|&i| self.scene(base, i).validate().is_err());
+        }
+        let mut first: Option<usize> = None;
+        for (set, values) in &self.columns {
+            let Sets::Fields(keys) = set else { continue };
+            for key in *keys {
+                let Some(decl) = crate::settings::find(key) else {
+                    continue;
+                };
+                let bad = values.iter().position(|&v| decl.check.refuse(v).is_some());
+                // A column of one value is every push's: the first push shows it.
+                let bad = bad.map(|i| if values.len() == 1 { 0 } else { i });
+                first = match (first, bad) {
+                    (Some(a), Some(b)) => Some(a.min(b)),
+                    (a, b) => a.or(b),
+                };
+            }
+        }
+        first
+    }
+
+    /// Push `i`'s scene from `base`: each column's value set in order, as
+    /// [`GridParam::apply`] sets it.
+    fn scene(&self, base: SceneParams, i: usize) -> SceneParams {
+        let mut p = base;
+        for (set, values) in &self.columns {
+            let v = if values.len() == 1 {
+                values[0]
+            } else {
+                values[i]
+            };
+            match set {
+                Sets::Fields(keys) => {
+                    for k in *keys {
+                        p.set_real(k, v);
+                    }
+                }
+                Sets::PushRatio => p = GridParam::PushRatio.apply(p, v),
+            }
+        }
+        p
+    }
+}
+
 /// Pushes answered per task of the thread pool: large enough that a closed-form answer
 /// (about 0.1 us) outweighs the task, small enough that 2 threads share a map of 10^4.
 const CHUNK: usize = 512;
@@ -90,6 +178,33 @@ const CHUNK: usize = 512;
 /// Every scene is checked first: `Err` names the first invalid parameter and value (and
 /// nothing is solved), as [`super::solve`] would for that push alone.
 pub fn solve_into(spec: &ModelSpec, pushes: &Pushes, out: Answers) -> Result<()> {
+    let never = AtomicBool::new(false);
+    solve_into_until(spec, pushes, out, &never).map(|_| ())
+}
+
+/// How far [`solve_into_until`] went.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Finished {
+    /// Every push is answered.
+    All,
+    /// `stop` was set: the chunks begun before it are answered, the rest of the answers are
+    /// left as they were.
+    Stopped {
+        /// How many pushes were answered.
+        answered: usize,
+    },
+}
+
+/// [`solve_into`] that looks at `stop` before each chunk of the pool's work and leaves the
+/// chunks not yet begun once it is set: a caller on another thread (a binding polling for
+/// Ctrl-C) ends a long map within one chunk of work per thread (one simulation, a min-norm
+/// column, or one chunk of closed-form answers).
+pub fn solve_into_until(
+    spec: &ModelSpec,
+    pushes: &Pushes,
+    out: Answers,
+    stop: &AtomicBool,
+) -> Result<Finished> {
     let n = pushes.len();
     let lens = [
         out.status.len(),
@@ -105,12 +220,13 @@ pub fn solve_into(spec: &ModelSpec, pushes: &Pushes, out: Answers) -> Result<()>
     }
     pushes.validate(n)?;
     spec.validate()?;
-    (0..n)
-        .into_par_iter()
-        .with_min_len(CHUNK)
-        .try_for_each(|i| pushes.scene(i).validate())?;
+    let resolved = pushes.resolved();
+    let scene = |i: usize| resolved.scene(pushes.base, i);
+    if let Some(i) = resolved.first_invalid(pushes.base, n) {
+        scene(i).validate()?;
+    }
     let answer = |i: usize| -> Result<(JamStatus, Option<f64>, Option<f64>)> {
-        let p = pushes.scene(i);
+        let p = scene(i);
         Ok(match spec {
             _ if let Some(_why) = outside(spec.kind(), &p) => (JamStatus::OutsideModel, None, None),
             ModelSpec::Statics => statics::jam(&p),
@@ -131,34 +247,44 @@ pub fn solve_into(spec: &ModelSpec, pushes: &Pushes, out: Answers) -> Result<()>
         theta_jam_deg,
         x_jam_mm,
     } = out;
-    let write = |start: usize, s: &mut [u8], t: &mut [f64], x: &mut [f64]| -> Result<()> {
-        let answers: Vec<_> = match spec {
-            // A column of min-norm pushes searches each from its neighbours' answers.
-            ModelSpec::MinNorm(_) => {
-                let scenes: Vec<SceneParams> =
-                    (start..start + s.len()).map(|i| pushes.scene(i)).collect();
-                solve_column(spec, &scenes)?
-                    .into_iter()
-                    .map(|s| (s.status, s.theta_jam_deg, s.x_jam_mm))
-                    .collect()
-            }
-            _ => (start..start + s.len())
-                .map(answer)
-                .collect::<Result<_>>()?,
-        };
-        for (k, (st, th, xj)) in answers.into_iter().enumerate() {
+    let write = |start: usize, s: &mut [u8], t: &mut [f64], x: &mut [f64]| -> Result<usize> {
+        if stop.load(Ordering::Relaxed) {
+            return Ok(0);
+        }
+        let len = s.len();
+        let mut put = |k: usize, (st, th, xj): (JamStatus, Option<f64>, Option<f64>)| {
             s[k] = st.index();
             t[k] = th.unwrap_or(f64::NAN);
             x[k] = xj.unwrap_or(f64::NAN);
+        };
+        match spec {
+            // A column of min-norm pushes searches each from its neighbours' answers.
+            ModelSpec::MinNorm(_) => {
+                let scenes: Vec<SceneParams> = (start..start + len).map(scene).collect();
+                for (k, a) in solve_column(spec, &scenes)?.into_iter().enumerate() {
+                    put(k, (a.status, a.theta_jam_deg, a.x_jam_mm));
+                }
+            }
+            // Written in place: a closed-form answer costs less than collecting it.
+            _ => {
+                for k in 0..len {
+                    put(k, answer(start + k)?);
+                }
+            }
         }
-        Ok(())
+        Ok(len)
     };
-    status
+    let answered = status
         .par_chunks_mut(chunk)
         .zip(theta_jam_deg.par_chunks_mut(chunk))
         .zip(x_jam_mm.par_chunks_mut(chunk))
         .enumerate()
-        .try_for_each(|(c, ((s, t), x))| write(c * chunk, s, t, x))
+        .map(|(c, ((s, t), x))| write(c * chunk, s, t, x))
+        .try_reduce(|| 0, |a, b| Ok(a + b))?;
+    Ok(match answered == n {
+        true => Finished::All,
+        false => Finished::Stopped { answered },
+    })
 }
 
 /// How many min-norm pushes to search as one column: a run of neighbours (a map's column of
@@ -169,5 +295,88 @@ fn column_len(pushes: &Pushes, n: usize) -> usize {
     match varying {
         0 | 1 => n.div_ceil(2).clamp(1, 64),
         _ => 1,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A stop set before the work begins leaves every answer as it was; an unset one answers
+    /// every push, the same answers as [`solve_into`].
+    #[test]
+    fn a_stop_leaves_the_chunks_not_begun() {
+        let mu: Vec<f64> = (1..=3000).map(|i| f64::from(i) * 1e-4).collect();
+        let pushes = Pushes {
+            base: SceneParams::default(),
+            columns: vec![(GridParam::named("mu").unwrap(), &mu[..])],
+        };
+        let n = mu.len();
+        let run = |stop: bool| {
+            let (mut st, mut th, mut x) = (vec![99u8; n], vec![-1.0; n], vec![-1.0; n]);
+            let out = Answers {
+                status: &mut st,
+                theta_jam_deg: &mut th,
+                x_jam_mm: &mut x,
+            };
+            let flag = AtomicBool::new(stop);
+            let done = solve_into_until(&ModelSpec::Statics, &pushes, out, &flag).unwrap();
+            (done, st, th, x)
+        };
+        let (done, st, th, x) = run(true);
+        assert_eq!(done, Finished::Stopped { answered: 0 });
+        assert!(st.iter().all(|&s| s == 99) && th.iter().chain(&x).all(|&v| v == -1.0));
+        let (done, st, th, _) = run(false);
+        assert_eq!(done, Finished::All);
+        let (mut st1, mut th1, mut x1) = (vec![0u8; n], vec![0.0; n], vec![0.0; n]);
+        let out = Answers {
+            status: &mut st1,
+            theta_jam_deg: &mut th1,
+            x_jam_mm: &mut x1,
+        };
+        solve_into(&ModelSpec::Statics, &pushes, out).unwrap();
+        assert_eq!(st, st1);
+        assert!(th.iter().zip(&th1).all(|(a, b)| a.to_bits() == b.to_bits()));
+    }
+
+    /// Of several invalid pushes the first in order is refused, whichever column holds it, with
+    /// the message `solve` gives that push alone; a push-ratio column (a force from each push's
+    /// mass) is checked push by push.
+    #[test]
+    fn the_first_invalid_push_is_refused_as_solve_refuses_it() {
+        let mu = [0.1, 0.2, 0.3, -0.4];
+        let force = [40.0, -1.0, 40.0, 40.0];
+        fn run(columns: Vec<(GridParam, &[f64])>) -> (String, Pushes<'_>) {
+            let pushes = Pushes {
+                base: SceneParams::default(),
+                columns,
+            };
+            let n = pushes.len();
+            let (mut st, mut th, mut x) = (vec![0; n], vec![0.0; n], vec![0.0; n]);
+            let out = Answers {
+                status: &mut st,
+                theta_jam_deg: &mut th,
+                x_jam_mm: &mut x,
+            };
+            let e = solve_into(&ModelSpec::Statics, &pushes, out).unwrap_err();
+            (e.to_string(), pushes)
+        }
+        let (msg, pushes) = run(vec![
+            (GridParam::named("mu").unwrap(), &mu[..]),
+            (GridParam::named("force_n").unwrap(), &force[..]),
+        ]);
+        let alone = pushes
+            .resolved()
+            .scene(pushes.base, 1)
+            .validate()
+            .unwrap_err();
+        assert_eq!(msg, alone.to_string());
+        assert!(msg.contains("force_n") && msg.contains("-1"), "{msg}");
+        let mass = [1.0, 0.0, 2.0];
+        let (msg, _) = run(vec![
+            (GridParam::named("mass_kg").unwrap(), &mass[..]),
+            (GridParam::PushRatio, &[10.0][..]),
+        ]);
+        assert!(msg.contains("force_n") && msg.contains("= 0"), "{msg}");
     }
 }

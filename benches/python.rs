@@ -1,0 +1,82 @@
+//! The Python package's speed (`cargo bench --bench python`), in the environment the package's
+//! test builds (`cargo test --release --test python_package` first):
+//!
+//! - 10^6 closed-form answers from a numpy array against numpy's vectorised closed form, and
+//!   one scalar call's time (`benches/baseline/python_package.py`, in one process,
+//!   interleaved);
+//! - a 100 x 100 nonsmooth-simulation map from Python against the CLI's (`jamchart render` of
+//!   a contour map of the same cells, SVG only), whole processes, interleaved; median of 5.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use common::{median, time_process};
+
+/// Cells per axis of the map.
+const CELLS: usize = 100;
+
+fn main() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let target = std::env::var_os("CARGO_TARGET_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| root.join("target"));
+    let python = target.join("python-venv/bin/python");
+    let installed = Command::new(&python)
+        .args(["-c", "import jamchart"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !installed {
+        println!(
+            "no Python package in {}: run cargo test --release --test python_package first",
+            python.display()
+        );
+        return;
+    }
+    let script = root.join("benches/baseline/python_package.py");
+    let status = Command::new(&python)
+        .arg(&script)
+        .status()
+        .expect("the bench script starts");
+    assert!(status.success(), "{} failed", script.display());
+
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let scene = dir.path().join("map.toml");
+    std::fs::write(
+        &scene,
+        format!(
+            "title = \"nonsmooth map\"\n[chart]\nkind = \"contour_map\"\nmodel = \"dynamics\"\n\
+             x_axis = {{ param = \"force_n\", min = 50.0, max = 1000.0, count = {CELLS}, scale = \"log\" }}\n\
+             y_axis = {{ param = \"radius_mm\", min = 10.0, max = 30.0, count = {CELLS} }}\n\
+             x_jam_levels_mm = [25.0, 30.0]\n\n[dynamics.integrator]\nmethod = \"nonsmooth\"\n"
+        ),
+    )
+    .expect("write the scene");
+    let map = format!(
+        "import numpy as np, jamchart as jc\n\
+         f = np.geomspace(50.0, 1000.0, {CELLS}); r = np.linspace(10.0, 30.0, {CELLS})\n\
+         jc.solve(model='dynamics', method='nonsmooth', force_n=f[None, :], radius_mm=r[:, None])\n"
+    );
+    let out = dir.path().join("out");
+    let (mut cli, mut py) = (Vec::new(), Vec::new());
+    for _ in 0..5 {
+        cli.push(
+            time_process(
+                Command::new(env!("CARGO_BIN_EXE_jamchart"))
+                    .arg("render")
+                    .arg(&scene)
+                    .args(["--format", "svg", "--quiet", "--out"])
+                    .arg(&out),
+            )
+            .0,
+        );
+        py.push(time_process(Command::new(&python).args(["-c", &map])).0);
+    }
+    let (c, p) = (median(cli), median(py));
+    println!(
+        "nonsmooth map {CELLS} x {CELLS}: CLI (render, SVG) {c:.2} s, Python (import + solve) \
+         {p:.2} s, Python / CLI = {:.2} (medians of 5 interleaved whole processes)",
+        p / c
+    );
+}

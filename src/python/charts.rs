@@ -1,0 +1,250 @@
+//! `jamchart.render`: a scene (built-in or a file) with the keywords over its settings, drawn by
+//! [`crate::charts::render`]; the [`Chart`] shows itself in a notebook and saves any format.
+
+use std::path::{Path, PathBuf};
+
+use numpy::PyArray1;
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyBytes, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+
+use super::convert::{Lists, to_python};
+use super::keywords::{error, scene_param};
+use crate::charts::overrides::Setting;
+use crate::charts::{self, Formats, Rendered, SceneSource};
+use crate::cli::read_off::{self, ReadOffArg};
+use crate::settings;
+
+/// A drawn design chart: its SVG and PNG, the data behind it, and the scene's name and kind.
+#[pyclass(frozen, module = "jamchart")]
+pub(super) struct Chart {
+    rendered: Rendered,
+    kind: String,
+}
+
+#[pymethods]
+impl Chart {
+    /// The scene's name (`universal`, or a scene file's stem).
+    #[getter]
+    fn name(&self) -> &str {
+        &self.rendered.name
+    }
+
+    /// The chart kind (`universal`, `jam_map`, `sweep`, ...).
+    #[getter]
+    fn kind(&self) -> &str {
+        &self.kind
+    }
+
+    /// The SVG picture, bytes (identical to `jamchart render`'s file).
+    #[getter]
+    fn svg<'py>(&self, py: Python<'py>) -> Bound<'py, PyBytes> {
+        PyBytes::new(py, self.rendered.svg.as_deref().unwrap_or_default())
+    }
+
+    /// The PNG picture, bytes (identical to `jamchart render`'s file).
+    #[getter]
+    fn png<'py>(&self, py: Python<'py>) -> Bound<'py, PyBytes> {
+        PyBytes::new(py, self.rendered.png.as_deref().unwrap_or_default())
+    }
+
+    /// The data behind the chart: a JSON chart's document as dicts with its lists of numbers
+    /// as float64 numpy arrays (null as NaN), or a CSV chart's columns as {name: array}.
+    #[getter]
+    fn data<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let bytes = &self.rendered.data.bytes;
+        match self.rendered.data.extension {
+            "json" => {
+                let doc: serde_json::Value = serde_json::from_slice(bytes)
+                    .map_err(|e| PyValueError::new_err(format!("the chart's data: {e}")))?;
+                to_python(py, &doc, Lists::Arrays)
+            }
+            _ => csv_columns(py, bytes),
+        }
+    }
+
+    /// The data file's format: `json` or `csv`.
+    #[getter]
+    fn data_format(&self) -> &'static str {
+        self.rendered.data.extension
+    }
+
+    /// Writes the chart to `path`, by its extension: `.svg`, `.png`, `.pdf` (made from the
+    /// SVG, text as outlines), or the data's `.json` / `.csv`. The file is replaced atomically.
+    fn save(&self, py: Python<'_>, path: PathBuf) -> PyResult<()> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .unwrap_or_default()
+            .to_ascii_lowercase();
+        let svg = || self.rendered.svg.clone().unwrap_or_default();
+        let bytes = match ext.as_str() {
+            "svg" => svg(),
+            "png" => self.rendered.png.clone().unwrap_or_default(),
+            "pdf" => py
+                .detach(|| charts::output::pdf(&svg()))
+                .map_err(PyValueError::new_err)?,
+            e if e == self.rendered.data.extension => self.rendered.data.bytes.clone(),
+            _ => {
+                return Err(PyValueError::new_err(format!(
+                    "cannot save {}: give a path ending in .svg, .png, .pdf or .{} (the data)",
+                    path.display(),
+                    self.rendered.data.extension
+                )));
+            }
+        };
+        write(&path, &bytes).map_err(error)
+    }
+
+    fn _repr_svg_(&self) -> String {
+        String::from_utf8_lossy(self.rendered.svg.as_deref().unwrap_or_default()).into_owned()
+    }
+
+    fn _repr_png_<'py>(&self, py: Python<'py>) -> Bound<'py, PyBytes> {
+        self.png(py)
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "jamchart.Chart({}, kind {}, data .{})",
+            self.rendered.name, self.kind, self.rendered.data.extension
+        )
+    }
+}
+
+/// Writes `bytes` to `path` as `jamchart render` writes its files (a new name or a regular
+/// file, replaced atomically).
+fn write(path: &Path, bytes: &[u8]) -> crate::error::Result<()> {
+    let set = crate::atomic::Set::begin([path])?;
+    set.stage_all(&[crate::atomic::Output::bytes(path, bytes)])?;
+    set.commit()
+}
+
+/// The built-in scenes' names (`jamchart scenes`).
+#[pyfunction]
+pub(super) fn scenes() -> Vec<String> {
+    charts::builtin_scene_names()
+}
+
+/// `jamchart.render(scene, *, read_off=None, set=None, **settings)`: see the package's docs.
+#[pyfunction]
+#[pyo3(signature = (scene, keywords=None))]
+pub(super) fn render(
+    py: Python<'_>,
+    scene: PathBuf,
+    keywords: Option<&Bound<'_, PyDict>>,
+) -> PyResult<Chart> {
+    let name = scene.to_string_lossy().into_owned();
+    let source = match charts::builtin_scene_names().contains(&name) {
+        true => SceneSource::BuiltIn(name),
+        false if scene.extension().is_some_and(|e| e == "toml") => SceneSource::File(scene),
+        false => {
+            return Err(PyValueError::new_err(format!(
+                "invalid scene = {name}: not a built-in scene (they are {}) nor a scene file \
+                 (NAME.toml)",
+                charts::builtin_scene_names().join(", ")
+            )));
+        }
+    };
+    let mut settings_given = Vec::new();
+    let mut read_offs = Vec::new();
+    for (k, v) in keywords.into_iter().flat_map(|d| d.iter()) {
+        let key: String = k.extract()?;
+        let key = key.as_str();
+        match key {
+            "read_off" if !v.is_none() => {
+                for (rk, rv) in v.cast::<PyDict>()?.iter() {
+                    let text = format!("{}={}", rk.str()?, rv.extract::<f64>()?);
+                    read_offs.push(text.parse::<ReadOffArg>().map_err(PyValueError::new_err)?);
+                }
+            }
+            "set" if !v.is_none() => {
+                for (sk, sv) in v.cast::<PyDict>()?.iter() {
+                    settings_given.push(Setting {
+                        key: sk.extract()?,
+                        value: toml_of(&sv)?,
+                    });
+                }
+            }
+            "read_off" | "set" => {}
+            _ if scene_param(key).is_some() || settings::find(key).is_some() => {
+                settings_given.push(Setting {
+                    key: key.to_string(),
+                    value: toml_of(&v)?,
+                });
+            }
+            _ => {
+                return Err(PyTypeError::new_err(format!(
+                    "render() got an unexpected keyword argument '{key}' (jamchart.keywords() \
+                     lists the settings; other keys of the scene file go in set={{...}})"
+                )));
+            }
+        }
+    }
+    let (rendered, kind) = py
+        .detach(|| -> crate::error::Result<(Rendered, String)> {
+            let mut s = source.load(&settings_given)?;
+            read_off::apply(&mut s, &read_offs)?;
+            let kind = s.chart.kind().to_string();
+            Ok((charts::render(&s, Formats::Both)?, kind))
+        })
+        .map_err(error)?;
+    Ok(Chart { rendered, kind })
+}
+
+/// A Python value as the TOML value of a scene file's key.
+fn toml_of(v: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
+    Ok(if v.is_instance_of::<PyBool>() {
+        toml::Value::Boolean(v.extract()?)
+    } else if v.is_instance_of::<PyInt>() {
+        toml::Value::Integer(v.extract()?)
+    } else if v.is_instance_of::<PyFloat>() {
+        toml::Value::Float(v.extract()?)
+    } else if let Ok(s) = v.cast::<PyString>() {
+        toml::Value::String(s.to_cow()?.into_owned())
+    } else if v.is_instance_of::<PyList>() || v.is_instance_of::<PyTuple>() {
+        let items: Vec<Bound<'_, PyAny>> = v.extract()?;
+        toml::Value::Array(items.iter().map(toml_of).collect::<PyResult<_>>()?)
+    } else if let Ok(x) = v.extract::<f64>() {
+        toml::Value::Float(x)
+    } else {
+        return Err(PyTypeError::new_err(format!(
+            "a scene's setting is a bool, number, str or list, not {}",
+            v.get_type().name()?
+        )));
+    })
+}
+
+/// A CSV's columns as {name: values}: float64 arrays where every cell is a number (empty as
+/// NaN), lists of str where not.
+fn csv_columns<'py>(py: Python<'py>, bytes: &[u8]) -> PyResult<Bound<'py, PyAny>> {
+    let mut reader = csv::Reader::from_reader(bytes);
+    let bad = |e: csv::Error| PyValueError::new_err(format!("the chart's data: {e}"));
+    let names: Vec<String> = reader
+        .headers()
+        .map_err(bad)?
+        .iter()
+        .map(str::to_string)
+        .collect();
+    let mut cells: Vec<Vec<String>> = vec![Vec::new(); names.len()];
+    for row in reader.records() {
+        for (column, cell) in cells.iter_mut().zip(row.map_err(bad)?.iter()) {
+            column.push(cell.to_string());
+        }
+    }
+    let dict = PyDict::new(py);
+    for (name, column) in names.iter().zip(cells) {
+        let numbers: Option<Vec<f64>> = column
+            .iter()
+            .map(|c| match c.as_str() {
+                "" => Some(f64::NAN),
+                t => t.parse().ok(),
+            })
+            .collect();
+        match numbers {
+            Some(v) => dict.set_item(name, PyArray1::from_vec(py, v))?,
+            None => dict.set_item(name, column)?,
+        }
+    }
+    Ok(dict.into_any())
+}

@@ -1,0 +1,305 @@
+//! `jamchart.solve`: one push, numpy arrays of pushes (broadcast, answered in place on the
+//! rayon pool with the GIL released, Ctrl-C checked between chunks), or a range or
+//! distribution of inputs.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc;
+use std::time::Duration;
+
+use numpy::{
+    PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyReadwriteArrayDyn, PyUntypedArrayMethods,
+};
+use pyo3::exceptions::{PyUserWarning, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use super::answers::{BoxAnswer, Solution, Solutions};
+use super::keywords::{self, Read, error};
+use crate::cli::solve_range::{self, DistArgs};
+use crate::grid::GridParam;
+use crate::models::columns::{self, Answers, Finished, Pushes};
+use crate::models::{self, ModelSpec};
+
+/// The keywords of a distribution's question, named as `solve`'s flags' keys.
+const DIST_KEYWORDS: [&str; 4] = ["before_mm", "quantiles", "samples", "seed"];
+
+/// How often a long map looks for Ctrl-C: an interrupt is seen within this and one chunk of
+/// work per thread.
+const POLL: Duration = Duration::from_millis(50);
+
+/// Closed-form maps smaller than this are answered without a watching thread: a million
+/// answers take milliseconds, less than a user can interrupt.
+const WATCHED_STATICS: usize = 1 << 22;
+
+/// `jamchart.solve(**keywords)`: see the package's docs (`help(jamchart.solve)`).
+#[pyfunction]
+#[pyo3(signature = (keywords=None))]
+pub(super) fn solve<'py>(
+    py: Python<'py>,
+    keywords: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let read = keywords::read(py, "solve", keywords, &DIST_KEYWORDS)?;
+    warn(py, read.config.scene.unit_warnings())?;
+    // The question's keywords are checked whether or not an input is distributed, as the CLI
+    // checks its flags; without them there is nothing to check.
+    let dist = match read.uncertain.is_empty() && read.extras.is_empty() {
+        true => None,
+        false => Some(dist_args(&read)?),
+    };
+    if let Some(dist) = dist.filter(|_| !read.uncertain.is_empty()) {
+        let record =
+            solve_range::answer(read.model, &read.config, &read.uncertain, &dist).map_err(error)?;
+        return Ok(Bound::new(py, BoxAnswer { record })?.into_any());
+    }
+    if !read.extras.is_empty() {
+        let given: Vec<&str> = read.extras.iter().map(|(k, _)| *k).collect();
+        warn(
+            py,
+            vec![format!(
+                "{} {} no effect without a distributed input (e.g. mu=jamchart.normal(0.2, 0.03))",
+                given.join(", "),
+                if given.len() == 1 { "has" } else { "have" }
+            )],
+        )?;
+    }
+    let spec = read
+        .model
+        .with(&read.config.min_norm, &read.config.dynamics);
+    if read.arrays.is_empty() {
+        let scene = read.config.scene;
+        let solution = match spec {
+            ModelSpec::Statics => models::solve(&spec, &scene),
+            // A simulation or a min-norm search takes a while: other threads run meanwhile.
+            _ => py.detach(|| models::solve(&spec, &scene)),
+        }
+        .map_err(error)?;
+        let one = Solution {
+            solution,
+            inputs: scene,
+        };
+        return Ok(Bound::new(py, one)?.into_any());
+    }
+    Ok(Bound::new(py, solve_arrays(py, &read, &spec)?)?.into_any())
+}
+
+/// Answers the pushes of `read`'s arrays, broadcast together, into new numpy arrays.
+fn solve_arrays<'py>(py: Python<'py>, read: &Read<'py>, spec: &ModelSpec) -> PyResult<Solutions> {
+    let shape = broadcast_shape(&read.arrays)?;
+    let numpy = py.import("numpy")?;
+    // Each array as it is where it has the answers' shape (no copy), broadcast where not.
+    let mut held: Vec<(GridParam, PyReadonlyArrayDyn<'py, f64>)> = Vec::new();
+    for (param, a) in &read.arrays {
+        let column = match a.len() == 1 || (a.shape() == shape.as_slice() && a.is_c_contiguous()) {
+            true => numpy.call_method1("ascontiguousarray", (a,))?,
+            false => numpy.call_method1(
+                "ascontiguousarray",
+                (numpy.call_method1("broadcast_to", (a, shape.clone()))?,),
+            )?,
+        };
+        held.push((*param, column.cast_into::<PyArrayDyn<f64>>()?.readonly()));
+    }
+    let late: Vec<(GridParam, [f64; 1])> = read.late.iter().map(|(p, v)| (*p, [*v])).collect();
+    let mut columns: Vec<(GridParam, &[f64])> = Vec::new();
+    for (param, a) in &held {
+        let values = a
+            .as_slice()
+            .map_err(|e| PyValueError::new_err(e.to_string()))?;
+        columns.push((*param, values));
+    }
+    columns.extend(late.iter().map(|(p, v)| (*p, &v[..])));
+    let pushes = Pushes {
+        base: read.config.scene,
+        columns,
+    };
+    let status = PyArrayDyn::<u8>::zeros(py, shape.clone(), false);
+    let theta = PyArrayDyn::<f64>::zeros(py, shape.clone(), false);
+    let x = PyArrayDyn::<f64>::zeros(py, shape.clone(), false);
+    // An empty array asks nothing: its answers are empty too.
+    if shape.iter().product::<usize>() > 0 {
+        let (mut s, mut t, mut xw): (
+            PyReadwriteArrayDyn<u8>,
+            PyReadwriteArrayDyn<f64>,
+            PyReadwriteArrayDyn<f64>,
+        ) = (status.readwrite(), theta.readwrite(), x.readwrite());
+        let out = Answers {
+            status: s.as_slice_mut().expect("a new array is contiguous"),
+            theta_jam_deg: t.as_slice_mut().expect("a new array is contiguous"),
+            x_jam_mm: xw.as_slice_mut().expect("a new array is contiguous"),
+        };
+        answer_watched(py, spec, &pushes, out)?;
+    }
+    Ok(Solutions {
+        model: spec.kind(),
+        status_code: status.unbind(),
+        theta_jam_deg: theta.unbind(),
+        x_jam_mm: x.unbind(),
+        inputs: read
+            .arrays
+            .iter()
+            .map(|(p, a)| (p.as_str(), a.clone().unbind()))
+            .collect(),
+        base: read.config.scene,
+    })
+}
+
+/// Answers `pushes` into `out` with the GIL released; a long map runs on a thread of its own
+/// while this one looks for Ctrl-C every [`POLL`] and stops the map at its next chunk.
+fn answer_watched(py: Python<'_>, spec: &ModelSpec, pushes: &Pushes, out: Answers) -> PyResult<()> {
+    if matches!(spec, ModelSpec::Statics) && pushes.len() < WATCHED_STATICS {
+        return py
+            .detach(|| columns::solve_into(spec, pushes, out))
+            .map_err(error);
+    }
+    let stop = AtomicBool::new(false);
+    let (done, interrupt) = py.detach(|| {
+        std::thread::scope(|s| {
+            let (tx, rx) = mpsc::channel();
+            let stop = &stop;
+            s.spawn(move || {
+                let _ = tx.send(columns::solve_into_until(spec, pushes, out, stop));
+            });
+            let mut interrupt: Option<PyErr> = None;
+            loop {
+                match rx.recv_timeout(POLL) {
+                    Ok(done) => return (done, interrupt),
+                    Err(mpsc::RecvTimeoutError::Timeout) if interrupt.is_none() => {
+                        if let Err(e) = Python::attach(|py| py.check_signals()) {
+                            stop.store(true, Ordering::Relaxed);
+                            interrupt = Some(e);
+                        }
+                    }
+                    Err(mpsc::RecvTimeoutError::Timeout) => {}
+                    Err(mpsc::RecvTimeoutError::Disconnected) => {
+                        return (
+                            Err(crate::error::Error::Unsupported(
+                                "the map's thread ended without an answer".into(),
+                            )),
+                            interrupt,
+                        );
+                    }
+                }
+            }
+        })
+    });
+    if let Some(e) = interrupt {
+        return Err(e);
+    }
+    match done.map_err(error)? {
+        Finished::All => Ok(()),
+        Finished::Stopped { answered } => Err(PyValueError::new_err(format!(
+            "the map stopped after {answered} of {} pushes",
+            pushes.len()
+        ))),
+    }
+}
+
+/// The shape the arrays broadcast to, by numpy's rules; the error names two that do not.
+fn broadcast_shape(arrays: &[(GridParam, Bound<'_, PyArrayDyn<f64>>)]) -> PyResult<Vec<usize>> {
+    let ndim = arrays.iter().map(|(_, a)| a.ndim()).max().unwrap_or(0);
+    let mut shape = vec![1usize; ndim];
+    let mut from: Vec<Option<usize>> = vec![None; ndim];
+    for (k, (param, a)) in arrays.iter().enumerate() {
+        let offset = ndim - a.ndim();
+        for (i, &d) in a.shape().iter().enumerate() {
+            let at = offset + i;
+            if d == shape[at] || d == 1 {
+                continue;
+            }
+            if shape[at] == 1 {
+                shape[at] = d;
+                from[at] = Some(k);
+                continue;
+            }
+            let other = &arrays[from[at].unwrap_or(0)];
+            return Err(PyValueError::new_err(format!(
+                "{} has shape {} and {} has shape {}: they do not broadcast together (numpy's \
+                 rules: equal lengths or 1 along each axis, counted from the last)",
+                other.0.as_str(),
+                shape_text(other.1.shape()),
+                param.as_str(),
+                shape_text(a.shape())
+            )));
+        }
+    }
+    Ok(shape)
+}
+
+/// The distribution's question from `before_mm`, `quantiles`, `samples` and `seed` (the CLI's
+/// `--before`, `--quantiles`, `--samples`, `--seed`), checked as the CLI checks them.
+fn dist_args(read: &Read) -> PyResult<DistArgs> {
+    let mut d = DistArgs {
+        before_mm: Vec::new(),
+        quantiles: solve_range::default_quantiles(),
+        samples: None,
+        seed: 1,
+    };
+    for (key, v) in &read.extras {
+        let numbers = |v: &Bound<'_, PyAny>| -> PyResult<Vec<f64>> {
+            match v.extract::<f64>() {
+                Ok(x) => Ok(vec![x]),
+                Err(_) => v.extract::<Vec<f64>>().map_err(|_| {
+                    PyValueError::new_err(format!("{key} takes a number or a list of numbers"))
+                }),
+            }
+        };
+        let count = |v: &Bound<'_, PyAny>| -> PyResult<u64> {
+            v.extract::<u64>().map_err(|_| {
+                PyValueError::new_err(format!(
+                    "invalid {key} = {}: {key} is a whole number >= 0",
+                    v.repr().map_or_else(|_| "?".into(), |r| r.to_string())
+                ))
+            })
+        };
+        match *key {
+            "before_mm" => d.before_mm = numbers(v)?,
+            "quantiles" => d.quantiles = numbers(v)?,
+            "samples" if !v.is_none() => d.samples = Some(count(v)?),
+            "seed" => d.seed = count(v)?,
+            _ => {}
+        }
+    }
+    crate::uncertain::dist::DistQuestion {
+        before_mm: d.before_mm.clone(),
+        quantiles: d.quantiles.clone(),
+        samples: d.samples.unwrap_or(1),
+        seed: d.seed,
+    }
+    .validate()
+    .map_err(error)?;
+    Ok(d)
+}
+
+/// Each line as a Python `UserWarning` at the caller's line (the CLI's warnings on stderr),
+/// without the flags the CLI names: a keyword is its TOML key.
+fn warn(py: Python<'_>, lines: Vec<String>) -> PyResult<()> {
+    for line in lines {
+        let text = without_flags(&line).replace('\0', " ");
+        let text = std::ffi::CString::new(text).expect("no NUL");
+        // 2: past `jamchart.solve` in __init__.py, to the user's call.
+        PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 2)?;
+    }
+    Ok(())
+}
+
+/// `line` without its ` (--flag ...)` asides.
+fn without_flags(line: &str) -> String {
+    let mut out = String::with_capacity(line.len());
+    let mut rest = line;
+    while let Some(at) = rest.find(" (--") {
+        out.push_str(&rest[..at]);
+        rest = rest[at..].find(')').map_or("", |end| &rest[at + end + 1..]);
+    }
+    out.push_str(rest);
+    out
+}
+
+/// A shape as Python prints it: `(3,)`, `(4, 3)`.
+pub(super) fn shape_text(shape: &[usize]) -> String {
+    match shape {
+        [one] => format!("({one},)"),
+        dims => {
+            let all: Vec<String> = dims.iter().map(usize::to_string).collect();
+            format!("({})", all.join(", "))
+        }
+    }
+}
