@@ -314,13 +314,19 @@ pub fn monte_carlo_observed(
         estimated_cpu_s: crate::limits::sampled_cpu_s(ask.samples, per),
     });
     let n = ask.samples;
-    let xs = super::sorted_samples(set, ask.seed, n, &|drawn| progress(Progress::Drawn(drawn)), |v| {
-        let q = set.apply(p, v);
-        Ok(match spec {
-            ModelSpec::Statics => raw_x(&q),
-            _ => models::solve(spec, &q)?.x_jam_mm,
-        })
-    })?;
+    let xs = super::sorted_samples(
+        set,
+        ask.seed,
+        n,
+        &|drawn| progress(Progress::Drawn(drawn)),
+        |v| {
+            let q = set.apply(p, v);
+            Ok(match spec {
+                ModelSpec::Statics => raw_x(&q),
+                _ => models::solve(spec, &q)?.x_jam_mm,
+            })
+        },
+    )?;
     let without_jam = n - xs.len() as u64;
     let nf = n as f64;
     let before = ask

@@ -215,7 +215,9 @@ fn sorted_samples_are_each_draw_sorted() {
                 .num_threads(threads)
                 .build()
                 .unwrap();
-            let got = pool.install(|| sorted_samples(&set, 7, n, &|_| {}, each)).unwrap();
+            let got = pool
+                .install(|| sorted_samples(&set, 7, n, &|_| {}, each))
+                .unwrap();
             let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
             assert_eq!(bits(&got), bits(&want), "{n} samples on {threads} threads");
         }
