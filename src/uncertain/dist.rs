@@ -274,7 +274,7 @@ fn cost_per_sample(
 
 /// Monte Carlo: `ask.samples` draws through `spec` (the closed form directly for statics),
 /// in parallel, bit-identical for any thread count; refused before any draw when its
-/// estimated time is over [`crate::limits::MAX_SAMPLED_CPU_S`].
+/// estimated time is over ten minutes of one core.
 pub fn monte_carlo(
     spec: &ModelSpec,
     p: &SceneParams,
