@@ -35,8 +35,8 @@ pub enum Error {
     /// A request whose estimated memory or output exceeds its limit (`crate::limits`).
     #[error(
         "{what} would take about {}, over the limit of {}{limit_source} (set by {key})",
-        crate::limits::human_bytes(*estimate_bytes),
-        crate::limits::human_bytes(*limit_bytes)
+        crate::numbers::human_bytes(*estimate_bytes),
+        crate::numbers::human_bytes(*limit_bytes)
     )]
     TooLarge {
         /// The setting that sizes the request (e.g. `chart.x_axis.count`).
@@ -56,8 +56,8 @@ pub enum Error {
     /// [`Error::TooLarge`] is a memory bound.
     #[error(
         "{what} would take about {} of one core, over the limit of {} (set by {key}); lower it",
-        crate::limits::human_seconds(*estimate_s),
-        crate::limits::human_seconds(*limit_s)
+        crate::numbers::human_seconds(*estimate_s),
+        crate::numbers::human_seconds(*limit_s)
     )]
     TooLong {
         /// The setting that sizes the request (e.g. `--samples`).

@@ -6,6 +6,7 @@
 //! system, and so that a run stays well inside a 4 GiB address space.
 
 use crate::error::{Error, Result};
+use crate::numbers::human_seconds;
 
 /// Timed runs per point of the accuracy study (`accuracy --runs`): a median of more than
 /// 1000 runs of a millisecond computation says nothing more.
@@ -335,47 +336,9 @@ pub fn check_at_most(key: &str, count: usize, max: usize, what: &str) -> Result<
     ))
 }
 
-/// Bytes in a human unit: `1.26 GiB`, `640 MiB`, `12 kiB`.
-pub fn human_bytes(b: u64) -> String {
-    let units = ["B", "kiB", "MiB", "GiB", "TiB", "PiB", "EiB"];
-    let mut v = b as f64;
-    let mut i = 0;
-    while v >= 1024.0 && i + 1 < units.len() {
-        v /= 1024.0;
-        i += 1;
-    }
-    match i {
-        0 => format!("{b} B"),
-        _ if v.fract() == 0.0 => format!("{v:.0} {}", units[i]),
-        _ => format!("{v:.1} {}", units[i]),
-    }
-}
-
-/// A duration in a human unit: `0.25 ms`, `12 s`, `10 min`, `2.8 h`.
-pub fn human_seconds(s: f64) -> String {
-    let shown = |v: f64, unit: &str| format!("{} {unit}", crate::numbers::sig(v, 2));
-    match s {
-        _ if s < 1e-3 => shown(s * 1e6, "us"),
-        _ if s < 1.0 => shown(s * 1e3, "ms"),
-        _ if s < 120.0 => shown(s, "s"),
-        _ if s < 7200.0 => shown(s / 60.0, "min"),
-        _ if s < 172_800.0 => shown(s / 3600.0, "h"),
-        _ => shown(s / 86_400.0, "days"),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn human_seconds_reads_well() {
-        assert_eq!(human_seconds(2.2e-4), "220 us");
-        assert_eq!(human_seconds(0.0092), "9.2 ms");
-        assert_eq!(human_seconds(600.0), "10 min");
-        assert_eq!(human_seconds(2200.0), "37 min");
-        assert_eq!(human_seconds(1e4), "2.8 h");
-    }
 
     /// `solve --model min-norm --samples 10000000` was accepted (hours of work); the sampled
     /// models are bounded by their estimated time, the closed form by its count alone.
@@ -389,13 +352,6 @@ mod tests {
         check_samples("--samples", 2_000, DOPRI5_SAMPLE).unwrap();
         check_samples("--samples", 10_000_000, STATICS_SAMPLE).unwrap();
         assert!(check_samples("--samples", 100_000, DOPRI5_SAMPLE).is_err());
-    }
-
-    #[test]
-    fn human_bytes_reads_well() {
-        assert_eq!(human_bytes(512), "512 B");
-        assert_eq!(human_bytes(1 << 30), "1 GiB");
-        assert_eq!(human_bytes(3 * (1 << 29)), "1.5 GiB");
     }
 
     #[test]

@@ -151,9 +151,55 @@ fn plain_or_sci(v: f64) -> String {
     }
 }
 
+/// Bytes in a human unit: `1.26 GiB`, `640 MiB`, `12 kiB`.
+pub fn human_bytes(b: u64) -> String {
+    let units = ["B", "kiB", "MiB", "GiB", "TiB", "PiB", "EiB"];
+    let mut v = b as f64;
+    let mut i = 0;
+    while v >= 1024.0 && i + 1 < units.len() {
+        v /= 1024.0;
+        i += 1;
+    }
+    match i {
+        0 => format!("{b} B"),
+        _ if v.fract() == 0.0 => format!("{v:.0} {}", units[i]),
+        _ => format!("{v:.1} {}", units[i]),
+    }
+}
+
+/// A duration in a human unit: `0.25 ms`, `12 s`, `10 min`, `2.8 h`.
+pub fn human_seconds(s: f64) -> String {
+    let shown = |v: f64, unit: &str| format!("{} {unit}", sig(v, 2));
+    match s {
+        _ if s < 1e-3 => shown(s * 1e6, "us"),
+        _ if s < 1.0 => shown(s * 1e3, "ms"),
+        _ if s < 120.0 => shown(s, "s"),
+        _ if s < 7200.0 => shown(s / 60.0, "min"),
+        _ if s < 172_800.0 => shown(s / 3600.0, "h"),
+        _ => shown(s / 86_400.0, "days"),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn human_seconds_reads_well() {
+        assert_eq!(human_seconds(2.2e-4), "220 us");
+        assert_eq!(human_seconds(0.0092), "9.2 ms");
+        assert_eq!(human_seconds(600.0), "10 min");
+        assert_eq!(human_seconds(2200.0), "37 min");
+        assert_eq!(human_seconds(1e4), "2.8 h");
+    }
+
+    #[test]
+    fn human_bytes_reads_well() {
+        assert_eq!(human_bytes(512), "512 B");
+        assert_eq!(human_bytes(1 << 30), "1 GiB");
+        assert_eq!(human_bytes(3 * (1 << 29)), "1.5 GiB");
+    }
+
 
     /// Regression (polish, item 1): `solve --mu 1e-300` echoed mu with 300 zeros, its
     /// `x_rigid` line 1e300 with 301 digits, and `solve --mu 0.16:0.3` the nominal mu as

@@ -438,24 +438,6 @@ fn numbers_shown_to_a_user_are_short() {
     );
 }
 
-/// Polish, item 1: `vlocator --mu 0.2:0.4 --mu-left 0.3` refused with "0.3 left,
-/// 0.30000000000000004 right": the range's middle in full f64 noise; it read 0.3 and the
-/// message said to drop the flank flag. Since gallery5 it names the flank that conflicts
-/// (`mu_left = 0.3`, flag `--mu-left`) beside the range it keeps off (cli_vlocator.rs).
-#[test]
-fn vlocator_unequal_flanks_refusal_reads_short() {
-    let o = run_in_empty(&["vlocator", "--mu", "0.2:0.4", "--mu-left", "0.3"]);
-    assert_eq!(o.status.code(), Some(2));
-    let e = stderr(&o);
-    assert!(
-        e.starts_with("jamchart: invalid mu_left = 0.3 ")
-            && e.contains("range 0.2:0.4")
-            && e.contains("without --mu-left"),
-        "{e}"
-    );
-    assert!(!e.contains("0000"), "{e}");
-}
-
 /// Polish, item 2: `--before nan` / `--before inf` were accepted silently when no input is
 /// distributed (the flag was ignored). They are refused naming `--before` with or without a
 /// distribution, and a `--before` with no distributed input is said to have no effect.

@@ -61,7 +61,7 @@ pub fn read_regular(path: &Path, max_bytes: u64, advice: &str) -> Result<String>
     if text.len() as u64 > max_bytes {
         return Err(refuse(format!(
             "larger than {}; {advice}",
-            crate::limits::human_bytes(max_bytes)
+            crate::numbers::human_bytes(max_bytes)
         )));
     }
     Ok(text)
