@@ -144,7 +144,7 @@ mod tests {
             .to_string()
     }
 
-    /// Regression (issue 13): `scene = [1, 2]` ran with mu_ground = 1, mu_palm = 2, serde
+    /// Regression: `scene = [1, 2]` ran with mu_ground = 1, mu_palm = 2, serde
     /// filling the struct's fields in order from the array. Any settings table given as an
     /// array is refused, however its elements happen to fit.
     #[test]
@@ -164,7 +164,7 @@ mod tests {
         }
     }
 
-    /// Regression (issue 13): `radius_mm = "ten"` said `invalid type: string "ten", expected
+    /// Regression: `radius_mm = "ten"` said `invalid type: string "ten", expected
     /// f64` without the key, `drive = 3` said only `wanted string or table`.
     #[test]
     fn wrong_types_name_the_key_with_its_section_and_value() {
@@ -194,7 +194,7 @@ mod tests {
         }
     }
 
-    /// Regression (issue 13): a 50 MB value was echoed whole on one stderr line.
+    /// Regression: a 50 MB value was echoed whole on one stderr line.
     #[test]
     fn long_values_are_cut_in_messages() {
         let long = "a".repeat(5_000_000);
@@ -209,7 +209,7 @@ mod tests {
         }
     }
 
-    /// Regression (issue 13): `1e400` was reported as `inf` (and `1e-400` read as 0).
+    /// Regression: `1e400` was reported as `inf` (and `1e-400` read as 0).
     #[test]
     fn numbers_out_of_f64_range_are_quoted_as_written() {
         for (text, written) in [
@@ -234,8 +234,8 @@ mod tests {
         assert!(c.scene.force_n.is_infinite());
     }
 
-    /// `[scene] mu` sets both frictions, as `--mu` and `--set mu` do (issue 18 found it refused
-    /// in a file); a key given as well wins, and a mistake in it is named on its line.
+    /// `[scene] mu` sets both frictions, as `--mu` and `--set mu` do (it was once
+    /// refused in a file); a key given as well wins, and a mistake in it is named on its line.
     #[test]
     fn scene_mu_in_a_file_sets_both_frictions() {
         let c: Config =

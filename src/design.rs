@@ -462,7 +462,7 @@ mod tests {
         }
     }
 
-    /// The two palm lengths against the point answers at the box's corners (the shaft,
+    /// The two palm lengths against the point answers at the box's corners (the 25 mm shaft,
     /// mu 0.12 to 0.3, 80 mm palm): a palm a hair longer than the length that keeps every jam
     /// on it catches the latest corner's jam, a hair shorter loses it; a palm a hair shorter than
     /// the length that ends before every jam loses the earliest corner's jam (every point of

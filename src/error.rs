@@ -240,7 +240,7 @@ mod tests {
         assert!(msg.len() < 150, "{}", msg.len());
     }
 
-    /// Regression (issue 23, class 8): `solve --rtol 1e300` quoted the value as 301 digits (cut
+    /// Regression: `solve --rtol 1e300` quoted the value as 301 digits (cut
     /// to 60), and an axis from 1e-300 quoted 0.000...; long numbers now read in exponent form,
     /// short ones as written.
     #[test]

@@ -451,8 +451,8 @@ mod tests {
         }
     }
 
-    /// Regression (issue 18): a jam past the palm's end said `beyond_reach` with no number; the
-    /// user needed `--palm-length 200` to find where it would jam. The shaft of the issue: r =
+    /// Regression: a jam past the palm's end said `beyond_reach` with no number; the
+    /// user needed `--palm-length 200` to find where it would jam. The 25 mm shaft: r =
     /// 12.5 mm, m = 0.4 kg, F = 40 N, mu = 0.12, an 80 mm palm.
     #[test]
     fn a_jam_past_the_palm_says_where_and_what_brings_it_on() {

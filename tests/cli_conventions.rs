@@ -1,4 +1,4 @@
-//! The conventions of a command-line tool (issue 22): `--version` that traces a chart's bytes,
+//! The conventions of a command-line tool: `--version` that traces a chart's bytes,
 //! help texts that match the tool, completions and a man page.
 
 #[path = "common/cli.rs"]

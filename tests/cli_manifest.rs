@@ -1,5 +1,5 @@
 //! `render --bless` and `render --check` on a user's own scene folder, as a user locks their
-//! charts in CI (issue 22): bless, check passes, one key changed, check fails naming the chart.
+//! charts in CI: bless, check passes, one key changed, check fails naming the chart.
 
 #[path = "common/cli.rs"]
 mod cli_util;

@@ -1,4 +1,4 @@
-//! The gallery's read-off of the charts that had none (issue 22): the time series (fig5), the
+//! The gallery's read-off of the charts that had none: the time series (fig5), the
 //! min-norm program's trace (fig4), the integrators' work-precision chart (integration-error)
 //! and the stability matrix, in headless Chromium and Firefox, checked against each chart's
 //! own data file and against `jamchart solve` for the same inputs. Screenshots are saved under
@@ -33,7 +33,7 @@ fn rel(got: f64, want: f64) -> f64 {
 }
 
 in_chromium_and_firefox!(
-    /// Issue 22: fig5 (disc speed and position against time, the jam marked), fig4 (the
+    /// Regression: fig5 (disc speed and position against time, the jam marked), fig4 (the
     /// min-norm program's iterations), the work-precision chart and the stability matrix were
     /// plain pictures in the gallery. In Chromium and Firefox: fig5 read at a sample gives its
     /// CSV row (speed, position, palm angle, the rigid disc's) to the embedded 7 digits and

@@ -146,8 +146,8 @@ fn statuses_in_their_order() {
     let s = statics::solve(&d.with_mu(0.01));
     assert_eq!(s.status, JamStatus::BeyondReach);
     assert_eq!((s.theta_jam_deg, s.x_jam_mm), (None, None));
-    // A push too weak to move the disc at all: m g sin(alpha)/F >= 1 (its own status since
-    // issue 13; it was jammed_at_start, indistinguishable from a disc that jams at once).
+    // A push too weak to move the disc at all: m g sin(alpha)/F >= 1 (a status of its
+    // own; it was jammed_at_start, indistinguishable from a disc that jams at once).
     let s = statics::solve(&SceneParams { force_n: 1.0, ..d });
     assert_eq!(s.status, JamStatus::TooWeak);
 }

@@ -1,4 +1,4 @@
-//! Probabilities and quantiles of x_jam under distributed inputs (issue 19): the exact
+//! Probabilities and quantiles of x_jam under distributed inputs: the exact
 //! monotone map against a brute-force quadrature of the input and the closed form at its
 //! quantiles, Monte Carlo against the exact answer, and Monte Carlo bit-identical for any
 //! thread count.
@@ -11,7 +11,7 @@ use jamchart::statics;
 use jamchart::uncertain::dist::{self, DistMethod, DistQuestion};
 use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
 
-/// The issue's shaft with mu normal(0.2, 0.03) for both contacts.
+/// The 25 mm shaft with mu normal(0.2, 0.03) for both contacts.
 fn shaft() -> (SceneParams, UncertainSet) {
     let p = jamchart::uncertain::shaft_25mm().with_mu(0.2);
     let set = UncertainSet {

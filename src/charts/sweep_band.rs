@@ -58,7 +58,7 @@ pub fn legend_entry(rows: &[BandRow], label: &str) -> Option<LegendEntry> {
 
 #[cfg(test)]
 mod tests {
-    /// The legend never names a line that is not drawn: with mu 0.12 to 0.3 on the issue's
+    /// The legend never names a line that is not drawn: with mu 0.12 to 0.3 on the 25 mm
     /// shaft, the latest-jam corner (mu = 0.12) lies past the 80 mm palm at every push from
     /// 10 to 100 N, so its edge draws nothing; it kept a legend entry ("latest jam; no jam past
     /// the palm's end ...") beside no line. Now the shade's entry says it runs to the palm's end.

@@ -246,7 +246,7 @@ impl Universal {
         let (px, py) = chart.plotting_area().get_pixel_range();
         let inside = |at: (i32, i32)| px.contains(&at.0) && py.contains(&at.1);
         // A label whose text would overlap one already set is left out: over many decades of
-        // F / (m g) the lines crowd together near the bottom (issue 18's layout test).
+        // F / (m g) the lines crowd together near the bottom (the layout tests' awkward scenes).
         let mut placed: Vec<PxBox> = Vec::new();
         // A label on a line at the plot's left edge is moved right until it clears the edge,
         // where the y axis' tick labels lie (a line there over 12 decades met "10⁰").

@@ -553,7 +553,7 @@ mod tests {
         assert_eq!(map, Some(MapCostSettings::default()));
     }
 
-    /// Issue 20, item 5: the floors table took each curve's smallest error against the physics
+    /// The floors table took each curve's smallest error against the physics
     /// whatever its integration error, so a loose tolerance that landed near the reference by
     /// luck was listed as the floor (RADAU5 on a 1 um contact at rtol 1e-3: 43.9 um from the
     /// reference with an integration error of 149 um). Now only rows whose integration error is

@@ -118,7 +118,7 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
     })
 }
 
-/// The JSON document: the keys, then the inputs.
+/// The JSON document: the verdict, forces, capacity and optimum, then the inputs.
 #[derive(Serialize)]
 struct Report<'a> {
     verdict: &'static str,

@@ -223,7 +223,7 @@ mod tests {
                 f.d_rate
             );
         }
-        // 200 N at about 59.3 um: the "about 60 um" of the issue.
+        // 200 N at about 59.3 um: the "about 60 um" the docs quote.
         let delta_200 = (200.0_f64 / 1e5).powf(1.0 / 2.2);
         assert!((delta_200 - 0.0593).abs() < 5e-5, "{delta_200}");
     }

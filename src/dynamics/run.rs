@@ -274,7 +274,7 @@ fn run_nonsmooth(
     }
     // Held where it started: the jam is at the start (as the regularised model's "never armed").
     // A disc that moved by round-off, or (motion drive) by no more than the lock-up is located
-    // to, did not move (issue 20, item 1: `jams` at 10.0000 mm where nothing moved). A force
+    // to, did not move (`jams` at 10.0000 mm where nothing moved). A force
     // drive's first step or two of travel is kept: it halves with the step.
     let x_start = sys.touching_x(scene.start_angle_deg.to_radians());
     let moved_mm = (x - x_start).abs();

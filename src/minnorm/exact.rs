@@ -43,7 +43,7 @@ const TOL: f64 = 1e-10;
 /// dense solve whose entries are of order one is a few machine epsilons of its largest entry.
 // Not TOL: a contact whose forces are far below the largest load (friction of 1e-9, a palm
 // pushing with 1/2000 of the weight) has its margin far below TOL, and a tolerance on the
-// largest force moved its held / not-held boundary by up to 9 % (issues 20 and 23).
+// largest force moved its held / not-held boundary by up to 9 %.
 const ROW_ROUNDOFF: f64 = 16.0 * f64::EPSILON;
 /// Accepted residual of a KKT solve, relative to the solution: 1e4 machine epsilons.
 const ROUNDOFF: f64 = 1e-12;

@@ -44,10 +44,10 @@ use crate::error::{Error, Result};
 use crate::settings::Decl;
 pub(crate) use table::take;
 
-/// The worked example of issue 19: a 25 mm shaft (r = 12.5 mm) of 0.4 kg pushed with 40 N by an
-/// 80 mm palm, mu 0.21 at both contacts (the midpoint of the issue's 0.12 to 0.3). The one
-/// fixture of the range, distribution and `design` tests and the uncertainty benchmark; every
-/// other setting is the paper's default.
+/// The worked example of a friction range: a 25 mm shaft (r = 12.5 mm) of 0.4 kg pushed with 40 N
+/// by an 80 mm palm, mu 0.21 at both contacts (the midpoint of its range 0.12 to 0.3). The one
+/// fixture of the range, distribution and `design` tests and the uncertainty benchmark; every other
+/// setting is the paper's default.
 pub fn shaft_25mm() -> crate::scene::SceneParams {
     crate::scene::SceneParams {
         radius_mm: 12.5,
@@ -284,7 +284,7 @@ impl Uncertain {
                 must(centre, mean)?;
                 // Every value a draw or the box can take must be a valid value too:
                 // lognormal(0.2,1e300) reached mu = inf, where the closed form said theta_jam =
-                // 182.8 deg at x = -0.245 mm with exit 0 (issue 23, class 1, third run).
+                // 182.8 deg at x = -0.245 mm with exit 0.
                 // A normal is truncated at 0 by design (its lowest value is 0 however wide);
                 // a lognormal's lowest value underflows to 0 when sigma is huge.
                 let lowest = matches!(self, Uncertain::LogNormal { .. }).then_some(REACH);
@@ -315,7 +315,7 @@ pub const TAIL: f64 = 1e-3;
 impl fmt::Display for Uncertain {
     /// As it is written: `0.12:0.3`, `normal(0.2,0.03)`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        // Each number as short as it reads back: `1e300`, not its 301 digits (issue 23, class 8).
+        // Each number as short as it reads back: `1e300`, not its 301 digits.
         let t = crate::settings::number_text;
         match *self {
             Uncertain::Point { value } => write!(f, "{}", t(value)),

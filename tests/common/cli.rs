@@ -49,7 +49,7 @@ pub fn json(o: &Output) -> Value {
     serde_json::from_slice(&o.stdout).expect("stdout is JSON")
 }
 
-/// The shaft of issue 18 as flags: a 25 mm steel shaft (r 12.5 mm), 0.4 kg, a 40 N push and an
+/// The example shaft as flags: a 25 mm steel shaft (r 12.5 mm), 0.4 kg, a 40 N push and an
 /// 80 mm palm; the friction is the test's.
 pub const SHAFT: [&str; 8] = [
     "--radius",

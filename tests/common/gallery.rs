@@ -10,8 +10,8 @@ use serde_json::Value;
 use super::browser::{self, Browser, Kind};
 use super::cli_util::{self, jamchart};
 
-/// A check as two tests: `$chromium` runs it in Chromium, `$firefox` in Firefox (issue 22:
-/// "current Chromium and Firefox"). Doc comments before the invocation document both.
+/// A check as two tests: `$chromium` runs it in Chromium, `$firefox` in Firefox (the gallery
+/// must work in current Chromium and Firefox). Doc comments before the invocation document both.
 macro_rules! in_chromium_and_firefox {
     ($(#[$doc:meta])* $chromium:ident, $firefox:ident, $check:ident) => {
         $(#[$doc])*

@@ -127,7 +127,7 @@
 //! # Against the regularised model in the stiff limit
 //!
 //! With the motion drive both methods lock up at r/mu (`nonsmooth_and_stiff_regularised_agree`).
-//! With the force drive both report where the disc comes to rest (issue 20, item 4: the
+//! With the force drive both report where the disc comes to rest (the
 //! regularised model used to read the jam at the speed collapse, while the disc, let go by the
 //! stalled palm, still coasted, 1.5-1.7 % short at mu = 0.15 and 30 deg/s). The nonsmooth rest
 //! lies within 4.8e-6 of an independent rigid model over mu 0.15-0.45, F 50-1000 N, 10-90 deg/s
