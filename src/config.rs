@@ -22,7 +22,7 @@ pub use read::{
     array_for_table, cut_quotes, key_line_column, keyed, not_a_table, parse_toml, seq_for_struct,
 };
 
-/// A whole parameter file. Each model's issue adds its own section.
+/// A whole parameter file: the scene and each model's own section.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Config {

@@ -103,8 +103,8 @@ fn render_read_off_draws_the_users_point_on_every_map_and_sweep() {
     assert!(file(&out, "index.html").contains("--read-off mu=0.27"));
 }
 
-/// A read-off whose point lies off a map draws nothing and names nothing in the legend (issue
-/// 18: a custom map's legend named read-off lines at mu = 0.40 that were not drawn), and warns.
+/// A read-off whose point lies off a map draws nothing and names nothing in the legend (a custom
+/// map's legend named read-off lines at mu = 0.40 that were not drawn), and warns.
 #[test]
 fn a_read_off_off_the_map_is_not_in_the_legend() {
     let dir = tempfile::tempdir().unwrap();

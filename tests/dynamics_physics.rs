@@ -174,11 +174,11 @@ fn both_integrators_agree_at_a_tight_tolerance() {
     }
 }
 
-/// Regression: a stiff method at a loose tolerance can report success with a wrong answer (the
-/// issue saw another library's Radau 69 % off). At rtol 0.05-0.5 our methods give x_jam at
-/// 10-14 mm and 33-169 mm (truth 24.5-25.0 mm, 58 % short to 574 % long; see the module docs of
-/// `dynamics`), caught by the tolerance cap, the cross-checks and the verification run. Every
-/// answer that says `jams` must be right within 1 %.
+/// Regression: a stiff method at a loose tolerance can report success with a wrong answer (another
+/// library's Radau has been seen 69 % off). At rtol 0.05-0.5 our methods give x_jam at 10-14 mm and
+/// 33-169 mm (truth 24.5-25.0 mm, 58 % short to 574 % long; see the module docs of `dynamics`),
+/// caught by the tolerance cap, the cross-checks and the verification run. Every answer that says
+/// `jams` must be right within 1 %.
 #[test]
 fn loose_tolerances_never_give_a_trusted_wrong_answer() {
     let scene = SceneParams::default();

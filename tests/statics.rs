@@ -172,7 +172,7 @@ fn log_range(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
     (lo.ln()..hi.ln()).prop_map(f64::exp)
 }
 
-/// The foundation issue's input ranges, with exact zeros for mu and mass now and then.
+/// Inputs over many decades, with exact zeros for mu and mass now and then.
 fn any_scene() -> impl Strategy<Value = SceneParams> {
     let mu = prop_oneof![1 => Just(0.0), 9 => log_range(1e-6, 1e3)];
     let mass = prop_oneof![1 => Just(0.0), 9 => log_range(1e-6, 1e6)];
