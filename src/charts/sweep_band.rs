@@ -73,7 +73,7 @@ mod tests {
         use crate::figures::{Figure, Input};
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("charts");
         let mut scene: Scene = load_scene(&dir, "fig7b").expect("fig7b loads");
-        scene.params = crate::uncertain::shaft_25mm();
+        scene.params = crate::uncertain::shaft::shaft_25mm();
         let ChartSpec::Sweep(mut spec) = scene.chart.clone() else {
             panic!("fig7b is a sweep")
         };

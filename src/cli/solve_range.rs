@@ -16,7 +16,7 @@ use crate::numbers::Num;
 use crate::scene::{JamStatus, SceneParams};
 use crate::uncertain::UncertainSet;
 use crate::uncertain::dist::{self, DistAnswer, DistMethod, DistQuestion, Estimate};
-use crate::uncertain::range::{self, Corner, End, InputEnds, Method, RangeAnswer, Reached};
+use crate::uncertain::range::{self, Corner, End, InputEnds, RangeAnswer, RangeMethod, Reached};
 
 /// Flags of `solve` for distributed inputs (ignored without one). Each takes a negative number
 /// as its value, to refuse it naming the flag (clap otherwise read `--samples -1` as an unknown
@@ -238,10 +238,10 @@ fn text(p: &SceneParams, uncertain: &UncertainSet, results: &[Record]) -> String
     for r in results {
         let a = &r.range;
         let how = match a.method {
-            Method::Corners => "exact: theta_jam is monotone in every input, so the box is \
+            RangeMethod::Corners => "exact: theta_jam is monotone in every input, so the box is \
                                 answered from its corners"
                 .to_string(),
-            Method::Sampled { samples } => format!(
+            RangeMethod::Sampled { samples } => format!(
                 "sampled at {samples} points of a grid over the box: the range of the samples, \
                  not a bound"
             ),
@@ -257,8 +257,8 @@ fn text(p: &SceneParams, uncertain: &UncertainSet, results: &[Record]) -> String
             v.join(", ")
         };
         let point = match a.method {
-            Method::Corners => "corner",
-            Method::Sampled { .. } => "sample",
+            RangeMethod::Corners => "corner",
+            RangeMethod::Sampled { .. } => "sample",
         };
         match (a.theta_jam_deg, a.x_jam_mm, a.reached) {
             (Some([t0, t1]), Some([x0, x1]), Some([low, high])) => {
