@@ -145,6 +145,16 @@ pub enum OutputFormat {
     Json,
 }
 
+/// Output of `vlocator`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum VlocatorFormat {
+    /// A short human summary with units.
+    Text,
+    /// One JSON object: {"verdict", "self_locking", "locking_needed", "friction_held",
+    /// "forces", "capacity", "optimum", "inputs"}.
+    Json,
+}
+
 /// Output of `table`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum TableFormat {
