@@ -7,8 +7,8 @@ use clap::{Args, ValueEnum};
 use crate::config::Config;
 use crate::error::Result;
 use crate::models::ModelKind;
+pub use crate::settings::decl::{parse_count, parse_f64};
 use crate::settings::flags::{Flags, SceneSet};
-pub use crate::settings::flags::{parse_count, parse_f64};
 use crate::uncertain::UncertainSet;
 
 /// Scene flags over `--config FILE`: each flag is a declared setting of `[scene]`
