@@ -12,6 +12,9 @@
 //! and `[dynamics.*]`; the V-locator's), so a bare key names one setting: `--set
 //! stiffness_n_per_mm_e=1e6` finds `[dynamics.contact]`, and a key written in the wrong section
 //! is refused with its right place named.
+//!
+//! The declaration itself ([`decl`]) sits below the parameter structs that use it; this module
+//! gathers their declarations into the two families and derives the rest from them.
 
 pub(crate) mod decl;
 pub(crate) mod flags;
