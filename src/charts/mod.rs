@@ -21,7 +21,7 @@
 //!
 //! - Points of a model on a sweep (Fig. 6: min-norm points, simulation points with motion and
 //!   force drive): one `sweep_layers::SweepLayer` variant and its arm in
-//!   `sweep_layers::series`, returning `sweep::Series` of markers; legend, panels, data file
+//!   `sweep_layers::series`, returning `sweep_layers::Series` of markers; legend, panels, data file
 //!   and hashes follow.
 //! - A model over a map (jam map boundary and read-off, contour map): nothing to do here. Maps
 //!   name any model of the port ([`crate::models::ModelKind`]: `model = "min_norm"`) and call

@@ -8,7 +8,7 @@ use super::axes::{self, DrawResult, PlotAxis};
 use super::legend::{LegendEntry, Swatch};
 use super::style::BAND_FILL;
 use crate::figures::band::BandRow;
-use crate::figures::sweep::SweepPanel;
+use crate::figures::sweep_layers::SweepPanel;
 
 /// Shades the band in `panel`: one polygon per run of swept values with an interval, so a
 /// stretch where nothing can jam on the palm stays white.

@@ -8,9 +8,8 @@ use clap::Args;
 use serde::Serialize;
 
 use super::args::{OutputFormat, parse_count, parse_f64};
-use super::solve::SolveArgs;
 use crate::config::Config;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::models::{self, ModelKind};
 use crate::numbers::Num;
 use crate::scene::{JamStatus, SceneParams};
@@ -145,21 +144,19 @@ struct Document<'a> {
     results: Vec<Record>,
 }
 
-/// Answers the box of `uncertain` around `config` with every model `a` asks for.
-pub(super) fn run(a: &SolveArgs, config: &Config, uncertain: &UncertainSet) -> Result<String> {
-    if a.series.is_some() || a.trace {
-        return Err(Error::Unsupported(
-            "--series and --trace follow one push; give single values with them, not a range"
-                .into(),
-        ));
-    }
-    let results = a
-        .model
-        .models()
+/// Answers the box of `uncertain` around `config` with each of `models`, in `format`.
+pub(super) fn run(
+    models: Vec<ModelKind>,
+    distribution: &DistArgs,
+    format: OutputFormat,
+    config: &Config,
+    uncertain: &UncertainSet,
+) -> Result<String> {
+    let results = models
         .into_iter()
-        .map(|kind| answer(kind, config, uncertain, &a.distribution))
+        .map(|kind| answer(kind, config, uncertain, distribution))
         .collect::<Result<Vec<Record>>>()?;
-    Ok(match a.format {
+    Ok(match format {
         OutputFormat::Json => {
             let doc = Document {
                 inputs: &config.scene,

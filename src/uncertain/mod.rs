@@ -100,7 +100,7 @@ impl Uncertain {
     pub fn parse(text: &str) -> std::result::Result<Uncertain, String> {
         let t = text.trim();
         let number = |s: &str| -> std::result::Result<f64, String> {
-            let v = crate::settings::flags::parse_f64(s)?;
+            let v = crate::settings::decl::parse_f64(s)?;
             if v.is_finite() {
                 Ok(v)
             } else {
@@ -133,7 +133,7 @@ impl Uncertain {
                 hi: number(b)?,
             });
         }
-        crate::settings::flags::parse_f64(t).map(|value| Uncertain::Point { value })
+        crate::settings::decl::parse_f64(t).map(|value| Uncertain::Point { value })
     }
 
     /// Whether this is more than a point.
