@@ -107,24 +107,6 @@ pub fn read_text(path: &Path) -> Result<String> {
     read_regular(path, MAX_INPUT_BYTES, "give a TOML file")
 }
 
-/// What is wrong with a number written as `raw` that parsed to `v`: None if it is fine.
-///
-/// Text that overflows to infinity or underflows to zero is refused, so that a message quotes
-/// what was written (`1e400`), never what it became (`inf`); the words inf and nan pass.
-pub fn float_range_problem(raw: &str, v: f64) -> Option<&'static str> {
-    let lower = raw.to_ascii_lowercase();
-    if v.is_infinite() && !lower.contains("inf") {
-        return Some("is beyond the range of a 64-bit float (the largest is about 1.8e308)");
-    }
-    let mantissa = lower.split('e').next().unwrap_or("");
-    if v == 0.0 && mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b)) {
-        return Some(
-            "is too small for a 64-bit float: it would become 0 (the smallest is about 5e-324)",
-        );
-    }
-    None
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -36,7 +36,7 @@ fn render_all(threads: usize) -> Vec<Rendered> {
                 let r = charts::render(&scene, Formats::Both).expect("scene renders");
                 // `render` checks the paths it plans before computing: they are the ones written.
                 let mut written = vec![r.data.extension];
-                written.extend(r.cells.as_ref().map(|_| charts::Cells::EXTENSION));
+                written.extend(r.cells.as_ref().map(|_| charts::CellsCsv::EXTENSION));
                 assert_eq!(written, scene.chart.data_extensions(), "{n}");
                 r
             })

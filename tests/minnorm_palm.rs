@@ -473,7 +473,8 @@ fn clarabel_overusing_a_friction_cone_is_flagged() {
         else {
             panic!("{c:?}");
         };
-        assert!(utilisation > 1.0 + palm::CONE_EXCESS);
+        // Past the allowance the palm problem grants a cone for round-off (1e-5).
+        assert!(utilisation > 1.0 + 1e-5);
         assert_eq!(backend, Backend::Clarabel);
         // The advice works: the exact path answers, inside its cones.
         assert_eq!(e.status, JamStatus::Jams, "{e:?}");

@@ -8,7 +8,9 @@ use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
 use jamchart::{JamStatus, SceneParams};
 
 /// The 25 mm shaft: r 12.5 mm, 0.4 kg, 40 N, an 80 mm palm; mu nominal 0.21.
-use jamchart::uncertain::shaft_25mm as shaft;
+#[path = "common/shaft.rs"]
+mod shaft_25mm;
+use shaft_25mm::shaft_25mm as shaft;
 
 fn input(name: &'static str, keys: &[&'static str], lo: f64, hi: f64) -> UncertainInput {
     UncertainInput {
@@ -138,9 +140,8 @@ fn a_sampled_box_spans_the_corners_interval() {
     let s = range::sampled(&jamchart::ModelSpec::Statics, &p, &set).unwrap();
     assert_eq!(
         s.method,
-        range::Method::Sampled {
-            samples: range::SAMPLES_PER_INPUT
-        }
+        // Nine points of one input, as the output says.
+        range::RangeMethod::Sampled { samples: 9 }
     );
     let (e, g) = (exact.x_jam_mm.unwrap(), s.x_jam_mm.unwrap());
     assert!(

@@ -8,7 +8,7 @@ use super::axes::{self, DrawResult, PlotAxis};
 use super::legend::{LegendEntry, Swatch};
 use super::style::BAND_FILL;
 use crate::figures::band::BandRow;
-use crate::figures::sweep::SweepPanel;
+use crate::figures::sweep_layers::SweepPanel;
 
 /// Shades the band in `panel`: one polygon per run of swept values with an interval, so a
 /// stretch where nothing can jam on the palm stays white.
@@ -73,7 +73,7 @@ mod tests {
         use crate::figures::{Figure, Input};
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("charts");
         let mut scene: Scene = load_scene(&dir, "fig7b").expect("fig7b loads");
-        scene.params = crate::uncertain::shaft_25mm();
+        scene.params = crate::uncertain::shaft::shaft_25mm();
         let ChartSpec::Sweep(mut spec) = scene.chart.clone() else {
             panic!("fig7b is a sweep")
         };

@@ -329,8 +329,13 @@ fn rolling_points_lie_on_the_rigid_limit() {
     let ChartSpec::Sweep(spec) = &scene.chart else {
         panic!("fig6 is a sweep")
     };
-    let series =
-        sweep_layers::series(SweepLayer::MinNormRolling, spec, &scene.input(), &Live).unwrap();
+    let series = sweep_layers::series(
+        SweepLayer::MinNormRolling,
+        &spec.axis,
+        &scene.input(),
+        &Live,
+    )
+    .unwrap();
     let mut worst: f64 = 0.0;
     for p in &series[0].points {
         let s = crate::statics::solve(&scene.params.with_mu(p.at));
@@ -389,7 +394,7 @@ fn a_sweep_layer_that_failed_at_some_points_names_them() {
         ..Counting::default()
     };
     for layer in [SimulationMotion, SimulationForce] {
-        let s = &sweep_layers::series(layer, spec, &scene.input(), &failing).unwrap()[0];
+        let s = &sweep_layers::series(layer, &spec.axis, &scene.input(), &failing).unwrap()[0];
         let note = s.callout.as_deref().unwrap_or_default();
         assert!(
             note.contains("no answer at μ = 0.175 ("),
@@ -403,7 +408,7 @@ fn a_sweep_layer_that_failed_at_some_points_names_them() {
         );
     }
     // Where the model answers everywhere there is no note.
-    let s = &sweep_layers::series(SimulationMotion, spec, &scene.input(), &Live).unwrap()[0];
+    let s = &sweep_layers::series(SimulationMotion, &spec.axis, &scene.input(), &Live).unwrap()[0];
     assert_eq!(s.callout, None);
 }
 

@@ -12,7 +12,7 @@ use plotters::prelude::*;
 
 use super::axes::{self, DrawResult, PlotAxis};
 use super::collide::PxBox;
-use super::colorbar::ColorBar;
+use super::colorbar::{self, ColorBar};
 use super::contour_map::{at_height, level_text};
 use super::legend::{self, LegendEntry, Swatch};
 use super::picture::Picture;
@@ -121,7 +121,7 @@ impl Picture for Universal {
                 .collect(),
             title: "θ_jam (deg), in brackets x_jam / r".into(),
         };
-        let chart = axes::band_map(root, &x, &y, &entries, &self.bands, &colors, &bar)?;
+        let chart = colorbar::band_map(root, &x, &y, &entries, &self.bands, &colors, &bar)?;
         let area = chart.plotting_area();
         for ring in &self.held {
             area.draw(&Polygon::new(ring.clone(), HELD_FILL.filled()))?;

@@ -17,8 +17,8 @@ use serde::de::DeserializeOwned;
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
-use super::float_range_problem;
 use crate::error::{Error, Result, cut};
+use crate::settings::decl::float_range_problem;
 
 /// Parses TOML text into `T` (see the module doc); errors carry file, line and column.
 pub fn parse_toml<T: DeserializeOwned + Serialize>(text: &str, path: &Path) -> Result<T> {

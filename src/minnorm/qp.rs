@@ -178,7 +178,10 @@ pub struct ContactSolution {
 pub fn solve(problem: &ContactProblem, settings: &QpSettings) -> Result<ContactSolution> {
     let low = problem.lower()?;
     if settings.fast_path && exact::applies(&low) {
-        return Ok(exact::solve_lowered(&low));
+        return Ok(match exact::solve_lowered(&low) {
+            (Some(z), tried) => assemble(&low, &z, Backend::Exact, tried),
+            (None, tried) => ContactSolution::not_held(HoldStatus::NotHeld, Backend::Exact, tried),
+        });
     }
     solve_lowered(&low, settings)
 }

@@ -3,8 +3,9 @@
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettings, DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
 
-use super::step::ContactMode;
+use super::step::{Built, ContactMode};
 use super::*;
+use crate::dynamics::DiscMotion;
 
 /// A small deterministic generator (64-bit LCG), so the sample is the same on every run.
 struct Lcg(u64);
