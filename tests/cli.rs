@@ -2,8 +2,7 @@
 
 use serde_json::Value;
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{SHAFT, jamchart, json, repo, stderr, stdout};
 
 #[test]

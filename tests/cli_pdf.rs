@@ -2,8 +2,7 @@
 //! SVG's drawing through svg2pdf, its bytes the same on every run and thread count, its text
 //! outlines (no font in the file).
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 
 use std::path::Path;
 use std::process::Command;

@@ -1,8 +1,7 @@
 //! `jamchart render --read-off KEY=VALUE`: the user's own point on every built-in
 //! map and sweep, checked against `solve` for the same part.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, json, stderr};
 
 use serde_json::Value;

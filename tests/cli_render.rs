@@ -1,7 +1,6 @@
 //! `jamchart render` run as a process in a temporary directory.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, repo, stderr, stdout};
 
 fn scenes_dir() -> String {

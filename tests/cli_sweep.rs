@@ -1,8 +1,7 @@
 //! `jamchart sweep` run as a process in a temporary directory: a chart of one's own parameters
 //! without a scene file.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{SHAFT, jamchart, stderr, stdout};
 
 /// The statics row at mu = 0.4 of a one-line sweep is the paper's closed form, 24.355 mm.

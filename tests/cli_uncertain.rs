@@ -1,8 +1,7 @@
 //! Ranges and distributions on the command line and in files: which settings take
 //! them, how bad ones are refused, and the answers over a range.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 
 use cli_util::{jamchart, stderr};
 

@@ -1,7 +1,6 @@
 //! `jamchart vlocator` run as a user would: text, JSON keys, and bad input.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, json, stderr, stdout};
 
 #[test]

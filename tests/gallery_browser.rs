@@ -9,13 +9,9 @@
 //! test is skipped with the reason printed. `.ci/run` installs both when they are missing.
 //! `JAMCHART_CHROMIUM` / `JAMCHART_FIREFOX` name other binaries (`common/browser.rs`).
 
-#[path = "common/browser.rs"]
-mod browser;
-#[path = "common/cli.rs"]
-mod cli_util;
-#[macro_use]
-#[path = "common/gallery.rs"]
-mod gallery;
+use crate::common::browser;
+use crate::common::cli as cli_util;
+use crate::common::gallery;
 
 use std::path::{Path, PathBuf};
 

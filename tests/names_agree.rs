@@ -4,8 +4,7 @@
 //! the rigid contact's jam in a cross-check; the table's CSV and JSON were written by separate
 //! code. These tests read what the binary writes.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, json, stderr, stdout};
 
 /// The quantities of a jam, with their unit suffix as in JSON keys and CSV headers.

@@ -3,10 +3,8 @@
 //! quantiles, Monte Carlo against the exact answer, and Monte Carlo bit-identical for any
 //! thread count.
 
-#[path = "common/cli.rs"]
-mod cli_util;
-#[path = "common/shaft.rs"]
-mod shaft;
+use crate::common::cli as cli_util;
+use crate::common::shaft;
 
 use jamchart::SceneParams;
 use jamchart::statics;

@@ -126,7 +126,7 @@
 //! the statics' theta_jam; free with equal frictions it is the self-locking 2 atan mu (x = r/mu)
 //! whatever the push. Free with a slipperier ground (mu_g < mu_p) the ground binds first and
 //! the boundary moves with the push: tan(theta*/2) = mu_g mu_p (W + 2 F cos alpha_p) /
-//! (2 mu_p F cos alpha_p - mu_g W) (capped at mu_p), derived in tests/locator.rs. (It differs from
+//! (2 mu_p F cos alpha_p - mu_g W) (capped at mu_p), derived in src/locator/tests.rs. (It differs from
 //! the min-norm palm model's rolling formulation, whose palm pushes with exactly F cos alpha_p:
 //! here the palm contact may also squeeze.)
 

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use serde_json::Value;
 
 use super::browser::{self, Browser, Kind};
-use super::cli_util::{self, jamchart};
+use super::cli::{self as cli_util, jamchart};
 
 /// A check as two tests: `$chromium` runs it in Chromium, `$firefox` in Firefox (the gallery
 /// must work in current Chromium and Firefox). Doc comments before the invocation document both.

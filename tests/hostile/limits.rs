@@ -6,8 +6,7 @@ use std::path::Path;
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, json, repo, stderr};
 
 /// Runs `jamchart ARGS` in `dir` under a 4 GiB address-space cap (`ulimit -v`).

@@ -7,8 +7,7 @@ use std::path::Path;
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{kill_and_wait, longest_digit_run, stderr, stdout};
 
 /// The test hook of `atomic::write_all`: a pause between staging a set and committing it.

@@ -5,8 +5,7 @@
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, repo, stderr, stdout};
 
 /// The rows of `dir/out/NAME.csv` whose first field is `layer`.
