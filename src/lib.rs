@@ -143,6 +143,9 @@ pub mod statics;
 mod study;
 pub mod uncertain;
 
+#[doc = include_str!("guide.md")]
+pub mod guide {}
+
 /// The `jamchart` command line (`src/main.rs` calls it): not a library entry.
 #[doc(hidden)]
 pub use cli::main as run_cli;

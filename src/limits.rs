@@ -89,7 +89,7 @@ impl PerItem {
 // A jam map cell was 59 B while its CSV was built in memory; streamed to its file, 33 B; with
 // each cell's region a byte (it was a 16-byte reference to its word), 17 B (800 -> 1600 cells a
 // side: 26.4 -> 57.8 MB peak RSS; 500 -> 1000, as tests/hostile/limits.rs measures: 20-22 B;
-// 3200: see README). The universal chart's status went the same way: 97 -> 82 B (400 -> 800).
+// 3200: see the guide's Limits). The universal chart's status went the same way: 97 -> 82 B (400 -> 800).
 // The other maps' peaks come before their CSV is written (contour maps: 129.0 MB at 800^2
 // either way), so streaming left them as they were.
 //

@@ -35,6 +35,7 @@ mod names_agree;
 mod palm_offset;
 mod python_package;
 mod range_promise;
+mod readme;
 mod scene_docs;
 mod statics;
 mod uncertain_dist;

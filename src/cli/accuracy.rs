@@ -524,12 +524,15 @@ fn map_csv(m: &MapCostReport) -> Result<String> {
 pub(crate) fn to_csv<T: Serialize>(rows: impl Iterator<Item = T>) -> Result<String> {
     let mut w = csv::Writer::from_writer(Vec::new());
     for row in rows {
-        w.serialize(row)
-            .map_err(|e| Error::Unsupported(format!("writing CSV: {e}")))?;
+        w.serialize(row).map_err(|e| Error::Encode {
+            what: "CSV",
+            detail: e.to_string(),
+        })?;
     }
-    let bytes = w
-        .into_inner()
-        .map_err(|e| Error::Unsupported(format!("writing CSV: {e}")))?;
+    let bytes = w.into_inner().map_err(|e| Error::Encode {
+        what: "CSV",
+        detail: e.to_string(),
+    })?;
     Ok(String::from_utf8(bytes).expect("the csv crate writes UTF-8 from UTF-8 fields"))
 }
 

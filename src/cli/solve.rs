@@ -93,10 +93,12 @@ pub fn run(a: &SolveArgs) -> Result<String> {
     solve_range::check_distribution_flags(&a.distribution, &uncertain)?;
     if !uncertain.is_empty() {
         if a.series.is_some() || a.trace {
-            return Err(Error::Unsupported(
-                "--series and --trace follow one push; give single values with them, not a range"
+            return Err(Error::Conflict {
+                flag: if a.trace { "--trace" } else { "--series" },
+                message: "--series and --trace follow one push; give single values with them, \
+                          not a range"
                     .into(),
-            ));
+            });
         }
         return solve_range::run(
             a.model.models(),
@@ -109,9 +111,10 @@ pub fn run(a: &SolveArgs) -> Result<String> {
     let kinds = a.model.models();
     if let Some(path) = &a.series {
         if !kinds.contains(&ModelKind::Dynamics) {
-            return Err(Error::Unsupported(
-                "--series needs the dynamics: add --model dynamics".into(),
-            ));
+            return Err(Error::Conflict {
+                flag: "--series",
+                message: "--series needs the dynamics: add --model dynamics".into(),
+            });
         }
         // Before the simulation runs: a path that will be refused is refused now, and a series
         // too long to hold is refused by its estimate.

@@ -78,7 +78,7 @@ impl ImpactLaw {
     pub fn period_s(&self, mass_kg: f64, delta: f64) -> f64 {
         let (_, stiffness_n_per_mm) = self.elastic(delta);
         if stiffness_n_per_mm > 0.0 {
-            std::f64::consts::TAU * (mass_kg / (1e3 * stiffness_n_per_mm)).sqrt()
+            std::f64::consts::TAU * (mass_kg / (super::MM_PER_M * stiffness_n_per_mm)).sqrt()
         } else {
             0.0
         }

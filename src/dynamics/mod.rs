@@ -81,6 +81,10 @@ mod verdict;
 
 use serde::Serialize;
 
+/// mm per m: the simulations work in mm, s, kg and N, so a force per mass in N/kg (= m/s^2)
+/// is `MM_PER_M` times that many mm/s^2, and a stiffness in N/mm is `MM_PER_M` times as many N/m.
+pub(crate) const MM_PER_M: f64 = 1000.0;
+
 pub use integrators::Failure;
 pub(crate) use jam::SeriesRow;
 pub use params::{
@@ -208,7 +212,7 @@ pub fn simulate(
     scene.validate()?;
     params.validate()?;
     params.validate_scene(scene)?;
-    if scene.start_angle_deg > 90.0 {
+    if scene.start_angle_deg > crate::models::MAX_START_ANGLE_DEG {
         return Ok(lifted_at_start(scene, params));
     }
     let mut out = simulate_checked(scene, params, series_dt_s);

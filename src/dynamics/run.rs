@@ -9,6 +9,7 @@ use super::system::System;
 use super::{
     CrossCheck, Drive, DynamicsParams, DynamicsSolution, MAX_STEP_DEG, Method, WEDGE_MARGIN,
 };
+use crate::dynamics::MM_PER_M;
 use crate::scene::{JamStatus, SceneParams};
 
 /// One run at the given tolerances, without the verification run. Parameters must be valid.
@@ -36,7 +37,7 @@ pub(super) fn run_once(
         v_stiction: params.friction.stiction_velocity_mm_s,
         palm_length: scene.palm_length_mm,
         after_jam: params.series.after_jam_s,
-        ground_decel: scene.mu_ground * scene.gravity_m_s2 * 1000.0,
+        ground_decel: scene.mu_ground * scene.gravity_m_s2 * MM_PER_M,
         series_dt: series_dt_s.filter(|dt| *dt > 0.0 && dt.is_finite()),
         rest_speed: (params.drive.mode == Drive::Force)
             .then(|| rest_speed_mm_s(params.friction.friction_velocity_mm_s)),
@@ -138,7 +139,7 @@ fn conclude(
     }
     // A disc reaching the wedge at the palm's speed v_geo coasts on, braked by the ground, for
     // up to v_geo^2 / (2 mu_g g): 0.05 mm at mu = 0.4, 36 mm at mu = 0.1 (omega = 30 deg/s).
-    let decel = scene.mu_ground * scene.gravity_m_s2 * 1000.0;
+    let decel = scene.mu_ground * scene.gravity_m_s2 * MM_PER_M;
     let coast = if decel > 0.0 {
         sys.geometric_speed(wedge).powi(2) / (2.0 * decel)
     } else {

@@ -36,6 +36,7 @@
 use super::contact::{FrictionLaw, ImpactLaw, step};
 use super::integrators::OdeSystem;
 use super::params::{Drive, DynamicsParams};
+use crate::dynamics::MM_PER_M;
 use crate::scene::SceneParams;
 
 /// The system in the units of the state; built once per simulation.
@@ -244,8 +245,7 @@ impl System {
         let mut g_fa = scale(-mu_a * r_n.signum(), &g_rn);
         g_fa[2] -= dmu_a * r_n.abs();
 
-        // 1000: N/kg = m/s^2 = 1000 mm/s^2.
-        let k = 1000.0 / self.mass;
+        let k = MM_PER_M / self.mass;
         let accel = k * (p_x + f_a);
         if let Some(j) = jac {
             j[..3].copy_from_slice(&g_td);
@@ -638,7 +638,7 @@ mod tests {
             f.ground_normal,
             g.r_n_n
         );
-        let p_x = f.accel * scene.mass_kg / 1000.0 - f.ground_friction;
+        let p_x = f.accel * scene.mass_kg / MM_PER_M - f.ground_friction;
         assert!(
             (p_x - g.r_t_n).abs() < 1e-9 * g.r_t_n.abs(),
             "{p_x} vs {}",

@@ -171,7 +171,7 @@ fn answer_watched(py: Python<'_>, spec: &ModelSpec, pushes: &Pushes, out: Answer
                     Err(mpsc::RecvTimeoutError::Timeout) => {}
                     Err(mpsc::RecvTimeoutError::Disconnected) => {
                         return (
-                            Err(crate::error::Error::Unsupported(
+                            Err(crate::error::Error::Defect(
                                 "the map's thread ended without an answer".into(),
                             )),
                             interrupt,

@@ -87,22 +87,21 @@ fn every_documented_default_is_the_defaults_value() {
     }
 }
 
-/// The README's parameter table and charts/README.md's list of `[scene]` keys are the
-/// declarations': `jamchart settings` prints the reference, and the README holds it verbatim.
-/// When this fails, paste `jamchart settings` into README.md's "Every setting" section.
+/// The guide's parameter table and charts/README.md's list of `[scene]` keys are the
+/// declarations': `jamchart settings` prints the reference, and the guide holds it verbatim.
+/// When this fails, paste `jamchart settings` into src/guide.md's "Every setting" section.
 #[test]
-fn the_readme_holds_the_reference_table() {
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
-        .expect("README.md");
+fn the_guide_holds_the_reference_table() {
+    let readme = include_str!("../guide.md");
     let table = reference_table();
     let locator = reference_rows(|s| s == "locator");
     assert!(
         readme.contains(&locator),
-        "README.md's V-locator settings table is not `jamchart settings`' second table:\n{locator}"
+        "src/guide.md's V-locator settings table is not `jamchart settings`' second table:\n{locator}"
     );
     assert!(
         readme.contains(&table),
-        "README.md's settings table is not `jamchart settings`' output:\n{table}"
+        "src/guide.md's settings table is not `jamchart settings`' output:\n{table}"
     );
 }
 

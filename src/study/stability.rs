@@ -69,7 +69,7 @@ pub const STATICS_ALLOWANCE_REL: f64 = 1e-4;
 /// Allowance of a simulated jam against its reference beyond the contact's give, relative: the
 /// regularised friction's floor. Its stiction band lets a held disc creep (module docs of
 /// `dynamics::jam`: 0.03 mm at the defaults) and the speed-ratio reading stops it short of
-/// the rigid lock; the paper's own Adams answer is 2.3 % above r / mu (ERRATA), so a tighter
+/// the rigid lock; the paper's own Adams answer is 2.3 % above r / mu (the crate docs' corrections to the paper), so a tighter
 /// allowance would call the paper's reference simulation wrong. Inertia is allowed apart,
 /// for the force drive only (`allowance_mm`).
 pub const SIM_ALLOWANCE_REL: f64 = 0.03;

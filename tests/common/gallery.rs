@@ -1,7 +1,6 @@
 //! The gallery's browser tests' shared parts (`#[macro_use] #[path = "common/gallery.rs"]
 //! mod gallery;`, after `browser` and `cli_util`): a check run in both browsers, a gallery
 //! rendered into a temporary folder, the pinned read-offs of a dumped page.
-#![allow(dead_code)] // each test crate uses its own subset
 
 use std::path::{Path, PathBuf};
 

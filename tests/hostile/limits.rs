@@ -2,55 +2,11 @@
 //! limits, repeated flags, validation before computation, empty scene folders, charts whose
 //! model failed, and a series that ends before the time asked for.
 
-use std::path::Path;
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 use crate::common::cli as cli_util;
-use cli_util::{jamchart, json, repo, stderr};
-
-/// Runs `jamchart ARGS` in `dir` under a 4 GiB address-space cap (`ulimit -v`).
-fn jamchart_capped(dir: &Path, args: &[&str]) -> Output {
-    jamchart_under(dir, 4 << 20, args)
-}
-
-/// Runs `jamchart ARGS` in `dir` under an address-space cap of `kib` KiB (`ulimit -v`).
-fn jamchart_under(dir: &Path, kib: u64, args: &[&str]) -> Output {
-    Command::new("sh")
-        .arg("-c")
-        .arg(format!("ulimit -v {kib} && exec \"$0\" \"$@\""))
-        .arg(env!("CARGO_BIN_EXE_jamchart"))
-        .args(args)
-        .current_dir(dir)
-        .env_remove("RAYON_NUM_THREADS")
-        .output()
-        .unwrap()
-}
-
-/// A scene file `dir/scenes/NAME.toml` on the paper's parameters.
-fn scene(dir: &Path, name: &str, body: &str) {
-    let sc = dir.join("scenes");
-    std::fs::create_dir_all(&sc).unwrap();
-    let base = repo().join("config/paper.toml");
-    let text = format!("title = \"t\"\nbase = \"{}\"\n{body}", base.display());
-    std::fs::write(sc.join(format!("{name}.toml")), text).unwrap();
-}
-
-/// The `[chart]` of a jam map of `n` x `n` cells (regions and boundary).
-fn jam_map(n: usize) -> String {
-    format!(
-        "[chart]\nkind = \"jam_map\"\nx_axis = {{ param = \"mu\", min = 0.1, max = 0.5, \
-         count = {n} }}\ny_axis = {{ param = \"theta_deg\", min = 10.0, max = 70.0, \
-         count = {n} }}\nlayers = [\"regions\", \"boundary\"]\n"
-    )
-}
-
-fn render(dir: &Path, name: &str) -> Output {
-    jamchart_capped(
-        dir,
-        &["render", name, "--scenes-dir", "scenes", "--out", "o"],
-    )
-}
+use cli_util::{jam_map, jamchart, jamchart_capped, jamchart_under, json, render, scene, stderr};
 
 /// Regression ("scene limits that pass validation exhaust memory"): a jam map at
 /// 8192 x 8192 (the old 2^26-cell limit) took 10 GB and a sweep of 16777216 points 3.7 GB;
@@ -353,70 +309,5 @@ fn a_series_says_where_and_why_it_stopped() {
     assert!(
         r["series_end"].as_str().unwrap().contains("palm closed"),
         "{r}"
-    );
-}
-
-/// Peak resident memory in bytes of `jamchart ARGS` run in `dir`, read from the kernel's
-/// accounting of that one child (wait4), so tests running beside it do not count.
-#[allow(clippy::zombie_processes)] // reaped by wait4, which std's Child does not see
-fn peak_rss_bytes(dir: &Path, args: &[&str]) -> u64 {
-    let child = Command::new(env!("CARGO_BIN_EXE_jamchart"))
-        .args(args)
-        .current_dir(dir)
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
-    let mut status = 0;
-    // SAFETY: wait4 reaps our own child and writes one rusage through a valid pointer; the
-    // Child is not waited on again.
-    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
-    let pid = unsafe { libc::wait4(child.id() as i32, &mut status, 0, &mut usage) };
-    assert_eq!(pid, child.id() as i32);
-    assert!(libc::WIFEXITED(status) && libc::WEXITSTATUS(status) == 0);
-    // ru_maxrss is in KiB on Linux.
-    usage.ru_maxrss as u64 * 1024
-}
-
-/// Memory estimates lie within 2x of what is measured: a jam map's estimate per cell,
-/// as the refusal of a map too large states it, lies between the measured cost per cell and
-/// twice it. Measured as the difference of the peaks at 500 x 500 and 1000 x 1000 cells (the
-/// process's fixed part cancels); about 33 B a cell since the cells CSV is streamed to its
-/// file (it was 59 B while the CSV was built in memory, against an estimate of 75 B).
-#[test]
-fn jam_map_memory_estimate_is_within_2x_of_the_measured_peak() {
-    let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
-    let peak = |n: usize| {
-        let name = format!("map{n}");
-        scene(d, &name, &jam_map(n));
-        let args = [
-            "render",
-            &name,
-            "--scenes-dir",
-            "scenes",
-            "--out",
-            "o",
-            "-q",
-        ];
-        peak_rss_bytes(d, &args)
-    };
-    let (small, large) = (peak(500), peak(1000));
-    let measured = (large as f64 - small as f64) / (1000.0 * 1000.0 - 500.0 * 500.0);
-    // The estimate as the refusal states it: "the memory of 67108864 cells of the jam map
-    // would take about 2.6 GiB".
-    scene(d, "huge", &jam_map(8192));
-    let out = render(d, "huge");
-    let err = stderr(&out);
-    let gib: f64 = err
-        .split("would take about ")
-        .nth(1)
-        .and_then(|r| r.split(" GiB").next())
-        .and_then(|v| v.parse().ok())
-        .unwrap_or_else(|| panic!("no estimate in GiB: {err}"));
-    let estimate = gib * (1u64 << 30) as f64 / (8192.0 * 8192.0);
-    assert!(
-        measured <= estimate * 1.05 && estimate <= 2.0 * measured,
-        "estimate {estimate:.1} B/cell, measured {measured:.1} B/cell ({small} -> {large} B)"
     );
 }

@@ -17,6 +17,7 @@
 //! When no choice is consistent the motion-driven palm cannot turn without entering the disc:
 //! a lock-up.
 
+use crate::dynamics::MM_PER_M;
 use crate::dynamics::{DiscMotion, Drive, DynamicsParams};
 use crate::scene::SceneParams;
 
@@ -320,7 +321,7 @@ impl Stepper {
         Stepper {
             radius: r,
             offset: scene.palm_offset_mm,
-            gravity: scene.gravity_m_s2 * 1000.0,
+            gravity: scene.gravity_m_s2 * MM_PER_M,
             inv_mass: [
                 1.0 / m,
                 1.0 / m,
@@ -338,7 +339,7 @@ impl Stepper {
             // N_max in kg mm/s^2 (1 N = 1000 kg mm/s^2), as an impulse over one step.
             push_limit: match params.drive.mode {
                 Drive::Motion => f64::INFINITY,
-                Drive::Force => scene.force_n * scene.alpha_palm().cos() * 1000.0 * dt,
+                Drive::Force => scene.force_n * scene.alpha_palm().cos() * MM_PER_M * dt,
             },
             dt,
         }
