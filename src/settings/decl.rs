@@ -334,14 +334,40 @@ pub fn parse_count(s: &str) -> std::result::Result<u64, String> {
 /// The words `inf`, `infinity` and `nan` are passed on: each setting's check says whether it
 /// takes them.
 pub fn parse_f64(s: &str) -> std::result::Result<f64, String> {
-    let v: f64 = s
-        .trim()
-        .parse()
-        .map_err(|_| format!("{} is not a number", crate::error::cut(s)))?;
+    let v: f64 = s.trim().parse().map_err(|_| {
+        format!(
+            "{} is not a number{}",
+            crate::error::cut(s),
+            not_a_number_hint(s)
+        )
+    })?;
     match float_range_problem(s.trim(), v) {
         Some(problem) => Err(format!("{} {problem}", crate::error::cut(s))),
         None => Ok(v),
     }
+}
+
+/// What a number that does not parse may have meant: a range written with a dash (`0.12-0.3`:
+/// ranges are LOW:HIGH) or a unit after the number (`40N`: each setting's unit is fixed by its
+/// name and flag). Empty when neither.
+fn not_a_number_hint(s: &str) -> String {
+    let t = s.trim();
+    let number_end = t
+        .find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-' || c == '+' || c == 'e'))
+        .unwrap_or(t.len());
+    let (number, rest) = t.split_at(number_end);
+    if let Some((lo, hi)) = t.split_once('-').filter(|(lo, _)| !lo.is_empty())
+        && lo.parse::<f64>().is_ok()
+        && hi.parse::<f64>().is_ok()
+    {
+        return format!(" (a range is written LOW:HIGH: {lo}:{hi})");
+    }
+    if !rest.is_empty() && number.parse::<f64>().is_ok() && rest.chars().all(char::is_alphabetic) {
+        return format!(
+            " (the unit is fixed by the setting's name, as --help says: write {number}, not {t})"
+        );
+    }
+    String::new()
 }
 
 /// What is wrong with a number written as `raw` that parsed to `v`: None if it is fine.

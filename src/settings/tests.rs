@@ -165,3 +165,19 @@ fn a_declared_scene_parameter_is_a_flag_a_key_an_axis_and_checked() {
         "{msg}"
     );
 }
+
+/// `--mu 0.12-0.3` and `--force 40N` said only "is not a number": they say what was meant.
+#[test]
+fn a_number_that_does_not_parse_says_what_was_probably_meant() {
+    use crate::settings::decl::parse_f64;
+    let range = parse_f64("0.12-0.3").unwrap_err();
+    assert!(
+        range.contains("a range is written LOW:HIGH: 0.12:0.3"),
+        "{range}"
+    );
+    let unit = parse_f64("40N").unwrap_err();
+    assert!(unit.contains("write 40, not 40N"), "{unit}");
+    assert_eq!(parse_f64("abc").unwrap_err(), "abc is not a number");
+    assert_eq!(parse_f64("-0.5"), Ok(-0.5));
+    assert_eq!(parse_f64("1e-3"), Ok(1e-3));
+}
