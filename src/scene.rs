@@ -170,18 +170,29 @@ pub(crate) fn friction_warnings(
     family: impl Iterator<Item = &'static Decl> + Clone,
     frictions: &[(&str, f64)],
 ) -> Vec<String> {
-    frictions
-        .iter()
-        .filter(|(_, mu)| *mu > 2.0)
-        .map(|(key, mu)| {
-            likely_mistake(
-                family.clone(),
-                key,
-                *mu,
-                "is above 2, unusual for a friction coefficient; is it a percentage?",
-            )
-        })
-        .collect()
+    // Equal frictions (set together by --mu) are one warning, not one per contact.
+    let mut out: Vec<String> = Vec::new();
+    for (k, (key, mu)) in frictions.iter().enumerate() {
+        if *mu <= 2.0 || frictions[..k].iter().any(|(_, m)| m == mu) {
+            continue;
+        }
+        let why = "is above 2, unusual for a friction coefficient; is it a percentage?";
+        let same: Vec<&str> = frictions[k + 1..]
+            .iter()
+            .filter(|(_, m)| m == mu)
+            .map(|(other, _)| *other)
+            .collect();
+        out.push(match same.is_empty() {
+            true => likely_mistake(family.clone(), key, *mu, why),
+            false => format!(
+                "{key} and {} are both {}, above 2, unusual for a friction coefficient; is it a \
+                 percentage?",
+                same.join(" and "),
+                crate::numbers::Num(*mu)
+            ),
+        });
+    }
+    out
 }
 
 /// A warning that `key` = `value` (a setting of `family`) looks like a unit mistake: "mu_palm

@@ -571,3 +571,24 @@ fn the_table_footer_says_the_papers_theta_is_truncated() {
     assert!(md.contains("of that truncated theta"), "{md}");
     assert!(!md.contains("rounded theta"), "{md}");
 }
+
+/// A disc that starts past a short palm read "the jam point lies beyond the palm's end, or
+/// the disc starts past it": it is told which, with the numbers.
+#[test]
+fn a_disc_past_a_short_palm_is_told_where_the_palm_would_touch_it() {
+    let o = jamchart(repo(), &["solve", "--palm-length", "8"]);
+    let out = stdout(&o);
+    assert!(
+        out.contains(
+            "the disc starts past the palm's end: the palm would touch it 10.000 mm from the \
+             hinge at the start angle 90 deg, and the palm is 8 mm long"
+        ),
+        "{out}"
+    );
+    let o = jamchart(repo(), &["solve", "--palm-length", "20"]);
+    assert!(
+        stdout(&o).contains("the jam lies past the palm's end (20 mm)"),
+        "{}",
+        stdout(&o)
+    );
+}

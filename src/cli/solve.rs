@@ -289,12 +289,25 @@ fn render_text(config: &Config, answers: &[Answer], series: Option<&std::path::P
                 );
             }
             (JamStatus::BeyondReach, ..) => {
-                let _ = writeln!(
-                    s,
-                    "  the jam point lies beyond the palm's end ({} mm), or the disc starts past \
-                     it: the palm loses the disc first",
-                    Num(p.palm_length_mm)
-                );
+                let start = p.start_angle_deg.to_radians();
+                let touch_mm = p.contact_distance_mm(start);
+                let _ = match touch_mm > p.palm_length_mm {
+                    true => writeln!(
+                        s,
+                        "  the disc starts past the palm's end: the palm would touch it {:.3} mm \
+                         from the hinge at the start angle {} deg, and the palm is {} mm long \
+                         (--palm-length)",
+                        Num(touch_mm),
+                        Num(p.start_angle_deg),
+                        Num(p.palm_length_mm)
+                    ),
+                    false => writeln!(
+                        s,
+                        "  the jam point lies beyond the palm's end ({} mm): the palm loses the \
+                         disc first",
+                        Num(p.palm_length_mm)
+                    ),
+                };
             }
             _ => {}
         }

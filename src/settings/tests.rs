@@ -181,3 +181,17 @@ fn a_number_that_does_not_parse_says_what_was_probably_meant() {
     assert_eq!(parse_f64("-0.5"), Ok(-0.5));
     assert_eq!(parse_f64("1e-3"), Ok(1e-3));
 }
+
+/// `--mu 2.5` warned twice, once per contact: equal frictions are one warning.
+#[test]
+fn equal_frictions_above_two_warn_once() {
+    let p = crate::scene::SceneParams::default().with_mu(2.5);
+    let w = p.unit_warnings();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].starts_with("mu_ground and mu_palm are both 2.5"),
+        "{w:?}"
+    );
+    let p = crate::scene::SceneParams { mu_palm: 3.0, ..p };
+    assert_eq!(p.unit_warnings().len(), 2);
+}
