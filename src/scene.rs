@@ -211,6 +211,9 @@ fn likely_mistake(
     format!("{key}{flag} = {} {why}", crate::numbers::Num(value))
 }
 
+/// Largest start angle any model represents, in deg: above it the palm's push points upwards.
+pub(crate) const MAX_START_ANGLE_DEG: f64 = 90.0;
+
 pub(crate) fn finite_positive(key: &str, v: f64, reason: &str) -> Result<()> {
     if v.is_finite() && v > 0.0 {
         Ok(())

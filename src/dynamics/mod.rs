@@ -212,7 +212,7 @@ pub fn simulate(
     scene.validate()?;
     params.validate()?;
     params.validate_scene(scene)?;
-    if scene.start_angle_deg > crate::models::MAX_START_ANGLE_DEG {
+    if scene.start_angle_deg > crate::scene::MAX_START_ANGLE_DEG {
         return Ok(lifted_at_start(scene, params));
     }
     let mut out = simulate_checked(scene, params, series_dt_s);

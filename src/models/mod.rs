@@ -189,8 +189,7 @@ pub enum OutsideModel {
     },
 }
 
-/// Largest start angle any model represents, in deg: above it the palm's push points upwards.
-pub(crate) const MAX_START_ANGLE_DEG: f64 = 90.0;
+pub(crate) use crate::scene::MAX_START_ANGLE_DEG;
 
 impl std::fmt::Display for OutsideModel {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
