@@ -497,7 +497,7 @@ fn likely_unit_mistakes_are_answered_with_a_warning() {
     assert_eq!(o.status.code(), Some(0));
     let err = stderr(&o);
     for needle in [
-        "warning: mu_ground (--mu-ground or --mu) = 40 is above 2",
+        "warning: mu_ground and mu_palm are both 40, above 2",
         "warning: radius_mm (--radius) = 0.0125 mm is under 0.5 mm",
         "warning: start_angle_deg (--start-angle) = 1.57 deg is under 3 deg",
     ] {

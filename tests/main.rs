@@ -19,6 +19,7 @@ mod cli_reports;
 mod cli_sweep;
 mod cli_uncertain;
 mod cli_vlocator;
+mod data_golden;
 mod dynamics_nonsmooth;
 mod dynamics_physics;
 mod dynamics_props;
