@@ -21,7 +21,7 @@ fn the_python_package_passes_its_tests() {
             "python3 is missing, and CI=true needs the Python package tested: install \
              python3 with its venv module"
         );
-        eprintln!("\n*** skipped: no python3 (the Python package is not tested) ***\n");
+        crate::common::say_skipped("no python3 (the Python package is not tested)");
         return;
     }
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));

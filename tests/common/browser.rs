@@ -71,7 +71,7 @@ pub fn find(kind: Kind) -> Option<Browser> {
             std::env::var("CI").as_deref() != Ok("true"),
             "CI=true and {reason}: the browser test must run in CI"
         );
-        eprintln!("skipped: {reason}");
+        super::say_skipped(&reason);
     }
     found.map(|path| Browser { kind, path })
 }
