@@ -462,6 +462,81 @@ fn pictures(n: usize) -> String {
     }
 }
 
+/// What changed between a data file as it was (`before`) and as rendered now, for a failed
+/// check: the first fields of a JSON file whose values moved (old -> new), or the first
+/// differing row of a CSV file and how many rows differ. None when the bytes are the same.
+fn data_change(before: &[u8], now: &[u8]) -> Option<String> {
+    if before == now {
+        return None;
+    }
+    if let (Ok(a), Ok(b)) = (
+        serde_json::from_slice::<serde_json::Value>(before),
+        serde_json::from_slice::<serde_json::Value>(now),
+    ) {
+        let mut moved = Vec::new();
+        json_changes("", &a, &b, &mut moved);
+        let n = moved.len();
+        moved.truncate(3);
+        return Some(format!(
+            "the data changed too ({n} field{}): {}{}",
+            if n == 1 { "" } else { "s" },
+            moved.join(", "),
+            if n > 3 { ", ..." } else { "" }
+        ));
+    }
+    let (a, b) = (
+        String::from_utf8_lossy(before),
+        String::from_utf8_lossy(now),
+    );
+    let (a, b): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
+    let differing = (0..a.len().max(b.len()))
+        .filter(|&i| a.get(i) != b.get(i))
+        .collect::<Vec<_>>();
+    let first = *differing.first()?;
+    Some(format!(
+        "the data changed too ({} of {} rows; first at line {}: {} -> {})",
+        differing.len(),
+        b.len(),
+        first + 1,
+        crate::error::cut(a.get(first).unwrap_or(&"(none)")),
+        crate::error::cut(b.get(first).unwrap_or(&"(none)"))
+    ))
+}
+
+/// The leaf fields of `a` and `b` (under the path `at`) that differ, as `path: old -> new`.
+fn json_changes(at: &str, a: &serde_json::Value, b: &serde_json::Value, out: &mut Vec<String>) {
+    use serde_json::Value;
+    match (a, b) {
+        (Value::Object(x), Value::Object(y)) => {
+            for (k, v) in x {
+                json_changes(
+                    &format!("{at}/{k}"),
+                    v,
+                    y.get(k).unwrap_or(&Value::Null),
+                    out,
+                );
+            }
+            for (k, v) in y.iter().filter(|(k, _)| !x.contains_key(*k)) {
+                json_changes(&format!("{at}/{k}"), &Value::Null, v, out);
+            }
+        }
+        (Value::Array(x), Value::Array(y)) if x.len() == y.len() => {
+            for (i, (v, w)) in x.iter().zip(y).enumerate() {
+                json_changes(&format!("{at}[{i}]"), v, w, out);
+            }
+        }
+        _ if a == b => {}
+        (Value::Array(x), Value::Array(y)) => {
+            out.push(format!("{at}: {} items -> {}", x.len(), y.len()))
+        }
+        _ => out.push(format!(
+            "{at}: {} -> {}",
+            crate::error::cut(&a.to_string()),
+            crate::error::cut(&b.to_string())
+        )),
+    }
+}
+
 /// `render --check`: the pictures rendered now against the blessed manifest.
 fn check(manifest_path: &Path, blessed: &manifest::Hashes, rendered: &[Rendered]) -> Result<Done> {
     let now = manifest::hashes(rendered);
@@ -496,10 +571,25 @@ fn check(manifest_path: &Path, blessed: &manifest::Hashes, rendered: &[Rendered]
     // folder. A fresh private folder: a predictable name in the shared temporary directory was
     // reused as found, and a link planted there redirected the writes. It is removed if the
     // writing fails, and kept for the person reading the report otherwise.
+    let folder = manifest_path.parent().unwrap_or(Path::new("."));
+    for r in rendered {
+        let old = folder.join(format!("{}.{}", r.name, r.data.extension));
+        if let Some(said) = std::fs::read(&old)
+            .ok()
+            .and_then(|before| data_change(&before, &r.data.bytes))
+        {
+            let _ = writeln!(text, "{}.{}: {said}", r.name, r.data.extension);
+        }
+    }
     let dir = crate::atomic::PrivateDir::new("jamchart-check-")?;
     write_rendered(dir.path(), rendered, &[])?;
     let dir = dir.keep();
     let _ = writeln!(text, "the new renders are in {}", dir.display());
+    let _ = writeln!(
+        text,
+        "remove that folder when done; if the change is meant, accept it: the same command \
+         with --bless instead of --check"
+    );
     let names: Vec<&str> = diffs.iter().map(manifest::Difference::file).collect();
     Ok(Done::Failed {
         text,
@@ -551,4 +641,26 @@ pub fn list(a: &ScenesArgs) -> Result<String> {
         );
     }
     Ok(text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::data_change;
+
+    /// A failed `--check` said only which pictures changed: it now says how the data moved.
+    #[test]
+    fn a_failed_check_says_how_the_data_changed() {
+        let before = br#"{"x_jam_mm": 24.35, "rows": [1, 2], "title": "t"}"#;
+        let now = br#"{"x_jam_mm": 26.1, "rows": [1, 2, 3], "title": "t"}"#;
+        assert_eq!(
+            data_change(before, now).unwrap(),
+            "the data changed too (2 fields): /x_jam_mm: 24.35 -> 26.1, /rows: 2 items -> 3"
+        );
+        let said = data_change(b"mu,x\n0.1,2\n0.2,3\n", b"mu,x\n0.1,2\n0.2,4\n").unwrap();
+        assert_eq!(
+            said,
+            "the data changed too (1 of 3 rows; first at line 3: 0.2,3 -> 0.2,4)"
+        );
+        assert_eq!(data_change(b"same", b"same"), None);
+    }
 }
