@@ -200,7 +200,6 @@ mod tests {
         assert_eq!(human_bytes(3 * (1 << 29)), "1.5 GiB");
     }
 
-
     /// Regression (polish, item 1): `solve --mu 1e-300` echoed mu with 300 zeros, its
     /// `x_rigid` line 1e300 with 301 digits, and `solve --mu 0.16:0.3` the nominal mu as
     /// 0.22999999999999998; echoed numbers now keep 12 digits and an exponent at the extremes.

@@ -86,6 +86,21 @@ pub(super) fn attach(scene: &mut Scene, taken: &Taken) -> Result<()> {
             spec.band = band(spec.x_axis.param).map_err(as_written)?;
             Ok(())
         }
+        // Its curve is the distribution's answer: a range has none.
+        ChartSpec::JamProbability(spec) => {
+            spec.inputs = taken.set.clone();
+            spec.refuse_ranges().map_err(|e| match e {
+                Error::InvalidValue { key, value, reason } => {
+                    let name = key.strip_prefix("scene.").unwrap_or(&key);
+                    let key = match taken.from_set.contains(&name) {
+                        true => format!("--set {name}"),
+                        false => key.clone(),
+                    };
+                    Error::InvalidValue { key, value, reason }
+                }
+                e => e,
+            })
+        }
         chart => {
             let flag = crate::settings::flag_for(first.name)
                 .and_then(|f| f.split(" or ").next().map(str::to_string))
