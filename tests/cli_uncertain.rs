@@ -534,3 +534,44 @@ fn the_probability_chart_reads_off_solves_answer() {
         assert!(err.contains(part), "{part} in {err}");
     }
 }
+
+/// The universal chart refused `mu=0.12:0.3`; it draws the range's box and reads off its two
+/// ends, each the closed form at the box's corner as `solve` gives it: the earliest jam at
+/// mu = 0.3 (x_jam = 39.629 mm) and the latest at mu = 0.12, past the 80 mm palm's end (x/r =
+/// cot(theta/2) on a long palm, above L/r = 6.4). A range of a friction that is not its x axis
+/// is refused, naming it.
+#[test]
+fn the_universal_chart_reads_off_a_ranges_ends() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut args = vec!["render", "universal", "--out", "o", "--format", "svg"];
+    for s in [
+        "mu=0.12:0.3",
+        "radius_mm=12.5",
+        "mass_kg=0.4",
+        "force_n=40",
+        "palm_length_mm=80",
+    ] {
+        args.extend(["--set", s]);
+    }
+    let o = jamchart(dir.path(), &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let data = std::fs::read_to_string(dir.path().join("o/universal.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&data).unwrap();
+    let r = &v["range"];
+    assert_eq!(r["given"], "mu = 0.12:0.3");
+    assert_eq!(r["earliest"]["mu"], 0.3);
+    assert_eq!(r["earliest"]["status"], "jams");
+    let x = r["earliest"]["x_jam_mm"].as_f64().unwrap();
+    assert!((x - 39.629).abs() < 1e-3, "{x}");
+    assert_eq!(r["latest"]["mu"], 0.12);
+    assert_eq!(r["latest"]["status"], "beyond_reach");
+    let t = r["latest"]["theta_jam_on_a_long_palm_deg"]
+        .as_f64()
+        .unwrap();
+    let x_over_r = 1.0 / (0.5 * t.to_radians()).tan();
+    assert!(x_over_r > 80.0 / 12.5, "{x_over_r}");
+    let bad = [&args[..], &["--set", "mu_ground=0.1:0.2"]].concat();
+    let o = jamchart(dir.path(), &bad);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("along its axes"), "{}", stderr(&o));
+}
