@@ -1,4 +1,4 @@
-//! Speed of a full simulation to the jam at 1e-4 relative error in x_jam (issue 4's goal:
+//! Speed of a full simulation to the jam at 1e-4 relative error in x_jam (goal:
 //! < 5 ms at the defaults, < 50 ms with a contact that penetrates 1 um at 200 N), on one core.
 //!
 //! For each method the loosest tolerance of a ladder whose x_jam is within 1e-4 of a reference
@@ -172,7 +172,7 @@ fn main() {
     }
 }
 
-/// The nonsmooth method (issue 10's goal: well under 1 ms per run): the median of 21 runs at its
+/// The nonsmooth method (goal: well under 1 ms per run): the median of 21 runs at its
 /// default step for several frictions and both drives, without and with the check at twice the
 /// step, and how far x_jam lies from the rigid limit (motion: r/mu; force: the closed form, which
 /// the disc's inertia passes at 30 deg/s). Motion drive, mu 0.15 / 0.3 / 0.45, medians of three

@@ -1,7 +1,7 @@
 //! Grid points per second of the statics margin over (mu, theta), the fig3 case.
 //!
 //! `cargo bench --bench grid_margin`; prints the median of 9 runs for the default rayon pool
-//! (all cores) and for one thread. Goal (issue 5): >= 100 million points/s on 2 cores.
+//! (all cores) and for one thread. Goal: >= 100 million points/s on 2 cores.
 
 mod common;
 

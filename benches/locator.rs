@@ -170,7 +170,7 @@ fn main() {
             per_cell * 4e4,
             per_cell * 4e4 / single,
         );
-        let path = match locator::symmetric::applies(&g.base) {
+        let path = match locator::closed_form_applies(&g.base) {
             true => "closed form",
             false => "exact path (closed form does not apply)",
         };

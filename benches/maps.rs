@@ -7,7 +7,7 @@
 //! cells per axis in the line) and the full map's time is extrapolated from the time per cell,
 //! as `accuracy --map` does; the line says so. The min-norm map by columns is timed whole
 //! (400 x 400), cell by cell at 40 x 40 for comparison. Each line also counts the cells that
-//! jam and those without a trusted answer. Median of 3 runs. Goals (issue 21): min-norm
+//! jam and those without a trusted answer. Median of 3 runs. Goals: min-norm
 //! 400 x 400 and the nonsmooth 100 x 100 (either drive) under 2 s on 2 cores; the regularised
 //! simulation's cost printed beside them.
 //!

@@ -1,7 +1,7 @@
 //! Min-norm speed: programs solved per second on 1 and 2 threads, Table 1 by min-norm, and the
 //! exact path's agreement with clarabel on random planar problems.
 //!
-//! Run: `cargo bench --bench minnorm`. Prints medians of 7 runs. Goals (issue 3): >= 20,000
+//! Run: `cargo bench --bench minnorm`. Prints medians of 7 runs. Goals: >= 20,000
 //! solves/s across both cores; Table 1 in a few ms.
 
 mod common;

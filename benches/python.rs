@@ -1,5 +1,5 @@
 //! The Python package's speed (`cargo bench --bench python`), in the environment the package's
-//! test builds (`cargo test --release --test python_package` first):
+//! test builds (`cargo test --release --test integration python_package` first):
 //!
 //! - 10^6 closed-form answers from a numpy array against numpy's vectorised closed form, and
 //!   one scalar call's time (`benches/baseline/python_package.py`, in one process,
@@ -29,7 +29,7 @@ fn main() {
         .is_ok_and(|o| o.status.success());
     if !installed {
         println!(
-            "no Python package in {}: run cargo test --release --test python_package first",
+            "no Python package in {}: run cargo test --release --test integration python_package first",
             python.display()
         );
         return;

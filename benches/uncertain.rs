@@ -12,6 +12,8 @@
 //! `--mu 0.12:0.3` against `--mu 0.21` as whole processes, interleaved.
 
 mod common;
+#[path = "../tests/common/shaft.rs"]
+mod shaft;
 
 use common::{median, median_cpu_s, median_s, time_process};
 use jamchart::dynamics::{DynamicsParams, IntegratorSettings, Method, Verification};
@@ -31,7 +33,7 @@ fn mu(value: Uncertain) -> UncertainSet {
 }
 
 fn main() {
-    let p = jamchart::uncertain::shaft_25mm();
+    let p = shaft::shaft_25mm();
     let box_mu = mu(Uncertain::Range { lo: 0.12, hi: 0.3 });
     let reps = 10_000;
     let point = median_s(15, || {

@@ -22,7 +22,7 @@ pub use read::{
     array_for_table, cut_quotes, key_line_column, keyed, not_a_table, parse_toml, seq_for_struct,
 };
 
-/// A whole parameter file. Each model's issue adds its own section.
+/// A whole parameter file: the scene and each model's own section.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Config {
@@ -107,24 +107,6 @@ pub fn read_text(path: &Path) -> Result<String> {
     read_regular(path, MAX_INPUT_BYTES, "give a TOML file")
 }
 
-/// What is wrong with a number written as `raw` that parsed to `v`: None if it is fine.
-///
-/// Text that overflows to infinity or underflows to zero is refused, so that a message quotes
-/// what was written (`1e400`), never what it became (`inf`); the words inf and nan pass.
-pub fn float_range_problem(raw: &str, v: f64) -> Option<&'static str> {
-    let lower = raw.to_ascii_lowercase();
-    if v.is_infinite() && !lower.contains("inf") {
-        return Some("is beyond the range of a 64-bit float (the largest is about 1.8e308)");
-    }
-    let mantissa = lower.split('e').next().unwrap_or("");
-    if v == 0.0 && mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b)) {
-        return Some(
-            "is too small for a 64-bit float: it would become 0 (the smallest is about 5e-324)",
-        );
-    }
-    None
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -144,7 +126,7 @@ mod tests {
             .to_string()
     }
 
-    /// Regression (issue 13): `scene = [1, 2]` ran with mu_ground = 1, mu_palm = 2, serde
+    /// Regression: `scene = [1, 2]` ran with mu_ground = 1, mu_palm = 2, serde
     /// filling the struct's fields in order from the array. Any settings table given as an
     /// array is refused, however its elements happen to fit.
     #[test]
@@ -164,7 +146,7 @@ mod tests {
         }
     }
 
-    /// Regression (issue 13): `radius_mm = "ten"` said `invalid type: string "ten", expected
+    /// Regression: `radius_mm = "ten"` said `invalid type: string "ten", expected
     /// f64` without the key, `drive = 3` said only `wanted string or table`.
     #[test]
     fn wrong_types_name_the_key_with_its_section_and_value() {
@@ -194,7 +176,7 @@ mod tests {
         }
     }
 
-    /// Regression (issue 13): a 50 MB value was echoed whole on one stderr line.
+    /// Regression: a 50 MB value was echoed whole on one stderr line.
     #[test]
     fn long_values_are_cut_in_messages() {
         let long = "a".repeat(5_000_000);
@@ -209,7 +191,7 @@ mod tests {
         }
     }
 
-    /// Regression (issue 13): `1e400` was reported as `inf` (and `1e-400` read as 0).
+    /// Regression: `1e400` was reported as `inf` (and `1e-400` read as 0).
     #[test]
     fn numbers_out_of_f64_range_are_quoted_as_written() {
         for (text, written) in [
@@ -234,8 +216,8 @@ mod tests {
         assert!(c.scene.force_n.is_infinite());
     }
 
-    /// `[scene] mu` sets both frictions, as `--mu` and `--set mu` do (issue 18 found it refused
-    /// in a file); a key given as well wins, and a mistake in it is named on its line.
+    /// `[scene] mu` sets both frictions, as `--mu` and `--set mu` do (it was once
+    /// refused in a file); a key given as well wins, and a mistake in it is named on its line.
     #[test]
     fn scene_mu_in_a_file_sets_both_frictions() {
         let c: Config =

@@ -155,7 +155,7 @@ pub struct Design {
 
 /// The palm angle in rad at which the disc sits at `x_mm`: 2 atan(r / x) for h = 0, else by
 /// bisection on (0, 90] deg, where x(theta) falls; None when x_mm is below x(90 deg) = r + h.
-pub fn theta_at_position(p: &SceneParams, x_mm: f64) -> Option<f64> {
+pub(crate) fn theta_at_position(p: &SceneParams, x_mm: f64) -> Option<f64> {
     let right = std::f64::consts::FRAC_PI_2;
     if x_mm < p.disc_position_mm(right) {
         return None;
@@ -329,7 +329,7 @@ mod tests {
     use super::*;
 
     use crate::scene::JamStatus;
-    use crate::uncertain::shaft_25mm as shaft;
+    use crate::uncertain::shaft::shaft_25mm as shaft;
 
     fn with_mu(p: SceneParams, mu: f64, force_n: f64) -> SceneParams {
         SceneParams {
@@ -462,7 +462,7 @@ mod tests {
         }
     }
 
-    /// The two palm lengths against the point answers at the box's corners (the shaft,
+    /// The two palm lengths against the point answers at the box's corners (the 25 mm shaft,
     /// mu 0.12 to 0.3, 80 mm palm): a palm a hair longer than the length that keeps every jam
     /// on it catches the latest corner's jam, a hair shorter loses it; a palm a hair shorter than
     /// the length that ends before every jam loses the earliest corner's jam (every point of

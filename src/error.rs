@@ -134,9 +134,44 @@ pub enum Error {
         path: PathBuf,
     },
 
-    /// A request the tool cannot serve (yet), e.g. a model that is not built.
-    #[error("{0}")]
-    Unsupported(String),
+    /// Flags given together that do not go together (`--series` with a range).
+    #[error("{message}")]
+    Conflict {
+        /// The flag that cannot be served as given.
+        flag: &'static str,
+        /// What goes wrong and what to give instead.
+        message: String,
+    },
+
+    /// One path named for two outputs of one run.
+    #[error("{} is named twice as an output; give each output its own path", path.display())]
+    OutputTwice {
+        /// The path.
+        path: PathBuf,
+    },
+
+    /// The convex solver refused a program it was given (a problem the lowering should have
+    /// caught).
+    #[error("{solver} refused the program: {detail}")]
+    SolverRefused {
+        /// The solver (`clarabel`).
+        solver: &'static str,
+        /// What it said.
+        detail: String,
+    },
+
+    /// A data file could not be encoded.
+    #[error("writing {what}: {detail}")]
+    Encode {
+        /// The format (`CSV`).
+        what: &'static str,
+        /// What the encoder said.
+        detail: String,
+    },
+
+    /// A state the code should never reach: a defect, reported with what was seen.
+    #[error("{0} (a defect: please report it)")]
+    Defect(String),
 }
 
 impl Error {
@@ -240,7 +275,7 @@ mod tests {
         assert!(msg.len() < 150, "{}", msg.len());
     }
 
-    /// Regression (issue 23, class 8): `solve --rtol 1e300` quoted the value as 301 digits (cut
+    /// Regression: `solve --rtol 1e300` quoted the value as 301 digits (cut
     /// to 60), and an axis from 1e-300 quoted 0.000...; long numbers now read in exponent form,
     /// short ones as written.
     #[test]

@@ -58,10 +58,12 @@
 //! comes out (status, theta_jam, x_jam, wall time and the model's own detail). `solve`, the grid
 //! ([`grid`], generic over any [`grid::ParamSet`]), sweeps, charts and the reports all call it.
 //! **To add a model**, write its module and register it in [`models`] (one variant in each of
-//! `ModelKind`, `ModelSpec`, `Detail` and one arm of `solve`); **to add a chart kind**, write its
-//! module under [`charts`] (settings that implement the kind's contract, a chart that draws
-//! itself) and add one line to the list of kinds in `charts/kinds.rs`, the chart kinds' one
-//! registration point; its scene `charts/<name>.toml` is built in by `build.rs`.
+//! `ModelKind`, `ModelSpec`, `Detail` and one arm of `solve`); **to add a chart kind**, write
+//! what it computes in `figures/<kind>.rs` (its settings, and a `Serialize` data type whose
+//! serde form is the data file, computed through the port alone) and how it looks in
+//! `charts/<kind>.rs` (pure drawing of that data, the read-off derived from it), then name the
+//! (settings, data, picture) triple in `charts/kinds.rs`, the kinds' one registration point;
+//! its scene `charts/<name>.toml` is built in by `build.rs`.
 //!
 //! Outcomes are data ([`scene::JamStatus`], with typed reasons in each model's solution);
 //! [`error::Error`] is only for misuse. A push starting above 90 deg is outside every model
@@ -110,6 +112,10 @@
 
 #![warn(missing_docs)]
 
+// The unit tests share fixtures with the integration tests, which name the crate `jamchart`.
+#[cfg(test)]
+extern crate self as jamchart;
+
 #[macro_use]
 mod settings;
 
@@ -121,7 +127,7 @@ mod csv_out;
 pub mod design;
 pub mod dynamics;
 mod error;
-pub mod figures;
+pub(crate) mod figures;
 pub mod grid;
 mod limits;
 pub mod locator;
@@ -137,8 +143,12 @@ pub mod statics;
 mod study;
 pub mod uncertain;
 
+#[doc = include_str!("guide.md")]
+pub mod guide {}
+
+/// The `jamchart` command line (`src/main.rs` calls it): not a library entry.
+#[doc(hidden)]
 pub use cli::main as run_cli;
-pub use config::Config;
 pub use error::{Error, Result};
 pub use models::{ModelKind, ModelSpec, Solution, solve, solve_column};
 pub use scene::{JamStatus, SceneParams, disc_position_mm, palm_angle_at};

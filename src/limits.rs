@@ -37,19 +37,18 @@ pub const MAX_OUTPUT_BYTES: u64 = 1 << 30;
 pub const MAX_LEVELS: usize = 64;
 
 /// Longest chart title in characters: a title is one line across the chart (about 120
-/// characters at the widest picture); a 10 MB title once took 3 GiB to lay out and aborted
-/// (issue 23, class 3).
+/// characters at the widest picture); a 10 MB title once took 3 GiB to lay out and aborted.
 pub const MAX_TITLE_CHARS: usize = 200;
 
 /// Most dotted parts of a `--set` key: the deepest key of any scene has 3
 /// (`dynamics.contact.stiffness_n_per_mm_e`); a key of 10,000 parts once overflowed the stack
-/// while its table was built (issue 23, class 3).
+/// while its table was built.
 pub const MAX_KEY_PARTS: usize = 8;
 
 /// Most worker threads (`RAYON_NUM_THREADS`): more than the hardware threads of the largest
 /// machines (2 x 192 cores, 768 threads) only adds stacks. Without a limit,
 /// `RAYON_NUM_THREADS=100000000` started rayon's own maximum of 65,535 threads and `render fig3`
-/// had not begun after 60 s (issue 23, class 3).
+/// had not begun after 60 s.
 pub const MAX_THREADS: usize = 1024;
 
 /// What one item (grid cell, sweep point, time-series row) costs, for the estimates.
@@ -77,7 +76,7 @@ impl PerItem {
 // Measured with `/usr/bin/time -v` (peak RSS) and the files' sizes, per item as the difference
 // between two sizes of a built-in scene (`render SCENE --set chart.x_axis.count=N --set
 // chart.y_axis.count=N`, N = 400 and 800; fig3 800 and 1600; `sweep mu=0.1:0.5:N`, N = 1e5 and
-// 2e5), then 25 % added (issue 21: estimates within 2x of what is measured):
+// 2e5), then 25 % added (estimates within 2x of what is measured):
 //
 // | item                       | memory B | files B |
 // |----------------------------|----------|---------|
@@ -89,8 +88,8 @@ impl PerItem {
 //
 // A jam map cell was 59 B while its CSV was built in memory; streamed to its file, 33 B; with
 // each cell's region a byte (it was a 16-byte reference to its word), 17 B (800 -> 1600 cells a
-// side: 26.4 -> 57.8 MB peak RSS; 500 -> 1000, as tests/cli_hardening.rs measures: 20-22 B;
-// 3200: see README). The universal chart's status went the same way: 97 -> 82 B (400 -> 800).
+// side: 26.4 -> 57.8 MB peak RSS; 500 -> 1000, as tests/hostile/limits.rs measures: 20-22 B;
+// 3200: see the guide's Limits). The universal chart's status went the same way: 97 -> 82 B (400 -> 800).
 // The other maps' peaks come before their CSV is written (contour maps: 129.0 MB at 800^2
 // either way), so streaming left them as they were.
 //
@@ -287,7 +286,7 @@ pub fn check(key: &str, what: &str, estimate: u64, limit: u64) -> Result<()> {
 /// Half, measured: a run needs about twice its peak resident memory in address space (a
 /// growing buffer is copied into one twice its size, each thread reserves a stack). fig3 at
 /// 1600 x 1600 (peak RSS 158 MB) aborts on allocation under `ulimit -v 262144` and runs under
-/// 393216 (issue 23, class 3: sizes the tool accepted aborted under a 512 MiB limit).
+/// 393216 (sizes the tool accepted aborted under a 512 MiB limit).
 pub fn memory_limit_bytes() -> (u64, &'static str) {
     let soft = |resource| {
         let mut r = libc::rlimit {

@@ -200,7 +200,7 @@ mod tests {
         assert_eq!(human_bytes(3 * (1 << 29)), "1.5 GiB");
     }
 
-    /// Regression (polish, item 1): `solve --mu 1e-300` echoed mu with 300 zeros, its
+    /// Regression: `solve --mu 1e-300` echoed mu with 300 zeros, its
     /// `x_rigid` line 1e300 with 301 digits, and `solve --mu 0.16:0.3` the nominal mu as
     /// 0.22999999999999998; echoed numbers now keep 12 digits and an exponent at the extremes.
     #[test]
@@ -223,7 +223,7 @@ mod tests {
         assert_eq!(fixed(1.1459155902e-298, 3), "1.146e-298");
     }
 
-    /// The CLI's answers printed `{:.3}` of raw f64s (polish, item 3): `x = 0.000 mm` for a
+    /// The CLI's answers printed `{:.3}` of raw f64s: `x = 0.000 mm` for a
     /// disc at 1e-7 mm, 301 digits for 1e300. `Num` with a precision is [`fixed`]: the same
     /// text as `{:.3}` for every ordinary value, an exponent at the extremes.
     #[test]

@@ -7,7 +7,7 @@
 //! x = r cot(theta/2) + h / sin(theta) ([`disc_position_mm`]).
 
 use crate::error::{Error, Result};
-use crate::settings::{Check, Decl, Kind};
+use crate::settings::decl::{Check, Decl, Declared, Kind};
 
 settings! {
     /// Parameters of the palm-and-disc scene.
@@ -133,10 +133,14 @@ impl SceneParams {
     /// its flag): a friction coefficient above 2 (a percentage?), a radius under 0.5 mm (metres?), a start angle under 3 deg
     /// (radians?). The caller prints them as warnings; the answer is still computed.
     pub fn unit_warnings(&self) -> Vec<String> {
-        let mut out =
-            friction_warnings(&[("mu_ground", self.mu_ground), ("mu_palm", self.mu_palm)]);
+        let family = SCENE_ALIASES.iter().chain(Self::DECLS);
+        let mut out = friction_warnings(
+            family.clone(),
+            &[("mu_ground", self.mu_ground), ("mu_palm", self.mu_palm)],
+        );
         if self.radius_mm < 0.5 {
             out.push(likely_mistake(
+                family.clone(),
                 "radius_mm",
                 self.radius_mm,
                 "mm is under 0.5 mm; the radius is in mm, not metres",
@@ -144,6 +148,7 @@ impl SceneParams {
         }
         if self.start_angle_deg < 3.0 {
             out.push(likely_mistake(
+                family,
                 "start_angle_deg",
                 self.start_angle_deg,
                 "deg is under 3 deg; the angle is in degrees, not radians",
@@ -159,13 +164,18 @@ impl SceneParams {
     }
 }
 
-/// A warning for each friction coefficient above 2 (a percentage?), as (key, value).
-pub(crate) fn friction_warnings(frictions: &[(&str, f64)]) -> Vec<String> {
+/// A warning for each friction coefficient above 2 (a percentage?), as (key, value) of a
+/// setting of `family`.
+pub(crate) fn friction_warnings(
+    family: impl Iterator<Item = &'static Decl> + Clone,
+    frictions: &[(&str, f64)],
+) -> Vec<String> {
     frictions
         .iter()
         .filter(|(_, mu)| *mu > 2.0)
         .map(|(key, mu)| {
             likely_mistake(
+                family.clone(),
                 key,
                 *mu,
                 "is above 2, unusual for a friction coefficient; is it a percentage?",
@@ -174,10 +184,19 @@ pub(crate) fn friction_warnings(frictions: &[(&str, f64)]) -> Vec<String> {
         .collect()
 }
 
-/// A warning that `key` = `value` looks like a unit mistake: "mu_palm (--mu-palm or --mu) =
-/// 40 is above 2, ...".
-pub(crate) fn likely_mistake(key: &str, value: f64, why: &str) -> String {
-    let flag = crate::settings::flag_for(key).map_or(String::new(), |f| format!(" ({f})"));
+/// A warning that `key` = `value` (a setting of `family`) looks like a unit mistake: "mu_palm
+/// (--mu-palm or --mu) = 40 is above 2, ...".
+fn likely_mistake(
+    family: impl Iterator<Item = &'static Decl> + Clone,
+    key: &str,
+    value: f64,
+    why: &str,
+) -> String {
+    let flags = family
+        .clone()
+        .find(|d| d.key == key)
+        .and_then(|d| d.flags(family));
+    let flag = flags.map_or(String::new(), |f| format!(" ({f})"));
     format!("{key}{flag} = {} {why}", crate::numbers::Num(value))
 }
 

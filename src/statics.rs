@@ -282,22 +282,6 @@ pub fn status(p: &SceneParams) -> JamStatus {
     decide(p).status()
 }
 
-/// [`status`], the raw jam angle [`theta_jam_rad`] (rad) and, where the disc jams on or past
-/// the palm, x at that angle (mm): one evaluation, what a corner of a range answer needs.
-pub fn status_and_jam(p: &SceneParams) -> (JamStatus, f64, Option<f64>) {
-    let angles = FrictionAngles::of(p);
-    let d = decide_with(p, &angles);
-    match d {
-        Decision::PastPalm {
-            theta_jam, x_jam, ..
-        }
-        | Decision::Jams { theta_jam, x_jam } => (d.status(), theta_jam, Some(x_jam)),
-        Decision::Bare(_) | Decision::JammedAtStart => {
-            (d.status(), theta_jam_from(p, &angles), None)
-        }
-    }
-}
-
 /// The verdict of the closed form and the numbers it rests on, before [`solve`] adds its extras.
 enum Decision {
     /// A status with no jam angle: beyond the palm from the start, never jams, too weak.
@@ -451,8 +435,8 @@ mod tests {
         }
     }
 
-    /// Regression (issue 18): a jam past the palm's end said `beyond_reach` with no number; the
-    /// user needed `--palm-length 200` to find where it would jam. The shaft of the issue: r =
+    /// Regression: a jam past the palm's end said `beyond_reach` with no number; the
+    /// user needed `--palm-length 200` to find where it would jam. The 25 mm shaft: r =
     /// 12.5 mm, m = 0.4 kg, F = 40 N, mu = 0.12, an 80 mm palm.
     #[test]
     fn a_jam_past_the_palm_says_where_and_what_brings_it_on() {

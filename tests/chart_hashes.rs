@@ -5,7 +5,7 @@
 //! When a chart changes on purpose, look at the new PNGs, then re-bless the manifest:
 //!
 //! ```text
-//! JAMCHART_BLESS=1 cargo test --release --test chart_hashes
+//! JAMCHART_BLESS=1 cargo test --release --test integration chart_hashes
 //! ```
 //!
 //! and set `jamchart::charts::CHART_FORMAT` (src/charts/mod.rs) to the new manifest's hash prefix,
@@ -36,7 +36,7 @@ fn render_all(threads: usize) -> Vec<Rendered> {
                 let r = charts::render(&scene, Formats::Both).expect("scene renders");
                 // `render` checks the paths it plans before computing: they are the ones written.
                 let mut written = vec![r.data.extension];
-                written.extend(r.cells.as_ref().map(|_| charts::Cells::EXTENSION));
+                written.extend(r.cells.as_ref().map(|_| charts::CellsCsv::EXTENSION));
                 assert_eq!(written, scene.chart.data_extensions(), "{n}");
                 r
             })
@@ -104,7 +104,7 @@ fn chart_bytes_match_the_manifest_for_any_thread_count() {
     assert!(
         problems.is_empty(),
         "chart bytes changed:\n  {}\nlook at the PNGs (jamchart render), then re-bless with \
-         JAMCHART_BLESS=1 cargo test --release --test chart_hashes and set CHART_FORMAT in \
+         JAMCHART_BLESS=1 cargo test --release --test integration chart_hashes and set CHART_FORMAT in \
          src/charts/mod.rs to the new manifest's hash prefix",
         problems.join("\n  ")
     );

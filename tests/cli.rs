@@ -2,8 +2,7 @@
 
 use serde_json::Value;
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{SHAFT, jamchart, json, repo, stderr, stdout};
 
 #[test]
@@ -230,7 +229,7 @@ fn solve_all_gives_every_model_with_the_agreed_keys() {
     for key in ["elapsed_s", "iterations", "solves"] {
         assert!(m[key].as_f64().is_some_and(|v| v >= 0.0), "{key}: {m}");
     }
-    // The two models agree to the issue's 1e-5 deg.
+    // The two models agree to 1e-5 deg, as asked of the min-norm model.
     let d = m["theta_jam_deg"].as_f64().unwrap() - r[0]["theta_jam_deg"].as_f64().unwrap();
     assert!(d.abs() < 1e-5, "{d:e} deg");
     let trace = m["trace"].as_array().unwrap();
@@ -453,7 +452,7 @@ fn start_angle_above_90_is_outside_every_model() {
     }
 }
 
-/// Regression (issue 18): `solve` said `beyond_reach` with no number; the user of the shaft job
+/// Regression: `solve` said `beyond_reach` with no number; a user of the 25 mm shaft
 /// (r 12.5 mm, 0.4 kg, 40 N, mu 0.12, 80 mm palm) needed `--palm-length 200` to find 99.3 mm.
 #[test]
 fn beyond_reach_says_where_it_would_jam_and_what_brings_it_on_the_palm() {
@@ -479,7 +478,7 @@ fn beyond_reach_says_where_it_would_jam_and_what_brings_it_on_the_palm() {
     }
 }
 
-/// Regression (issue 18): mu = 40, a radius of 0.0125 (metres?) and a start angle of 1.57
+/// Regression: mu = 40, a radius of 0.0125 (metres?) and a start angle of 1.57
 /// (radians?) were accepted without a word. They are still answered, with a warning each.
 #[test]
 fn likely_unit_mistakes_are_answered_with_a_warning() {

@@ -1,8 +1,7 @@
-//! The conventions of a command-line tool (issue 22): `--version` that traces a chart's bytes,
+//! The conventions of a command-line tool: `--version` that traces a chart's bytes,
 //! help texts that match the tool, completions and a man page.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, repo, stderr, stdout};
 
 /// `--version` printed only `0.1.0`, so a changed chart hash could not be traced to a build:

@@ -1,11 +1,10 @@
-//! `jamchart design` run as a user would: the issue-19 shaft's inverse questions in one command,
+//! `jamchart design` run as a user would: the 25 mm shaft's inverse questions in one command,
 //! checked against the closed form, and bad input.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{SHAFT, jamchart, json, stderr};
 
-/// `design --mu 0.12:0.3 --x-target X --format json` on the issue's shaft.
+/// `design --mu 0.12:0.3 --x-target X --format json` on the 25 mm shaft.
 fn shaft_design(x_target: &'static str) -> Vec<&'static str> {
     let mut args = vec![
         "design",

@@ -3,8 +3,7 @@
 
 use serde_json::Value;
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, stderr, stdout};
 
 #[test]
@@ -192,7 +191,7 @@ fn a_slow_palm_is_advised_to_lower_the_stiction_velocity_not_the_tolerance() {
     assert!((x - 25.0).abs() < 0.02 * 25.0, "{x}");
 }
 
-/// Regression (issue 13): `solve --model all --mass 0` refused the whole command because the
+/// Regression: `solve --model all --mass 0` refused the whole command because the
 /// dynamics need a mass, although the statics and the min-norm model are defined for a
 /// weightless disc. The dynamics now say so in their own result; the others answer.
 #[test]
@@ -220,7 +219,7 @@ fn a_model_that_cannot_run_a_scene_says_so_and_the_others_answer() {
     );
 }
 
-/// Regression (issue 20, item 2): `solve --model all --start-angle 44.10281897270362` listed
+/// Regression: `solve --model all --start-angle 44.10281897270362` listed
 /// the compliant contact's 24.687 mm under "which to design to" as the motion-driven answer,
 /// unflagged, where the palm pushes a rigid disc on to 25.000 mm. The answer is now flagged by
 /// the rigid cross-check, and the block says the figure is untrusted.

@@ -1,8 +1,7 @@
 //! `render --bless` and `render --check` on a user's own scene folder, as a user locks their
-//! charts in CI (issue 22): bless, check passes, one key changed, check fails naming the chart.
+//! charts in CI: bless, check passes, one key changed, check fails naming the chart.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use std::path::Path;
 
 use sha2::Digest;

@@ -1,13 +1,12 @@
 //! Output files of every command (`solve --series`, `render`, `accuracy --out-dir`): never a
-//! special file or a link replaced, all or nothing, no temporary file left behind (issue 13).
+//! special file or a link replaced, all or nothing, no temporary file left behind.
 
 use std::os::unix::fs::FileTypeExt;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, kill_and_wait, repo, stderr};
 
 fn scenes_dir() -> String {
@@ -72,7 +71,7 @@ fn commands(target: &str) -> Vec<Vec<String>> {
     ]
 }
 
-/// Regression (issue 13, "--series replaces a special file"): `mknod X/full c 1 7` then
+/// Regression ("--series replaces a special file"): `mknod X/full c 1 7` then
 /// `solve --series X/full` left a 663 kB regular file in its place; a symlink and a directory
 /// fared no better. Every output path of every command must refuse them and leave them be.
 #[test]
@@ -171,7 +170,7 @@ fn output_streams_are_written_through() {
     );
 }
 
-/// Regression (issue 13, "a failed command leaves a partial set"): render onto a full disk
+/// Regression ("a failed command leaves a partial set"): render onto a full disk
 /// failed on accuracy.svg but left complete .csv files of other scenes; accuracy --out-dir left
 /// .md and .csv when .json failed. Here a directory squats one name of the set: the command
 /// fails and the folder is as it was.
@@ -214,9 +213,9 @@ fn temporaries(o: &Path) -> Vec<String> {
         .collect()
 }
 
-/// Regression (issue 13, "temporary files pile up"): a render killed by SIGTERM left
+/// Regression ("temporary files pile up"): a render killed by SIGTERM left
 /// `.fig3.json.5971.12.tmp` behind. A FIFO nobody reads as one output holds the render with
-/// its other files in temporaries; SIGTERM, SIGINT or SIGHUP (issue 23 class 9) must remove
+/// its other files in temporaries; SIGTERM, SIGINT or SIGHUP must remove
 /// them.
 #[test]
 fn a_killed_render_leaves_no_temporary_file() {

@@ -1,9 +1,8 @@
-//! `--format pdf` (issue 22: "PDF output for print from the same drawing ... if it keeps the
-//! determinism"): the PDF is the SVG's drawing through svg2pdf, its bytes the same on every run
-//! and thread count, its text outlines (no font in the file).
+//! `--format pdf`, for print, from the same drawing and as deterministic as the SVG: the PDF is the
+//! SVG's drawing through svg2pdf, its bytes the same on every run and thread count, its text
+//! outlines (no font in the file).
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 
 use std::path::Path;
 use std::process::Command;

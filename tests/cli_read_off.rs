@@ -1,13 +1,12 @@
-//! `jamchart render --read-off KEY=VALUE` (issue 18): the user's own point on every built-in
+//! `jamchart render --read-off KEY=VALUE`: the user's own point on every built-in
 //! map and sweep, checked against `solve` for the same part.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, json, stderr};
 
 use serde_json::Value;
 
-/// The part of issue 18's universal-chart check: mu 0.27, r 12 mm, F 150 N (m 1 kg).
+/// The example part of the universal chart: mu 0.27, r 12 mm, F 150 N (m 1 kg).
 const PART: [&str; 6] = [
     "--read-off",
     "mu=0.27",
@@ -21,7 +20,7 @@ fn file(dir: &std::path::Path, name: &str) -> String {
     std::fs::read_to_string(dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
 }
 
-/// Issue 18: `render SCENE --read-off mu=0.27` was refused (only `sweep --read-off` and a
+/// Regression: `render SCENE --read-off mu=0.27` was refused (only `sweep --read-off` and a
 /// scene's own chart.read_off existed), so a user could not read a built-in map or sweep at
 /// their point. Now every map and sweep draws it, prints the values on the chart and writes
 /// them in its data, and the numbers are `solve`'s for the same part; a chart with no
@@ -103,8 +102,8 @@ fn render_read_off_draws_the_users_point_on_every_map_and_sweep() {
     assert!(file(&out, "index.html").contains("--read-off mu=0.27"));
 }
 
-/// A read-off whose point lies off a map draws nothing and names nothing in the legend (issue
-/// 18: a custom map's legend named read-off lines at mu = 0.40 that were not drawn), and warns.
+/// A read-off whose point lies off a map draws nothing and names nothing in the legend (a custom
+/// map's legend named read-off lines at mu = 0.40 that were not drawn), and warns.
 #[test]
 fn a_read_off_off_the_map_is_not_in_the_legend() {
     let dir = tempfile::tempdir().unwrap();

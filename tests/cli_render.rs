@@ -1,7 +1,6 @@
 //! `jamchart render` run as a process in a temporary directory.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, repo, stderr, stdout};
 
 fn scenes_dir() -> String {
@@ -280,7 +279,7 @@ fn second_render_into_the_folder_keeps_the_other_charts_in_the_gallery() {
     }
 }
 
-/// Regression (issue 18): a wrong or invalid `[scene]` key in a scene file named no file or
+/// Regression: a wrong or invalid `[scene]` key in a scene file named no file or
 /// line (the `--config` path did), and with one bad file in a folder the error did not say
 /// which file.
 #[test]
@@ -322,7 +321,7 @@ fn a_bad_scene_key_names_its_file_and_line() {
     );
 }
 
-/// Issue 18: the key reference lived in charts/README.md, which an installed binary does not
+/// Regression: the key reference lived in charts/README.md, which an installed binary does not
 /// have; `jamchart scenes --keys` prints it.
 #[test]
 fn scenes_keys_prints_the_key_reference() {
@@ -334,7 +333,7 @@ fn scenes_keys_prints_the_key_reference() {
     assert!(out.contains("#### `kind = \"universal\"`"));
 }
 
-/// Issue 18: `render --set KEY=VALUE` applies to every scene it can; a scene that cannot show
+/// `render --set KEY=VALUE` applies to every scene it can; a scene that cannot show
 /// the key says so on stderr (a V-block chart has its own parameters; an axis that varies the
 /// key hides it), while a chart that marks the value (read-off lines) stays quiet.
 #[test]

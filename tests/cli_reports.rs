@@ -2,11 +2,10 @@
 
 use serde_json::Value;
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, stderr, stdout};
 
-/// Regression (issue 12): the built-in scenes of the integrators' work-precision chart and of
+/// Regression: the built-in scenes of the integrators' work-precision chart and of
 /// the stability matrix were named `accuracy` and `stability`, so `render` wrote an
 /// accuracy.csv and a stability.json of other schemas than the reports' files of those names.
 fn no_scene_writes_a_file_of(dir: &std::path::Path, report_dir: &str) {
@@ -86,8 +85,8 @@ fn accuracy_writes_every_output_with_one_schema() {
     assert_eq!(rows.len(), 7);
     for r in rows {
         assert!(r["median_time_s"].as_f64().unwrap() > 0.0, "{r}");
-        // A force drive's simulations are judged by the converged rigid dynamics (issue 20,
-        // item 5), the quasi-static models by the closed form at F.
+        // A force drive's simulations are judged by the converged rigid dynamics (the
+        // closed form lacks the disc's coast), the quasi-static models by the closed form at F.
         let want = if r["model"] == "dynamics" {
             "rigid_dynamics"
         } else {

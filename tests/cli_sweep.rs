@@ -1,8 +1,7 @@
 //! `jamchart sweep` run as a process in a temporary directory: a chart of one's own parameters
 //! without a scene file.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{SHAFT, jamchart, stderr, stdout};
 
 /// The statics row at mu = 0.4 of a one-line sweep is the paper's closed form, 24.355 mm.
@@ -63,8 +62,8 @@ fn bad_axis_exits_2_and_names_the_parameters() {
     );
 }
 
-/// Regression (issue 18): a sweep's curve stopped at mu = 0.150 with no explanation and its CSV
-/// had no status column (empty cells): the shaft of the issue on an 80 mm palm. Every row now
+/// Regression: a sweep's curve stopped at mu = 0.150 with no explanation and its CSV
+/// had no status column (empty cells): the 25 mm shaft on an 80 mm palm. Every row now
 /// says the model's verdict, and the cells with no jam say why.
 #[test]
 fn sweep_rows_carry_the_status_and_the_curve_says_where_it_ends() {
@@ -94,7 +93,7 @@ fn sweep_rows_carry_the_status_and_the_curve_says_where_it_ends() {
     }
 }
 
-/// Issue 18: read-off at the user's point on a sweep. `sweep ... --mu 0.27 --read-off` draws the
+/// Read-off at the user's point on a sweep. `sweep ... --mu 0.27 --read-off` draws the
 /// closed form's x_jam and theta_jam at mu 0.27 and writes them as a `read_off` row, the same
 /// numbers as `solve` for the same flags.
 #[test]

@@ -1,8 +1,7 @@
-//! Ranges and distributions on the command line and in files (issue 19): which settings take
+//! Ranges and distributions on the command line and in files: which settings take
 //! them, how bad ones are refused, and the answers over a range.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 
 use cli_util::{jamchart, stderr};
 
@@ -13,7 +12,7 @@ fn refused(args: &[&str]) -> (Option<i32>, String) {
     (o.status.code(), stderr(&o))
 }
 
-/// The issue's bad input: each exits 2 with one `jamchart:` line naming the flag as written.
+/// Bad ranges and distributions: each exits 2 with one `jamchart:` line naming the flag as written.
 #[test]
 fn bad_ranges_exit_2_naming_the_flag() {
     for (line, says) in [
@@ -87,8 +86,8 @@ fn a_files_bad_range_names_file_and_line() {
     }
 }
 
-/// The issue's shaft job is one command: the jam interval, the worst ends and the status
-/// change over the friction range, in text and JSON.
+/// The 25 mm shaft over a friction range is one command: the jam interval, the worst ends and the
+/// status change over the friction range, in text and JSON.
 #[test]
 fn the_shaft_job_is_one_command() {
     let dir = tempfile::tempdir().unwrap();

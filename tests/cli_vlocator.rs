@@ -1,7 +1,6 @@
 //! `jamchart vlocator` run as a user would: text, JSON keys, and bad input.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, json, stderr, stdout};
 
 #[test]
@@ -139,7 +138,7 @@ fn help_names_units_and_defaults() {
     }
 }
 
-/// The issue-19 V-block in one command: a 30 N sideways load over mu 0.12 to 0.3 on the
+/// The shaft's V-block in one command: a 30 N sideways load over mu 0.12 to 0.3 on the
 /// 0.4 kg shaft. It took about 8 runs of trial and error and the tool never said that no single
 /// V works; now it says so, names the load the narrowest unlocked V drops and what would open a
 /// window (mu_hi <= W / P = 0.1307, or P <= W / mu_hi = 13.07 N).

@@ -1,5 +1,5 @@
 //! The nonsmooth method (rigid contacts, exact Coulomb friction) against the closed form and
-//! against the regularised model in its stiff limit (issue 10).
+//! against the regularised model in its stiff limit.
 
 use jamchart::SceneParams;
 use jamchart::dynamics::DiscMotion;
@@ -23,9 +23,9 @@ fn rel(got: f64, want: f64) -> f64 {
     (got - want).abs() / want.abs()
 }
 
-/// Issue 10 "done when": at its defaults the motion drive jams by lock-up within 0.1 % of r/mu
-/// for mu = 0.15 ... 0.45 (the error is at most one step of palm turn past the wedge, 0.06 % at
-/// mu = 0.15), and the answer is trusted by its own check.
+/// The accuracy asked of the nonsmooth method: at its defaults the motion drive jams by lock-up
+/// within 0.1 % of r/mu for mu = 0.15 ... 0.45 (the error is at most one step of palm turn past the
+/// wedge, 0.06 % at mu = 0.15), and the answer is trusted by its own check.
 #[test]
 fn motion_drive_locks_up_within_0_1_percent_of_r_over_mu_at_the_defaults() {
     let mut worst: f64 = 0.0;
@@ -169,7 +169,7 @@ fn rolling(drive: Drive, omega_deg_s: f64) -> DynamicsParams {
     p
 }
 
-/// The disc free to roll (issue 10): with equal frictions mu = 0.15 ... 0.45 it rolls on the
+/// The disc free to roll: with equal frictions mu = 0.15 ... 0.45 it rolls on the
 /// ground (no slip at A) while the palm slides over it, and locks up where the translational disc
 /// does, at r/mu: a rolling disc's moment balance makes the two friction forces equal, so the palm
 /// contact reaches its cone at tan(theta/2) = mu_p while the ground, pressed harder, still holds.
@@ -236,11 +236,11 @@ fn a_rolling_disc_pushed_slowly_with_a_finite_force_jams_where_min_norm_rolling_
 }
 
 /// The force drive's 1.7 % gap (mu = 0.15, 30 deg/s: nonsmooth 68.81 mm, RADAU5 at its default
-/// contact 67.81 mm) was the regularised model's old jam reading, not the physics: it read the
-/// jam when the disc's speed fell below half the geometric speed, while the disc, let go by the
-/// stalled palm, still coasted 0.6 mm. Its jam is now where it comes to rest (issue 20, item
-/// 4), the nonsmooth method's jam in the stiff limit: with a 1 um contact at rtol 1e-8 the two
-/// agree within 0.04 %, and the half-speed reading (`x_half_speed_mm`) lies short of both.
+/// contact 67.81 mm) was the regularised model's old jam reading, not the physics: it read the jam
+/// when the disc's speed fell below half the geometric speed, while the disc, let go by the stalled
+/// palm, still coasted 0.6 mm. Its jam is now where it comes to rest, the nonsmooth method's jam in
+/// the stiff limit: with a 1 um contact at rtol 1e-8 the two agree within 0.04 %, and the
+/// half-speed reading (`x_half_speed_mm`) lies short of both.
 #[test]
 fn force_drive_agrees_with_the_stiff_regularised_disc_where_it_stops() {
     let stiff = 200.0 / 1e-3_f64.powf(2.2);
@@ -291,11 +291,12 @@ fn force_drive_agrees_with_the_stiff_regularised_disc_where_it_stops() {
     }
 }
 
-/// Issue 20, item 6: the rolling table of the nonsmooth module docs (motion drive at 30 deg/s,
-/// step 0.1 deg; force drive at 0.5 deg/s, F = 200 N, against the min-norm rolling answer) was
-/// not printed by any test. This one prints every figure of it and holds each to the digits the
-/// docs give. Two were off: equal frictions 0.25-0.45 lie up to 1.03e-5 (relative) from r/mu,
-/// not "<= 1e-5", and the force drive lies within 0.072 % of min-norm rolling, not "0.13 %".
+/// Every number in the docs comes from a test that prints it. The rolling table of the nonsmooth
+/// module docs (motion drive at 30 deg/s, step 0.1 deg; force drive at 0.5 deg/s, F = 200 N,
+/// against the min-norm rolling answer) was not printed by any test. This one prints every figure
+/// of it and holds each to the digits the docs give. Two were off: equal frictions 0.25-0.45 lie up
+/// to 1.03e-5 (relative) from r/mu, not "<= 1e-5", and the force drive lies within 0.072 % of
+/// min-norm rolling, not "0.13 %".
 #[test]
 fn the_rolling_table_of_the_nonsmooth_docs() {
     use jamchart::minnorm::{Formulation, MinNormSettings, palm};
@@ -352,7 +353,7 @@ fn the_rolling_table_of_the_nonsmooth_docs() {
 }
 
 /// The step figures of the docs (`dynamics::params::MOTION_STEP_DEG` and `FORCE_STEP_DEG`,
-/// the nonsmooth module docs), printed and bounded (issue 20, item 6: every number in the docs
+/// the nonsmooth module docs), printed and bounded (every number in the docs
 /// comes from a test that prints it). Motion drive at 30 deg/s: the lock-up's distance to
 /// r / mu over mu = 0.15-0.45 at 0.1, 0.3 and 1 deg. Force drive: the rest at 0.1 deg against
 /// 0.01 deg at 30 deg/s, and at 0.5 deg/s the rest at 0.1 and 0.01 deg against a run at

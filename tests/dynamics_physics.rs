@@ -1,4 +1,4 @@
-//! The dynamic simulation against the closed form, where physics says they agree (issue 4).
+//! The dynamic simulation against the closed form, where physics says they agree.
 
 use jamchart::SceneParams;
 use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Failure, Method, simulate};
@@ -30,8 +30,9 @@ fn assert_rel(name: &str, got: f64, want: f64, rel: f64) {
 
 #[test]
 fn motion_drive_at_the_defaults_jams_within_1_5_percent_of_r_over_mu() {
-    // Issue 4 "done when": solve --model dynamics --mu 0.4 within 1.5 % of 25.0 mm. The compliant
-    // contact makes the disc lag the palm, so it jams a little short of r/mu (24.75 mm).
+    // The accuracy asked of the dynamics: solve --model dynamics --mu 0.4 within 1.5 % of 25.0 mm.
+    // The compliant contact makes the disc lag the palm, so it jams a little short of r/mu
+    // (24.75 mm).
     let s = run(&SceneParams::default(), &DynamicsParams::default());
     assert_rel("x_jam", x_jam(&s), 25.0, 0.015);
     assert!(s.x_jam_error_mm.unwrap() < 1e-4, "{s:?}");
@@ -173,11 +174,11 @@ fn both_integrators_agree_at_a_tight_tolerance() {
     }
 }
 
-/// Regression: a stiff method at a loose tolerance can report success with a wrong answer (the
-/// issue saw another library's Radau 69 % off). At rtol 0.05-0.5 our methods give x_jam at
-/// 10-14 mm and 33-169 mm (truth 24.5-25.0 mm, 58 % short to 574 % long; see the module docs of
-/// `dynamics`), caught by the tolerance cap, the cross-checks and the verification run. Every
-/// answer that says `jams` must be right within 1 %.
+/// Regression: a stiff method at a loose tolerance can report success with a wrong answer (another
+/// library's Radau has been seen 69 % off). At rtol 0.05-0.5 our methods give x_jam at 10-14 mm and
+/// 33-169 mm (truth 24.5-25.0 mm, 58 % short to 574 % long; see the module docs of `dynamics`),
+/// caught by the tolerance cap, the cross-checks and the verification run. Every answer that says
+/// `jams` must be right within 1 %.
 #[test]
 fn loose_tolerances_never_give_a_trusted_wrong_answer() {
     let scene = SceneParams::default();
@@ -261,7 +262,7 @@ fn the_outcomes_that_are_not_jams() {
         ..Default::default()
     };
     // Too heavy for the force-limited palm (F = 200 N below m g sin(atan mu) = 364 N): too
-    // weak, its own status since issue 13 (it was jammed_at_start).
+    // weak, a status of its own (it was jammed_at_start).
     let s = run(&heavy, &force);
     assert_eq!(s.status, JamStatus::TooWeak, "{s:?}");
     // Started below theta_jam (44.6 deg): jammed where the push starts, within 1e-9 deg.
@@ -370,8 +371,8 @@ fn a_rounding_sliver_before_the_end_is_not_an_integrator_failure() {
             assert!(s.failure.is_none(), "{method:?} {scene:?}: {:?}", s.failure);
             // The compliant contact reads jammed_at_start where the motion-driven rigid contact
             // pushes the disc on to the lock-up (the 1 um disc sinks deeper into the contact
-            // than it is big; the 1e6 kg disc is too heavy for the contact's push): since
-            // issue 20 (item 2) that disagreement is flagged instead of trusted.
+            // than it is big; the 1e6 kg disc is too heavy for the contact's push): that
+            // disagreement is flagged instead of trusted.
             let flagged = matches!(
                 s.cross_check,
                 Some(jamchart::dynamics::CrossCheck::RigidDisagrees {
@@ -450,13 +451,13 @@ fn coasting_past_the_wedge_is_not_called_inaccurate() {
     assert!(x > 100.0 && x < 110.0, "x_jam {x} mm");
 }
 
-/// Issue 20, item 6: the module docs of `dynamics::jam` said that at the defaults (motion drive)
-/// the disc creeps at 0.12-0.13 mm/s for about 60 ms after the collapse, and that the stiction
-/// reading lies 0.03 mm further out (so it needs `after_jam_s` >= 0.07), but no test printed
-/// these numbers. This one measures them from a run with a series: the creep is the disc's speed
-/// from where it first falls below V_d (the end of the collapse) to the stiction reading. It
-/// falls from 0.130 mm/s to V_s = 0.1 mm/s over 64 ms (not 0.12-0.13 mm/s throughout, as the
-/// docs said; they now give the measured figures).
+/// Every number in the docs comes from a test that prints it. The module docs of `dynamics::jam`
+/// said that at the defaults (motion drive) the disc creeps at 0.12-0.13 mm/s for about 60 ms after
+/// the collapse, and that the stiction reading lies 0.03 mm further out (so it needs
+/// `after_jam_s` >= 0.07), but no test printed these numbers. This one measures them from a run
+/// with a series: the creep is the disc's speed from where it first falls below V_d (the end of the
+/// collapse) to the stiction reading. It falls from 0.130 mm/s to V_s = 0.1 mm/s over 64 ms (not
+/// 0.12-0.13 mm/s throughout, as the docs said; they now give the measured figures).
 #[test]
 fn the_motion_drive_creep_figures_of_the_jam_docs() {
     let p = DynamicsParams {
@@ -497,10 +498,11 @@ fn the_motion_drive_creep_figures_of_the_jam_docs() {
     assert!((0.025..0.035).contains(&(x_st - x)), "{} mm", x_st - x);
 }
 
-/// Issue 20, item 6: `jam::rest_speed_mm_s` and the `dynamics` module docs said a disc held by
-/// the regularised friction creeps at 0.124 mm/s at the defaults' force drive, between V_s and
-/// V_d, and cited a test that printed no such number. This one prints the held disc's speed over
-/// the 50 ms to 100 ms after the rest (0.1236-0.1239 mm/s) and holds it between V_s and V_d.
+/// Every number in the docs comes from a test that prints it. `jam::rest_speed_mm_s` and the
+/// `dynamics` module docs said a disc held by the regularised friction creeps at 0.124 mm/s at the
+/// defaults' force drive, between V_s and V_d, and cited a test that printed no such number. This
+/// one prints the held disc's speed over the 50 ms to 100 ms after the rest (0.1236-0.1239 mm/s)
+/// and holds it between V_s and V_d.
 #[test]
 fn the_force_drive_creep_figure_of_the_docs() {
     let mut p = DynamicsParams {

@@ -1,4 +1,4 @@
-//! Verdicts that never mislead (issue 10): each case where the regularised simulation used to
+//! Verdicts that never mislead: each case where the regularised simulation used to
 //! answer `jams` with a number it could not stand behind, pinned with the verdict it gets now.
 
 use jamchart::JamStatus;
@@ -271,7 +271,7 @@ fn dopri5_finishes_a_stiff_run_within_its_budget() {
     assert!(s.x_jam_error_mm.unwrap() < 1e-6 * x, "{s:?}");
 }
 
-/// Regression (issue 20, item 3): the force limit sensed only the elastic part of the palm's
+/// Regression: the force limit sensed only the elastic part of the palm's
 /// push. `solve --model dynamics --drive force --force 3.8239538 --after-jam 0.02`: at first
 /// contact the damping part pushed 10.1 N against the 3.55 N limit N_max = F cos(atan mu_p),
 /// the disc moved 0.11 mm and the answer was `jams` at 10.113 mm where the push cannot move it
@@ -304,7 +304,7 @@ fn the_force_limit_senses_the_whole_contact_force() {
     );
 }
 
-/// Regression (issue 20, item 2): a motion-driven palm started 0.5 deg above the wedge
+/// Regression: a motion-driven palm started 0.5 deg above the wedge
 /// (`solve --model all --start-angle 44.10281897270362`). The compliant contact said the disc
 /// does not move (jammed_at_start at 24.687 mm) where the palm pushes a rigid disc on to the
 /// lock-up at 25.000 mm (-1.25 %), unflagged because the rigid cross-check was skipped when
@@ -332,7 +332,7 @@ fn a_motion_drive_started_near_the_wedge_is_checked_against_the_rigid_contact() 
     assert_eq!(s.status, JamStatus::Inaccurate);
 }
 
-/// Regression (issue 20, item 8): a force-limited palm too weak to slide the disc at the start
+/// Regression: a force-limited palm too weak to slide the disc at the start
 /// (the stability matrix's `barely_moves`, F = 1.05 m g sin(atan mu_g), and `too_weak`, 0.95 of
 /// it) stalls at its limit against a disc at rest, and the run went on to the end of the push
 /// (t_end = 3 s): DOPRI5 50,787 and 65,681 steps (of both runs), held at its stability limit

@@ -1,4 +1,4 @@
-//! The force drive's jam is where the disc comes to rest, for every method (issue 20, item 4),
+//! The force drive's jam is where the disc comes to rest, for every method,
 //! checked against an independent rigid model written here from the equations of motion.
 //!
 //! The rigid model (disc sliding on the ground, no palm offset, start at 90 deg): the contact
@@ -70,7 +70,7 @@ fn rigid_rest(scene: &SceneParams, omega_deg_s: f64) -> Option<(f64, f64)> {
     }
 }
 
-/// The grid of issue 20, item 4 (mu 0.15-0.45, F 50-1000 N, 10-90 deg/s) with the rigid rest of
+/// The grid of force-driven cases (mu 0.15-0.45, F 50-1000 N, 10-90 deg/s) with the rigid rest of
 /// each case.
 fn cases() -> Vec<(SceneParams, f64, (f64, f64))> {
     let mut out = Vec::new();
@@ -131,7 +131,7 @@ fn nonsmooth_force_drive_rests_where_the_rigid_ode_does() {
     eprintln!("worst relative distance to the rigid ODE: {worst:.1e}");
 }
 
-/// Issue 20, item 4: the regularised force drive read x_jam when the disc's speed fell to half
+/// Regression: the regularised force drive read x_jam when the disc's speed fell to half
 /// the geometric speed, while the disc, let go by the stalled palm, still coasted (24.452 mm at
 /// the defaults, 9.2 mm/s; it comes to rest at 24.487 mm). Now x_jam is where its speed falls
 /// below the rest speed 2 V_d, for RADAU5 and DOPRI5 alike, and the half-speed reading is kept

@@ -9,13 +9,9 @@
 //! test is skipped with the reason printed. `.ci/run` installs both when they are missing.
 //! `JAMCHART_CHROMIUM` / `JAMCHART_FIREFOX` name other binaries (`common/browser.rs`).
 
-#[path = "common/browser.rs"]
-mod browser;
-#[path = "common/cli.rs"]
-mod cli_util;
-#[macro_use]
-#[path = "common/gallery.rs"]
-mod gallery;
+use crate::common::browser;
+use crate::common::cli as cli_util;
+use crate::common::gallery;
 
 use std::path::{Path, PathBuf};
 
@@ -170,10 +166,10 @@ fn solve_with(dir: &Path, flags: &[&str]) -> (f64, f64) {
 }
 
 in_chromium_and_firefox!(
-    /// Issue 22: the gallery read off only jam maps and sweeps; the universal chart and contour
-    /// maps were plain pictures. In Chromium and Firefox, the universal chart at issue 18's part (mu 0.27,
-    /// F / (m g) = 150 / 9.806) and fig7c at F 150 N, r 12 mm give `solve`'s theta_jam and x_jam
-    /// (x_jam / r times r on the universal chart) within 0.1 % from their embedded cells.
+    /// Regression: the gallery read off only jam maps and sweeps; the universal chart and contour
+    /// maps were plain pictures. In Chromium and Firefox, the universal chart at the example part
+    /// (mu 0.27, F / (m g) = 150 / 9.806) and fig7c at F 150 N, r 12 mm give `solve`'s theta_jam
+    /// and x_jam (x_jam / r times r on the universal chart) within 0.1 % from their embedded cells.
     the_gallery_reads_the_universal_chart_and_contour_maps_off_as_solve_does,
     the_gallery_reads_the_universal_chart_and_contour_maps_off_in_firefox,
     reads_the_universal_chart_and_contour_maps_off
@@ -242,7 +238,7 @@ fn vlocator_capacity(dir: &Path, included_deg: f64, load_deg: f64) -> Option<f64
 }
 
 in_chromium_and_firefox!(
-    /// Issue 22: the V-locator's capacity map was a plain picture in the gallery (no read-off).
+    /// Regression: the V-locator's capacity map was a plain picture in the gallery (no read-off).
     /// In Chromium and Firefox, its read-off at sampled cells gives `jamchart vlocator`'s P_max / W to the
     /// embedded 7 digits, between samples within 1 % (the map is read bilinearly between cells
     /// 2 deg apart), and "unbounded" where the V holds every load.
@@ -309,7 +305,7 @@ fn rel(got: f64, want: f64) -> f64 {
 }
 
 in_chromium_and_firefox!(
-    /// Issue 22: the V-locator's optimum chart (four stacked panels, direction above and P / W
+    /// Regression: the V-locator's optimum chart (four stacked panels, direction above and P / W
     /// below) and robust chart were plain pictures in the gallery. In Chromium and Firefox, the optimum's
     /// read-off on its samples gives `jamchart vlocator`'s gamma* and rho* for every friction to
     /// the embedded 7 digits (1 % between samples, where the curve is a straight line), none
@@ -469,7 +465,7 @@ fn reads_the_vlocator_optimum_and_robust_charts_off(kind: Kind) {
     );
 }
 
-/// Issue 22, a phone-sized screen (390 x 844 px, touch): on the V-locator's optimum chart
+/// Regression, a phone-sized screen (390 x 844 px, touch): on the V-locator's optimum chart
 /// (four panels, 1000 x 1700 px scaled to the phone's width) the live read-off of a tap on the
 /// top panel was written below the whole picture, off the screen; it now stays at the bottom
 /// of the window while the chart is in view. In Firefox with a real finger tap (WebDriver

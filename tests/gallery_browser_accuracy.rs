@@ -3,13 +3,9 @@
 //! are saved under `target/tmp/gallery_browser/` to look at. See `gallery_browser.rs` for the
 //! browsers and what happens without them.
 
-#[path = "common/browser.rs"]
-mod browser;
-#[path = "common/cli.rs"]
-mod cli_util;
-#[macro_use]
-#[path = "common/gallery.rs"]
-mod gallery;
+use crate::common::browser;
+use crate::common::cli as cli_util;
+use crate::common::gallery;
 
 use std::collections::BTreeMap;
 

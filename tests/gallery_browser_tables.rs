@@ -1,17 +1,13 @@
-//! The gallery's read-off of the charts that had none (issue 22): the time series (fig5), the
+//! The gallery's read-off of the charts that had none: the time series (fig5), the
 //! min-norm program's trace (fig4), the integrators' work-precision chart (integration-error)
 //! and the stability matrix, in headless Chromium and Firefox, checked against each chart's
 //! own data file and against `jamchart solve` for the same inputs. Screenshots are saved under
 //! `target/tmp/gallery_browser/` to look at. See `gallery_browser.rs` for the browsers and
 //! what happens without them.
 
-#[path = "common/browser.rs"]
-mod browser;
-#[path = "common/cli.rs"]
-mod cli_util;
-#[macro_use]
-#[path = "common/gallery.rs"]
-mod gallery;
+use crate::common::browser;
+use crate::common::cli as cli_util;
+use crate::common::gallery;
 
 use std::collections::BTreeMap;
 
@@ -33,7 +29,7 @@ fn rel(got: f64, want: f64) -> f64 {
 }
 
 in_chromium_and_firefox!(
-    /// Issue 22: fig5 (disc speed and position against time, the jam marked), fig4 (the
+    /// Regression: fig5 (disc speed and position against time, the jam marked), fig4 (the
     /// min-norm program's iterations), the work-precision chart and the stability matrix were
     /// plain pictures in the gallery. In Chromium and Firefox: fig5 read at a sample gives its
     /// CSV row (speed, position, palm angle, the rigid disc's) to the embedded 7 digits and

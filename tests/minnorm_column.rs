@@ -1,4 +1,4 @@
-//! Min-norm maps by columns (issue 21): each bisection bracketed from the column's previous jams
+//! Min-norm maps by columns: each bisection bracketed from the column's previous jams
 //! must answer what the cell-by-cell search answers, to the bisection's tolerance, with the
 //! closed form as the oracle, and the map must not depend on the thread count.
 
@@ -7,7 +7,7 @@ use jamchart::minnorm::{Formulation, MinNormSettings, palm, solve_column};
 use jamchart::statics;
 use jamchart::{JamStatus, ModelSpec, SceneParams};
 
-/// The issue's agreement: 1e-5 deg between min-norm and closed-form theta_jam.
+/// The agreement asked of the min-norm model: 1e-5 deg between min-norm and closed-form theta_jam.
 const AGREE_DEG: f64 = 1e-5;
 
 /// One column of the design map (`cargo bench --bench maps`): mu fixed, F 20 ... 2000 N (log)

@@ -8,8 +8,7 @@ use jamchart::minnorm::{
 };
 use proptest::prelude::*;
 
-#[path = "common/random_planar.rs"]
-mod random_planar;
+use crate::common::random_planar;
 use random_planar::{compare, load_scale, planar_problem};
 
 fn exact_first() -> QpSettings {

@@ -4,8 +4,7 @@
 //! the rigid contact's jam in a cross-check; the table's CSV and JSON were written by separate
 //! code. These tests read what the binary writes.
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, json, stderr, stdout};
 
 /// The quantities of a jam, with their unit suffix as in JSON keys and CSV headers.
@@ -124,7 +123,7 @@ fn words_with<'a>(text: &'a str, part: &str) -> Vec<&'a str> {
         .collect()
 }
 
-/// Regression (issue 12, "one quantity has four names"): the rigid limit
+/// Regression ("one quantity has four names"): the rigid limit
 /// x_rigid = r cot((alpha_g + alpha_p) / 2), the jam as F -> infinity, is `x_rigid_mm` / `theta_rigid_deg` in every JSON
 /// (statics and dynamics records), `x_rigid` in text, `rigid` as a sweep layer and as the
 /// accuracy table's reference, and `gap_to_x_rigid_pct` on a map; the rigid contact's jam is
@@ -237,7 +236,7 @@ fn longest_array(v: &serde_json::Value) -> usize {
 }
 
 /// Every map writes its cells once, as long CSV (one row per cell, the columns its JSON lists),
-/// and its JSON does not repeat the grid. Regression (issue 12): vlocator-capacity.json held a
+/// and its JSON does not repeat the grid. Regression: vlocator-capacity.json held a
 /// flat `iy * nx + ix` grid of 115,239 numbers and had no CSV.
 #[test]
 fn every_map_writes_its_cells_as_long_csv_listed_in_its_json() {

@@ -1,7 +1,7 @@
-//! The palm's thickness (issue 17's proof of one declaration): the palm's face lies h off the
-//! hinge line (`palm_offset_mm`). The forces keep their directions, so theta_jam does not change
-//! and the disc sits h / sin(theta) further out (derivation in `src/statics.rs`). Every model
-//! honours it; the closed form is the oracle.
+//! The palm's thickness (a scene parameter declared once, honoured by every model): the palm's face
+//! lies h off the hinge line (`palm_offset_mm`). The forces keep their directions, so theta_jam
+//! does not change and the disc sits h / sin(theta) further out (derivation in `src/statics.rs`).
+//! Every model honours it; the closed form is the oracle.
 
 use jamchart::dynamics::{DynamicsParams, Method, simulate};
 use jamchart::{JamStatus, SceneParams, minnorm, statics};
@@ -13,7 +13,7 @@ fn with_offset(h: f64) -> SceneParams {
     }
 }
 
-/// The issue's figures: mu 0.4, h = 0.5 mm puts the rigid limit at 25.725 mm, and the paper's
+/// The figures: mu 0.4, h = 0.5 mm puts the rigid limit at 25.725 mm, and the paper's
 /// Adams reading with its 1 mm bars (25.58 mm) lies between 25.0 (h = 0) and that.
 #[test]
 fn half_a_millimetre_moves_the_rigid_limit_to_25_725_mm() {

@@ -5,10 +5,8 @@
 //! range; corners too weak, held at the start, at mu = 0 and beyond the palm) against the
 //! point answers of the model port on a dense grid of the box, refined at each status change.
 
-#[path = "common/boxes.rs"]
-mod boxes;
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::boxes;
+use crate::common::cli as cli_util;
 
 use boxes::{Broken, Draw, INPUTS, answers_in_box, check, random_box};
 use jamchart::grid::{AxisScale, GridAxis, GridParam};
@@ -22,7 +20,7 @@ const BOXES: usize = 300;
 const GRID: usize = 41;
 
 /// The closed form's range answer keeps its promise on every random box: the count of boxes
-/// that break it is printed (`cargo test --release --test range_promise -- --nocapture`).
+/// that break it is printed (`cargo test --release --test integration range_promise -- --nocapture`).
 #[test]
 fn every_point_of_a_random_box_answers_inside_its_interval_and_each_end_is_reached() {
     let mut d = Draw::new(2024);

@@ -146,8 +146,8 @@ fn statuses_in_their_order() {
     let s = statics::solve(&d.with_mu(0.01));
     assert_eq!(s.status, JamStatus::BeyondReach);
     assert_eq!((s.theta_jam_deg, s.x_jam_mm), (None, None));
-    // A push too weak to move the disc at all: m g sin(alpha)/F >= 1 (its own status since
-    // issue 13; it was jammed_at_start, indistinguishable from a disc that jams at once).
+    // A push too weak to move the disc at all: m g sin(alpha)/F >= 1 (a status of its
+    // own; it was jammed_at_start, indistinguishable from a disc that jams at once).
     let s = statics::solve(&SceneParams { force_n: 1.0, ..d });
     assert_eq!(s.status, JamStatus::TooWeak);
 }
@@ -172,7 +172,7 @@ fn log_range(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
     (lo.ln()..hi.ln()).prop_map(f64::exp)
 }
 
-/// The foundation issue's input ranges, with exact zeros for mu and mass now and then.
+/// Inputs over many decades, with exact zeros for mu and mass now and then.
 fn any_scene() -> impl Strategy<Value = SceneParams> {
     let mu = prop_oneof![1 => Just(0.0), 9 => log_range(1e-6, 1e3)];
     let mass = prop_oneof![1 => Just(0.0), 9 => log_range(1e-6, 1e6)];

@@ -1,4 +1,4 @@
-//! The closed form over a box of inputs (issue 19): the interval from the corners against
+//! The closed form over a box of inputs: the interval from the corners against
 //! point solves at the range's ends and against a brute-force grid over the box, and the
 //! status breakpoints against the closed form.
 
@@ -7,8 +7,9 @@ use jamchart::uncertain::range::{self, End, Reached};
 use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
 use jamchart::{JamStatus, SceneParams};
 
-/// The issue's shaft: r 12.5 mm, 0.4 kg, 40 N, an 80 mm palm; mu nominal 0.21.
-use jamchart::uncertain::shaft_25mm as shaft;
+/// The 25 mm shaft: r 12.5 mm, 0.4 kg, 40 N, an 80 mm palm; mu nominal 0.21.
+use crate::common::shaft as shaft_25mm;
+use shaft_25mm::shaft_25mm as shaft;
 
 fn input(name: &'static str, keys: &[&'static str], lo: f64, hi: f64) -> UncertainInput {
     UncertainInput {
@@ -138,9 +139,8 @@ fn a_sampled_box_spans_the_corners_interval() {
     let s = range::sampled(&jamchart::ModelSpec::Statics, &p, &set).unwrap();
     assert_eq!(
         s.method,
-        range::Method::Sampled {
-            samples: range::SAMPLES_PER_INPUT
-        }
+        // Nine points of one input, as the output says.
+        range::RangeMethod::Sampled { samples: 9 }
     );
     let (e, g) = (exact.x_jam_mm.unwrap(), s.x_jam_mm.unwrap());
     assert!(
@@ -149,7 +149,7 @@ fn a_sampled_box_spans_the_corners_interval() {
     );
 }
 
-/// Regression (issue 19, the range answer's speed): the breakpoints were found by a scan of
+/// Regression (the range answer's speed): the breakpoints were found by a scan of
 /// 64 evenly spaced `statics::solve`s along each input (each one beyond the palm ran the
 /// past-palm bisection, 160.8 us against a 110 ns point answer), and a status holding on a
 /// stretch narrower than 1/63 of the range fell between two scan points and was never

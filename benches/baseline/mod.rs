@@ -1,5 +1,5 @@
-//! The Python baseline the benches time beside jamchart (issue 21: "benchmarks that compare
-//! print the baseline they measured in the same run, or no ratio").
+//! The Python baseline the benches time beside jamchart: a ratio is printed
+//! only against a baseline measured in the same run.
 //!
 //! The scripts beside this file (`fig3.py`: the paper's Fig. 3 in numpy + matplotlib;
 //! `vlocator.py`: the V-locator's closed-form capacity map in numpy) run in a virtual

@@ -203,7 +203,7 @@ pub fn sweep_stale(dir: &Path) -> usize {
 mod tests {
     use super::*;
 
-    /// Regression (issue 23 class 9): a SIGHUP while a render wrote into a folder it had
+    /// Regression: a SIGHUP while a render wrote into a folder it had
     /// created removed the temporaries but left the empty folder. What the handler does,
     /// short of exiting, removes both; a folder that holds another file stays.
     #[test]

@@ -155,10 +155,7 @@ pub fn check_all<'a>(paths: impl IntoIterator<Item = &'a Path>) -> Result<()> {
     let mut seen = std::collections::HashSet::new();
     for p in paths {
         if !seen.insert(p) {
-            return Err(Error::Unsupported(format!(
-                "{} is named twice as an output; give each output its own path",
-                p.display()
-            )));
+            return Err(Error::OutputTwice { path: p.into() });
         }
         check(p)?;
     }

@@ -99,8 +99,8 @@ pub fn write_all(outputs: &[Output]) -> Result<()> {
 
 /// The environment variable of a test hook: milliseconds to wait between staging a set (its
 /// folders created, its temporaries written) and committing it, at most `MAX_PAUSE_MS`.
-/// `tests/cli_hardening3.rs` sends a signal in that window, which a render otherwise passes
-/// through in about a millisecond (issue 23, class 9). Unset, empty or not a number: no pause.
+/// A test of the binary sends a signal in that window, which a render otherwise passes
+/// through in about a millisecond. Unset, empty or not a number: no pause.
 pub const PAUSE_VAR: &str = "JAMCHART_TEST_PAUSE_AFTER_STAGING_MS";
 
 /// 60 s: longer than any test waits for a signal to land, short enough that a stray setting

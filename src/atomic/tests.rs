@@ -36,7 +36,7 @@ fn missing_directories_are_created_and_removed_again_on_failure() {
     assert_eq!(names(dir.path()), ["new", "squat"]);
 }
 
-/// Regression (issue 13, "a failed command leaves a partial set"): the second of three files
+/// Regression ("a failed command leaves a partial set"): the second of three files
 /// fails at its rename; the first, already renamed, must get its old version back and the
 /// third must not appear.
 #[test]

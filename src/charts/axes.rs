@@ -9,8 +9,6 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::colorbar::ColorBar;
-use super::legend::{self, LegendEntry};
 use super::style::{self, GRID_MAJOR, GRID_MINOR, INK, PAPER};
 pub use super::ticks::{PlotAxis, Ticks};
 
@@ -340,40 +338,4 @@ pub fn draw_header<DB: DrawingBackend>(
     let size = fitted(subtitle, style::TICK_PX)?;
     let sub_font = style::text(size).pos(Pos::new(HPos::Center, VPos::Top));
     root.draw(&Text::new(subtitle.to_string(), (mid, 40), sub_font))
-}
-
-/// A filled map's chart: the standard margins with room below for `entries`' legend and right
-/// for `bar`, each band's rings filled in its colour (`bands[i]` in `colors[i]`; extra bands
-/// stay unfilled), the grid over them and the colour bar beside them. The contour map and the
-/// V-locator capacity map share it.
-pub fn band_map<'a, 'b, DB: DrawingBackend>(
-    root: &'a DrawingArea<DB, Shift>,
-    x: &PlotAxis,
-    y: &PlotAxis,
-    entries: &[LegendEntry],
-    bands: &[Vec<Vec<(f64, f64)>>],
-    colors: &[RGBColor],
-    bar: &ColorBar,
-) -> Result<Chart<'b, DB>, DrawingAreaErrorKind<DB::ErrorType>>
-where
-    'a: 'b,
-{
-    let rows = legend::rows_needed(root, entries)?;
-    let m = Margins {
-        top: 70,
-        bottom: 75 + (rows * legend::ROW_PX) as u32,
-        left: 95,
-        right: bar.width_px(root)? as u32,
-    };
-    let chart = build_chart(root, x, y, m)?;
-    let area = chart.plotting_area();
-    let (px, py) = area.get_pixel_range();
-    bar.draw(root, px.end - 1, py.start, py.end - 1)?;
-    for (rings, color) in bands.iter().zip(colors) {
-        for ring in rings {
-            area.draw(&Polygon::new(ring.clone(), color.filled()))?;
-        }
-    }
-    draw_grid(&chart, x, y)?;
-    Ok(chart)
 }

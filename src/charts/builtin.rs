@@ -10,7 +10,7 @@ pub const PAPER_TOML: &str = include_str!("../../config/paper.toml");
 
 /// The reference of every scene key, `charts/README.md`: what `jamchart scenes --keys` prints,
 /// so an installed binary has it.
-pub const SCENE_KEYS: &str = include_str!("../../charts/README.md");
+pub(crate) const SCENE_KEYS: &str = include_str!("../../charts/README.md");
 
 /// The built-in scenes: name (file stem) and the text of `charts/<name>.toml`, sorted by name;
 /// `build.rs` lists every file of charts/.

@@ -159,7 +159,7 @@ pub fn place_along(
 mod tests {
     use super::*;
 
-    /// Regression (issue 18): on fig7a's lower panel theta_jam does not depend on r, so the
+    /// Regression: on fig7a's lower panel theta_jam does not depend on r, so the
     /// read-off's line 2 runs along the flat curve and every place along it was on the curve:
     /// step tag "2" sat on it, half-way. The tag now goes just beside the line, clear of it.
     #[test]
@@ -176,7 +176,7 @@ mod tests {
         assert_eq!(place_along(a, b, (8, 13), 3, &[]).0, (300, 200));
     }
 
-    /// Regression (issue 18): fig7b's read-off value sat below right of the point on the
+    /// Regression: fig7b's read-off value sat below right of the point on the
     /// lower panel, where the falling theta_jam curve runs on: its white box covered the curve.
     /// The label now takes the first corner around the point that the curve leaves free.
     #[test]

@@ -4,12 +4,15 @@
 //! The bands are discrete (one colour between two iso-lines), so the bar is a stack of equal
 //! boxes, one per band, and a tick sits on each boundary: the reader matches a band's colour
 //! to the two levels around it, as on the map, whatever the spacing of the levels.
+//!
+//! [`band_map`] lays out a filled map with its bar beside it and its legend below.
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::axes::{self, DrawResult};
+use super::axes::{self, Chart, DrawResult, Margins, PlotAxis, build_chart, draw_grid};
+use super::legend::{self, LegendEntry};
 use super::style::{self, INK};
 
 /// Space between the plot's right edge and the bar, in px.
@@ -85,4 +88,40 @@ impl ColorBar {
         let title_x = r + TICK_PX + widest as i32 + TITLE_GAP_PX + style::LABEL_PX as i32 / 2;
         axes::draw_vertical_label(root, &self.title, title_x, (top + bottom) / 2)
     }
+}
+
+/// A filled map's chart: the standard margins with room below for `entries`' legend and right
+/// for `bar`, each band's rings filled in its colour (`bands[i]` in `colors[i]`; extra bands
+/// stay unfilled), the grid over them and the colour bar beside them. The contour map and the
+/// V-locator capacity map share it.
+pub fn band_map<'a, 'b, DB: DrawingBackend>(
+    root: &'a DrawingArea<DB, Shift>,
+    x: &PlotAxis,
+    y: &PlotAxis,
+    entries: &[LegendEntry],
+    bands: &[Vec<Vec<(f64, f64)>>],
+    colors: &[RGBColor],
+    bar: &ColorBar,
+) -> Result<Chart<'b, DB>, DrawingAreaErrorKind<DB::ErrorType>>
+where
+    'a: 'b,
+{
+    let rows = legend::rows_needed(root, entries)?;
+    let m = Margins {
+        top: 70,
+        bottom: 75 + (rows * legend::ROW_PX) as u32,
+        left: 95,
+        right: bar.width_px(root)? as u32,
+    };
+    let chart = build_chart(root, x, y, m)?;
+    let area = chart.plotting_area();
+    let (px, py) = area.get_pixel_range();
+    bar.draw(root, px.end - 1, py.start, py.end - 1)?;
+    for (rings, color) in bands.iter().zip(colors) {
+        for ring in rings {
+            area.draw(&Polygon::new(ring.clone(), color.filled()))?;
+        }
+    }
+    draw_grid(&chart, x, y)?;
+    Ok(chart)
 }

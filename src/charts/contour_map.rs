@@ -11,7 +11,7 @@ use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
 use super::collide::PxBox;
-use super::colorbar::ColorBar;
+use super::colorbar::{self, ColorBar};
 use super::labels;
 use super::legend::{self, LegendEntry, Swatch};
 use super::picture::Picture;
@@ -117,7 +117,7 @@ impl Picture for ContourMap {
                 .collect(),
             title: "jam position x_jam (mm)".into(),
         };
-        let chart = axes::band_map(root, &x, &y, &entries, &self.bands, &colors, &bar)?;
+        let chart = colorbar::band_map(root, &x, &y, &entries, &self.bands, &colors, &bar)?;
         let area = chart.plotting_area();
         let (px, py) = area.get_pixel_range();
         let xr = x.plot_range();

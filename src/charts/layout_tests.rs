@@ -1,4 +1,4 @@
-//! Layouts that never clip or overlap (issue 18): the typesetter records the box of every text
+//! Layouts that never clip or overlap: the typesetter records the box of every text
 //! it sets ([`typeset::record_texts`]), so these tests can say that no two texts of a chart
 //! overlap, that all lie inside the picture, and that a label sits on no other line.
 
@@ -39,7 +39,7 @@ fn builtin(name: &str, settings: &[&str]) -> Scene {
         .unwrap_or_else(|e| panic!("{name}: {e}"))
 }
 
-/// Regression (issue 18): fig7c's "25 mm" label sat on the 46 deg theta_jam line (the first
+/// Regression: fig7c's "25 mm" label sat on the 46 deg theta_jam line (the first
 /// of its three places that lay inside the plot was on it). Every x_jam label now sits on no
 /// theta_jam line: each line is mapped from the chart's JSON to pixels through the plotting
 /// area the drawing built.
@@ -127,7 +127,7 @@ fn faults_of(scene: &Scene, texts: &[TextBox], size: (u32, u32)) -> Vec<String> 
     faults
 }
 
-/// Issue 18: no two texts of a built-in chart overlap and none leaves the picture.
+/// No two texts of a built-in chart overlap and none leaves the picture.
 #[test]
 fn no_text_overlaps_or_leaves_the_picture_in_any_built_in_scene() {
     let faults: Vec<String> = builtin::scene_names()
@@ -137,7 +137,7 @@ fn no_text_overlaps_or_leaves_the_picture_in_any_built_in_scene() {
     assert!(faults.is_empty(), "{}", faults.join("\n"));
 }
 
-/// A legend never names a line that is not drawn (issue 18): with `--set mu=0.27` fig7c's
+/// A legend never names a line that is not drawn: with `--set mu=0.27` fig7c's
 /// theta_jam levels (44-47 deg) lie off the map, and its legend still named "θ_jam
 /// iso-lines".
 #[test]
@@ -161,7 +161,7 @@ fn long_title() -> String {
     format!("title=\"{}\"", t.trim_end())
 }
 
-/// The awkward user scenes of issue 18: each built-in scene with the longest title; log axes
+/// Awkward user scenes: each built-in scene with the longest title; log axes
 /// over 12 decades; every series a sweep can draw. (Not yet the smallest size, 400 x 300 px:
 /// there the built-in scenes have thousands of overlapping texts; see
 /// `texts_at_the_smallest_size`.)
@@ -223,7 +223,7 @@ fn awkward_scenes() -> Vec<(String, Scene)> {
     scenes
 }
 
-/// Issue 18: no two texts overlap and none leaves the picture in awkward user scenes.
+/// No two texts overlap and none leaves the picture in awkward user scenes.
 #[test]
 fn no_text_overlaps_or_leaves_the_picture_in_awkward_scenes() {
     let faults: Vec<String> = awkward_scenes()
@@ -242,7 +242,7 @@ fn no_text_overlaps_or_leaves_the_picture_in_awkward_scenes() {
     );
 }
 
-/// Issue 18: at the smallest size a scene took (400 x 300 px) the built-in scenes had 5053
+/// At the smallest size a scene took (400 x 300 px) the built-in scenes had 5053
 /// overlapping or clipped texts, and this test only printed the counts. Each kind now has a
 /// smallest layout ([`spec::MIN_LAYOUT_PX`]); at it, and at it at scale 2, every built-in
 /// scene has none, and 1 px less is refused.
@@ -307,7 +307,7 @@ fn a_scene_without_a_size_gets_its_kinds_minimum_layout() {
     assert!(SceneSource::File(path).load(&[]).is_err());
 }
 
-/// Issue 18: "fig3 at 1000 x 800 fails where 800 x 600 passes". The layout holds at every
+/// Regression: fig3 at 1000 x 800 failed where 800 x 600 passed. The layout holds at every
 /// size at or above a kind's minimum, not only at the minimum and the scenes' own sizes:
 /// every built-in scene is drawn at its minimum grown in width, in height and in both.
 #[test]

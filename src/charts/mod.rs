@@ -21,7 +21,7 @@
 //!
 //! - Points of a model on a sweep (Fig. 6: min-norm points, simulation points with motion and
 //!   force drive): one `sweep_layers::SweepLayer` variant and its arm in
-//!   `sweep_layers::series`, returning `sweep::Series` of markers; legend, panels, data file
+//!   `sweep_layers::series`, returning `sweep_layers::Series` of markers; legend, panels, data file
 //!   and hashes follow.
 //! - A model over a map (jam map boundary and read-off, contour map): nothing to do here. Maps
 //!   name any model of the port ([`crate::models::ModelKind`]: `model = "min_norm"`) and call
@@ -84,7 +84,7 @@ use plotters::prelude::*;
 use crate::error::{Error, Result};
 pub(crate) use crate::figures::contours::{grid_lines, grid_polygons};
 use axes::DrawResult;
-pub use builtin::SCENE_KEYS;
+pub(crate) use builtin::SCENE_KEYS;
 pub use builtin::scene_names as builtin_scene_names;
 pub(crate) use data::DataFile;
 pub(crate) use kinds::Chart;
@@ -144,8 +144,8 @@ pub struct Rendered {
     /// The data behind the chart.
     pub data: DataFile,
     /// A map's cells as long-format CSV (one row per cell), beside its JSON: written to its
-    /// file as it is made ([`Cells::write`]), never held whole in memory.
-    pub cells: Option<Cells>,
+    /// file as it is made ([`CellsCsv::write`]), never held whole in memory.
+    pub cells: Option<CellsCsv>,
     /// What the gallery's read-off needs, as compact JSON (see `charts/readoff.rs`); None for kinds
     /// without a read-off.
     pub read_off: Option<String>,
@@ -153,9 +153,9 @@ pub struct Rendered {
 
 /// A map's cells CSV, made from its computed chart when it is written.
 #[derive(Clone)]
-pub struct Cells(std::sync::Arc<Chart>);
+pub struct CellsCsv(std::sync::Arc<Chart>);
 
-impl Cells {
+impl CellsCsv {
     /// The file extension.
     pub const EXTENSION: &str = "csv";
 
@@ -173,13 +173,13 @@ impl Cells {
     }
 }
 
-impl std::fmt::Debug for Cells {
+impl std::fmt::Debug for CellsCsv {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("Cells(..)")
+        f.write_str("CellsCsv(..)")
     }
 }
 
-impl PartialEq for Cells {
+impl PartialEq for CellsCsv {
     fn eq(&self, other: &Self) -> bool {
         std::sync::Arc::ptr_eq(&self.0, &other.0) || self.to_bytes() == other.to_bytes()
     }
@@ -216,14 +216,14 @@ pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
 /// that writes files writes the cells CSV (megabytes, the longest file) there, beside the
 /// drawing instead of after it (`cargo bench --bench render` times `render fig3`). An error of
 /// the drawing comes before one of `cells_to`.
-pub fn render_with(
+pub(crate) fn render_with(
     scene: &Scene,
     formats: Formats,
-    cells_to: &(dyn Fn(&Cells) -> Result<()> + Sync),
+    cells_to: &(dyn Fn(&CellsCsv) -> Result<()> + Sync),
 ) -> Result<Rendered> {
     style::init_fonts();
     let chart = std::sync::Arc::new(Chart::of_scene(scene)?);
-    let cells = chart.cells().is_some().then(|| Cells(chart.clone()));
+    let cells = chart.cells().is_some().then(|| CellsCsv(chart.clone()));
     let (w, h) = (scene.size.width_px, scene.size.height_px);
     let draw_err = |m: String| Error::Draw {
         scene: scene.name.clone(),

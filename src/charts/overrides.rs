@@ -44,7 +44,7 @@ impl FromStr for Setting {
             .replace('_', "")
             .parse::<f64>()
             .ok()
-            .and_then(|v| crate::config::float_range_problem(raw, v))
+            .and_then(|v| crate::settings::decl::float_range_problem(raw, v))
         {
             return Err(format!("{key} = {} {problem}", crate::error::cut(raw)));
         }

@@ -1,4 +1,4 @@
-//! Series told apart (issue 18): every curve and point set of a chart differs from every other
+//! Series told apart: every curve and point set of a chart differs from every other
 //! by what it looks like, in colour and in the print style's greys alike.
 //!
 //! A chart's legend shows each drawn series' sample (the legend names no line that is not
@@ -86,7 +86,7 @@ fn clash(a: Look, b: Look) -> Option<&'static str> {
     }
 }
 
-/// Regression (issue 18): integration-error drew radau5's curves in one black solid line told
+/// Regression: integration-error drew radau5's curves in one black solid line told
 /// apart by their markers only, fig6 and vlocator-optimum series differed only by marker, and
 /// fig5 had two legend entries in the same thin blue dash. For every built-in scene in both
 /// inks, no two series share their look, and no two lines differ only by their markers.

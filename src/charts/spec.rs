@@ -62,8 +62,8 @@ impl Default for Size {
 }
 
 /// The smallest layout (`width_px / scale` x `height_px / scale`, px) of each chart kind at
-/// which no two texts of its built-in scenes overlap and none leaves the picture (issue 18;
-/// `layout_tests::texts_at_the_smallest_size` asserts it). Measured by drawing every built-in
+/// which no two texts of its built-in scenes overlap and none leaves the picture
+/// (`layout_tests::texts_at_the_smallest_size` asserts it). Measured by drawing every built-in
 /// scene on a 100 px grid of sizes; below these, 400 x 300 px gave up to thousands of
 /// overlaps (stability-matrix 3901). Kinds not listed keep 400 x 300.
 pub const MIN_LAYOUT_PX: &[(&str, (u32, u32))] = &[
@@ -541,7 +541,7 @@ mod tests {
         );
     }
 
-    /// Regression (issue 13): inside `[chart]`, an internally tagged enum, serde kept no path,
+    /// Regression: inside `[chart]`, an internally tagged enum, serde kept no path,
     /// so a wrong type named only `chart`; now every kind's keys are named with their path,
     /// line and value, as the other sections' are.
     #[test]

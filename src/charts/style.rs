@@ -249,8 +249,8 @@ impl Marker {
 }
 
 /// The colour of a line drawn with markers on it: the marker's, so that line and markers read
-/// as one series and two such lines differ by colour, not by their markers alone (issue 18:
-/// integration-error's radau5 and min-norm curves were both black solid lines).
+/// as one series and two such lines differ by colour, not by their markers alone
+/// (integration-error's radau5 and min-norm curves were both black solid lines).
 pub fn marked_line_color(marker: Marker) -> RGBColor {
     marker.color()
 }

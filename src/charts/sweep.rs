@@ -15,8 +15,8 @@ use super::readoff;
 use super::style::{self, LineKind, Marker};
 use super::sweep_band;
 use super::{axis_label, scene_subtitle_with};
-use crate::figures::sweep::{Curve, Series, SweepData, SweepPanel, SweepSettings};
-use crate::figures::sweep_layers::SweepLayer;
+use crate::figures::sweep::{SweepData, SweepSettings};
+use crate::figures::sweep_layers::{Curve, Series, SweepLayer, SweepPanel};
 use crate::grid::{AxisScale, GridParam};
 use crate::scene::JamStatus;
 

@@ -8,7 +8,7 @@ use super::axes::{self, DrawResult, PlotAxis};
 use super::legend::{LegendEntry, Swatch};
 use super::style::BAND_FILL;
 use crate::figures::band::BandRow;
-use crate::figures::sweep::SweepPanel;
+use crate::figures::sweep_layers::SweepPanel;
 
 /// Shades the band in `panel`: one polygon per run of swept values with an interval, so a
 /// stretch where nothing can jam on the palm stays white.
@@ -58,7 +58,7 @@ pub fn legend_entry(rows: &[BandRow], label: &str) -> Option<LegendEntry> {
 
 #[cfg(test)]
 mod tests {
-    /// The legend never names a line that is not drawn: with mu 0.12 to 0.3 on the issue's
+    /// The legend never names a line that is not drawn: with mu 0.12 to 0.3 on the 25 mm
     /// shaft, the latest-jam corner (mu = 0.12) lies past the 80 mm palm at every push from
     /// 10 to 100 N, so its edge draws nothing; it kept a legend entry ("latest jam; no jam past
     /// the palm's end ...") beside no line. Now the shade's entry says it runs to the palm's end.
@@ -73,7 +73,7 @@ mod tests {
         use crate::figures::{Figure, Input};
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("charts");
         let mut scene: Scene = load_scene(&dir, "fig7b").expect("fig7b loads");
-        scene.params = crate::uncertain::shaft_25mm();
+        scene.params = crate::uncertain::shaft::shaft_25mm();
         let ChartSpec::Sweep(mut spec) = scene.chart.clone() else {
             panic!("fig7b is a sweep")
         };

@@ -40,7 +40,7 @@ fn fig3_reads_off_the_errata_values() {
         "{t} deg, {x} mm"
     );
     assert_eq!(r["mu"].as_f64(), Some(0.4));
-    // >= 400 x 400 cells, as the issue asks.
+    // >= 400 x 400 cells, fine enough to read the boundary off.
     let m = &doc["cells"];
     assert!(m["nx"].as_u64().unwrap() >= 400 && m["ny"].as_u64().unwrap() >= 400);
     assert_eq!(doc["cells_file"], "fig3.csv");
@@ -293,7 +293,7 @@ fn every_scene_makes_only_the_model_calls_it_draws() {
 }
 
 /// fig4's trace converges at the closed form's theta_jam, fig5's jam lies within 1.5 % of
-/// r/mu = 25 mm (issue 4's bar for the defaults), as their labels say.
+/// r/mu = 25 mm (the accuracy asked of the dynamics at the defaults), as their labels say.
 #[test]
 fn fig4_and_fig5_draw_the_jam_of_the_paper_case() {
     let fig4 = load_scene(&charts_dir(), "fig4").unwrap();
@@ -331,8 +331,13 @@ fn rolling_points_lie_on_the_rigid_limit() {
     let ChartSpec::Sweep(spec) = &scene.chart else {
         panic!("fig6 is a sweep")
     };
-    let series =
-        sweep_layers::series(SweepLayer::MinNormRolling, spec, &scene.input(), &Live).unwrap();
+    let series = sweep_layers::series(
+        SweepLayer::MinNormRolling,
+        &spec.axis,
+        &scene.input(),
+        &Live,
+    )
+    .unwrap();
     let mut worst: f64 = 0.0;
     for p in &series[0].points {
         let s = crate::statics::solve(&scene.params.with_mu(p.at));
@@ -391,7 +396,7 @@ fn a_sweep_layer_that_failed_at_some_points_names_them() {
         ..Counting::default()
     };
     for layer in [SimulationMotion, SimulationForce] {
-        let s = &sweep_layers::series(layer, spec, &scene.input(), &failing).unwrap()[0];
+        let s = &sweep_layers::series(layer, &spec.axis, &scene.input(), &failing).unwrap()[0];
         let note = s.callout.as_deref().unwrap_or_default();
         assert!(
             note.contains("no answer at μ = 0.175 ("),
@@ -405,7 +410,7 @@ fn a_sweep_layer_that_failed_at_some_points_names_them() {
         );
     }
     // Where the model answers everywhere there is no note.
-    let s = &sweep_layers::series(SimulationMotion, spec, &scene.input(), &Live).unwrap()[0];
+    let s = &sweep_layers::series(SimulationMotion, &spec.axis, &scene.input(), &Live).unwrap()[0];
     assert_eq!(s.callout, None);
 }
 
@@ -420,8 +425,8 @@ fn mu_at(path: &[serde_json::Value], ratio: f64) -> Option<f64> {
     })
 }
 
-/// Issue 18: the universal chart read as a designer reads it, from its iso-lines alone: the
-/// shaft of the issue (mu 0.27, r 12 mm, F 150 N, m 1 kg) lies between two 1-degree lines;
+/// The universal chart read as a designer reads it, from its iso-lines alone: the
+/// example part (mu 0.27, r 12 mm, F 150 N, m 1 kg) lies between two 1-degree lines;
 /// interpolating between them gives theta_jam within 0.1 deg of the closed form (31.2 deg) and
 /// x_jam = r cot(theta_jam / 2) within 1 % (43.0 mm). The same chart serves another part with
 /// the same mu and F / (m g): the lines do not move.
@@ -512,7 +517,7 @@ fn the_universal_chart_reads_back_the_closed_form_for_any_part() {
     );
 }
 
-/// Regression (issue 18): a jam map shaded the cells the palm cannot reach as JAM. On a 40 mm
+/// Regression: a jam map shaded the cells the palm cannot reach as JAM. On a 40 mm
 /// palm (r = 10 mm) every palm angle below 2 atan(r / L) = 28.07 deg puts the contact past the
 /// palm's end: those cells are `beyond_reach` in the CSV, the others jam or slide by the
 /// margin's sign.

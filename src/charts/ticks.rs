@@ -146,7 +146,7 @@ pub fn adaptive_ticks(
         let on_major = ((tick / major).round() * major - tick).abs() <= 1e-6 * minor;
         // Where the step grows (2 to 5 at 24 on fig3's log axis, 1 to 2 at 10 on universal's)
         // the first multiple of the new step can lie one old step from the last label, half
-        // the room asked for, and the two overlapped (issue 18). Of the two the rounder keeps
+        // the room asked for, and the two overlapped. Of the two the rounder keeps
         // its label, so "10" stays. Labels of one step are a step apart, at least `major_px`
         // less the density's drift over a step: 3/4 of it flags only the crowded pair.
         let crowded = t
@@ -300,7 +300,7 @@ mod tests {
         );
     }
 
-    /// Regression (issue 18): where the labelled step of a vertical log axis grows (2 to 5,
+    /// Regression: where the labelled step of a vertical log axis grows (2 to 5,
     /// 1 to 2) the first tick of the new step could sit one old step from the last label:
     /// "24" and "25" 13 px apart on fig3 at 1000 x 800, "9" and "10" on the universal chart.
     /// Drawn at every length from 200 to 1600 px, no two labels of axes like fig3's and the

@@ -13,7 +13,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axes::{self, DrawResult, PlotAxis};
 use super::collide::PxBox;
-use super::colorbar::ColorBar;
+use super::colorbar::{self, ColorBar};
 use super::contour_map::{at_height, level_text};
 use super::legend::{self, LegendEntry, Swatch};
 use super::picture::Picture;
@@ -126,7 +126,7 @@ impl Picture for Universal {
                 .collect(),
             title: "θ_jam (deg), in brackets x_jam / r".into(),
         };
-        let chart = axes::band_map(root, &x, &y, &entries, &self.bands, &colors, &bar)?;
+        let chart = colorbar::band_map(root, &x, &y, &entries, &self.bands, &colors, &bar)?;
         let area = chart.plotting_area();
         for ring in &self.held {
             area.draw(&Polygon::new(ring.clone(), HELD_FILL.filled()))?;
@@ -267,7 +267,7 @@ impl Universal {
         let (px, py) = chart.plotting_area().get_pixel_range();
         let inside = |at: (i32, i32)| px.contains(&at.0) && py.contains(&at.1);
         // A label whose text would overlap one already set is left out: over many decades of
-        // F / (m g) the lines crowd together near the bottom (issue 18's layout test).
+        // F / (m g) the lines crowd together near the bottom (the layout tests' awkward scenes).
         let mut placed: Vec<PxBox> = Vec::new();
         // A label on a line at the plot's left edge is moved right until it clears the edge,
         // where the y axis' tick labels lie (a line there over 12 decades met "10⁰").

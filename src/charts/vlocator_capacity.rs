@@ -10,7 +10,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
-use super::colorbar::ColorBar;
+use super::colorbar::{self, ColorBar};
 use super::legend::{self, LegendEntry, Swatch};
 use super::picture::Picture;
 use super::style::{self, INK, LineKind, PAPER};
@@ -129,7 +129,7 @@ impl Picture for VlocatorCapacity {
             title: "holding capacity P_max (multiples of W)".into(),
         };
         colors.push(PAPER);
-        let chart = axes::band_map(root, &x, &y, &entries, &self.bands, &colors, &bar)?;
+        let chart = colorbar::band_map(root, &x, &y, &entries, &self.bands, &colors, &bar)?;
         let area = chart.plotting_area();
         for p in &self.unbounded_edge {
             style::draw_line(area, p, LineKind::Dashed, INK)?;

@@ -524,12 +524,15 @@ fn map_csv(m: &MapCostReport) -> Result<String> {
 pub(crate) fn to_csv<T: Serialize>(rows: impl Iterator<Item = T>) -> Result<String> {
     let mut w = csv::Writer::from_writer(Vec::new());
     for row in rows {
-        w.serialize(row)
-            .map_err(|e| Error::Unsupported(format!("writing CSV: {e}")))?;
+        w.serialize(row).map_err(|e| Error::Encode {
+            what: "CSV",
+            detail: e.to_string(),
+        })?;
     }
-    let bytes = w
-        .into_inner()
-        .map_err(|e| Error::Unsupported(format!("writing CSV: {e}")))?;
+    let bytes = w.into_inner().map_err(|e| Error::Encode {
+        what: "CSV",
+        detail: e.to_string(),
+    })?;
     Ok(String::from_utf8(bytes).expect("the csv crate writes UTF-8 from UTF-8 fields"))
 }
 
@@ -553,7 +556,7 @@ mod tests {
         assert_eq!(map, Some(MapCostSettings::default()));
     }
 
-    /// Issue 20, item 5: the floors table took each curve's smallest error against the physics
+    /// The floors table took each curve's smallest error against the physics
     /// whatever its integration error, so a loose tolerance that landed near the reference by
     /// luck was listed as the floor (RADAU5 on a 1 um contact at rtol 1e-3: 43.9 um from the
     /// reference with an integration error of 149 um). Now only rows whose integration error is

@@ -7,8 +7,8 @@ use clap::{Args, ValueEnum};
 use crate::config::Config;
 use crate::error::Result;
 use crate::models::ModelKind;
+pub use crate::settings::decl::{parse_count, parse_f64};
 use crate::settings::flags::{Flags, SceneSet};
-pub use crate::settings::flags::{parse_count, parse_f64};
 use crate::uncertain::UncertainSet;
 
 /// Scene flags over `--config FILE`: each flag is a declared setting of `[scene]`
@@ -142,6 +142,16 @@ pub enum OutputFormat {
     /// A short human summary with units.
     Text,
     /// One JSON object: {"inputs": {...}, "results": [...]}.
+    Json,
+}
+
+/// Output of `vlocator`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum VlocatorFormat {
+    /// A short human summary with units.
+    Text,
+    /// One JSON object: {"verdict", "self_locking", "locking_needed", "friction_held",
+    /// "forces", "capacity", "optimum", "inputs"}.
     Json,
 }
 

@@ -150,7 +150,7 @@ pub fn run(args: &DesignArgs) -> Result<String> {
     };
     // Simulated on a palm twice the closed form's length, so that a jam past this palm's end
     // is still located: the force drive's disc runs on past the closed form's jam (112.6 mm
-    // against 99.3 mm for the shaft at mu 0.12, 40 N), and 10 % more palm lost it.
+    // against 99.3 mm for the 25 mm shaft at mu 0.12, 40 N), and 10 % more palm lost it.
     let check_latest_jam = d
         .palm_length_keeping_jams_on_mm
         .map(|l| {

@@ -1,4 +1,4 @@
-//! Help texts against the code (issue 22): every documented default is the code's `Default`,
+//! Help texts against the code: every documented default is the code's `Default`,
 //! every scene a help text names exists, and `vlocator --help` describes the JSON it prints.
 
 use clap::{CommandFactory, Parser};
@@ -241,8 +241,8 @@ fn vlocator_help_describes_the_json_it_prints() {
     );
 }
 
-/// `sweep --help`'s parameter list is made from `GridParam::all()` (issue 18: written by
-/// hand, it missed palm_offset_mm and push_ratio until a commit added them): every parameter
+/// `sweep --help`'s parameter list is made from `GridParam::all()` (written by
+/// hand, it once missed palm_offset_mm and push_ratio): every parameter
 /// a sweep takes is listed on a line of its own with its quantity and unit, and the palm
 /// angle, which a sweep cannot vary, is not.
 #[test]
@@ -350,7 +350,7 @@ fn documented_value(sub: &clap::Command, arg: &clap::Arg) -> Option<String> {
         .map(String::from)
 }
 
-/// Issue 22 (help texts that match the tool): the first test compares the texts with the
+/// Help texts must match the tool: the first test compares the texts with the
 /// code's `Default` structs, but a command could ignore them (a clap default, a constant
 /// unset-count, a range's handling of the other flags). Every flag of `solve` (point, range and
 /// distribution: `--samples`, `--seed`, `--quantiles`), `design` and `vlocator` (point and

@@ -231,7 +231,7 @@ fn reproduce_command(a: &RenderArgs, name: &str) -> String {
 }
 
 /// A map's cells CSV is written to its file as it is made.
-impl Writes for charts::Cells {
+impl Writes for charts::CellsCsv {
     fn write_into(&self, out: &mut dyn std::io::Write) -> std::io::Result<()> {
         self.write(out)
     }
@@ -248,7 +248,7 @@ fn files_of<'a>(out: &Path, r: &'a Rendered) -> Vec<(PathBuf, Content<'a>)> {
     let all = [
         (r.data.extension, bytes(Some(&r.data.bytes))),
         (
-            charts::Cells::EXTENSION,
+            charts::CellsCsv::EXTENSION,
             r.cells.as_ref().map(|c| Content::Writer(c)),
         ),
         ("svg", bytes(r.svg.as_ref())),
@@ -342,7 +342,7 @@ fn render_scenes(
         .map(|i| {
             let r = match staging {
                 Some((set, out)) => charts::render_with(&scenes[i], formats, &|cells| {
-                    let path = file_path(out, &scenes[i].name, charts::Cells::EXTENSION);
+                    let path = file_path(out, &scenes[i].name, charts::CellsCsv::EXTENSION);
                     set.stage(Output {
                         path: &path,
                         content: Content::Writer(cells),

@@ -10,6 +10,7 @@ use serde::Serialize;
 use super::args::{ModelChoice, OutputFormat, SceneArgs};
 use super::dynamics::{self, DynamicsArgs};
 use super::min_norm;
+use super::solve_range::{self, DistArgs};
 use crate::config::Config;
 use crate::design::LeastPush;
 use crate::error::{Error, Result};
@@ -38,7 +39,7 @@ pub struct SolveArgs {
     #[arg(long, value_enum, default_value_t = ModelChoice::One(ModelKind::Statics))]
     pub model: ModelChoice,
     #[command(flatten)]
-    pub distribution: super::solve_range::DistArgs,
+    pub distribution: DistArgs,
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
     pub format: OutputFormat,
@@ -89,16 +90,31 @@ pub fn run(a: &SolveArgs) -> Result<String> {
     let (config, uncertain) = a
         .scene
         .resolve_uncertain(&[a.dynamics.overrides(), a.min_norm.overrides()])?;
-    super::solve_range::check_distribution_flags(&a.distribution, &uncertain)?;
+    solve_range::check_distribution_flags(&a.distribution, &uncertain)?;
     if !uncertain.is_empty() {
-        return super::solve_range::run(a, &config, &uncertain);
+        if a.series.is_some() || a.trace {
+            return Err(Error::Conflict {
+                flag: if a.trace { "--trace" } else { "--series" },
+                message: "--series and --trace follow one push; give single values with them, \
+                          not a range"
+                    .into(),
+            });
+        }
+        return solve_range::run(
+            a.model.models(),
+            &a.distribution,
+            a.format,
+            &config,
+            &uncertain,
+        );
     }
     let kinds = a.model.models();
     if let Some(path) = &a.series {
         if !kinds.contains(&ModelKind::Dynamics) {
-            return Err(Error::Unsupported(
-                "--series needs the dynamics: add --model dynamics".into(),
-            ));
+            return Err(Error::Conflict {
+                flag: "--series",
+                message: "--series needs the dynamics: add --model dynamics".into(),
+            });
         }
         // Before the simulation runs: a path that will be refused is refused now, and a series
         // too long to hold is refused by its estimate.

@@ -8,15 +8,14 @@ use clap::Args;
 use serde::Serialize;
 
 use super::args::{OutputFormat, parse_count, parse_f64};
-use super::solve::SolveArgs;
 use crate::config::Config;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::models::{self, ModelKind};
 use crate::numbers::Num;
 use crate::scene::{JamStatus, SceneParams};
 use crate::uncertain::UncertainSet;
 use crate::uncertain::dist::{self, DistAnswer, DistMethod, DistQuestion, Estimate};
-use crate::uncertain::range::{self, Corner, End, InputEnds, Method, RangeAnswer, Reached};
+use crate::uncertain::range::{self, Corner, End, InputEnds, RangeAnswer, RangeMethod, Reached};
 
 /// Flags of `solve` for distributed inputs (ignored without one). Each takes a negative number
 /// as its value, to refuse it naming the flag (clap otherwise read `--samples -1` as an unknown
@@ -145,21 +144,19 @@ struct Document<'a> {
     results: Vec<Record>,
 }
 
-/// Answers the box of `uncertain` around `config` with every model `a` asks for.
-pub(super) fn run(a: &SolveArgs, config: &Config, uncertain: &UncertainSet) -> Result<String> {
-    if a.series.is_some() || a.trace {
-        return Err(Error::Unsupported(
-            "--series and --trace follow one push; give single values with them, not a range"
-                .into(),
-        ));
-    }
-    let results = a
-        .model
-        .models()
+/// Answers the box of `uncertain` around `config` with each of `models`, in `format`.
+pub(super) fn run(
+    models: Vec<ModelKind>,
+    distribution: &DistArgs,
+    format: OutputFormat,
+    config: &Config,
+    uncertain: &UncertainSet,
+) -> Result<String> {
+    let results = models
         .into_iter()
-        .map(|kind| answer(kind, config, uncertain, &a.distribution))
+        .map(|kind| answer(kind, config, uncertain, distribution))
         .collect::<Result<Vec<Record>>>()?;
-    Ok(match a.format {
+    Ok(match format {
         OutputFormat::Json => {
             let doc = Document {
                 inputs: &config.scene,
@@ -241,10 +238,10 @@ fn text(p: &SceneParams, uncertain: &UncertainSet, results: &[Record]) -> String
     for r in results {
         let a = &r.range;
         let how = match a.method {
-            Method::Corners => "exact: theta_jam is monotone in every input, so the box is \
+            RangeMethod::Corners => "exact: theta_jam is monotone in every input, so the box is \
                                 answered from its corners"
                 .to_string(),
-            Method::Sampled { samples } => format!(
+            RangeMethod::Sampled { samples } => format!(
                 "sampled at {samples} points of a grid over the box: the range of the samples, \
                  not a bound"
             ),
@@ -260,8 +257,8 @@ fn text(p: &SceneParams, uncertain: &UncertainSet, results: &[Record]) -> String
             v.join(", ")
         };
         let point = match a.method {
-            Method::Corners => "corner",
-            Method::Sampled { .. } => "sample",
+            RangeMethod::Corners => "corner",
+            RangeMethod::Sampled { .. } => "sample",
         };
         match (a.theta_jam_deg, a.x_jam_mm, a.reached) {
             (Some([t0, t1]), Some([x0, x1]), Some([low, high])) => {

@@ -87,8 +87,8 @@ pub fn run(a: &StabilityArgs) -> Result<String> {
         .iter()
         .find(|r| r.numbers().iter().any(|v| !v.is_finite()))
     {
-        return Err(Error::Unsupported(format!(
-            "a non-finite number in case {} by {} {}: {r:?} (a defect: please report it)",
+        return Err(Error::Defect(format!(
+            "a non-finite number in case {} by {} {}: {r:?}",
             r.case,
             model_name(r.model),
             r.method

@@ -12,8 +12,8 @@ use crate::charts::spec::Size;
 use crate::charts::{self, ChartSpec, Scene, axis_label};
 use crate::error::{Error, Result};
 use crate::figures::contour_map::ContourMapSettings;
-use crate::figures::sweep::{SweepPanel, SweepSettings};
-use crate::figures::sweep_layers::SweepLayer;
+use crate::figures::sweep::SweepSettings;
+use crate::figures::sweep_layers::{SweepLayer, SweepPanel};
 
 use crate::grid::{AxisScale, GridAxis, GridParam};
 use crate::models::ModelKind;

@@ -4,7 +4,7 @@
 //! rayon's global pool panics on first use when a thread cannot be spawned (`ulimit -u`, an
 //! address-space limit too small for the stacks), and a failed global pool cannot be built
 //! again. So the threads are started as a local pool first; only if that fails is the global
-//! pool made of the calling thread alone, which spawns nothing (issue 23, class 3), once the
+//! pool made of the calling thread alone, which spawns nothing, once the
 //! threads that did start have exited (their stacks freed).
 
 use rayon::{ThreadPool, ThreadPoolBuilder};
@@ -45,7 +45,7 @@ pub(crate) fn start() -> Result<Pool> {
     // The threads are spawned here rather than by rayon so that, when one cannot be, those that
     // did start are joined before the command runs: rayon tells them to stop but does not wait,
     // and their stacks (8 MiB each) held the address space the one-thread run then needed (an
-    // address-space limit aborted it in 3 runs of 5, issue 23 class 9).
+    // address-space limit aborted it in 3 runs of 5).
     let started = std::sync::Mutex::new(Vec::new());
     let threads = ThreadPoolBuilder::new()
         .num_threads(asked)

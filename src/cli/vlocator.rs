@@ -5,7 +5,8 @@ use std::fmt::Write;
 use clap::Args;
 use serde::Serialize;
 
-use super::args::parse_f64;
+use super::args::{VlocatorFormat, parse_f64};
+use super::vlocator_robust::{self, load_point};
 use crate::error::{Error, Result};
 use crate::locator::{
     self, Capacity, FlankForce, LocatorParams, LocatorSolution, OPT_MAX_DEG, OPT_MIN_DEG, Optimum,
@@ -50,16 +51,6 @@ pub struct VlocatorArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = VlocatorFormat::Text)]
     pub format: VlocatorFormat,
-}
-
-/// Output of `vlocator`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum VlocatorFormat {
-    /// A short human summary with units.
-    Text,
-    /// One JSON object: {"verdict", "self_locking", "locking_needed", "friction_held",
-    /// "forces", "capacity", "optimum", "inputs"}.
-    Json,
 }
 
 impl VlocatorArgs {
@@ -118,7 +109,7 @@ pub fn flag_for_key(key: &str) -> Option<&'static str> {
     })
 }
 
-/// The JSON document: the keys, then the inputs.
+/// The JSON document: the verdict, forces, capacity and optimum, then the inputs.
 #[derive(Serialize)]
 struct Report<'a> {
     verdict: &'static str,
@@ -137,7 +128,7 @@ pub fn run(args: &VlocatorArgs) -> Result<String> {
     if !uncertain.is_empty() {
         let given = (args.included_angle.is_some() || args.flank_angles.is_some())
             .then(|| p.included_angle_deg());
-        return super::vlocator_robust::run(&p, &uncertain, given, args.format);
+        return vlocator_robust::run(&p, &uncertain, given, args.format);
     }
     let s = locator::solve(&p)?;
     Ok(match args.format {
@@ -305,14 +296,6 @@ fn text(p: &LocatorParams, s: &LocatorSolution) -> String {
         );
     }
     out
-}
-
-/// Where the load acts: "at the centre" or "at the rim point 30 deg".
-pub(super) fn load_point(p: &LocatorParams) -> String {
-    match p.load_at_rim_deg {
-        Some(psi) => format!("at the rim point {} deg", Num(psi)),
-        None => "at the centre".to_string(),
-    }
 }
 
 /// Roundoff shows as 0.000, not -0.000 or 3e-17: below the printed digits of a force of order

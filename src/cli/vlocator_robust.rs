@@ -5,7 +5,7 @@ use std::fmt::Write;
 
 use serde::Serialize;
 
-use super::vlocator::VlocatorFormat;
+use super::args::VlocatorFormat;
 use crate::error::{Error, Result};
 use crate::locator::{
     BoxVerdict, DroppedLoad, LocatorParams, RobustBox, RobustDesign, lock_angle_deg, robust_design,
@@ -176,7 +176,7 @@ fn text(
     standard: &[GivenV],
 ) -> String {
     let mut out = String::new();
-    let at = super::vlocator::load_point(p);
+    let at = load_point(p);
     let flanks = match b.one_friction_range() {
         true => format!("mu {} (both flanks)", range(b.mu_left, "")),
         false => format!(
@@ -328,4 +328,12 @@ fn text(
         );
     }
     out
+}
+
+/// Where the load acts: "at the centre" or "at the rim point 30 deg".
+pub(super) fn load_point(p: &LocatorParams) -> String {
+    match p.load_at_rim_deg {
+        Some(psi) => format!("at the rim point {} deg", Num(psi)),
+        None => "at the centre".to_string(),
+    }
 }

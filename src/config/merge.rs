@@ -167,7 +167,7 @@ mod tests {
         assert_eq!((p.mu_ground, p.mu_palm), (0.2, 0.5));
     }
 
-    /// Regression (issue 13): a `[dynamics]` override of the wrong type said `invalid dynamics
+    /// Regression: a `[dynamics]` override of the wrong type said `invalid dynamics
     /// = invalid type: unit variant, expected string only`; an array stood in for a table.
     #[test]
     fn overrides_of_the_wrong_type_name_the_key_and_value() {

@@ -17,8 +17,28 @@ use serde::de::DeserializeOwned;
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
-use super::float_range_problem;
 use crate::error::{Error, Result, cut};
+use crate::settings::decl::float_range_problem;
+
+/// A hint where TOML refuses a value at byte `at` of `text` that is a range or a distribution
+/// written without quotes (`mu = 0.12:0.3`, which TOML reads as a broken number): what to
+/// write instead. Empty otherwise.
+fn unquoted_range_hint(text: &str, at: usize) -> String {
+    let line_start = text[..at.min(text.len())].rfind('\n').map_or(0, |i| i + 1);
+    let line = text[line_start..].lines().next().unwrap_or("");
+    let Some((key, value)) = line.split_once('=') else {
+        return String::new();
+    };
+    let value = value.split('#').next().unwrap_or("").trim();
+    let looks_uncertain = value.contains(':') || value.ends_with(')');
+    match looks_uncertain && !value.starts_with('"') && !value.starts_with('\'') {
+        true => format!(
+            " (a range or a distribution is a string in a file: {} = \"{value}\")",
+            key.trim()
+        ),
+        false => String::new(),
+    }
+}
 
 /// Parses TOML text into `T` (see the module doc); errors carry file, line and column.
 pub fn parse_toml<T: DeserializeOwned + Serialize>(text: &str, path: &Path) -> Result<T> {
@@ -31,7 +51,12 @@ pub fn parse_toml<T: DeserializeOwned + Serialize>(text: &str, path: &Path) -> R
             message: message.trim().replace('\n', " "),
         }
     };
-    let mut doc = DeTable::parse(text).map_err(|e| at(e.span(), cut_quotes(e.message())))?;
+    let mut doc = DeTable::parse(text).map_err(|e| {
+        let hint = e
+            .span()
+            .map_or(String::new(), |s| unquoted_range_hint(text, s.start));
+        at(e.span(), cut_quotes(e.message()) + &hint)
+    })?;
     expand_aliases(doc.get_mut(), "");
     if let Some((key, span, problem)) = float_problems(doc.get_ref(), "") {
         return Err(at(
@@ -304,4 +329,26 @@ fn line_column(text: &str, offset: usize) -> (usize, usize) {
     let line = before.matches('\n').count() + 1;
     let column = before.len() - before.rfind('\n').map_or(0, |i| i + 1) + 1;
     (line, column)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `mu = 0.12:0.3` unquoted said only "invalid float, expected nothing".
+    #[test]
+    fn an_unquoted_range_in_a_file_says_to_quote_it() {
+        let e = parse_toml::<toml::Table>("[scene]\nmu = 0.12:0.3\n", Path::new("s.toml"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("s.toml:2:") && e.contains("mu = \"0.12:0.3\""),
+            "{e}"
+        );
+        let e = parse_toml::<toml::Table>("mu = normal(0.2,0.03)\n", Path::new("s.toml"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("mu = \"normal(0.2,0.03)\""), "{e}");
+        assert_eq!(unquoted_range_hint("mu = 0.2x\n", 5), "");
+    }
 }

@@ -78,7 +78,7 @@ impl ImpactLaw {
     pub fn period_s(&self, mass_kg: f64, delta: f64) -> f64 {
         let (_, stiffness_n_per_mm) = self.elastic(delta);
         if stiffness_n_per_mm > 0.0 {
-            std::f64::consts::TAU * (mass_kg / (1e3 * stiffness_n_per_mm)).sqrt()
+            std::f64::consts::TAU * (mass_kg / (super::MM_PER_M * stiffness_n_per_mm)).sqrt()
         } else {
             0.0
         }
@@ -223,7 +223,7 @@ mod tests {
                 f.d_rate
             );
         }
-        // 200 N at about 59.3 um: the "about 60 um" of the issue.
+        // 200 N at about 59.3 um: the "about 60 um" the docs quote.
         let delta_200 = (200.0_f64 / 1e5).powf(1.0 / 2.2);
         assert!((delta_200 - 0.0593).abs() < 5e-5, "{delta_200}");
     }

@@ -51,6 +51,10 @@
 use super::contact::FrictionLaw;
 use super::system::System;
 
+/// The palm turn (deg) after a candidate jam within which the disc must not recover; a held
+/// disc must stay held over the same turn (the jam detector's confirmation window).
+pub const CONFIRM_DEG: f64 = 0.25;
+
 /// The palm's normal push (N) that slides a disc of weight `weight_n` (N) at palm angle `theta`
 /// (rad) against the frictions `mu_ground` and `mu_palm` at both contacts: the corrected Eq. 1
 /// solved for the push (module docs), infinite at and below the self-locking wedge.
@@ -82,8 +86,8 @@ impl HeldWatch {
             return false;
         }
         let delta = sys.geometry(y).penetration;
-        let window = (super::jam::CONFIRM_DEG.to_radians() / sys.omega)
-            .max(2.0 * sys.impact.period_s(sys.mass, delta));
+        let window =
+            (CONFIRM_DEG.to_radians() / sys.omega).max(2.0 * sys.impact.period_s(sys.mass, delta));
         t >= *self.until.get_or_insert(t + window)
     }
 

@@ -41,12 +41,9 @@
 //! statics say so ([`super::held`]), and the detector then stops the run after the same
 //! confirmation window instead of letting the regularised disc creep to the end of the push.
 
-use super::held;
+use super::held::{self, CONFIRM_DEG};
 use super::integrators::{Control, DenseStep, Observer};
 use super::system::System;
-
-/// The palm turn (deg) after a candidate jam within which the disc must not recover.
-pub const CONFIRM_DEG: f64 = 0.25;
 
 /// Safety factor on the flight time of a bounce in the confirmation window.
 const BOUNCE_FACTOR: f64 = 1.5;

@@ -81,6 +81,10 @@ mod verdict;
 
 use serde::Serialize;
 
+/// mm per m: the simulations work in mm, s, kg and N, so a force per mass in N/kg (= m/s^2)
+/// is `MM_PER_M` times that many mm/s^2, and a stiffness in N/mm is `MM_PER_M` times as many N/m.
+pub(crate) const MM_PER_M: f64 = 1000.0;
+
 pub use integrators::Failure;
 pub(crate) use jam::SeriesRow;
 pub use params::{
@@ -107,7 +111,7 @@ pub(crate) const MAX_STEP_DEG: f64 = 1.0;
 /// at mu = 0.15 and 90 deg/s; 3.68 % at mu = 0.1 and 90 deg/s, flagged), and 0.36-0.56 % with
 /// the force drive, whose jam is where the disc comes to rest (`tests/force_drive_rest.rs`,
 /// `model_spread_of_the_default_contact` prints them). The
-/// cases of issue 10 (a palm at 3600 deg/s on soft contacts, a 1e4 kg disc, a 1 N/mm contact,
+/// extreme cases (a palm at 3600 deg/s on soft contacts, a 1e4 kg disc, a 1 N/mm contact,
 /// no ground friction on a stiff contact) lie further off; no test prints their spread, so no
 /// figure is quoted.
 pub(crate) const MAX_MODEL_SPREAD: f64 = 0.035;
@@ -208,7 +212,7 @@ pub fn simulate(
     scene.validate()?;
     params.validate()?;
     params.validate_scene(scene)?;
-    if scene.start_angle_deg > 90.0 {
+    if scene.start_angle_deg > crate::models::MAX_START_ANGLE_DEG {
         return Ok(lifted_at_start(scene, params));
     }
     let mut out = simulate_checked(scene, params, series_dt_s);
@@ -380,7 +384,7 @@ fn compare_with_rigid(scene: &SceneParams, params: &DynamicsParams, out: &mut Dy
     }
     // Where the two contacts answer differently (a status of their own, not a failure), the
     // compliant answer is flagged: skipping the check there let a disc read as never moving
-    // stand against a rigid disc pushed on to the lock-up (issue 20, item 2).
+    // stand against a rigid disc pushed on to the lock-up.
     let answers = |s: JamStatus| {
         matches!(
             s,

@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 use crate::scene::{SceneParams, finite_positive};
-use crate::settings::{Check, Decl, Kind};
+use crate::settings::decl::{Check, Decl, Kind};
 
 choice! {
     /// How the palm is driven.

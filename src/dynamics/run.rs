@@ -9,6 +9,7 @@ use super::system::System;
 use super::{
     CrossCheck, Drive, DynamicsParams, DynamicsSolution, MAX_STEP_DEG, Method, WEDGE_MARGIN,
 };
+use crate::dynamics::MM_PER_M;
 use crate::scene::{JamStatus, SceneParams};
 
 /// One run at the given tolerances, without the verification run. Parameters must be valid.
@@ -36,7 +37,7 @@ pub(super) fn run_once(
         v_stiction: params.friction.stiction_velocity_mm_s,
         palm_length: scene.palm_length_mm,
         after_jam: params.series.after_jam_s,
-        ground_decel: scene.mu_ground * scene.gravity_m_s2 * 1000.0,
+        ground_decel: scene.mu_ground * scene.gravity_m_s2 * MM_PER_M,
         series_dt: series_dt_s.filter(|dt| *dt > 0.0 && dt.is_finite()),
         rest_speed: (params.drive.mode == Drive::Force)
             .then(|| rest_speed_mm_s(params.friction.friction_velocity_mm_s)),
@@ -138,7 +139,7 @@ fn conclude(
     }
     // A disc reaching the wedge at the palm's speed v_geo coasts on, braked by the ground, for
     // up to v_geo^2 / (2 mu_g g): 0.05 mm at mu = 0.4, 36 mm at mu = 0.1 (omega = 30 deg/s).
-    let decel = scene.mu_ground * scene.gravity_m_s2 * 1000.0;
+    let decel = scene.mu_ground * scene.gravity_m_s2 * MM_PER_M;
     let coast = if decel > 0.0 {
         sys.geometric_speed(wedge).powi(2) / (2.0 * decel)
     } else {
@@ -274,7 +275,7 @@ fn run_nonsmooth(
     }
     // Held where it started: the jam is at the start (as the regularised model's "never armed").
     // A disc that moved by round-off, or (motion drive) by no more than the lock-up is located
-    // to, did not move (issue 20, item 1: `jams` at 10.0000 mm where nothing moved). A force
+    // to, did not move (`jams` at 10.0000 mm where nothing moved). A force
     // drive's first step or two of travel is kept: it halves with the step.
     let x_start = sys.touching_x(scene.start_angle_deg.to_radians());
     let moved_mm = (x - x_start).abs();

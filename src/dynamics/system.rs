@@ -29,13 +29,14 @@
 //!   speed drive with a force limit: it turns at omega until the push reaches the limit, then
 //!   stalls without backing off. The limit is on the normal force, so the palm's total push
 //!   N / cos(alpha_p) saturates at F while it slides, as in the closed form. It senses the whole
-//!   contact force, damping included (issue 20, item 3: sensing the elastic part alone let the
+//!   contact force, damping included (sensing the elastic part alone let the
 //!   first impact push 10 N against a 3.55 N limit); since the damping part depends on
 //!   theta_dot, theta_dot solves that equation at each evaluation (`force_drive`).
 
 use super::contact::{FrictionLaw, ImpactLaw, step};
 use super::integrators::OdeSystem;
 use super::params::{Drive, DynamicsParams};
+use crate::dynamics::MM_PER_M;
 use crate::scene::SceneParams;
 
 /// The system in the units of the state; built once per simulation.
@@ -244,8 +245,7 @@ impl System {
         let mut g_fa = scale(-mu_a * r_n.signum(), &g_rn);
         g_fa[2] -= dmu_a * r_n.abs();
 
-        // 1000: N/kg = m/s^2 = 1000 mm/s^2.
-        let k = 1000.0 / self.mass;
+        let k = MM_PER_M / self.mass;
         let accel = k * (p_x + f_a);
         if let Some(j) = jac {
             j[..3].copy_from_slice(&g_td);
@@ -347,15 +347,14 @@ impl System {
 /// residual(hi) <= 0).
 ///
 /// Why not plain bisection: it halves [-omega, 0] down to adjacent floats, some 60 to 110
-/// evaluations, and a force-driven simulation calls it at every evaluation of the
-/// right-hand side; it was the larger part of the `stability-matrix` chart's time (issue 21's
-/// profile). Newton steps from
-/// hi (bisection where a step would leave the bracket) take the bracket to its root in a
-/// few; once a step no longer moves, floats across the root are probed, so the bracket
-/// closes to adjacent floats as bisection's does. The answer is then bisection's last midpoint of that
-/// pair. Where the residual's rounding is monotone, this is bisection's answer bit for bit;
-/// where it is a staircase (1 - w(N) a few ulps, each ulp omega eps of residual) it may be
-/// another sign change within a few omega eps of it, as good a root (a test compares them).
+/// evaluations, and a force-driven simulation calls it at every evaluation of the right-hand side;
+/// it was the larger part of the `stability-matrix` chart's time, as profiled. Newton steps from hi
+/// (bisection where a step would leave the bracket) take the bracket to its root in a few; once a
+/// step no longer moves, floats across the root are probed, so the bracket closes to adjacent
+/// floats as bisection's does. The answer is then bisection's last midpoint of that pair. Where the
+/// residual's rounding is monotone, this is bisection's answer bit for bit; where it is a staircase
+/// (1 - w(N) a few ulps, each ulp omega eps of residual) it may be another sign change within a few
+/// omega eps of it, as good a root (a test compares them).
 fn rate_root(residual: impl Fn(f64) -> (f64, f64), mut lo: f64, mut hi: f64) -> f64 {
     if residual(lo).0 >= 0.0 {
         return lo;
@@ -483,7 +482,7 @@ mod tests {
     }
 
     /// Plain bisection of [lo, hi] to adjacent floats, with its number of evaluations: the
-    /// force drive's root finder before issue 21, the oracle of [`rate_root`].
+    /// force drive's former root finder, the oracle of [`rate_root`].
     fn bisection(residual: impl Fn(f64) -> (f64, f64), mut lo: f64, mut hi: f64) -> (f64, u32) {
         if residual(lo).0 >= 0.0 {
             return (lo, 1);
@@ -506,7 +505,7 @@ mod tests {
         }
     }
 
-    /// Issue 21, item 1: the force drive bisected its equation for theta_dot to round-off at
+    /// The force drive bisected its equation for theta_dot to round-off at
     /// every evaluation of the right-hand side, some 60 to 110 halvings, which made
     /// `System::evaluate` the larger part of the `stability-matrix` chart's time. Its Newton
     /// replacement must give bisection's answer bit for bit, across the force limit's band
@@ -639,7 +638,7 @@ mod tests {
             f.ground_normal,
             g.r_n_n
         );
-        let p_x = f.accel * scene.mass_kg / 1000.0 - f.ground_friction;
+        let p_x = f.accel * scene.mass_kg / MM_PER_M - f.ground_friction;
         assert!(
             (p_x - g.r_t_n).abs() < 1e-9 * g.r_t_n.abs(),
             "{p_x} vs {}",

@@ -19,9 +19,10 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::sweep::{SeriesPoint, SweepPanel};
+use super::Input;
+use super::sweep_layers::{Curve, Series, SeriesPoint, SweepPanel, closed_form, point};
 use crate::error::{Error, Result};
-use crate::grid::GridParam;
+use crate::grid::{GridAxis, GridParam};
 use crate::scene::{JamStatus, SceneParams};
 use crate::uncertain::{Uncertain, UncertainSet, range};
 
@@ -89,6 +90,31 @@ pub fn from_uncertain(
         latest: edges.apply(p, &box_answer.latest.values),
         label: format!("band over {}", label.join(", ")),
     }))
+}
+
+/// The band's two edges: the closed form at the earliest-jam corner and at the latest.
+pub(super) fn edges(axis: &GridAxis, scene: &Input, band: &Band) -> Result<[Series; 2]> {
+    let edge = |params, curve, which: &str| -> Result<Series> {
+        let at = Input {
+            params,
+            ..scene.clone()
+        };
+        Ok(Series {
+            curve,
+            // The band's own label is the shade's legend entry; an edge says which it is.
+            label: format!("band edge: {which}"),
+            points: closed_form(axis, &at, |v, s| SeriesPoint {
+                status: Some(s.status),
+                ..point(v, s.x_jam_mm, s.theta_jam_deg)
+            })?,
+            flat_names: None,
+            callout: None,
+        })
+    };
+    Ok([
+        edge(band.earliest, Curve::BandEarliest, "earliest jam")?,
+        edge(band.latest, Curve::BandLatest, "latest jam")?,
+    ])
 }
 
 /// The quantile of a distributed input at the band's lower edge (5 %; 95 % at the upper).

@@ -9,40 +9,12 @@ use serde::{Deserialize, Serialize};
 
 use super::band::{self, BandRow};
 use super::models::Models;
-use super::sweep_layers::{self, SweepLayer};
+use super::sweep_layers::{self, Curve, Series, SeriesPoint, SweepLayer, SweepPanel};
 use super::{DataFormat, Figure, FigureData, Input};
 use crate::csv_out::{Dec, dec, to_csv_with_header};
 use crate::error::{Error, Result};
 use crate::grid::{GridAxis, GridParam};
 use crate::scene::{JamStatus, SceneParams};
-
-/// A quantity plotted in one panel of a sweep.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SweepPanel {
-    /// x_jam in mm.
-    XJamMm,
-    /// theta_jam in deg.
-    ThetaJamDeg,
-}
-
-impl SweepPanel {
-    /// The quantity's name in the data (`x_jam_mm`, `theta_jam_deg`).
-    pub fn key(self) -> &'static str {
-        match self {
-            SweepPanel::XJamMm => "x_jam_mm",
-            SweepPanel::ThetaJamDeg => "theta_jam_deg",
-        }
-    }
-
-    /// The quantity at point `p`.
-    pub fn value(self, p: &SeriesPoint) -> Option<f64> {
-        match self {
-            SweepPanel::XJamMm => p.x_jam_mm,
-            SweepPanel::ThetaJamDeg => p.theta_jam_deg,
-        }
-    }
-}
 
 /// `[chart]` keys of `kind = "sweep"`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -116,7 +88,7 @@ impl Figure for SweepSettings {
             ));
         }
         for l in &self.layers {
-            sweep_layers::validate(*l, self)?;
+            sweep_layers::validate(*l, &self.axis)?;
         }
         Ok(())
     }
@@ -133,11 +105,11 @@ impl Figure for SweepSettings {
     fn compute(&self, input: &Input, models: &dyn Models) -> Result<SweepData> {
         let mut series = Vec::new();
         for l in &self.layers {
-            series.extend(sweep_layers::series(*l, self, input, models)?);
+            series.extend(sweep_layers::series(*l, &self.axis, input, models)?);
         }
         let mut rows = Vec::new();
         if let Some(band) = &self.band {
-            let [earliest, latest] = sweep_layers::band(self, input, band)?;
+            let [earliest, latest] = band::edges(&self.axis, input, band)?;
             rows = band::rows(
                 self.axis.param,
                 &band.latest,
@@ -167,98 +139,6 @@ impl Figure for SweepSettings {
             band: rows,
         })
     }
-}
-
-/// Which curve or point set a series is: its layer's name in the data file.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Curve {
-    /// The closed-form statics.
-    Statics,
-    /// The F -> infinity limit.
-    Rigid,
-    /// Table 1's force analysis, as printed.
-    PaperTable1ForceAnalysis,
-    /// Table 1's minimum norm, as printed.
-    PaperTable1MinNorm,
-    /// Table 1's erratum row (its x as printed).
-    PaperTable1Erratum,
-    /// The paper's Adams result.
-    PaperAdams,
-    /// Min-norm jam points, translational joint.
-    MinNorm,
-    /// Min-norm jam points, a rolling disc.
-    MinNormRolling,
-    /// Simulated jams, motion drive.
-    SimulationMotion,
-    /// Simulated jams, force drive.
-    SimulationForce,
-    /// A band's earliest-jam edge.
-    BandEarliest,
-    /// A band's latest-jam edge.
-    BandLatest,
-}
-
-impl Curve {
-    /// The layer's name in the data file (`statics`, `paper_adams`, ...).
-    pub fn name(self) -> &'static str {
-        match self {
-            Curve::Statics => "statics",
-            Curve::Rigid => "rigid",
-            Curve::PaperTable1ForceAnalysis => "paper_table1_force_analysis",
-            Curve::PaperTable1MinNorm => "paper_table1_min_norm",
-            Curve::PaperTable1Erratum => "paper_table1_erratum",
-            Curve::PaperAdams => "paper_adams",
-            Curve::MinNorm => "min_norm",
-            Curve::MinNormRolling => "min_norm_rolling",
-            Curve::SimulationMotion => "simulation_motion",
-            Curve::SimulationForce => "simulation_force",
-            Curve::BandEarliest => "band_earliest",
-            Curve::BandLatest => "band_latest",
-        }
-    }
-
-    /// Whether it is a curve through its points (else a point set).
-    pub fn is_line(self) -> bool {
-        matches!(
-            self,
-            Curve::Statics | Curve::Rigid | Curve::BandEarliest | Curve::BandLatest
-        )
-    }
-
-    /// Whether it is the paper's own numbers.
-    pub fn is_paper(self) -> bool {
-        self.name().starts_with("paper_")
-    }
-}
-
-/// One point of a series: the swept value and the quantities (None where not given).
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct SeriesPoint {
-    /// The swept parameter's value.
-    pub at: f64,
-    /// x_jam in mm.
-    pub x_jam_mm: Option<f64>,
-    /// theta_jam in deg.
-    pub theta_jam_deg: Option<f64>,
-    /// The model's verdict at the point (None for a limit or a printed number).
-    pub status: Option<JamStatus>,
-}
-
-/// A curve or point set of one layer.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Series {
-    /// Which curve it is.
-    pub curve: Curve,
-    /// What it shows, for a legend.
-    pub label: String,
-    /// The points, in order of the swept value.
-    pub points: Vec<SeriesPoint>,
-    /// Names of a curve's value in the x_jam and theta_jam panels, for a curve that is flat
-    /// in a panel (thresholds, constants).
-    pub flat_names: Option<[&'static str; 2]>,
-    /// A note about its first point (e.g. what is wrong with it).
-    pub callout: Option<String>,
 }
 
 /// The computed sweep; its rows are its CSV data file (one row per swept value).

@@ -1,4 +1,5 @@
-//! The layers a sweep can draw, each turned into [`Series`].
+//! The layers a sweep can draw, each turned into [`Series`] of [`SeriesPoint`]s, and the
+//! panels ([`SweepPanel`]) that plot one quantity of every series.
 //!
 //! To add a model's points: add a variant to [`SweepLayer`], say in [`validate`] which swept
 //! parameters it supports, and return its series from [`series`] by calling the model (through
@@ -12,12 +13,10 @@
 use serde::{Deserialize, Serialize};
 
 use super::Input;
-use super::band::Band;
 use super::models::Models;
-use super::sweep::{Curve, Series, SeriesPoint, SweepSettings};
 use crate::dynamics::{Drive, DynamicsParams};
 use crate::error::{Error, Result};
-use crate::grid::{self, GridParam};
+use crate::grid::{self, GridAxis, GridParam};
 use crate::minnorm::{Formulation, MinNormSettings};
 use crate::models::{self, Detail, ModelSpec, Solution};
 use crate::paper::{ADAMS_X_JAM_MM_MU_0_4, TABLE1};
@@ -55,10 +54,130 @@ pub enum SweepLayer {
     SimulationForce,
 }
 
-/// Checks that `layer` can be drawn on `spec`'s sweep.
-pub fn validate(layer: SweepLayer, spec: &SweepSettings) -> Result<()> {
+/// A quantity plotted in one panel of a sweep.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SweepPanel {
+    /// x_jam in mm.
+    XJamMm,
+    /// theta_jam in deg.
+    ThetaJamDeg,
+}
+
+impl SweepPanel {
+    /// The quantity's name in the data (`x_jam_mm`, `theta_jam_deg`).
+    pub fn key(self) -> &'static str {
+        match self {
+            SweepPanel::XJamMm => "x_jam_mm",
+            SweepPanel::ThetaJamDeg => "theta_jam_deg",
+        }
+    }
+
+    /// The quantity at point `p`.
+    pub fn value(self, p: &SeriesPoint) -> Option<f64> {
+        match self {
+            SweepPanel::XJamMm => p.x_jam_mm,
+            SweepPanel::ThetaJamDeg => p.theta_jam_deg,
+        }
+    }
+}
+
+/// Which curve or point set a series is: its layer's name in the data file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Curve {
+    /// The closed-form statics.
+    Statics,
+    /// The F -> infinity limit.
+    Rigid,
+    /// Table 1's force analysis, as printed.
+    PaperTable1ForceAnalysis,
+    /// Table 1's minimum norm, as printed.
+    PaperTable1MinNorm,
+    /// Table 1's erratum row (its x as printed).
+    PaperTable1Erratum,
+    /// The paper's Adams result.
+    PaperAdams,
+    /// Min-norm jam points, translational joint.
+    MinNorm,
+    /// Min-norm jam points, a rolling disc.
+    MinNormRolling,
+    /// Simulated jams, motion drive.
+    SimulationMotion,
+    /// Simulated jams, force drive.
+    SimulationForce,
+    /// A band's earliest-jam edge.
+    BandEarliest,
+    /// A band's latest-jam edge.
+    BandLatest,
+}
+
+impl Curve {
+    /// The layer's name in the data file (`statics`, `paper_adams`, ...).
+    pub fn name(self) -> &'static str {
+        match self {
+            Curve::Statics => "statics",
+            Curve::Rigid => "rigid",
+            Curve::PaperTable1ForceAnalysis => "paper_table1_force_analysis",
+            Curve::PaperTable1MinNorm => "paper_table1_min_norm",
+            Curve::PaperTable1Erratum => "paper_table1_erratum",
+            Curve::PaperAdams => "paper_adams",
+            Curve::MinNorm => "min_norm",
+            Curve::MinNormRolling => "min_norm_rolling",
+            Curve::SimulationMotion => "simulation_motion",
+            Curve::SimulationForce => "simulation_force",
+            Curve::BandEarliest => "band_earliest",
+            Curve::BandLatest => "band_latest",
+        }
+    }
+
+    /// Whether it is a curve through its points (else a point set).
+    pub fn is_line(self) -> bool {
+        matches!(
+            self,
+            Curve::Statics | Curve::Rigid | Curve::BandEarliest | Curve::BandLatest
+        )
+    }
+
+    /// Whether it is the paper's own numbers.
+    pub fn is_paper(self) -> bool {
+        self.name().starts_with("paper_")
+    }
+}
+
+/// One point of a series: the swept value and the quantities (None where not given).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SeriesPoint {
+    /// The swept parameter's value.
+    pub at: f64,
+    /// x_jam in mm.
+    pub x_jam_mm: Option<f64>,
+    /// theta_jam in deg.
+    pub theta_jam_deg: Option<f64>,
+    /// The model's verdict at the point (None for a limit or a printed number).
+    pub status: Option<JamStatus>,
+}
+
+/// A curve or point set of one layer.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Series {
+    /// Which curve it is.
+    pub curve: Curve,
+    /// What it shows, for a legend.
+    pub label: String,
+    /// The points, in order of the swept value.
+    pub points: Vec<SeriesPoint>,
+    /// Names of a curve's value in the x_jam and theta_jam panels, for a curve that is flat
+    /// in a panel (thresholds, constants).
+    pub flat_names: Option<[&'static str; 2]>,
+    /// A note about its first point (e.g. what is wrong with it).
+    pub callout: Option<String>,
+}
+
+/// Checks that `layer` can be drawn on a sweep along `axis`.
+pub fn validate(layer: SweepLayer, axis: &GridAxis) -> Result<()> {
     let at_mu = !matches!(layer, SweepLayer::Statics | SweepLayer::Rigid);
-    if at_mu && spec.axis.param != GridParam::Mu {
+    if at_mu && axis.param != GridParam::Mu {
         return Err(Error::invalid(
             "chart.layers",
             format!("{layer:?}"),
@@ -69,10 +188,10 @@ pub fn validate(layer: SweepLayer, spec: &SweepSettings) -> Result<()> {
     Ok(())
 }
 
-/// The series of `layer` over `spec`'s axis for `scene`, its model points computed by `models`.
+/// The series of `layer` along `axis` for `scene`, its model points computed by `models`.
 pub fn series(
     layer: SweepLayer,
-    spec: &SweepSettings,
+    axis: &GridAxis,
     scene: &Input,
     models: &dyn Models,
 ) -> Result<Vec<Series>> {
@@ -80,7 +199,7 @@ pub fn series(
         SweepLayer::Statics => vec![Series {
             curve: Curve::Statics,
             label: "closed-form statics (corrected Eq. 1)".into(),
-            points: closed_form(spec, scene, |v, s| SeriesPoint {
+            points: closed_form(axis, scene, |v, s| SeriesPoint {
                 status: Some(s.status),
                 ..point(v, s.x_jam_mm, s.theta_jam_deg)
             })?,
@@ -88,7 +207,7 @@ pub fn series(
             callout: None,
         }],
         SweepLayer::Rigid => {
-            let points = closed_form(spec, scene, |v, s| SeriesPoint {
+            let points = closed_form(axis, scene, |v, s| SeriesPoint {
                 // The closed form's verdict at the point: why a row is empty.
                 status: Some(s.status),
                 ..match s.detail {
@@ -120,32 +239,7 @@ pub fn series(
     })
 }
 
-/// The band's two edges: the closed form at the earliest-jam corner and at the latest.
-pub(super) fn band(spec: &SweepSettings, scene: &Input, band: &Band) -> Result<[Series; 2]> {
-    let edge = |params, curve, which: &str| -> Result<Series> {
-        let at = Input {
-            params,
-            ..scene.clone()
-        };
-        Ok(Series {
-            curve,
-            // The band's own label is the shade's legend entry; an edge says which it is.
-            label: format!("band edge: {which}"),
-            points: closed_form(spec, &at, |v, s| SeriesPoint {
-                status: Some(s.status),
-                ..point(v, s.x_jam_mm, s.theta_jam_deg)
-            })?,
-            flat_names: None,
-            callout: None,
-        })
-    };
-    Ok([
-        edge(band.earliest, Curve::BandEarliest, "earliest jam")?,
-        edge(band.latest, Curve::BandLatest, "latest jam")?,
-    ])
-}
-
-/// The closed form's answer at each sample of `spec`'s axis, through the port
+/// The closed form's answer at each sample of `axis`, through the port
 /// ([`models::solve`]) so that its "outside the model" rule applies: the statics and F -> infinity
 /// layers once called the statics directly and drew a jam for a push starting above 90 deg,
 /// where `solve` says `outside_model`. A point outside the model is an empty row; a sweep
@@ -153,13 +247,13 @@ pub(super) fn band(spec: &SweepSettings, scene: &Input, band: &Band) -> Result<[
 ///
 /// Each answer is made into its point by `keep` as it comes: a whole `Solution` per point was
 /// most of a long sweep's memory (1.4 kB per point at 200,000 points).
-fn closed_form(
-    spec: &SweepSettings,
+pub(super) fn closed_form(
+    axis: &GridAxis,
     scene: &Input,
     keep: impl Fn(f64, Solution) -> SeriesPoint,
 ) -> Result<Vec<SeriesPoint>> {
-    let param = spec.axis.param;
-    let values = spec.axis.values();
+    let param = axis.param;
+    let values = axis.values();
     let mut points = Vec::with_capacity(values.len());
     let (mut first_outside, mut all_outside) = (None, true);
     for (i, v) in values.into_iter().enumerate() {
@@ -179,8 +273,8 @@ fn closed_form(
                 "at each of its {} points, {} = {} to {} (first: {why}); its sweep would be empty",
                 points.len(),
                 param.as_str(),
-                spec.axis.min,
-                spec.axis.max
+                axis.min,
+                axis.max
             ),
         });
     }
@@ -322,7 +416,7 @@ fn simulation(scene: &Input, models: &dyn Models, drive: Drive) -> Result<Series
     })
 }
 
-fn point(at: f64, x_jam_mm: Option<f64>, theta_jam_deg: Option<f64>) -> SeriesPoint {
+pub(super) fn point(at: f64, x_jam_mm: Option<f64>, theta_jam_deg: Option<f64>) -> SeriesPoint {
     SeriesPoint {
         at,
         x_jam_mm,

@@ -71,7 +71,7 @@ impl ParamSet for LocatorParams {
 }
 
 /// The holding capacity over a locator grid, in index order, validated first: by the closed
-/// form of a symmetric V ([`crate::locator::symmetric`]) when the grid varies the included
+/// form of a symmetric V (`locator::symmetric`) when the grid varies the included
 /// angle and the load direction of a V it applies to, otherwise by the exact path
 /// ([`crate::locator::capacity`]) per cell. The closed form does its trigonometry once per
 /// axis sample; a test checks it against the exact path cell by cell.

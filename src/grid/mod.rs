@@ -248,7 +248,7 @@ pub fn statics_point(p: &SceneParams) -> Result<JamPoint> {
 
 /// The closed form's F -> infinity limit of `p` (theta_rigid in deg, x_rigid in mm), through
 /// the port like [`statics_point`]: None where the scene lies outside the closed form.
-pub fn rigid_point(p: &SceneParams) -> Result<Option<(f64, Option<f64>)>> {
+pub(crate) fn rigid_point(p: &SceneParams) -> Result<Option<(f64, Option<f64>)>> {
     let s = models::solve(&ModelSpec::Statics, p)?;
     Ok(match s.detail {
         Detail::Statics(s) => Some((s.theta_rigid_deg, s.x_rigid_mm)),

@@ -469,7 +469,7 @@ pub fn held_at(p: &LocatorParams, load_n: f64) -> Result<(), FailureMode> {
 ///
 /// Why: a robust design tests each V at some 80 loads of a box (`robust::holds_sector`), and
 /// recomputing the V's sin, cos and tan per load was most of the `vlocator-robust` chart's
-/// time (issue 21's profile). [`held_at`] goes through it, so both give the same bits.
+/// time, as profiled. [`held_at`] goes through it, so both give the same bits.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PreparedV<'a> {
     p: &'a LocatorParams,

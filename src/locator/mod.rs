@@ -126,7 +126,7 @@
 //! the statics' theta_jam; free with equal frictions it is the self-locking 2 atan mu (x = r/mu)
 //! whatever the push. Free with a slipperier ground (mu_g < mu_p) the ground binds first and
 //! the boundary moves with the push: tan(theta*/2) = mu_g mu_p (W + 2 F cos alpha_p) /
-//! (2 mu_p F cos alpha_p - mu_g W) (capped at mu_p), derived in tests/locator.rs. (It differs from
+//! (2 mu_p F cos alpha_p - mu_g W) (capped at mu_p), derived in src/locator/tests.rs. (It differs from
 //! the min-norm palm model's rolling formulation, whose palm pushes with exactly F cos alpha_p:
 //! here the palm contact may also squeeze.)
 
@@ -138,7 +138,7 @@ pub mod robust;
 #[cfg(test)]
 mod robust_tests;
 mod solve;
-pub mod symmetric;
+pub(crate) mod symmetric;
 /// Bisects the bracket (lo, hi) where `left(x)` holds on its left part, halving at `mid(lo,
 /// hi)` (the arithmetic or the geometric mean) at most `halvings` times; returns the final
 /// bracket. It stops once the bracket is two neighbouring floats: every later halving would
@@ -179,9 +179,13 @@ use optimum::{balanced_rho, rho_lock};
 pub use params::{Flank, LocatorParams, Rotation};
 pub use reference::{ReferenceCapacity, capacity_clarabel};
 pub use robust::{
-    ARC_STEP_DEG, BoxVerdict, DroppedLoad, Opening, RobustAngle, RobustBox, RobustDesign,
-    SCAN_STEP_DEG, box_rho, holds_sector, lock_angle_deg, robust_design, verdict_over_box,
+    BoxVerdict, DroppedLoad, Opening, RobustAngle, RobustBox, RobustDesign, robust_design,
+    verdict_over_box,
 };
+pub(crate) use robust::{SCAN_STEP_DEG, lock_angle_deg};
 pub use solve::{FlankForce, LocatorSolution, Verdict, solve};
 #[cfg(test)]
 use solve::{contact_problem, min_norm_forces};
+/// Whether the closed form of the symmetric V answers `p` (equal flanks and frictions, free
+/// rotation, the load at the centre): the capacity map's fast path.
+pub use symmetric::applies as closed_form_applies;

@@ -3,7 +3,7 @@
 use serde::Serialize;
 
 use crate::error::{Error, Result};
-use crate::settings::{Check, Decl, Kind};
+use crate::settings::decl::{Check, Decl, Declared, Kind};
 
 choice! {
     /// How the V carries the moment about the disc centre.
@@ -162,10 +162,10 @@ impl LocatorParams {
     /// [`crate::scene::SceneParams::unit_warnings`]): a friction above 2, an included angle
     /// under 3 deg (radians?).
     pub fn unit_warnings(&self) -> Vec<String> {
-        let mut out = crate::scene::friction_warnings(&[
-            ("mu_left", self.mu_left),
-            ("mu_right", self.mu_right),
-        ]);
+        let mut out = crate::scene::friction_warnings(
+            LOCATOR_ALIASES.iter().chain(Self::DECLS),
+            &[("mu_left", self.mu_left), ("mu_right", self.mu_right)],
+        );
         let gamma = self.included_angle_deg();
         if gamma < 3.0 {
             out.push(format!(

@@ -33,7 +33,7 @@
 //!    outer arc's hull). So the sector lies in H iff those points do. The outer arc is covered
 //!    exactly, not sampled: between two arc points dphi apart, the arc lies in the triangle of
 //!    the two points and the tangents' crossing at P_hi / cos(dphi/2); each triangle's three
-//!    corners are tested ([`ARC_STEP_DEG`] apart, so a V is refused for a load at most
+//!    corners are tested (`ARC_STEP_DEG`, 0.5 deg apart, so a V is refused for a load at most
 //!    1 / cos(0.25 deg) - 1 = 1e-5 above P_hi: conservative, never optimistic).
 //! 4. **Included angle.** Locking: the V works only at gamma >= gamma_lock. Holding: for a
 //!    centre load (any rotation) or blocked rotation, the support cone (cone{n1, n2} free and
@@ -41,7 +41,7 @@
 //!    towards the other with the tilt kept: the cones are nested, so a V that holds a load
 //!    holds it at every narrower angle. **The window is then one interval
 //!    [gamma_lock, gamma_hold]**, both ends found by bisection (to 1e-9 deg). For a rim load
-//!    under free rotation nothing says so: the window is searched on a [`SCAN_STEP_DEG`] grid
+//!    under free rotation nothing says so: the window is searched on a `SCAN_STEP_DEG`, 0.25 deg grid
 //!    and each edge bisected (a window narrower than the grid step can be missed; the answer
 //!    says it was searched).
 //!
@@ -80,11 +80,11 @@ use super::params::{LocatorParams, Rotation};
 
 /// Step of the outer arc's cover, deg: the load is overstated by at most
 /// 1 / cos(ARC_STEP_DEG / 2) - 1 = 9.5e-6 between two arc points.
-pub const ARC_STEP_DEG: f64 = 0.5;
+pub(crate) const ARC_STEP_DEG: f64 = 0.5;
 
 /// Grid step of the window search where the window is not known to be one interval (a rim
 /// load under free rotation), deg.
-pub const SCAN_STEP_DEG: f64 = 0.25;
+pub(crate) const SCAN_STEP_DEG: f64 = 0.25;
 
 /// Bisections of an angle bracket of at most 178 deg: 60 halvings reach below 1e-15 deg.
 const ANGLE_BISECTIONS: usize = 60;
@@ -155,7 +155,7 @@ impl RobustBox {
 
 /// gamma_lock in deg: the narrowest V (turned about its bisector) that does not self-lock with
 /// frictions `mu` (left, right): 2 atan min(mu) free, atan mu1 + atan mu2 blocked (item 1).
-pub fn lock_angle_deg(rotation: Rotation, (m1, m2): (f64, f64)) -> f64 {
+pub(crate) fn lock_angle_deg(rotation: Rotation, (m1, m2): (f64, f64)) -> f64 {
     match rotation {
         Rotation::Free => 2.0 * m1.min(m2).atan().to_degrees(),
         Rotation::Blocked => (m1.atan() + m2.atan()).to_degrees(),
@@ -166,7 +166,7 @@ pub fn lock_angle_deg(rotation: Rotation, (m1, m2): (f64, f64)) -> f64 {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct DroppedLoad {
     /// Its magnitude in N (on the outer arc possibly up to 1e-5 above P_hi, see
-    /// [`ARC_STEP_DEG`]).
+    /// `ARC_STEP_DEG`, 0.5 deg).
     pub load_n: f64,
     /// Its direction in deg.
     pub load_angle_deg: f64,
@@ -206,7 +206,7 @@ pub struct RobustDesign {
     /// The windows of included angle (deg, lo <= hi) that work over the whole box; empty when
     /// no V does. One interval unless searched (`searched`).
     pub windows: Vec<(f64, f64)>,
-    /// The window was searched on a grid ([`SCAN_STEP_DEG`]) because it is not known to be
+    /// The window was searched on a grid (`SCAN_STEP_DEG`, 0.25 deg) because it is not known to be
     /// one interval (a rim load under free rotation).
     pub searched: bool,
     /// The most robust angle (None when no V works).
@@ -224,7 +224,7 @@ fn v_at(base: &LocatorParams, gamma_deg: f64) -> LocatorParams {
 
 /// The V (its frictions set by the caller) holds every load of the sector
 /// [p_lo, p_hi] x [phi_lo, phi_hi] (item 3 of the module docs), or the first load it drops.
-pub fn holds_sector(
+pub(crate) fn holds_sector(
     v: &LocatorParams,
     load_n: (f64, f64),
     angle_deg: (f64, f64),
@@ -429,7 +429,7 @@ fn rho_hold_box(v: &LocatorParams, b: &RobustBox) -> f64 {
 }
 
 /// rho* of the V of `gamma_deg` over the box: min(rho_lock at the highs, rho_hold).
-pub fn box_rho(base: &LocatorParams, b: &RobustBox, gamma_deg: f64) -> f64 {
+pub(crate) fn box_rho(base: &LocatorParams, b: &RobustBox, gamma_deg: f64) -> f64 {
     let v = v_at(base, gamma_deg);
     lock_factor(&v, b).min(rho_hold_box(&v, b))
 }

@@ -121,7 +121,7 @@ fn robust_window_matches_the_closed_form_for_a_sideways_load() {
     assert!(worst < 1e-7, "worst {worst:e}");
 }
 
-/// The issue's V-block: a 30 N sideways load over mu 0.12 to 0.3 on a 0.4 kg shaft. No V
+/// A V-block for the 25 mm shaft: a 30 N sideways load over mu 0.12 to 0.3, 0.4 kg. No V
 /// works (mu_hi P = 9 N > W = 3.92 N); narrowing the friction to mu <= W / P = 0.131 opens it,
 /// or the narrowest V that does not lock (2 atan 0.3 = 33.4 deg) holds loads up to
 /// W / mu_hi = 13.1 N.
@@ -297,7 +297,7 @@ fn a_window_over_a_mass_range_is_the_closed_form_at_the_lightest_disc() {
     );
 }
 
-/// Issue 21, item 1: `holds_sector` recomputed the V's frame and support cone (sin, cos and
+/// `holds_sector` recomputed the V's frame and support cone (sin, cos and
 /// tan) for each of its some 80 loads, most of the `vlocator-robust` chart's time; it now
 /// prepares the V once (`exact::PreparedV`). A V prepared once must answer every load, of
 /// every direction and magnitude, exactly as the V prepared for that load alone: free and

@@ -57,9 +57,10 @@ impl SymmetricV {
         }
     }
 
-    /// The capacity under a load in direction `d`, for a disc of weight `weight_n` N.
-    #[inline]
-    pub fn capacity(&self, d: &LoadDirection, weight_n: f64) -> Capacity {
+    /// The capacity under a load in direction `d`, for a disc of weight `weight_n` N, one
+    /// cell at a time: the reference the row kernels are tested against.
+    #[cfg(test)]
+    fn capacity(&self, d: &LoadDirection, weight_n: f64) -> Capacity {
         let bracket = d.cos_abs * self.tan_half_gamma + d.sin;
         cell(self.locks, bracket, 1.0 / bracket, d.mode, weight_n)
     }

@@ -227,7 +227,7 @@ fn free_centre_capacity_does_not_depend_on_friction_unless_locked() {
     }
 }
 
-/// The self-locking bounds of the issue: free tan(gamma/2) < min mu, blocked
+/// The self-locking bounds: free tan(gamma/2) < min mu, blocked
 /// gamma < atan mu1 + atan mu2; and rho_lock is 1 on them.
 #[test]
 fn self_locking_bounds() {
@@ -486,7 +486,7 @@ fn zero_net_load_is_unloaded_with_zero_forces() {
     }
 }
 
-/// Regression (issue 20, item 7): blocked rotation with a load at a rim point was refused,
+/// Regression: blocked rotation with a load at a rim point was refused,
 /// though the joint carries the load's moment and the answer is well defined: the load acts
 /// as if at the centre. The verdict, forces and capacity now equal the centre load's.
 #[test]
@@ -520,7 +520,7 @@ fn blocked_rotation_with_a_rim_load_acts_as_at_the_centre() {
     }
 }
 
-/// Regression (issue 20, item 7): when no V that does not self-lock holds the load
+/// Regression: when no V that does not self-lock holds the load
 /// (rho* <= 1), the optimum offered a V that self-locks at the nominal friction (17.06 deg at
 /// mu 0.15) as if it were an answer. It now says no V works.
 #[test]
@@ -539,7 +539,7 @@ fn no_v_that_does_not_lock_holds_a_heavy_sideways_load() {
     assert!(!locator::optimum(&light).no_v_holds);
 }
 
-/// Regression (issue 20, item 7): for a pure lift rho_hold does not depend on the angle (the
+/// Regression: for a pure lift rho_hold does not depend on the angle (the
 /// docs said it falls), so every V wider than the crossing survives the same rho*; the
 /// optimum reported the narrowest with `at_bound: false` as if it were the only one. It now
 /// reports the plateau up to the widest V.

@@ -30,7 +30,6 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::contact::{ConeKind, Lowered, Space};
-use super::qp::{Backend, ContactSolution, HoldStatus, assemble};
 
 /// At most this many cone rows (four frictional planar contacts): 2^8 active sets.
 const MAX_CONE_ROWS: usize = 8;
@@ -43,7 +42,7 @@ const TOL: f64 = 1e-10;
 /// dense solve whose entries are of order one is a few machine epsilons of its largest entry.
 // Not TOL: a contact whose forces are far below the largest load (friction of 1e-9, a palm
 // pushing with 1/2000 of the weight) has its margin far below TOL, and a tolerance on the
-// largest force moved its held / not-held boundary by up to 9 % (issues 20 and 23).
+// largest force moved its held / not-held boundary by up to 9 %.
 const ROW_ROUNDOFF: f64 = 16.0 * f64::EPSILON;
 /// Accepted residual of a KKT solve, relative to the solution: 1e4 machine epsilons.
 const ROUNDOFF: f64 = 1e-12;
@@ -55,15 +54,12 @@ pub(crate) fn applies(low: &Lowered) -> bool {
         && low.cones.iter().all(|&(k, _)| k == ConeKind::Nonneg)
 }
 
-/// Solves a problem for which [`applies`] holds.
-pub(crate) fn solve_lowered(low: &Lowered) -> ContactSolution {
+/// Solves a problem for which [`applies`] holds: the optimum in the scaled variables (None:
+/// infeasible, the body is not held) and the number of active sets tried.
+pub(crate) fn solve_lowered(low: &Lowered) -> (Option<DVector<f64>>, u32) {
     if let Some(z) = determined(low) {
         // The equalities fix every variable: no freedom is left to minimise over.
-        return if cones_hold(low, &z, 0) {
-            assemble(low, &z, Backend::Exact, 1)
-        } else {
-            ContactSolution::not_held(HoldStatus::NotHeld, Backend::Exact, 1)
-        };
+        return (cones_hold(low, &z, 0).then_some(z), 1);
     }
     let m_g = low.cone_rows.nrows();
     let (n, m_e) = (low.eq.ncols(), low.eq.nrows());
@@ -81,12 +77,12 @@ pub(crate) fn solve_lowered(low: &Lowered) -> ContactSolution {
             }
             tried += 1;
             match kkt_point(low, mask) {
-                KktPoint::Optimal(z) => return assemble(low, &z, Backend::Exact, tried),
+                KktPoint::Optimal(z) => return (Some(z), tried),
                 KktPoint::Rejected { regular } => independent |= mask == 0 && regular,
             }
         }
     }
-    ContactSolution::not_held(HoldStatus::NotHeld, Backend::Exact, tried)
+    (None, tried)
 }
 
 /// What the KKT system of one active set gives.

@@ -149,7 +149,7 @@ pub struct PalmSolution {
 /// off, and by a factor 4.7 at mu = 1e-9 (`clarabel_overusing_a_friction_cone_is_flagged`).
 /// The exact path stays within 7e-6 (at mu = 1e-9, where its jam is 3.6e-6 off the closed
 /// form).
-pub const CONE_EXCESS: f64 = 1e-5;
+pub(crate) const CONE_EXCESS: f64 = 1e-5;
 
 /// Why a min-norm answer is not a trusted jam: typed reasons with their numbers.
 ///

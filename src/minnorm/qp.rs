@@ -178,7 +178,10 @@ pub struct ContactSolution {
 pub fn solve(problem: &ContactProblem, settings: &QpSettings) -> Result<ContactSolution> {
     let low = problem.lower()?;
     if settings.fast_path && exact::applies(&low) {
-        return Ok(exact::solve_lowered(&low));
+        return Ok(match exact::solve_lowered(&low) {
+            (Some(z), tried) => assemble(&low, &z, Backend::Exact, tried),
+            (None, tried) => ContactSolution::not_held(HoldStatus::NotHeld, Backend::Exact, tried),
+        });
     }
     solve_lowered(&low, settings)
 }
@@ -236,8 +239,11 @@ fn solve_lowered(low: &Lowered, settings: &QpSettings) -> Result<ContactSolution
         ..DefaultSettings::default()
     };
     // Dimensions and settings are ours and checked: a refusal here is a bug or misuse.
-    let mut solver = DefaultSolver::new(&p, &q, &a, &b, &cones, cs)
-        .map_err(|e| Error::Unsupported(format!("clarabel refused the program: {e:?}")))?;
+    let mut solver =
+        DefaultSolver::new(&p, &q, &a, &b, &cones, cs).map_err(|e| Error::SolverRefused {
+            solver: "clarabel",
+            detail: format!("{e:?}"),
+        })?;
     let trace = Arc::new(Mutex::new(Vec::new()));
     let sink = Arc::clone(&trace);
     let objective_scale = low.force_scale_n * low.force_scale_n;

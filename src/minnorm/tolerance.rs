@@ -89,8 +89,9 @@ pub fn tolerance_study(
 mod tests {
     use super::*;
 
-    /// At clarabel's default 1e-8 the boundary is the closed form's to 1e-5 deg (issue 3's bar);
-    /// a looser tolerance is never more accurate than a tighter one by more than the floor.
+    /// At clarabel's default 1e-8 the boundary is the closed form's to 1e-5 deg (the agreement
+    /// asked of the min-norm model); a looser tolerance is never more accurate than a tighter one
+    /// by more than the floor.
     #[test]
     fn default_tolerance_meets_the_oracle() {
         let rows = tolerance_study(

@@ -193,7 +193,7 @@ impl Solutions {
         Ok(format!(
             "jamchart.Solutions({}, shape {}: {})",
             self.model,
-            super::solve::shape_text(self.theta_jam_deg.bind(py).shape()),
+            shape_text(self.theta_jam_deg.bind(py).shape()),
             seen.join(", ")
         ))
     }
@@ -287,5 +287,16 @@ impl BoxAnswer {
             span(r.theta_jam_deg, "deg"),
             span(r.x_jam_mm, "mm")
         )
+    }
+}
+
+/// A shape as Python prints it: `(3,)`, `(4, 3)`.
+pub(super) fn shape_text(shape: &[usize]) -> String {
+    match shape {
+        [one] => format!("({one},)"),
+        dims => {
+            let all: Vec<String> = dims.iter().map(usize::to_string).collect();
+            format!("({})", all.join(", "))
+        }
     }
 }

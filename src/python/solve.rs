@@ -13,7 +13,7 @@ use pyo3::exceptions::{PyUserWarning, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use super::answers::{BoxAnswer, Solution, Solutions};
+use super::answers::{BoxAnswer, Solution, Solutions, shape_text};
 use super::keywords::{self, Read, error};
 use crate::cli::solve_range::{self, DistArgs};
 use crate::grid::GridParam;
@@ -171,7 +171,7 @@ fn answer_watched(py: Python<'_>, spec: &ModelSpec, pushes: &Pushes, out: Answer
                     Err(mpsc::RecvTimeoutError::Timeout) => {}
                     Err(mpsc::RecvTimeoutError::Disconnected) => {
                         return (
-                            Err(crate::error::Error::Unsupported(
+                            Err(crate::error::Error::Defect(
                                 "the map's thread ended without an answer".into(),
                             )),
                             interrupt,
@@ -291,15 +291,4 @@ fn without_flags(line: &str) -> String {
     }
     out.push_str(rest);
     out
-}
-
-/// A shape as Python prints it: `(3,)`, `(4, 3)`.
-pub(super) fn shape_text(shape: &[usize]) -> String {
-    match shape {
-        [one] => format!("({one},)"),
-        dims => {
-            let all: Vec<String> = dims.iter().map(usize::to_string).collect();
-            format!("({})", all.join(", "))
-        }
-    }
 }

@@ -7,7 +7,8 @@ use std::marker::PhantomData;
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Arg, ArgAction, ArgMatches, Command};
 
-use super::{Decl, Kind, all};
+use super::all;
+use super::decl::{Decl, Kind, parse_count, parse_f64};
 use crate::uncertain::Uncertain;
 
 /// Which declared sections a command's flags come from, and their help heading.
@@ -265,32 +266,5 @@ impl<S: FlagSet> clap::Args for Flags<S> {
 
     fn augment_args_for_update(cmd: Command) -> Command {
         Self::augment_args(cmd)
-    }
-}
-
-/// Parses a count flag: a whole number >= 0, written out (`100000`, not `1e5`), with a message
-/// that says so instead of the standard library's "invalid digit found in string".
-pub fn parse_count(s: &str) -> std::result::Result<u64, String> {
-    s.trim().parse().map_err(|_| {
-        format!(
-            "{} is not a whole number >= 0 (write it out, e.g. 100000 for 1e5)",
-            crate::error::cut(s)
-        )
-    })
-}
-
-/// Parses a number flag, refusing text that overflows to infinity or underflows to zero, so that
-/// a message quotes what was written (`1e400`), never what it became (`inf`).
-///
-/// The words `inf`, `infinity` and `nan` are passed on: each setting's check says whether it
-/// takes them.
-pub fn parse_f64(s: &str) -> std::result::Result<f64, String> {
-    let v: f64 = s
-        .trim()
-        .parse()
-        .map_err(|_| format!("{} is not a number", crate::error::cut(s)))?;
-    match crate::config::float_range_problem(s.trim(), v) {
-        Some(problem) => Err(format!("{} {problem}", crate::error::cut(s))),
-        None => Ok(v),
     }
 }

@@ -37,23 +37,23 @@ macro_rules! settings {
             }
         }
 
-        impl $crate::settings::Declared for $name {
-            const DECLS: &'static [$crate::settings::Decl] = &[$(
-                $crate::settings::Decl {
+        impl $crate::settings::decl::Declared for $name {
+            const DECLS: &'static [$crate::settings::decl::Decl] = &[$(
+                $crate::settings::decl::Decl {
                     key: stringify!($field),
                     section: $section,
                     doc: concat!($($doc, "\n"),*),
-                    kind: <$ty as $crate::settings::Value>::KIND,
+                    kind: <$ty as $crate::settings::decl::Value>::KIND,
                     default: || {
-                        $crate::settings::Value::text(&<$name as Default>::default().$field)
+                        $crate::settings::decl::Value::text(&<$name as Default>::default().$field)
                     },
                     $($k: $v,)*
-                    ..$crate::settings::Decl::BASE
+                    ..$crate::settings::decl::Decl::BASE
                 },
             )*];
         }
 
-        impl $crate::settings::Numbers for $name {
+        impl $crate::settings::decl::Numbers for $name {
             fn real(&self, key: &str) -> Option<f64> {
                 $name::real(self, key)
             }
@@ -67,9 +67,9 @@ macro_rules! settings {
             /// Checks every field against its declared range; the error names the key and
             /// the value.
             pub(crate) fn check_declared(&self) -> $crate::error::Result<()> {
-                let mut decls = <Self as $crate::settings::Declared>::DECLS.iter();
+                let mut decls = <Self as $crate::settings::decl::Declared>::DECLS.iter();
                 $(
-                    $crate::settings::Value::check(
+                    $crate::settings::decl::Value::check(
                         &self.$field,
                         decls.next().expect("one declaration per field"),
                     )?;
@@ -80,7 +80,7 @@ macro_rules! settings {
             /// The field `key` as a number, where it is one.
             pub(crate) fn real(&self, key: &str) -> Option<f64> {
                 match key {
-                    $(stringify!($field) => $crate::settings::Value::real(&self.$field),)*
+                    $(stringify!($field) => $crate::settings::decl::Value::real(&self.$field),)*
                     _ => None,
                 }
             }
@@ -89,7 +89,7 @@ macro_rules! settings {
             pub(crate) fn set_real(&mut self, key: &str, v: f64) -> bool {
                 match key {
                     $(stringify!($field) => {
-                        $crate::settings::Value::set_real(&mut self.$field, v)
+                        $crate::settings::decl::Value::set_real(&mut self.$field, v)
                     })*
                     _ => false,
                 }
@@ -148,8 +148,8 @@ macro_rules! choice {
             }
         }
 
-        impl $crate::settings::Value for $name {
-            const KIND: $crate::settings::Kind = $crate::settings::Kind::Choice(Self::NAMES);
+        impl $crate::settings::decl::Value for $name {
+            const KIND: $crate::settings::decl::Kind = $crate::settings::decl::Kind::Choice(Self::NAMES);
             fn text(&self) -> String {
                 self.as_str().to_string()
             }

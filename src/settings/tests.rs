@@ -87,22 +87,21 @@ fn every_documented_default_is_the_defaults_value() {
     }
 }
 
-/// The README's parameter table and charts/README.md's list of `[scene]` keys are the
-/// declarations': `jamchart settings` prints the reference, and the README holds it verbatim.
-/// When this fails, paste `jamchart settings` into README.md's "Every setting" section.
+/// The guide's parameter table and charts/README.md's list of `[scene]` keys are the
+/// declarations': `jamchart settings` prints the reference, and the guide holds it verbatim.
+/// When this fails, paste `jamchart settings` into src/guide.md's "Every setting" section.
 #[test]
-fn the_readme_holds_the_reference_table() {
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
-        .expect("README.md");
+fn the_guide_holds_the_reference_table() {
+    let readme = include_str!("../guide.md");
     let table = reference_table();
     let locator = reference_rows(|s| s == "locator");
     assert!(
         readme.contains(&locator),
-        "README.md's V-locator settings table is not `jamchart settings`' second table:\n{locator}"
+        "src/guide.md's V-locator settings table is not `jamchart settings`' second table:\n{locator}"
     );
     assert!(
         readme.contains(&table),
-        "README.md's settings table is not `jamchart settings`' output:\n{table}"
+        "src/guide.md's settings table is not `jamchart settings`' output:\n{table}"
     );
 }
 
@@ -165,4 +164,20 @@ fn a_declared_scene_parameter_is_a_flag_a_key_an_axis_and_checked() {
         msg.contains("palm_offset_mm = -1") && msg.contains(">= 0"),
         "{msg}"
     );
+}
+
+/// `--mu 0.12-0.3` and `--force 40N` said only "is not a number": they say what was meant.
+#[test]
+fn a_number_that_does_not_parse_says_what_was_probably_meant() {
+    use crate::settings::decl::parse_f64;
+    let range = parse_f64("0.12-0.3").unwrap_err();
+    assert!(
+        range.contains("a range is written LOW:HIGH: 0.12:0.3"),
+        "{range}"
+    );
+    let unit = parse_f64("40N").unwrap_err();
+    assert!(unit.contains("write 40, not 40N"), "{unit}");
+    assert_eq!(parse_f64("abc").unwrap_err(), "abc is not a number");
+    assert_eq!(parse_f64("-0.5"), Ok(-0.5));
+    assert_eq!(parse_f64("1e-3"), Ok(1e-3));
 }

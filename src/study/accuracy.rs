@@ -506,7 +506,7 @@ mod tests {
         assert!(rows.iter().all(|r| r.median_time_s > 0.0 && r.runs == 1));
     }
 
-    /// Issue 20, item 5: with the force drive the report judged every simulation against the
+    /// With the force drive the report judged every simulation against the
     /// quasi-static closed form at F, which a disc at 30 deg/s coasts past: the nonsmooth answer
     /// (24.5853 mm, the rigid disc's rest) showed as the worst error (0.95 %). The reference of
     /// a dynamic drive is now the converged rigid dynamics: the nonsmooth rows' error is their

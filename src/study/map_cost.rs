@@ -264,14 +264,14 @@ mod tests {
         assert!(exact.extrapolated);
         assert!(exact.max_x_rel_error.unwrap() < 1e-6, "{exact:?}");
         assert_eq!(exact.status_mismatches, 0);
-        // The force-driven simulations against the converged rigid dynamics of each cell (issue
-        // 20, item 5: against the closed form the map's worst error, at mu = 0.1 and F = 20 N,
+        // The force-driven simulations against the converged rigid dynamics of each cell
+        // (against the closed form the map's worst error, at mu = 0.1 and F = 20 N,
         // was inertia's coast, which the closed form lacks). Measured: RADAU5 0.82 %
         // off (the contact's give), the nonsmooth method 3.5e-7 (its step). At mu = 0.8 and
         // F = 20 N the compliant contact says jams at 10.186 mm where the rigid contact says
-        // jammed_at_start: flagged since issue 20 (item 2), the one untrusted cell; the
+        // jammed_at_start: flagged, the one untrusted cell; the
         // nonsmooth run there at twice the step moves the disc 0.008 mm and says jams, so that
-        // corner is flagged too (issue 20, item 1).
+        // corner is flagged too.
         let sim = &report.rows[3];
         let ns = &report.rows[4];
         eprintln!(

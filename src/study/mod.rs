@@ -514,7 +514,7 @@ mod tests {
         assert!((cf.x_jam_mm.unwrap() - 24.355).abs() < 1e-3);
         let rigid = reference(&p, Some(Drive::Motion));
         assert_eq!(rigid.status, JamStatus::Jams);
-        // r / mu = 25 mm for equal frictions (ERRATA).
+        // r / mu = 25 mm for equal frictions (the crate docs' corrections to the paper).
         assert!((rigid.x_jam_mm.unwrap() - 25.0).abs() < 1e-9);
         let force = reference(&p, Some(Drive::Force));
         assert_eq!(force.x_jam_mm, cf.x_jam_mm);

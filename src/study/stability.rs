@@ -48,7 +48,7 @@
 //! printed by the test `the_matrix_states_each_tolerance`.
 //!
 //! Statuses are compared as they are: `jams` where the reference says `jammed_at_start` (or
-//! the other way round) is wrong however close the positions (issue 20, item 1).
+//! the other way round) is wrong however close the positions.
 
 use rayon::prelude::*;
 use serde::Serialize;
@@ -69,7 +69,7 @@ pub const STATICS_ALLOWANCE_REL: f64 = 1e-4;
 /// Allowance of a simulated jam against its reference beyond the contact's give, relative: the
 /// regularised friction's floor. Its stiction band lets a held disc creep (module docs of
 /// `dynamics::jam`: 0.03 mm at the defaults) and the speed-ratio reading stops it short of
-/// the rigid lock; the paper's own Adams answer is 2.3 % above r / mu (ERRATA), so a tighter
+/// the rigid lock; the paper's own Adams answer is 2.3 % above r / mu (the crate docs' corrections to the paper), so a tighter
 /// allowance would call the paper's reference simulation wrong. Inertia is allowed apart,
 /// for the force drive only (`allowance_mm`).
 pub const SIM_ALLOWANCE_REL: f64 = 0.03;
@@ -96,7 +96,7 @@ pub const RIGID_REFERENCE_STEP_DEG: f64 = 0.002;
 
 /// Step limit of every simulation in the matrix (default 2000000 in `solve`): the slowest
 /// converging case here needs about 1e5 steps. An explicit integrator on stiff contact stops
-/// before it by its stiffness test (issue 20, item 8) once its pace cannot finish within it.
+/// before it by its stiffness test once its pace cannot finish within it.
 pub const STABILITY_MAX_STEPS: u64 = 200_000;
 
 /// One case of the matrix.
@@ -680,8 +680,8 @@ mod tests {
         }
     }
 
-    /// Explicit integration of a 0.01 um contact fails, named, not by a wrong answer: since
-    /// issue 20 (item 8) by DOPRI5's stiffness test, long before its step limit, where it
+    /// Explicit integration of a 0.01 um contact fails, named, not by a wrong answer: now
+    /// by DOPRI5's stiffness test, long before its step limit, where it
     /// ground to the limit before; RADAU5 and the nonsmooth method (which has no stiffness)
     /// answer it.
     #[test]
@@ -708,7 +708,7 @@ mod tests {
             row("nonsmooth")
         );
     }
-    /// Issue 20, item 1 (left over): the force drive was judged against the quasi-static
+    /// The force drive was judged against the quasi-static
     /// closed form with an inertia allowance (the nonsmooth answer's allowance was 3 % plus
     /// the coast, 0.738 mm at the defaults). Its reference is now the converged rigid dynamics,
     /// which carries the coast itself (24.585 mm, 0.95 % past the closed form's 24.355 mm), and

@@ -14,7 +14,7 @@
 //! ## Monte Carlo
 //!
 //! Otherwise (several inputs, or a model other than the closed form) the inputs are sampled by
-//! their inverse CDFs (a range as uniform), [`CHUNK`] samples per chunk. Each chunk's generator
+//! their inverse CDFs (a range as uniform), `CHUNK` samples per chunk. Each chunk's generator
 //! is ChaCha8 seeded with the seed and its stream set to the chunk's index, so every sample
 //! depends on the seed and its own index only: the answer is bit-identical for any thread count.
 //! P is given with its 95 % interval p +- 1.96 sqrt(p (1 - p) / n); a quantile with the 95 %
@@ -31,11 +31,11 @@ use crate::scene::SceneParams;
 use crate::statics;
 
 /// Samples per generator stream.
-pub const CHUNK: usize = 1024;
+pub(crate) const CHUNK: usize = 1024;
 
 /// Most Monte Carlo samples one answer takes: 1e7 closed-form samples take about a second per
 /// core and 80 MB; a simulation takes far longer per sample.
-pub const MAX_SAMPLES: u64 = 10_000_000;
+pub(crate) const MAX_SAMPLES: u64 = 10_000_000;
 
 /// 1.96: the two-sided 95 % point of the normal.
 const Z95: f64 = 1.96;
@@ -47,7 +47,7 @@ pub struct DistQuestion {
     pub before_mm: Vec<f64>,
     /// Probabilities q in (0, 1) for the quantiles of x_jam.
     pub quantiles: Vec<f64>,
-    /// Monte Carlo samples (when it is not exact), at most [`MAX_SAMPLES`].
+    /// Monte Carlo samples (when it is not exact), at most `MAX_SAMPLES`.
     pub samples: u64,
     /// The generator's seed.
     pub seed: u64,
@@ -286,7 +286,7 @@ pub fn monte_carlo(
 
 /// What a Monte Carlo reports as it goes, for a progress bar.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Progress {
+pub(crate) enum Progress {
     /// Accepted, before the first draw: how many samples, and their estimated CPU time in s.
     Started {
         /// The samples to draw.
@@ -299,7 +299,7 @@ pub enum Progress {
 }
 
 /// [`monte_carlo`], telling `progress` its estimate once accepted and each chunk as it is done.
-pub fn monte_carlo_observed(
+pub(crate) fn monte_carlo_observed(
     spec: &ModelSpec,
     p: &SceneParams,
     set: &UncertainSet,

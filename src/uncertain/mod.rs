@@ -44,20 +44,11 @@ use crate::error::{Error, Result};
 use crate::settings::Decl;
 pub(crate) use table::take;
 
-/// The worked example of issue 19: a 25 mm shaft (r = 12.5 mm) of 0.4 kg pushed with 40 N by an
-/// 80 mm palm, mu 0.21 at both contacts (the midpoint of the issue's 0.12 to 0.3). The one
-/// fixture of the range, distribution and `design` tests and the uncertainty benchmark; every
-/// other setting is the paper's default.
-pub fn shaft_25mm() -> crate::scene::SceneParams {
-    crate::scene::SceneParams {
-        radius_mm: 12.5,
-        mass_kg: 0.4,
-        force_n: 40.0,
-        palm_length_mm: 80.0,
-        ..Default::default()
-    }
-    .with_mu(0.21)
-}
+/// The worked example of the range, distribution and `design` tests, shared with the
+/// integration tests.
+#[cfg(test)]
+#[path = "../../tests/common/shaft.rs"]
+pub(crate) mod shaft;
 
 /// One input's uncertainty: a point, a range (worst case) or a distribution.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -109,7 +100,7 @@ impl Uncertain {
     pub fn parse(text: &str) -> std::result::Result<Uncertain, String> {
         let t = text.trim();
         let number = |s: &str| -> std::result::Result<f64, String> {
-            let v = crate::settings::flags::parse_f64(s)?;
+            let v = crate::settings::decl::parse_f64(s)?;
             if v.is_finite() {
                 Ok(v)
             } else {
@@ -142,7 +133,7 @@ impl Uncertain {
                 hi: number(b)?,
             });
         }
-        crate::settings::flags::parse_f64(t).map(|value| Uncertain::Point { value })
+        crate::settings::decl::parse_f64(t).map(|value| Uncertain::Point { value })
     }
 
     /// Whether this is more than a point.
@@ -170,7 +161,7 @@ impl Uncertain {
     }
 
     /// The ends of the box this input spans: a range's or uniform's ends, a distribution's
-    /// [`TAIL`] and 1 - [`TAIL`] quantiles, a point twice.
+    /// `TAIL` and 1 - `TAIL` quantiles, a point twice.
     pub fn ends(&self) -> (f64, f64) {
         match *self {
             Uncertain::Point { value } => (value, value),
@@ -284,7 +275,7 @@ impl Uncertain {
                 must(centre, mean)?;
                 // Every value a draw or the box can take must be a valid value too:
                 // lognormal(0.2,1e300) reached mu = inf, where the closed form said theta_jam =
-                // 182.8 deg at x = -0.245 mm with exit 0 (issue 23, class 1, third run).
+                // 182.8 deg at x = -0.245 mm with exit 0.
                 // A normal is truncated at 0 by design (its lowest value is 0 however wide);
                 // a lognormal's lowest value underflows to 0 when sigma is huge.
                 let lowest = matches!(self, Uncertain::LogNormal { .. }).then_some(REACH);
@@ -306,16 +297,16 @@ impl Uncertain {
 
 /// The most extreme probabilities a draw or an answer reads a distribution at: the smallest
 /// step of a double below 1, and its mirror.
-pub const REACH: f64 = f64::EPSILON / 2.0;
+pub(crate) const REACH: f64 = f64::EPSILON / 2.0;
 
 /// The tail probability cut off at each end when a distribution stands for a box (0.1 %): the
 /// interval answer of a normal or lognormal input covers its 0.1 % to 99.9 % quantiles.
-pub const TAIL: f64 = 1e-3;
+pub(crate) const TAIL: f64 = 1e-3;
 
 impl fmt::Display for Uncertain {
     /// As it is written: `0.12:0.3`, `normal(0.2,0.03)`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        // Each number as short as it reads back: `1e300`, not its 301 digits (issue 23, class 8).
+        // Each number as short as it reads back: `1e300`, not its 301 digits.
         let t = crate::settings::number_text;
         match *self {
             Uncertain::Point { value } => write!(f, "{}", t(value)),

@@ -56,7 +56,7 @@
 //! - **x_jam** = r cot(theta/2) + h / sin(theta) falls as theta grows on (0, 90 deg] (dx/dtheta
 //!   < 0 there, the statics docs), so its interval is x at the two ends of theta's, swapped.
 //!
-//! [`hull`] is this rule on two corners' answers; the sweep band calls it at each swept value.
+//! `hull` is this rule on two corners' answers; the sweep band calls it at each swept value.
 //! `tests/range_promise.rs` checks it on random boxes against a dense grid of point answers.
 //!
 //! ## The status changes
@@ -74,8 +74,8 @@
 //! range answer over one input costs its two corners, a root and two statuses per change
 //! (`cargo bench --bench uncertain` prints it against a point answer).
 //!
-//! The other models answer the box by sampling it: a grid of [`SAMPLES_PER_INPUT`] values per
-//! input (at most [`MAX_GRID`] points), whose range of answers is reported, not a bound.
+//! The other models answer the box by sampling it: a grid of `SAMPLES_PER_INPUT` values per
+//! input (at most `MAX_GRID` points), whose range of answers is reported, not a bound.
 
 use serde::Serialize;
 
@@ -86,10 +86,10 @@ use crate::scene::{JamStatus, SceneParams};
 use crate::statics;
 
 /// Values per input when a model other than the closed form samples the box.
-pub const SAMPLES_PER_INPUT: usize = 9;
+pub(crate) const SAMPLES_PER_INPUT: usize = 9;
 
 /// Largest sampling grid: with more inputs each gets fewer values (at least 2, its ends).
-pub const MAX_GRID: usize = 81;
+pub(crate) const MAX_GRID: usize = 81;
 
 /// Halvings of a bisection of the status along an input: 2^-30 < 1e-9 of the range's width.
 const HALVINGS: usize = 30;
@@ -107,7 +107,7 @@ pub enum End {
 /// How the box was answered.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "method", rename_all = "snake_case")]
-pub enum Method {
+pub enum RangeMethod {
     /// Exactly, from the corners (closed form, monotone).
     Corners,
     /// By evaluating the model at `samples` points of a grid over the box.
@@ -177,7 +177,7 @@ pub struct Corner {
 pub struct RangeAnswer {
     /// Exact from the corners, or sampled.
     #[serde(flatten)]
-    pub method: Method,
+    pub method: RangeMethod,
     /// The corner with every input at its theta-raising end (sampled: the sample with the
     /// largest theta_jam, or the first sample when none answers).
     pub earliest: Corner,
@@ -197,7 +197,7 @@ pub struct RangeAnswer {
     pub statuses: Vec<JamStatus>,
 }
 
-/// The interval of a box from the closed form's answers at its two extreme corners ([`hull`]).
+/// The interval of a box from the closed form's answers at its two extreme corners (`hull`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Hull {
     /// [min, max] of theta_jam in deg over the box's answering points.
@@ -210,7 +210,7 @@ pub struct Hull {
 
 /// A point's answer as [`hull`] reads it: its status and, where it answers one, (theta_jam in
 /// deg, x_jam in mm).
-pub type PointAnswer = (JamStatus, Option<(f64, f64)>);
+pub(crate) type PointAnswer = (JamStatus, Option<(f64, f64)>);
 
 /// The interval of theta_jam and x_jam over a box from the closed form's answers at its
 /// earliest-jam and latest-jam corners (every input at its theta-raising end, and at the
@@ -219,7 +219,7 @@ pub type PointAnswer = (JamStatus, Option<(f64, f64)>);
 /// or never jamming the palm's end, a too weak latest corner the start angle. `p` is the
 /// scene at either corner (the start angle, the radius, the palm offset and its length, which
 /// no uncertain input moves). None where no point of the box answers.
-pub fn hull(p: &SceneParams, earliest: PointAnswer, latest: PointAnswer) -> Option<Hull> {
+pub(crate) fn hull(p: &SceneParams, earliest: PointAnswer, latest: PointAnswer) -> Option<Hull> {
     use JamStatus::{BeyondReach, JammedAtStart, Jams, NeverJams, TooWeak};
     let start = p.start_angle_deg.to_radians();
     let held = (
@@ -322,7 +322,7 @@ pub fn closed_form(p: &SceneParams, set: &UncertainSet) -> Result<RangeAnswer> {
         }
     };
     Ok(RangeAnswer {
-        method: Method::Corners,
+        method: RangeMethod::Corners,
         theta_jam_deg: hull.map(|h| h.theta_jam_deg),
         x_jam_mm: hull.map(|h| h.x_jam_mm),
         reached: hull.map(|h| h.reached),
@@ -333,7 +333,7 @@ pub fn closed_form(p: &SceneParams, set: &UncertainSet) -> Result<RangeAnswer> {
     })
 }
 
-/// The box's two extreme corners, answered through the port, and its interval ([`hull`]):
+/// The box's two extreme corners, answered through the port, and its interval (`hull`):
 /// two point answers' work, without the status changes that [`closed_form`] adds.
 pub fn ends(p: &SceneParams, set: &UncertainSet) -> Result<BoxEnds> {
     let per_input: Vec<(f64, f64, End)> = set
@@ -482,8 +482,8 @@ fn newton_angle(c: f64, b: f64, k: f64, target: f64, (lo, hi): (f64, f64)) -> Op
     None
 }
 
-/// Any model over the box by sampling it: a grid of [`SAMPLES_PER_INPUT`] values per input (fewer
-/// when the grid would pass [`MAX_GRID`]).
+/// Any model over the box by sampling it: a grid of `SAMPLES_PER_INPUT` values per input (fewer
+/// when the grid would pass `MAX_GRID`).
 pub fn sampled(spec: &ModelSpec, p: &SceneParams, set: &UncertainSet) -> Result<RangeAnswer> {
     let k = set.inputs.len() as u32;
     let n = (2..=SAMPLES_PER_INPUT)
@@ -575,7 +575,7 @@ pub fn sampled(spec: &ModelSpec, p: &SceneParams, set: &UncertainSet) -> Result<
         })
         .collect();
     Ok(RangeAnswer {
-        method: Method::Sampled {
+        method: RangeMethod::Sampled {
             samples: points.len(),
         },
         theta_jam_deg: span(|s| s.theta_jam_deg),

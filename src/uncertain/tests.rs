@@ -53,7 +53,7 @@ fn every_form_parses_and_prints_as_written() {
     }
 }
 
-/// The bad input: a reversed or empty range, a negative support, a non-positive
+/// Bad input: a reversed or empty range, a negative support, a non-positive
 /// spread; each refused naming the setting and quoting the value as written.
 #[test]
 fn bad_ranges_and_distributions_name_the_setting() {

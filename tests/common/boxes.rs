@@ -1,7 +1,6 @@
 //! Random boxes of uncertain inputs over random palm scenes, and the point answers inside a
 //! box (`#[path = "common/boxes.rs"] mod boxes;`): what the range, sweep band and jam map band
 //! tests check their intervals against.
-#![allow(dead_code)] // each test crate uses its own subset
 
 use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
 use jamchart::{JamStatus, ModelSpec, SceneParams};

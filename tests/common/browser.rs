@@ -7,7 +7,6 @@
 //!
 //! Under CI (`CI=true`) a browser that is not installed fails the test; locally it is skipped
 //! with the reason printed. `JAMCHART_CHROMIUM` / `JAMCHART_FIREFOX` name other binaries.
-#![allow(dead_code)] // each test crate uses its own subset
 
 use std::io::{BufRead, BufReader, Read};
 use std::net::TcpStream;

@@ -1,5 +1,4 @@
-//! Running the real binary from CLI tests (`#[path = "common/cli.rs"] mod cli_util;`).
-#![allow(dead_code)] // each test crate uses its own subset
+//! Running the real binary from the tests.
 
 use std::path::Path;
 use std::process::{Command, Output};
@@ -49,7 +48,7 @@ pub fn json(o: &Output) -> Value {
     serde_json::from_slice(&o.stdout).expect("stdout is JSON")
 }
 
-/// The shaft of issue 18 as flags: a 25 mm steel shaft (r 12.5 mm), 0.4 kg, a 40 N push and an
+/// The example shaft as flags: a 25 mm steel shaft (r 12.5 mm), 0.4 kg, a 40 N push and an
 /// 80 mm palm; the friction is the test's.
 pub const SHAFT: [&str; 8] = [
     "--radius",
@@ -69,4 +68,48 @@ pub fn longest_digit_run(s: &str) -> usize {
         .map(str::len)
         .max()
         .unwrap_or(0)
+}
+
+/// Runs `jamchart ARGS` in `dir` under a 4 GiB address-space cap (`ulimit -v`).
+pub fn jamchart_capped(dir: &Path, args: &[&str]) -> Output {
+    jamchart_under(dir, 4 << 20, args)
+}
+
+/// Runs `jamchart ARGS` in `dir` under an address-space cap of `kib` KiB (`ulimit -v`).
+pub fn jamchart_under(dir: &Path, kib: u64, args: &[&str]) -> Output {
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {kib} && exec \"$0\" \"$@\""))
+        .arg(env!("CARGO_BIN_EXE_jamchart"))
+        .args(args)
+        .current_dir(dir)
+        .env_remove("RAYON_NUM_THREADS")
+        .output()
+        .unwrap()
+}
+
+/// A scene file `dir/scenes/NAME.toml` on the paper's parameters.
+pub fn scene(dir: &Path, name: &str, body: &str) {
+    let sc = dir.join("scenes");
+    std::fs::create_dir_all(&sc).unwrap();
+    let base = repo().join("config/paper.toml");
+    let text = format!("title = \"t\"\nbase = \"{}\"\n{body}", base.display());
+    std::fs::write(sc.join(format!("{name}.toml")), text).unwrap();
+}
+
+/// The `[chart]` of a jam map of `n` x `n` cells (regions and boundary).
+pub fn jam_map(n: usize) -> String {
+    format!(
+        "[chart]\nkind = \"jam_map\"\nx_axis = {{ param = \"mu\", min = 0.1, max = 0.5, \
+         count = {n} }}\ny_axis = {{ param = \"theta_deg\", min = 10.0, max = 70.0, \
+         count = {n} }}\nlayers = [\"regions\", \"boundary\"]\n"
+    )
+}
+
+/// `render NAME` of `dir/scenes/NAME.toml` into `dir/o`, under the 4 GiB cap.
+pub fn render(dir: &Path, name: &str) -> Output {
+    jamchart_capped(
+        dir,
+        &["render", name, "--scenes-dir", "scenes", "--out", "o"],
+    )
 }

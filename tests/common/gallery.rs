@@ -1,17 +1,16 @@
 //! The gallery's browser tests' shared parts (`#[macro_use] #[path = "common/gallery.rs"]
 //! mod gallery;`, after `browser` and `cli_util`): a check run in both browsers, a gallery
 //! rendered into a temporary folder, the pinned read-offs of a dumped page.
-#![allow(dead_code)] // each test crate uses its own subset
 
 use std::path::{Path, PathBuf};
 
 use serde_json::Value;
 
 use super::browser::{self, Browser, Kind};
-use super::cli_util::{self, jamchart};
+use super::cli::{self as cli_util, jamchart};
 
-/// A check as two tests: `$chromium` runs it in Chromium, `$firefox` in Firefox (issue 22:
-/// "current Chromium and Firefox"). Doc comments before the invocation document both.
+/// A check as two tests: `$chromium` runs it in Chromium, `$firefox` in Firefox (the gallery
+/// must work in current Chromium and Firefox). Doc comments before the invocation document both.
 macro_rules! in_chromium_and_firefox {
     ($(#[$doc:meta])* $chromium:ident, $firefox:ident, $check:ident) => {
         $(#[$doc])*

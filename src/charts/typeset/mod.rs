@@ -9,7 +9,7 @@
 //!   run is as wide at 15 px as at 30 px and no glyph is rounded to a whole pixel. plotters'
 //!   own path drew each glyph's ink box at the truncated pen position and dropped the glyph's
 //!   left side bearing (`rect.min.x`): narrow glyphs with a wide bearing ("i", "1") were pulled
-//!   left, which is the "fricti on" and "1 0 mm" of issue 12.
+//!   left, which is the "fricti on" and "1 0 mm" once seen in the charts.
 //! - Anchors are typographic: the text box runs from the font's ascent line (`VPos::Top`) to its
 //!   descent line (`VPos::Bottom`); `VPos::Center` puts the middle of that box, which is about
 //!   the middle of the capitals and digits, on the anchor. A size is the box's height in px
@@ -458,7 +458,7 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
 mod tests {
     use super::*;
 
-    /// Regression for issue 12's "fricti on": every glyph starts where the previous one's
+    /// Regression for "fricti on": every glyph starts where the previous one's
     /// advance (plus kerning) ends, in font units, so the gaps do not depend on the pixel grid.
     #[test]
     fn glyphs_sit_at_their_advance() {

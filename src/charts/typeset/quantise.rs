@@ -115,7 +115,7 @@ mod tests {
 
     use super::*;
 
-    /// Regression for issue 18's "lines are not anti-aliased (visible steps)": a slanted 2 px
+    /// Regression for "lines are not anti-aliased (visible steps)": a slanted 2 px
     /// curve drawn through the PNG's backend used to be plotters' polygon, filled at full
     /// strength, so each pixel was ink or paper; now its edges are blended.
     #[test]

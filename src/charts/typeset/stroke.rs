@@ -1,4 +1,4 @@
-//! Anti-aliased wide strokes for the PNG: slanted lines and curves without steps (issue 18).
+//! Anti-aliased wide strokes for the PNG: slanted lines and curves without steps.
 //!
 //! plotters draws a line wider than 1 px as a polygon whose corners are truncated to whole
 //! pixels and fills it without anti-aliasing, so every slanted curve of a chart showed stair
@@ -121,7 +121,7 @@ pub fn axis_aligned(points: &[Px]) -> bool {
 mod tests {
     use super::*;
 
-    /// Regression for issue 18's "lines are not anti-aliased (visible steps)": a 2 px line at
+    /// Regression for "lines are not anti-aliased (visible steps)": a 2 px line at
     /// a slant used to be a truncated polygon filled at full strength, so every pixel it
     /// touched was either ink or paper. Now the pixels along its edges are partly covered, and
     /// the ink across the line sums to its width.

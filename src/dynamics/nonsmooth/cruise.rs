@@ -21,8 +21,7 @@
 //! F 20-2000 N and both drives the status is the same and x_jam moves by at most the figure the
 //! test prints, while the steps fall 3-8 fold.
 
-use super::step::{ContactMode, DriveMode, Modes, StepSolution};
-use super::{Built, LIFT_MM, Stepper};
+use super::step::{Built, ContactMode, DriveMode, LIFT_MM, Modes, StepSolution, Stepper};
 
 /// Steps per cruise: 1 deg of palm turn at the motion drive's 0.1 deg step, 0.1 deg at the
 /// force drive's 0.01 deg.

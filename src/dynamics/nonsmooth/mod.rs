@@ -127,7 +127,7 @@
 //! # Against the regularised model in the stiff limit
 //!
 //! With the motion drive both methods lock up at r/mu (`nonsmooth_and_stiff_regularised_agree`).
-//! With the force drive both report where the disc comes to rest (issue 20, item 4: the
+//! With the force drive both report where the disc comes to rest (the
 //! regularised model used to read the jam at the speed collapse, while the disc, let go by the
 //! stalled palm, still coasted, 1.5-1.7 % short at mu = 0.15 and 30 deg/s). The nonsmooth rest
 //! lies within 4.8e-6 of an independent rigid model over mu 0.15-0.45, F 50-1000 N, 10-90 deg/s
@@ -156,17 +156,14 @@ pub(crate) mod step;
 use serde::Serialize;
 
 use self::cruise::{CRUISE_STEPS, Cruise};
-use self::step::{ContactMode, DriveMode, Modes, StepProblem};
+use self::step::{ContactMode, DriveMode, LIFT_MM, Modes, Stepper};
 use super::jam::SeriesRow;
-use super::{DiscMotion, Drive, DynamicsParams};
+use super::{Drive, DynamicsParams};
 use crate::scene::SceneParams;
 
 /// Speed (mm/s, and rad/s for the rotation) below which the disc is at rest: the speeds that
 /// close gaps of round-off size (1e-11 mm) over a step are around 1e-7 mm/s.
 const REST_MM_S: f64 = 1e-6;
-
-/// Height (mm) above the ground beyond which the disc has left it: far above round-off.
-const LIFT_MM: f64 = 1e-9;
 
 /// A lock-up: the motion-driven palm cannot turn any further without entering the disc.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -249,125 +246,6 @@ struct LastStep {
 /// Halvings of the step in which the palm locks up: the lock-up is located to 2^-16 of a step
 /// (7e-6 mm at mu = 0.15 and the default 0.1 deg), far below the method's own error.
 const LOCATE_HALVINGS: u32 = 16;
-
-/// The step length in s for a palm turn of `step_deg` at omega.
-pub fn step_s(params: &DynamicsParams) -> f64 {
-    params.nonsmooth_step_deg().to_radians() / params.drive.omega_deg_s.to_radians()
-}
-
-/// The constants of one simulation, in kg, mm, s.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Stepper {
-    /// r in mm.
-    pub radius: f64,
-    /// The palm face's offset h in mm.
-    pub offset: f64,
-    /// g in mm/s^2.
-    pub gravity: f64,
-    /// M^-1 = (1/m, 1/m, 1/I) in 1/kg and 1/(kg mm^2); 1/I = 0 when the disc only slides.
-    pub inv_mass: [f64; 3],
-    pub mu: [f64; 2],
-    pub mu_static: [f64; 2],
-    /// omega in rad/s.
-    pub omega: f64,
-    /// The palm's normal impulse limit over a step in kg mm/s (infinite: motion drive).
-    pub push_limit: f64,
-    /// The step in s.
-    pub dt: f64,
-}
-
-/// One step's problem and what is needed to turn its answer into velocities.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Built {
-    pub problem: StepProblem,
-    /// J: rows U_NA, U_TA, U_NB, U_TB; columns x_dot, y_dot, phi_dot.
-    pub jac: [[f64; 3]; 4],
-    /// v + dt M^-1 f_ext in mm/s and rad/s.
-    pub v_free: [f64; 3],
-    /// (g_A, g_B) in mm.
-    pub gaps: [f64; 2],
-    /// s_B, the contact's distance from the hinge, in mm.
-    pub contact_distance: f64,
-}
-
-impl Stepper {
-    /// The constants for valid parameters.
-    pub fn new(scene: &SceneParams, params: &DynamicsParams) -> Stepper {
-        let dt = step_s(params);
-        let (m, r) = (scene.mass_kg, scene.radius_mm);
-        let mu = [scene.mu_ground, scene.mu_palm];
-        Stepper {
-            radius: r,
-            offset: scene.palm_offset_mm,
-            gravity: scene.gravity_m_s2 * 1000.0,
-            inv_mass: [
-                1.0 / m,
-                1.0 / m,
-                match params.integrator.disc {
-                    DiscMotion::Slides => 0.0,
-                    DiscMotion::Rolls => 2.0 / (m * r * r),
-                },
-            ],
-            mu,
-            mu_static: [
-                params.friction.mu_static_ground.unwrap_or(mu[0]),
-                params.friction.mu_static_palm.unwrap_or(mu[1]),
-            ],
-            omega: params.drive.omega_deg_s.to_radians(),
-            // N_max in kg mm/s^2 (1 N = 1000 kg mm/s^2), as an impulse over one step.
-            push_limit: match params.drive.mode {
-                Drive::Motion => f64::INFINITY,
-                Drive::Force => scene.force_n * scene.alpha_palm().cos() * 1000.0 * dt,
-            },
-            dt,
-        }
-    }
-
-    /// The step's problem at configuration `q`, velocity `v` and palm angle `theta`.
-    pub fn build(&self, q: &[f64; 3], v: &[f64; 3], theta: f64) -> Built {
-        let (r, h, dt) = (self.radius, self.offset, self.dt);
-        let (s, c) = theta.sin_cos();
-        let s_b = q[0] * c + q[1] * s;
-        let jac = [[0.0, 1.0, 0.0], [1.0, 0.0, r], [s, -c, 0.0], [c, s, -r]];
-        let v_free = [v[0], v[1] - dt * self.gravity, v[2]];
-        let mut b = [0.0; 4];
-        let mut a = [[0.0; 4]; 4];
-        for i in 0..4 {
-            b[i] = (0..3).map(|k| jac[i][k] * v_free[k]).sum();
-            for j in 0..4 {
-                a[i][j] = (0..3)
-                    .map(|k| jac[i][k] * self.inv_mass[k] * jac[j][k])
-                    .sum();
-            }
-        }
-        let gaps = [q[1] - r, q[0] * s - q[1] * c - r - h];
-        Built {
-            problem: StepProblem {
-                b,
-                a,
-                c: [0.0, 0.0, s_b, -h],
-                gap_rate: [gaps[0] / dt, gaps[1] / dt],
-                mu: self.mu,
-                mu_static: self.mu_static,
-                omega: self.omega,
-                push_limit: self.push_limit,
-            },
-            jac,
-            v_free,
-            gaps,
-            contact_distance: s_b,
-        }
-    }
-
-    /// Velocities after the step for impulses `p`: v+ = v_free + M^-1 J^T P.
-    pub fn velocities(&self, built: &Built, p: &[f64; 4]) -> [f64; 3] {
-        let mut v = built.v_free;
-        for (k, vk) in v.iter_mut().enumerate() {
-            *vk += self.inv_mass[k] * (0..4).map(|i| built.jac[i][k] * p[i]).sum::<f64>();
-        }
-        v
-    }
-}
 
 /// Runs the push from the start angle with the disc at rest touching the palm and the ground,
 /// and on for `after_jam_s` after a force-driven jam (a lock-up ends the run: the rigid palm can

@@ -17,6 +17,13 @@
 //! When no choice is consistent the motion-driven palm cannot turn without entering the disc:
 //! a lock-up.
 
+use crate::dynamics::MM_PER_M;
+use crate::dynamics::{DiscMotion, Drive, DynamicsParams};
+use crate::scene::SceneParams;
+
+/// Height (mm) above the ground beyond which the disc has left it: far above round-off.
+pub(super) const LIFT_MM: f64 = 1e-9;
+
 /// A contact's mode over one step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ContactMode {
@@ -263,4 +270,123 @@ fn solve5(mut m: [[f64; 6]; 5]) -> Option<[f64; 5]> {
         z[row] = (m[row][5] - s) / m[row][row];
     }
     Some(z)
+}
+
+/// The step length in s for a palm turn of `step_deg` at omega.
+pub fn step_s(params: &DynamicsParams) -> f64 {
+    params.nonsmooth_step_deg().to_radians() / params.drive.omega_deg_s.to_radians()
+}
+
+/// The constants of one simulation, in kg, mm, s.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Stepper {
+    /// r in mm.
+    pub radius: f64,
+    /// The palm face's offset h in mm.
+    pub offset: f64,
+    /// g in mm/s^2.
+    pub gravity: f64,
+    /// M^-1 = (1/m, 1/m, 1/I) in 1/kg and 1/(kg mm^2); 1/I = 0 when the disc only slides.
+    pub inv_mass: [f64; 3],
+    pub mu: [f64; 2],
+    pub mu_static: [f64; 2],
+    /// omega in rad/s.
+    pub omega: f64,
+    /// The palm's normal impulse limit over a step in kg mm/s (infinite: motion drive).
+    pub push_limit: f64,
+    /// The step in s.
+    pub dt: f64,
+}
+
+/// One step's problem and what is needed to turn its answer into velocities.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Built {
+    pub problem: StepProblem,
+    /// J: rows U_NA, U_TA, U_NB, U_TB; columns x_dot, y_dot, phi_dot.
+    pub jac: [[f64; 3]; 4],
+    /// v + dt M^-1 f_ext in mm/s and rad/s.
+    pub v_free: [f64; 3],
+    /// (g_A, g_B) in mm.
+    pub gaps: [f64; 2],
+    /// s_B, the contact's distance from the hinge, in mm.
+    pub contact_distance: f64,
+}
+
+impl Stepper {
+    /// The constants for valid parameters.
+    pub fn new(scene: &SceneParams, params: &DynamicsParams) -> Stepper {
+        let dt = step_s(params);
+        let (m, r) = (scene.mass_kg, scene.radius_mm);
+        let mu = [scene.mu_ground, scene.mu_palm];
+        Stepper {
+            radius: r,
+            offset: scene.palm_offset_mm,
+            gravity: scene.gravity_m_s2 * MM_PER_M,
+            inv_mass: [
+                1.0 / m,
+                1.0 / m,
+                match params.integrator.disc {
+                    DiscMotion::Slides => 0.0,
+                    DiscMotion::Rolls => 2.0 / (m * r * r),
+                },
+            ],
+            mu,
+            mu_static: [
+                params.friction.mu_static_ground.unwrap_or(mu[0]),
+                params.friction.mu_static_palm.unwrap_or(mu[1]),
+            ],
+            omega: params.drive.omega_deg_s.to_radians(),
+            // N_max in kg mm/s^2 (1 N = 1000 kg mm/s^2), as an impulse over one step.
+            push_limit: match params.drive.mode {
+                Drive::Motion => f64::INFINITY,
+                Drive::Force => scene.force_n * scene.alpha_palm().cos() * MM_PER_M * dt,
+            },
+            dt,
+        }
+    }
+
+    /// The step's problem at configuration `q`, velocity `v` and palm angle `theta`.
+    pub fn build(&self, q: &[f64; 3], v: &[f64; 3], theta: f64) -> Built {
+        let (r, h, dt) = (self.radius, self.offset, self.dt);
+        let (s, c) = theta.sin_cos();
+        let s_b = q[0] * c + q[1] * s;
+        let jac = [[0.0, 1.0, 0.0], [1.0, 0.0, r], [s, -c, 0.0], [c, s, -r]];
+        let v_free = [v[0], v[1] - dt * self.gravity, v[2]];
+        let mut b = [0.0; 4];
+        let mut a = [[0.0; 4]; 4];
+        for i in 0..4 {
+            b[i] = (0..3).map(|k| jac[i][k] * v_free[k]).sum();
+            for j in 0..4 {
+                a[i][j] = (0..3)
+                    .map(|k| jac[i][k] * self.inv_mass[k] * jac[j][k])
+                    .sum();
+            }
+        }
+        let gaps = [q[1] - r, q[0] * s - q[1] * c - r - h];
+        Built {
+            problem: StepProblem {
+                b,
+                a,
+                c: [0.0, 0.0, s_b, -h],
+                gap_rate: [gaps[0] / dt, gaps[1] / dt],
+                mu: self.mu,
+                mu_static: self.mu_static,
+                omega: self.omega,
+                push_limit: self.push_limit,
+            },
+            jac,
+            v_free,
+            gaps,
+            contact_distance: s_b,
+        }
+    }
+
+    /// Velocities after the step for impulses `p`: v+ = v_free + M^-1 J^T P.
+    pub fn velocities(&self, built: &Built, p: &[f64; 4]) -> [f64; 3] {
+        let mut v = built.v_free;
+        for (k, vk) in v.iter_mut().enumerate() {
+            *vk += self.inv_mass[k] * (0..4).map(|i| built.jac[i][k] * p[i]).sum::<f64>();
+        }
+        v
+    }
 }

@@ -3,8 +3,9 @@
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettings, DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
 
-use super::step::ContactMode;
+use super::step::{Built, ContactMode};
 use super::*;
+use crate::dynamics::DiscMotion;
 
 /// A small deterministic generator (64-bit LCG), so the sample is the same on every run.
 struct Lcg(u64);
@@ -266,7 +267,7 @@ fn end_x(end: &End) -> (std::mem::Discriminant<End>, Option<f64>) {
     (std::mem::discriminant(end), x)
 }
 
-/// Issue 21 (speed): cruising (a 10-step stride while the push is steady, `cruise`) must not
+/// Cruising (a 10-step stride while the push is steady, `cruise`) must not
 /// change an answer. Over the design map's mu 0.1-0.8 and F 20-2000 N, both drives, a palm
 /// from 90 and from 40 deg, a short palm (the disc leaves it) and a fast one (30 and 900
 /// deg/s), every run ends the same way with and without cruising, the jam moves by less than
@@ -361,7 +362,7 @@ fn motion_lock_up(mu: f64, step_deg: f64) -> (SceneParams, Run, LockUp) {
     (scene, run, l)
 }
 
-/// Issue 20, item 2 (every number in the docs from a test that prints it): the step table of
+/// Every number in the docs comes from a test that prints it: here the step table of
 /// the module docs, (x_jam - r/mu) / (r/mu) and the steps taken, motion drive at 30 deg/s, for
 /// steps 0.3, 0.1 and 0.01 deg and mu 0.15, 0.3, 0.45. Each lies within the bound the step's
 /// doc gives (3e-4 at 0.3 deg, 3e-5 at 0.1 deg, 1e-6 at 0.01 deg) and short of r/mu.

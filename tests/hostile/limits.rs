@@ -1,59 +1,14 @@
-//! What a hostile test of the binary found (issue 13), one regression test per class: resource
+//! The binary under hostile input, one regression test per class of defect: resource
 //! limits, repeated flags, validation before computation, empty scene folders, charts whose
 //! model failed, and a series that ends before the time asked for.
 
-use std::path::Path;
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-#[path = "common/cli.rs"]
-mod cli_util;
-use cli_util::{jamchart, json, repo, stderr};
+use crate::common::cli as cli_util;
+use cli_util::{jam_map, jamchart, jamchart_capped, jamchart_under, json, render, scene, stderr};
 
-/// Runs `jamchart ARGS` in `dir` under a 4 GiB address-space cap (`ulimit -v`).
-fn jamchart_capped(dir: &Path, args: &[&str]) -> Output {
-    jamchart_under(dir, 4 << 20, args)
-}
-
-/// Runs `jamchart ARGS` in `dir` under an address-space cap of `kib` KiB (`ulimit -v`).
-fn jamchart_under(dir: &Path, kib: u64, args: &[&str]) -> Output {
-    Command::new("sh")
-        .arg("-c")
-        .arg(format!("ulimit -v {kib} && exec \"$0\" \"$@\""))
-        .arg(env!("CARGO_BIN_EXE_jamchart"))
-        .args(args)
-        .current_dir(dir)
-        .env_remove("RAYON_NUM_THREADS")
-        .output()
-        .unwrap()
-}
-
-/// A scene file `dir/scenes/NAME.toml` on the paper's parameters.
-fn scene(dir: &Path, name: &str, body: &str) {
-    let sc = dir.join("scenes");
-    std::fs::create_dir_all(&sc).unwrap();
-    let base = repo().join("config/paper.toml");
-    let text = format!("title = \"t\"\nbase = \"{}\"\n{body}", base.display());
-    std::fs::write(sc.join(format!("{name}.toml")), text).unwrap();
-}
-
-/// The `[chart]` of a jam map of `n` x `n` cells (regions and boundary).
-fn jam_map(n: usize) -> String {
-    format!(
-        "[chart]\nkind = \"jam_map\"\nx_axis = {{ param = \"mu\", min = 0.1, max = 0.5, \
-         count = {n} }}\ny_axis = {{ param = \"theta_deg\", min = 10.0, max = 70.0, \
-         count = {n} }}\nlayers = [\"regions\", \"boundary\"]\n"
-    )
-}
-
-fn render(dir: &Path, name: &str) -> Output {
-    jamchart_capped(
-        dir,
-        &["render", name, "--scenes-dir", "scenes", "--out", "o"],
-    )
-}
-
-/// Regression (issue 13, "scene limits that pass validation exhaust memory"): a jam map at
+/// Regression ("scene limits that pass validation exhaust memory"): a jam map at
 /// 8192 x 8192 (the old 2^26-cell limit) took 10 GB and a sweep of 16777216 points 3.7 GB;
 /// under a 4 GiB address-space cap both died by SIGABRT. Every grid, sweep and series is now
 /// refused by its estimate, with the estimate and the limit in the message, before anything
@@ -116,7 +71,7 @@ fn scene_limits_are_found_by_estimate_not_by_allocation_failure() {
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
 }
 
-/// Regression (issue 23, class 3, "aborts at sizes the tool accepts"): under a 512 MiB
+/// Regression ("aborts at sizes the tool accepts"): under a 512 MiB
 /// address-space cap `sweep mu=0.1:0.5:1600000` (2.2 GB peak, estimated at 640 MB from 400 B a
 /// point) and a 1958 x 1958 map died by SIGABRT. The estimates are now measured (1200 B a sweep
 /// point, `crate::limits`) and the memory limit is half the address-space cap when that is
@@ -155,7 +110,7 @@ fn memory_check_follows_the_address_space_cap() {
     assert!(d.join("o/sweep_mu.csv").is_file());
 }
 
-/// Regression (issue 13, "every count has a sane documented maximum"): `accuracy --runs
+/// Regression ("every count has a sane documented maximum"): `accuracy --runs
 /// 18446744073709551615` panicked (capacity overflow), `--runs 1000000000` reserved 8 GB.
 #[test]
 fn every_count_has_a_maximum() {
@@ -200,7 +155,7 @@ fn every_count_has_a_maximum() {
     );
 }
 
-/// Regression (issue 13): `accuracy --tolerances 1e-3 --tolerances 1e-4` was accepted while
+/// Regression: `accuracy --tolerances 1e-3 --tolerances 1e-4` was accepted while
 /// every other repeated flag is refused.
 #[test]
 fn repeated_list_flags_are_refused() {
@@ -216,7 +171,7 @@ fn repeated_list_flags_are_refused() {
     }
 }
 
-/// Regression (issue 13): `accuracy --min-norm-tolerances abc` was refused only after the
+/// Regression: `accuracy --min-norm-tolerances abc` was refused only after the
 /// whole study had run. With a study of minutes (1000 runs per point), the refusal must come
 /// at once: a run still going after 60 s has computed before validating.
 #[test]
@@ -251,7 +206,7 @@ fn everything_is_validated_before_computing() {
     }
 }
 
-/// Regression (issue 13): `render --scenes-dir EMPTY` exited 0 and did nothing.
+/// Regression: `render --scenes-dir EMPTY` exited 0 and did nothing.
 #[test]
 fn render_of_an_empty_scenes_dir_fails_saying_so() {
     let dir = tempfile::tempdir().unwrap();
@@ -270,7 +225,7 @@ fn render_of_an_empty_scenes_dir_fails_saying_so() {
     assert!(!dir.path().join("o").exists());
 }
 
-/// Regression (issue 13): a fig5 scene whose simulation fails (`[dynamics]
+/// Regression: a fig5 scene whose simulation fails (`[dynamics]
 /// stiffness_n_per_mm_e = 1e300`) exited 0 with empty plots. The render now fails naming the
 /// scene and the reason, and writes nothing (not even the other scenes' files).
 #[test]
@@ -287,7 +242,7 @@ fn a_chart_whose_model_failed_fails_the_render_naming_scene_and_reason() {
 /// A contact so stiff that every simulation gives up at t = 0.
 const STIFF: &str = "[dynamics.contact]\nstiffness_n_per_mm_e = 1e300\n";
 
-/// Regression (issue 13, leftover of "a chart whose model failed"): a fig6-like sweep whose
+/// Regression ("a chart whose model failed", in a sweep): a fig6-like sweep whose
 /// simulation layer failed at every point (`[dynamics] stiffness_n_per_mm_e = 1e300`: the
 /// integrator gives up at t = 0) exited 0 and drew the layer as nothing. The render now fails
 /// naming the scene, the model and the reason, and writes nothing.
@@ -320,7 +275,7 @@ fn render_fails_saying(scenes: &[(&str, &str)], said: &[&str]) {
     assert!(!d.join("o").exists(), "nothing written: {err}");
 }
 
-/// Regression (issue 13): `--after-jam 100 --series` stopped silently when the palm closed.
+/// Regression: `--after-jam 100 --series` stopped silently when the palm closed.
 /// The text and the JSON say where the series ends and why.
 #[test]
 fn a_series_says_where_and_why_it_stopped() {
@@ -354,70 +309,5 @@ fn a_series_says_where_and_why_it_stopped() {
     assert!(
         r["series_end"].as_str().unwrap().contains("palm closed"),
         "{r}"
-    );
-}
-
-/// Peak resident memory in bytes of `jamchart ARGS` run in `dir`, read from the kernel's
-/// accounting of that one child (wait4), so tests running beside it do not count.
-#[allow(clippy::zombie_processes)] // reaped by wait4, which std's Child does not see
-fn peak_rss_bytes(dir: &Path, args: &[&str]) -> u64 {
-    let child = Command::new(env!("CARGO_BIN_EXE_jamchart"))
-        .args(args)
-        .current_dir(dir)
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
-    let mut status = 0;
-    // SAFETY: wait4 reaps our own child and writes one rusage through a valid pointer; the
-    // Child is not waited on again.
-    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
-    let pid = unsafe { libc::wait4(child.id() as i32, &mut status, 0, &mut usage) };
-    assert_eq!(pid, child.id() as i32);
-    assert!(libc::WIFEXITED(status) && libc::WEXITSTATUS(status) == 0);
-    // ru_maxrss is in KiB on Linux.
-    usage.ru_maxrss as u64 * 1024
-}
-
-/// Issue 21 ("memory estimates within 2x of what is measured"): a jam map's estimate per cell,
-/// as the refusal of a map too large states it, lies between the measured cost per cell and
-/// twice it. Measured as the difference of the peaks at 500 x 500 and 1000 x 1000 cells (the
-/// process's fixed part cancels); about 33 B a cell since the cells CSV is streamed to its
-/// file (it was 59 B while the CSV was built in memory, against an estimate of 75 B).
-#[test]
-fn jam_map_memory_estimate_is_within_2x_of_the_measured_peak() {
-    let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
-    let peak = |n: usize| {
-        let name = format!("map{n}");
-        scene(d, &name, &jam_map(n));
-        let args = [
-            "render",
-            &name,
-            "--scenes-dir",
-            "scenes",
-            "--out",
-            "o",
-            "-q",
-        ];
-        peak_rss_bytes(d, &args)
-    };
-    let (small, large) = (peak(500), peak(1000));
-    let measured = (large as f64 - small as f64) / (1000.0 * 1000.0 - 500.0 * 500.0);
-    // The estimate as the refusal states it: "the memory of 67108864 cells of the jam map
-    // would take about 2.6 GiB".
-    scene(d, "huge", &jam_map(8192));
-    let out = render(d, "huge");
-    let err = stderr(&out);
-    let gib: f64 = err
-        .split("would take about ")
-        .nth(1)
-        .and_then(|r| r.split(" GiB").next())
-        .and_then(|v| v.parse().ok())
-        .unwrap_or_else(|| panic!("no estimate in GiB: {err}"));
-    let estimate = gib * (1u64 << 30) as f64 / (8192.0 * 8192.0);
-    assert!(
-        measured <= estimate * 1.05 && estimate <= 2.0 * measured,
-        "estimate {estimate:.1} B/cell, measured {measured:.1} B/cell ({small} -> {large} B)"
     );
 }

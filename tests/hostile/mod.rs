@@ -3,12 +3,14 @@
 //! numbers and names printed to a terminal, scripted callers' descriptors, usage errors, and
 //! the V-block at the edges of the float range.
 
-#[path = "../common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 
+mod battery;
 mod check_folder;
+mod limits;
 mod manifest_forms;
 mod printed_text;
+mod refusals;
 mod sampled_work;
 mod scripted_callers;
 mod special_files;

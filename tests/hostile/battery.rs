@@ -1,14 +1,13 @@
-//! A third hostile run of the binary (issue 23, left over): a signal in the middle of a write
+//! The binary under hostile input: a signal in the middle of a write
 //! into folders the render created, the one-thread fallback on an address-space-starved
-//! system, and a battery over every class of the issue and the surfaces added since, each
+//! system, and a battery over every class of hostile input and every surface of the tool, each
 //! run checked for a clean answer or a clean refusal.
 
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{kill_and_wait, longest_digit_run, stderr, stdout};
 
 /// The test hook of `atomic::write_all`: a pause between staging a set and committing it.
@@ -31,7 +30,7 @@ fn files_under(dir: &Path) -> Vec<String> {
     out
 }
 
-/// Issue 23, class 9 (left over): a signal arriving while a render writes into folders it
+/// A signal arriving while a render writes into folders it
 /// created must leave neither the folders nor a `.tmp` file. The test hook holds the render
 /// after its temporaries are written in `new/sub` (it otherwise passes that point in about a
 /// millisecond); SIGTERM, SIGINT and SIGHUP then each leave the working folder as it was.
@@ -63,7 +62,7 @@ fn a_signal_during_a_write_into_created_folders_leaves_nothing() {
     }
 }
 
-/// Issue 23, class 3 (left over): when the threads could not all be started, those that did
+/// When the threads could not all be started, those that did
 /// start were told to stop but not waited for, so their stacks (8 MiB each) still held the
 /// address space the one-thread run needed: under `ulimit -v 409600` with 250 threads asked,
 /// `render fig3` aborted with "memory allocation of 2572816 bytes failed" in 3 runs of 5
@@ -140,7 +139,7 @@ fn shows_nan_or_inf(text: &str) -> bool {
         && !text.contains("-> inf")
 }
 
-/// Issue 23, third hostile run, class 1 ("wrong answers with exit 0") on the distributions:
+/// Wrong answers with exit 0 on the distributions:
 /// `solve --mu lognormal(0.2,1e300)` reached mu = inf and printed theta_jam = 182.810 deg at
 /// x_jam = -0.245 mm, `jammed_at_start`, with exit 0; `normal(1e308,1e308)` printed inf. A
 /// distribution whose reach (the quantiles a draw can land on) leaves the setting's valid
@@ -169,7 +168,7 @@ fn a_distribution_that_reaches_infinity_is_refused() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
 }
 
-/// Issue 23, third run, class 8 ("garbled values"): a distribution echoed its numbers in full,
+/// Garbled values: a distribution echoed its numbers in full,
 /// `lognormal(0.2,1000...000)` with 301 digits, in the answer and in the refusal. They are
 /// written as short as they read back.
 #[test]
@@ -184,7 +183,7 @@ fn a_huge_number_in_a_distribution_is_echoed_short() {
     assert!(stdout(&o).contains("mu = 1e-300:0.3"), "{}", stdout(&o));
 }
 
-/// Issue 23, third run, class 8 ("wrong flag named"): `solve --samples -1`, `--seed -1` and
+/// The wrong flag named: `solve --samples -1`, `--seed -1` and
 /// `--quantiles -0.5` were refused as "unexpected argument '-1' found", naming no flag: clap
 /// read the negative value as a flag. Each is now refused naming its own flag.
 #[test]
@@ -199,7 +198,7 @@ fn a_negative_count_or_probability_names_its_flag() {
     }
 }
 
-/// The hostile battery over every class of issue 23 and the surfaces since (ranges and
+/// The hostile battery over every class of bad input and every surface (ranges and
 /// distributions, --samples, --seed, --before, design, vlocator --mu A:B, render --read-off,
 /// --bless/--check, sweep axes, --set): each bad input is refused with exit 2, `jamchart: `
 /// and the flag or key as written, in a short message, leaving no `.tmp`. Prints the count.
@@ -364,7 +363,7 @@ fn the_hostile_battery_answers_at_the_edges_without_nan() {
     }
 }
 
-/// Lost output (class 4) on the surfaces since: an answer written to /dev/full exits non-zero
+/// Lost output: an answer written to /dev/full exits non-zero
 /// with the message, for ranges, distributions, design and the V-block.
 #[test]
 fn lost_output_on_the_new_surfaces_is_an_error() {
@@ -395,7 +394,7 @@ fn run_in_empty(args: &[&str]) -> Output {
     cli_util::jamchart(dir.path(), args)
 }
 
-/// Polish, item 1: `solve --mu 1e-300` printed its `x_rigid` line (and the echoed mu) with
+/// Regression: `solve --mu 1e-300` printed its `x_rigid` line (and the echoed mu) with
 /// 300-digit numbers, the `--radius 1e-300` warning 300 zeros, `design --x-target 1e300` 301
 /// digits, and `solve --mu 0.16:0.3` the nominal mu as 0.22999999999999998. Every number shown
 /// now goes through one formatter: 12 significant digits at most, exponent at the extremes.
@@ -438,7 +437,7 @@ fn numbers_shown_to_a_user_are_short() {
     );
 }
 
-/// Polish, item 2: `--before nan` / `--before inf` were accepted silently when no input is
+/// Regression: `--before nan` / `--before inf` were accepted silently when no input is
 /// distributed (the flag was ignored). They are refused naming `--before` with or without a
 /// distribution, and a `--before` with no distributed input is said to have no effect.
 #[test]
@@ -464,7 +463,7 @@ fn before_nan_is_refused_without_a_distribution() {
     assert!(!stderr(&o).contains("no effect"), "{}", stderr(&o));
 }
 
-/// Polish, item 2: `--quantiles 0.5,0.5` was accepted and the quantile printed twice, and so was
+/// Regression: `--quantiles 0.5,0.5` was accepted and the quantile printed twice, and so was
 /// `--before 40,40`; a probability or a position given twice is refused naming its flag.
 #[test]
 fn duplicate_quantiles_and_before_positions_are_refused() {
@@ -479,7 +478,7 @@ fn duplicate_quantiles_and_before_positions_are_refused() {
     }
 }
 
-/// Polish, item 3: `render -q` still printed its per-scene file lines and the gallery line
+/// Regression: `render -q` still printed its per-scene file lines and the gallery line
 /// (quiet means only errors and warnings), and `--bless` of one picture said "1 pictures
 /// blessed". Quiet prints nothing on success and one picture is one picture.
 #[test]

@@ -1,12 +1,11 @@
-//! What a second hostile test of the binary found (issue 23), one regression test per class:
+//! The binary under hostile input, one regression test per class of defect:
 //! sweeps that bypassed the model port, lost output reported as success, values accepted that
 //! should be refused, and the rest as listed in each test's doc comment.
 
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
-#[path = "common/cli.rs"]
-mod cli_util;
+use crate::common::cli as cli_util;
 use cli_util::{jamchart, repo, stderr, stdout};
 
 /// The rows of `dir/out/NAME.csv` whose first field is `layer`.
@@ -18,7 +17,7 @@ fn layer_rows(dir: &Path, name: &str, layer: &str) -> Vec<String> {
         .collect()
 }
 
-/// Regression (issue 23, class 1, "sweeps bypass the model port"): `sweep mu=0.1:0.5:3
+/// Regression ("sweeps bypass the model port"): `sweep mu=0.1:0.5:3
 /// --start-angle 120` printed `statics,0.1,97.59493,11.70071` with exit 0 where `solve` says
 /// `outside_model` (the palm lifts the disc above 90 deg), and `render fig7b --set
 /// start_angle_deg=120` likewise: the statics and F -> infinity layers called the closed form
@@ -84,7 +83,7 @@ fn jamchart_redirected(dir: &Path, redirect: &str, args: &[&str]) -> Output {
         .unwrap()
 }
 
-/// Regression (issue 23, class 4, "lost output reported as success"): `table --format csv >
+/// Regression ("lost output reported as success"): `table --format csv >
 /// /dev/full` exited 0 with nothing written (an empty file on a full disk): the write's error
 /// was dropped. A failed write is now an error with exit 2 and a message; a closed pipe (`|
 /// head`) still is not. (A closed stdout, `>&-`, is reopened on /dev/null read-write by Rust's
@@ -126,7 +125,7 @@ fn refused(o: &Output, setting: &str) {
     assert!(!e.contains("panicked"), "{e}");
 }
 
-/// Regression (issue 23, class 7, "accepted when it should be refused"): `sweep mu=1e-400:0.5`
+/// Regression ("accepted when it should be refused"): `sweep mu=1e-400:0.5`
 /// became 0 silently (the README says such numbers are refused), `mu=0.1:0.5:5:7` and
 /// `:log:log` were accepted with the last one winning, and `--set title=`,
 /// `dynamics.series.after_jam_s=1e300` and `chart.cases=[]` (which drew every case) rendered.
@@ -170,7 +169,7 @@ fn values_that_mean_nothing_are_refused() {
     }
 }
 
-/// Regression (issue 23, class 2, "axis samples that overflow"): only an axis's ends were
+/// Regression ("axis samples that overflow"): only an axis's ends were
 /// checked, so `sweep mu=1e-320:1:5:log` wrote rows with a blank mu, `sweep
 /// force_n=1e-300:1e300:41:log` 39 rows with no force, and a capacity scene with
 /// load_angle_deg from -1e308 to 1e308 rows `30,,`: the span max/min or max - min overflowed.
@@ -218,7 +217,7 @@ fn every_axis_sample_is_a_number_or_the_axis_is_refused() {
     assert!(rows.iter().all(|r| !r.starts_with("statics,,")), "{rows:?}");
 }
 
-/// Regression (issue 23, class 8, "messages that name the wrong flag or garble the value"):
+/// Regression ("messages that name the wrong flag or garble the value"):
 /// `sweep radius_mm=0:10` named the flag --radius, which the user had not given, and `solve
 /// --rtol 1e300` quoted the value as 301 digits cut to 60. The axis is now refused as written
 /// and long numbers read in exponent form.
@@ -235,7 +234,7 @@ fn messages_name_the_setting_as_written_and_numbers_readably() {
     assert!(!stderr(&o).contains("000000"), "{}", stderr(&o));
 }
 
-/// Regression (issue 23, classes 6 and 8): `vlocator --mass 1e-300 --gravity 1e-300` printed
+/// Regression: `vlocator --mass 1e-300 --gravity 1e-300` printed
 /// `P_max = 0.000 N = NaN W` with exit 0 (the weight m g underflowed to 0 and capacities are per
 /// weight), and a load and weight that overflow together were refused by the solver naming its
 /// internal key `load.force_n`. Both are refused up front, naming the flags given.
@@ -304,7 +303,7 @@ fn jamchart_guarded_env(dir: &Path, env: &[(&str, &str)], args: &[&str]) -> Outp
     child.wait_with_output().unwrap()
 }
 
-/// Regression (issue 23, class 5, "hangs"): a scene file that is a FIFO with no writer blocked
+/// Regression ("hangs"): a scene file that is a FIFO with no writer blocked
 /// forever, and a scene whose `base` is /dev/zero was read until memory ran out. Settings and
 /// scene files are now opened without blocking, refused unless regular, and read no further
 /// than 4 MiB.
@@ -342,7 +341,7 @@ fn scene_files_must_be_regular_and_small() {
     refused(&o, "scenes/fifo.toml");
 }
 
-/// Regression (issue 23, class 9, "leftovers"): under a file-size limit (`ulimit -f`) SIGXFSZ
+/// Regression ("leftovers"): under a file-size limit (`ulimit -f`) SIGXFSZ
 /// killed `render fig3` and left `.fig3.csv.<pid>.<n>.tmp` files in the output folder. The
 /// signal is now ignored, the write fails with EFBIG like a full disk, and the run exits 2
 /// with the message, its temporaries and the folder it created removed.
@@ -370,7 +369,7 @@ fn a_file_size_limit_fails_cleanly_without_leftovers() {
     assert!(left.is_empty(), "left behind: {left:?}");
 }
 
-/// Regression (issue 23, class 3, "aborts"): a 10 MB scene title took 3 GiB to lay out and
+/// Regression ("aborts"): a 10 MB scene title took 3 GiB to lay out and
 /// aborted under a 4 GiB limit, and `--set chart.axis.x.x.x...` (10,000 levels) overflowed
 /// the stack. A title has at most 200 characters and a `--set` key at most 8 parts; both are
 /// refused with exit 2 before anything is computed.
@@ -402,7 +401,7 @@ fn huge_titles_and_deep_keys_are_refused_not_aborted() {
     assert!(!d.join("o").exists());
 }
 
-/// Regression (issue 23, class 8, "paths checked first"): `stability --out-dir` on a dangling
+/// Regression ("paths checked first"): `stability --out-dir` on a dangling
 /// symbolic link computed the whole matrix, then failed creating the folder (and a read-only
 /// folder likewise, for a user other than root). The output paths are now refused before
 /// anything is computed: the run says nothing about the matrix.
@@ -430,7 +429,7 @@ fn output_folders_are_checked_before_computing() {
     assert!(!d.join("nowhere").exists());
 }
 
-/// Regression (issue 23, class 8): `stability --cases barely_moves --mu 0` was refused naming
+/// Regression: `stability --cases barely_moves --mu 0` was refused naming
 /// the flag --force, which the user never gave: the case derives F = 1.05 m g sin(atan mu_g)
 /// from the scene, 0 for mu = 0. The refusal now names the case and its rule.
 #[test]
@@ -444,7 +443,7 @@ fn a_derived_case_value_names_the_case_not_a_flag() {
     assert!(!stderr(&o).contains("--force"), "{}", stderr(&o));
 }
 
-/// Regression (issue 23 class 8): `accuracy --penetrations 1e-300` named `--stiffness`, a flag
+/// Regression: `accuracy --penetrations 1e-300` named `--stiffness`, a flag
 /// never given: the penetration's stiffness F / delta^e overflowed. It names the penetration.
 #[test]
 fn a_penetration_whose_stiffness_overflows_names_the_penetration() {
@@ -462,7 +461,7 @@ fn a_penetration_whose_stiffness_overflows_names_the_penetration() {
     assert!(!err.contains("--stiffness"), "{err}");
 }
 
-/// Regression (issue 23 class 5): the `vlocator_optimum` chart had no work limit: 100,000
+/// Regression: the `vlocator_optimum` chart had no work limit: 100,000
 /// directions ran past 60 s (each point is a search over the included angle). It is refused at
 /// once, naming the counts.
 #[test]
@@ -486,7 +485,7 @@ fn a_v_block_optimum_chart_with_too_much_work_is_refused_at_once() {
     assert!(!dir.path().join("out").exists());
 }
 
-/// Regression (issue 23, class 3, "aborts"): `--set` with a key of 10,000 dotted parts was
+/// Regression ("aborts"): `--set` with a key of 10,000 dotted parts was
 /// refused, but clap quoted the whole 20,001-byte value in the message, twice. The value is
 /// now cut to 60 characters and its length, like every other quoted value.
 #[test]
@@ -499,7 +498,7 @@ fn a_huge_invalid_flag_value_is_quoted_cut() {
     assert!(stderr(&o).len() < 400, "{} bytes", stderr(&o).len());
 }
 
-/// Regression (issue 23, class 3, "aborts"): when no thread could be started (`ulimit -u` as
+/// Regression ("aborts"): when no thread could be started (`ulimit -u` as
 /// a normal user, or stacks that do not fit an address-space limit) rayon's global pool
 /// panicked or aborted on allocation: under `ulimit -v 409600` with `RAYON_NUM_THREADS=250`
 /// (250 stacks of 2 MiB) `render fig3` died with "memory allocation of 41 bytes failed". It
@@ -538,7 +537,7 @@ fn a_system_that_will_not_start_threads_runs_on_one_thread() {
     }
 }
 
-/// Regression (issue 23, class 3): `RAYON_NUM_THREADS=100000000` started rayon's maximum of
+/// Regression: `RAYON_NUM_THREADS=100000000` started rayon's maximum of
 /// 65,535 threads and `render fig3` had not begun after 60 s. A count above
 /// `limits::MAX_THREADS` (1024) is refused at once naming the variable.
 #[test]

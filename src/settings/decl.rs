@@ -1,0 +1,389 @@
+//! One declared setting ([`Decl`]): what values it takes, what kind of value it holds, the
+//! traits of the structs that hold them, and how a number a user writes is read.
+//!
+//! The parameter structs declare their fields with these; the families that gather every
+//! declaration, and what is derived from them, are one floor up ([`super`]).
+
+use crate::error::{Error, Result};
+
+/// What values a setting takes, for its flag's parser, its help and its range check.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Check {
+    /// Any finite number.
+    Finite,
+    /// A finite number >= the bound.
+    AtLeast(f64),
+    /// A finite number > the bound.
+    Above(f64),
+    /// A finite number strictly between the bounds.
+    Open(f64, f64),
+    /// A finite number > the first bound and <= the second.
+    OpenClosed(f64, f64),
+    /// A finite number in the closed interval.
+    Closed(f64, f64),
+    /// A finite number >= the first bound and < the second.
+    CloseOpen(f64, f64),
+    /// A whole number >= the bound.
+    CountAtLeast(u64),
+    /// Not a number (a choice or a switch): serde checks it.
+    Typed,
+}
+
+impl Check {
+    /// Why `v` is refused, or None when it is fine.
+    pub(crate) fn refuse(&self, v: f64) -> Option<String> {
+        let ok = v.is_finite()
+            && match *self {
+                Check::Finite | Check::Typed => true,
+                Check::AtLeast(lo) => v >= lo,
+                Check::Above(lo) => v > lo,
+                Check::Open(lo, hi) => v > lo && v < hi,
+                Check::OpenClosed(lo, hi) => v > lo && v <= hi,
+                Check::Closed(lo, hi) => v >= lo && v <= hi,
+                Check::CloseOpen(lo, hi) => v >= lo && v < hi,
+                Check::CountAtLeast(lo) => v >= lo as f64,
+            };
+        (!ok).then(|| format!("must be {}", self.describe()))
+    }
+
+    /// The valid values in words, e.g. `a finite number > 0`.
+    pub(crate) fn describe(&self) -> String {
+        match *self {
+            Check::Finite => "a finite number".into(),
+            Check::AtLeast(lo) => format!("a finite number >= {}", number_text(lo)),
+            Check::Above(lo) => format!("a finite number > {}", number_text(lo)),
+            Check::Open(lo, hi) => {
+                format!("a number in ({}, {})", number_text(lo), number_text(hi))
+            }
+            Check::OpenClosed(lo, hi) => {
+                format!("a number in ({}, {}]", number_text(lo), number_text(hi))
+            }
+            Check::Closed(lo, hi) => {
+                format!("a number in [{}, {}]", number_text(lo), number_text(hi))
+            }
+            Check::CloseOpen(lo, hi) => {
+                format!("a number in [{}, {})", number_text(lo), number_text(hi))
+            }
+            Check::CountAtLeast(lo) => format!("a whole number >= {lo}"),
+            Check::Typed => "one of the values listed".into(),
+        }
+    }
+}
+
+/// The kind of value a setting holds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Kind {
+    /// A number (f64).
+    Real,
+    /// A number that may be left unset (`Option<f64>`): its default is derived.
+    OptionalReal,
+    /// A whole number.
+    Count,
+    /// A yes/no; its flag sets the opposite of the default.
+    Switch,
+    /// One of the named values.
+    Choice(&'static [&'static str]),
+    /// A nested section (e.g. `[min_norm.qp]`): checked with its parent, never a flag.
+    Section,
+    /// Not a field: a name for several (an alias, `sets`) or a quantity derived from fields
+    /// that a grid can vary (the parameter set knows how).
+    Derived,
+}
+
+/// One declared setting. Built by `settings!`; written by hand only for aliases and derived
+/// grid parameters.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Decl {
+    /// The TOML key (the field's name), unique within its family.
+    pub key: &'static str,
+    /// The TOML section, e.g. `scene` or `dynamics.contact`.
+    pub section: &'static str,
+    /// The long flag without its dashes, if the setting has one.
+    pub flag: Option<&'static str>,
+    /// The symbol on charts, e.g. `F`.
+    pub symbol: &'static str,
+    /// The quantity in words, for axis labels, e.g. `palm push`.
+    pub quantity: &'static str,
+    /// The unit: `-` for a dimensionless number, `` for a choice or a switch.
+    pub unit: &'static str,
+    /// The doc: its first line is the short help, the rest the long help.
+    pub doc: &'static str,
+    /// What values are valid.
+    pub check: Check,
+    /// What kind of value it holds.
+    pub kind: Kind,
+    /// The default as TOML text (for a derived default, its doc says it).
+    pub default: fn() -> String,
+    /// For an alias, the keys it sets (in the same section).
+    pub sets: &'static [&'static str],
+    /// The flag's value name in help, e.g. `MM`.
+    pub value_name: &'static str,
+    /// Whether it takes a range or a distribution besides a number ([`crate::uncertain`]).
+    pub uncertain: bool,
+}
+
+impl Decl {
+    /// A declaration with nothing set, for struct-update syntax.
+    pub(crate) const BASE: Decl = Decl {
+        key: "",
+        section: "",
+        flag: None,
+        symbol: "",
+        quantity: "",
+        unit: "",
+        doc: "",
+        check: Check::Typed,
+        kind: Kind::Derived,
+        default: String::new,
+        sets: &[],
+        value_name: "",
+        uncertain: false,
+    };
+
+    /// The name an error message uses: the bare key of a family's parameters (`[scene]`, the
+    /// locator; also the names of grid axes), the dotted path elsewhere.
+    pub(crate) fn path(&self) -> String {
+        if matches!(self.section, "scene" | "locator" | "") {
+            self.key.to_string()
+        } else {
+            format!("{}.{}", self.section, self.key)
+        }
+    }
+
+    /// The short help: the doc's first paragraph, on one line.
+    pub(crate) fn summary(&self) -> String {
+        let first: Vec<&str> = self
+            .doc
+            .lines()
+            .map(str::trim)
+            .skip_while(|l| l.is_empty())
+            .take_while(|l| !l.is_empty())
+            .collect();
+        first.join(" ")
+    }
+
+    /// The doc after its first paragraph, each paragraph on one line.
+    pub(crate) fn details(&self) -> String {
+        let mut lines = self.doc.lines().map(str::trim).skip_while(|l| l.is_empty());
+        lines.by_ref().take_while(|l| !l.is_empty()).for_each(drop);
+        let rest: Vec<&str> = lines.collect();
+        rest.join("\n")
+            .split("\n\n")
+            .map(|p| p.replace('\n', " "))
+            .collect::<Vec<_>>()
+            .join("\n\n")
+            .trim()
+            .to_string()
+    }
+
+    /// `0.4`, `motion`, `1e5`: the default as a reader writes it.
+    pub(crate) fn default_text(&self) -> String {
+        (self.default)()
+    }
+
+    /// Checks a number against the declared range; the error names the key and the value.
+    pub(crate) fn check_real(&self, v: f64) -> Result<()> {
+        match self.check.refuse(v) {
+            None => Ok(()),
+            Some(why) => Err(Error::invalid(&self.path(), v, self.reason(&why))),
+        }
+    }
+
+    /// `the disc radius must be a finite number > 0 mm`.
+    fn reason(&self, must: &str) -> String {
+        let unit = match self.unit {
+            "" | "-" => String::new(),
+            u => format!(" ({u})"),
+        };
+        let what = if self.quantity.is_empty() {
+            self.key
+        } else {
+            self.quantity
+        };
+        format!("{what}{unit} {must}")
+    }
+}
+
+/// A value a declared field can hold: how it is checked and how a grid reads and sets it.
+pub(crate) trait Value {
+    /// Its kind.
+    const KIND: Kind;
+    /// Checks it against `decl`'s range.
+    fn check(&self, decl: &Decl) -> Result<()> {
+        let _ = decl;
+        Ok(())
+    }
+    /// As a number, where it is one.
+    fn real(&self) -> Option<f64> {
+        None
+    }
+    /// Set from a number; false where it is not one.
+    fn set_real(&mut self, _v: f64) -> bool {
+        false
+    }
+    /// As a reader writes it.
+    fn text(&self) -> String;
+}
+
+impl Value for f64 {
+    const KIND: Kind = Kind::Real;
+    fn check(&self, decl: &Decl) -> Result<()> {
+        decl.check_real(*self)
+    }
+    fn real(&self) -> Option<f64> {
+        Some(*self)
+    }
+    fn set_real(&mut self, v: f64) -> bool {
+        *self = v;
+        true
+    }
+    fn text(&self) -> String {
+        number_text(*self)
+    }
+}
+
+impl Value for Option<f64> {
+    const KIND: Kind = Kind::OptionalReal;
+    fn check(&self, decl: &Decl) -> Result<()> {
+        self.map_or(Ok(()), |v| decl.check_real(v))
+    }
+    fn text(&self) -> String {
+        self.map_or_else(String::new, number_text)
+    }
+}
+
+impl Value for u64 {
+    const KIND: Kind = Kind::Count;
+    fn check(&self, decl: &Decl) -> Result<()> {
+        decl.check_real(*self as f64)
+    }
+    fn text(&self) -> String {
+        self.to_string()
+    }
+}
+
+impl Value for u32 {
+    const KIND: Kind = Kind::Count;
+    fn check(&self, decl: &Decl) -> Result<()> {
+        decl.check_real(f64::from(*self))
+    }
+    fn text(&self) -> String {
+        self.to_string()
+    }
+}
+
+impl Value for bool {
+    const KIND: Kind = Kind::Switch;
+    fn text(&self) -> String {
+        self.to_string()
+    }
+}
+
+/// `1e5` for 100000, `0.4` for 0.4: a default as it is written in the docs.
+pub(crate) fn number_text(v: f64) -> String {
+    let plain = v.to_string();
+    let sci = format!("{v:e}");
+    if plain.len() > sci.len() + 1 {
+        sci
+    } else {
+        plain
+    }
+}
+
+/// A settings struct's number fields, by key: what a grid and an uncertain input set.
+pub trait Numbers {
+    /// The field `key` as a number, where it is one.
+    fn real(&self, key: &str) -> Option<f64>;
+    /// Sets the field `key` from a number; false where it is not one.
+    fn set_real(&mut self, key: &str, v: f64) -> bool;
+}
+
+/// A settings struct: its declarations, in field order.
+pub(crate) trait Declared {
+    /// Every field's declaration.
+    const DECLS: &'static [Decl];
+}
+
+impl Decl {
+    /// The flags that set this setting, e.g. `--mu-ground or --mu`: its own and those of the
+    /// aliases in `family` that set it.
+    pub(crate) fn flags(&self, family: impl Iterator<Item = &'static Decl>) -> Option<String> {
+        let own = self.flag.map(|f| format!("--{f}"));
+        let aliases = family
+            .filter(|a| a.sets.contains(&self.key) && a.section == self.section)
+            .filter_map(|a| a.flag.map(|f| format!("--{f}")));
+        let all: Vec<String> = own.into_iter().chain(aliases).collect();
+        (!all.is_empty()).then(|| all.join(" or "))
+    }
+}
+
+/// Parses a count flag: a whole number >= 0, written out (`100000`, not `1e5`), with a message
+/// that says so instead of the standard library's "invalid digit found in string".
+pub fn parse_count(s: &str) -> std::result::Result<u64, String> {
+    s.trim().parse().map_err(|_| {
+        format!(
+            "{} is not a whole number >= 0 (write it out, e.g. 100000 for 1e5)",
+            crate::error::cut(s)
+        )
+    })
+}
+
+/// Parses a number flag, refusing text that overflows to infinity or underflows to zero, so that
+/// a message quotes what was written (`1e400`), never what it became (`inf`).
+///
+/// The words `inf`, `infinity` and `nan` are passed on: each setting's check says whether it
+/// takes them.
+pub fn parse_f64(s: &str) -> std::result::Result<f64, String> {
+    let v: f64 = s.trim().parse().map_err(|_| {
+        format!(
+            "{} is not a number{}",
+            crate::error::cut(s),
+            not_a_number_hint(s)
+        )
+    })?;
+    match float_range_problem(s.trim(), v) {
+        Some(problem) => Err(format!("{} {problem}", crate::error::cut(s))),
+        None => Ok(v),
+    }
+}
+
+/// What a number that does not parse may have meant: a range written with a dash (`0.12-0.3`:
+/// ranges are LOW:HIGH) or a unit after the number (`40N`: each setting's unit is fixed by its
+/// name and flag). Empty when neither.
+fn not_a_number_hint(s: &str) -> String {
+    let t = s.trim();
+    let number_end = t
+        .find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-' || c == '+' || c == 'e'))
+        .unwrap_or(t.len());
+    let (number, rest) = t.split_at(number_end);
+    if let Some((lo, hi)) = t.split_once('-').filter(|(lo, _)| !lo.is_empty())
+        && lo.parse::<f64>().is_ok()
+        && hi.parse::<f64>().is_ok()
+    {
+        return format!(" (a range is written LOW:HIGH: {lo}:{hi})");
+    }
+    if !rest.is_empty() && number.parse::<f64>().is_ok() && rest.chars().all(char::is_alphabetic) {
+        return format!(
+            " (the unit is fixed by the setting's name, as --help says: write {number}, not {t})"
+        );
+    }
+    String::new()
+}
+
+/// What is wrong with a number written as `raw` that parsed to `v`: None if it is fine.
+///
+/// Text that overflows to infinity or underflows to zero is refused, so that a message quotes
+/// what was written (`1e400`), never what it became (`inf`); the words inf and nan pass.
+pub fn float_range_problem(raw: &str, v: f64) -> Option<&'static str> {
+    let lower = raw.to_ascii_lowercase();
+    if v.is_infinite() && !lower.contains("inf") {
+        return Some("is beyond the range of a 64-bit float (the largest is about 1.8e308)");
+    }
+    let mantissa = lower.split('e').next().unwrap_or("");
+    if v == 0.0 && mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b)) {
+        return Some(
+            "is too small for a 64-bit float: it would become 0 (the smallest is about 5e-324)",
+        );
+    }
+    None
+}
