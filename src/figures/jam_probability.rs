@@ -225,7 +225,7 @@ impl FigureData for JamProbabilityData {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::uncertain::shaft_25mm;
+    use crate::uncertain::shaft::shaft_25mm;
 
     fn input() -> Input {
         Input {
