@@ -93,7 +93,8 @@ fn unknown_scene_exits_2_and_lists_the_known_ones() {
     );
     assert!(
         err.contains(
-            "fig3, fig4, fig5, fig6, fig7a, fig7b, fig7c, integration-error, stability-matrix"
+            "fig3, fig4, fig5, fig6, fig7a, fig7b, fig7c, integration-error, jam-probability, \
+             stability-matrix"
         ),
         "{err}"
     );

@@ -472,3 +472,105 @@ fn the_help_says_when_a_distribution_is_answered_exactly() {
         assert!(out.contains(how), "{args:?}: {out}");
     }
 }
+
+/// `solve` printed "over the box" of a normal input without saying what the box is (its ends
+/// were mean +- 3.09 sd, unexplained): it says the box is the central 99.8 %, from the 0.1 %
+/// to the 99.9 % quantile, with the ends the corners then name.
+#[test]
+fn solve_says_what_the_box_of_a_distribution_is() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut args = vec!["solve"];
+    args.extend(cli_util::SHAFT);
+    args.extend(["--mu", "normal(0.2,0.03)", "--before", "50"]);
+    let o = jamchart(dir.path(), &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = cli_util::stdout(&o);
+    let line = "the box takes mu = normal(0.2,0.03) as its central 99.8 %: 0.1073 to 0.2927 \
+                (its 0.1 % and 99.9 % quantiles)";
+    assert!(out.contains(line), "{out}");
+    // The same ends as the box's corners: 0.2 -+ 3.090 * 0.03.
+    assert!(out.contains("at the corner mu = 0.2927"), "{out}");
+}
+
+/// The probability chart's read-off is `solve --before`'s answer to the digits of its data
+/// file (P(jam before 50 mm) = 0.1028 for the shaft with mu normal(0.2,0.03)), and it refuses
+/// a range, which has no probability, naming it as given.
+#[test]
+fn the_probability_chart_reads_off_solves_answer() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = ["render", "jam-probability", "--out", "o", "--format", "svg"];
+    let o = jamchart(dir.path(), &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let data = std::fs::read_to_string(dir.path().join("o/jam-probability.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&data).unwrap();
+    let chart = v["read_off"]["probability"]["value"].as_f64().unwrap();
+    let mut solve = vec!["solve"];
+    solve.extend(cli_util::SHAFT);
+    solve.extend([
+        "--mu",
+        "normal(0.2,0.03)",
+        "--before",
+        "50",
+        "--format",
+        "json",
+    ]);
+    let s = cli_util::json(&jamchart(dir.path(), &solve));
+    let want = s["results"][0]["distribution"]["before"][0]["probability"]["value"]
+        .as_f64()
+        .unwrap();
+    assert!(
+        (chart - want).abs() < 1e-6 && (want - 0.1028).abs() < 5e-5,
+        "{chart} vs {want}"
+    );
+    assert_eq!(v["method"]["method"], "exact");
+    let o = jamchart(
+        dir.path(),
+        &[&args[..], &["--set", "force_n=30:50"]].concat(),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    for part in ["--set force_n", "no probability", "uniform(30,50)"] {
+        assert!(err.contains(part), "{part} in {err}");
+    }
+}
+
+/// The universal chart refused `mu=0.12:0.3`; it draws the range's box and reads off its two
+/// ends, each the closed form at the box's corner as `solve` gives it: the earliest jam at
+/// mu = 0.3 (x_jam = 39.629 mm) and the latest at mu = 0.12, past the 80 mm palm's end (x/r =
+/// cot(theta/2) on a long palm, above L/r = 6.4). A range of a friction that is not its x axis
+/// is refused, naming it.
+#[test]
+fn the_universal_chart_reads_off_a_ranges_ends() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut args = vec!["render", "universal", "--out", "o", "--format", "svg"];
+    for s in [
+        "mu=0.12:0.3",
+        "radius_mm=12.5",
+        "mass_kg=0.4",
+        "force_n=40",
+        "palm_length_mm=80",
+    ] {
+        args.extend(["--set", s]);
+    }
+    let o = jamchart(dir.path(), &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let data = std::fs::read_to_string(dir.path().join("o/universal.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&data).unwrap();
+    let r = &v["range"];
+    assert_eq!(r["given"], "mu = 0.12:0.3");
+    assert_eq!(r["earliest"]["mu"], 0.3);
+    assert_eq!(r["earliest"]["status"], "jams");
+    let x = r["earliest"]["x_jam_mm"].as_f64().unwrap();
+    assert!((x - 39.629).abs() < 1e-3, "{x}");
+    assert_eq!(r["latest"]["mu"], 0.12);
+    assert_eq!(r["latest"]["status"], "beyond_reach");
+    let t = r["latest"]["theta_jam_on_a_long_palm_deg"]
+        .as_f64()
+        .unwrap();
+    let x_over_r = 1.0 / (0.5 * t.to_radians()).tan();
+    assert!(x_over_r > 80.0 / 12.5, "{x_over_r}");
+    let bad = [&args[..], &["--set", "mu_ground=0.1:0.2"]].concat();
+    let o = jamchart(dir.path(), &bad);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("along its axes"), "{}", stderr(&o));
+}

@@ -17,8 +17,8 @@ use super::DataFile;
 use super::axes::{DrawResult, PlotFrame};
 use super::picture::Picture;
 use super::{
-    contour_map, convergence, jam_map, stability, sweep, time_series, universal, vlocator_capacity,
-    vlocator_optimum, vlocator_robust, work_precision,
+    contour_map, convergence, jam_map, jam_probability, stability, sweep, time_series, universal,
+    vlocator_capacity, vlocator_optimum, vlocator_robust, work_precision,
 };
 use crate::config::read_section;
 use crate::error::Result;
@@ -191,6 +191,8 @@ chart_kinds! {
     Sweep("sweep", fig::sweep::SweepSettings => sweep::Sweep),
     /// theta_jam and x_jam / r over a friction and F / (m g): one chart for any part.
     Universal("universal", fig::universal::UniversalSettings => universal::Universal),
+    /// P(jam before x) against x for a distributed input, exact or Monte Carlo with its band.
+    JamProbability("jam_probability", fig::jam_probability::JamProbabilitySettings => jam_probability::JamProbability),
     /// Iso-lines of x_jam and theta_jam over two parameters (Fig. 7c).
     ContourMap("contour_map", fig::contour_map::ContourMapSettings => contour_map::ContourMap),
     /// The min-norm program's convergence trace at theta_jam (Fig. 4).

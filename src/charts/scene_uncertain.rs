@@ -4,8 +4,9 @@
 //! They are taken out before the scene is read, each replaced by its nominal value (the
 //! midpoint of a range, see [`crate::uncertain`]), so the scene's parameters stay plain
 //! numbers. A sweep draws them as its band ([`super::sweep_band`]), as `jamchart sweep --mu
-//! 0.12:0.3` does; every other kind refuses them naming the setting as written, since its
-//! chart has no place for a band.
+//! 0.12:0.3` does; a jam map shades its uncertain cells, the universal chart draws the box they
+//! span with its ends read off, the probability chart takes distributions; every other kind
+//! refuses them naming the setting as written, since its chart has no place for a band.
 
 use super::overrides::Setting;
 use super::{ChartSpec, Scene};
@@ -85,6 +86,26 @@ pub(super) fn attach(scene: &mut Scene, taken: &Taken) -> Result<()> {
         ChartSpec::JamMap(spec) => {
             spec.band = band(spec.x_axis.param).map_err(as_written)?;
             Ok(())
+        }
+        // The box of (friction, F / (m g)) the ranges span, its ends read off.
+        ChartSpec::Universal(spec) => {
+            spec.range = taken.set.clone();
+            spec.check_range().map_err(as_written)
+        }
+        // Its curve is the distribution's answer: a range has none.
+        ChartSpec::JamProbability(spec) => {
+            spec.inputs = taken.set.clone();
+            spec.refuse_ranges().map_err(|e| match e {
+                Error::InvalidValue { key, value, reason } => {
+                    let name = key.strip_prefix("scene.").unwrap_or(&key);
+                    let key = match taken.from_set.contains(&name) {
+                        true => format!("--set {name}"),
+                        false => key.clone(),
+                    };
+                    Error::InvalidValue { key, value, reason }
+                }
+                e => e,
+            })
         }
         chart => {
             let flag = crate::settings::flag_for(first.name)

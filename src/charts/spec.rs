@@ -79,6 +79,7 @@ pub const MIN_LAYOUT_PX: &[(&str, (u32, u32))] = &[
     ("vlocator_capacity", (900, 600)),
     ("vlocator_optimum", (600, 1000)),
     ("vlocator_robust", (700, 500)),
+    ("jam_probability", (800, 600)),
 ];
 
 /// The smallest layout of chart kind `kind` ([`MIN_LAYOUT_PX`]), px.

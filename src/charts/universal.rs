@@ -9,6 +9,7 @@
 use contour::ContourBuilder;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axes::{self, DrawResult, PlotAxis};
 use super::collide::PxBox;
@@ -22,7 +23,7 @@ use super::typeset;
 use super::{axis_label, grid_polygons, param_symbol};
 use crate::figures::contours::{Paths, mask_rings};
 use crate::figures::universal::{
-    UniversalData, UniversalReadOff, UniversalSettings, cot_half, theta_field,
+    RangeEnd, UniversalData, UniversalReadOff, UniversalSettings, cot_half, theta_field,
 };
 use crate::grid::GridParam;
 use crate::models::ModelKind;
@@ -30,6 +31,10 @@ use crate::scene::JamStatus;
 
 /// Shading of the cells held at the start: a light grey under the bands' colours.
 const HELD_FILL: RGBColor = RGBColor(200, 200, 200);
+
+/// The range's box and its ends: Okabe-Ito vermillion, apart from the black iso-lines and the
+/// viridis bands (the palm's end is dashed in the same hue, thinner).
+const RANGE_INK: RGBColor = style::OKABE_ITO[6];
 
 /// A universal chart ready to draw: its data, and its bands and held region traced once.
 #[derive(Debug, Clone)]
@@ -143,6 +148,7 @@ impl Picture for Universal {
         self.draw_labels(root, &chart, &y)?;
         axes::draw_frame(root, &chart, &x, &y)?;
         self.draw_read_off(root, &chart, &x, &y)?;
+        self.draw_range(root, &chart, &x, &y)?;
         let params = &self.data.params;
         let sub = format!(
             "closed-form statics (corrected Eq. 1) for any r, m, F and g{}, start at {}°",
@@ -225,14 +231,29 @@ impl Universal {
                 "read-off lines 1-2-3 for this scene's part",
             ));
         }
+        if let Some(r) = &self.data.range {
+            e.push(LegendEntry::new(
+                Swatch::Stroke(LineKind::Solid, RANGE_INK, 4),
+                format!(
+                    "the range given, {}: every jam lies between its two ends (dots), read off \
+                     beside them",
+                    r.given
+                ),
+            ));
+        }
         e
     }
 
-    /// The scene's own point, where it lies on the chart (its lines are drawn).
+    /// The scene's own point, where it lies on the chart (its lines are drawn); with ranges
+    /// the range's ends are read off instead (a nominal point inside a range says nothing
+    /// the ends do not).
     fn drawn_read_off(&self) -> Option<&UniversalReadOff> {
         let (xa, ya) = (&self.data.settings.x_axis, &self.data.settings.y_axis);
+        let ranged = self.data.range.is_some();
         self.data.read_off.as_ref().filter(|r| {
-            (xa.min..=xa.max).contains(&r.at.at[0]) && (ya.min..=ya.max).contains(&r.at.at[1])
+            !ranged
+                && (xa.min..=xa.max).contains(&r.at.at[0])
+                && (ya.min..=ya.max).contains(&r.at.at[1])
         })
     }
 
@@ -274,6 +295,77 @@ impl Universal {
             if let Some(at) = bottom.filter(|a| inside(*a) && Some(*a) != top) {
                 tag(&style::fmt_num(cot_half(level), 2), at)?;
             }
+        }
+        Ok(())
+    }
+
+    /// The box of the scene's ranges (a segment when one of its sides is a point), thick, with
+    /// its earliest-jam and latest-jam corners dotted and read off: theta_jam, x_jam / r and
+    /// x_jam in mm (r is the scene's), or where the jam lies past the palm.
+    fn draw_range<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        c: &axes::Chart<DB>,
+        x: &PlotAxis,
+        y: &PlotAxis,
+    ) -> DrawResult<DB> {
+        let Some(r) = &self.data.range else {
+            return Ok(());
+        };
+        let clamp = |v: f64, a: &PlotAxis| v.clamp(a.min, a.max);
+        let at = |u: f64, v: f64| axes::pixel(c, x, y, clamp(u, x), clamp(v, y));
+        let ([x0, x1], [y0, y1]) = (r.x, r.push_ratio);
+        let ring = [at(x0, y0), at(x1, y0), at(x1, y1), at(x0, y1), at(x0, y0)];
+        style::draw_line_px(root, &ring, LineKind::Solid, RANGE_INK, 4)?;
+        let p = &self.data.params;
+        let (lr, rr) = (p.palm_length_mm / p.radius_mm, p.radius_mm);
+        let text = |what: &str, e: &RangeEnd| -> String {
+            let corner = format!(
+                "{what} at {} = {}, F/(m g) = {}",
+                param_symbol(e.at.params[0]),
+                style::fmt_num(e.at.at[0], 3),
+                style::fmt_num(e.at.at[1], 1)
+            );
+            match (e.theta_on_a_long_palm_deg, e.at.point.status) {
+                (Some(t), JamStatus::Jams) => format!(
+                    "{corner}: θ_jam = {}°, x_jam/r = {} → x_jam = {} mm",
+                    style::fmt_num(t, 1),
+                    style::fmt_num(cot_half(t), 2),
+                    style::fmt_num(e.at.point.x_jam_mm.unwrap_or(f64::NAN), 1)
+                ),
+                (Some(t), JamStatus::BeyondReach) => format!(
+                    "{corner}: x_jam/r = {} ({} mm) > L/r = {}: past the palm's end",
+                    style::fmt_num(cot_half(t), 2),
+                    style::fmt_num(rr * cot_half(t), 1),
+                    style::fmt_num(lr, 2)
+                ),
+                (_, status) => format!("{corner}: {status}"),
+            }
+        };
+        let ends = [("earliest jam", &r.earliest), ("latest jam", &r.latest)];
+        let px: Vec<(i32, i32)> = ends
+            .iter()
+            .map(|(_, e)| at(e.at.at[0], e.at.at[1]))
+            .collect();
+        // The earliest jam's label above the box, the latest's below, each centred on its
+        // dot and moved sideways to stay inside the plot: the two never meet.
+        let (area_x, _) = c.plotting_area().get_pixel_range();
+        for ((what, e), dot) in ends.iter().zip(&px) {
+            root.draw(&Circle::new(*dot, 6, RANGE_INK.filled()))?;
+            let s = text(what, e);
+            let w = root.estimate_text_size(&s, &style::text(style::NOTE_PX))?.0 as i32;
+            let left = (dot.0 - w / 2)
+                .min(area_x.end - 6 - w)
+                .max(area_x.start + 6);
+            let (v, dy) = match *what == "earliest jam" {
+                true => (VPos::Bottom, -14),
+                false => (VPos::Top, 14),
+            };
+            let top = ring.iter().map(|p| p.1).min().unwrap_or(dot.1);
+            let bottom = ring.iter().map(|p| p.1).max().unwrap_or(dot.1);
+            let edge = if dy < 0 { top } else { bottom };
+            let pos = Pos::new(HPos::Left, v);
+            axes::boxed_text(root, &s, (left, edge + dy), pos, style::NOTE_PX)?;
         }
         Ok(())
     }

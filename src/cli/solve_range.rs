@@ -232,6 +232,9 @@ fn text(p: &SceneParams, uncertain: &UncertainSet, results: &[Record]) -> String
         Num(p.force_n)
     );
     let _ = writeln!(s, "uncertain: {}", uncertain.describe());
+    for note in uncertain.box_notes() {
+        let _ = writeln!(s, "  {note}");
+    }
     for r in results {
         let a = &r.range;
         let how = match a.method {

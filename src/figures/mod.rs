@@ -7,7 +7,7 @@
 //! any other front end can take it as it is, without a picture.
 //!
 //! Kinds, one module each: [`jam_map`] (Fig. 3), [`convergence`] (Fig. 4), [`time_series`]
-//! (Fig. 5), [`sweep`] (Figs. 6, 7a, 7b, with [`sweep_layers`] and [`band`]), [`contour_map`] (Fig. 7c), [`universal`] (one chart for any part),
+//! (Fig. 5), [`sweep`] (Figs. 6, 7a, 7b, with [`sweep_layers`] and [`band`]), [`contour_map`] (Fig. 7c), [`jam_probability`] (P(jam before x) under a distributed input), [`universal`] (one chart for any part),
 //! [`work_precision`] (the accuracy study), [`stability`] (the stability matrix);
 //! [`vlocator_capacity`], [`vlocator_optimum`] and [`vlocator_robust`] (V-type locators,
 //! [`crate::locator`]); [`error_time`] is `jamchart accuracy`'s measured study, not a scene.
@@ -19,6 +19,7 @@ pub mod contours;
 pub mod convergence;
 pub mod error_time;
 pub mod jam_map;
+pub mod jam_probability;
 pub(crate) mod models;
 pub mod stability;
 pub mod sweep;

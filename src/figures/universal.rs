@@ -46,6 +46,11 @@ pub struct UniversalSettings {
     /// 5).
     #[serde(default = "default_label_step")]
     pub label_step_deg: f64,
+    /// Ranges of the x axis' friction, the push or the mass, from the scene (`mu =
+    /// "0.12:0.3"`): drawn as the box of (friction, F / (m g)) they span, its earliest-jam and
+    /// latest-jam corners read off (not a `[chart]` key; default: none).
+    #[serde(skip)]
+    pub range: crate::uncertain::UncertainSet,
 }
 
 fn default_step() -> f64 {
@@ -109,6 +114,7 @@ impl Figure for UniversalSettings {
                 return Err(Error::invalid(key, v, "give a step in [0.1, 90] deg"));
             }
         }
+        self.check_range()?;
         self.request(&input.params).validate()
     }
 
@@ -192,6 +198,10 @@ impl Figure for UniversalSettings {
             }
             _ => None,
         };
+        let range = match self.range.is_empty() {
+            true => None,
+            false => Some(self.range_ends(&p, models)?),
+        };
         Ok(UniversalData {
             params: p,
             settings: self.clone(),
@@ -206,6 +216,7 @@ impl Figure for UniversalSettings {
                 paths: Traced::over(reach_line, xa, ya),
             },
             read_off,
+            range,
             cells: UniversalCells {
                 x: g.x_values,
                 push_ratio: g.y_values,
@@ -220,6 +231,60 @@ impl Figure for UniversalSettings {
 }
 
 impl UniversalSettings {
+    /// Refuses a range the chart has no axis for: it draws ranges of its x axis' friction,
+    /// `force_n` and `mass_kg` (the last two through F / (m g)).
+    pub fn check_range(&self) -> Result<()> {
+        let x = self.x_axis.param.as_str();
+        match self
+            .range
+            .inputs
+            .iter()
+            .find(|i| ![x, "force_n", "mass_kg"].contains(&i.name))
+        {
+            Some(i) => Err(Error::invalid(
+                &format!("scene.{}", i.name),
+                i.value,
+                format!(
+                    "a universal chart draws a range along its axes: give one for {x} (its x \
+                     axis), force_n or mass_kg (through F / (m g)), or draw this one on a sweep"
+                ),
+            )),
+            None => Ok(()),
+        }
+    }
+
+    /// The box of the scene's ranges on the chart and the closed form at its earliest-jam and
+    /// latest-jam corners ([`crate::uncertain::range::ends`]).
+    fn range_ends(&self, p: &SceneParams, models: &dyn Models) -> Result<UniversalRange> {
+        let model = crate::models::ModelSpec::Statics;
+        let ends = crate::uncertain::range::ends(p, &self.range)?;
+        let x = self.x_axis.param;
+        let corner = |values: &[f64]| -> Result<RangeEnd> {
+            let q = self.range.apply(p, values);
+            let long = models.jam_point(&model, &self.request(&q).base)?;
+            let (mu, push_ratio) = (x.get(&q), GridParam::PushRatio.get(&q));
+            Ok(RangeEnd {
+                at: At {
+                    params: [x, GridParam::PushRatio],
+                    at: [mu.unwrap_or(f64::NAN), push_ratio.unwrap_or(f64::NAN)],
+                    point: models.jam_point(&model, &q)?,
+                },
+                theta_on_a_long_palm_deg: long
+                    .theta_jam_deg
+                    .filter(|_| long.status == JamStatus::Jams),
+            })
+        };
+        let (earliest, latest) = (corner(&ends.earliest.values)?, corner(&ends.latest.values)?);
+        let span = |a: f64, b: f64| [a.min(b), a.max(b)];
+        Ok(UniversalRange {
+            given: self.range.describe(),
+            x: span(earliest.at.at[0], latest.at.at[0]),
+            push_ratio: span(earliest.at.at[1], latest.at.at[1]),
+            earliest,
+            latest,
+        })
+    }
+
     fn request(&self, base: &SceneParams) -> GridRequest {
         GridRequest {
             // A palm long enough for every jam: the field must not depend on the part; the
@@ -266,6 +331,9 @@ pub struct UniversalData {
     pub palm_reach: PalmReach,
     /// The scene's own part on the chart.
     pub read_off: Option<UniversalReadOff>,
+    /// The box of the scene's ranges and its two extreme corners (with ranges).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub range: Option<UniversalRange>,
     /// The cells: status, theta_jam and x_jam / r.
     #[serde(serialize_with = "cells::summary_of")]
     pub cells: UniversalCells,
@@ -316,6 +384,34 @@ pub struct PalmReach {
 #[derive(Debug, Clone, Copy, Serialize)]
 pub struct UniversalReadOff {
     /// The scene's friction and F / (m g), and the answer there.
+    #[serde(flatten)]
+    pub at: At<2>,
+    /// theta_jam in deg on a long enough palm, if it jams there.
+    #[serde(rename = "theta_jam_on_a_long_palm_deg")]
+    pub theta_on_a_long_palm_deg: Option<f64>,
+}
+
+/// The box of the scene's ranges on a universal chart: by monotonicity (the proof is in
+/// [`crate::statics`]) every jam of the box lies between its two extreme corners'.
+#[derive(Debug, Clone, Serialize)]
+pub struct UniversalRange {
+    /// The ranges as given, e.g. `mu = 0.12:0.3`.
+    pub given: String,
+    /// The friction's span on the x axis [lo, hi].
+    pub x: [f64; 2],
+    /// The span of F / (m g) [lo, hi].
+    pub push_ratio: [f64; 2],
+    /// The corner where the jam comes earliest (nearest the hinge).
+    pub earliest: RangeEnd,
+    /// The corner where it comes latest.
+    pub latest: RangeEnd,
+}
+
+/// One extreme corner of a range's box: where it lies on the chart, the closed form's answer
+/// for the scene's own palm, and theta_jam on a long enough palm.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct RangeEnd {
+    /// The corner's friction and F / (m g), and the answer there.
     #[serde(flatten)]
     pub at: At<2>,
     /// theta_jam in deg on a long enough palm, if it jams there.

@@ -384,6 +384,35 @@ impl UncertainSet {
         self.inputs.extend(later.inputs);
     }
 
+    /// What the box is for each distributed input, one sentence each: a normal or lognormal
+    /// stands for its central 1 - 2 [`TAIL`] (99.8 %), from its [`TAIL`] to its 1 - [`TAIL`]
+    /// quantile (a normal's mean +- 3.09 sd); a uniform for its whole support; a range is its
+    /// own box and needs no sentence.
+    pub fn box_notes(&self) -> Vec<String> {
+        let pct = |p: f64| crate::numbers::sig(100.0 * p, 3);
+        let num = |v: f64| crate::numbers::sig(v, 4);
+        self.inputs
+            .iter()
+            .filter(|i| i.value.is_distribution())
+            .map(|i| {
+                let (lo, hi) = i.value.ends();
+                let (name, value, lo, hi) = (i.name, i.value, num(lo), num(hi));
+                match i.value {
+                    Uncertain::Uniform { .. } => {
+                        format!("the box takes {name} = {value} whole: {lo} to {hi}")
+                    }
+                    _ => format!(
+                        "the box takes {name} = {value} as its central {} %: {lo} to {hi} (its \
+                         {} % and {} % quantiles)",
+                        pct(1.0 - 2.0 * TAIL),
+                        pct(TAIL),
+                        pct(1.0 - TAIL)
+                    ),
+                }
+            })
+            .collect()
+    }
+
     /// `name = value` for each input, joined by `, `: how the text answers show them.
     pub fn describe(&self) -> String {
         let parts: Vec<String> = self
