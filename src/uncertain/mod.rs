@@ -385,7 +385,7 @@ impl UncertainSet {
     }
 
     /// What the box is for each distributed input, one sentence each: a normal or lognormal
-    /// stands for its central 1 - 2 [`TAIL`] (99.8 %), from its [`TAIL`] to its 1 - [`TAIL`]
+    /// stands for its central 1 - 2 `TAIL` (99.8 %), from its `TAIL` to its 1 - `TAIL`
     /// quantile (a normal's mean +- 3.09 sd); a uniform for its whole support; a range is its
     /// own box and needs no sentence.
     pub fn box_notes(&self) -> Vec<String> {
