@@ -4,7 +4,7 @@ use crate::common::cli as cli_util;
 use cli_util::{jamchart, json, stderr, stdout};
 
 #[test]
-fn json_has_the_issue_keys_and_per_flank_forces() {
+fn json_has_the_documented_keys_and_per_flank_forces() {
     let dir = tempfile::tempdir().unwrap();
     let v = json(&jamchart(
         dir.path(),

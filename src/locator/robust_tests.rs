@@ -126,7 +126,7 @@ fn robust_window_matches_the_closed_form_for_a_sideways_load() {
 /// or the narrowest V that does not lock (2 atan 0.3 = 33.4 deg) holds loads up to
 /// W / mu_hi = 13.1 N.
 #[test]
-fn no_single_v_works_for_the_issues_shaft_and_the_tool_says_what_opens_it() {
+fn no_single_v_works_for_the_25mm_shaft_and_the_tool_says_what_opens_it() {
     let base = LocatorParams {
         mass_kg: 0.4,
         ..free_base()
