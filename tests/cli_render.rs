@@ -368,3 +368,27 @@ fn a_scene_that_cannot_show_a_set_key_says_so() {
     assert!(!err.contains("scene universal"), "{err}");
     assert!(!err.contains("fig7a varies mu"), "{err}");
 }
+
+/// The capacity chart's legend listed the hatched self-locking band where the axis starts past
+/// it and nothing is hatched: the entry is there only when the band is drawn.
+#[test]
+fn the_capacity_legend_lists_the_wedged_band_only_where_it_is_drawn() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = |extra: &[&str], out: &str| {
+        let mut args = vec![
+            "render",
+            "vlocator-capacity",
+            "--format",
+            "svg",
+            "--out",
+            out,
+        ];
+        args.extend_from_slice(extra);
+        let o = jamchart(dir.path(), &args);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        std::fs::read_to_string(dir.path().join(out).join("vlocator-capacity.svg")).unwrap()
+    };
+    let entry = "hatched: the V self-locks";
+    assert!(svg(&[], "a").contains(entry));
+    assert!(!svg(&["--set", "chart.x_axis.min=40"], "b").contains(entry));
+}

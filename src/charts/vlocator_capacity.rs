@@ -292,7 +292,15 @@ impl VlocatorCapacity {
     }
 
     fn legend(&self) -> Vec<LegendEntry> {
-        vec![
+        // The self-locking band is drawn (and listed) only where it reaches into the axis.
+        let wedged_in_view = self.data.self_locking_below_included_angle_deg
+            > self
+                .data
+                .settings
+                .x_axis
+                .min
+                .min(self.data.settings.x_axis.max);
+        let mut entries = vec![
             LegendEntry::new(
                 Swatch::Line(LineKind::Solid),
                 "P_max iso-lines (multiples of W)",
@@ -309,7 +317,11 @@ impl VlocatorCapacity {
                 Swatch::Stroke(LineKind::Dashed, INK, LineKind::Dashed.width()),
                 "standard V-blocks, with P_max / W for a sideways load (φ = 0)",
             ),
-        ]
+        ];
+        if !wedged_in_view {
+            entries.remove(2);
+        }
+        entries
     }
 }
 
