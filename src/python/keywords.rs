@@ -421,15 +421,7 @@ fn toml_value(decl: &Decl, v: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
 
 /// Puts `value` at `decl`'s section and key in `table` (`dynamics.integrator.method`).
 fn insert_at(table: &mut toml::Table, decl: &Decl, value: toml::Value) {
-    let mut t = table;
-    for part in decl.section.split('.') {
-        t = t
-            .entry(part.to_string())
-            .or_insert_with(|| toml::Value::Table(toml::Table::new()))
-            .as_table_mut()
-            .expect("sections are tables");
-    }
-    t.insert(decl.key.to_string(), value);
+    decl.section_in(table).insert(decl.key.to_string(), value);
 }
 
 /// Every keyword `function` takes: `model`, the scene's parameters, the models' settings and

@@ -123,6 +123,20 @@ pub(crate) struct Decl {
 }
 
 impl Decl {
+    /// The table of this setting's section in `table` (`dynamics.integrator`), made where
+    /// missing: where its key goes in a config file's tree.
+    pub(crate) fn section_in<'t>(&self, table: &'t mut toml::Table) -> &'t mut toml::Table {
+        let mut t = table;
+        for part in self.section.split('.') {
+            t = t
+                .entry(part.to_string())
+                .or_insert_with(|| toml::Value::Table(toml::Table::new()))
+                .as_table_mut()
+                .expect("sections are tables");
+        }
+        t
+    }
+
     /// A declaration with nothing set, for struct-update syntax.
     pub(crate) const BASE: Decl = Decl {
         key: "",

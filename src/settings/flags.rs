@@ -92,14 +92,7 @@ impl<S: FlagSet> Flags<S> {
             } else {
                 decl.sets.to_vec()
             };
-            let mut t = &mut table;
-            for part in decl.section.split('.') {
-                t = t
-                    .entry(part.to_string())
-                    .or_insert_with(|| toml::Value::Table(toml::Table::new()))
-                    .as_table_mut()
-                    .expect("sections are tables");
-            }
+            let t = decl.section_in(&mut table);
             for k in keys {
                 t.insert(k.to_string(), value.clone());
             }
