@@ -124,3 +124,72 @@ fn a_sweep_reads_off_the_users_own_value() {
         assert!((got - want).abs() <= 1e-6 * want, "{key}: {got} vs {want}");
     }
 }
+
+/// A sweep with a range read off at an unexplained midpoint (mu = 0.21, 56.678 mm) and wrote
+/// no gallery. `sweep force_n=20:100 --mu 0.12:0.3 --force 40 --read-off` on the 25 mm shaft
+/// reads off the band's ends at F = 40 N, `solve --mu 0.12:0.3`'s interval (the earliest jam
+/// 39.629 mm at mu 0.3, the palm's end 80 mm past which mu 0.12 jams), names the range in
+/// the subtitle, and joins the folder's gallery with its read-off and the command.
+#[test]
+fn a_sweep_with_a_range_reads_off_the_bands_ends_and_joins_the_gallery() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut args = vec![
+        "sweep",
+        "force_n=20:100:17",
+        "--mu",
+        "0.12:0.3",
+        "--read-off",
+    ];
+    args.extend(SHAFT);
+    let o = jamchart(dir.path(), &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = dir.path().join("out");
+    let csv = std::fs::read_to_string(out.join("sweep_force_n.csv")).unwrap();
+    let rows: Vec<&str> = csv.lines().filter(|l| l.starts_with("read_off,")).collect();
+    let [row] = rows[..] else {
+        panic!("one read-off row:\n{csv}")
+    };
+    let mut solve = vec!["solve", "--mu", "0.12:0.3", "--format", "json"];
+    solve.extend(SHAFT);
+    let v: serde_json::Value =
+        serde_json::from_str(&stdout(&jamchart(dir.path(), &solve))).unwrap();
+    let r = &v["results"][0];
+    let f: Vec<&str> = row.split(',').collect();
+    // layer, force_n, (status, x, theta empty), earliest_*, latest_*, the shaded interval.
+    assert_eq!(&f[..5], ["read_off", "40", "", "", ""], "{row}");
+    assert_eq!((f[5], f[8]), ("jams", "beyond_reach"), "{row}");
+    let num = |i: usize| f[i].parse::<f64>().unwrap();
+    let want = |k: &str, i: usize| r[k][i].as_f64().unwrap();
+    for (got, want) in [
+        (num(6), r["earliest"]["x_jam_mm"].as_f64().unwrap()),
+        (num(11), want("x_jam_mm", 0)),
+        (num(12), want("x_jam_mm", 1)),
+        (num(13), want("theta_jam_deg", 0)),
+        (num(14), want("theta_jam_deg", 1)),
+    ] {
+        assert!((got - want).abs() <= 1e-6 * want, "{got} vs {want}: {row}");
+    }
+    // The subtitle and the read-off in the picture, the section with its read-off and command
+    // in the gallery.
+    for (file, want) in [
+        ("sweep_force_n.svg", "μ = 0.12 to 0.3 (curves at 0.21)"),
+        (
+            "sweep_force_n.svg",
+            "3: x_jam 39.629 mm (earliest, μ = 0.3) to 80.000 mm (the palm's end: μ = 0.12 \
+             jams past it)",
+        ),
+        (
+            "index.html",
+            "<figure class=\"readoff\" data-chart=\"sweep_force_n\">",
+        ),
+        (
+            "index.html",
+            "Reproduce: <code>jamchart sweep force_n=20:100:17",
+        ),
+    ] {
+        let text = std::fs::read_to_string(out.join(file)).unwrap();
+        assert!(text.contains(want), "{file} lacks {want}");
+    }
+    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    assert!(!html.contains("not recorded here"), "{html}");
+}

@@ -172,8 +172,8 @@ fn sections_of(page: &str) -> Vec<(String, String)> {
     out
 }
 
-/// A section for a picture in the folder that no render of this gallery recorded (written by
-/// `sweep`, or by an older jamchart): its name and files, no parameters.
+/// A section for a picture in the folder that no run of this gallery recorded (put there by
+/// hand, or drawn by an older jamchart): its name and files, no parameters.
 fn bare_section(name: &str, files: &[&String]) -> String {
     let n = escape(name);
     let mut s = format!("{OPEN}{n} -->\n<section id=\"{n}\">\n<h2>{n}</h2>\n");
@@ -193,8 +193,9 @@ fn bare_section(name: &str, files: &[&String]) -> String {
         .collect();
     let _ = write!(
         s,
-        "<p>Files: {}</p>\n<p>Not drawn by <code>jamchart render</code> into this folder: its \
-         parameters are not recorded here.</p>\n</section>\n{CLOSE}",
+        "<p>Files: {}</p>\n<p>Not drawn by <code>jamchart render</code> or <code>jamchart \
+         sweep</code> into this folder's gallery: its parameters are not recorded here.</p>\n\
+         </section>\n{CLOSE}",
         links.join(" · ")
     );
     s

@@ -43,10 +43,27 @@ pub fn scene_subtitle(p: &SceneParams, swept: &[GridParam]) -> String {
 
 /// [`scene_subtitle`] naming another source than the closed form, e.g. "simulation, ...".
 pub fn scene_subtitle_with(source: &str, p: &SceneParams, swept: &[GridParam]) -> String {
-    let mu = if p.mu_ground == p.mu_palm {
-        format!("μ = {}", p.mu_ground)
-    } else {
-        format!("μ_ground = {}, μ_palm = {}", p.mu_ground, p.mu_palm)
+    scene_subtitle_given(source, p, swept, &[])
+}
+
+/// [`scene_subtitle_with`] with the parameters of `given` named by their own text instead of
+/// their value (e.g. `μ = 0.12 to 0.3 (curves at 0.21)` for a range drawn as a band).
+pub fn scene_subtitle_given(
+    source: &str,
+    p: &SceneParams,
+    swept: &[GridParam],
+    given: &[(GridParam, String)],
+) -> String {
+    let own = |k: GridParam| given.iter().find(|(g, _)| *g == k).map(|(_, t)| t.clone());
+    let split = own(GridParam::MuGround).is_some() || own(GridParam::MuPalm).is_some();
+    let mu = match own(GridParam::Mu) {
+        Some(t) => t,
+        None if p.mu_ground == p.mu_palm && !split => format!("μ = {}", p.mu_ground),
+        None => format!(
+            "{}, {}",
+            own(GridParam::MuGround).unwrap_or_else(|| format!("μ_ground = {}", p.mu_ground)),
+            own(GridParam::MuPalm).unwrap_or_else(|| format!("μ_palm = {}", p.mu_palm))
+        ),
     };
     let shown = [
         GridParam::MassKg,
@@ -57,10 +74,10 @@ pub fn scene_subtitle_with(source: &str, p: &SceneParams, swept: &[GridParam]) -
     // The palm's offset only where it is not the paper's 0.
     let offset = (p.palm_offset_mm != 0.0).then_some(GridParam::PalmOffsetMm);
     let parts = std::iter::once((GridParam::Mu, mu)).chain(
-        shown
-            .into_iter()
-            .chain(offset)
-            .filter_map(|k| k.get(p).map(|v| (k, param_value(k, v)))),
+        shown.into_iter().chain(offset).filter_map(|k| {
+            k.get(p)
+                .map(|v| (k, own(k).unwrap_or_else(|| param_value(k, v))))
+        }),
     );
     // The palm's length: where its reach ends curves and shades maps.
     let palm = (!swept.contains(&GridParam::PalmLengthMm))

@@ -9,14 +9,16 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axes::{self, DrawResult, Margins, PlotAxis, PlotFrame};
 use super::collide::{self, PxBox};
+use super::labels::scene_subtitle_given;
 use super::legend::{self, LegendEntry, LegendGroup, Swatch};
 use super::picture::Picture;
 use super::readoff;
 use super::style::{self, LineKind, Marker};
 use super::sweep_band;
-use super::{axis_label, scene_subtitle_with};
+use super::{axis_label, param_symbol, param_unit};
+use crate::figures::band::BandRow;
 use crate::figures::sweep::{SweepData, SweepSettings};
-use crate::figures::sweep_layers::{Curve, Series, SweepLayer, SweepPanel};
+use crate::figures::sweep_layers::{Curve, Series, SeriesPoint, SweepLayer, SweepPanel};
 use crate::grid::{AxisScale, GridParam};
 use crate::scene::JamStatus;
 
@@ -168,7 +170,7 @@ impl Picture for Sweep {
             self.draw_read_off(root, &chart, (&x, &y), *panel)?;
             axes::draw_frame(root, &chart, &x, &y)?;
         }
-        let sub = scene_subtitle_with(self.source(), &self.data.params, &[a.param]);
+        let sub = scene_subtitle_given(self.source(), &self.data.params, &[a.param], &self.given());
         axes::draw_header(root, &self.title, &sub)?;
         match &groups {
             Some(g) => legend::draw_grouped_legend(root, g, legend_top),
@@ -219,22 +221,39 @@ impl Sweep {
         (x, y): (&PlotAxis, &PlotAxis),
         panel: SweepPanel,
     ) -> DrawResult<DB> {
-        let Some(p) = &self.data.read_off else {
+        // The read-off's points in the panel (the band's two ends, or the closed form), the
+        // answer printed beside the upper one.
+        let (v, points, s) = if let Some(r) = &self.data.read_off_band {
+            let Some((lo, hi)) = r.interval(panel) else {
+                return Ok(());
+            };
+            (r.at, vec![hi, lo], self.band_answer(r, panel))
+        } else if let Some(p) = &self.data.read_off {
+            let Some(q) = panel.value(p) else {
+                return Ok(());
+            };
+            let s = match panel {
+                SweepPanel::XJamMm => format!("3: x_jam = {} mm", style::fmt_num(q, 3)),
+                SweepPanel::ThetaJamDeg => format!("3: θ_jam = {}°", style::fmt_num(q, 3)),
+            };
+            (p.at, vec![q], s)
+        } else {
             return Ok(());
         };
-        let v = &p.at;
-        let Some(q) = panel.value(p) else {
-            return Ok(());
-        };
-        if !(x.min..=x.max).contains(v) || !(y.min..=y.max).contains(&q) {
+        if !(x.min..=x.max).contains(&v) || points.iter().any(|q| !(y.min..=y.max).contains(q)) {
             return Ok(());
         }
         let at = |a: f64, b: f64| axes::pixel(chart, x, y, a, b);
-        let (corner, bottom, left) = (at(*v, q), at(*v, y.min), at(x.min, q));
-        for line in [[bottom, corner], [corner, left]] {
+        let (corner, bottom, left) = (at(v, points[0]), at(v, y.min), at(x.min, points[0]));
+        // Line 1 up to the upper point, line 2 across from each.
+        let across: Vec<[(i32, i32); 2]> =
+            points.iter().map(|q| [at(v, *q), at(x.min, *q)]).collect();
+        for line in std::iter::once([bottom, corner]).chain(across.iter().copied()) {
             style::draw_line_px(root, &line, LineKind::Dotted, style::INK, 2)?;
         }
-        root.draw(&Circle::new(corner, 5, style::INK.filled()))?;
+        for q in &points {
+            root.draw(&Circle::new(at(v, *q), 5, style::INK.filled()))?;
+        }
         // Every curve of the panel: the step numbers and the value's box cover none.
         let mut lines: Vec<Vec<(i32, i32)>> = self
             .data
@@ -254,10 +273,6 @@ impl Sweep {
             axes::tag(root, n, mid)?;
             tags.push(tag);
         }
-        let s = match panel {
-            SweepPanel::XJamMm => format!("3: x_jam = {} mm", style::fmt_num(q, 3)),
-            SweepPanel::ThetaJamDeg => format!("3: θ_jam = {}°", style::fmt_num(q, 3)),
-        };
         let (lo, hi) = (at(x.min, y.min), at(x.max, y.max));
         let frame = PxBox {
             x0: lo.0,
@@ -265,8 +280,9 @@ impl Sweep {
             x1: hi.0,
             y1: lo.1,
         };
-        // The value's box covers no curve and neither of the read-off's own lines.
-        lines.extend([vec![bottom, corner], vec![corner, left]]);
+        // The value's box covers no curve and none of the read-off's own lines.
+        lines.push(vec![bottom, corner]);
+        lines.extend(across.iter().map(|l| l.to_vec()));
         let size = root.estimate_text_size(&s, &style::text(style::NOTE_PX))?;
         let pad = (8, axes::BOX_PAD);
         let (text_at, _) = collide::place_beside(corner, size, pad, &frame, &lines, &tags);
@@ -327,19 +343,98 @@ impl Sweep {
     /// The read-off's legend entry when it is drawn (a legend never names a line that is not
     /// drawn: off the axis, or no jam there).
     fn read_off_entry(&self) -> Option<LegendEntry> {
-        let p = self.data.read_off.as_ref()?;
-        let v = &p.at;
         let a = &self.data.settings.axis;
-        if !(a.min..=a.max).contains(v) || p.x_jam_mm.is_none() {
+        let (v, what) = match (&self.data.read_off_band, &self.data.read_off) {
+            (Some(r), _) if r.x_jam_mm.is_some() => {
+                (r.at, "the band's ends: earliest and latest jam")
+            }
+            (None, Some(p)) if p.x_jam_mm.is_some() => (p.at, "closed form"),
+            _ => return None,
+        };
+        if !(a.min..=a.max).contains(&v) {
             return None;
         }
         Some(LegendEntry::new(
             Swatch::Stroke(LineKind::Dotted, style::INK, 2),
             format!(
-                "read-off lines 1-2-3 at {} (closed form)",
-                super::labels::param_value(a.param, *v)
+                "read-off lines 1-2-3 at {} ({what})",
+                super::labels::param_value(a.param, v)
             ),
         ))
+    }
+
+    /// The band's inputs as the subtitle names them, each in place of its nominal value:
+    /// `μ = 0.12 to 0.3 (curves at 0.21)`.
+    fn given(&self) -> Vec<(GridParam, String)> {
+        let Some(band) = &self.data.settings.band else {
+            return Vec::new();
+        };
+        let p = &self.data.params;
+        band.inputs
+            .iter()
+            .filter_map(|i| {
+                let k = GridParam::named(&i.name)?;
+                let unit = match param_unit(k) {
+                    "-" => String::new(),
+                    u => format!(" {u}"),
+                };
+                let at = k
+                    .get(p)
+                    .map_or(String::new(), |v| format!(" (curves at {v}{unit})"));
+                Some((k, format!("{} = {}{unit}{at}", param_symbol(k), i.span)))
+            })
+            .collect()
+    }
+
+    /// Where each corner of the band takes its inputs: `μ = 0.3`; empty without inputs.
+    fn corner(&self, earliest: bool) -> String {
+        let Some(band) = &self.data.settings.band else {
+            return String::new();
+        };
+        let values: Vec<String> = band
+            .inputs
+            .iter()
+            .filter_map(|i| {
+                let k = GridParam::named(&i.name)?;
+                Some(super::labels::param_value(
+                    k,
+                    if earliest { i.earliest } else { i.latest },
+                ))
+            })
+            .collect();
+        values.join(", ")
+    }
+
+    /// Step 3 of the read-off with a band in `panel`: the shaded interval there, each end
+    /// with its corner and why it ends there (the earliest or latest jam, the palm's end past
+    /// which the latest corner jams, the start where the earliest is held or too weak).
+    fn band_answer(&self, r: &BandRow, panel: SweepPanel) -> String {
+        let (e, l) = (&r.earliest, &r.latest);
+        let (ce, cl) = (self.corner(true), self.corner(false));
+        let end = |p: &SeriesPoint, at: &str, jams: &str| match p.status {
+            Some(JamStatus::Jams) => format!("{jams}, {at}"),
+            Some(JamStatus::BeyondReach) | Some(JamStatus::NeverJams) => {
+                format!("the palm's end: {at} jams past it")
+            }
+            Some(JamStatus::JammedAtStart) => format!("held at the start, {at}"),
+            Some(JamStatus::TooWeak) => format!("the start: {at} cannot move it"),
+            Some(other) => format!("{at}: {}", other.as_str().replace('_', " ")),
+            None => at.to_string(),
+        };
+        let (early, late) = (end(e, &ce, "earliest"), end(l, &cl, "latest"));
+        match (panel, r.interval(panel)) {
+            (SweepPanel::XJamMm, Some((lo, hi))) => format!(
+                "3: x_jam {} mm ({early}) to {} mm ({late})",
+                style::fmt_num(lo, 3),
+                style::fmt_num(hi, 3)
+            ),
+            (SweepPanel::ThetaJamDeg, Some((lo, hi))) => format!(
+                "3: θ_jam {}° ({early}) to {}° ({late})",
+                style::fmt_num(hi, 3),
+                style::fmt_num(lo, 3)
+            ),
+            (_, None) => "3: no jam on the palm over the band".into(),
+        }
     }
 
     /// A series' legend entry, saying where a curve has no jam and why (a curve that just

@@ -84,6 +84,7 @@ mod tests {
             earliest: scene.params.with_mu(0.3),
             latest: scene.params.with_mu(0.12),
             label: "band over mu 0.12 to 0.3".into(),
+            inputs: Vec::new(),
         });
         let input = Input {
             params: scene.params,

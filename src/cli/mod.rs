@@ -93,8 +93,9 @@ pub enum Command {
     /// Draw x_jam and theta_jam against one or two parameters, without a scene file.
     ///
     /// One axis: both against it, with the F -> infinity limit (CSV, SVG, PNG). Two axes: a map
-    /// of x_jam over both (JSON, SVG, PNG). The other parameters come from the defaults (the
-    /// paper's), then --config FILE, then the flags. Closed-form statics.
+    /// of x_jam over both (JSON, SVG, PNG); the chart joins DIR/index.html, the folder's
+    /// gallery, as render's do. The other parameters come from the defaults (the paper's), then
+    /// --config FILE, then the flags. Closed-form statics.
     Sweep(sweep::SweepArgs),
     /// List the scenes render draws: name, chart kind and title, one line each.
     Scenes(render::ScenesArgs),

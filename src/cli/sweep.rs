@@ -1,4 +1,5 @@
-//! `jamchart sweep`: x_jam and theta_jam against one or two parameters, without a scene file.
+//! `jamchart sweep`: x_jam and theta_jam against one or two parameters, without a scene file,
+//! into the folder's gallery beside the rendered charts.
 
 use std::path::PathBuf;
 use std::str::FromStr;
@@ -7,7 +8,9 @@ use clap::Args;
 use serde::Deserialize;
 
 use super::args::{SceneArgs, parse_f64};
+use super::gallery::{page, typed_command};
 use super::render::{RenderFormat, output_paths, write_rendered};
+use crate::charts::gallery::Entry;
 use crate::charts::spec::Size;
 use crate::charts::{self, ChartSpec, Scene, axis_label};
 use crate::error::{Error, Result};
@@ -257,11 +260,29 @@ pub fn run(a: &SweepArgs) -> Result<String> {
     let formats = a.format.into();
     // Every output path is checked before anything is computed.
     let planned = output_paths(&a.out, &scene.name, &scene.chart, formats);
-    crate::atomic::check_all(planned.iter().map(PathBuf::as_path))?;
+    let index = a.out.join("index.html");
+    crate::atomic::check_all(planned.iter().chain([&index]).map(PathBuf::as_path))?;
     let rendered = charts::render(&scene, formats)?;
-    let paths = write_rendered(&a.out, std::slice::from_ref(&rendered), &[])?.concat();
+    // The sweep joins the folder's gallery as a render does: its section with the parameters,
+    // the command that reproduces it and the read-off.
+    let files = planned
+        .iter()
+        .filter_map(|p| Some(p.file_name()?.to_string_lossy().into_owned()))
+        .collect();
+    let entry = Entry {
+        read_off: rendered.read_off.as_deref(),
+        ..Entry::of_scene(&scene, files, typed_command())
+    };
+    let html = page(&a.out, &[entry])?;
+    let extra = [(index.clone(), html.as_bytes())];
+    let paths = write_rendered(&a.out, std::slice::from_ref(&rendered), &extra)?.concat();
     let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
-    Ok(format!("{}: {}\n", scene.name, list.join(" ")))
+    Ok(format!(
+        "{}: {}\ngallery: {}\n",
+        scene.name,
+        list.join(" "),
+        index.display()
+    ))
 }
 
 #[cfg(test)]

@@ -23,6 +23,7 @@ use super::Input;
 use super::sweep_layers::{Curve, Series, SeriesPoint, SweepPanel, closed_form, point};
 use crate::error::{Error, Result};
 use crate::grid::{GridAxis, GridParam};
+use crate::numbers::Num;
 use crate::scene::{JamStatus, SceneParams};
 use crate::uncertain::{Uncertain, UncertainSet, range};
 
@@ -37,6 +38,25 @@ pub struct Band {
     pub latest: crate::scene::SceneParams,
     /// What the band spans, for the legend, e.g. `μ 0.12 to 0.3`.
     pub label: String,
+    /// The uncertain inputs and where each corner takes them, for the subtitle and the
+    /// read-off (default: none).
+    #[serde(default)]
+    pub inputs: Vec<BandInput>,
+}
+
+/// One uncertain input of a band: what it spans and its value at each corner.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BandInput {
+    /// The setting as written (`mu`, `force_n`).
+    pub name: String,
+    /// What it spans, e.g. `0.12 to 0.3`, or for a distribution `normal(0.2,0.03), 5–95 %
+    /// quantiles 0.1507 to 0.2493`.
+    pub span: String,
+    /// Its value at the earliest-jam corner.
+    pub earliest: f64,
+    /// Its value at the latest-jam corner.
+    pub latest: f64,
 }
 
 /// The band of the uncertain inputs along a sweep of `param`: the closed form at the box's two
@@ -52,7 +72,7 @@ pub fn from_uncertain(
     }
     let swept = param.decl();
     let mut edges = uncertain.clone();
-    let mut label = Vec::new();
+    let (mut label, mut spans) = (Vec::new(), Vec::new());
     for i in &mut edges.inputs {
         let clash = i.keys.contains(&swept.key) || i.name == swept.key;
         if clash || swept.sets.iter().any(|k| i.keys.contains(k)) {
@@ -77,18 +97,36 @@ pub fn from_uncertain(
                 i.value,
                 100.0 - pct
             ));
+            spans.push(format!(
+                "{}, {pct}–{} % quantiles {} to {}",
+                i.value,
+                100.0 - pct,
+                Num(lo),
+                Num(hi)
+            ));
             i.value = Uncertain::Range { lo, hi };
         } else {
             // A range's ends as the user wrote them (shortest form: 0.12, not 0.1200).
             let (lo, hi) = i.value.ends();
             label.push(format!("{} {lo} to {hi}", i.name));
+            spans.push(format!("{lo} to {hi}"));
         }
     }
     let box_answer = range::ends(p, &edges)?;
+    let inputs = (edges.inputs.iter().enumerate())
+        .zip(spans)
+        .map(|((k, i), span)| BandInput {
+            name: i.name.to_string(),
+            span,
+            earliest: box_answer.earliest.values[k],
+            latest: box_answer.latest.values[k],
+        })
+        .collect();
     Ok(Some(Band {
         earliest: edges.apply(p, &box_answer.earliest.values),
         latest: edges.apply(p, &box_answer.latest.values),
         label: format!("band over {}", label.join(", ")),
+        inputs,
     }))
 }
 
@@ -143,6 +181,20 @@ impl BandRow {
             SweepPanel::ThetaJamDeg => self.theta_jam_deg,
         }
     }
+}
+
+/// The band at the value `v` of the swept parameter `param`: the closed form at both
+/// corners there and the interval between them (a sweep's read-off with a band).
+pub fn at(param: GridParam, v: f64, band: &Band) -> Result<BandRow> {
+    let corner = |p: &SceneParams| -> Result<SeriesPoint> {
+        let s = crate::models::solve(&crate::models::ModelSpec::Statics, &param.apply(*p, v))?;
+        Ok(SeriesPoint {
+            status: Some(s.status),
+            ..point(v, s.x_jam_mm, s.theta_jam_deg)
+        })
+    };
+    let (e, l) = (corner(&band.earliest)?, corner(&band.latest)?);
+    Ok(rows(param, &band.latest, &[e], &[l]).remove(0))
 }
 
 /// The band's rows from its two edges (same swept values, in order), the latest corner's

@@ -118,7 +118,14 @@ impl Figure for SweepSettings {
             );
             series.extend([earliest, latest]);
         }
-        let read_off = match (self.read_off, self.axis.param.get(&input.params)) {
+        let at = self.axis.param.get(&input.params).filter(|_| self.read_off);
+        // With a band the read-off is its two ends there (the scene's own value of an
+        // uncertain input is only the range's midpoint).
+        let read_off_band = match (at, &self.band) {
+            (Some(v), Some(b)) => Some(band::at(self.axis.param, v, b)?),
+            _ => None,
+        };
+        let read_off = match (self.read_off && self.band.is_none(), at) {
             (true, Some(v)) => {
                 let s = crate::models::solve(&crate::models::ModelSpec::Statics, &input.params)?;
                 let jams = s.status == JamStatus::Jams;
@@ -136,6 +143,7 @@ impl Figure for SweepSettings {
             settings: self.clone(),
             series,
             read_off,
+            read_off_band,
             band: rows,
         })
     }
@@ -151,8 +159,12 @@ pub struct SweepData {
     pub settings: SweepSettings,
     /// Every layer's series (with a band, its two edges last).
     pub series: Vec<Series>,
-    /// The closed form at the scene's own value of the swept parameter, when read off.
+    /// The closed form at the scene's own value of the swept parameter, when read off
+    /// without a band.
     pub read_off: Option<SeriesPoint>,
+    /// With a band, the read-off: the band's two ends at the scene's own value of the swept
+    /// parameter.
+    pub read_off_band: Option<BandRow>,
     /// The shaded band of an uncertain input, one row per swept value (empty without one).
     pub band: Vec<BandRow>,
 }
@@ -246,31 +258,35 @@ impl SweepData {
                 n,
             )
         });
-        let band = self.band.iter().map(|r| {
-            let (e, l) = (&r.earliest, &r.latest);
-            let ((x0, x1), (t0, t1)) = (ends(r.x_jam_mm), ends(r.theta_jam_deg));
-            let (ex, et) = (dec(e.x_jam_mm), dec(e.theta_jam_deg));
-            let (lx, lt) = (dec(l.x_jam_mm), dec(l.theta_jam_deg));
-            let n = None;
-            let (es, ls) = (status(e), status(l));
-            (
-                "band",
-                Dec(r.at),
-                "",
-                n,
-                n,
-                es,
-                ex,
-                et,
-                ls,
-                lx,
-                lt,
-                x0,
-                x1,
-                t0,
-                t1,
-            )
-        });
+        // The read-off with a band is its row at the read-off's value, of layer `read_off`.
+        let read_off = self.read_off_band.iter().map(|r| ("read_off", r));
+        let band = (self.band.iter().map(|r| ("band", r)))
+            .chain(read_off)
+            .map(|(layer, r)| {
+                let (e, l) = (&r.earliest, &r.latest);
+                let ((x0, x1), (t0, t1)) = (ends(r.x_jam_mm), ends(r.theta_jam_deg));
+                let (ex, et) = (dec(e.x_jam_mm), dec(e.theta_jam_deg));
+                let (lx, lt) = (dec(l.x_jam_mm), dec(l.theta_jam_deg));
+                let n = None;
+                let (es, ls) = (status(e), status(l));
+                (
+                    layer,
+                    Dec(r.at),
+                    "",
+                    n,
+                    n,
+                    es,
+                    ex,
+                    et,
+                    ls,
+                    lx,
+                    lt,
+                    x0,
+                    x1,
+                    t0,
+                    t1,
+                )
+            });
         to_csv_with_header(&header, layers.chain(band))
     }
 }
