@@ -158,8 +158,9 @@ impl SceneParams {
                 ),
             ));
         }
+        // A radius in metres makes any mass look heavy: its own warning says what is wrong.
         let bar_m = steel_bar_length_m(self.mass_kg, self.radius_mm);
-        if bar_m > STEEL_BAR_LIMIT_M {
+        if bar_m > STEEL_BAR_LIMIT_M && self.radius_mm >= 0.5 {
             out.push(likely_mistake(
                 family.clone(),
                 "mass_kg",

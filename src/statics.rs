@@ -171,10 +171,13 @@ struct FrictionAngles {
 
 impl FrictionAngles {
     fn of(p: &SceneParams) -> Self {
-        FrictionAngles {
-            ground: p.alpha_ground(),
-            palm: p.alpha_palm(),
-        }
+        let ground = p.alpha_ground();
+        // Equal frictions (the paper's one mu) have one angle: one arctangent, the same bits.
+        let palm = match p.mu_palm.to_bits() == p.mu_ground.to_bits() {
+            true => ground,
+            false => p.alpha_palm(),
+        };
+        FrictionAngles { ground, palm }
     }
 }
 
