@@ -139,7 +139,7 @@ impl Resolved<'_> {
                 if decls[..k].iter().any(|d| d.check == decl.check) {
                     continue;
                 }
-                let bad = values.iter().position(|&v| decl.check.refuse(v).is_some());
+                let bad = values.iter().position(|&v| !decl.check.accepts(v));
                 // A column of one value is every push's: the first push shows it.
                 let bad = bad.map(|i| if values.len() == 1 { 0 } else { i });
                 first = match (first, bad) {

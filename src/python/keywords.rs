@@ -318,7 +318,7 @@ fn check_array(decl: &Decl, a: &Bound<'_, PyArrayDyn<f64>>) -> PyResult<()> {
     // Row-major position, then its index: an indexed walk cost more than the check.
     let bad = view
         .iter()
-        .position(|v| decl.check.refuse(*v).is_some())
+        .position(|v| !decl.check.accepts(*v))
         .map(|pos| {
             let mut rest = pos;
             let mut index: Vec<usize> = view
