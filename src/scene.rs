@@ -108,14 +108,14 @@ impl SceneParams {
     }
 
     /// Disc position x in mm (hinge to the ground contact A) where the disc touches the palm
-    /// at palm angle `theta` (rad): x = r cot(theta/2) + h / sin(theta) ([`disc_position_mm`]
+    /// at palm angle `theta` (rad): x = r cot(theta/2) + h / sin(theta) (`disc_position_mm`
     /// with this scene's radius and palm offset).
     pub fn disc_position_mm(&self, theta: f64) -> f64 {
         disc_position_mm(self.radius_mm, self.palm_offset_mm, theta)
     }
 
     /// The palm angle (rad) at which the disc sits at `x_mm`: the inverse of
-    /// [`SceneParams::disc_position_mm`] ([`palm_angle_at`]).
+    /// [`SceneParams::disc_position_mm`] (`palm_angle_at`).
     pub fn palm_angle_at(&self, x_mm: f64) -> f64 {
         palm_angle_at(self.radius_mm, self.palm_offset_mm, x_mm)
     }
@@ -158,8 +158,9 @@ impl SceneParams {
                 ),
             ));
         }
+        // A radius in metres makes any mass look heavy: its own warning says what is wrong.
         let bar_m = steel_bar_length_m(self.mass_kg, self.radius_mm);
-        if bar_m > STEEL_BAR_LIMIT_M {
+        if bar_m > STEEL_BAR_LIMIT_M && self.radius_mm >= 0.5 {
             out.push(likely_mistake(
                 family.clone(),
                 "mass_kg",
