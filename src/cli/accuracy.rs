@@ -23,6 +23,24 @@ use crate::study::ReferenceKind;
 use crate::study::accuracy::{self, AccuracyReport, AccuracyRow, AccuracySettings};
 use crate::study::map_cost::{self, MapCostReport, MapCostSettings};
 
+settings! {
+    /// The report's own flags, by the key its settings' messages name
+    /// ([`AccuracySettings::validate`], [`MapCostSettings::validate`]).
+    section = "accuracy";
+    aliases ACCURACY_FLAGS {
+        tolerances, flag: Some("tolerances");
+        methods, flag: Some("methods");
+        penetrations_um, flag: Some("penetrations");
+        min_norm_tolerances, flag: Some("min-norm-tolerances");
+        nonsmooth_steps_deg, flag: Some("nonsmooth-steps");
+        converged_step_deg, flag: Some("converged-step");
+        runs, flag: Some("runs");
+        converged_rtol, flag: Some("converged-rtol");
+        max_steps, flag: Some("max-steps");
+        cells_per_axis, flag: Some("map-cells");
+    }
+}
+
 /// Flags of `accuracy`.
 #[derive(Debug, Clone, Args)]
 pub struct AccuracyArgs {
@@ -31,50 +49,50 @@ pub struct AccuracyArgs {
     #[command(flatten)]
     pub dynamics: DynamicsArgs,
     /// Integrator tolerances rtol = atol, comma-separated, at most 64.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+    #[arg(long = flag!(ACCURACY_FLAGS, tolerances), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
           value_parser = parse_f64, default_value = list(&defaults().tolerances))]
     pub tolerances: Vec<f64>,
     /// Integrators, comma-separated.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+    #[arg(long = flag!(ACCURACY_FLAGS, methods), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
           default_value = defaults().methods.iter().map(|m| m.as_str()).collect::<Vec<_>>().join(","))]
     pub methods: Vec<Method>,
     /// Contact stiffnesses beside --stiffness, as penetration in um at --force, at most 8.
     ///
     /// k = F / delta^e; "none" keeps only --stiffness.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+    #[arg(long = flag!(ACCURACY_FLAGS, penetrations_um), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
           default_value = list(&defaults().penetrations_um))]
     pub penetrations: Vec<String>,
     /// clarabel tolerances of the min-norm rows, comma-separated, at most 64; "none" skips them.
     ///
     /// The exact path is always a row.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+    #[arg(long = flag!(ACCURACY_FLAGS, min_norm_tolerances), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
           default_value = list(&defaults().min_norm_tolerances))]
     pub min_norm_tolerances: Vec<String>,
     /// Steps of the nonsmooth rows in deg of palm turn, comma-separated, at most 64; "none"
     /// skips them.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+    #[arg(long = flag!(ACCURACY_FLAGS, nonsmooth_steps_deg), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
           default_value = list(&defaults().nonsmooth_steps_deg))]
     pub nonsmooth_steps: Vec<String>,
     /// Step of the nonsmooth method's converged answer in deg.
-    #[arg(long, value_name = "DEG", value_parser = parse_f64,
+    #[arg(long = flag!(ACCURACY_FLAGS, converged_step_deg), value_name = "DEG", value_parser = parse_f64,
           default_value = number_text(defaults().converged_step_deg))]
     pub converged_step: f64,
     /// Timed runs per row, 1 to 1000; the median is reported.
-    #[arg(long, value_name = "N", default_value_t = defaults().runs)]
+    #[arg(long = flag!(ACCURACY_FLAGS, runs), value_name = "N", default_value_t = defaults().runs)]
     pub runs: usize,
     /// Tolerance of the converged answers the integration error is measured against.
-    #[arg(long, value_name = "RTOL", alias = "reference-rtol", value_parser = parse_f64,
+    #[arg(long = flag!(ACCURACY_FLAGS, converged_rtol), value_name = "RTOL", alias = "reference-rtol", value_parser = parse_f64,
           default_value = number_text(defaults().converged_rtol))]
     pub converged_rtol: f64,
     /// Step limit of every simulation.
-    #[arg(long, value_name = "N", default_value_t = defaults().max_steps)]
+    #[arg(long = flag!(ACCURACY_FLAGS, max_steps), value_name = "N", default_value_t = defaults().max_steps)]
     pub max_steps: u64,
     /// Cells per axis of the map whose cost is reported, 2 to 2000; 0 skips it.
     ///
     /// The map is mu 0.1-0.8 by F 20-2000 N (log); the statics answer all of it, the min-norm
     /// program 40 of its columns (every F at 40 values of mu) by its exact path and 4 by
     /// clarabel, the simulation 20 x 20 cells, and their time is extrapolated.
-    #[arg(long, value_name = "N", default_value_t = MapCostSettings::default().cells_per_axis)]
+    #[arg(long = flag!(ACCURACY_FLAGS, cells_per_axis), value_name = "N", default_value_t = MapCostSettings::default().cells_per_axis)]
     pub map_cells: usize,
     /// Output format on stdout.
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]
