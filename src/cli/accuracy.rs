@@ -220,7 +220,13 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
     bar.finish_and_clear();
     let map = map.map(|s| map_cost::run(&config, &s)).transpose()?;
     let elapsed = t0.elapsed().as_secs_f64();
-    let md = markdown(&report, map.as_ref(), settings.runs, elapsed);
+    let md = markdown(
+        &report,
+        map.as_ref(),
+        settings.runs,
+        elapsed,
+        config.scene.force_n,
+    );
     let csv = csv_rows(&report)?;
     let json = serde_json::to_string_pretty(&serde_json::json!({
         "accuracy": report,
@@ -300,10 +306,86 @@ pub(crate) fn fixed(v: Option<f64>, prec: usize) -> String {
     v.map_or("-".into(), |v| format!("{v:.prec$}"))
 }
 
-fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapsed: f64) -> String {
-    let mut s = String::from(
-        "# Error against run time, against the physical reference\n\n\
-         Each row answers \"where does it jam\" through the model port. `x error` is against the \
+/// The report's opening line: what to design to, from the references and the rows' errors.
+///
+/// The closed form at F for a push limited to F, with how close the min-norm program comes to
+/// it; the simulation's own reference (the rigid limit for a palm driven by motion, the
+/// converged rigid dynamics for a push of F) with how close the simulation comes to it at the
+/// `[dynamics]` contact (its first curve's floor, as in the floors table).
+fn summary(r: &AccuracyReport, force_n: f64) -> String {
+    let reference = |kind: ReferenceKind| r.references.iter().find(|x| x.kind == kind);
+    let rel = |v: f64| match v {
+        v if v >= 1e-4 => format!("{:.2} %", 100.0 * v),
+        v => format!("{v:.1e}"),
+    };
+    let closed = reference(ReferenceKind::ClosedForm);
+    let mut s = match closed.and_then(|c| c.x_jam_mm.zip(c.theta_jam_deg)) {
+        Some((x, theta)) => format!(
+            "Design to x_jam = {x:.3} mm (theta_jam = {theta:.3} deg), the closed form at F = \
+             {} N",
+            number_text(force_n)
+        ),
+        None => format!(
+            "Nothing to design to at F = {} N: the closed form says {}",
+            number_text(force_n),
+            closed.map_or("nothing".into(), |c| c.status.to_string())
+        ),
+    };
+    let min_norm = (r.rows.iter())
+        .filter(|row| row.model == ModelKind::MinNorm)
+        .filter_map(|row| row.x_rel_error)
+        .max_by(f64::total_cmp);
+    if let Some(e) = min_norm {
+        let _ = write!(s, " (the min-norm program within {} of it)", rel(e));
+    }
+    let simulated = r.rows.iter().find(|row| row.model == ModelKind::Dynamics);
+    let own = simulated.and_then(|first| {
+        let x = reference(first.reference)?.x_jam_mm?;
+        let floor = (r.rows.iter())
+            .filter(|row| row.method == first.method && row.penetration_um == first.penetration_um)
+            .filter(|row| settled(row))
+            .filter_map(|row| row.x_rel_error)
+            .min_by(f64::total_cmp);
+        let contact = match first.method {
+            "nonsmooth" => "with rigid contacts",
+            _ => "at the [dynamics] contact",
+        };
+        Some((first.reference, x, floor, contact))
+    });
+    match own {
+        Some((kind, x, floor, contact)) => {
+            let what = match kind {
+                ReferenceKind::Rigid => "the rigid limit, for a palm driven by motion",
+                _ => "the converged rigid dynamics, for a push of F with inertia",
+            };
+            let _ = write!(s, ", or to {x:.3} mm, {what}");
+            if let Some(f) = floor {
+                let _ = write!(
+                    s,
+                    "; the simulation comes within {} of it {contact}",
+                    rel(f)
+                );
+            }
+        }
+        None => s.push_str(" (no simulation row has a reference of its own)"),
+    }
+    s.push_str(".\n");
+    s
+}
+
+fn markdown(
+    r: &AccuracyReport,
+    map: Option<&MapCostReport>,
+    runs: usize,
+    elapsed: f64,
+    force_n: f64,
+) -> String {
+    let mut s = format!(
+        "# Error against run time, against the physical reference\n\n{}\n",
+        summary(r, force_n)
+    );
+    s.push_str(
+        "Each row answers \"where does it jam\" through the model port. `x error` is against the \
          physical reference of the scene as the row poses it (closed_form: the corrected Eq. 1 \
          at F, for the statics and min-norm; rigid: x_rigid, F -> infinity, r/mu for equal \
          frictions, for the motion drive; rigid_dynamics: the converged rigid simulation, where \
