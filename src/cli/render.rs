@@ -635,10 +635,8 @@ fn check(manifest_path: &Path, blessed: &manifest::Hashes, rendered: &[Rendered]
             ),
         };
     }
-    // The new renders, to look at beside the old ones; nothing is written into the checked
-    // folder. A fresh private folder: a predictable name in the shared temporary directory was
-    // reused as found, and a link planted there redirected the writes. It is removed if the
-    // writing fails, and kept for the person reading the report otherwise.
+    // Nothing is written, neither into the checked folder nor elsewhere: a check leaves no
+    // folder behind. The report says how to look at the new pictures and how to accept them.
     let folder = manifest_path.parent().unwrap_or(Path::new("."));
     for r in rendered {
         let old = folder.join(format!("{}.{}", r.name, r.data.extension));
@@ -649,14 +647,14 @@ fn check(manifest_path: &Path, blessed: &manifest::Hashes, rendered: &[Rendered]
             let _ = writeln!(text, "{}.{}: {said}", r.name, r.data.extension);
         }
     }
-    let dir = crate::atomic::PrivateDir::new("jamchart-check-")?;
-    write_rendered(dir.path(), rendered, &[])?;
-    let dir = dir.keep();
-    let _ = writeln!(text, "the new renders are in {}", dir.display());
     let _ = writeln!(
         text,
-        "remove that folder when done; if the change is meant, accept it: the same command \
-         with --bless instead of --check"
+        "to look at the new pictures, render them into another folder: the same command with \
+         another --out and without --check"
+    );
+    let _ = writeln!(
+        text,
+        "if the change is meant, accept it: the same command with --bless instead of --check"
     );
     let names: Vec<&str> = diffs.iter().map(manifest::Difference::file).collect();
     Ok(Done::Failed {

@@ -32,7 +32,13 @@ pub(crate) enum Check {
 impl Check {
     /// Why `v` is refused, or None when it is fine.
     pub(crate) fn refuse(&self, v: f64) -> Option<String> {
-        let ok = v.is_finite()
+        (!self.accepts(v)).then(|| format!("must be {}", self.describe()))
+    }
+
+    /// Whether `v` is valid: [`Check::refuse`] without its words, for a pass over many values.
+    #[inline]
+    pub(crate) fn accepts(&self, v: f64) -> bool {
+        v.is_finite()
             && match *self {
                 Check::Finite | Check::Typed => true,
                 Check::AtLeast(lo) => v >= lo,
@@ -42,8 +48,7 @@ impl Check {
                 Check::Closed(lo, hi) => v >= lo && v <= hi,
                 Check::CloseOpen(lo, hi) => v >= lo && v < hi,
                 Check::CountAtLeast(lo) => v >= lo as f64,
-            };
-        (!ok).then(|| format!("must be {}", self.describe()))
+            }
     }
 
     /// The valid values in words, e.g. `a finite number > 0`.

@@ -121,6 +121,17 @@ macro_rules! settings {
                     _ => false,
                 }
             }
+
+            /// [`Self::set_real`] of `key` looked up once: the setter a loop over many values
+            /// calls without matching the name each time.
+            pub(crate) fn real_setter(key: &str) -> Option<fn(&mut Self, f64) -> bool> {
+                match key {
+                    $(stringify!($field) => Some(|s: &mut Self, v: f64| {
+                        $crate::settings::decl::Value::set_real(&mut s.$field, v)
+                    }),)*
+                    _ => None,
+                }
+            }
         }
     };
 }

@@ -210,3 +210,50 @@ fn a_quantity_of_several_settings_names_each_ones_flags() {
     assert_eq!(naming("force_n of case barely_moves"), None);
     assert_eq!(flags_naming("radius_mm", none(), |f| f != "radius"), None);
 }
+
+/// A mass typed in grams (400 for 0.4 kg) and a palm typed in cm (8 for 80 mm) on a 12.5 mm part
+/// are valid numbers, but each draws a warning naming the unit; the paper's scene draws none.
+#[test]
+fn mass_in_grams_and_palm_in_cm_warn() {
+    let paper = crate::scene::SceneParams::default();
+    assert!(
+        paper.unit_warnings().is_empty(),
+        "{:?}",
+        paper.unit_warnings()
+    );
+    let part = crate::scene::SceneParams {
+        radius_mm: 12.5,
+        mass_kg: 0.4,
+        palm_length_mm: 80.0,
+        ..paper
+    };
+    assert!(
+        part.unit_warnings().is_empty(),
+        "{:?}",
+        part.unit_warnings()
+    );
+    let grams = crate::scene::SceneParams {
+        mass_kg: 400.0,
+        ..part
+    };
+    let w = grams.unit_warnings();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].starts_with("mass_kg (--mass) = 400 kg weighs as much as a steel bar"),
+        "{w:?}"
+    );
+    assert!(
+        w[0].contains("103.8 m long") && w[0].ends_with("not grams"),
+        "{w:?}"
+    );
+    let cm = crate::scene::SceneParams {
+        palm_length_mm: 8.0,
+        ..part
+    };
+    let w = cm.unit_warnings();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].contains("= 8 mm is shorter than the disc's radius (12.5 mm)"),
+        "{w:?}"
+    );
+}
