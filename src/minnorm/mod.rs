@@ -129,6 +129,7 @@
 
 mod column;
 mod contact;
+mod dense;
 mod exact;
 pub mod palm;
 pub(crate) mod qp;
