@@ -232,8 +232,22 @@ pub(crate) fn render_with(
         message: m,
     };
     let scale = scene.size.scale;
-    // The data is built beside the pictures, not after them.
-    let ((svg, png), (data, cells_written)) = rayon::join(
+    // The data is built beside the pictures, not after them. The PNG (drawing, palette,
+    // filters, deflate) is the longest job: it starts first, on this thread, while the SVG,
+    // the data file and the cells CSV follow one another on a second (behind the SVG on one
+    // thread, the PNG ran on alone after the rest were done).
+    let (png, (svg, (data, cells_written))) = rayon::join(
+        || -> Result<Option<(Vec<u8>, Vec<axes::PlotFrame>)>> {
+            if !formats.png() {
+                return Ok(None);
+            }
+            let (bytes, frames) = axes::record_frames(|| {
+                output::png(w, h, scale, scene.style, |root| {
+                    chart.draw(root).map_err(|e| e.to_string())
+                })
+            });
+            Ok(Some((bytes.map_err(draw_err)?, frames)))
+        },
         || {
             rayon::join(
                 || -> Result<Option<(Vec<u8>, Vec<axes::PlotFrame>)>> {
@@ -248,23 +262,12 @@ pub(crate) fn render_with(
                     });
                     Ok(Some((bytes.map_err(draw_err)?, frames)))
                 },
-                || -> Result<Option<(Vec<u8>, Vec<axes::PlotFrame>)>> {
-                    if !formats.png() {
-                        return Ok(None);
-                    }
-                    let (bytes, frames) = axes::record_frames(|| {
-                        output::png(w, h, scale, scene.style, |root| {
-                            chart.draw(root).map_err(|e| e.to_string())
-                        })
-                    });
-                    Ok(Some((bytes.map_err(draw_err)?, frames)))
+                || {
+                    rayon::join(
+                        || chart.data_file(&scene.name, &scene.title),
+                        || cells.as_ref().map_or(Ok(()), cells_to),
+                    )
                 },
-            )
-        },
-        || {
-            rayon::join(
-                || chart.data_file(&scene.name, &scene.title),
-                || cells.as_ref().map_or(Ok(()), cells_to),
             )
         },
     );
