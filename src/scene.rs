@@ -7,7 +7,7 @@
 //! x = r cot(theta/2) + h / sin(theta) ([`disc_position_mm`]).
 
 use crate::error::{Error, Result};
-use crate::settings::decl::{Check, Decl, Declared, Kind};
+use crate::settings::decl::{Check, Decl, Declared};
 
 settings! {
     /// Parameters of the palm-and-disc scene.
@@ -61,23 +61,18 @@ settings! {
     }
 }
 
-/// The scene's aliases: `mu` sets both frictions (the paper's single mu).
-pub(crate) const SCENE_ALIASES: &[Decl] = &[Decl {
-    key: "mu",
-    section: "scene",
-    flag: Some("mu"),
-    symbol: "μ",
-    quantity: "friction coefficient",
-    unit: "-",
-    doc: "Friction coefficient at both contacts (the paper's single mu).\n\n\
-          --mu-ground or --mu-palm given as well take precedence for their contact.",
-    check: Check::AtLeast(0.0),
-    kind: Kind::Derived,
-    default: || "0.4".to_string(),
-    sets: &["mu_ground", "mu_palm"],
-    value_name: "MU",
-    uncertain: true,
-}];
+settings! {
+    /// The scene's aliases: `mu` sets both frictions (the paper's single mu).
+    section = "scene";
+    aliases SCENE_ALIASES {
+        /// Friction coefficient at both contacts (the paper's single mu).
+        ///
+        /// --mu-ground or --mu-palm given as well take precedence for their contact.
+        mu = 0.4, sets: &["mu_ground", "mu_palm"], flag: Some("mu"), symbol: "μ",
+            quantity: "friction coefficient", unit: "-", check: Check::AtLeast(0.0),
+            value_name: "MU", uncertain: true;
+    }
+}
 
 impl SceneParams {
     /// Checks every field; the error names the TOML key and the offending value.

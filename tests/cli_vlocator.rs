@@ -263,3 +263,52 @@ fn robust_v_block_takes_flank_and_mass_ranges() {
         assert!((lock - want).abs() < 1e-12, "{args:?}: {lock}");
     }
 }
+
+/// The engineer's V-block, charted from a scene file in an empty folder: flank friction 0.1 to
+/// 0.25 written as a range (`mu = "0.1:0.25"`; the chart wanted a centre and a width), the
+/// 25 mm shaft (0.4 kg) under 20 N sideways. It renders, its data has the range's row with
+/// no window (as `vlocator --mu 0.1:0.25 --load 20 --mass 0.4` answers), and the gallery's
+/// table lists the range and the load the chart is drawn for.
+#[test]
+fn a_robust_chart_takes_the_friction_range_as_written() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("vblock.toml"),
+        "title = \"My V-block\"\n[chart]\nkind = \"vlocator_robust\"\n\
+         locator = { mass_kg = 0.4 }\nmu = \"0.1:0.25\"\nload_n = 20\n",
+    )
+    .unwrap();
+    let r = jamchart(dir.path(), &["render", "vblock.toml", "--out", "out"]);
+    assert_eq!(r.status.code(), Some(0), "{}", stderr(&r));
+    let out = dir.path().join("out");
+    assert!(out.join("vblock.png").is_file());
+    let csv = std::fs::read_to_string(out.join("vblock.csv")).unwrap();
+    let row = csv
+        .lines()
+        .find(|l| l.starts_with("0.15,0.1,0.25,"))
+        .unwrap_or_else(|| panic!("no row for the range:\n{csv}"));
+    let answer = json(&jamchart(
+        dir.path(),
+        &[
+            "vlocator", "--mu", "0.1:0.25", "--load", "20", "--mass", "0.4", "--format", "json",
+        ],
+    ));
+    let design = &answer["design"];
+    assert!(design["windows"].as_array().unwrap().is_empty(), "{design}");
+    let cells: Vec<&str> = row.split(',').collect();
+    let lock: f64 = cells[3].parse().unwrap();
+    assert!(
+        (lock - design["lock_bound_deg"].as_f64().unwrap()).abs() < 1e-4,
+        "{row}"
+    );
+    assert_eq!(cells[4..], ["", "", "", ""], "no window: {row}");
+    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    assert!(
+        html.contains("<code>mu</code></td><td>0.1:0.25</td>"),
+        "{html}"
+    );
+    assert!(
+        html.contains("<code>load_n</code></td><td>20</td>"),
+        "{html}"
+    );
+}

@@ -31,13 +31,59 @@ where
     Ok(svg.into_bytes())
 }
 
-/// A PDF of one page from the SVG `svg` ([`svg`]'s bytes: the same drawing, its text already
-/// outlines, so the PDF embeds no font), through `svg2pdf`; 1 px is 1 pt (72 dpi), so a
-/// 1000 x 800 px chart prints 35.3 x 28.2 cm and scales without loss.
+choice! {
+    /// A sheet of paper a PDF is printed on, portrait: the chart is fitted onto it within
+    /// [`PAPER_MARGIN_PT`], centred across and at the top.
+    pub enum Paper {
+        /// ISO A4, 210 x 297 mm (595 x 842 pt).
+        A4 = "a4",
+        /// US Letter, 8.5 x 11 in (612 x 792 pt).
+        Letter = "letter",
+    }
+}
+
+/// The margin around a chart on paper, in pt: half an inch (12.7 mm), wider than the edge an
+/// office printer cannot print on (about 5 mm).
+pub const PAPER_MARGIN_PT: f64 = 36.0;
+
+impl Paper {
+    /// Width and height in pt (1/72 in), portrait.
+    pub fn size_pt(self) -> (f64, f64) {
+        const PT_PER_MM: f64 = 72.0 / 25.4;
+        match self {
+            Paper::A4 => (210.0 * PT_PER_MM, 297.0 * PT_PER_MM),
+            Paper::Letter => (8.5 * 72.0, 11.0 * 72.0),
+        }
+    }
+
+    /// The SVG `svg` of `size_px` (width, height) on this paper: an SVG of the page's size in
+    /// pt holding the chart, scaled to fit within the margins, centred across, at the top.
+    fn page(self, svg: &[u8], (width_px, height_px): (u32, u32)) -> Result<Vec<u8>, String> {
+        let chart = std::str::from_utf8(svg).map_err(|e| format!("the SVG is not UTF-8: {e}"))?;
+        let (w, h) = (f64::from(width_px), f64::from(height_px));
+        let (page_w, page_h) = self.size_pt();
+        let m = PAPER_MARGIN_PT;
+        let scale = ((page_w - 2.0 * m) / w).min((page_h - 2.0 * m) / h);
+        let left = (page_w - scale * w) / 2.0;
+        Ok(format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{page_w}\" height=\"{page_h}\" \
+             viewBox=\"0 0 {page_w} {page_h}\"><g transform=\"translate({left} {m}) \
+             scale({scale})\">{chart}</g></svg>"
+        )
+        .into_bytes())
+    }
+}
+
+/// A PDF of one page from the SVG `svg` of `size_px` ([`svg`]'s bytes: the same drawing, its
+/// text already outlines, so the PDF embeds no font), through `svg2pdf`. Without `paper` the
+/// page is the chart's size, 1 px to 1 pt (72 dpi), so a 1000 x 800 px chart prints 35.3 x
+/// 28.2 cm and scales without loss; on `paper` the chart is fitted onto the sheet.
 ///
 /// The bytes depend only on the SVG's: `svg2pdf` writes no date, producer id or random
 /// document id (`tests/cli_pdf.rs` renders twice and on 1 and 2 threads and compares).
-pub fn pdf(svg: &[u8]) -> Result<Vec<u8>, String> {
+pub fn pdf(svg: &[u8], size_px: (u32, u32), paper: Option<Paper>) -> Result<Vec<u8>, String> {
+    let page = paper.map(|p| p.page(svg, size_px)).transpose()?;
+    let svg = page.as_deref().unwrap_or(svg);
     let tree = svg2pdf::usvg::Tree::from_data(svg, &svg2pdf::usvg::Options::default())
         .map_err(|e| format!("the SVG does not parse for the PDF: {e}"))?;
     svg2pdf::to_pdf(

@@ -6,7 +6,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::axes::{self, DrawResult, Margins, PlotAxis};
+use super::axes::{self, DrawResult, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
 use super::style::{self, LineKind, Marker};
 use crate::grid::AxisScale;
@@ -55,6 +55,12 @@ pub enum LabelSide {
         /// Above the guide (true) or below it (false).
         above: bool,
     },
+    /// Beside the point, level with it, and no dot: a label of the line the point lies on
+    /// (e.g. a vertical line's verdict near its top).
+    OnLine {
+        /// Right of the point (true) or left of it (false).
+        right: bool,
+    },
 }
 
 impl LabelSide {
@@ -63,6 +69,8 @@ impl LabelSide {
         match self {
             LabelSide::GuideStart { above: true } => ((8, -4), Pos::new(HPos::Left, VPos::Bottom)),
             LabelSide::GuideStart { above: false } => ((8, 5), Pos::new(HPos::Left, VPos::Top)),
+            LabelSide::OnLine { right: true } => ((12, 0), Pos::new(HPos::Left, VPos::Center)),
+            LabelSide::OnLine { right: false } => ((-12, 0), Pos::new(HPos::Right, VPos::Center)),
         }
     }
 }
@@ -106,9 +114,6 @@ pub struct Figure {
     pub notes: Vec<String>,
 }
 
-/// Room in px between stacked panels (tick labels and the x-axis label of the upper one).
-const GAP_PX: i32 = 78;
-
 impl Figure {
     fn legend(&self) -> Vec<LegendEntry> {
         let mut out: Vec<LegendEntry> = Vec::new();
@@ -134,16 +139,8 @@ impl Figure {
         let note_px = style::NOTE_PX as i32 + 6;
         let notes = wrap(root, &self.notes, legend::wrap_width(root))?;
         let notes_top = legend_top - 6 - notes.len() as i32 * note_px;
-        let (top, n) = (72, self.panels.len().max(1) as i32);
-        let panel_h = (notes_top - 64 - top - GAP_PX * (n - 1)) / n;
-        for (i, panel) in self.panels.iter().enumerate() {
-            let t = top + i as i32 * (panel_h + GAP_PX);
-            let m = Margins {
-                top: t as u32,
-                bottom: (h - t - panel_h) as u32,
-                left: 105,
-                right: 40,
-            };
+        let stack = axes::stacked(h, notes_top, self.panels.len());
+        for (panel, m) in self.panels.iter().zip(stack) {
             let chart = axes::build_chart(root, &panel.x, &panel.y, m)?;
             axes::draw_grid(&chart, &panel.x, &panel.y)?;
             let area = chart.plotting_area();
@@ -192,10 +189,15 @@ impl Figure {
                     style::draw_line(area, &g, LineKind::Dotted, LineKind::Dotted.color())?;
                 }
                 let px = axes::pixel(&chart, x, y, mk.at.0, mk.at.1);
-                style::draw_marker(root, Marker::Dot, px)?;
+                if !matches!(mk.side, LabelSide::OnLine { .. }) {
+                    style::draw_marker(root, Marker::Dot, px)?;
+                }
                 let (off, anchor) = mk.side.place();
-                // The label sits at the start of the horizontal guide.
-                let from = axes::pixel(&chart, x, y, x.min, mk.at.1);
+                // The label sits at the start of the horizontal guide, or beside the point.
+                let from = match mk.side {
+                    LabelSide::GuideStart { .. } => axes::pixel(&chart, x, y, x.min, mk.at.1),
+                    LabelSide::OnLine { .. } => px,
+                };
                 let at = (from.0 + off.0, from.1 + off.1);
                 axes::boxed_text(root, &mk.text, at, anchor, style::NOTE_PX)?;
             }

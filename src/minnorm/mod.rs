@@ -131,6 +131,7 @@ mod column;
 #[cfg(test)]
 mod column_tests;
 pub(crate) mod contact;
+mod dense;
 mod exact;
 pub(crate) mod palm;
 #[cfg(test)]

@@ -44,6 +44,11 @@ impl Pushes<'_> {
         self.columns.iter().map(|(_, v)| v.len()).max().unwrap_or(1)
     }
 
+    /// Whether there is no push (a column of no values).
+    pub fn is_empty(&self) -> bool {
+        self.columns.iter().any(|(_, v)| v.is_empty())
+    }
+
     /// The columns with the fields each one sets looked up once: a map of 10^6 pushes looked
     /// each column's declaration up by name 10^6 times.
     fn resolved(&self) -> Resolved<'_> {

@@ -29,9 +29,9 @@
 //! upwards there and can lift the disc, and every model keeps it on the ground. `Err` is left
 //! for misuse: parameters that no model accepts.
 
-// The Python binding's array entry (and its tests): compiled always, so that it cannot rot.
-#[cfg_attr(not(feature = "python"), allow(dead_code))]
-pub(crate) mod columns;
+// The array entry: N pushes in, the answers written into buffers the caller owns (the Python
+// package calls it; so can any front end that holds its own arrays).
+pub mod columns;
 mod record;
 
 use std::time::Instant;

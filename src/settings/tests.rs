@@ -196,6 +196,21 @@ fn equal_frictions_above_two_warn_once() {
     assert_eq!(p.unit_warnings().len(), 2);
 }
 
+/// A message's key that is a quantity of several settings names each one's flags, once each;
+/// a key with words that are no setting (`force_n of case barely_moves`: a stability case
+/// derives it) names none, nor does a flag the command does not take.
+#[test]
+fn a_quantity_of_several_settings_names_each_ones_flags() {
+    let none = std::iter::empty;
+    let naming = |key: &str| flags_naming(key, none(), |_| true);
+    assert_eq!(
+        naming("load_n + mass_kg * gravity_m_s2").as_deref(),
+        Some("--load, --mass and --gravity")
+    );
+    assert_eq!(naming("force_n of case barely_moves"), None);
+    assert_eq!(flags_naming("radius_mm", none(), |f| f != "radius"), None);
+}
+
 /// A mass typed in grams (400 for 0.4 kg) and a palm typed in cm (8 for 80 mm) on a 12.5 mm part
 /// are valid numbers, but each draws a warning naming the unit; the paper's scene draws none.
 #[test]
