@@ -33,7 +33,7 @@ where
 
 choice! {
     /// A sheet of paper a PDF is printed on, portrait: the chart is fitted onto it within
-    /// [`PAPER_MARGIN_PT`], centred across and at the top.
+    /// a margin of `PAPER_MARGIN_PT` (36 pt, half an inch), centred across and at the top.
     pub enum Paper {
         /// ISO A4, 210 x 297 mm (595 x 842 pt).
         A4 = "a4",

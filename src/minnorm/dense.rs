@@ -226,7 +226,7 @@ pub(super) fn mul_vec<const ABS: bool>(a: &[f64], x: &[f64], out: &mut [f64]) {
     }
     for (column, &xj) in columns.zip(x_rest) {
         for (o, &v) in out.iter_mut().zip(column) {
-            *o = term(v, xj) + *o;
+            *o += term(v, xj);
         }
     }
 }

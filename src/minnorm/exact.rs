@@ -288,7 +288,7 @@ fn kkt_point_k(low: &Lowered, mask: u32, ws: &mut Workspace<'_>, k: usize) -> Kk
         sol.iter().all(|v| v.is_finite()) && amax(residual) <= ROUNDOFF * (1.0 + amax(sol))
     };
     let regular = lu_solve_k(lu, k, &ws.swaps[..swaps], sol) && consistent(sol);
-    if !regular && !(least_squares(low, active, ws.kkt, ws.rhs, sol) && consistent(sol)) {
+    if !(regular || least_squares(low, active, ws.kkt, ws.rhs, sol) && consistent(sol)) {
         return KktPoint::Rejected { regular: false };
     }
     let bound = -TOL * (1.0 + amax(sol));
@@ -380,10 +380,10 @@ fn kkt_residual(low: &Lowered, active: &[usize], sol: &[f64], residual: &mut [f6
     for (c, y) in primal.iter_mut().enumerate() {
         *y = if c < low.n_contact_vars { sol[c] } else { 0.0 };
         for (&e, &w) in eq[c * m_e..(c + 1) * m_e].iter().zip(&sol[n..b]) {
-            *y = e * w + *y;
+            *y += e * w;
         }
         for (&r, &w) in active.iter().zip(&sol[b..]) {
-            *y = cone_rows[c * m_g + r] * w + *y;
+            *y += cone_rows[c * m_g + r] * w;
         }
     }
     for (e, y) in equalities.iter_mut().enumerate() {
