@@ -17,14 +17,17 @@
 //! machine's load falls on both sides alike (medians of the rounds' ratios): the min-norm
 //! 400 x 400 map by columns against a whole `jamchart render fig3` (goal: at most 20x), and the
 //! nonsmooth method's force drive against its motion drive per cell (goal: at most 1.5x),
-//! beside the step problems each solves per cell, a count the load does not disturb.
+//! beside the step problems each solves per cell, a count the load does not disturb. The
+//! min-norm ratio is printed in wall time (the goal's) and in CPU time, and, where valgrind is
+//! installed, in instructions: callgrind counts a sample of the map (whole columns of 400 cells,
+//! so each search starts from its neighbours as in the full map) and one `render fig3`.
 //! `cargo bench --bench maps -- goals` runs only these.
 
 mod common;
 
 use common::median_s;
+use jamchart::bench_support::{Grid, GridAxis, GridParam};
 use jamchart::dynamics::{Drive, DynamicsParams, Method};
-use jamchart::grid::{Grid, GridAxis, GridParam};
 use jamchart::minnorm::MinNormSettings;
 use jamchart::models::Detail;
 use jamchart::{JamStatus, ModelSpec, SceneParams};
@@ -52,6 +55,47 @@ fn dynamics(method: Method, drive: Drive) -> ModelSpec {
 /// Rounds of each interleaved ratio.
 const ROUNDS: usize = 7;
 
+/// The word that makes this binary solve [`column_sample`] once and exit: the process whose
+/// instructions callgrind counts. A number after it sets the columns (400: the whole map, a
+/// process to time against `render fig3` from outside).
+const COLUMN_SAMPLE: &str = "column-sample";
+
+/// Columns of the 400 x 400 design map whose instructions callgrind counts (each a whole
+/// column of 400 cells, so each search starts from its neighbours as in the full map).
+const SAMPLE_COLUMNS: usize = 20;
+
+/// The min-norm design map at `columns` values of mu, each a column of 400 cells: the programs
+/// solved.
+fn column_sample(columns: usize) -> u32 {
+    let spec = ModelSpec::MinNorm(MinNormSettings::default());
+    let mut grid = map(400);
+    grid.x = GridAxis::linear(GridParam::Mu, 0.1, 0.8, columns);
+    let cells = grid.map_columns(|column| jamchart::solve_column(&spec, column));
+    programs(&cells.expect("every cell answers").values)
+}
+
+/// Min-norm programs solved over `cells`.
+fn programs(cells: &[jamchart::Solution]) -> u32 {
+    cells
+        .iter()
+        .map(|s| match &s.detail {
+            Detail::MinNorm(m) => m.solves,
+            _ => 0,
+        })
+        .sum()
+}
+
+/// The instructions per cell of [`column_sample`] and of one whole `render fig3`, by callgrind
+/// (the same on a loaded machine as on a quiet one); None without valgrind.
+fn instructions_per_cell(out: &std::path::Path) -> Option<(f64, f64)> {
+    let mut sample = std::process::Command::new(std::env::current_exe().ok()?);
+    sample.arg(COLUMN_SAMPLE);
+    let cells = (SAMPLE_COLUMNS * 400) as f64;
+    let per_cell = common::instructions(&mut sample)? / cells;
+    let fig3 = common::instructions(&mut common::render_command(&["fig3"], out))?;
+    Some((per_cell, fig3))
+}
+
 /// The min-norm 400 x 400 map by columns (all threads) against `render fig3`, and the nonsmooth
 /// force drive against the motion drive per cell, each a median of `ROUNDS` interleaved ratios.
 fn goals() {
@@ -62,29 +106,49 @@ fn goals() {
         let cells = grid.map_columns(|column| jamchart::solve_column(&spec, column));
         cells.expect("every cell answers").values
     };
-    let programs: u32 = min_norm_map()
-        .iter()
-        .map(|s| match &s.detail {
-            Detail::MinNorm(m) => m.solves,
-            _ => 0,
-        })
-        .sum();
+    let programs = programs(&min_norm_map());
+    // Wall and CPU (user + sys) time of each side: the map in this process, fig3 as a child.
     let (mut map_s, mut fig3_s) = (Vec::new(), Vec::new());
     for _ in 0..ROUNDS {
-        map_s.push(median_s(1, || {
-            std::hint::black_box(min_norm_map());
-        }));
-        fig3_s.push(common::render_s(&["fig3"], out.path()));
+        let (t0, c0) = (std::time::Instant::now(), common::process_cpu_s());
+        std::hint::black_box(min_norm_map());
+        map_s.push((t0.elapsed().as_secs_f64(), common::process_cpu_s() - c0));
+        fig3_s.push(common::time_process(&mut common::render_command(
+            &["fig3"],
+            out.path(),
+        )));
     }
-    let ratios = map_s.iter().zip(&fig3_s).map(|(a, b)| a / b).collect();
+    let ratio = |pick: fn(&(f64, f64)) -> f64| {
+        common::median(
+            map_s
+                .iter()
+                .zip(&fig3_s)
+                .map(|(a, b)| pick(a) / pick(b))
+                .collect(),
+        )
+    };
     println!(
-        "min-norm 400 x 400 map by columns ({:.2} programs a cell): {:.3} s; render fig3 {:.1} ms; \
-         ratio {:.1}x (goal at most 20x), medians of {ROUNDS} interleaved rounds",
+        "min-norm 400 x 400 map by columns ({:.2} programs a cell): {:.3} s wall, {:.3} s cpu; \
+         render fig3 {:.1} ms wall, {:.1} ms cpu; ratio {:.1}x wall (goal at most 20x), {:.1}x \
+         cpu, medians of {ROUNDS} interleaved rounds",
         f64::from(programs) / (400.0 * 400.0),
-        common::median(map_s),
-        common::median(fig3_s) * 1e3,
-        common::median(ratios),
+        common::median(map_s.iter().map(|m| m.0).collect()),
+        common::median(map_s.iter().map(|m| m.1).collect()),
+        common::median(fig3_s.iter().map(|f| f.0).collect()) * 1e3,
+        common::median(fig3_s.iter().map(|f| f.1).collect()) * 1e3,
+        ratio(|t| t.0),
+        ratio(|t| t.1),
     );
+    match instructions_per_cell(out.path()) {
+        Some((per_cell, fig3)) => println!(
+            "  by callgrind: {:.0} instructions a cell ({SAMPLE_COLUMNS} columns of 400 cells), \
+             render fig3 {:.1} M; a 400 x 400 map is {:.1}x render fig3 in instructions",
+            per_cell,
+            fig3 / 1e6,
+            per_cell * 400.0 * 400.0 / fig3,
+        ),
+        None => println!("  instructions: no valgrind"),
+    }
 
     // The nonsmooth method, force drive against motion drive, per cell of the design map.
     let k = 25;
@@ -130,6 +194,14 @@ fn main() {
     // A word after `--` keeps the rows whose label contains it (the simulations take minutes);
     // `goals` runs the interleaved ratios alone.
     let filter = std::env::args().skip(1).find(|a| !a.starts_with('-'));
+    if filter.as_deref() == Some(COLUMN_SAMPLE) {
+        let columns = std::env::args()
+            .skip_while(|a| a != COLUMN_SAMPLE)
+            .nth(1)
+            .and_then(|a| a.parse().ok());
+        std::hint::black_box(column_sample(columns.unwrap_or(SAMPLE_COLUMNS)));
+        return;
+    }
     if filter.as_deref().is_none_or(|f| f == "goals") {
         goals();
     }
@@ -203,14 +275,7 @@ fn main() {
             .count();
         // The min-norm rows: programs solved per cell (the search's cost, which the load does
         // not disturb).
-        let programs: u32 = cells
-            .iter()
-            .map(|s| match &s.detail {
-                Detail::MinNorm(m) => m.solves,
-                _ => 0,
-            })
-            .sum();
-        let programs = match programs {
+        let programs = match programs(&cells) {
             0 => String::new(),
             n => format!(", {:.2} programs a cell", n as f64 / cells.len() as f64),
         };

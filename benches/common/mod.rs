@@ -105,11 +105,19 @@ pub fn instructions(cmd: &mut Command) -> Option<f64> {
 /// ratios of.
 #[allow(dead_code)] // not every benchmark compares with it
 pub fn render_s(scenes: &[&str], out: &std::path::Path) -> f64 {
+    time_process(&mut render_command(scenes, out)).0
+}
+
+/// The command `jamchart render SCENES... -q --out OUT` on the built-in scenes.
+#[allow(dead_code)] // not every benchmark compares with it
+pub fn render_command(scenes: &[&str], out: &std::path::Path) -> Command {
     let mut cmd = Command::new(env!("CARGO_BIN_EXE_jamchart"));
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("charts");
     cmd.arg("render")
         .args(scenes)
         .args(["-q", "--out"])
-        .arg(out);
-    time_process(cmd.arg("--scenes-dir").arg(dir)).0
+        .arg(out)
+        .arg("--scenes-dir")
+        .arg(dir);
+    cmd
 }

@@ -228,6 +228,42 @@ pub(crate) struct Lowered {
     pub space: Space,
     /// Per joint: whether it is a moment (reported in N mm) or a force (N).
     pub joint_is_moment: Vec<bool>,
+    /// Buffers of the lowering, kept so that lowering into the same value again allocates
+    /// nothing: each contact's and force joint's point, the prescribed normal forces (column,
+    /// N) and each joint's force and moment columns.
+    positions: Vec<Vector3<f64>>,
+    prescribed: Vec<(usize, f64)>,
+    joint_axes: Vec<(Vector3<f64>, Vector3<f64>)>,
+}
+
+impl Default for Lowered {
+    fn default() -> Self {
+        Lowered {
+            eq: DMatrix::zeros(0, 0),
+            eq_rhs: DVector::zeros(0),
+            cone_rows: DMatrix::zeros(0, 0),
+            cones: Vec::new(),
+            contacts: Vec::new(),
+            n_contact_vars: 0,
+            n_equilibrium: 0,
+            force_scale_n: 1.0,
+            length_scale_mm: 1.0,
+            space: Space::Planar,
+            joint_is_moment: Vec::new(),
+            positions: Vec::new(),
+            prescribed: Vec::new(),
+            joint_axes: Vec::new(),
+        }
+    }
+}
+
+/// `m` as a zero matrix of `rows` x `cols`, in its own buffer when the shape is the same.
+fn zeroed(m: &mut DMatrix<f64>, rows: usize, cols: usize) {
+    if m.shape() == (rows, cols) {
+        m.fill(0.0);
+    } else {
+        *m = DMatrix::zeros(rows, cols);
+    }
 }
 
 impl ContactProblem {
@@ -238,6 +274,14 @@ impl ContactProblem {
 
     /// Validates and lowers the problem to scaled matrices.
     pub(crate) fn lower(&self) -> Result<Lowered> {
+        let mut low = Lowered::default();
+        self.lower_into(&mut low)?;
+        Ok(low)
+    }
+
+    /// [`Self::lower`] into `low`, reusing its buffers (a map lowers millions of problems of
+    /// the same shape). On `Err`, `low` is left partly written.
+    pub(crate) fn lower_into(&self, low: &mut Lowered) -> Result<()> {
         let space = self.space;
         if self.contacts.is_empty() {
             return Err(Error::invalid(
@@ -264,10 +308,13 @@ impl ContactProblem {
             ));
         }
 
-        let mut cols = Vec::with_capacity(self.contacts.len());
-        let mut positions = Vec::with_capacity(self.contacts.len());
+        let cols = &mut low.contacts;
+        let positions = &mut low.positions;
+        let prescribed = &mut low.prescribed;
+        cols.clear();
+        positions.clear();
+        prescribed.clear();
         let mut next = 0;
-        let mut prescribed = Vec::new();
         for (i, c) in self.contacts.iter().enumerate() {
             let p = point(
                 || format!("contacts[{i}].position_mm"),
@@ -309,9 +356,11 @@ impl ContactProblem {
         }
         let n_contact_vars = next;
 
-        let mut joint_axes = Vec::with_capacity(self.joints.len());
+        let joint_axes = &mut low.joint_axes;
+        joint_axes.clear();
+        low.joint_is_moment.clear();
         for (k, j) in self.joints.iter().enumerate() {
-            joint_axes.push(match *j {
+            let (f, m, is_moment) = match *j {
                 Joint::Force {
                     position_mm,
                     direction,
@@ -332,7 +381,9 @@ impl ContactProblem {
                     }
                     (Vector3::zeros(), a, true)
                 }
-            });
+            };
+            joint_axes.push((f, m));
+            low.joint_is_moment.push(is_moment);
         }
 
         // Scales: lever arms by the farthest point, forces by the largest load component.
@@ -350,8 +401,14 @@ impl ContactProblem {
 
         let n_eq_rows = if space == Space::Planar { 3 } else { 6 };
         let n_vars = n_contact_vars + joint_axes.len();
-        let mut eq = DMatrix::zeros(n_eq_rows + prescribed.len(), n_vars);
-        let mut eq_rhs = DVector::zeros(n_eq_rows + prescribed.len());
+        let eq = &mut low.eq;
+        zeroed(eq, n_eq_rows + prescribed.len(), n_vars);
+        let eq_rhs = &mut low.eq_rhs;
+        if eq_rhs.len() == eq.nrows() {
+            eq_rhs.fill(0.0);
+        } else {
+            *eq_rhs = DVector::zeros(eq.nrows());
+        }
         // Writes a column's force part f and moment part m (about the origin, in N mm per N).
         let mut put = |col: usize, f: &Vector3<f64>, m: &Vector3<f64>| match space {
             Space::Planar => {
@@ -366,13 +423,13 @@ impl ContactProblem {
                 }
             }
         };
-        for (c, p) in cols.iter().zip(&positions) {
+        for (c, p) in cols.iter().zip(positions.iter()) {
             put(c.start, &c.normal, &p.cross(&c.normal));
             for k in 0..c.n_tangent {
                 put(c.start + 1 + k, &c.tangent[k], &p.cross(&c.tangent[k]));
             }
         }
-        for (k, (f, m, is_moment)) in joint_axes.iter().enumerate() {
+        for (k, ((f, m), is_moment)) in joint_axes.iter().zip(&low.joint_is_moment).enumerate() {
             // A moment joint's variable is scaled by force * length, so its column is m / length
             // times length: write the axis directly.
             let m = if *is_moment { m * length } else { *m };
@@ -398,27 +455,25 @@ impl ContactProblem {
             eq_rhs[n_eq_rows + i] = f / force;
         }
 
-        let (cone_rows, cones) = cone_rows(&cols, n_vars);
-        Ok(Lowered {
-            eq,
-            eq_rhs,
-            cone_rows,
-            cones,
-            contacts: cols,
-            n_contact_vars,
-            n_equilibrium: n_eq_rows,
-            force_scale_n: force,
-            length_scale_mm: length,
-            space,
-            joint_is_moment: joint_axes.iter().map(|j| j.2).collect(),
-        })
+        cone_rows(cols, n_vars, &mut low.cone_rows, &mut low.cones);
+        low.n_contact_vars = n_contact_vars;
+        low.n_equilibrium = n_eq_rows;
+        low.force_scale_n = force;
+        low.length_scale_mm = length;
+        low.space = space;
+        Ok(())
     }
 }
 
 /// The friction-cone rows of every contact: planar |f_t| <= mu f_n as two linear rows
 /// (mu f_n - f_t >= 0, mu f_n + f_t >= 0, which imply f_n >= 0), spatial as a second-order cone
 /// (mu f_n, f_t1, f_t2), frictionless as f_n >= 0.
-fn cone_rows(cols: &[ContactCols], n_vars: usize) -> (DMatrix<f64>, Vec<(ConeKind, usize)>) {
+fn cone_rows(
+    cols: &[ContactCols],
+    n_vars: usize,
+    g: &mut DMatrix<f64>,
+    cones: &mut Vec<(ConeKind, usize)>,
+) {
     let n_rows: usize = cols
         .iter()
         .map(|c| match c.n_tangent {
@@ -427,8 +482,8 @@ fn cone_rows(cols: &[ContactCols], n_vars: usize) -> (DMatrix<f64>, Vec<(ConeKin
             _ => 3,
         })
         .sum();
-    let mut g = DMatrix::zeros(n_rows, n_vars);
-    let mut cones: Vec<(ConeKind, usize)> = Vec::new();
+    zeroed(g, n_rows, n_vars);
+    cones.clear();
     let push = |cones: &mut Vec<(ConeKind, usize)>, kind, rows| match cones.last_mut() {
         // Neighbouring non-negative rows form one cone.
         Some((ConeKind::Nonneg, n)) if kind == ConeKind::Nonneg => *n += rows,
@@ -440,7 +495,7 @@ fn cone_rows(cols: &[ContactCols], n_vars: usize) -> (DMatrix<f64>, Vec<(ConeKin
         match c.n_tangent {
             0 => {
                 g[(r, s)] = 1.0;
-                push(&mut cones, ConeKind::Nonneg, 1);
+                push(cones, ConeKind::Nonneg, 1);
                 r += 1;
             }
             1 => {
@@ -448,17 +503,16 @@ fn cone_rows(cols: &[ContactCols], n_vars: usize) -> (DMatrix<f64>, Vec<(ConeKin
                 g[(r, s + 1)] = -1.0;
                 g[(r + 1, s)] = c.mu;
                 g[(r + 1, s + 1)] = 1.0;
-                push(&mut cones, ConeKind::Nonneg, 2);
+                push(cones, ConeKind::Nonneg, 2);
                 r += 2;
             }
             _ => {
                 g[(r, s)] = c.mu;
                 g[(r + 1, s + 1)] = 1.0;
                 g[(r + 2, s + 2)] = 1.0;
-                push(&mut cones, ConeKind::Soc3, 3);
+                push(cones, ConeKind::Soc3, 3);
                 r += 3;
             }
         }
     }
-    (g, cones)
 }

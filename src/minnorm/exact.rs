@@ -27,9 +27,12 @@
 //! least-squares solves: every not-held palm problem tried all 8 sets of its 3 cone rows, 4 of
 //! them by SVD.
 
+use std::cell::Cell;
+
 use nalgebra::{DMatrix, DVector};
 
 use super::contact::{ConeKind, Lowered, Space};
+use super::dense::{amax, lu_bordered, lu_in_place, lu_solve, lu_solve_k, mul_vec, unrolled};
 
 /// At most this many cone rows (four frictional planar contacts): 2^8 active sets.
 const MAX_CONE_ROWS: usize = 8;
@@ -57,12 +60,26 @@ pub(crate) fn applies(low: &Lowered) -> bool {
 /// Solves a problem for which [`applies`] holds: the optimum in the scaled variables (None:
 /// infeasible, the body is not held) and the number of active sets tried.
 pub(crate) fn solve_lowered(low: &Lowered) -> (Option<DVector<f64>>, u32) {
-    if let Some(z) = determined(low) {
+    let (m_e, n) = low.eq.shape();
+    let m_g = low.cone_rows.nrows();
+    // The largest KKT system: every cone row active.
+    let k = n + m_e + m_g;
+    let mut scratch = SCRATCH.take();
+    let answer = solve_in(low, &mut Workspace::new(&mut scratch, k, n + m_e, m_g));
+    SCRATCH.set(scratch);
+    answer
+}
+
+/// [`solve_lowered`] with its buffers.
+fn solve_in(low: &Lowered, ws: &mut Workspace<'_>) -> (Option<DVector<f64>>, u32) {
+    let (m_e, n) = low.eq.shape();
+    let optimum = |ws: &Workspace<'_>| Some(DVector::from_column_slice(&ws.sol[..n]));
+    if determined(low, ws) {
         // The equalities fix every variable: no freedom is left to minimise over.
-        return (cones_hold(low, &z, 0).then_some(z), 1);
+        let held = cones_hold(low, &ws.sol[..n], 0, ws.values, ws.terms);
+        return (if held { optimum(ws) } else { None }, 1);
     }
     let m_g = low.cone_rows.nrows();
-    let (n, m_e) = (low.eq.ncols(), low.eq.nrows());
     let mut tried = 0u32;
     // Whether the equalities are independent (the empty set's KKT matrix is regular): then a
     // set of more than n - m_e rows is singular for any numbers and is skipped (module docs).
@@ -76,8 +93,8 @@ pub(crate) fn solve_lowered(low: &Lowered) -> (Option<DVector<f64>>, u32) {
                 continue;
             }
             tried += 1;
-            match kkt_point(low, mask) {
-                KktPoint::Optimal(z) => return (Some(z), tried),
+            match kkt_point(low, mask, ws) {
+                KktPoint::Optimal => return (optimum(ws), tried),
                 KktPoint::Rejected { regular } => independent |= mask == 0 && regular,
             }
         }
@@ -87,27 +104,111 @@ pub(crate) fn solve_lowered(low: &Lowered) -> (Option<DVector<f64>>, u32) {
 
 /// What the KKT system of one active set gives.
 enum KktPoint {
-    /// The optimum: feasible, with non-negative multipliers.
-    Optimal(DVector<f64>),
+    /// The optimum (in the workspace's `sol`): feasible, with non-negative multipliers.
+    Optimal,
     /// Not the optimum; `regular`: its KKT matrix was solved by LU (not by least squares).
     Rejected { regular: bool },
 }
 
-/// The unique solution of the equalities when they are square and regular (the palm scene's
-/// rolling formulation: the minimum is trivial).
-fn determined(low: &Lowered) -> Option<DVector<f64>> {
-    if low.eq.nrows() != low.eq.ncols() {
-        return None;
+/// The buffers a workspace is cut from: every buffer is written before it is read, so they are
+/// reused as they are.
+#[derive(Default)]
+struct Scratch {
+    values: Vec<f64>,
+    swaps: Vec<(usize, usize)>,
+}
+
+thread_local! {
+    /// This thread's buffers for the exact path, reused by every problem it solves: a map
+    /// solves millions of problems of a few unknowns, and allocating their buffers cost more
+    /// than their arithmetic. A nested solve (none today) would find it empty and allocate.
+    static SCRATCH: Cell<Scratch> = Cell::new(Scratch::default());
+}
+
+/// The buffers of one problem's KKT solves, sized for its largest active set and reused for
+/// every set tried: a held palm problem tries four, a map solves millions.
+struct Workspace<'a> {
+    /// The KKT matrix, column-major, and its LU factors.
+    kkt: &'a mut [f64],
+    lu: &'a mut [f64],
+    /// The LU's row swaps.
+    swaps: &'a mut [(usize, usize)],
+    /// The LU factors of the empty set's KKT matrix, the leading block of every other set's,
+    /// its swaps and their number.
+    base_lu: &'a mut [f64],
+    base_swaps: &'a mut [(usize, usize)],
+    n_base_swaps: usize,
+    /// Right-hand side, solution (z, then the equalities' and the active rows' multipliers)
+    /// and the residual of a solve.
+    rhs: &'a mut [f64],
+    sol: &'a mut [f64],
+    residual: &'a mut [f64],
+    /// Each cone row's value g . z and its terms sum |g_j z_j|.
+    values: &'a mut [f64],
+    terms: &'a mut [f64],
+}
+
+impl<'a> Workspace<'a> {
+    /// `scratch` grown as needed and cut into buffers for KKT systems of up to `k` rows, the
+    /// empty set's of `b` rows and `m_g` cone rows.
+    fn new(scratch: &'a mut Scratch, k: usize, b: usize, m_g: usize) -> Self {
+        let len = 2 * k * k + b * b + 3 * k + 2 * m_g;
+        if scratch.values.len() < len {
+            scratch.values.resize(len, 0.0);
+        }
+        if scratch.swaps.len() < k + b {
+            scratch.swaps.resize(k + b, (0, 0));
+        }
+        let (swaps, base_swaps) = scratch.swaps.split_at_mut(k);
+        let (kkt, rest) = scratch.values.split_at_mut(k * k);
+        let (lu, rest) = rest.split_at_mut(k * k);
+        let (base_lu, rest) = rest.split_at_mut(b * b);
+        let (rhs, rest) = rest.split_at_mut(k);
+        let (sol, rest) = rest.split_at_mut(k);
+        let (residual, rest) = rest.split_at_mut(k);
+        let (values, rest) = rest.split_at_mut(m_g);
+        Workspace {
+            kkt,
+            lu,
+            swaps,
+            base_lu,
+            base_swaps: &mut base_swaps[..b],
+            n_base_swaps: 0,
+            rhs,
+            sol,
+            residual,
+            values,
+            terms: &mut rest[..m_g],
+        }
     }
-    let z = low.eq.clone().lu().solve(&low.eq_rhs)?;
-    equalities_hold(low, &z).then_some(z)
 }
 
-fn equalities_hold(low: &Lowered, z: &DVector<f64>) -> bool {
-    z.iter().all(|v| v.is_finite()) && (&low.eq * z - &low.eq_rhs).amax() <= TOL * (1.0 + z.amax())
+/// Whether the equalities are square and regular and fix the solution (then in `sol`): the
+/// palm scene's rolling formulation, whose minimum is trivial.
+fn determined(low: &Lowered, ws: &mut Workspace<'_>) -> bool {
+    let n = low.eq.ncols();
+    if low.eq.nrows() != n {
+        return false;
+    }
+    let lu = &mut ws.lu[..n * n];
+    lu.copy_from_slice(low.eq.as_slice());
+    let swaps = lu_in_place(lu, n, ws.swaps);
+    let z = &mut ws.sol[..n];
+    z.copy_from_slice(low.eq_rhs.as_slice());
+    lu_solve(lu, n, &ws.swaps[..swaps], z) && equalities_hold(low, z, ws.residual)
 }
 
-/// Whether every cone row holds at `z`, given the active set `active` (a bit per row).
+fn equalities_hold(low: &Lowered, z: &[f64], residual: &mut [f64]) -> bool {
+    let residual = &mut residual[..low.eq.nrows()];
+    mul_vec::<false>(low.eq.as_slice(), z, residual);
+    for (r, e) in residual.iter_mut().zip(low.eq_rhs.iter()) {
+        *r -= e;
+    }
+    z.iter().all(|v| v.is_finite()) && amax(residual) <= TOL * (1.0 + amax(z))
+}
+
+/// Whether every cone row holds at `z`, given the active set `active` (a bit per row);
+/// `values` and `terms` are buffers of a value per cone row.
 ///
 /// An inactive row `g . z >= 0` decides the verdict: it is judged to TOL of its own terms
 /// sum |g_j z_j|, so a contact is judged on its own forces however small they are against the
@@ -115,10 +216,16 @@ fn equalities_hold(low: &Lowered, z: &DVector<f64>) -> bool {
 /// active row is an equality of the KKT system: judged to TOL of the largest force, it rejects
 /// the least-squares point of an inconsistent set (an overdetermined KKT system whose
 /// multipliers blow up passes the residual test relative to them).
-fn cones_hold(low: &Lowered, z: &DVector<f64>, active: u32) -> bool {
-    let scale = 1.0 + z.amax();
-    let values = &low.cone_rows * z;
-    let terms = low.cone_rows.abs() * z.abs();
+fn cones_hold(
+    low: &Lowered,
+    z: &[f64],
+    active: u32,
+    values: &mut [f64],
+    terms: &mut [f64],
+) -> bool {
+    let scale = 1.0 + amax(z);
+    mul_vec::<false>(low.cone_rows.as_slice(), z, values);
+    mul_vec::<true>(low.cone_rows.as_slice(), z, terms);
     (0..values.len()).all(|r| {
         let tol = if active & (1 << r) != 0 {
             TOL * scale
@@ -130,59 +237,196 @@ fn cones_hold(low: &Lowered, z: &DVector<f64>, active: u32) -> bool {
 }
 
 /// The KKT point for active set `mask`, if it is feasible with non-negative multipliers.
-fn kkt_point(low: &Lowered, mask: u32) -> KktPoint {
-    let n = low.eq.ncols();
-    let m_e = low.eq.nrows();
-    let active: Vec<usize> = (0..low.cone_rows.nrows())
-        .filter(|r| mask & (1 << r) != 0)
-        .collect();
-    let k = n + m_e + active.len();
-    let mut kkt = DMatrix::zeros(k, k);
-    for i in 0..low.n_contact_vars {
-        kkt[(i, i)] = 1.0;
+fn kkt_point(low: &Lowered, mask: u32, ws: &mut Workspace<'_>) -> KktPoint {
+    let k = low.eq.ncols() + low.eq.nrows() + mask.count_ones() as usize;
+    unrolled!(k, |k| kkt_point_k(low, mask, ws, k))
+}
+
+/// [`kkt_point`] of a `k`-row KKT system, for `k` known to the compiler.
+#[inline(always)]
+fn kkt_point_k(low: &Lowered, mask: u32, ws: &mut Workspace<'_>, k: usize) -> KktPoint {
+    let (m_e, n) = low.eq.shape();
+    let b = n + m_e;
+    let mut rows = [0; MAX_CONE_ROWS];
+    let mut q = 0;
+    for r in (0..low.cone_rows.nrows()).filter(|r| mask & (1 << r) != 0) {
+        rows[q] = r;
+        q += 1;
     }
-    for r in 0..m_e {
-        for c in 0..n {
-            let v = low.eq[(r, c)];
-            kkt[(n + r, c)] = v;
-            kkt[(c, n + r)] = v;
+    let active = &rows[..q];
+    let lu = &mut ws.lu[..k * k];
+    let swaps = if mask == 0 {
+        // The first set tried: its factors are every other set's leading block.
+        fill_kkt(low, active, lu, k);
+        let swaps = lu_in_place(lu, k, ws.swaps);
+        ws.base_lu.copy_from_slice(lu);
+        ws.base_swaps[..swaps].copy_from_slice(&ws.swaps[..swaps]);
+        ws.n_base_swaps = swaps;
+        swaps
+    } else {
+        fill_border(low, active, lu, k);
+        let base_swaps = &ws.base_swaps[..ws.n_base_swaps];
+        match lu_bordered(lu, k, ws.base_lu, b, base_swaps, ws.swaps) {
+            Some(swaps) => swaps,
+            None => {
+                fill_kkt(low, active, lu, k);
+                lu_in_place(lu, k, ws.swaps)
+            }
         }
-    }
-    for (a, &r) in active.iter().enumerate() {
-        for c in 0..n {
-            let v = low.cone_rows[(r, c)];
-            kkt[(n + m_e + a, c)] = v;
-            kkt[(c, n + m_e + a)] = v;
-        }
-    }
-    let mut rhs = DVector::zeros(k);
-    rhs.rows_mut(n, m_e).copy_from(&low.eq_rhs);
+    };
+    // The right-hand side: the equalities' (scaled) loads.
+    let sol = &mut ws.sol[..k];
+    sol.fill(0.0);
+    sol[n..b].copy_from_slice(low.eq_rhs.as_slice());
 
     // Roundoff grows with the solution (a wedged body's forces and multipliers may be orders
     // above the load): a test relative to it. A solution of a singular system that is merely
     // close is caught by the checks of z below.
-    let consistent = |sol: &DVector<f64>| {
-        sol.iter().all(|v| v.is_finite())
-            && (&kkt * sol - &rhs).amax() <= ROUNDOFF * (1.0 + sol.amax())
+    let residual = &mut ws.residual[..k];
+    let mut consistent = |sol: &[f64]| {
+        kkt_residual(low, active, sol, residual);
+        sol.iter().all(|v| v.is_finite()) && amax(residual) <= ROUNDOFF * (1.0 + amax(sol))
     };
-    let (sol, regular) = match kkt.clone().lu().solve(&rhs) {
-        Some(s) if consistent(&s) => (s, true),
-        _ => {
-            let rejected = KktPoint::Rejected { regular: false };
-            let Ok(s) = kkt.clone().svd(true, true).solve(&rhs, 1e-13) else {
-                return rejected;
-            };
-            if !consistent(&s) {
-                return rejected;
-            }
-            (s, false)
-        }
-    };
-    let z = sol.rows(0, n).into_owned();
-    let multipliers_ok = (0..active.len()).all(|a| -sol[n + m_e + a] >= -TOL * (1.0 + sol.amax()));
-    if multipliers_ok && cones_hold(low, &z, mask) && equalities_hold(low, &z) {
-        KktPoint::Optimal(z)
+    let regular = lu_solve_k(lu, k, &ws.swaps[..swaps], sol) && consistent(sol);
+    if !(regular || least_squares(low, active, ws.kkt, ws.rhs, sol) && consistent(sol)) {
+        return KktPoint::Rejected { regular: false };
+    }
+    let bound = -TOL * (1.0 + amax(sol));
+    let multipliers_ok = sol[b..].iter().all(|w| -w >= bound);
+    let z = &ws.sol[..n];
+    if multipliers_ok
+        && cones_hold(low, z, mask, ws.values, ws.terms)
+        && equalities_hold(low, z, ws.residual)
+    {
+        KktPoint::Optimal
     } else {
         KktPoint::Rejected { regular }
+    }
+}
+
+/// Writes the KKT matrix of the cone rows `active` (k x k, column-major; module docs) to `kkt`.
+fn fill_kkt(low: &Lowered, active: &[usize], kkt: &mut [f64], k: usize) {
+    let (m_e, n) = low.eq.shape();
+    let m_g = low.cone_rows.nrows();
+    let (eq, cone_rows) = (low.eq.as_slice(), low.cone_rows.as_slice());
+    let (primal, duals) = kkt[..k * k].split_at_mut(n * k);
+    // Column c of the unknowns: the objective's 1 (contact forces only), then column c of
+    // the equalities and of each active cone row.
+    for (c, column) in primal.chunks_exact_mut(k).enumerate() {
+        let (objective, rest) = column.split_at_mut(n);
+        objective.fill(0.0);
+        if c < low.n_contact_vars {
+            objective[c] = 1.0;
+        }
+        let (equalities, bordering) = rest.split_at_mut(m_e);
+        equalities.copy_from_slice(&eq[c * m_e..(c + 1) * m_e]);
+        for (v, &r) in bordering.iter_mut().zip(active) {
+            *v = cone_rows[c * m_g + r];
+        }
+    }
+    // The multipliers' columns: a row of the equalities or an active cone row, then zeros.
+    for (j, column) in duals.chunks_exact_mut(k).enumerate() {
+        let (row, zeros) = column.split_at_mut(n);
+        let (matrix, m, r) = match j.checked_sub(m_e) {
+            None => (eq, m_e, j),
+            Some(a) => (cone_rows, m_g, active[a]),
+        };
+        for (c, v) in row.iter_mut().enumerate() {
+            *v = matrix[c * m + r];
+        }
+        zeros.fill(0.0);
+    }
+}
+
+/// Writes the rows and columns of the KKT matrix of the cone rows `active` that border the
+/// empty set's (those after its `n + m_e`), the part [`lu_bordered`] reads besides the base.
+#[inline(always)]
+fn fill_border(low: &Lowered, active: &[usize], kkt: &mut [f64], k: usize) {
+    let (m_e, n) = low.eq.shape();
+    let m_g = low.cone_rows.nrows();
+    let cone_rows = low.cone_rows.as_slice();
+    let b = n + m_e;
+    let (leading, bordering) = kkt[..k * k].split_at_mut(b * k);
+    for (c, column) in leading.chunks_exact_mut(k).enumerate() {
+        for (v, &r) in column[b..].iter_mut().zip(active) {
+            // The equalities' multipliers have no entry in a cone row.
+            *v = if c < n { cone_rows[c * m_g + r] } else { 0.0 };
+        }
+    }
+    for (column, &r) in bordering.chunks_exact_mut(k).zip(active) {
+        let (row, zeros) = column.split_at_mut(n);
+        for (c, v) in row.iter_mut().enumerate() {
+            *v = cone_rows[c * m_g + r];
+        }
+        zeros.fill(0.0);
+    }
+}
+
+/// `residual` = K sol - rhs for the KKT system of the cone rows `active`, from its blocks.
+///
+/// Each row sums its non-zero entries' terms in the order of the columns, as the dense
+/// product does, and leaves out the terms of its zero entries: adding one changes at most the
+/// sign of a zero sum, never its magnitude, and a solution that is not finite is refused
+/// before the residual counts. So the largest magnitude, all the test reads, is the dense
+/// product's (the tests compare the two).
+#[inline(always)]
+fn kkt_residual(low: &Lowered, active: &[usize], sol: &[f64], residual: &mut [f64]) {
+    let (m_e, n) = low.eq.shape();
+    let m_g = low.cone_rows.nrows();
+    let (eq, cone_rows) = (low.eq.as_slice(), low.cone_rows.as_slice());
+    let b = n + m_e;
+    let (primal, rest) = residual.split_at_mut(n);
+    let (equalities, bordering) = rest.split_at_mut(m_e);
+    for (c, y) in primal.iter_mut().enumerate() {
+        *y = if c < low.n_contact_vars { sol[c] } else { 0.0 };
+        for (&e, &w) in eq[c * m_e..(c + 1) * m_e].iter().zip(&sol[n..b]) {
+            *y += e * w;
+        }
+        for (&r, &w) in active.iter().zip(&sol[b..]) {
+            *y += cone_rows[c * m_g + r] * w;
+        }
+    }
+    for (e, y) in equalities.iter_mut().enumerate() {
+        *y = row_times(eq, m_e, e, &sol[..n]) - low.eq_rhs[e];
+    }
+    for (&r, y) in active.iter().zip(bordering) {
+        *y = row_times(cone_rows, m_g, r, &sol[..n]);
+    }
+}
+
+/// Row `r` of the column-major matrix `a` of `m` rows times `x`, summed in column order.
+#[inline(always)]
+fn row_times(a: &[f64], m: usize, r: usize, x: &[f64]) -> f64 {
+    let mut terms = x.iter().enumerate().map(|(c, &v)| a[c * m + r] * v);
+    let first = terms.next().unwrap_or(0.0);
+    terms.fold(first, |y, t| t + y)
+}
+
+/// The least-squares solution by SVD of the KKT system of the cone rows `active`, singular
+/// or inconsistent, written to `sol` (`kkt` and `rhs` are buffers for the system); false if
+/// the SVD fails.
+#[cold]
+fn least_squares(
+    low: &Lowered,
+    active: &[usize],
+    kkt: &mut [f64],
+    rhs: &mut [f64],
+    sol: &mut [f64],
+) -> bool {
+    let (m_e, n) = low.eq.shape();
+    let k = sol.len();
+    fill_kkt(low, active, kkt, k);
+    let rhs = &mut rhs[..k];
+    rhs.fill(0.0);
+    rhs[n..n + m_e].copy_from_slice(low.eq_rhs.as_slice());
+    let solution = DMatrix::from_column_slice(k, k, &kkt[..k * k])
+        .svd(true, true)
+        .solve(&DVector::from_column_slice(rhs), 1e-13);
+    match solution {
+        Ok(s) => {
+            sol.copy_from_slice(s.as_slice());
+            true
+        }
+        Err(_) => false,
     }
 }

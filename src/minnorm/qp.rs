@@ -6,6 +6,7 @@
 //! are a zero cone; the friction cones are non-negative rows (planar) or second-order cones
 //! (spatial).
 
+use std::cell::RefCell;
 use std::sync::{Arc, Mutex};
 
 use clarabel::algebra::CscMatrix;
@@ -176,14 +177,24 @@ pub struct ContactSolution {
 /// Solves the minimum-norm program: the exact path where it applies and `fast_path` is set,
 /// clarabel otherwise. `Err` only for invalid input; infeasibility is [`HoldStatus::NotHeld`].
 pub fn solve(problem: &ContactProblem, settings: &QpSettings) -> Result<ContactSolution> {
-    let low = problem.lower()?;
-    if settings.fast_path && exact::applies(&low) {
-        return Ok(match exact::solve_lowered(&low) {
-            (Some(z), tried) => assemble(&low, &z, Backend::Exact, tried),
-            (None, tried) => ContactSolution::not_held(HoldStatus::NotHeld, Backend::Exact, tried),
-        });
-    }
-    solve_lowered(&low, settings)
+    LOWERED.with_borrow_mut(|low| {
+        problem.lower_into(low)?;
+        if settings.fast_path && exact::applies(low) {
+            return Ok(match exact::solve_lowered(low) {
+                (Some(z), tried) => assemble(low, &z, Backend::Exact, tried),
+                (None, tried) => {
+                    ContactSolution::not_held(HoldStatus::NotHeld, Backend::Exact, tried)
+                }
+            });
+        }
+        solve_lowered(low, settings)
+    })
+}
+
+thread_local! {
+    /// The last problem [`solve`] lowered on this thread, whose buffers the next one reuses:
+    /// a map's search solves millions of problems of the same shape.
+    static LOWERED: RefCell<Lowered> = RefCell::new(Lowered::default());
 }
 
 /// Solves with clarabel whatever the size, recording the per-iteration trace.
