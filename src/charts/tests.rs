@@ -266,7 +266,10 @@ fn every_scene_makes_only_the_model_calls_it_draws() {
             // The exact answer of the closed form, no model call.
             "jam-probability" | "universal-range" => [0; 5],
             // The V-locator scenes use the locator's exact path, no palm-scene model.
-            "vlocator-capacity" | "vlocator-optimum" | "vlocator-robust" => [0; 5],
+            "vlocator-capacity"
+            | "vlocator-optimum"
+            | "vlocator-robust"
+            | "vlocator-robust-range" => [0; 5],
             "fig4" => [1, 1, 0, 0, 0],
             "fig5" => [0, 0, 0, 1, 0],
             "fig6" => [crate::paper::TABLE1.len(), 0, 0, sim_points, 0],

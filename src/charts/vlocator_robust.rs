@@ -16,7 +16,9 @@ use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, Tag};
 use crate::figures::vlocator_capacity::STANDARD_V_DEG;
 use crate::figures::vlocator_robust::{GivenRange, VlocatorRobustData, VlocatorRobustSettings};
 use crate::grid::AxisScale;
-use crate::locator::{BoxVerdict, DroppedLoad, RobustBox, RobustDesign, lock_angle_deg};
+use crate::locator::{
+    BoxVerdict, DroppedLoad, FailureMode, RobustBox, RobustDesign, lock_angle_deg,
+};
 use crate::numbers::Num;
 
 /// A robust-design chart ready to draw.
@@ -170,7 +172,7 @@ impl VlocatorRobust {
             });
             tags.push(Tag {
                 // Just above its line, whatever the zoom.
-                at: (wmax, g + 0.025 * (y.max - y.min)),
+                at: (wmax, g + TAG_RISE * (y.max - y.min)),
                 text: format!("{g:.0}° V"),
                 left: true,
             });
@@ -183,17 +185,18 @@ impl VlocatorRobust {
         };
         let mut notes = vec![format!(
             "Loads {} N at {directions}; a V works when it holds every load at the lowest friction and \
-             does not lock at the highest (both ends decide: see the locator docs).",
+             does not lock at the highest.",
             range_text(s.load_n.ends()),
         )];
         if let Some((g, w, d, name)) = &given {
             marks.extend(given_marks(name, *w, d, &x, &y));
             notes.extend(self.given_notes(name, g, d));
         }
-        if let Some(w) = self.closes() {
+        // Where the range given has no window, its reason says it all.
+        let given_closed = given.as_ref().is_some_and(|g| g.2.windows.is_empty());
+        if let Some(w) = self.closes().filter(|_| !given_closed) {
             notes.push(format!(
-                "No single V works from a range width of {} on (no bar): narrow the friction \
-                 range or lighten the load.",
+                "No V works from a range width of {} on (no bar).",
                 super::style::fmt_num(w, 3)
             ));
         }
@@ -255,8 +258,9 @@ impl VlocatorRobust {
         let mut notes = Vec::new();
         if d.windows.is_empty() {
             let mut why = format!(
-                "No V works for {name}: every V wide enough not to lock at μ = {} (γ ≥ {:.2}°) \
-                 {} at μ = {}.",
+                // No-break spaces keep "μ = 0.1" on one line of the wrapped note.
+                "No V works for {name}: every V that does not lock at μ\u{a0}=\u{a0}{} \
+                 (γ\u{a0}≥\u{a0}{:.2}°) {} at μ\u{a0}=\u{a0}{}.",
                 Num(g.mu_hi),
                 d.lock_bound_deg,
                 d.dropped_at_lock_bound
@@ -267,14 +271,11 @@ impl VlocatorRobust {
                 let mut opens = Vec::new();
                 if let Some(m) = o.mu_hi_max {
                     let lock = lock_angle_deg(s.locator.rotation, (m, m));
-                    opens.push(format!(
-                        "the friction stays below μ = {:.4} (a {lock:.2}° V then works)",
-                        Num(m)
-                    ));
+                    opens.push(format!("μ stays below {:.4} (a {lock:.2}° V)", Num(m)));
                 }
                 if let Some(p) = o.load_hi_max_n {
                     opens.push(format!(
-                        "the load stays below {:.3} N (on the {:.2}° V)",
+                        "the load below {:.3} N (the {:.2}° V)",
                         Num(p),
                         d.lock_bound_deg
                     ));
@@ -285,27 +286,28 @@ impl VlocatorRobust {
             }
             notes.push(why);
         }
-        // The V-blocks with the same verdict named together.
-        let mut verdicts: Vec<(BoxVerdict, Vec<f64>)> = Vec::new();
+        // The V-blocks with the same verdict named together (a dropped load by how the part
+        // leaves; `jamchart vlocator` gives each load).
+        let mut verdicts: Vec<(Option<FailureMode>, bool, Vec<f64>)> = Vec::new();
         for v in &g.standard_v_blocks {
-            match verdicts.iter_mut().find(|(t, _)| *t == v.verdict) {
-                Some((_, gs)) => gs.push(v.included_angle_deg),
-                None => verdicts.push((v.verdict, vec![v.included_angle_deg])),
+            let key = match v.verdict {
+                BoxVerdict::Works => (None, false),
+                BoxVerdict::Locks { .. } => (None, true),
+                BoxVerdict::Drops { load } => (Some(load.mode), false),
+            };
+            match verdicts.iter_mut().find(|(m, l, _)| (*m, *l) == key) {
+                Some((_, _, gs)) => gs.push(v.included_angle_deg),
+                None => verdicts.push((key.0, key.1, vec![v.included_angle_deg])),
             }
         }
         let said: Vec<String> = verdicts
             .iter()
-            .map(|(v, gs)| {
+            .map(|(mode, locks, gs)| {
                 let s = if gs.len() == 1 { "s" } else { "" };
-                let what = match v {
-                    BoxVerdict::Works => format!("work{s}"),
-                    BoxVerdict::Locks { .. } => format!("self-lock{s} at the top friction"),
-                    BoxVerdict::Drops { load } => format!(
-                        "drop{s} {} N at {}° at the lowest friction (the part {})",
-                        level_text(load.load_n),
-                        level_text(load.load_angle_deg),
-                        load.mode.describe()
-                    ),
+                let what = match (mode, locks) {
+                    (Some(m), _) => format!("drop{s} a load (the part {})", m.describe()),
+                    (None, true) => format!("self-lock{s}"),
+                    (None, false) => format!("work{s}"),
                 };
                 format!("{} {what}", degrees(gs))
             })
@@ -349,10 +351,19 @@ fn given_marks(name: &str, w: f64, d: &RobustDesign, x: &PlotAxis, y: &PlotAxis)
             ),
         ),
     };
+    // Near the top of the line, where no bar reaches (the axis has room above and below
+    // them), or near its foot where a standard V-block's tag sits in the top fifth.
+    let span = y.max - y.min;
+    let tag_at_top = STANDARD_V_DEG
+        .iter()
+        .any(|g| (y.min..=y.max).contains(g) && *g + TAG_RISE * span > y.max - 0.2 * span);
+    let height = match tag_at_top {
+        true => y.min + 0.04 * span,
+        false => y.max - 0.04 * span,
+    };
     [
         Mark {
-            // Near the top of the line, where no bar reaches (the axis has room above them).
-            at: (w, y.max - 0.04 * (y.max - y.min)),
+            at: (w, height),
             text: verdict,
             side: LabelSide::OnLine {
                 right: w <= 0.5 * (x.min + x.max),
@@ -367,6 +378,9 @@ fn given_marks(name: &str, w: f64, d: &RobustDesign, x: &PlotAxis, y: &PlotAxis)
         },
     ]
 }
+
+/// How far above its line a standard V-block's tag sits, as a fraction of the angle axis.
+const TAG_RISE: f64 = 0.025;
 
 /// Room below and above the angles drawn, deg, at least (then rounded out to 10 deg).
 const ANGLE_PAD_DEG: f64 = 3.0;
