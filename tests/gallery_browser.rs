@@ -212,52 +212,6 @@ fn reads_the_universal_chart_and_contour_maps_off(kind: Kind) {
     assert_eq!((num(c, "force_n"), num(c, "radius_mm")), (150.0, 12.0));
 }
 
-in_chromium_and_firefox!(
-    /// Regression: the universal chart's hover said `status = jams` for the 25 mm shaft at mu
-    /// 0.12, whose jam lies past its 80 mm palm (x/r 7.95 > L/r 6.40; `solve` says
-    /// beyond_reach), and gave x/r but not x in mm. In Chromium and Firefox, the read-off there
-    /// says beyond_reach and gives x_jam in mm within 1 % of `solve`'s past-palm x_jam (the
-    /// cells are interpolated); a screenshot is saved to look at.
-    the_universal_hover_says_beyond_reach_past_the_palm_with_x_in_mm,
-    the_universal_hover_says_beyond_reach_past_the_palm_with_x_in_mm_in_firefox,
-    reads_a_jam_past_the_palm_off_the_universal_chart
-);
-
-/// The checks of the test above in the browser of `kind`.
-fn reads_a_jam_past_the_palm_off_the_universal_chart(kind: Kind) {
-    let Some((browser, dir, out)) = gallery_of(kind, &["universal-range"]) else {
-        return;
-    };
-    let push_ratio = 40.0 / (0.4 * 9.806);
-    let url = format!(
-        "file://{}#readoff=universal-range:0.12:{push_ratio}",
-        out.join("index.html").display()
-    );
-    let dom = browser.dom(&url, None);
-    assert!(
-        dom.contains("data-readoff=\"done\""),
-        "the hook did not run"
-    );
-    let r = &pins(&dom, "universal-range")[0];
-    let mut flags = vec!["solve", "--format", "json", "--mu", "0.12"];
-    flags.extend(cli_util::SHAFT);
-    let doc = json(&jamchart(dir.path(), &flags));
-    let s = &doc["results"][0];
-    assert_eq!(s["status"], "beyond_reach", "{s}");
-    assert_eq!(r["status"], "beyond_reach", "{r}");
-    let want = num(&s["past_palm"], "x_jam_mm");
-    let got = num(r, "x_jam_mm");
-    eprintln!("universal-range at mu 0.12: x_jam {got:.3} mm (solve past the palm {want:.3})");
-    assert!(rel(got, want).abs() < 1e-2, "{r}");
-    assert!((num(r, "x_over_r") - got / 12.5).abs() < 1e-2, "{r}");
-    let shots = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("gallery_browser");
-    std::fs::create_dir_all(&shots).unwrap();
-    let tag = format!("{:?}", browser.kind).to_lowercase();
-    let path = shots.join(format!("gallery-universal-range-{tag}.png"));
-    browser.screenshot(&url, (1000, 1300), &path);
-    eprintln!("screenshot {}", path.display());
-}
-
 /// `vlocator`'s capacity for a symmetric V of `included_deg` under a load at `load_deg`, as
 /// the capacity map's scene sets the locator (mu 0.3, free rotation, load at the centre):
 /// P_max / W, or None when every load is held.

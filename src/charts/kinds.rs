@@ -78,14 +78,6 @@ macro_rules! chart_kinds {
                 }
             }
 
-            /// The parameters the chart is drawn with, for the gallery's table: its heading
-            /// and the values by their TOML keys ([`Figure::parameters`]).
-            pub(crate) fn parameters(&self, input: &Input) -> (&'static str, toml::Table) {
-                match self {
-                    $(ChartSpec::$variant(s) => s.parameters(input),)+
-                }
-            }
-
             pub(crate) fn marks_scene_value(&self) -> bool {
                 match self {
                     $(ChartSpec::$variant(s) => s.marks_scene_value(),)+
@@ -218,4 +210,17 @@ chart_kinds! {
     VlocatorRobust("vlocator_robust", fig::vlocator_robust::VlocatorRobustSettings => vlocator_robust::VlocatorRobust),
     /// The stability matrix: case by method, coloured by class.
     Stability("stability", fig::stability::StabilitySettings => stability::Stability),
+}
+
+impl ChartSpec {
+    /// The V-block a V-locator chart is drawn for (its `locator` table); None for the charts of
+    /// the palm scene, whose parameters are the scene's.
+    pub fn locator(&self) -> Option<&crate::locator::LocatorParams> {
+        match self {
+            ChartSpec::VlocatorCapacity(s) => Some(&s.locator),
+            ChartSpec::VlocatorOptimum(s) => Some(&s.locator),
+            ChartSpec::VlocatorRobust(s) => Some(&s.locator),
+            _ => None,
+        }
+    }
 }

@@ -26,51 +26,16 @@ pub enum AnswerAt {
 pub fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     c: &axes::Chart<DB>,
-    axes: (&PlotAxis, &PlotAxis),
-    point: (f64, f64),
+    (x, y): (&PlotAxis, &PlotAxis),
+    (u, v): (f64, f64),
     answer: &str,
     place: AnswerAt,
 ) -> DrawResult<DB> {
-    draw_lines(root, c, axes, point)?;
-    draw_answer(root, c, axes, point, answer, place)
-}
-
-/// The read-off's lines 1 and 2 alone, in px: for a chart that sets its labels over them.
-pub fn lines<DB: DrawingBackend>(
-    c: &axes::Chart<DB>,
-    (x, y): (&PlotAxis, &PlotAxis),
-    (u, v): (f64, f64),
-) -> [[(i32, i32); 2]; 2] {
     let at = |a: f64, b: f64| axes::pixel(c, x, y, a, b);
     let (corner, bottom, left) = (at(u, v), at(u, y.min), at(x.min, v));
-    [[bottom, corner], [left, corner]]
-}
-
-/// Draws the read-off's lines 1 and 2 ([`lines`]).
-pub fn draw_lines<DB: DrawingBackend>(
-    root: &DrawingArea<DB, Shift>,
-    c: &axes::Chart<DB>,
-    axes: (&PlotAxis, &PlotAxis),
-    point: (f64, f64),
-) -> DrawResult<DB> {
-    for line in lines(c, axes, point) {
+    for line in [[bottom, corner], [left, corner]] {
         style::draw_line_px(root, &line, LineKind::Dotted, INK, 2)?;
     }
-    Ok(())
-}
-
-/// The read-off's dot, step numbers 1 and 2 and step 3's `answer` ([`draw`] without the
-/// lines).
-pub fn draw_answer<DB: DrawingBackend>(
-    root: &DrawingArea<DB, Shift>,
-    c: &axes::Chart<DB>,
-    (x, y): (&PlotAxis, &PlotAxis),
-    (u, v): (f64, f64),
-    answer: &str,
-    place: AnswerAt,
-) -> DrawResult<DB> {
-    let at = |a: f64, b: f64| axes::pixel(c, x, y, a, b);
-    let (corner, bottom, left) = (at(u, v), at(u, y.min), at(x.min, v));
     root.draw(&Circle::new(corner, 5, INK.filled()))?;
     let num = |s: &str, p: (i32, i32)| axes::tag(root, s, p);
     num("1", (bottom.0 + 12, (bottom.1 + corner.1) / 2))?;

@@ -107,19 +107,6 @@ pub(super) fn attach(scene: &mut Scene, taken: &Taken) -> Result<()> {
                 e => e,
             })
         }
-        // A V-block's chart does not read [scene]: its frictions are its own keys.
-        chart if !chart.takes_scene() => Err(Error::invalid(
-            &written,
-            first.value,
-            format!(
-                "scene {} is a V-block's chart ({}), which does not read [scene]: a V-block's \
-                 friction range is the key chart.mu of its robust chart (kind = \
-                 \"vlocator_robust\"), e.g. --set chart.mu={}",
-                scene.name,
-                chart.kind(),
-                first.value
-            ),
-        )),
         chart => {
             let flag = crate::settings::flag_for(first.name)
                 .and_then(|f| f.split(" or ").next().map(str::to_string))

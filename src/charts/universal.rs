@@ -17,7 +17,6 @@ use super::colorbar::{self, ColorBar};
 use super::contour_map::{at_height, level_text};
 use super::legend::{self, LegendEntry, Swatch};
 use super::picture::Picture;
-use super::point_read_off;
 use super::readoff;
 use super::style::{self, GRID_MAJOR, INK, LineKind};
 use super::typeset;
@@ -65,8 +64,17 @@ impl Picture for Universal {
             .iter()
             .map(|band| grid_polygons(band.geometry(), xa, ya))
             .collect();
+        let held_mask: Vec<bool> = c
+            .status
+            .iter()
+            .map(|&s| {
+                [JamStatus::JammedAtStart, JamStatus::TooWeak]
+                    .iter()
+                    .any(|h| h.index() == s)
+            })
+            .collect();
         Universal {
-            held: mask_rings(&c.held, xa, ya),
+            held: mask_rings(&held_mask, xa, ya),
             bands,
             title: title.to_string(),
             data,
@@ -89,7 +97,6 @@ impl Picture for Universal {
             &[
                 ("theta_jam_deg", &|i| serde_json::json!(c.theta_jam_deg[i])),
                 ("x_over_r", &|i| serde_json::json!(c.x_over_r[i])),
-                ("x_jam_mm", &|i| serde_json::json!(c.x_jam_mm[i])),
                 ("status", &|i| {
                     serde_json::json!(JamStatus::NAMES[usize::from(c.status[i])])
                 }),
@@ -138,19 +145,10 @@ impl Picture for Universal {
         for p in &self.data.palm_reach.paths.paths {
             style::draw_line_px(area, p, LineKind::Dashed, LineKind::Dashed.color(), 3)?;
         }
-        // The read-off's and the range's lines under the labels: a label they would cut
-        // moves off them, or where it cannot, is set over them.
-        let over = self.lines_over_labels(&chart, (&x, &y));
-        for l in &over.read_off {
-            style::draw_line_px(root, l, LineKind::Dotted, INK, 2)?;
-        }
-        if !over.range.is_empty() {
-            style::draw_line_px(root, &over.range, LineKind::Solid, RANGE_INK, 4)?;
-        }
-        self.draw_labels(root, &chart, &y, &over)?;
+        self.draw_labels(root, &chart, &y)?;
         axes::draw_frame(root, &chart, &x, &y)?;
         self.draw_read_off(root, &chart, &x, &y)?;
-        self.draw_range(root, &chart, &x, &y, &over.range)?;
+        self.draw_range(root, &chart, &x, &y)?;
         let params = &self.data.params;
         let sub = format!(
             "closed-form statics (corrected Eq. 1) for any r, m, F and g{}, start at {}°",
@@ -259,74 +257,44 @@ impl Universal {
         })
     }
 
-    /// The lines drawn across the iso-lines' labels, in px: the read-off's lines 1 and 2 and
-    /// the range's box.
-    fn lines_over_labels<DB: DrawingBackend>(
-        &self,
-        c: &axes::Chart<DB>,
-        (x, y): (&PlotAxis, &PlotAxis),
-    ) -> OverLabels {
-        let read_off = self
-            .drawn_read_off()
-            .map(|r| point_read_off::lines(c, (x, y), (r.at.at[0], r.at.at[1])));
-        let at =
-            |u: f64, v: f64| axes::pixel(c, x, y, u.clamp(x.min, x.max), v.clamp(y.min, y.max));
-        let range = self.data.range.as_ref().map(|r| {
-            let ([x0, x1], [y0, y1]) = (r.x, r.push_ratio);
-            vec![at(x0, y0), at(x1, y0), at(x1, y1), at(x0, y1), at(x0, y0)]
-        });
-        OverLabels {
-            read_off: read_off.map(Vec::from).unwrap_or_default(),
-            range: range.unwrap_or_default(),
-        }
-    }
-
     /// theta_jam on each labelled line near the top of the plot, x_jam / r near the bottom.
     fn draw_labels<DB: DrawingBackend>(
         &self,
         root: &DrawingArea<DB, Shift>,
         chart: &axes::Chart<DB>,
         y: &PlotAxis,
-        over: &OverLabels,
     ) -> DrawResult<DB> {
         let (px, py) = chart.plotting_area().get_pixel_range();
         let inside = |at: (i32, i32)| px.contains(&at.0) && py.contains(&at.1);
-        let over = over.segments();
-        // Each label where it belongs: theta_jam at the top, x_jam / r at the bottom; a label
-        // on a line at the plot's left edge moved right until it clears the edge, where the y
-        // axis' tick labels lie (a line there over 12 decades met "10⁰").
+        // A label whose text would overlap one already set is left out: over many decades of
+        // F / (m g) the lines crowd together near the bottom (the layout tests' awkward scenes).
+        let mut placed: Vec<PxBox> = Vec::new();
+        // A label on a line at the plot's left edge is moved right until it clears the edge,
+        // where the y axis' tick labels lie (a line there over 12 decades met "10⁰").
+        let mut tag = |s: &str, at: (i32, i32)| {
+            let size = typeset::text_size(s, style::TICK_PX);
+            let at = (at.0.max(px.start + size.0 as i32 / 2), at.1);
+            let b = PxBox::centred(at, size, 0);
+            if placed.iter().any(|p| p.overlaps(&b)) {
+                return Ok(());
+            }
+            placed.push(b);
+            axes::tag(root, s, at)
+        };
         let major = &self.data.labelled_theta_jam_deg;
-        let mut labels: Vec<Label> = Vec::new();
-        for (level, paths) in (self.data.iso_lines.lines.iter())
+        let lines = self.data.iso_lines.lines.iter();
+        for (level, paths) in lines
             .filter(|l| major.contains(&l.theta_jam_deg))
             .map(|l| (l.theta_jam_deg, &l.paths.paths))
         {
             let top = at_height(paths, chart, y, 0.96).map(|(_, at)| at);
             let bottom = at_height(paths, chart, y, 0.04).map(|(_, at)| at);
-            let texts = [
-                top.filter(|a| inside(*a))
-                    .map(|a| (format!("{}°", level_text(level)), a)),
-                bottom
-                    .filter(|a| inside(*a) && Some(*a) != top)
-                    .map(|a| (style::fmt_num(cot_half(level), 2), a)),
-            ];
-            for (s, at) in texts.into_iter().flatten() {
-                let size = typeset::text_size(&s, style::TICK_PX);
-                let at = (at.0.max(px.start + size.0 as i32 / 2), at.1);
-                labels.push((s, at, size));
+            if let Some(at) = top.filter(|a| inside(*a)) {
+                tag(&format!("{}°", level_text(level)), at)?;
             }
-        }
-        move_off_lines(&mut labels, &over);
-        // A label whose text would overlap one already set is left out: over many decades of
-        // F / (m g) the lines crowd together near the bottom (the layout tests' awkward scenes).
-        let mut placed: Vec<PxBox> = Vec::new();
-        for (s, at, size) in &labels {
-            let b = PxBox::centred(*at, *size, 0);
-            if placed.iter().any(|p| p.overlaps(&b)) {
-                continue;
+            if let Some(at) = bottom.filter(|a| inside(*a) && Some(*a) != top) {
+                tag(&style::fmt_num(cot_half(level), 2), at)?;
             }
-            placed.push(b);
-            axes::tag(root, s, *at)?;
         }
         Ok(())
     }
@@ -340,15 +308,17 @@ impl Universal {
         c: &axes::Chart<DB>,
         x: &PlotAxis,
         y: &PlotAxis,
-        ring: &[(i32, i32)],
     ) -> DrawResult<DB> {
         let Some(r) = &self.data.range else {
             return Ok(());
         };
         let clamp = |v: f64, a: &PlotAxis| v.clamp(a.min, a.max);
         let at = |u: f64, v: f64| axes::pixel(c, x, y, clamp(u, x), clamp(v, y));
+        let ([x0, x1], [y0, y1]) = (r.x, r.push_ratio);
+        let ring = [at(x0, y0), at(x1, y0), at(x1, y1), at(x0, y1), at(x0, y0)];
+        style::draw_line_px(root, &ring, LineKind::Solid, RANGE_INK, 4)?;
         let p = &self.data.params;
-        let lr = p.palm_length_mm / p.radius_mm;
+        let (lr, rr) = (p.palm_length_mm / p.radius_mm, p.radius_mm);
         let text = |what: &str, e: &RangeEnd| -> String {
             let corner = format!(
                 "{what} at {} = {}, F/(m g) = {}",
@@ -366,7 +336,7 @@ impl Universal {
                 (Some(t), JamStatus::BeyondReach) => format!(
                     "{corner}: x_jam/r = {} ({} mm) > L/r = {}: past the palm's end",
                     style::fmt_num(cot_half(t), 2),
-                    style::fmt_num(p.disc_position_mm(t.to_radians()), 1),
+                    style::fmt_num(rr * cot_half(t), 1),
                     style::fmt_num(lr, 2)
                 ),
                 (_, status) => format!("{corner}: {status}"),
@@ -422,155 +392,14 @@ impl Universal {
                 p.radius_mm
             ),
             (Some(t), JamStatus::BeyondReach) => format!(
-                "3: θ_jam = {}°, x_jam/r = {} → {} mm: past this palm's end (L/r = {})",
+                "3: θ_jam = {}°, x_jam/r = {}: past this palm's end (L/r = {})",
                 style::fmt_num(t, 1),
                 style::fmt_num(cot_half(t), 2),
-                style::fmt_num(p.disc_position_mm(t.to_radians()), 1),
                 style::fmt_num(p.palm_length_mm / p.radius_mm, 2)
             ),
             (_, status) => format!("3: {status}"),
         };
-        let below = point_read_off::AnswerAt::Below;
-        point_read_off::draw_answer(root, c, (x, y), (r.at.at[0], r.at.at[1]), &answer, below)
-    }
-}
-
-/// The lines drawn across the iso-lines' labels, in px.
-struct OverLabels {
-    /// The read-off's lines 1 and 2 (none where it is not drawn).
-    read_off: Vec<[(i32, i32); 2]>,
-    /// The range's box as a closed ring (empty without a range).
-    range: Vec<(i32, i32)>,
-}
-
-impl OverLabels {
-    /// Every line as a segment.
-    fn segments(&self) -> Vec<[(i32, i32); 2]> {
-        let ring = self.range.windows(2).map(|w| [w[0], w[1]]);
-        self.read_off.iter().copied().chain(ring).collect()
-    }
-}
-
-/// A label: its text, centre and size in px.
-type Label = (String, (i32, i32), (u32, u32));
-
-/// Each label a read-off or range line would cut ("3.73" under line 1) moved just off that
-/// line, still touching its own iso-line, where its box stays clear of the other labels'
-/// boxes; where it cannot, it stays (and is set over the line, which is drawn first).
-fn move_off_lines(labels: &mut [Label], over: &[[(i32, i32); 2]]) {
-    for i in 0..labels.len() {
-        let (at, size) = (labels[i].1, labels[i].2);
-        let free = |a: (i32, i32)| {
-            let b = PxBox::centred(a, size, axes::BOX_PAD + 1);
-            let apart = PxBox::centred(a, size, 2 * axes::BOX_PAD + 2);
-            !over.iter().any(|l| b.meets_segment(l[0], l[1]))
-                && !(labels.iter().enumerate())
-                    .any(|(j, o)| j != i && PxBox::centred(o.1, o.2, 0).overlaps(&apart))
-        };
-        if let Some(a) = off_lines(at, size, over).into_iter().find(|a| free(*a)) {
-            labels[i].1 = a;
-        }
-    }
-}
-
-/// Where a label of `size` px centred at `at` may go so that none of `lines` cuts it: where it
-/// is, if none does; else just beside each line that does, on the label's own side first
-/// (sideways off an upright line, up or down off a level one), then the other side.
-fn off_lines(at: (i32, i32), size: (u32, u32), lines: &[[(i32, i32); 2]]) -> Vec<(i32, i32)> {
-    let half = (size.0 as i32 / 2, size.1 as i32 / 2);
-    // The box's padding and one more pixel of white between the box and the line.
-    let gap = axes::BOX_PAD + 2;
-    let mut out = vec![at];
-    let b = PxBox::centred(at, size, axes::BOX_PAD + 1);
-    for [a, z] in lines.iter().filter(|l| b.meets_segment(l[0], l[1])) {
-        let (near, far) = if a.0 == z.0 {
-            let (l, r) = ((a.0 - gap - half.0, at.1), (a.0 + gap + half.0, at.1));
-            if at.0 <= a.0 { (l, r) } else { (r, l) }
-        } else {
-            let (u, d) = ((at.0, a.1 - gap - half.1), (at.0, a.1 + gap + half.1));
-            if at.1 <= a.1 { (u, d) } else { (d, u) }
-        };
-        out.extend([near, far]);
-    }
-    if out.len() > 1 {
-        out.remove(0);
-    }
-    out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{Label, PxBox, move_off_lines};
-    use crate::charts::{Formats, SceneSource, render};
-    use crate::grid::GridParam;
-    use serde_json::Value;
-
-    /// The gallery's hover on the universal chart said `status = jams` at mu 0.12 for the 25 mm
-    /// shaft, whose jam lies past its 80 mm palm (x/r 7.95 > L/r 6.40), and gave x/r without x
-    /// in mm: the read-off's cells carry `solve`'s status, beyond_reach, and x_jam_mm, where
-    /// the shaft would jam (`solve`'s past-palm x_jam), at the cells nearest that point.
-    #[test]
-    fn the_read_off_says_beyond_reach_and_x_in_mm_past_the_palm() {
-        let scene = SceneSource::BuiltIn("universal-range".into())
-            .load(&[])
-            .unwrap();
-        let doc: Value = serde_json::from_str(
-            &render(&scene, Formats::Png)
-                .unwrap()
-                .read_off
-                .expect("a read-off"),
-        )
-        .unwrap();
-        let g = &doc["grid"];
-        let nearest = |axis: &Value, v: f64| {
-            let a: Vec<f64> = serde_json::from_value(axis.clone()).unwrap();
-            let i = (0..a.len())
-                .min_by(|&i, &j| (a[i] - v).abs().total_cmp(&(a[j] - v).abs()))
-                .unwrap();
-            (i, a[i], a.len())
-        };
-        let ratio = 40.0 / (0.4 * 9.806);
-        let (ix, mu, nx) = nearest(&g["x"], 0.12);
-        let (iy, at_ratio, _) = nearest(&g["y"], ratio);
-        assert!((mu - 0.12).abs() < 0.01 && (at_ratio / ratio - 1.0).abs() < 0.05);
-        let cell = |q: &str| g["cells"][q][iy * nx + ix].clone();
-        let q = GridParam::PushRatio.apply(GridParam::Mu.apply(scene.params, mu), at_ratio);
-        let s = crate::statics::solve(&q);
-        assert_eq!(s.status, crate::scene::JamStatus::BeyondReach);
-        assert_eq!(cell("status"), "beyond_reach");
-        let want = s.past_palm.unwrap().x_jam_mm;
-        let got = cell("x_jam_mm").as_f64().unwrap();
-        assert!((got / want - 1.0).abs() < 1e-6, "{got} against {want}");
-        let x_over_r = cell("x_over_r").as_f64().unwrap();
-        assert!(x_over_r > scene.params.palm_length_mm / scene.params.radius_mm);
-    }
-
-    /// Line 1 of the read-off cut the label "3.73" of the iso-line it crossed: a label that a
-    /// line crosses moves beside the line, on its own side, where the other labels leave room,
-    /// and stays (to be set over the line) where they do not.
-    #[test]
-    fn a_label_a_line_crosses_moves_beside_it_where_there_is_room() {
-        let size = (32, 14);
-        let line = [[(100, 0), (100, 300)]];
-        let mut labels: Vec<Label> = vec![
-            ("3.73".into(), (95, 280), size),
-            ("3.17".into(), (300, 280), size),
-        ];
-        move_off_lines(&mut labels, &line);
-        let b = PxBox::centred(labels[0].1, size, crate::charts::axes::BOX_PAD);
-        assert!(!b.meets_segment(line[0][0], line[0][1]), "{labels:?}");
-        assert!(
-            labels[0].1.0 < 100 && labels[0].1.0 > 95 - size.0 as i32,
-            "{labels:?}"
-        );
-        assert_eq!(labels[1].1, (300, 280));
-        // Neighbours on both sides, 40 px apart: no room, it stays.
-        let mut crowded: Vec<Label> = vec![
-            ("4.51".into(), (60, 280), size),
-            ("3.73".into(), (100, 280), size),
-            ("3.17".into(), (140, 280), size),
-        ];
-        move_off_lines(&mut crowded, &line);
-        assert_eq!(crowded[1].1, (100, 280));
+        let below = super::point_read_off::AnswerAt::Below;
+        super::point_read_off::draw(root, c, (x, y), (r.at.at[0], r.at.at[1]), &answer, below)
     }
 }

@@ -352,7 +352,7 @@ pub fn locator_subtitle(p: &LocatorParams, load: &str, with_mu: bool) -> String 
 }
 
 /// A level as a label: at most two decimals, no trailing zeros.
-pub(super) fn level_text(v: f64) -> String {
+fn level_text(v: f64) -> String {
     let s = style::fmt_num(v, 2);
     let s = s.trim_end_matches('0').trim_end_matches('.');
     s.to_string()

@@ -11,13 +11,12 @@ use super::axes::{DrawResult, PlotAxis, PlotFrame};
 use super::picture::Picture;
 use super::readoff;
 use super::style::LineKind;
-use super::vlocator_capacity::{level_text, locator_subtitle};
-use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, Tag};
+use super::vlocator_capacity::locator_subtitle;
+use super::xy::{Curve, CurveStyle, Figure, Panel, Tag};
 use crate::figures::vlocator_capacity::STANDARD_V_DEG;
-use crate::figures::vlocator_robust::{GivenRange, VlocatorRobustData, VlocatorRobustSettings};
+use crate::figures::vlocator_robust::{VlocatorRobustData, VlocatorRobustSettings};
 use crate::grid::AxisScale;
-use crate::locator::{BoxVerdict, DroppedLoad, RobustBox, RobustDesign, lock_angle_deg};
-use crate::numbers::Num;
+use crate::locator::{RobustBox, RobustDesign};
 
 /// A robust-design chart ready to draw.
 #[derive(Debug, Clone)]
@@ -69,7 +68,6 @@ impl Picture for VlocatorRobust {
             "safety_factor": col(&|d| d.robust.map(|r| r.safety_factor).filter(|r| r.is_finite())),
         });
         let s = &self.data.settings;
-        let (load, angle) = (s.load_n, s.load_angle_deg);
         Some(json!({
             "kind": "panels",
             "model": "vlocator",
@@ -77,11 +75,7 @@ impl Picture for VlocatorRobust {
             "sweeps": [{
                 "param": "mu_width",
                 "at": self.data.widths,
-                "fixed": {
-                    "mu_center": s.center(),
-                    "load_n": [load.lo, load.hi],
-                    "load_angle_deg": [angle.lo, angle.hi],
-                },
+                "fixed": { "mu_center": s.mu_center, "load_n": s.load_n, "load_angle_deg": s.load_angle_deg },
                 "series": [series],
             }],
         }))
@@ -96,30 +90,17 @@ impl Picture for VlocatorRobust {
 impl VlocatorRobust {
     fn figure(&self) -> Figure {
         let s = &self.data.settings;
-        let (c, wmax) = (Num(s.center()), s.width_max());
         let x = PlotAxis::new(
             0.0,
-            wmax,
+            s.width_max,
             AxisScale::Linear,
             format!(
-                "width w of the friction range (-): μ from {c} − w/2 to {c} + w/2, both flanks"
+                "width w of the friction range (-): μ from {} − w/2 to {} + w/2, both flanks",
+                s.mu_center, s.mu_center
             ),
         );
-        let y = self.angle_axis();
+        let y = PlotAxis::new(0.0, 180.0, AxisScale::Linear, "included angle γ (deg)");
         let mut curves = Vec::new();
-        let given = self.data.given.as_ref().map(|g| {
-            let i = g.index;
-            let name = format!("μ {}", range_text((g.mu_lo, g.mu_hi)));
-            (g, self.data.widths[i], &self.data.designs[i], name)
-        });
-        // The range given under the bars: its own window's bar is drawn over it.
-        if let Some((_, w, _, name)) = &given {
-            curves.push(Curve {
-                label: format!("your range, {name} (w = {})", Num(*w)),
-                style: CurveStyle::Line(RANGE_LINE),
-                points: vec![(*w, y.min), (*w, y.max)],
-            });
-        }
         // The window as vertical bars, one per width: a band without a fill style.
         for (&w, d) in self.data.widths.iter().zip(&self.data.designs) {
             for &(lo, hi) in &d.windows {
@@ -158,39 +139,31 @@ impl VlocatorRobust {
             });
         }
         let mut tags = Vec::new();
-        let shown: Vec<f64> = STANDARD_V_DEG
-            .into_iter()
-            .filter(|g| (y.min..=y.max).contains(g))
-            .collect();
-        for &g in &shown {
+        for g in STANDARD_V_DEG {
             curves.push(Curve {
-                label: format!("standard V-blocks {}", degrees(&shown)),
+                label: "standard V-blocks 60°, 90°, 120°".into(),
                 style: CurveStyle::Line(LineKind::Dotted),
-                points: vec![(0.0, g), (wmax, g)],
+                points: vec![(0.0, g), (s.width_max, g)],
             });
             tags.push(Tag {
-                // Just above its line, whatever the zoom.
-                at: (wmax, g + 0.025 * (y.max - y.min)),
+                at: (s.width_max, g + 4.0),
                 text: format!("{g:.0}° V"),
                 left: true,
             });
         }
-        let mut marks = Vec::new();
-        let (a0, a1) = s.load_angle_deg.ends();
-        let directions = match a0 == a1 {
-            true => format!("{}°", level_text(a0)),
-            false => format!("{}° to {}°", level_text(a0), level_text(a1)),
-        };
+        let closes = self
+            .data
+            .widths
+            .iter()
+            .zip(&self.data.designs)
+            .find(|(_, d)| d.windows.is_empty())
+            .map(|(&w, _)| w);
         let mut notes = vec![format!(
-            "Loads {} N at {directions}; a V works when it holds every load at the lowest friction and \
-             does not lock at the highest (both ends decide: see the locator docs).",
-            range_text(s.load_n.ends()),
+            "Loads {} to {} N at {}° to {}°; a V works when it holds every load at the lowest \
+             friction and does not lock at the highest (both ends decide: see the locator docs).",
+            s.load_n[0], s.load_n[1], s.load_angle_deg[0], s.load_angle_deg[1]
         )];
-        if let Some((g, w, d, name)) = &given {
-            marks.extend(given_marks(name, *w, d, &x, &y));
-            notes.extend(self.given_notes(name, g, d));
-        }
-        if let Some(w) = self.closes() {
+        if let Some(w) = closes {
             notes.push(format!(
                 "No single V works from a range width of {} on (no bar): narrow the friction \
                  range or lighten the load.",
@@ -206,361 +179,25 @@ impl VlocatorRobust {
                 x,
                 y,
                 curves,
-                marks,
+                marks: Vec::new(),
                 tags,
             }],
             notes,
         }
     }
-
-    /// The smallest width at which no V works, if any.
-    fn closes(&self) -> Option<f64> {
-        self.data
-            .widths
-            .iter()
-            .zip(&self.data.designs)
-            .find(|(_, d)| d.windows.is_empty())
-            .map(|(&w, _)| w)
-    }
-
-    /// The included-angle axis over the angles drawn (windows, lock bound, most robust), with
-    /// room around them, at whole multiples of 10 deg within [0, 180]: a window of a few
-    /// degrees was a few pixels on the whole 0 to 180 deg. A standard V-block at the top gets
-    /// room for its tag.
-    fn angle_axis(&self) -> PlotAxis {
-        let angles = self.data.designs.iter().flat_map(|d| {
-            let windows = d.windows.iter().flat_map(|&(lo, hi)| [lo, hi]);
-            let robust = d.robust.map(|r| r.included_angle_deg);
-            windows.chain([d.lock_bound_deg]).chain(robust)
-        });
-        let (lo, hi) = angles
-            .filter(|a| a.is_finite())
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), a| {
-                (lo.min(a), hi.max(a))
-            });
-        let (lo, hi) = if lo <= hi { (lo, hi) } else { (0.0, 180.0) };
-        let pad = (0.1 * (hi - lo)).max(ANGLE_PAD_DEG);
-        let lo = (10.0 * ((lo - pad) / 10.0).floor()).max(0.0);
-        let mut hi = (10.0 * ((hi + pad) / 10.0).ceil()).min(180.0);
-        if STANDARD_V_DEG.iter().any(|g| hi - 6.0 < *g && *g <= hi) {
-            hi = (hi + 10.0).min(180.0);
-        }
-        PlotAxis::new(lo, hi, AxisScale::Linear, "included angle γ (deg)")
-    }
-
-    /// The notes on the range given: why no V works and what would open a window, and the
-    /// standard V-blocks over its box.
-    fn given_notes(&self, name: &str, g: &GivenRange, d: &RobustDesign) -> Vec<String> {
-        let s = &self.data.settings;
-        let mut notes = Vec::new();
-        if d.windows.is_empty() {
-            let mut why = format!(
-                "No V works for {name}: every V wide enough not to lock at μ = {} (γ ≥ {:.2}°) \
-                 {} at μ = {}.",
-                Num(g.mu_hi),
-                d.lock_bound_deg,
-                d.dropped_at_lock_bound
-                    .map_or("drops a load".to_string(), |l| drops(&l)),
-                Num(g.mu_lo)
-            );
-            if let Some(o) = d.opening {
-                let mut opens = Vec::new();
-                if let Some(m) = o.mu_hi_max {
-                    let lock = lock_angle_deg(s.locator.rotation, (m, m));
-                    opens.push(format!(
-                        "the friction stays below μ = {:.4} (a {lock:.2}° V then works)",
-                        Num(m)
-                    ));
-                }
-                if let Some(p) = o.load_hi_max_n {
-                    opens.push(format!(
-                        "the load stays below {:.3} N (on the {:.2}° V)",
-                        Num(p),
-                        d.lock_bound_deg
-                    ));
-                }
-                if !opens.is_empty() {
-                    why.push_str(&format!(" A window opens if {}.", opens.join(" or ")));
-                }
-            }
-            notes.push(why);
-        }
-        // The V-blocks with the same verdict named together.
-        let mut verdicts: Vec<(BoxVerdict, Vec<f64>)> = Vec::new();
-        for v in &g.standard_v_blocks {
-            match verdicts.iter_mut().find(|(t, _)| *t == v.verdict) {
-                Some((_, gs)) => gs.push(v.included_angle_deg),
-                None => verdicts.push((v.verdict, vec![v.included_angle_deg])),
-            }
-        }
-        let said: Vec<String> = verdicts
-            .iter()
-            .map(|(v, gs)| {
-                let s = if gs.len() == 1 { "s" } else { "" };
-                let what = match v {
-                    BoxVerdict::Works => format!("work{s}"),
-                    BoxVerdict::Locks { .. } => format!("self-lock{s} at the top friction"),
-                    BoxVerdict::Drops { load } => format!(
-                        "drop{s} {} N at {}° at the lowest friction (the part {})",
-                        level_text(load.load_n),
-                        level_text(load.load_angle_deg),
-                        load.mode.describe()
-                    ),
-                };
-                format!("{} {what}", degrees(gs))
-            })
-            .collect();
-        notes.push(format!(
-            "Standard V-blocks over {name}: {}.",
-            said.join("; ")
-        ));
-        notes
-    }
-}
-
-/// The range given, read off: its verdict beside the top of its line, and its most robust
-/// angle with lines to the axes or, where no V works, the narrowest V that does not lock (the
-/// lock bound), which drops a load. The window's ends and rho* are in the verdict, the reason
-/// in the notes: a long label in the plot hid the bars it lay on.
-fn given_marks(name: &str, w: f64, d: &RobustDesign, x: &PlotAxis, y: &PlotAxis) -> [Mark; 2] {
-    let verdict = match d.windows.first() {
-        Some(&(lo, hi)) => format!("{name}: γ from {lo:.2}° to {hi:.2}° works"),
-        None => format!("{name}: no V works"),
-    };
-    let (at, text) = match d.robust {
-        Some(r) => (
-            r.included_angle_deg,
-            format!(
-                "most robust {:.2}° (ρ* = {})",
-                r.included_angle_deg,
-                rho_text(r.safety_factor)
-            ),
-        ),
-        None => (
-            d.lock_bound_deg,
-            format!(
-                "{:.2}°: the narrowest V that does not lock drops {}",
-                d.lock_bound_deg,
-                d.dropped_at_lock_bound
-                    .map_or("a load".to_string(), |l| format!(
-                        "{} N",
-                        level_text(l.load_n)
-                    ))
-            ),
-        ),
-    };
-    [
-        Mark {
-            // Near the top of the line, where no bar reaches (the axis has room above them).
-            at: (w, y.max - 0.04 * (y.max - y.min)),
-            text: verdict,
-            side: LabelSide::OnLine {
-                right: w <= 0.5 * (x.min + x.max),
-            },
-            guides: false,
-        },
-        Mark {
-            at: (w, at),
-            text,
-            side: LabelSide::GuideStart { above: true },
-            guides: true,
-        },
-    ]
-}
-
-/// Room below and above the angles drawn, deg, at least (then rounded out to 10 deg).
-const ANGLE_PAD_DEG: f64 = 3.0;
-
-/// The range given: Okabe-Ito bluish green in medium dashes, apart from the black bars, the
-/// vermillion lock bound and the purple robust angle.
-const RANGE_LINE: LineKind = LineKind::Family(3);
-
-/// `0.1 to 0.25`, or `20` for a point.
-fn range_text((lo, hi): (f64, f64)) -> String {
-    match lo == hi {
-        true => level_text(lo),
-        false => format!("{} to {}", level_text(lo), level_text(hi)),
-    }
-}
-
-/// `60°, 90° and 120°`.
-fn degrees(gs: &[f64]) -> String {
-    let each: Vec<String> = gs.iter().map(|g| format!("{g:.0}°")).collect();
-    match each.split_last() {
-        Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
-        _ => each.join(""),
-    }
-}
-
-/// rho* to two decimals, or "unbounded".
-fn rho_text(rho: f64) -> String {
-    match rho.is_finite() {
-        true => format!("{rho:.2}"),
-        false => "unbounded".into(),
-    }
-}
-
-/// "drops 20 N at 0° (it rolls out over the right flank)", for one V.
-fn drops(l: &DroppedLoad) -> String {
-    format!(
-        "drops {} N at {}° (it {})",
-        level_text(l.load_n),
-        level_text(l.load_angle_deg),
-        l.mode.describe()
-    )
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::charts::builtin::scene_text;
-    use crate::figures::vlocator_robust::Interval;
     use crate::locator::robust_design;
 
     fn built_in() -> VlocatorRobustSettings {
-        settings(scene_text("vlocator-robust").unwrap())
-    }
-
-    /// The `[chart]` settings of a scene's text.
-    fn settings(text: &str) -> VlocatorRobustSettings {
-        let table: toml::Table = toml::from_str(text).unwrap();
+        let table: toml::Table = toml::from_str(scene_text("vlocator-robust").unwrap()).unwrap();
         let mut chart = table["chart"].as_table().unwrap().clone();
         chart.remove("kind");
         toml::Value::Table(chart).try_into().unwrap()
-    }
-
-    /// The chart of settings `s`, computed.
-    fn chart(s: &VlocatorRobustSettings) -> VlocatorRobust {
-        use crate::figures::Figure as _;
-        let input = crate::charts::SceneSource::BuiltIn("vlocator-robust".into())
-            .load(&[])
-            .unwrap()
-            .input();
-        s.validate(&input).unwrap();
-        let data = s.compute(&input, &crate::figures::models::Live).unwrap();
-        VlocatorRobust::new(data, "test")
-    }
-
-    /// The robust chart wanted a centre and a width (0.175 +- 0.075) where the engineer has a
-    /// friction range, 0.1 to 0.25; it drew the answer on 0 to 180 deg (for the 25 mm shaft
-    /// under 20 N sideways, a window of a few pixels), did not mark the range and did not say
-    /// that no V works over it. `mu = "0.1:0.25"` is taken as written: the range's box is
-    /// exactly (0.1, 0.25) and its design `vlocator`'s over that box (no window: mu_hi P > W,
-    /// `robust` docs), the range is a line at its width, the chart says "no V works" there with
-    /// the reason, and the angle axis spans the angles drawn, not 0 to 180 deg.
-    #[test]
-    fn a_friction_range_is_charted_as_written_and_says_no_v_works() {
-        let s = settings(scene_text("vlocator-robust-range").unwrap());
-        assert_eq!(s.mu, Some(Interval { lo: 0.1, hi: 0.25 }));
-        let c = chart(&s);
-        let g = c.data.given.as_ref().expect("the range given");
-        let w = c.data.widths[g.index];
-        assert_eq!((g.mu_lo, g.mu_hi, w), (0.1, 0.25, 0.25 - 0.1));
-        let b = RobustBox::both_flanks(&s.locator, (0.1, 0.25), (20.0, 20.0), (0.0, 0.0));
-        assert_eq!(s.box_of(w), b);
-        let d = robust_design(&s.locator, &b);
-        assert_eq!(c.data.designs[g.index], d);
-        // Free V, sideways centre load: the window is empty when mu_hi P > W (0.25 * 20 > 3.92).
-        assert!(
-            0.25 * 20.0 > s.locator.weight_n() && d.windows.is_empty(),
-            "{d:?}"
-        );
-        let fig = c.figure();
-        let p = &fig.panels[0];
-        let range = p
-            .curves
-            .iter()
-            .find(|c| c.label.starts_with("your range, μ 0.1 to 0.25"));
-        assert_eq!(range.map(|c| c.points[0].0), Some(w), "{:?}", p.curves);
-        let texts: Vec<&str> = p.marks.iter().map(|m| m.text.as_str()).collect();
-        assert!(texts.contains(&"μ 0.1 to 0.25: no V works"), "{texts:?}");
-        let why = fig
-            .notes
-            .iter()
-            .find(|n| n.starts_with("No V works for μ 0.1 to 0.25"));
-        let why = why.unwrap_or_else(|| panic!("{:?}", fig.notes));
-        assert!(
-            why.contains("28.07°") && why.contains("rolls out over the right flank"),
-            "{why}"
-        );
-        // Every angle drawn lies on the axis, and the axis is no wider than they need plus
-        // 10 deg of room at each end.
-        let angles: Vec<f64> = c.data.designs.iter().map(|d| d.lock_bound_deg).collect();
-        let (lo, hi) = angles
-            .iter()
-            .fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(*v), b.max(*v)));
-        assert!(p.y.min <= lo && hi <= p.y.max, "{:?} for {lo}..{hi}", p.y);
-        assert!(
-            p.y.max - p.y.min <= hi - lo + 20.0,
-            "{:?} for {lo}..{hi}",
-            p.y
-        );
-    }
-
-    /// Where a window exists over the range given, the chart reads it off: the window of a
-    /// free symmetric V under a sideways centre load P is [2 atan mu_hi, 2 atan(W / P)] and its
-    /// most robust angle 2 atan sqrt(mu_hi W / P) (`robust` docs), for mu 0.1 to 0.25, 1 kg,
-    /// 20 N.
-    #[test]
-    fn the_range_given_is_read_off_as_the_closed_form() {
-        let text = scene_text("vlocator-robust-range")
-            .unwrap()
-            .replace("mass_kg = 0.4", "mass_kg = 1.0");
-        let s = settings(&text);
-        let c = chart(&s);
-        let w = s.locator.weight_n();
-        let deg = |x: f64| 2.0 * x.atan().to_degrees();
-        let (lo, hi, robust) = (deg(0.25), deg(w / 20.0), deg((0.25 * w / 20.0).sqrt()));
-        let fig = c.figure();
-        let marks = &fig.panels[0].marks;
-        let want = format!("μ 0.1 to 0.25: γ from {lo:.2}° to {hi:.2}° works");
-        assert_eq!(marks[0].text, want);
-        assert!(
-            (marks[1].at.1 - robust).abs() < 1e-6,
-            "{marks:?} against {robust}"
-        );
-        assert!(
-            marks[1].guides
-                && marks[1]
-                    .text
-                    .starts_with(&format!("most robust {robust:.2}°"))
-        );
-    }
-
-    /// The older form, a centre and the widest width, still draws the same windows; giving
-    /// both forms is refused naming the key.
-    #[test]
-    fn a_centre_and_a_width_draw_the_same_windows_as_the_range() {
-        let text = scene_text("vlocator-robust-range").unwrap();
-        let new = settings(text);
-        let old = settings(&text.replace(
-            "mu = \"0.1:0.25\"",
-            "mu_center = 0.175\nwidth_max = 0.3\ncount = 51",
-        ));
-        let (a, b) = (chart(&new), chart(&old));
-        for (w, d) in b.data.widths.iter().zip(&b.data.designs) {
-            let i = a
-                .data
-                .widths
-                .iter()
-                .position(|v| (v - w).abs() < 1e-12)
-                .unwrap();
-            let lock = (a.data.designs[i].lock_bound_deg - d.lock_bound_deg).abs();
-            assert!(lock < 1e-9, "{w}: {lock}");
-            assert_eq!(a.data.designs[i].windows.len(), d.windows.len(), "{w}");
-        }
-        let mut both = new.clone();
-        both.mu_center = Some(0.175);
-        let input = crate::charts::SceneSource::BuiltIn("vlocator-robust".into())
-            .load(&[])
-            .unwrap()
-            .input();
-        use crate::figures::Figure as _;
-        let e = both.validate(&input).unwrap_err().to_string();
-        assert!(
-            e.contains("chart.mu_center") && e.contains("give the friction range once"),
-            "{e}"
-        );
     }
 
     /// The built-in scene's window against the closed form of a free symmetric V under centre
@@ -572,10 +209,11 @@ mod tests {
         let s = built_in();
         let w = s.locator.weight_n();
         let (sn, cs) = 10.0_f64.to_radians().sin_cos();
-        let x_top = (w / s.load_n.hi - sn) / cs;
+        let x_top = (w / s.load_n[1] - sn) / cs;
         let top = 2.0 * x_top.atan().to_degrees();
         let mut worst: f64 = 0.0;
-        for width in s.widths() {
+        for k in 0..s.count {
+            let width = s.width_max * k as f64 / (s.count - 1) as f64;
             let b = s.box_of(width);
             let d = robust_design(&s.locator, &b);
             let lock = 2.0 * b.mu_left.1.atan().to_degrees();

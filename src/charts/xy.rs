@@ -55,12 +55,6 @@ pub enum LabelSide {
         /// Above the guide (true) or below it (false).
         above: bool,
     },
-    /// Beside the point, level with it, and no dot: a label of the line the point lies on
-    /// (e.g. a vertical line's verdict near its top).
-    OnLine {
-        /// Right of the point (true) or left of it (false).
-        right: bool,
-    },
 }
 
 impl LabelSide {
@@ -69,8 +63,6 @@ impl LabelSide {
         match self {
             LabelSide::GuideStart { above: true } => ((8, -4), Pos::new(HPos::Left, VPos::Bottom)),
             LabelSide::GuideStart { above: false } => ((8, 5), Pos::new(HPos::Left, VPos::Top)),
-            LabelSide::OnLine { right: true } => ((12, 0), Pos::new(HPos::Left, VPos::Center)),
-            LabelSide::OnLine { right: false } => ((-12, 0), Pos::new(HPos::Right, VPos::Center)),
         }
     }
 }
@@ -189,15 +181,10 @@ impl Figure {
                     style::draw_line(area, &g, LineKind::Dotted, LineKind::Dotted.color())?;
                 }
                 let px = axes::pixel(&chart, x, y, mk.at.0, mk.at.1);
-                if !matches!(mk.side, LabelSide::OnLine { .. }) {
-                    style::draw_marker(root, Marker::Dot, px)?;
-                }
+                style::draw_marker(root, Marker::Dot, px)?;
                 let (off, anchor) = mk.side.place();
-                // The label sits at the start of the horizontal guide, or beside the point.
-                let from = match mk.side {
-                    LabelSide::GuideStart { .. } => axes::pixel(&chart, x, y, x.min, mk.at.1),
-                    LabelSide::OnLine { .. } => px,
-                };
+                // The label sits at the start of the horizontal guide.
+                let from = axes::pixel(&chart, x, y, x.min, mk.at.1);
                 let at = (from.0 + off.0, from.1 + off.1);
                 axes::boxed_text(root, &mk.text, at, anchor, style::NOTE_PX)?;
             }

@@ -74,15 +74,6 @@ pub(crate) trait Figure: Sized + DeserializeOwned + Serialize {
         true
     }
 
-    /// The parameters the chart is drawn with, for the gallery's table: its heading ("scene",
-    /// "V-block") and the values by their TOML keys. The palm scene's by default.
-    fn parameters(&self, input: &Input) -> (&'static str, toml::Table) {
-        (
-            "scene",
-            toml::Table::try_from(input.params).unwrap_or_default(),
-        )
-    }
-
     /// Whether the figure marks the scene's own value of its x axis' parameter (a read-off),
     /// so that setting it shows although the axis varies it. False by default.
     fn marks_scene_value(&self) -> bool {

@@ -146,23 +146,6 @@ impl Figure for UniversalSettings {
             .zip(&theta)
             .map(|(s, t)| (*s == JamStatus::Jams).then(|| cot_half(*t)))
             .collect();
-        // Where the scene's own part (its r and palm offset) would jam, on a long enough palm.
-        let x_jam_mm = statuses
-            .iter()
-            .zip(&theta)
-            .map(|(s, t)| (*s == JamStatus::Jams).then(|| p.disc_position_mm(t.to_radians())))
-            .collect();
-        // The status of the scene's own part on its own palm, as `solve` gives it: the field
-        // above is on a palm long enough for every jam, where a jam past this palm's end (left
-        // of the reach line) is `jams`, not `beyond_reach`.
-        let on_palm = GridRequest {
-            base: p,
-            quantities: vec![Quantity::Status],
-            ..self.request(&p)
-        };
-        let status_here = grid::evaluate(&on_palm, |q| models.jam_point(&model, q))?
-            .status
-            .unwrap_or_default();
         let (xa, ya) = (&self.x_axis, &self.y_axis);
         let b = ContourBuilder::new(g.x_values.len(), g.y_values.len(), true);
         let field = theta_field(&theta);
@@ -217,7 +200,7 @@ impl Figure for UniversalSettings {
         };
         let range = match self.range.is_empty() {
             true => None,
-            false => Some(Box::new(self.range_ends(&p, models)?)),
+            false => Some(self.range_ends(&p, models)?),
         };
         Ok(UniversalData {
             params: p,
@@ -238,15 +221,10 @@ impl Figure for UniversalSettings {
                 x: g.x_values,
                 push_ratio: g.y_values,
                 param: xa.param,
-                status: status_here.iter().map(|s| s.index()).collect(),
-                held: statuses
-                    .iter()
-                    .map(|s| matches!(s, JamStatus::JammedAtStart | JamStatus::TooWeak))
-                    .collect(),
+                status: statuses.iter().map(|s| s.index()).collect(),
                 theta_jam_deg: thetas,
                 theta_field: theta,
                 x_over_r,
-                x_jam_mm,
             },
         })
     }
@@ -355,7 +333,7 @@ pub struct UniversalData {
     pub read_off: Option<UniversalReadOff>,
     /// The box of the scene's ranges and its two extreme corners (with ranges).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub range: Option<Box<UniversalRange>>,
+    pub range: Option<UniversalRange>,
     /// The cells: status, theta_jam and x_jam / r.
     #[serde(serialize_with = "cells::summary_of")]
     pub cells: UniversalCells,
@@ -450,20 +428,15 @@ pub struct UniversalCells {
     pub x: Vec<f64>,
     /// The samples of F / (m g).
     pub push_ratio: Vec<f64>,
-    /// The status per cell of the scene's own part on its own palm (`solve`'s: a jam past
-    /// the palm's end is `beyond_reach`), as its index in [`JamStatus::ALL`].
+    /// The status per cell, as its index in [`JamStatus::ALL`].
     pub status: Vec<u8>,
-    /// Whether the disc is held at the start (or never moved: too weak), on any palm.
-    pub held: Vec<bool>,
     /// theta_jam in deg where the closed form gives one.
     pub theta_jam_deg: Vec<Option<f64>>,
     /// theta_jam as a field over the chart: the start angle where held at the start or too
     /// weak, 0 where it never jams, NaN outside the model.
     pub theta_field: Vec<f64>,
-    /// x_jam / r where it jams on a long enough palm (past this palm's end too).
+    /// x_jam / r where it jams.
     pub x_over_r: Vec<Option<f64>>,
-    /// x_jam in mm of the scene's part (its r and palm offset) where x_over_r is given.
-    pub x_jam_mm: Vec<Option<f64>>,
 }
 
 impl HasCells for UniversalCells {
@@ -483,64 +456,7 @@ impl HasCells for UniversalCells {
                 ),
                 ("theta_jam_deg", Column::Sparse(&self.theta_jam_deg)),
                 ("x_jam_over_r", Column::Sparse(&self.x_over_r)),
-                ("x_jam_mm", Column::Sparse(&self.x_jam_mm)),
             ],
         )
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::charts::{ChartSpec, SceneSource};
-    use crate::models::{ModelSpec, solve};
-
-    /// The universal chart's cells said `jams` where the scene's part jams past its palm's end
-    /// (the 25 mm shaft at mu 0.12: x/r 7.95 > L/r 6.40), where `solve` says beyond_reach, and
-    /// gave x/r but not x in mm although r is known. Every cell's status is now `solve`'s for
-    /// the scene's part at that friction and push, and its x_jam_mm is where that part jams:
-    /// `solve`'s x_jam on the palm, its past-palm x_jam beyond the palm's end.
-    #[test]
-    fn every_cell_has_the_status_solve_gives_and_x_jam_in_mm() {
-        let scene = SceneSource::BuiltIn("universal-range".into())
-            .load(&[])
-            .unwrap();
-        let ChartSpec::Universal(settings) = &scene.chart else {
-            panic!("a universal chart")
-        };
-        let data = settings
-            .compute(&scene.input(), &super::super::models::Live)
-            .unwrap();
-        let c = &data.cells;
-        let (mut beyond, mut worst) = (0, 0.0f64);
-        for (iy, &ratio) in c.push_ratio.iter().enumerate() {
-            for (ix, &mu) in c.x.iter().enumerate() {
-                let i = iy * c.x.len() + ix;
-                let q = GridParam::PushRatio.apply(c.param.apply(scene.params, mu), ratio);
-                let s = solve(&ModelSpec::Statics, &q).unwrap();
-                assert_eq!(
-                    JamStatus::NAMES[usize::from(c.status[i])],
-                    s.status.as_str(),
-                    "mu {mu}, F/(m g) {ratio}"
-                );
-                let want = match s.status {
-                    JamStatus::Jams => s.x_jam_mm,
-                    JamStatus::BeyondReach => {
-                        beyond += 1;
-                        crate::statics::solve(&q).past_palm.map(|p| p.x_jam_mm)
-                    }
-                    _ => None,
-                };
-                if let (Some(got), Some(want)) = (c.x_jam_mm[i], want) {
-                    worst = worst.max(((got - want) / want).abs());
-                }
-                assert_eq!(c.x_jam_mm[i].is_some(), want.is_some(), "mu {mu}, {ratio}");
-            }
-        }
-        eprintln!(
-            "{beyond} cells beyond the palm's reach; x_jam_mm worst relative error {worst:e}"
-        );
-        assert!(beyond > 1000, "{beyond}");
-        assert!(worst < 1e-9, "{worst:e}");
     }
 }

@@ -43,14 +43,6 @@ impl Figure for VlocatorCapacitySettings {
         false
     }
 
-    /// The V-block's own (its `locator` table).
-    fn parameters(&self, _input: &Input) -> (&'static str, toml::Table) {
-        (
-            "V-block",
-            toml::Table::try_from(self.locator).unwrap_or_default(),
-        )
-    }
-
     /// Checks the axes and levels (and the locator at the grid's corners).
     fn validate(&self, _input: &Input) -> Result<()> {
         if self.x_axis.param != LocatorParam::IncludedAngleDeg {

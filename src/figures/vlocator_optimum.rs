@@ -38,14 +38,6 @@ impl Figure for VlocatorOptimumSettings {
         false
     }
 
-    /// The V-block's own (its `locator` table).
-    fn parameters(&self, _input: &Input) -> (&'static str, toml::Table) {
-        (
-            "V-block",
-            toml::Table::try_from(self.locator).unwrap_or_default(),
-        )
-    }
-
     /// Checks the axes, the frictions and the load.
     fn validate(&self, _input: &Input) -> Result<()> {
         if self.direction_axis.param != LocatorParam::LoadAngleDeg {
