@@ -503,3 +503,62 @@ fn least_squares(
         Err(_) => false,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::minnorm::contact::{Contact, ContactProblem, Joint, Wrench};
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The KKT residual from the blocks has the dense product's largest magnitude for any
+        /// active set and any solution, signed zeros and exact zeros included.
+        #[test]
+        fn kkt_residual_from_blocks_matches_the_dense_product(
+            contacts in prop::collection::vec(
+                (0.0..std::f64::consts::TAU, -1.2..1.2_f64, prop_oneof![Just(0.0), 0.05..1.5_f64]),
+                1..=3,
+            ),
+            joint in any::<bool>(),
+            push in prop::option::of(1.0..100.0_f64),
+            sol in prop::collection::vec(prop_oneof![Just(0.0), Just(-0.0), -10.0..10.0_f64], 20),
+            mask in any::<u32>(),
+        ) {
+            let mut cs: Vec<Contact> = contacts
+                .iter()
+                .map(|&(phi, tilt, mu)| {
+                    let (ts, tc) = (phi + std::f64::consts::PI + tilt).sin_cos();
+                    Contact::planar([10.0 * phi.cos(), 10.0 * phi.sin()], [tc, ts], mu)
+                })
+                .collect();
+            if let Some(f) = push {
+                cs[0] = cs[0].with_normal_force(f);
+            }
+            let problem = ContactProblem {
+                space: Space::Planar,
+                contacts: cs,
+                joints: if joint { vec![Joint::Moment { axis: [0.0, 0.0, 1.0] }] } else { vec![] },
+                load: Wrench { force_n: [3.0, -20.0, 0.0], moment_nmm: [0.0, 0.0, 5.0] },
+            };
+            let low = problem.lower().expect("valid");
+            let sh = Shape::of(&low);
+            let mask = mask % (1 << sh.m_g);
+            let active: Vec<usize> = (0..sh.m_g).filter(|r| mask & (1 << r) != 0).collect();
+            let k = sh.n + sh.m_e + active.len();
+            let sol = &sol[..k];
+            let mut kkt = vec![f64::NAN; k * k];
+            fill_kkt(&low, sh, &active, &mut kkt, k);
+            let mut dense = vec![0.0; k];
+            mul_vec::<false>(&kkt, sol, &mut dense);
+            for (d, e) in dense[sh.n..sh.n + sh.m_e].iter_mut().zip(low.eq_rhs.iter()) {
+                *d -= e;
+            }
+            let mut blocks = vec![f64::NAN; k];
+            kkt_residual(&low, sh, &active, sol, &mut blocks);
+            prop_assert_eq!(amax(&blocks).to_bits(), amax(&dense).to_bits());
+            for (b, d) in blocks.iter().zip(&dense) {
+                prop_assert_eq!(b.abs().to_bits(), d.abs().to_bits());
+            }
+        }
+    }
+}
