@@ -14,16 +14,28 @@
 
 mod common;
 
-use jamchart::JamStatus;
-use jamchart::SceneParams;
-use jamchart::dynamics::{Drive, DynamicsParams, Method, simulate};
+use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Method};
+use jamchart::{Detail, JamStatus, ModelSpec, SceneParams};
 
 const TARGET: f64 = 1e-4;
 const RUNS: usize = 21;
 const LADDER: [f64; 9] = [1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8];
 
+/// One simulation through the model port: the dynamics' own answer (`Err` for invalid
+/// parameters; a scene outside the model has none and is not timed here).
+fn simulate(scene: &SceneParams, p: &DynamicsParams) -> jamchart::Result<DynamicsSolution> {
+    let spec = ModelSpec::Dynamics {
+        params: *p,
+        series_dt_s: None,
+    };
+    match jamchart::solve(&spec, scene)?.detail {
+        Detail::Dynamics(s) => Ok(*s),
+        other => panic!("the simulation did not run: {other:?}"),
+    }
+}
+
 fn x_jam(scene: &SceneParams, p: &DynamicsParams) -> Option<f64> {
-    let s = simulate(scene, p, None).ok()?;
+    let s = simulate(scene, p).ok()?;
     (s.status == JamStatus::Jams)
         .then_some(s.x_jam_mm)
         .flatten()
@@ -31,7 +43,7 @@ fn x_jam(scene: &SceneParams, p: &DynamicsParams) -> Option<f64> {
 
 fn median_ms(scene: &SceneParams, p: &DynamicsParams) -> f64 {
     1e3 * common::median_s(RUNS, || {
-        std::hint::black_box(simulate(scene, p, None).ok());
+        std::hint::black_box(simulate(scene, p).ok());
     })
 }
 
@@ -203,10 +215,11 @@ fn nonsmooth() {
                 },
                 ..Default::default()
             };
-            let s = simulate(&scene, &p, None).expect("valid");
+            let s = simulate(&scene, &p).expect("valid");
             let reference = match drive {
                 Drive::Motion => scene.radius_mm / mu,
-                Drive::Force => jamchart::statics::solve(&scene)
+                Drive::Force => jamchart::solve(&ModelSpec::Statics, &scene)
+                    .expect("valid")
                     .x_jam_mm
                     .unwrap_or(f64::NAN),
             };

@@ -9,14 +9,16 @@ use std::time::Instant;
 
 use common::median;
 use jamchart::SceneParams;
-use jamchart::grid::{self, GridAxis, GridParam, GridRequest, Quantity, statics_point};
+use jamchart::bench_support::{
+    GridAxis, GridParam, GridRequest, Quantity, evaluate, statics_point,
+};
 
 fn measure(req: &GridRequest, runs: usize) -> f64 {
     let cells = (req.x.count * req.y.count) as f64;
     let rates = (0..runs)
         .map(|_| {
             let t0 = Instant::now();
-            let g = grid::evaluate(req, statics_point).expect("valid grid");
+            let g = evaluate(req, statics_point).expect("valid grid");
             let dt = t0.elapsed().as_secs_f64();
             std::hint::black_box(g);
             cells / dt
@@ -46,7 +48,7 @@ fn main() {
     for n in [4001, 1001] {
         let req = request(n);
         // One warm-up run to start the pool and settle the allocator.
-        let _ = grid::evaluate(&req, statics_point);
+        let _ = evaluate(&req, statics_point);
         let all = measure(&req, 9);
         let one = pool.install(|| measure(&req, 9));
         println!(

@@ -27,7 +27,9 @@ mod baseline;
 mod common;
 
 use common::{median, median_s};
-use jamchart::grid::{Grid, GridAxis, LocatorParam, capacity_map};
+use jamchart::bench_support::{
+    Grid, GridAxis, LocatorParam, capacity_clarabel, capacity_map, closed_form_applies,
+};
 use jamchart::locator::{self, LocatorParams};
 
 fn map(rotation: locator::Rotation) -> Grid<LocatorParams> {
@@ -153,7 +155,7 @@ fn main() {
                 .step_by(100)
                 .map(|p| {
                     median_s(3, || {
-                        std::hint::black_box(locator::capacity_clarabel(p));
+                        std::hint::black_box(capacity_clarabel(p));
                     })
                 })
                 .collect(),
@@ -170,7 +172,7 @@ fn main() {
             per_cell * 4e4,
             per_cell * 4e4 / single,
         );
-        let path = match locator::closed_form_applies(&g.base) {
+        let path = match closed_form_applies(&g.base) {
             true => "closed form",
             false => "exact path (closed form does not apply)",
         };

@@ -26,8 +26,8 @@
 mod common;
 
 use common::median_s;
+use jamchart::bench_support::{Grid, GridAxis, GridParam};
 use jamchart::dynamics::{Drive, DynamicsParams, Method};
-use jamchart::grid::{Grid, GridAxis, GridParam};
 use jamchart::minnorm::MinNormSettings;
 use jamchart::models::Detail;
 use jamchart::{JamStatus, ModelSpec, SceneParams};

@@ -6,19 +6,20 @@
 
 mod common;
 
-use jamchart::SceneParams;
-use jamchart::minnorm::{
-    Formulation, HoldStatus, MinNormSettings, QpSettings, palm, palm_problem, solve,
-};
-use jamchart::paper::TABLE1;
+use jamchart::bench_support::{ContactProblem, palm_problem, solve_program as solve};
+use jamchart::minnorm::{Formulation, HoldStatus, MinNormSettings, QpSettings};
+use jamchart::{ModelSpec, SceneParams};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::TestRunner;
 use rayon::prelude::*;
 
-#[path = "../tests/common/random_planar.rs"]
+#[path = "../src/minnorm/random_planar.rs"]
 mod random_planar;
 
 const RUNS: usize = 7;
+
+/// The frictions of the paper's Table 1, top to bottom (tests/golden/table1.csv).
+const TABLE1_MU: [f64; 7] = [0.45, 0.40, 0.35, 0.30, 0.25, 0.20, 0.15];
 
 /// Median seconds of `f` over RUNS runs.
 fn time(f: impl FnMut()) -> f64 {
@@ -26,7 +27,7 @@ fn time(f: impl FnMut()) -> f64 {
 }
 
 /// Palm problems at angles across 5..90 deg for mu in 0.15..0.45: what a grid of cells asks.
-fn palm_batch(n: usize, formulation: Formulation) -> Vec<jamchart::minnorm::ContactProblem> {
+fn palm_batch(n: usize, formulation: Formulation) -> Vec<ContactProblem> {
     (0..n)
         .map(|i| {
             let u = i as f64 / n as f64;
@@ -37,11 +38,7 @@ fn palm_batch(n: usize, formulation: Formulation) -> Vec<jamchart::minnorm::Cont
         .collect()
 }
 
-fn solves_per_second(
-    batch: &[jamchart::minnorm::ContactProblem],
-    qp: &QpSettings,
-    threads: usize,
-) -> f64 {
+fn solves_per_second(batch: &[ContactProblem], qp: &QpSettings, threads: usize) -> f64 {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -85,19 +82,19 @@ fn main() {
     }
 
     for (name, qp) in [("exact path", exact), ("clarabel", clarabel)] {
-        let settings = MinNormSettings {
+        let spec = ModelSpec::MinNorm(MinNormSettings {
             qp,
             ..Default::default()
-        };
+        });
         let mut solves = 0;
         let secs = time(|| {
-            solves = TABLE1
+            solves = TABLE1_MU
                 .iter()
-                .map(|row| {
-                    let s = palm::solve(&SceneParams::default().with_mu(row.mu), &settings);
-                    s.expect("valid").solves
+                .map(|&mu| {
+                    let s = jamchart::solve(&spec, &SceneParams::default().with_mu(mu));
+                    s.expect("valid").work().0
                 })
-                .sum::<u32>();
+                .sum::<u64>();
         });
         println!(
             "  Table 1 (7 rows) by min-norm, {name:<10}: {:.3} ms, {solves} solves",

@@ -12,15 +12,16 @@
 //! `--mu 0.12:0.3` against `--mu 0.21` as whole processes, interleaved.
 
 mod common;
-#[path = "../tests/common/shaft.rs"]
+#[path = "../src/uncertain/shaft.rs"]
 mod shaft;
 
 use common::{median, median_cpu_s, median_s, time_process};
+use jamchart::ModelSpec;
+use jamchart::bench_support::range_corners;
 use jamchart::dynamics::{DynamicsParams, IntegratorSettings, Method, Verification};
 use jamchart::uncertain::dist::{self, DistQuestion};
 use jamchart::uncertain::range;
 use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
-use jamchart::{ModelSpec, statics};
 
 fn mu(value: Uncertain) -> UncertainSet {
     UncertainSet {
@@ -38,7 +39,9 @@ fn main() {
     let reps = 10_000;
     let point = median_s(15, || {
         for _ in 0..reps {
-            std::hint::black_box(statics::solve(std::hint::black_box(&p)));
+            std::hint::black_box(
+                jamchart::solve(&ModelSpec::Statics, std::hint::black_box(&p)).unwrap(),
+            );
         }
     }) / reps as f64;
     let whole = median_s(15, || {
@@ -48,7 +51,7 @@ fn main() {
     }) / reps as f64;
     let corners = median_s(15, || {
         for _ in 0..reps {
-            std::hint::black_box(range::ends(std::hint::black_box(&p), &box_mu).unwrap());
+            std::hint::black_box(range_corners(std::hint::black_box(&p), &box_mu).unwrap());
         }
     }) / reps as f64;
     // A point answer's cost depends on its status: past the palm `solve` also finds the friction
@@ -58,7 +61,9 @@ fn main() {
         let q = p.with_mu(m);
         median_s(15, || {
             for _ in 0..reps {
-                std::hint::black_box(statics::solve(std::hint::black_box(&q)));
+                std::hint::black_box(
+                    jamchart::solve(&ModelSpec::Statics, std::hint::black_box(&q)).unwrap(),
+                );
             }
         }) / reps as f64
     };

@@ -35,9 +35,10 @@ pub fn plain(v: f64) -> String {
 /// long CSV has 10^5 to 10^6 numbers. No crate does fixed significant digits without an
 /// exponent: `ryu` and `dtoa` write the shortest round-trip digits only, and `lexical`'s
 /// digit limit rounds those shortest digits a second time. So: scale by 10^N (exact for
-/// N <= 22), round to an integer and write it with `itoa`; when the scaled value lies within
-/// 1e-6 of a rounding tie (the scaling's error is below 2e-8) or out of that range, fall back
-/// to std. A property test checks the two agree byte for byte.
+/// N <= 22) and round to an integer ([`Rounded`]), whose eight digits are placed around the
+/// point by word operations; when the scaled value lies within 1e-6 of a rounding tie (the
+/// scaling's error is below 2e-8) or out of that range, fall back to std. A property test
+/// checks the two agree byte for byte.
 pub fn push_plain(out: &mut Vec<u8>, v: f64) {
     if !v.is_finite() {
         return;
@@ -46,8 +47,9 @@ pub fn push_plain(out: &mut Vec<u8>, v: f64) {
         out.push(b'0');
         return;
     }
-    if !push_fast(out, v) {
-        out.extend_from_slice(plain_std(v).as_bytes());
+    match Rounded::of(v) {
+        Some(r) => r.push(out),
+        None => out.extend_from_slice(plain_std(v).as_bytes()),
     }
 }
 
@@ -57,106 +59,181 @@ const POW10: [f64; 23] = [
     1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
 ];
 
-/// Exact negative powers of ten as f64, nearest: 10^-1 to 10^-22.
-const POW10_NEG: [f64; 22] = [
-    1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15,
-    1e-16, 1e-17, 1e-18, 1e-19, 1e-20, 1e-21, 1e-22,
+/// Powers of ten as f64 from 10^-22 to 10^22: `TENS[22 + k]` is 10^k, exact for k >= 0 and
+/// the nearest f64 below.
+const TENS: [f64; 45] = [
+    1e-22, 1e-21, 1e-20, 1e-19, 1e-18, 1e-17, 1e-16, 1e-15, 1e-14, 1e-13, 1e-12, 1e-11, 1e-10,
+    1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7,
+    1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
 ];
 
-/// [`decimals`] by comparing with the powers of ten instead of `log10` (a sixth of a map's
-/// CSV cost, callgrind of `render fig3`); None outside 1e-22..1e22.
+/// [`decimals`] by comparing with a power of ten instead of `log10` (a sixth of a map's CSV
+/// cost, callgrind of `render fig3`); None outside 1e-22..1e22.
 ///
-/// The two can differ only for `a` within an ulp or so of a power of ten, where `log10`
-/// rounds onto the integer; such an `a` rounds to that power at 7 significant digits and
-/// at 8, so the digits written are the same (`fast_digits_are_std_digits` checks values
-/// next to every power of ten against std with `log10`).
-///
-/// The search starts at the decimal magnitude of `a`'s binary exponent (floor(e log10 2),
-/// one off at most) and steps to the table's answer, one or two compares where a scan from
-/// the table's end took up to 22.
+/// The decimal exponent k of `a` (`TENS`'s last entry <= a) is m or m + 1, where m =
+/// floor(e log10 2) for `a`'s binary exponent e (a is in [2^e, 2^(e+1)), whose decimal
+/// logarithms lie within log10 2 < 1 of each other): one compare with 10^(m+1) tells which.
+/// (`1233 / 4096` is log10 2 to 5e-6, exact in the floor for |e| < 681, far beyond the
+/// table.) The two can differ from `log10` only for `a` within an ulp or so of a power of ten,
+/// where `log10` rounds onto the integer; such an `a` rounds to that power at 7 significant
+/// digits and at 8, so the digits written are the same (`fast_digits_are_std_digits` checks
+/// values next to every power of ten against std with `log10`).
 fn decimals_by_table(a: f64) -> Option<usize> {
-    // floor(e log10 2) for the binary exponent e: 1233 / 4096 is log10 2 to 5e-6.
     let exponent = ((a.to_bits() >> 52) & 0x7ff) as i64 - 1023;
-    let magnitude = (exponent * 1233) >> 12;
-    if a >= 1.0 {
-        // How many of POW10 are <= a.
-        let mut above = (magnitude + 1).clamp(0, POW10.len() as i64) as usize;
-        while above < POW10.len() && POW10[above] <= a {
-            above += 1;
+    let m = (exponent * 1233) >> 12;
+    // 10^(m+1) is TENS[m + 23]; outside -23..=21 a lies outside the table's range.
+    let next = TENS.get(usize::try_from(m + 23).ok()?)?;
+    let k = m + i64::from(a >= *next);
+    (-22..22)
+        .contains(&k)
+        .then(|| (SIGNIFICANT_DIGITS as i64 - 1 - k).max(0) as usize)
+}
+
+/// Room a short number takes in a row ([`Rounded::write_short`] writes at most 25 bytes).
+const SHORT_NUMBER: usize = 32;
+
+/// `|v|` rounded to `decimals` decimals as std rounds it: `q / 10^decimals`, `q` >= 1.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Rounded {
+    /// The digits as an integer.
+    q: u64,
+    /// Where the decimal point goes: 0 to 22.
+    decimals: usize,
+    /// The sign of v.
+    negative: bool,
+}
+
+impl Rounded {
+    /// `v` (finite, not 0) by scaled integer rounding; None where it could differ from std's
+    /// exact rounding.
+    ///
+    /// Below 2^53 the scaled value's floor is its conversion to an integer and its fraction the
+    /// exact difference, so no libm `floor` or `round`.
+    #[inline(always)]
+    fn of(v: f64) -> Option<Rounded> {
+        let a = v.abs();
+        let decimals = decimals_by_table(a).unwrap_or_else(|| decimals(a));
+        let scale = *POW10.get(decimals)?;
+        let scaled = a * scale;
+        let negative = v < 0.0;
+        // 2^53: above it an f64 has no fraction, and u64 holds the integer.
+        if scaled >= 9_007_199_254_740_992.0 {
+            return (decimals == 0 && a < 1.8e19).then_some(Rounded {
+                q: a as u64,
+                decimals,
+                negative,
+            });
         }
-        while above > 0 && POW10[above - 1] > a {
-            above -= 1;
+        // Through i64, one instruction each way where u64 takes a dozen: scaled < 2^53.
+        let floor = scaled as i64;
+        let fraction = scaled - floor as f64;
+        if (fraction - 0.5).abs() < 1e-6 {
+            return None;
         }
-        (above < POW10.len()).then(|| (SIGNIFICANT_DIGITS as usize).saturating_sub(above))
-    } else {
-        // How many of POW10_NEG (falling) are > a: the leading run of them.
-        let mut below_one = (-magnitude - 1).clamp(0, POW10_NEG.len() as i64) as usize;
-        while below_one < POW10_NEG.len() && a < POW10_NEG[below_one] {
-            below_one += 1;
+        // Round half away from zero, as f64::round; no tie gets here.
+        let q = floor as u64 + u64::from(fraction > 0.5);
+        (q > 0).then_some(Rounded {
+            q,
+            decimals,
+            negative,
+        })
+    }
+
+    /// The value the digits spell: q and 10^decimals are exact f64, so their quotient is the
+    /// decimal correctly rounded, as parsing the text would give it.
+    fn value(self) -> f64 {
+        let v = self.q as f64 / POW10[self.decimals];
+        if self.negative { -v } else { v }
+    }
+
+    /// Appends the digits, the point placed and the fraction's trailing zeros dropped.
+    #[inline]
+    fn push(self, out: &mut Vec<u8>) {
+        let mut text = [0u8; SHORT_NUMBER];
+        match self.write_short(&mut text) {
+            Some(len) => out.extend_from_slice(&text[..len]),
+            None => self.push_long(out),
         }
-        while below_one > 0 && a >= POW10_NEG[below_one - 1] {
-            below_one -= 1;
+    }
+
+    /// [`Rounded::push`] into the front of `to` for q < 10^8 (every number of at most
+    /// [`SIGNIFICANT_DIGITS`] digits but the whole ones above 10^8), its length; None, nothing
+    /// written, for a larger q.
+    ///
+    /// The eight digits of q ([`eight_digits`]) are placed by word-sized copies and shifts,
+    /// their zeros counted by `leading_zeros` and `trailing_zeros` of the word: no loop and no
+    /// call. At most 25 bytes are written: a sign, `0.`, 14 zeros and 8 digits.
+    #[inline(always)]
+    fn write_short(self, to: &mut [u8; SHORT_NUMBER]) -> Option<usize> {
+        const ZEROS: u64 = u64::from_le_bytes([b'0'; 8]);
+        let q = u32::try_from(self.q).ok().filter(|&q| q < 100_000_000)?;
+        let digits = eight_digits(q);
+        let text = digits + ZEROS;
+        // Zero digits at the end and at the front of the eight (q >= 1, so not all of them).
+        let trailing = (digits.leading_zeros() / 8) as usize;
+        let leading = (digits.trailing_zeros() / 8) as usize;
+        to[0] = b'-';
+        let mut at = usize::from(self.negative);
+        let d = self.decimals;
+        if d >= 8 {
+            // 0.(d - 8 zeros)(the eight digits): at most 14 zeros, as d <= 22.
+            to[at..at + 2].copy_from_slice(b"0.");
+            to[at + 2..at + 18].copy_from_slice(&[b'0'; 16]);
+            at += 2 + (d - 8);
+            to[at..at + 8].copy_from_slice(&text.to_le_bytes());
+            at += 8 - trailing;
+        } else {
+            let int_len = 8 - d;
+            // The integer part without its leading zeros, but one.
+            let skip = leading.min(int_len - 1);
+            to[at..at + 8].copy_from_slice(&(text >> (8 * skip)).to_le_bytes());
+            at += int_len - skip;
+            let fraction = d.saturating_sub(trailing);
+            if fraction > 0 {
+                to[at] = b'.';
+                to[at + 1..at + 9].copy_from_slice(&(text >> (8 * int_len)).to_le_bytes());
+                at += 1 + fraction;
+            }
         }
-        (below_one < POW10_NEG.len()).then_some(SIGNIFICANT_DIGITS as usize + below_one)
+        Some(at)
+    }
+
+    /// [`Rounded::push`] for any q, by `itoa`.
+    fn push_long(self, out: &mut Vec<u8>) {
+        let (mut q, mut decimals) = (self.q, self.decimals);
+        while decimals > 0 && q % 10 == 0 {
+            q /= 10;
+            decimals -= 1;
+        }
+        if self.negative {
+            out.push(b'-');
+        }
+        let mut digits = itoa::Buffer::new();
+        let d = digits.format(q).as_bytes();
+        // Integer part, then the fraction padded with leading zeros.
+        match d.len().checked_sub(decimals) {
+            Some(0) | None => out.push(b'0'),
+            Some(int_len) => out.extend_from_slice(&d[..int_len]),
+        }
+        if decimals > 0 {
+            out.push(b'.');
+            out.extend(std::iter::repeat_n(b'0', decimals.saturating_sub(d.len())));
+            out.extend_from_slice(&d[d.len().saturating_sub(decimals)..]);
+        }
     }
 }
 
-/// [`push_plain`] by scaled integer rounding; false (nothing written) where it could differ
-/// from std's exact rounding.
-///
-/// Below 2^53 the scaled value's floor is its conversion to an integer and its fraction the
-/// exact difference, so no libm `floor` or `round`; trailing zeros of the fraction are
-/// divided off the integer before its digits are written.
-fn push_fast(out: &mut Vec<u8>, v: f64) -> bool {
-    let a = v.abs();
-    let decimals = decimals_by_table(a).unwrap_or_else(|| decimals(a));
-    let Some(&scale) = POW10.get(decimals) else {
-        return false;
-    };
-    let scaled = a * scale;
-    // 2^53: above it an f64 has no fraction, and u64 holds the integer.
-    if scaled >= 9_007_199_254_740_992.0 {
-        if decimals > 0 || a >= 1.8e19 {
-            return false;
-        }
-        if v < 0.0 {
-            out.push(b'-');
-        }
-        out.extend_from_slice(itoa::Buffer::new().format(a as u64).as_bytes());
-        return true;
-    }
-    let floor = scaled as u64;
-    let fraction = scaled - floor as f64;
-    if (fraction - 0.5).abs() < 1e-6 {
-        return false;
-    }
-    // Round half away from zero, as f64::round; no tie gets here.
-    let mut q = floor + u64::from(fraction > 0.5);
-    if q == 0 {
-        out.push(b'0');
-        return true;
-    }
-    let mut decimals = decimals;
-    while decimals > 0 && q % 10 == 0 {
-        q /= 10;
-        decimals -= 1;
-    }
-    if v < 0.0 {
-        out.push(b'-');
-    }
-    let mut digits = itoa::Buffer::new();
-    let d = digits.format(q).as_bytes();
-    // Integer part, then the fraction padded with leading zeros.
-    match d.len().checked_sub(decimals) {
-        Some(0) | None => out.push(b'0'),
-        Some(int_len) => out.extend_from_slice(&d[..int_len]),
-    }
-    if decimals > 0 {
-        out.push(b'.');
-        out.extend(std::iter::repeat_n(b'0', decimals.saturating_sub(d.len())));
-        out.extend_from_slice(&d[d.len().saturating_sub(decimals)..]);
-    }
-    true
+/// The eight decimal digits of `q` (< 10^8, zero-padded) as the bytes of a u64, the first digit
+/// in the lowest byte (so `to_le_bytes` reads them in order), each 0 to 9: two halves of four
+/// digits, then pairs, then digits, each split done in all lanes at once by a multiply and a
+/// shift (x / 100 = x * 10486 >> 20 for x < 10^4, x / 10 = x * 103 >> 10 for x < 100).
+#[inline]
+fn eight_digits(q: u32) -> u64 {
+    let halves = u64::from(q / 10_000) | u64::from(q % 10_000) << 32;
+    let hundreds = ((halves * 10_486) >> 20) & 0x0000_007f_0000_007f;
+    let pairs = hundreds | (halves - 100 * hundreds) << 16;
+    let tens = ((pairs * 103) >> 10) & 0x000f_000f_000f_000f;
+    tens | (pairs - 10 * tens) << 8
 }
 
 /// Decimals that leave [`SIGNIFICANT_DIGITS`] significant digits of `a` (> 0).
@@ -257,44 +334,110 @@ impl Prepared<'_> {
         }
     }
 
-    fn push(&self, out: &mut Vec<u8>, i: usize) {
+    /// Cell `i`'s field.
+    #[inline(always)]
+    fn write(&self, rows: &mut Rows, i: usize) {
         match self {
-            Prepared::Dense(v) => push_plain(out, v[i]),
-            Prepared::Sparse(v) => v[i].into_iter().for_each(|x| push_plain(out, x)),
-            Prepared::Words { quoted, of } => quoted[usize::from(of[i])].push(out),
+            Prepared::Dense(v) => rows.number(v[i]),
+            Prepared::Sparse(v) => v[i].into_iter().for_each(|x| rows.number(x)),
+            Prepared::Words { quoted, of } => rows.field(&quoted[usize::from(of[i])]),
+        }
+    }
+
+    /// The most bytes a field of this column takes.
+    fn longest(&self) -> usize {
+        match self {
+            Prepared::Dense(_) | Prepared::Sparse(_) => PLAIN_MAX_BYTES,
+            Prepared::Words { quoted, .. } => quoted.iter().map(Field::len).max().unwrap_or(0),
         }
     }
 }
 
 /// Bytes written once per map and copied into many rows (an axis value, a word).
 ///
-/// Copied by a fixed [`Field::SHORT`]-byte copy, which the compiler inlines, then cut back to
-/// its length: a call to memcpy per field of a few bytes was a tenth of a map's CSV.
+/// Copied by a fixed [`Field::SHORT`]-byte copy of its head, which the compiler inlines, then
+/// cut back to its length: a call to memcpy per field of a few bytes was a tenth of a map's
+/// CSV.
 struct Field {
-    /// The bytes, padded with zeros to at least SHORT.
-    padded: Vec<u8>,
-    /// How many of them are the field.
-    len: usize,
+    /// The first SHORT bytes, padded with zeros.
+    head: [u8; Field::SHORT],
+    /// All the bytes: copied after the head where there are more than SHORT.
+    bytes: Vec<u8>,
 }
 
 impl Field {
-    /// Fields up to this long take the fixed copy.
+    /// Fields up to this long take the fixed copy alone.
     const SHORT: usize = 32;
 
-    fn new(mut bytes: Vec<u8>) -> Self {
-        let len = bytes.len();
-        bytes.resize(len.max(Self::SHORT), 0);
-        Field { padded: bytes, len }
+    fn new(bytes: Vec<u8>) -> Self {
+        let mut head = [0; Self::SHORT];
+        let n = bytes.len().min(Self::SHORT);
+        head[..n].copy_from_slice(&bytes[..n]);
+        Field { head, bytes }
     }
 
-    #[inline]
-    fn push(&self, out: &mut Vec<u8>) {
-        if self.len <= Self::SHORT {
-            out.extend_from_slice(&self.padded[..Self::SHORT]);
-            out.truncate(out.len() - (Self::SHORT - self.len));
-        } else {
-            out.extend_from_slice(&self.padded[..self.len]);
+    fn len(&self) -> usize {
+        self.bytes.len()
+    }
+}
+
+/// The longest [`plain`] text: `-0.` and 330 decimals, of -5e-324 (a number's decimals are
+/// 6 less its decimal exponent, which is -324 at least; the largest f64 has 309 digits).
+const PLAIN_MAX_BYTES: usize = 333;
+
+/// Rows as they are made, in a buffer of fixed length that goes to the writer whenever
+/// [`ROWS_BUFFER_BYTES`] are in it: past that it has room for the longest row and then for a
+/// fixed-length copy ([`Field::SHORT`], [`SHORT_NUMBER`]) at its end, so a field is written
+/// by a copy of fixed length and one bounds check, with no capacity check and no call.
+struct Rows {
+    bytes: Vec<u8>,
+    /// How many of them are rows.
+    at: usize,
+}
+
+impl Rows {
+    fn new(longest_row: usize) -> Self {
+        let room = ROWS_BUFFER_BYTES + longest_row + Field::SHORT.max(SHORT_NUMBER);
+        Rows {
+            bytes: vec![0; room],
+            at: 0,
         }
+    }
+
+    #[inline(always)]
+    fn byte(&mut self, b: u8) {
+        self.bytes[self.at] = b;
+        self.at += 1;
+    }
+
+    #[inline(always)]
+    fn field(&mut self, f: &Field) {
+        let to =
+            (self.bytes[self.at..].first_chunk_mut::<{ Field::SHORT }>()).expect("room for a row");
+        *to = f.head;
+        if f.len() > Field::SHORT {
+            self.bytes[self.at..self.at + f.len()].copy_from_slice(&f.bytes);
+        }
+        self.at += f.len();
+    }
+
+    /// [`push_plain`]`(v)`.
+    #[inline(always)]
+    fn number(&mut self, v: f64) {
+        if v.is_finite() && v != 0.0 {
+            if let Some(r) = Rounded::of(v) {
+                let to = (self.bytes[self.at..].first_chunk_mut::<SHORT_NUMBER>())
+                    .expect("room for a row");
+                if let Some(len) = r.write_short(to) {
+                    self.at += len;
+                    return;
+                }
+            }
+        }
+        let mut text = Vec::new();
+        push_plain(&mut text, v);
+        self.bytes[self.at..self.at + text.len()].copy_from_slice(&text);
+        self.at += text.len();
     }
 }
 
@@ -339,25 +482,28 @@ pub fn write_grid_cells<W: std::io::Write>(
         .has_headers(false)
         .from_writer(Vec::new());
     head.write_record(header)?;
-    let mut buf = head.into_inner().map_err(|e| e.into_error())?;
-    buf.reserve(ROWS_BUFFER_BYTES + 256);
+    out.write_all(&head.into_inner().map_err(|e| e.into_error())?)?;
+    let longest = |fields: &[Field]| fields.iter().map(Field::len).max().unwrap_or(0);
+    let longest_row =
+        longest(&xs) + longest(&ys) + columns.iter().map(|c| 1 + c.longest()).sum::<usize>() + 1;
+    let mut rows = Rows::new(longest_row);
     for (iy, y) in ys.iter().enumerate() {
         for (ix, x) in xs.iter().enumerate() {
             let i = iy * xs.len() + ix;
-            x.push(&mut buf);
-            y.push(&mut buf);
+            rows.field(x);
+            rows.field(y);
             for c in &columns {
-                buf.push(b',');
-                c.push(&mut buf, i);
+                rows.byte(b',');
+                c.write(&mut rows, i);
             }
-            buf.push(b'\n');
-            if buf.len() >= ROWS_BUFFER_BYTES {
-                out.write_all(&buf)?;
-                buf.clear();
+            rows.byte(b'\n');
+            if rows.at >= ROWS_BUFFER_BYTES {
+                out.write_all(&rows.bytes[..rows.at])?;
+                rows.at = 0;
             }
         }
     }
-    out.write_all(&buf)?;
+    out.write_all(&rows.bytes[..rows.at])?;
     out.flush()
 }
 
@@ -383,17 +529,25 @@ fn push_text(out: &mut Vec<u8>, word: &str) {
 
 /// A number for JSON with the digits of [`plain`]: rounded to [`SIGNIFICANT_DIGITS`], so that
 /// serde_json's shortest form prints `24.35455`, not `24.354551362801473`; null for NaN and
-/// infinities, `0` for `-0`.
+/// infinities, `0` for `-0`. The value is the text's without writing it: q / 10^N of the
+/// rounded digits q, both exact f64, is the decimal correctly rounded, as parsing gives it
+/// (`json_numbers_are_the_plain_text_parsed` checks).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Num(pub f64);
 
 impl Serialize for Num {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        match plain(self.0).parse::<f64>() {
-            // A plain decimal of 7 digits parses to the f64 whose shortest form it is.
-            Ok(v) if self.0.is_finite() => s.serialize_f64(v + 0.0),
-            _ => s.serialize_none(),
+        let v = self.0;
+        if !v.is_finite() {
+            return s.serialize_none();
         }
+        // The f64 the plain decimal parses to, whose shortest form it is: the rounded digits'
+        // own value, or where std rounds, the text parsed.
+        let rounded = match v == 0.0 {
+            true => 0.0,
+            false => Rounded::of(v).map_or_else(|| plain(v).parse().unwrap_or(v), Rounded::value),
+        };
+        s.serialize_f64(rounded + 0.0)
     }
 }
 
@@ -474,7 +628,7 @@ mod tests {
                 let v = m * 10f64.powi(e) * if neg { -1.0 } else { 1.0 };
                 check(v);
                 if (-15..=15).contains(&e) {
-                    slow.set(slow.get() + usize::from(!push_fast(&mut Vec::new(), v)));
+                    slow.set(slow.get() + usize::from(Rounded::of(v).is_none()));
                 }
                 check(v.round());
                 check(f64::from_bits(v.to_bits() + 1));
@@ -644,5 +798,80 @@ mod tests {
             .into();
         let doc = serde_json::to_string(&nums);
         assert_eq!(doc.unwrap(), "[24.35455,0.0,1e-9,null,40.0]");
+    }
+
+    /// [`Num`]'s value is the plain text parsed, bit for bit: over 40 decades, on and next to
+    /// rounding ties and powers of ten, and any f64.
+    #[test]
+    fn json_numbers_are_the_plain_text_parsed() {
+        use proptest::prelude::*;
+        let check = |v: f64| {
+            let want = match plain(v).parse::<f64>() {
+                Ok(p) => serde_json::to_string(&(p + 0.0)).unwrap(),
+                Err(_) => "null".to_string(),
+            };
+            assert_eq!(serde_json::to_string(&Num(v)).unwrap(), want, "{v:e}");
+        };
+        let mut runner = proptest::test_runner::TestRunner::new_with_rng(
+            proptest::test_runner::Config {
+                cases: 20_000,
+                ..Default::default()
+            },
+            proptest::test_runner::TestRng::deterministic_rng(Default::default()),
+        );
+        let values = (1.0f64..10.0, -25i32..25, any::<bool>(), any::<f64>());
+        runner
+            .run(&values, |(m, e, neg, any)| {
+                let v = m * 10f64.powi(e) * if neg { -1.0 } else { 1.0 };
+                for v in [v, v.round(), f64::from_bits(v.to_bits() + 1), any] {
+                    check(v);
+                }
+                Ok(())
+            })
+            .unwrap();
+        for k in -25..=25 {
+            let p = 10f64.powi(k);
+            for v in [p, f64::from_bits(p.to_bits() - 1), 0.5 * p, 2.5e-7 * p] {
+                check(v);
+                check(-v);
+            }
+        }
+    }
+
+    /// A row's room for a number holds the longest plain text there is.
+    #[test]
+    fn no_plain_number_is_longer_than_its_room() {
+        use proptest::prelude::*;
+        assert_eq!(plain(-5e-324).len(), PLAIN_MAX_BYTES);
+        for v in [f64::MIN, f64::MIN_POSITIVE, -1.2345678e-310, -9.999999e307] {
+            assert!(plain(v).len() <= PLAIN_MAX_BYTES, "{v:e}");
+        }
+        let mut runner = proptest::test_runner::TestRunner::new_with_rng(
+            proptest::test_runner::Config {
+                cases: 5_000,
+                ..Default::default()
+            },
+            proptest::test_runner::TestRng::deterministic_rng(Default::default()),
+        );
+        runner
+            .run(&any::<f64>(), |v| {
+                prop_assert!(plain(v).len() <= PLAIN_MAX_BYTES, "{v:e}");
+                Ok(())
+            })
+            .unwrap();
+    }
+
+    /// The eight digits of every q below 10^5 and of q spread up to 10^8 are std's.
+    #[test]
+    fn eight_digits_are_the_zero_padded_decimal() {
+        let check = |q: u32| {
+            let text = (eight_digits(q) + u64::from_le_bytes([b'0'; 8])).to_le_bytes();
+            assert_eq!(text, *format!("{q:08}").as_bytes(), "{q}");
+        };
+        (0..100_000).for_each(check);
+        (0..100_000_000).step_by(997).for_each(check);
+        [99_999_999, 10_000_000, 9_999_999, 10_000_001]
+            .into_iter()
+            .for_each(check);
     }
 }

@@ -188,7 +188,7 @@ fn theta_jam_common(p: &SceneParams, mu: f64) -> f64 {
 /// The least push that makes the disc of `p` jam at palm angle `theta` (rad) or beyond it (the
 /// disc reaches x(theta)): the module docs' closed form, refined to the least push whose
 /// closed-form jam angle is at most `theta`.
-pub fn least_push(p: &SceneParams, theta: f64) -> LeastPush {
+pub(crate) fn least_push(p: &SceneParams, theta: f64) -> LeastPush {
     let a = theta - p.alpha_ground() - p.alpha_palm();
     let least_moving_n = statics::least_push_n(p);
     if a <= 0.0 {

@@ -53,10 +53,12 @@
 //!
 //! ## One port for every model
 //!
-//! [`models`] is the single place a model is chosen and run: a [`models::ModelSpec`] (the model
-//! and its settings, chosen by data) goes into [`models::solve`], and one [`models::Solution`]
-//! comes out (status, theta_jam, x_jam, wall time and the model's own detail). `solve`, the grid
-//! ([`grid`], generic over any [`grid::ParamSet`]), sweeps, charts and the reports all call it.
+//! [`models`] is the single place a model is chosen and run: a [`ModelSpec`] (the model and its
+//! settings, chosen by data) goes into [`solve`] (or [`solve_column`] for a line of pushes), and
+//! one [`Solution`] comes out (status, theta_jam, x_jam, wall time and the model's own
+//! [`Detail`]: a [`statics::StaticsSolution`], [`minnorm::PalmSolution`] or
+//! [`dynamics::DynamicsSolution`]). The command line, the Python package, the grids, sweeps,
+//! charts and the reports all call it.
 //! **To add a model**, write its module and register it in [`models`] (one variant in each of
 //! `ModelKind`, `ModelSpec`, `Detail` and one arm of `solve`); **to add a chart kind**, write
 //! what it computes in `figures/<kind>.rs` (its settings, and a `Serialize` data type whose
@@ -65,9 +67,9 @@
 //! (settings, data, picture) triple in `charts/kinds.rs`, the kinds' one registration point;
 //! its scene `charts/<name>.toml` is built in by `build.rs`.
 //!
-//! Outcomes are data ([`scene::JamStatus`], with typed reasons in each model's solution);
-//! [`error::Error`] is only for misuse. A push starting above 90 deg is outside every model
-//! ([`models::OutsideModel::PalmLiftsDisc`]): the palm's push points upwards there and can lift
+//! Outcomes are data ([`JamStatus`], with typed reasons in each model's solution); [`Error`]
+//! is only for misuse. A push starting above 90 deg is outside every model
+//! ([`OutsideModel::PalmLiftsDisc`]): the palm's push points upwards there and can lift
 //! the disc, while every model keeps it on the ground.
 //!
 //! ## Corrections to the paper
@@ -104,11 +106,19 @@
 //! (`jamchart accuracy`), the cost of a design map by each model, and a matrix of stiff and
 //! extreme cases classed correct, flagged, failed or wrong (`jamchart stability`).
 //!
-//! ## Grids and charts
+//! ## Other questions of a scene
 //!
-//! [`grid`] evaluates a model over any two scene parameters in parallel, bit-identical for any
-//! thread count; [`charts`] turns scene files (`charts/<name>.toml`) into byte-identical SVG and
-//! PNG design charts with the data behind them (`jamchart render`).
+//! [`uncertain`] answers a scene whose inputs are known only within a range (the interval of
+//! theta_jam and x_jam over the box) or by a distribution (probabilities and quantiles of
+//! x_jam); [`design`] turns the question round (the least push that carries the disc to a
+//! target, the palm lengths that keep the jams on the palm); [`locator`] holds a disc in a
+//! V-type locator (holds, slips or wedges, the capacity, the best and the most robust V).
+//!
+//! ## Charts
+//!
+//! [`charts`] turns scene files (`charts/<name>.toml`) into byte-identical SVG and PNG design
+//! charts with the data behind them (`jamchart render`); their maps are evaluated in parallel,
+//! bit-identical for any thread count.
 
 #![warn(missing_docs)]
 
@@ -116,39 +126,90 @@
 #[cfg(test)]
 extern crate self as jamchart;
 
+/// Proptest's settings for a unit test of `cases` cases: saved failures live beside the test's
+/// source file (`<file>.proptest-regressions`), not in a `proptest-regressions/` folder at the
+/// top of the tree, and every run replays them.
+#[cfg(test)]
+fn proptest_config(cases: u32) -> proptest::test_runner::Config {
+    proptest::test_runner::Config {
+        cases,
+        failure_persistence: Some(Box::new(
+            proptest::test_runner::FileFailurePersistence::WithSource("proptest-regressions"),
+        )),
+        ..Default::default()
+    }
+}
+
+// The house: settings and their files, the front ends (command line, Python package), the
+// grid evaluator, the figures' computations, the reports and the paper's printed numbers.
 #[macro_use]
 mod settings;
 
 mod atomic;
-pub mod charts;
 mod cli;
 mod config;
 mod csv_out;
-pub mod design;
-pub mod dynamics;
 mod error;
-pub(crate) mod figures;
-pub mod grid;
+mod figures;
+mod grid;
 mod limits;
-pub mod locator;
-pub mod minnorm;
-pub mod models;
 mod numbers;
-pub mod paper;
+mod paper;
 // The Python package (`pip install .`); no Rust API of its own.
 #[cfg(feature = "python")]
 mod python;
 mod scene;
-pub mod statics;
 mod study;
+
+// The models, each with its settings and its own answer, and the port that runs them.
+pub mod dynamics;
+pub mod minnorm;
+pub mod models;
+pub mod statics;
+
+// The other questions of a scene, and the charts.
+pub mod charts;
+pub mod design;
+pub mod locator;
 pub mod uncertain;
 
 #[doc = include_str!("guide.md")]
 pub mod guide {}
 
+// Where a library user or a binding starts: the scene, the port with its one solution type,
+// the errors.
+pub use error::{Error, Result};
+pub use models::{Detail, ModelKind, ModelSpec, OutsideModel, Solution, solve, solve_column};
+pub use scene::{JamStatus, SceneParams};
+
 /// The `jamchart` command line (`src/main.rs` calls it): not a library entry.
 #[doc(hidden)]
 pub use cli::main as run_cli;
-pub use error::{Error, Result};
-pub use models::{ModelKind, ModelSpec, Solution, solve, solve_column};
-pub use scene::{JamStatus, SceneParams, disc_position_mm, palm_angle_at};
+
+/// What the benchmarks (`benches/`) time or compare that no public entry reaches on its own:
+/// the kernels under the charts (the statics margin over a map, the symmetric V's capacity map),
+/// one minimum-norm program, a range's two corners, and the reference solvers the fast paths
+/// are checked against. Not a library entry: it changes with the code it times.
+#[doc(hidden)]
+pub mod bench_support {
+    pub use crate::grid::{
+        Grid, GridAxis, GridParam, GridRequest, LocatorParam, Quantity, capacity_map, evaluate,
+        statics_point,
+    };
+    pub use crate::locator::reference::capacity_clarabel;
+    pub use crate::locator::symmetric::applies as closed_form_applies;
+    pub use crate::minnorm::contact::{Contact, ContactProblem, Joint, Space, Wrench};
+    pub use crate::minnorm::palm::palm_problem;
+    pub use crate::minnorm::qp::{solve as solve_program, solve_clarabel};
+
+    /// The interval of theta_jam in deg over the box of `set` around `p` from its two extreme
+    /// corners alone: the cheap part of [`crate::uncertain::range::closed_form`].
+    pub fn range_corners(
+        p: &crate::SceneParams,
+        set: &crate::uncertain::UncertainSet,
+    ) -> crate::Result<Option<[f64; 2]>> {
+        Ok(crate::uncertain::range::ends(p, set)?
+            .hull
+            .map(|h| h.theta_jam_deg))
+    }
+}

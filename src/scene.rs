@@ -7,7 +7,7 @@
 //! x = r cot(theta/2) + h / sin(theta) ([`disc_position_mm`]).
 
 use crate::error::{Error, Result};
-use crate::settings::decl::{Check, Decl, Declared, Kind};
+use crate::settings::decl::{Check, Decl, Declared};
 
 settings! {
     /// Parameters of the palm-and-disc scene.
@@ -61,23 +61,18 @@ settings! {
     }
 }
 
-/// The scene's aliases: `mu` sets both frictions (the paper's single mu).
-pub(crate) const SCENE_ALIASES: &[Decl] = &[Decl {
-    key: "mu",
-    section: "scene",
-    flag: Some("mu"),
-    symbol: "μ",
-    quantity: "friction coefficient",
-    unit: "-",
-    doc: "Friction coefficient at both contacts (the paper's single mu).\n\n\
-          --mu-ground or --mu-palm given as well take precedence for their contact.",
-    check: Check::AtLeast(0.0),
-    kind: Kind::Derived,
-    default: || "0.4".to_string(),
-    sets: &["mu_ground", "mu_palm"],
-    value_name: "MU",
-    uncertain: true,
-}];
+settings! {
+    /// The scene's aliases: `mu` sets both frictions (the paper's single mu).
+    section = "scene";
+    aliases SCENE_ALIASES {
+        /// Friction coefficient at both contacts (the paper's single mu).
+        ///
+        /// --mu-ground or --mu-palm given as well take precedence for their contact.
+        mu = 0.4, sets: &["mu_ground", "mu_palm"], flag: Some("mu"), symbol: "μ",
+            quantity: "friction coefficient", unit: "-", check: Check::AtLeast(0.0),
+            value_name: "MU", uncertain: true;
+    }
+}
 
 impl SceneParams {
     /// Checks every field; the error names the TOML key and the offending value.
@@ -108,14 +103,14 @@ impl SceneParams {
     }
 
     /// Disc position x in mm (hinge to the ground contact A) where the disc touches the palm
-    /// at palm angle `theta` (rad): x = r cot(theta/2) + h / sin(theta) ([`disc_position_mm`]
+    /// at palm angle `theta` (rad): x = r cot(theta/2) + h / sin(theta) (`disc_position_mm`
     /// with this scene's radius and palm offset).
     pub fn disc_position_mm(&self, theta: f64) -> f64 {
         disc_position_mm(self.radius_mm, self.palm_offset_mm, theta)
     }
 
     /// The palm angle (rad) at which the disc sits at `x_mm`: the inverse of
-    /// [`SceneParams::disc_position_mm`] ([`palm_angle_at`]).
+    /// [`SceneParams::disc_position_mm`] (`palm_angle_at`).
     pub fn palm_angle_at(&self, x_mm: f64) -> f64 {
         palm_angle_at(self.radius_mm, self.palm_offset_mm, x_mm)
     }
@@ -130,8 +125,9 @@ impl SceneParams {
     }
 
     /// Values that are valid but likely a unit mistake, one sentence each naming the key (and
-    /// its flag): a friction coefficient above 2 (a percentage?), a radius under 0.5 mm (metres?), a start angle under 3 deg
-    /// (radians?). The caller prints them as warnings; the answer is still computed.
+    /// its flag): a friction coefficient above 2 (a percentage?), a radius under 0.5 mm
+    /// (metres?), a palm shorter than the radius (cm?), a mass heavier than a steel bar of the
+    /// disc's radius 10 m long (grams?), a start angle under 3 deg (radians?). The caller prints them as warnings; the answer is still computed.
     pub fn unit_warnings(&self) -> Vec<String> {
         let family = SCENE_ALIASES.iter().chain(Self::DECLS);
         let mut out = friction_warnings(
@@ -144,6 +140,31 @@ impl SceneParams {
                 "radius_mm",
                 self.radius_mm,
                 "mm is under 0.5 mm; the radius is in mm, not metres",
+            ));
+        }
+        if self.palm_length_mm < self.radius_mm {
+            out.push(likely_mistake(
+                family.clone(),
+                "palm_length_mm",
+                self.palm_length_mm,
+                &format!(
+                    "mm is shorter than the disc's radius ({} mm); the length is in mm, not cm",
+                    crate::numbers::Num(self.radius_mm)
+                ),
+            ));
+        }
+        // A radius in metres makes any mass look heavy: its own warning says what is wrong.
+        let bar_m = steel_bar_length_m(self.mass_kg, self.radius_mm);
+        if bar_m > STEEL_BAR_LIMIT_M && self.radius_mm >= 0.5 {
+            out.push(likely_mistake(
+                family.clone(),
+                "mass_kg",
+                self.mass_kg,
+                &format!(
+                    "kg weighs as much as a steel bar of this radius {} m long; the mass is in kg, \
+                     not grams",
+                    crate::numbers::Num((bar_m * 10.0).round() / 10.0)
+                ),
             ));
         }
         if self.start_angle_deg < 3.0 {
@@ -209,6 +230,20 @@ fn likely_mistake(
         .and_then(|d| d.flags(family));
     let flag = flags.map_or(String::new(), |f| format!(" ({f})"));
     format!("{key}{flag} = {} {why}", crate::numbers::Num(value))
+}
+
+/// Density of steel in kg/m^3: the yardstick of the mass warning (few parts are denser).
+const STEEL_DENSITY_KG_M3: f64 = 7850.0;
+
+/// A part heavier than a steel bar of its radius this long (m) is taken for a unit mistake: the
+/// paper's 1 kg disc of radius 10 mm is such a bar 0.4 m long, a mass typed in grams (400 for
+/// 0.4 kg on a 12.5 mm part) one 103.8 m long.
+const STEEL_BAR_LIMIT_M: f64 = 10.0;
+
+/// Length in m of a steel bar of radius `radius_mm` that weighs `mass_kg`.
+fn steel_bar_length_m(mass_kg: f64, radius_mm: f64) -> f64 {
+    let r_m = radius_mm * 1e-3;
+    mass_kg / (STEEL_DENSITY_KG_M3 * std::f64::consts::PI * r_m * r_m)
 }
 
 /// Largest start angle any model represents, in deg: above it the palm's push points upwards.

@@ -59,8 +59,8 @@
 //! corners (`jamchart solve --mu 0.12:0.3`). The status is decided by theta_jam against the
 //! start angle and the palm's reach angle (neither depends on these inputs), so it changes at
 //! most once per boundary along each input; each breakpoint is where theta_jam crosses that
-//! boundary's angle ([`reach_angle_rad`], the start angle), found by regula falsi, or by
-//! bisection of [`status`] for the other changes. The tests check the interval against a
+//! boundary's angle (`reach_angle_rad`, the start angle), found by regula falsi, or by
+//! bisection of `status` for the other changes. The tests check the interval against a
 //! dense grid of point answers over random boxes (`tests/range_promise.rs`).
 
 use std::f64::consts::FRAC_PI_2;
@@ -71,7 +71,7 @@ use crate::scene::{JamStatus, SceneParams};
 
 /// Ground reaction at contact A for a palm angle, from the corrected Eq. 1.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct GroundReaction {
+pub(crate) struct GroundReaction {
     /// Tangential reaction R_t in N, positive against the disc's motion (towards the hinge).
     pub r_t_n: f64,
     /// Normal reaction R_n in N, positive up.
@@ -84,7 +84,8 @@ pub struct GroundReaction {
 }
 
 /// Ground reaction and jam margin at palm angle `theta` (rad), with the palm sliding.
-pub fn ground_reaction(p: &SceneParams, theta: f64) -> GroundReaction {
+#[cfg(test)]
+pub(crate) fn ground_reaction(p: &SceneParams, theta: f64) -> GroundReaction {
     reaction_at(p, p.alpha_palm(), theta)
 }
 
@@ -102,7 +103,8 @@ fn reaction_at(p: &SceneParams, alpha_palm: f64, theta: f64) -> GroundReaction {
 }
 
 /// The jam margin mu_g R_n - R_t in N at palm angle `theta` (rad); see [`ground_reaction`].
-pub fn margin_n(p: &SceneParams, theta: f64) -> f64 {
+#[cfg(test)]
+pub(crate) fn margin_n(p: &SceneParams, theta: f64) -> f64 {
     ground_reaction(p, theta).margin_n
 }
 
@@ -156,7 +158,7 @@ pub struct PastPalm {
 
 /// The closed-form jam angle in rad, alpha_g + alpha_p + asin(m g sin(alpha_g) / F), before the
 /// statuses are decided; +infinity when the push can never move the disc (m g sin(alpha_g) >= F).
-pub fn theta_jam_rad(p: &SceneParams) -> f64 {
+pub(crate) fn theta_jam_rad(p: &SceneParams) -> f64 {
     theta_jam_from(p, &FrictionAngles::of(p))
 }
 
@@ -169,10 +171,13 @@ struct FrictionAngles {
 
 impl FrictionAngles {
     fn of(p: &SceneParams) -> Self {
-        FrictionAngles {
-            ground: p.alpha_ground(),
-            palm: p.alpha_palm(),
-        }
+        let ground = p.alpha_ground();
+        // Equal frictions (the paper's one mu) have one angle: one arctangent, the same bits.
+        let palm = match p.mu_palm.to_bits() == p.mu_ground.to_bits() {
+            true => ground,
+            false => p.alpha_palm(),
+        };
+        FrictionAngles { ground, palm }
     }
 }
 
@@ -194,7 +199,7 @@ fn theta_jam_from(p: &SceneParams, a: &FrictionAngles) -> f64 {
 /// (ds_B/dtheta = -r / (2 sin^2(theta/2)) - h / sin^2(theta) < 0), and with u = tan(theta/2)
 /// s_B = L reads h u^2 + 2 L u - (2 r + h) = 0, so u = (2 r + h) / (L + sqrt(L^2 + h (2 r + h)))
 /// (r / L without a palm offset). Depends on radius_mm, palm_offset_mm and palm_length_mm only.
-pub fn reach_angle_rad(p: &SceneParams) -> f64 {
+pub(crate) fn reach_angle_rad(p: &SceneParams) -> f64 {
     let (r, h, l) = (p.radius_mm, p.palm_offset_mm, p.palm_length_mm);
     2.0 * ((2.0 * r + h) / (l + (l * l + h * (2.0 * r + h)).sqrt())).atan()
 }
@@ -205,7 +210,7 @@ pub fn reach_angle_rad(p: &SceneParams) -> f64 {
 /// h / sin(theta_rigid) in mm (r/mu for equal frictions and h = 0); None when the wedge is
 /// closed (frictionless) or x_rigid is not finite. Depends on mu_ground, mu_palm, radius_mm and
 /// palm_offset_mm only.
-pub fn rigid_limit(p: &SceneParams) -> (f64, Option<f64>) {
+pub(crate) fn rigid_limit(p: &SceneParams) -> (f64, Option<f64>) {
     rigid_limit_from(p, &FrictionAngles::of(p))
 }
 
@@ -217,7 +222,7 @@ fn rigid_limit_from(p: &SceneParams, a: &FrictionAngles) -> (f64, Option<f64>) {
 }
 
 /// Solves the scene in closed form. `p` must have passed [`SceneParams::validate`].
-pub fn solve(p: &SceneParams) -> StaticsSolution {
+pub(crate) fn solve(p: &SceneParams) -> StaticsSolution {
     let start = p.start_angle_deg.to_radians();
     let angles = FrictionAngles::of(p);
     let lift_off_above = lift_off_angle(p, angles.palm);
@@ -256,7 +261,7 @@ pub fn solve(p: &SceneParams) -> StaticsSolution {
 /// [`solve`]'s status, theta_jam in deg and x_jam in mm without its extras (lift-off, rigid
 /// limit, the jam past the palm): what a batch of pushes needs. `p` must have passed
 /// [`SceneParams::validate`].
-pub fn jam(p: &SceneParams) -> (JamStatus, Option<f64>, Option<f64>) {
+pub(crate) fn jam(p: &SceneParams) -> (JamStatus, Option<f64>, Option<f64>) {
     jam_of(p, &decide(p))
 }
 
@@ -278,7 +283,7 @@ fn jam_of(p: &SceneParams, d: &Decision) -> (JamStatus, Option<f64>, Option<f64>
 /// The closed form's status alone: [`solve`]'s `status` without the extras (no lift-off
 /// angle, rigid limit or past-palm bisection), for scans that only need the verdict, such
 /// as the status breakpoints of a range answer. `p` must have passed validation.
-pub fn status(p: &SceneParams) -> JamStatus {
+pub(crate) fn status(p: &SceneParams) -> JamStatus {
     decide(p).status()
 }
 
@@ -398,9 +403,14 @@ fn finite_or_none(v: f64) -> Option<f64> {
 /// The least push in N that can slide the disc: m g sin(atan mu_ground). The palm's push F is
 /// most effective at theta = 90 deg + alpha_g + alpha_p, where the corrected Eq. 1 margin is
 /// mu_g m g - F / cos(alpha_g); it slides the disc there iff F > m g sin(alpha_g).
-pub fn least_push_n(p: &SceneParams) -> f64 {
+pub(crate) fn least_push_n(p: &SceneParams) -> f64 {
     p.weight_n() * p.alpha_ground().sin()
 }
+
+/// The closed form against the corrected Table 1, hand derivations and its invariants.
+#[cfg(test)]
+#[path = "statics_tests.rs"]
+mod statics_tests;
 
 #[cfg(test)]
 mod tests {

@@ -592,3 +592,47 @@ fn a_disc_past_a_short_palm_is_told_where_the_palm_would_touch_it() {
         stdout(&o)
     );
 }
+
+/// A refusal names the flag that sets the key, and only a flag of the command run: `render
+/// --set radius_mm=-1` said "(flag --radius)", a flag render does not take (it sets keys by
+/// `--set` and scene files). The flags come from the declarations: a setting's own and its
+/// aliases', a report's own (`--map-cells` for `cells_per_axis`), the V's geometry flags for a
+/// flank, each flag of a quantity of several.
+#[test]
+fn a_refusal_names_only_flags_of_the_command_run() {
+    let dir = tempfile::tempdir().unwrap();
+    for (args, named) in [
+        (
+            vec!["render", "fig3", "--set", "radius_mm=-1"],
+            "invalid radius_mm = -1: ",
+        ),
+        (
+            vec!["solve", "--radius", "-1"],
+            "radius_mm = -1 (flag --radius):",
+        ),
+        (
+            vec!["solve", "--mu-palm", "-1"],
+            "mu_palm = -1 (flag --mu-palm or --mu):",
+        ),
+        (
+            vec!["accuracy", "--map-cells", "3000"],
+            "cells_per_axis = 3000 (flag --map-cells):",
+        ),
+        (
+            vec!["design", "--x-target", "-5"],
+            "x_target_mm = -5 (flag --x-target):",
+        ),
+        (
+            vec!["vlocator", "--flank-angles", "100,100"],
+            "(flag --flank-angles or --included-angle):",
+        ),
+        (
+            vec!["vlocator", "--mass", "1e-300", "--gravity", "1e-300"],
+            "(flag --mass and --gravity):",
+        ),
+    ] {
+        let o = jamchart(dir.path(), &args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(named), "{args:?}: {}", stderr(&o));
+    }
+}

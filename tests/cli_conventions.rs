@@ -107,6 +107,90 @@ fn man_page_lists_every_subcommand_and_out_dir_writes_one_per_subcommand() {
     }
 }
 
+/// The completions offered no scene after `render`: the bash script, run by bash as it
+/// completes `jamchart render fi<TAB>` and `jamchart scenes vl<TAB>`, offers the built-in scenes
+/// that start so (`jamchart scenes` lists them).
+#[test]
+fn bash_completes_the_built_in_scenes_after_render() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = stdout(&jamchart(dir.path(), &["completions", "bash"]));
+    std::fs::write(dir.path().join("jamchart.bash"), script).unwrap();
+    let listed = stdout(&jamchart(dir.path(), &["scenes"]));
+    let scenes: Vec<&str> = listed
+        .lines()
+        .filter_map(|l| l.split_whitespace().next())
+        .collect();
+    for (line, prefix) in [("jamchart render fi", "fi"), ("jamchart scenes vl", "vl")] {
+        let words: Vec<&str> = line.split(' ').collect();
+        let probe = format!(
+            "source ./jamchart.bash; COMP_WORDS=({line}); COMP_CWORD={cword}; \
+             COMP_LINE='{line}'; COMP_POINT=${{#COMP_LINE}}; _jamchart jamchart {cur} {prev}; \
+             printf '%s\\n' \"${{COMPREPLY[@]}}\"",
+            cword = words.len() - 1,
+            cur = words[words.len() - 1],
+            prev = words[words.len() - 2],
+        );
+        let o = std::process::Command::new("bash")
+            .args(["--norc", "-c", &probe])
+            .current_dir(dir.path())
+            .output()
+            .unwrap();
+        let mut offered: Vec<String> = String::from_utf8_lossy(&o.stdout)
+            .lines()
+            .map(str::to_string)
+            .collect();
+        offered.sort();
+        let mut wanted: Vec<&str> = scenes
+            .iter()
+            .copied()
+            .filter(|s| s.starts_with(prefix))
+            .collect();
+        wanted.sort();
+        assert!(!wanted.is_empty(), "{listed}");
+        assert_eq!(
+            offered,
+            wanted,
+            "{line}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
+}
+
+/// The man pages' SYNOPSIS listed the flags without their values (`[--model]`): each flag now
+/// shows its value, the named values where it has them (`--model
+/// <statics|min-norm|dynamics|all>`), else its value name (`--mu <MU>`).
+#[test]
+fn man_synopsis_shows_the_values_of_the_flags() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = jamchart(dir.path(), &["man", "--out-dir", "man1"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let synopsis = |sub: &str| {
+        let page = std::fs::read_to_string(dir.path().join(format!("man1/jamchart-{sub}.1")))
+            .unwrap()
+            .replace("\\-", "-");
+        let start = page.find(".SH SYNOPSIS").unwrap();
+        let end = start + page[start..].find(".SH DESCRIPTION").unwrap();
+        page[start..end].to_string()
+    };
+    let solve = synopsis("solve");
+    for shown in [
+        "[--model <statics|min-norm|dynamics|all>]",
+        "[--mu <MU>]",
+        "[--method <radau5|dopri5|nonsmooth>]",
+        "[--trace]",
+    ] {
+        assert!(solve.contains(shown), "{shown}: {solve}");
+    }
+    let render = synopsis("render");
+    assert!(render.contains("[--format <svg|png|both|pdf>]"), "{render}");
+    assert!(render.trim_end().ends_with("[SCENE]..."), "{render}");
+    assert!(
+        synopsis("design").contains(" --x-target <MM>"),
+        "{}",
+        synopsis("design")
+    );
+}
+
 /// `stability` wrote its timing line on stderr with no way to silence it: `--quiet` does.
 #[test]
 fn quiet_silences_the_stability_timing_line() {

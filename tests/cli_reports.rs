@@ -116,6 +116,71 @@ fn accuracy_writes_every_output_with_one_schema() {
     assert!(md.contains("A 6 x 6 map"), "{md}");
 }
 
+/// The accuracy report opened with its tables and references, leaving the reader to work out
+/// what to design to. Its first paragraph now says it in one line, from the numbers computed:
+/// the closed form's x_jam and theta_jam (as its reference line gives them) and the rigid limit
+/// of the motion-driven palm, for two frictions.
+#[test]
+fn accuracy_opens_with_what_to_design_to() {
+    let dir = tempfile::tempdir().unwrap();
+    for mu in ["0.4", "0.3"] {
+        let o = jamchart(
+            dir.path(),
+            &[
+                "accuracy",
+                "--mu",
+                mu,
+                "--methods",
+                "radau5",
+                "--tolerances",
+                "1e-3",
+                "--penetrations",
+                "none",
+                "--nonsmooth-steps",
+                "none",
+                "--min-norm-tolerances",
+                "none",
+                "--runs",
+                "1",
+                "--map-cells",
+                "0",
+                "--quiet",
+            ],
+        );
+        assert!(o.status.success(), "{}", stderr(&o));
+        let md = stdout(&o);
+        let mut paragraphs = md.split("\n\n");
+        assert!(paragraphs.next().unwrap().starts_with("# "), "{md}");
+        let summary = paragraphs.next().unwrap();
+        assert!(!summary.contains('\n'), "one line: {summary}");
+        // The references as the report lists them, rounded as the summary gives them.
+        let reference = |kind: &str, key: &str| -> f64 {
+            let line = md
+                .lines()
+                .find(|l| l.starts_with(&format!("- reference {kind}:")))
+                .unwrap();
+            let at = line.find(key).unwrap() + key.len();
+            line[at..]
+                .split_whitespace()
+                .next()
+                .unwrap()
+                .parse()
+                .unwrap()
+        };
+        let x = reference("closed_form", "x_jam = ");
+        let theta = reference("closed_form", "theta_jam = ");
+        let rigid = reference("rigid", "x_jam = ");
+        for said in [
+            format!("Design to x_jam = {x:.3} mm (theta_jam = {theta:.3} deg)"),
+            format!("or to {rigid:.3} mm, the rigid limit"),
+        ] {
+            assert!(summary.contains(&said), "{said}: {summary}");
+        }
+        assert!(summary.contains("the simulation comes within"), "{summary}");
+        assert!(md.find(summary).unwrap() < md.find("| model |").unwrap());
+    }
+}
+
 #[test]
 fn accuracy_refuses_bad_flags_before_computing() {
     let dir = tempfile::tempdir().unwrap();

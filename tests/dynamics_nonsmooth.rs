@@ -1,10 +1,12 @@
 //! The nonsmooth method (rigid contacts, exact Coulomb friction) against the closed form and
 //! against the regularised model in its stiff limit.
 
+use jamchart::JamStatus;
 use jamchart::SceneParams;
 use jamchart::dynamics::DiscMotion;
-use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Method, simulate};
-use jamchart::{JamStatus, statics};
+use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Method};
+
+use crate::common::port::{min_norm, simulate, statics};
 
 fn nonsmooth(drive: Drive, omega_deg_s: f64) -> DynamicsParams {
     let mut p = DynamicsParams::default();
@@ -81,7 +83,7 @@ fn force_drive_at_slow_omega_jams_at_the_closed_form() {
                 ..SceneParams::default().with_mu(mu)
             };
             let s = simulate(&scene, &nonsmooth(Drive::Force, 0.5), None).unwrap();
-            let want = statics::solve(&scene).x_jam_mm.unwrap();
+            let want = statics(&scene).x_jam_mm.unwrap();
             let x = x_jam(&s);
             assert!(
                 rel(x, want) < 1e-3,
@@ -157,7 +159,7 @@ fn nonsmooth_and_stiff_regularised_agree() {
         );
         if drive == Drive::Force {
             // Both past the closed form: the disc's inertia carries it on after the palm stalls.
-            let cf = statics::solve(&scene).x_jam_mm.unwrap();
+            let cf = statics(&scene).x_jam_mm.unwrap();
             assert!(ns > cf && rg > cf, "{ns} {rg} vs {cf}");
         }
     }
@@ -214,7 +216,7 @@ fn a_rolling_disc_rolls_and_locks_up_at_r_over_the_smaller_mu() {
 /// says (tan(theta/2) = min(mu_p, mu_g (1 + m g / N))): within 0.2 %.
 #[test]
 fn a_rolling_disc_pushed_slowly_with_a_finite_force_jams_where_min_norm_rolling_says() {
-    use jamchart::minnorm::{Formulation, MinNormSettings, palm};
+    use jamchart::minnorm::{Formulation, MinNormSettings};
     for (mu_ground, mu_palm) in [(0.4, 0.4), (0.2, 0.6), (0.6, 0.2)] {
         let scene = SceneParams {
             mu_ground,
@@ -226,7 +228,7 @@ fn a_rolling_disc_pushed_slowly_with_a_finite_force_jams_where_min_norm_rolling_
             formulation: Formulation::Rolling,
             ..Default::default()
         };
-        let want = palm::solve(&scene, &settings).unwrap().x_jam_mm.unwrap();
+        let want = min_norm(&scene, &settings).unwrap().x_jam_mm.unwrap();
         let x = x_jam(&s);
         assert!(
             rel(x, want) < 2e-3,
@@ -299,7 +301,7 @@ fn force_drive_agrees_with_the_stiff_regularised_disc_where_it_stops() {
 /// min-norm rolling, not "0.13 %".
 #[test]
 fn the_rolling_table_of_the_nonsmooth_docs() {
-    use jamchart::minnorm::{Formulation, MinNormSettings, palm};
+    use jamchart::minnorm::{Formulation, MinNormSettings};
     let scene = |mu_ground, mu_palm| SceneParams {
         mu_ground,
         mu_palm,
@@ -342,7 +344,7 @@ fn the_rolling_table_of_the_nonsmooth_docs() {
     ] {
         let sc = scene(mu_g, mu_p);
         let x = jam(&sc, &rolling(Drive::Force, 0.5));
-        let m = palm::solve(&sc, &settings).unwrap().x_jam_mm.unwrap();
+        let m = min_norm(&sc, &settings).unwrap().x_jam_mm.unwrap();
         worst = worst.max(rel(x, m));
         eprintln!("force drive {mu_g} / {mu_p}: rolls to {x:.3} mm, min-norm rolling {m:.3} mm");
         assert!((x - force_doc).abs() < 5e-4, "{mu_g}/{mu_p}: {x}");

@@ -1,8 +1,11 @@
 //! The dynamic simulation against the closed form, where physics says they agree.
 
+use jamchart::JamStatus;
 use jamchart::SceneParams;
-use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Failure, Method, simulate};
-use jamchart::{JamStatus, statics};
+use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Failure, Method};
+
+use crate::common::PAPER_ADAMS_X_JAM_MM_MU_0_4;
+use crate::common::port::{simulate, statics};
 
 /// k such that the IMPACT force k delta^2.2 reaches 200 N at penetration `delta_mm`.
 fn stiffness_for(delta_mm: f64) -> f64 {
@@ -59,7 +62,7 @@ fn motion_drive_with_a_stiff_contact_jams_within_0_5_percent_of_r_over_mu() {
 #[test]
 fn force_drive_at_200_n_jams_within_1_percent_of_the_closed_form() {
     let scene = SceneParams::default();
-    let closed = statics::solve(&scene).x_jam_mm.unwrap();
+    let closed = statics(&scene).x_jam_mm.unwrap();
     assert!((closed - 24.355).abs() < 1e-3);
     let p = DynamicsParams {
         drive: jamchart::dynamics::DriveSettings {
@@ -77,7 +80,7 @@ fn force_drive_at_200_n_jams_within_1_percent_of_the_closed_form() {
         force_n: 50.0,
         ..scene
     };
-    let closed_weak = statics::solve(&weak).x_jam_mm.unwrap();
+    let closed_weak = statics(&weak).x_jam_mm.unwrap();
     let slow = DynamicsParams {
         drive: jamchart::dynamics::DriveSettings {
             omega_deg_s: 10.0,
@@ -341,7 +344,7 @@ fn the_papers_1_mm_bar_brings_the_jam_near_its_adams_result() {
     assert_rel(
         "x_jam with a 0.5 mm offset",
         x,
-        jamchart::paper::ADAMS_X_JAM_MM_MU_0_4,
+        PAPER_ADAMS_X_JAM_MM_MU_0_4,
         0.01,
     );
 }

@@ -2,7 +2,9 @@
 //! range (the integrator may give up, which is a status).
 
 use jamchart::SceneParams;
-use jamchart::dynamics::{Drive, DynamicsParams, simulate};
+use jamchart::dynamics::{Drive, DynamicsParams};
+
+use crate::common::port::simulate;
 use proptest::prelude::*;
 
 proptest! {

@@ -12,7 +12,9 @@
 
 use jamchart::JamStatus;
 use jamchart::SceneParams;
-use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Method, simulate};
+use jamchart::dynamics::{Drive, DynamicsParams, DynamicsSolution, Method};
+
+use crate::common::port::simulate;
 
 /// 1000: N / kg = m/s^2 = 1000 mm/s^2.
 const MM: f64 = 1000.0;

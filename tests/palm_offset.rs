@@ -3,8 +3,11 @@
 //! does not change and the disc sits h / sin(theta) further out (derivation in `src/statics.rs`).
 //! Every model honours it; the closed form is the oracle.
 
-use jamchart::dynamics::{DynamicsParams, Method, simulate};
-use jamchart::{JamStatus, SceneParams, minnorm, statics};
+use jamchart::dynamics::{DynamicsParams, Method};
+use jamchart::{JamStatus, SceneParams};
+
+use crate::common::PAPER_ADAMS_X_JAM_MM_MU_0_4;
+use crate::common::port::{min_norm, simulate, statics};
 
 fn with_offset(h: f64) -> SceneParams {
     SceneParams {
@@ -17,13 +20,13 @@ fn with_offset(h: f64) -> SceneParams {
 /// Adams reading with its 1 mm bars (25.58 mm) lies between 25.0 (h = 0) and that.
 #[test]
 fn half_a_millimetre_moves_the_rigid_limit_to_25_725_mm() {
-    let thin = statics::solve(&with_offset(0.0));
-    let thick = statics::solve(&with_offset(0.5));
+    let thin = statics(&with_offset(0.0));
+    let thick = statics(&with_offset(0.5));
     let x0 = thin.x_rigid_mm.unwrap();
     let x1 = thick.x_rigid_mm.unwrap();
     assert!((x0 - 25.0).abs() < 1e-9, "{x0}");
     assert!((x1 - 25.725).abs() < 5e-4, "{x1}");
-    let paper = jamchart::paper::ADAMS_X_JAM_MM_MU_0_4;
+    let paper = PAPER_ADAMS_X_JAM_MM_MU_0_4;
     assert!(x0 < paper && paper < x1, "{x0} < {paper} < {x1}");
     // theta_jam does not move; x_jam moves by h / sin(theta_jam).
     let (t0, t1) = (thin.theta_jam_deg.unwrap(), thick.theta_jam_deg.unwrap());
@@ -46,8 +49,8 @@ fn min_norm_agrees_with_the_closed_form_for_any_offset() {
             palm_offset_mm: h,
             ..SceneParams::default().with_mu(mu)
         };
-        let cf = statics::solve(&p);
-        let mn = minnorm::palm::solve(&p, &Default::default()).unwrap();
+        let cf = statics(&p);
+        let mn = min_norm(&p, &Default::default()).unwrap();
         assert_eq!(mn.status, cf.status, "mu {mu} h {h}");
         let (xc, xm) = (cf.x_jam_mm.unwrap(), mn.x_jam_mm.unwrap());
         assert!((xc - xm).abs() < 1e-6 * xc, "mu {mu} h {h}: {xc} vs {xm}");
@@ -59,7 +62,7 @@ fn min_norm_agrees_with_the_closed_form_for_any_offset() {
 #[test]
 fn the_simulations_jam_at_the_offset_rigid_limit() {
     let scene = with_offset(0.5);
-    let x_rigid = statics::solve(&scene).x_rigid_mm.unwrap();
+    let x_rigid = statics(&scene).x_rigid_mm.unwrap();
     let mut rigid = DynamicsParams::default();
     rigid.integrator.method = Method::Nonsmooth;
     let ns = simulate(&scene, &rigid, None).unwrap();
@@ -76,19 +79,19 @@ fn the_simulations_jam_at_the_offset_rigid_limit() {
 #[test]
 fn reach_is_judged_at_the_contact_on_the_palm() {
     let mut p = with_offset(3.0);
-    let s = statics::solve(&p);
+    let s = statics(&p);
     let (x, theta) = (s.x_jam_mm.unwrap(), s.theta_jam_deg.unwrap().to_radians());
     let s_b = x - 3.0 * (0.5 * theta).tan();
     assert!((p.contact_distance_mm(theta) - s_b).abs() < 1e-9);
     // A palm ending between s_B and x still reaches the jam.
     p.palm_length_mm = 0.5 * (s_b + x);
-    assert_eq!(statics::solve(&p).status, JamStatus::Jams);
-    let mn = minnorm::palm::solve(&p, &Default::default()).unwrap();
+    assert_eq!(statics(&p).status, JamStatus::Jams);
+    let mn = min_norm(&p, &Default::default()).unwrap();
     assert_eq!(mn.status, JamStatus::Jams);
     // One shorter than s_B does not.
     p.palm_length_mm = s_b - 0.01;
-    assert_eq!(statics::solve(&p).status, JamStatus::BeyondReach);
-    let mn = minnorm::palm::solve(&p, &Default::default()).unwrap();
+    assert_eq!(statics(&p).status, JamStatus::BeyondReach);
+    let mn = min_norm(&p, &Default::default()).unwrap();
     assert_eq!(mn.status, JamStatus::BeyondReach);
     // The reach angle inverts s_B.
     let reach = p.reach_angle();

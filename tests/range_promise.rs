@@ -9,9 +9,8 @@ use crate::common::boxes;
 use crate::common::cli as cli_util;
 
 use boxes::{Broken, Draw, INPUTS, answers_in_box, check, random_box};
-use jamchart::grid::{AxisScale, GridAxis, GridParam};
 use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet, range};
-use jamchart::{JamStatus, SceneParams, statics};
+use jamchart::{JamStatus, SceneParams};
 
 /// Boxes tried; the seed fixes them.
 const BOXES: usize = 300;
@@ -144,29 +143,40 @@ fn every_point_of_a_random_box_answers_inside_the_sweep_band() {
     for k in 0..sweeps {
         let (mut p, set) = random_box(&mut d);
         let taken = |k: &str| set.inputs.iter().any(|i| i.keys.contains(&k));
-        let choices: Vec<(GridParam, f64, f64)> = [
-            (GridParam::Mu, 0.01, 0.8),
-            (GridParam::RadiusMm, 2.0, 20.0),
-            (GridParam::PalmLengthMm, 15.0, 200.0),
-            (GridParam::MassKg, 0.05, 5.0),
-            (GridParam::ForceN, 1.0, 200.0),
-        ]
-        .into_iter()
-        .filter(|(g, ..)| {
-            let key = g.as_str();
-            !(taken(key) || (key == "mu" && (taken("mu_ground") || taken("mu_palm"))))
-        })
-        .collect();
-        let (param, min, max) = d.pick(&choices);
-        if param == GridParam::Mu {
+        // Each swept parameter with its range and what it sets in a scene (`mu` both frictions).
+        type Sets = fn(SceneParams, f64) -> SceneParams;
+        let all: [(&str, f64, f64, Sets); 5] = [
+            ("mu", 0.01, 0.8, |p, v| p.with_mu(v)),
+            ("radius_mm", 2.0, 20.0, |p, v| SceneParams {
+                radius_mm: v,
+                ..p
+            }),
+            ("palm_length_mm", 15.0, 200.0, |p, v| SceneParams {
+                palm_length_mm: v,
+                ..p
+            }),
+            ("mass_kg", 0.05, 5.0, |p, v| SceneParams { mass_kg: v, ..p }),
+            ("force_n", 1.0, 200.0, |p, v| SceneParams {
+                force_n: v,
+                ..p
+            }),
+        ];
+        let choices: Vec<(&str, f64, f64, Sets)> = all
+            .into_iter()
+            .filter(|&(key, ..)| {
+                !(taken(key) || (key == "mu" && (taken("mu_ground") || taken("mu_palm"))))
+            })
+            .collect();
+        let (param, min, max, apply) = d.pick(&choices);
+        if param == "mu" {
             // A mu axis sets both frictions: the scene has one.
             p.mu_palm = p.mu_ground;
         }
-        let axis = GridAxis::linear(param, min, max, 31);
+        let values = spaced(min, max, 31, false);
         let name = format!("band{k}");
         let mut args = vec![
             "sweep".to_string(),
-            format!("{}={min}:{max}:31", param.as_str()),
+            format!("{param}={min}:{max}:31"),
             "--out".into(),
             dir.path().display().to_string(),
             "--name".into(),
@@ -178,9 +188,9 @@ fn every_point_of_a_random_box_answers_inside_the_sweep_band() {
         run(dir.path(), &args);
         let rows = csv_rows(&dir.path().join(format!("{name}.csv")));
         let band: Vec<_> = rows.iter().filter(|r| r["layer"] == "band").collect();
-        assert_eq!(band.len(), axis.count, "{args:?}");
-        for (row, v) in band.iter().zip(axis.values()) {
-            let q = param.apply(p, v);
+        assert_eq!(band.len(), values.len(), "{args:?}");
+        for (row, &v) in band.iter().zip(&values) {
+            let q = apply(p, v);
             let found = answers_in_box(&q, &set, 21);
             let thetas: Vec<f64> = found.iter().map(|f| f.0).collect();
             let xs: Vec<f64> = found.iter().map(|f| f.1).collect();
@@ -189,7 +199,7 @@ fn every_point_of_a_random_box_answers_inside_the_sweep_band() {
             let mut why = check("theta_jam_deg", t, &thetas, 1e-6, 1e-5);
             why.extend(check("x_jam_mm", x, &xs, 1e-6, 1e-5));
             if !why.is_empty() {
-                broken.push(format!("{args:?} at {} = {v}: {why:?}", param.as_str()));
+                broken.push(format!("{args:?} at {param} = {v}: {why:?}"));
             }
         }
     }
@@ -234,15 +244,11 @@ fn every_cell_of_a_random_jam_maps_band_is_what_the_box_makes_it() {
                 })
                 .collect(),
         };
-        let (y_min, y_max, scale) = match d.chance(0.5) {
-            true => (10.0, 70.0, AxisScale::Log),
-            false => (0.5, 179.5, AxisScale::Linear),
+        let (y_min, y_max, log) = match d.chance(0.5) {
+            true => (10.0, 70.0, true),
+            false => (0.5, 179.5, false),
         };
-        let x_axis = GridAxis::linear(GridParam::Mu, 0.02, 1.2, nx);
-        let y_axis = GridAxis {
-            scale,
-            ..GridAxis::linear(GridParam::ThetaDeg, y_min, y_max, ny)
-        };
+        let (x_min, x_max) = (0.02, 1.2);
         let set_arg = |k: &str, v: String| ["--set".to_string(), format!("{k}={v}")];
         let mut args = vec!["render".to_string(), "fig3".into()];
         for (key, v) in [
@@ -262,14 +268,11 @@ fn every_cell_of_a_random_jam_maps_band_is_what_the_box_makes_it() {
         }
         args.extend(set_arg(
             "chart.x_axis",
-            format!(
-                "{{param = \"mu\", min = {:?}, max = {:?}, count = {nx}}}",
-                x_axis.min, x_axis.max
-            ),
+            format!("{{param = \"mu\", min = {x_min:?}, max = {x_max:?}, count = {nx}}}"),
         ));
         args.extend(set_arg("chart.y_axis", format!(
             "{{param = \"theta_deg\", min = {y_min:?}, max = {y_max:?}, count = {ny}, scale = \"{}\"}}",
-            if scale == AxisScale::Log { "log" } else { "linear" }
+            if log { "log" } else { "linear" }
         )));
         let out = dir.path().join(format!("map{k}"));
         args.extend([
@@ -281,7 +284,10 @@ fn every_cell_of_a_random_jam_maps_band_is_what_the_box_makes_it() {
         run(dir.path(), &args);
         let rows = csv_rows(&out.join("fig3.csv"));
         assert_eq!(rows.len(), nx * ny, "{args:?}");
-        let (xs, ys) = (x_axis.values(), y_axis.values());
+        let (xs, ys) = (
+            spaced(x_min, x_max, nx, false),
+            spaced(y_min, y_max, ny, log),
+        );
         let n: usize = if set.inputs.len() == 1 { 21 } else { 11 };
         let ends: Vec<(f64, f64)> = set.inputs.iter().map(|i| i.value.ends()).collect();
         let grid: Vec<Vec<f64>> = (0..n.pow(set.inputs.len() as u32))
@@ -310,7 +316,7 @@ fn every_cell_of_a_random_jam_maps_band_is_what_the_box_makes_it() {
                 .iter()
                 .map(|v| {
                     let q = set.apply(&p.with_mu(mu), v);
-                    statics::margin_n(&q, theta.to_radians()) >= 0.0
+                    held_at(&q, theta.to_radians())
                 })
                 .collect();
             let (some, all) = (held.iter().any(|&h| h), held.iter().all(|&h| h));
@@ -335,4 +341,29 @@ fn every_cell_of_a_random_jam_maps_band_is_what_the_box_makes_it() {
         "{}",
         broken[..broken.len().min(20)].join("\n")
     );
+}
+
+/// `n` values from `min` to `max` (both exactly), evenly spaced or, with `log`, in equal ratios:
+/// a chart axis's samples.
+fn spaced(min: f64, max: f64, n: usize, log: bool) -> Vec<f64> {
+    (0..n)
+        .map(|i| match i + 1 == n {
+            true => max,
+            false if log => min * (max / min).powf(i as f64 / (n - 1) as f64),
+            false => min + (max - min) * (i as f64 / (n - 1) as f64),
+        })
+        .collect()
+}
+
+/// Whether the ground holds the disc at palm angle `theta` (rad) by the corrected Eq. 1: the
+/// sliding palm pushes F along the edge of its friction cone, so the ground's reaction is
+/// R_t = F sin(theta - alpha_p) and R_n = m g + F cos(theta - alpha_p), and it holds where
+/// R_t <= mu_g R_n.
+fn held_at(p: &SceneParams, theta: f64) -> bool {
+    let push = theta - p.mu_palm.atan();
+    let (r_t, r_n) = (
+        p.force_n * push.sin(),
+        p.mass_kg * p.gravity_m_s2 + p.force_n * push.cos(),
+    );
+    p.mu_ground * r_n - r_t >= 0.0
 }

@@ -38,11 +38,6 @@ pub(super) fn create_dir(dir: &Path) -> std::io::Result<()> {
     Ok(())
 }
 
-/// Registers folder `dir`, created by the caller, as [`create_dir`] does its own.
-pub(super) fn register_dir(dir: &Path) {
-    created().push(dir.to_path_buf());
-}
-
 /// Unregisters `dirs` (their write is over: they hold its files, or were removed).
 pub(super) fn forget_dirs(dirs: &[PathBuf]) {
     created().retain(|d| !dirs.contains(d));

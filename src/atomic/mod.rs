@@ -296,56 +296,6 @@ impl Drop for Set {
     }
 }
 
-/// A fresh folder under the system's temporary directory, `<prefix>` and random letters:
-/// created exclusively and private (mode 0700), so neither a folder made beforehand nor a link
-/// planted at a predictable name is ever written into, and no other user can plant one inside
-/// it. Dropped, it is removed with what it holds; [`PrivateDir::keep`] leaves it for a person
-/// to read. A signal removes it while it is still empty, as the folders a [`Set`] creates.
-pub struct PrivateDir {
-    dir: Option<tempfile::TempDir>,
-}
-
-impl PrivateDir {
-    /// Creates the folder: a new random name, created with `mkdir`, which never opens an
-    /// existing path or follows a link (tempfile retries on a name taken), mode 0700 (tempfile's
-    /// default is 0777 less the umask: 0755, readable by every user).
-    pub fn new(prefix: &str) -> Result<PrivateDir> {
-        use std::os::unix::fs::PermissionsExt;
-        let base = std::env::temp_dir();
-        let dir = tempfile::Builder::new()
-            .prefix(prefix)
-            .permissions(std::fs::Permissions::from_mode(0o700))
-            .tempdir_in(&base)
-            .map_err(|e| Error::io("create a private folder in", base, e))?;
-        cleanup::register_dir(dir.path());
-        Ok(PrivateDir { dir: Some(dir) })
-    }
-
-    /// The folder's path.
-    pub fn path(&self) -> &Path {
-        self.dir.as_ref().map_or(Path::new(""), |d| d.path())
-    }
-
-    /// Keeps the folder and its files after the process; returns its path.
-    pub fn keep(mut self) -> PathBuf {
-        let dir = self
-            .dir
-            .take()
-            .map_or_else(PathBuf::new, tempfile::TempDir::keep);
-        cleanup::forget_dirs(std::slice::from_ref(&dir));
-        dir
-    }
-}
-
-impl Drop for PrivateDir {
-    fn drop(&mut self) {
-        if let Some(d) = self.dir.take() {
-            cleanup::forget_dirs(&[d.path().to_path_buf()]);
-            let _ = d.close();
-        }
-    }
-}
-
 /// `m` locked; a panic on another thread never makes it unusable.
 fn lock_ignoring_poison<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
     m.lock().unwrap_or_else(|e| e.into_inner())

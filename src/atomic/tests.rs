@@ -158,25 +158,3 @@ fn a_set_commits_in_the_declared_order() {
     assert_eq!(std::fs::read_to_string(&a).unwrap(), "old a");
     assert_eq!(names(dir.path()), ["a.csv", "b.svg", "c.png"]);
 }
-
-/// `render --check`'s folder of new renders: private (0700), removed with what it holds when
-/// dropped (a write that failed), kept when asked, and a new name each time.
-#[test]
-fn a_private_folder_is_fresh_private_and_removed_unless_kept() {
-    use std::os::unix::fs::PermissionsExt;
-    let dropped = PrivateDir::new("jamchart-test-").unwrap();
-    let path = dropped.path().to_path_buf();
-    let mode = std::fs::metadata(&path).unwrap().permissions().mode();
-    assert_eq!(mode & 0o777, 0o700, "{path:?}");
-    write_atomic(&path.join("a.png"), b"x").unwrap();
-    drop(dropped);
-    assert!(!path.exists(), "{path:?}");
-    let (a, b) = (
-        PrivateDir::new("jamchart-test-").unwrap(),
-        PrivateDir::new("jamchart-test-").unwrap(),
-    );
-    assert_ne!(a.path(), b.path());
-    let kept = a.keep();
-    assert!(kept.is_dir());
-    std::fs::remove_dir(&kept).unwrap();
-}

@@ -31,6 +31,36 @@ pub struct Margins {
     pub right: u32,
 }
 
+/// Above the first of stacked panels, in px: the title and the subtitle.
+const STACK_TOP_PX: i32 = 72;
+/// Between stacked panels, in px: the upper one's tick labels and x-axis title.
+const STACK_GAP_PX: i32 = 78;
+/// Below the last of stacked panels, in px, above the notes or the legend: its tick labels and
+/// x-axis title.
+const STACK_BELOW_PX: i32 = 64;
+/// Left of stacked panels, in px: the y tick labels and axis title (a decade axis's `1e-10`
+/// included).
+const STACK_LEFT_PX: u32 = 105;
+/// Right of stacked panels, in px.
+const STACK_RIGHT_PX: u32 = 40;
+
+/// The margins of `n` panels of equal height stacked top to bottom on an area `height_px`
+/// high, above `end_px` (where the notes or the legend begin): every chart of panels over one
+/// another (the sweep's, the x-y figures') lays them out alike.
+pub fn stacked(height_px: i32, end_px: i32, n: usize) -> impl Iterator<Item = Margins> {
+    let n = n.max(1) as i32;
+    let panel_h = (end_px - STACK_BELOW_PX - STACK_TOP_PX - STACK_GAP_PX * (n - 1)) / n;
+    (0..n).map(move |i| {
+        let top = STACK_TOP_PX + i * (panel_h + STACK_GAP_PX);
+        Margins {
+            top: top as u32,
+            bottom: (height_px - top - panel_h) as u32,
+            left: STACK_LEFT_PX,
+            right: STACK_RIGHT_PX,
+        }
+    })
+}
+
 /// A chart on `area` with the given plot-space axes and margins (no plotters mesh).
 ///
 /// Inside [`record_frames`] it also notes where its plotting area lies (the gallery's

@@ -87,8 +87,9 @@ impl Picture for Convergence {
         };
         let objective_note = match (trace.first(), trace.last()) {
             (Some(a), Some(b)) => format!(
-                "φ² goes from {:.3} to {:.3} N²: at the jam the minimum is the corrected Eq. 1 \
-                 force at the ground (ERRATA); the iterates reach it from inside the cones.",
+                "φ² goes from {:.3} to {:.3} N²: at the jam the minimum is the ground force of \
+                 Eq. 1 with its sign corrected (see the crate docs' corrections to the paper); \
+                 the iterates reach it from inside the cones.",
                 a.objective_n2.0, b.objective_n2.0
             ),
             _ => "clarabel returned no iterations.".into(),

@@ -31,13 +31,59 @@ where
     Ok(svg.into_bytes())
 }
 
-/// A PDF of one page from the SVG `svg` ([`svg`]'s bytes: the same drawing, its text already
-/// outlines, so the PDF embeds no font), through `svg2pdf`; 1 px is 1 pt (72 dpi), so a
-/// 1000 x 800 px chart prints 35.3 x 28.2 cm and scales without loss.
+choice! {
+    /// A sheet of paper a PDF is printed on, portrait: the chart is fitted onto it within
+    /// a margin of `PAPER_MARGIN_PT` (36 pt, half an inch), centred across and at the top.
+    pub enum Paper {
+        /// ISO A4, 210 x 297 mm (595 x 842 pt).
+        A4 = "a4",
+        /// US Letter, 8.5 x 11 in (612 x 792 pt).
+        Letter = "letter",
+    }
+}
+
+/// The margin around a chart on paper, in pt: half an inch (12.7 mm), wider than the edge an
+/// office printer cannot print on (about 5 mm).
+pub const PAPER_MARGIN_PT: f64 = 36.0;
+
+impl Paper {
+    /// Width and height in pt (1/72 in), portrait.
+    pub fn size_pt(self) -> (f64, f64) {
+        const PT_PER_MM: f64 = 72.0 / 25.4;
+        match self {
+            Paper::A4 => (210.0 * PT_PER_MM, 297.0 * PT_PER_MM),
+            Paper::Letter => (8.5 * 72.0, 11.0 * 72.0),
+        }
+    }
+
+    /// The SVG `svg` of `size_px` (width, height) on this paper: an SVG of the page's size in
+    /// pt holding the chart, scaled to fit within the margins, centred across, at the top.
+    fn page(self, svg: &[u8], (width_px, height_px): (u32, u32)) -> Result<Vec<u8>, String> {
+        let chart = std::str::from_utf8(svg).map_err(|e| format!("the SVG is not UTF-8: {e}"))?;
+        let (w, h) = (f64::from(width_px), f64::from(height_px));
+        let (page_w, page_h) = self.size_pt();
+        let m = PAPER_MARGIN_PT;
+        let scale = ((page_w - 2.0 * m) / w).min((page_h - 2.0 * m) / h);
+        let left = (page_w - scale * w) / 2.0;
+        Ok(format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{page_w}\" height=\"{page_h}\" \
+             viewBox=\"0 0 {page_w} {page_h}\"><g transform=\"translate({left} {m}) \
+             scale({scale})\">{chart}</g></svg>"
+        )
+        .into_bytes())
+    }
+}
+
+/// A PDF of one page from the SVG `svg` of `size_px` ([`svg`]'s bytes: the same drawing, its
+/// text already outlines, so the PDF embeds no font), through `svg2pdf`. Without `paper` the
+/// page is the chart's size, 1 px to 1 pt (72 dpi), so a 1000 x 800 px chart prints 35.3 x
+/// 28.2 cm and scales without loss; on `paper` the chart is fitted onto the sheet.
 ///
 /// The bytes depend only on the SVG's: `svg2pdf` writes no date, producer id or random
 /// document id (`tests/cli_pdf.rs` renders twice and on 1 and 2 threads and compares).
-pub fn pdf(svg: &[u8]) -> Result<Vec<u8>, String> {
+pub fn pdf(svg: &[u8], size_px: (u32, u32), paper: Option<Paper>) -> Result<Vec<u8>, String> {
+    let page = paper.map(|p| p.page(svg, size_px)).transpose()?;
+    let svg = page.as_deref().unwrap_or(svg);
     let tree = svg2pdf::usvg::Tree::from_data(svg, &svg2pdf::usvg::Options::default())
         .map_err(|e| format!("the SVG does not parse for the PDF: {e}"))?;
     svg2pdf::to_pdf(
@@ -115,13 +161,39 @@ pub fn encode_png(rgb: &[u8], width: u32, height: u32) -> std::result::Result<Ve
 ///
 /// The four sums come from one pass over the row that filters each byte four ways and keeps
 /// only the sums ([`filter_sums`]); the chosen filter then writes the row once. (Four passes
-/// that each wrote a filtered row and summed it with u64 adds were a quarter of the PNG.)
+/// that each wrote a filtered row and summed it with u64 adds were a quarter of the PNG.) A
+/// row that repeats the one above is all zeros under Up and Paeth, and Paeth wins that tie:
+/// it is not summed. Where the processor has AVX2 the same code is compiled for it, 32 bytes
+/// a lane instead of 16 (same integers, same bytes: `idat_of_line_art_is_the_png_crates_own`).
 fn filter_rows(data: &[u8], row_len: usize, bpp: usize) -> Vec<u8> {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the processor has AVX2, checked just above.
+        return unsafe { filter_rows_avx2(data, row_len, bpp) };
+    }
+    filter_rows_in::<16>(data, row_len, bpp)
+}
+
+/// [`filter_rows`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn filter_rows_avx2(data: &[u8], row_len: usize, bpp: usize) -> Vec<u8> {
+    filter_rows_in::<32>(data, row_len, bpp)
+}
+
+/// [`filter_rows`], the sums taken `PIECE` bytes at a time.
+#[inline(always)]
+fn filter_rows_in<const PIECE: usize>(data: &[u8], row_len: usize, bpp: usize) -> Vec<u8> {
     let zeros = vec![0u8; row_len];
     let mut out = Vec::with_capacity(data.len() + data.len() / row_len.max(1));
     let mut prev: &[u8] = &zeros;
     for cur in data.chunks_exact(row_len) {
-        let sums = filter_sums(bpp, prev, cur);
+        if cur == prev {
+            out.push(PAETH);
+            out.resize(out.len() + row_len, 0);
+            continue;
+        }
+        let sums = filter_sums::<PIECE>(bpp, prev, cur);
         // PNG filter types 1 Sub, 2 Up, 3 Average, 4 Paeth: the least sum, the later on a tie.
         let mut best = 0;
         for k in 1..4 {
@@ -139,14 +211,25 @@ fn filter_rows(data: &[u8], row_len: usize, bpp: usize) -> Vec<u8> {
     out
 }
 
+/// The PNG filter type of Paeth.
+const PAETH: u8 = 4;
+
 /// The sums of |filtered byte| (read as signed) of row `cur` under Sub, Up, Average and
-/// Paeth, `prev` the row above, in one pass: the bytes go into u16 lanes, 256 bytes at a time
-/// (at most 128 each, so no lane overflows), which the compiler vectorises.
-fn filter_sums(bpp: usize, prev: &[u8], cur: &[u8]) -> [u64; 4] {
+/// Paeth, `prev` the row above, in one pass of `PIECE` bytes at a time into u16 lanes (at most
+/// 128 a byte, so 256 pieces fit before the lanes are added up), which the compiler
+/// vectorises.
+///
+/// Line art repeats: where a piece, the byte left of it and the two above are all one value,
+/// every filter gives 0 and the piece is skipped; where only the row above repeats the piece
+/// and its left byte, Up and Paeth give 0 (Paeth predicts b, or a = b = c) and Sub and Average
+/// alone are summed: on a chart with a grid, most pieces take one of the two.
+#[inline(always)]
+fn filter_sums<const PIECE: usize>(bpp: usize, prev: &[u8], cur: &[u8]) -> [u64; 4] {
     let n = cur.len();
     let prev = &prev[..n];
     let head = bpp.min(n);
     let abs = |v: u8| u16::from((v as i8).unsigned_abs());
+    let avg = |a: u8, b: u8| ((u16::from(a) + u16::from(b)) / 2) as u8;
     let mut sums = [0u64; 4];
     // The first pixel: a = c = 0, so Sub keeps the byte and Paeth predicts b.
     for i in 0..head {
@@ -163,23 +246,53 @@ fn filter_sums(bpp: usize, prev: &[u8], cur: &[u8]) -> [u64; 4] {
     }
     let (a, c) = (&cur[..n - head], &prev[..n - head]);
     let (x, b) = (&cur[head..], &prev[head..]);
-    const BLOCK: usize = 256;
-    for (((x, a), b), c) in x
-        .chunks(BLOCK)
-        .zip(a.chunks(BLOCK))
-        .zip(b.chunks(BLOCK))
-        .zip(c.chunks(BLOCK))
-    {
-        let mut block = [0u16; 4];
-        for (((&x, &a), &b), &c) in x.iter().zip(a).zip(b).zip(c) {
-            let avg = ((u16::from(a) + u16::from(b)) / 2) as u8;
-            block[0] += abs(x.wrapping_sub(a));
-            block[1] += abs(x.wrapping_sub(b));
-            block[2] += abs(x.wrapping_sub(avg));
-            block[3] += abs(x.wrapping_sub(paeth(a, b, c)));
+    let mut lanes = [[0u16; PIECE]; 4];
+    let mut pieces_in_lanes = 0;
+    let add_up = |lanes: &mut [[u16; PIECE]; 4], sums: &mut [u64; 4]| {
+        for (s, l) in sums.iter_mut().zip(lanes.iter_mut()) {
+            *s += l.iter().map(|&v| u64::from(v)).sum::<u64>();
+            *l = [0; PIECE];
         }
-        for (s, v) in sums.iter_mut().zip(block) {
-            *s += u64::from(v);
+    };
+    let (mut xs, mut as_) = (x.chunks_exact(PIECE), a.chunks_exact(PIECE));
+    let (mut bs, mut cs) = (b.chunks_exact(PIECE), c.chunks_exact(PIECE));
+    for (((x, a), b), c) in (&mut xs).zip(&mut as_).zip(&mut bs).zip(&mut cs) {
+        let piece = |s: &[u8]| -> [u8; PIECE] { s.try_into().expect("a piece") };
+        let (x, a, b, c) = (piece(x), piece(a), piece(b), piece(c));
+        if x == b && a == c {
+            if x == a {
+                continue;
+            }
+            for j in 0..PIECE {
+                lanes[0][j] += abs(x[j].wrapping_sub(a[j]));
+                lanes[2][j] += abs(x[j].wrapping_sub(avg(a[j], x[j])));
+            }
+        } else {
+            for j in 0..PIECE {
+                lanes[0][j] += abs(x[j].wrapping_sub(a[j]));
+                lanes[1][j] += abs(x[j].wrapping_sub(b[j]));
+                lanes[2][j] += abs(x[j].wrapping_sub(avg(a[j], b[j])));
+                lanes[3][j] += abs(x[j].wrapping_sub(paeth(a[j], b[j], c[j])));
+            }
+        }
+        pieces_in_lanes += 1;
+        if pieces_in_lanes == 256 {
+            add_up(&mut lanes, &mut sums);
+            pieces_in_lanes = 0;
+        }
+    }
+    add_up(&mut lanes, &mut sums);
+    let rest =
+        (xs.remainder().iter().zip(as_.remainder())).zip(bs.remainder().iter().zip(cs.remainder()));
+    for ((&x, &a), (&b, &c)) in rest {
+        let filtered = [
+            x.wrapping_sub(a),
+            x.wrapping_sub(b),
+            x.wrapping_sub(avg(a, b)),
+            x.wrapping_sub(paeth(a, b, c)),
+        ];
+        for (s, f) in sums.iter_mut().zip(filtered) {
+            *s += u64::from(abs(f));
         }
     }
     sums
@@ -188,6 +301,7 @@ fn filter_sums(bpp: usize, prev: &[u8], cur: &[u8]) -> [u64; 4] {
 /// Row `cur` under PNG filter type `filter` (1 Sub, 2 Up, 3 Average, 4 Paeth) into `out`,
 /// `prev` the row above: each byte less its prediction from left `a`, above `b` and
 /// upper-left `c` (0 left of the first pixel).
+#[inline(always)]
 fn filter_row(filter: u8, bpp: usize, prev: &[u8], cur: &[u8], out: &mut [u8]) {
     let n = cur.len();
     let (prev, out) = (&prev[..n], &mut out[..n]);
@@ -251,22 +365,26 @@ fn paeth(a: u8, b: u8, c: u8) -> u8 {
 /// Line art repeats the previous pixel's colour almost everywhere, so the image is read in
 /// runs: a pixel's colour is looked up once, and the pixels after it that repeat it are found
 /// by comparing the bytes with those three before them, 16 at a time ([`repeats`]), and take
-/// its index by a fill. The lookup is a small open-addressed table (at most 256 keys in 1024
-/// slots) instead of a `HashMap`, whose SipHash per pixel was a quarter of `render fig3`.
-/// Same palette order, same bytes; `palette_matches_the_hash_map_oracle` checks it against
-/// the plain `HashMap`.
+/// its index by fixed 16-byte fills. The lookup is a small open-addressed table (at most 256
+/// keys in 1024 slots) instead of a `HashMap`, whose SipHash per pixel was a quarter of
+/// `render fig3`. Same palette order, same bytes; `palette_matches_the_hash_map_oracle` checks
+/// it against the plain `HashMap`.
 fn palette(rgb: &[u8]) -> Option<(Vec<u8>, Vec<u8>)> {
     /// Slots of the table: a power of two, four times the 256 keys so probes stay short.
     const SLOTS: usize = 1024;
     /// Marks an empty slot: no RGB triple packs to it (the top byte of a packed key is 0).
     const EMPTY: u32 = u32::MAX;
+    /// Indices written at once; the buffer has that many bytes past its end until the last.
+    const FILL: usize = 16;
     let mut keys = [EMPTY; SLOTS];
     let mut values = [0u8; SLOTS];
     let mut palette = Vec::new();
     let pixels = rgb.len() / 3;
-    let mut indices = Vec::with_capacity(pixels);
-    while indices.len() < pixels {
-        let at = 3 * indices.len();
+    let rgb = &rgb[..3 * pixels];
+    let mut indices = vec![0u8; pixels + FILL];
+    let mut done = 0;
+    while done < pixels {
+        let at = 3 * done;
         let px = &rgb[at..at + 3];
         let key = u32::from(px[0]) << 16 | u32::from(px[1]) << 8 | u32::from(px[2]);
         // Fibonacci hashing: the top bits of key * 2^32 / phi.
@@ -285,24 +403,35 @@ fn palette(rgb: &[u8]) -> Option<(Vec<u8>, Vec<u8>)> {
             slot = (slot + 1) & (SLOTS - 1);
         };
         // This pixel and the whole pixels after it whose bytes repeat those 3 before them.
-        let run = 1 + repeats(&rgb[..3 * pixels], at + 3) / 3;
-        indices.resize(indices.len() + run, i);
+        let end = done + 1 + repeats(rgb, at + 3) / 3;
+        while done < end {
+            indices[done..done + FILL].copy_from_slice(&[i; FILL]);
+            done += FILL;
+        }
+        done = end;
     }
+    indices.truncate(pixels);
     Some((palette, indices))
 }
 
 /// How many bytes of `bytes` from `start` (>= 3) equal the byte three before them, in a row:
-/// 16 at a time while whole blocks match, then one at a time.
+/// 16 at a time as a u128 each, the first that differs found from the trailing zeros of
+/// their xor, then one at a time.
 fn repeats(bytes: &[u8], start: usize) -> usize {
     const BLOCK: usize = 16;
-    // Fixed-size arrays compare inline, where slices would call memcmp.
-    let block = |k: usize| -> [u8; BLOCK] {
-        bytes[k..k + BLOCK]
-            .try_into()
-            .expect("a slice of BLOCK bytes")
+    let word = |k: usize| -> u128 {
+        u128::from_le_bytes(
+            bytes[k..k + BLOCK]
+                .try_into()
+                .expect("a slice of BLOCK bytes"),
+        )
     };
     let mut j = start;
-    while j + BLOCK <= bytes.len() && block(j) == block(j - 3) {
+    while j + BLOCK <= bytes.len() {
+        let differ = word(j) ^ word(j - 3);
+        if differ != 0 {
+            return j - start + (differ.trailing_zeros() / 8) as usize;
+        }
         j += BLOCK;
     }
     while j < bytes.len() && bytes[j] == bytes[j - 3] {
@@ -382,9 +511,38 @@ mod tests {
         out
     }
 
+    /// A xorshift generator of pseudo-random u64 from `seed`.
+    fn xorshift(seed: u64) -> impl FnMut() -> u64 {
+        let mut state = seed | 1;
+        move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        }
+    }
+
+    /// Rows of noise longer than 256 pieces of either width (a filter sum's u16 lanes are
+    /// added up every 256 pieces): the png crate's rows, from both widths.
+    #[test]
+    fn rows_past_the_lanes_capacity_filter_as_the_png_crates() {
+        let mut next = xorshift(7);
+        let (width, height) = (3000u32, 4u32);
+        let rgb: Vec<u8> = (0..3 * width * height).map(|_| next() as u8).collect();
+        assert_eq!(
+            encode_png(&rgb, width, height).unwrap(),
+            encode_png_oracle(&rgb, width, height)
+        );
+        let row_len = 3 * width as usize;
+        assert_eq!(
+            filter_rows_in::<16>(&rgb, row_len, 3),
+            filter_rows_in::<32>(&rgb, row_len, 3)
+        );
+    }
+
     proptest::proptest! {
         /// Indexed and RGB images of runs, gradients and noise: every filter wins somewhere;
-        /// rows up to 600 bytes, past a filter sum's 256-byte blocks.
+        /// rows up to 600 bytes, many pieces of a filter sum.
         #[test]
         fn idat_is_the_png_crates_own(
             width in 1u32..200,
@@ -392,13 +550,7 @@ mod tests {
             colours in 1usize..400,
             seed in proptest::prelude::any::<u64>(),
         ) {
-            let mut state = seed | 1;
-            let mut next = || {
-                state ^= state << 13;
-                state ^= state >> 7;
-                state ^= state << 17;
-                state
-            };
+            let mut next = xorshift(seed);
             let n = (width * height) as usize;
             let rgb: Vec<u8> = (0..n)
                 .flat_map(|i| {
@@ -412,6 +564,63 @@ mod tests {
                 .collect();
             let png = encode_png(&rgb, width, height).unwrap();
             proptest::prop_assert_eq!(png, encode_png_oracle(&rgb, width, height));
+        }
+    }
+
+    proptest::proptest! {
+        /// Line art as charts have it: a background, vertical lines that run down many rows,
+        /// horizontal lines, rows that repeat the one above and rows that repeat it but for a
+        /// few pixels, so that pieces are skipped, summed short and summed whole; indexed and
+        /// RGB. Both piece widths give the png crate's rows.
+        #[test]
+        fn idat_of_line_art_is_the_png_crates_own(
+            width in 1u32..150,
+            height in 1u32..30,
+            colours in 2u32..300,
+            seed in proptest::prelude::any::<u64>(),
+        ) {
+            let mut next = xorshift(seed);
+            let colour = |k: u64| {
+                let k = (k % u64::from(colours)) as u32;
+                [(k * 37) as u8, (k * 11) as u8, (k >> 3) as u8]
+            };
+            let (w, h) = (width as usize, height as usize);
+            let verticals: Vec<usize> = (0..1 + next() % 8).map(|_| next() as usize % w).collect();
+            let mut rows: Vec<Vec<[u8; 3]>> = Vec::new();
+            for _ in 0..h {
+                let row = match (rows.last(), next() % 4) {
+                    (Some(above), 0) => above.clone(),
+                    (Some(above), 1) => {
+                        let mut row = above.clone();
+                        for _ in 0..1 + next() % 3 {
+                            row[next() as usize % w] = colour(next());
+                        }
+                        row
+                    }
+                    (_, 2) => vec![colour(next()); w],
+                    _ => {
+                        let mut row = vec![colour(0); w];
+                        for &v in &verticals {
+                            row[v] = colour(1 + v as u64);
+                        }
+                        row
+                    }
+                };
+                rows.push(row);
+            }
+            let rgb: Vec<u8> = rows.concat().concat();
+            proptest::prop_assert_eq!(
+                encode_png(&rgb, width, height).unwrap(),
+                encode_png_oracle(&rgb, width, height)
+            );
+            let mut inputs = vec![(rgb.clone(), 3 * w, 3)];
+            inputs.extend(palette(&rgb).map(|(_, indices)| (indices, w, 1)));
+            for (data, row_len, bpp) in inputs {
+                proptest::prop_assert_eq!(
+                    filter_rows_in::<16>(&data, row_len, bpp),
+                    filter_rows_in::<32>(&data, row_len, bpp)
+                );
+            }
         }
     }
 

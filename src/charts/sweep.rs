@@ -7,7 +7,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::axes::{self, DrawResult, Margins, PlotAxis, PlotFrame};
+use super::axes::{self, DrawResult, PlotAxis, PlotFrame};
 use super::collide::{self, PxBox};
 use super::legend::{self, LegendEntry, LegendGroup, Swatch};
 use super::picture::Picture;
@@ -132,17 +132,12 @@ impl Picture for Sweep {
         let legend_top = h - 12 - rows * legend::ROW_PX;
         let a = &self.data.settings.axis;
         let x = PlotAxis::new(a.min, a.max, a.scale, axis_label(a.param));
-        let (top, gap, n) = (72, 78, self.data.settings.panels.len() as i32);
-        let panel_h = (legend_top - 70 - top - gap * (n - 1)) / n;
-        for (i, panel) in self.data.settings.panels.iter().enumerate() {
+        let panels = &self.data.settings.panels;
+        for (panel, m) in panels
+            .iter()
+            .zip(axes::stacked(h, legend_top, panels.len()))
+        {
             let y = self.panel_axis(*panel);
-            let t = top + i as i32 * (panel_h + gap);
-            let m = Margins {
-                top: t as u32,
-                bottom: (h - t - panel_h) as u32,
-                left: 95,
-                right: 40,
-            };
             let chart = axes::build_chart(root, &x, &y, m)?;
             // Under the grid and every curve: the band is the background the curves are read on.
             sweep_band::draw(&chart, &self.data.band, *panel, (&x, &y))?;

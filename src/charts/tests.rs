@@ -323,6 +323,17 @@ fn fig4_and_fig5_draw_the_jam_of_the_paper_case() {
     );
 }
 
+/// Fig. 4's note called the minimum the corrected Eq. 1 force "(ERRATA)", naming a file that
+/// is not in the repository; the corrections are listed in the crate docs, and the note points
+/// there.
+#[test]
+fn fig4_points_at_the_corrections_in_the_crate_docs() {
+    let fig4 = load_scene(&charts_dir(), "fig4").unwrap();
+    let svg = String::from_utf8(render(&fig4, Formats::Svg).unwrap().svg.unwrap()).unwrap();
+    assert!(!svg.contains("ERRATA"), "{svg}");
+    assert!(svg.contains("corrections to the paper"), "{svg}");
+}
+
 /// The rolling layer's points lie on the F -> infinity line for equal frictions (minnorm docs:
 /// theta_jam = 2 atan mu, x_jam = r/mu), to the bisection's 1e-9 rad (about 3e-8 mm here).
 #[test]

@@ -6,7 +6,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::axes::{self, DrawResult, Margins, PlotAxis};
+use super::axes::{self, DrawResult, PlotAxis};
 use super::legend::{self, LegendEntry, Swatch};
 use super::style::{self, LineKind, Marker};
 use crate::grid::AxisScale;
@@ -106,9 +106,6 @@ pub struct Figure {
     pub notes: Vec<String>,
 }
 
-/// Room in px between stacked panels (tick labels and the x-axis label of the upper one).
-const GAP_PX: i32 = 78;
-
 impl Figure {
     fn legend(&self) -> Vec<LegendEntry> {
         let mut out: Vec<LegendEntry> = Vec::new();
@@ -134,16 +131,8 @@ impl Figure {
         let note_px = style::NOTE_PX as i32 + 6;
         let notes = wrap(root, &self.notes, legend::wrap_width(root))?;
         let notes_top = legend_top - 6 - notes.len() as i32 * note_px;
-        let (top, n) = (72, self.panels.len().max(1) as i32);
-        let panel_h = (notes_top - 64 - top - GAP_PX * (n - 1)) / n;
-        for (i, panel) in self.panels.iter().enumerate() {
-            let t = top + i as i32 * (panel_h + GAP_PX);
-            let m = Margins {
-                top: t as u32,
-                bottom: (h - t - panel_h) as u32,
-                left: 105,
-                right: 40,
-            };
+        let stack = axes::stacked(h, notes_top, self.panels.len());
+        for (panel, m) in self.panels.iter().zip(stack) {
             let chart = axes::build_chart(root, &panel.x, &panel.y, m)?;
             axes::draw_grid(&chart, &panel.x, &panel.y)?;
             let area = chart.plotting_area();

@@ -23,6 +23,24 @@ use crate::study::ReferenceKind;
 use crate::study::accuracy::{self, AccuracyReport, AccuracyRow, AccuracySettings};
 use crate::study::map_cost::{self, MapCostReport, MapCostSettings};
 
+settings! {
+    /// The report's own flags, by the key its settings' messages name
+    /// ([`AccuracySettings::validate`], [`MapCostSettings::validate`]).
+    section = "accuracy";
+    aliases ACCURACY_FLAGS {
+        tolerances, flag: Some("tolerances");
+        methods, flag: Some("methods");
+        penetrations_um, flag: Some("penetrations");
+        min_norm_tolerances, flag: Some("min-norm-tolerances");
+        nonsmooth_steps_deg, flag: Some("nonsmooth-steps");
+        converged_step_deg, flag: Some("converged-step");
+        runs, flag: Some("runs");
+        converged_rtol, flag: Some("converged-rtol");
+        max_steps, flag: Some("max-steps");
+        cells_per_axis, flag: Some("map-cells");
+    }
+}
+
 /// Flags of `accuracy`.
 #[derive(Debug, Clone, Args)]
 pub struct AccuracyArgs {
@@ -31,50 +49,50 @@ pub struct AccuracyArgs {
     #[command(flatten)]
     pub dynamics: DynamicsArgs,
     /// Integrator tolerances rtol = atol, comma-separated, at most 64.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+    #[arg(long = flag!(ACCURACY_FLAGS, tolerances), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
           value_parser = parse_f64, default_value = list(&defaults().tolerances))]
     pub tolerances: Vec<f64>,
     /// Integrators, comma-separated.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+    #[arg(long = flag!(ACCURACY_FLAGS, methods), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
           default_value = defaults().methods.iter().map(|m| m.as_str()).collect::<Vec<_>>().join(","))]
     pub methods: Vec<Method>,
     /// Contact stiffnesses beside --stiffness, as penetration in um at --force, at most 8.
     ///
     /// k = F / delta^e; "none" keeps only --stiffness.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+    #[arg(long = flag!(ACCURACY_FLAGS, penetrations_um), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
           default_value = list(&defaults().penetrations_um))]
     pub penetrations: Vec<String>,
     /// clarabel tolerances of the min-norm rows, comma-separated, at most 64; "none" skips them.
     ///
     /// The exact path is always a row.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+    #[arg(long = flag!(ACCURACY_FLAGS, min_norm_tolerances), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
           default_value = list(&defaults().min_norm_tolerances))]
     pub min_norm_tolerances: Vec<String>,
     /// Steps of the nonsmooth rows in deg of palm turn, comma-separated, at most 64; "none"
     /// skips them.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
+    #[arg(long = flag!(ACCURACY_FLAGS, nonsmooth_steps_deg), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
           default_value = list(&defaults().nonsmooth_steps_deg))]
     pub nonsmooth_steps: Vec<String>,
     /// Step of the nonsmooth method's converged answer in deg.
-    #[arg(long, value_name = "DEG", value_parser = parse_f64,
+    #[arg(long = flag!(ACCURACY_FLAGS, converged_step_deg), value_name = "DEG", value_parser = parse_f64,
           default_value = number_text(defaults().converged_step_deg))]
     pub converged_step: f64,
     /// Timed runs per row, 1 to 1000; the median is reported.
-    #[arg(long, value_name = "N", default_value_t = defaults().runs)]
+    #[arg(long = flag!(ACCURACY_FLAGS, runs), value_name = "N", default_value_t = defaults().runs)]
     pub runs: usize,
     /// Tolerance of the converged answers the integration error is measured against.
-    #[arg(long, value_name = "RTOL", alias = "reference-rtol", value_parser = parse_f64,
+    #[arg(long = flag!(ACCURACY_FLAGS, converged_rtol), value_name = "RTOL", alias = "reference-rtol", value_parser = parse_f64,
           default_value = number_text(defaults().converged_rtol))]
     pub converged_rtol: f64,
     /// Step limit of every simulation.
-    #[arg(long, value_name = "N", default_value_t = defaults().max_steps)]
+    #[arg(long = flag!(ACCURACY_FLAGS, max_steps), value_name = "N", default_value_t = defaults().max_steps)]
     pub max_steps: u64,
     /// Cells per axis of the map whose cost is reported, 2 to 2000; 0 skips it.
     ///
     /// The map is mu 0.1-0.8 by F 20-2000 N (log); the statics answer all of it, the min-norm
     /// program 40 of its columns (every F at 40 values of mu) by its exact path and 4 by
     /// clarabel, the simulation 20 x 20 cells, and their time is extrapolated.
-    #[arg(long, value_name = "N", default_value_t = MapCostSettings::default().cells_per_axis)]
+    #[arg(long = flag!(ACCURACY_FLAGS, cells_per_axis), value_name = "N", default_value_t = MapCostSettings::default().cells_per_axis)]
     pub map_cells: usize,
     /// Output format on stdout.
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]
@@ -202,7 +220,13 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
     bar.finish_and_clear();
     let map = map.map(|s| map_cost::run(&config, &s)).transpose()?;
     let elapsed = t0.elapsed().as_secs_f64();
-    let md = markdown(&report, map.as_ref(), settings.runs, elapsed);
+    let md = markdown(
+        &report,
+        map.as_ref(),
+        settings.runs,
+        elapsed,
+        config.scene.force_n,
+    );
     let csv = csv_rows(&report)?;
     let json = serde_json::to_string_pretty(&serde_json::json!({
         "accuracy": report,
@@ -282,10 +306,86 @@ pub(crate) fn fixed(v: Option<f64>, prec: usize) -> String {
     v.map_or("-".into(), |v| format!("{v:.prec$}"))
 }
 
-fn markdown(r: &AccuracyReport, map: Option<&MapCostReport>, runs: usize, elapsed: f64) -> String {
-    let mut s = String::from(
-        "# Error against run time, against the physical reference\n\n\
-         Each row answers \"where does it jam\" through the model port. `x error` is against the \
+/// The report's opening line: what to design to, from the references and the rows' errors.
+///
+/// The closed form at F for a push limited to F, with how close the min-norm program comes to
+/// it; the simulation's own reference (the rigid limit for a palm driven by motion, the
+/// converged rigid dynamics for a push of F) with how close the simulation comes to it at the
+/// `[dynamics]` contact (its first curve's floor, as in the floors table).
+fn summary(r: &AccuracyReport, force_n: f64) -> String {
+    let reference = |kind: ReferenceKind| r.references.iter().find(|x| x.kind == kind);
+    let rel = |v: f64| match v {
+        v if v >= 1e-4 => format!("{:.2} %", 100.0 * v),
+        v => format!("{v:.1e}"),
+    };
+    let closed = reference(ReferenceKind::ClosedForm);
+    let mut s = match closed.and_then(|c| c.x_jam_mm.zip(c.theta_jam_deg)) {
+        Some((x, theta)) => format!(
+            "Design to x_jam = {x:.3} mm (theta_jam = {theta:.3} deg), the closed form at F = \
+             {} N",
+            number_text(force_n)
+        ),
+        None => format!(
+            "Nothing to design to at F = {} N: the closed form says {}",
+            number_text(force_n),
+            closed.map_or("nothing".into(), |c| c.status.to_string())
+        ),
+    };
+    let min_norm = (r.rows.iter())
+        .filter(|row| row.model == ModelKind::MinNorm)
+        .filter_map(|row| row.x_rel_error)
+        .max_by(f64::total_cmp);
+    if let Some(e) = min_norm {
+        let _ = write!(s, " (the min-norm program within {} of it)", rel(e));
+    }
+    let simulated = r.rows.iter().find(|row| row.model == ModelKind::Dynamics);
+    let own = simulated.and_then(|first| {
+        let x = reference(first.reference)?.x_jam_mm?;
+        let floor = (r.rows.iter())
+            .filter(|row| row.method == first.method && row.penetration_um == first.penetration_um)
+            .filter(|row| settled(row))
+            .filter_map(|row| row.x_rel_error)
+            .min_by(f64::total_cmp);
+        let contact = match first.method {
+            "nonsmooth" => "with rigid contacts",
+            _ => "at the [dynamics] contact",
+        };
+        Some((first.reference, x, floor, contact))
+    });
+    match own {
+        Some((kind, x, floor, contact)) => {
+            let what = match kind {
+                ReferenceKind::Rigid => "the rigid limit, for a palm driven by motion",
+                _ => "the converged rigid dynamics, for a push of F with inertia",
+            };
+            let _ = write!(s, ", or to {x:.3} mm, {what}");
+            if let Some(f) = floor {
+                let _ = write!(
+                    s,
+                    "; the simulation comes within {} of it {contact}",
+                    rel(f)
+                );
+            }
+        }
+        None => s.push_str(" (no simulation row has a reference of its own)"),
+    }
+    s.push_str(".\n");
+    s
+}
+
+fn markdown(
+    r: &AccuracyReport,
+    map: Option<&MapCostReport>,
+    runs: usize,
+    elapsed: f64,
+    force_n: f64,
+) -> String {
+    let mut s = format!(
+        "# Error against run time, against the physical reference\n\n{}\n",
+        summary(r, force_n)
+    );
+    s.push_str(
+        "Each row answers \"where does it jam\" through the model port. `x error` is against the \
          physical reference of the scene as the row poses it (closed_form: the corrected Eq. 1 \
          at F, for the statics and min-norm; rigid: x_rigid, F -> infinity, r/mu for equal \
          frictions, for the motion drive; rigid_dynamics: the converged rigid simulation, where \

@@ -66,33 +66,6 @@ impl SceneArgs {
     }
 }
 
-/// The flag that sets a key, for error messages: a declared setting's flags
-/// ([`crate::settings::flag_for`]), or a report's own flag.
-pub fn flag_for_key(key: &str) -> Option<String> {
-    if let Some(flags) = crate::settings::flag_for(key) {
-        return Some(flags);
-    }
-    let flag = match key {
-        "tolerances" => "--tolerances",
-        "converged_rtol" => "--converged-rtol",
-        "min_norm_tolerances" => "--min-norm-tolerances",
-        "penetrations_um" => "--penetrations",
-        "methods" => "--methods",
-        "nonsmooth_steps_deg" => "--nonsmooth-steps",
-        "converged_step_deg" => "--converged-step",
-        "max_steps" => "--max-steps",
-        "cells_per_axis" => "--map-cells",
-        "cases" => "--cases",
-        "x_target_mm" => "--x-target",
-        "runs" => "--runs",
-        "samples" => "--samples",
-        "quantiles" => "--quantiles",
-        "before_mm" => "--before",
-        _ => return None,
-    };
-    Some(flag.to_string())
-}
-
 /// Which model answers `solve`: one of the port's models by its name, or all of them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ModelChoice {

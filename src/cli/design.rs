@@ -15,6 +15,14 @@ use crate::numbers::{Num, fixed};
 use crate::scene::SceneParams;
 use crate::uncertain::UncertainSet;
 
+settings! {
+    /// The flag of `design`'s target, by the key its messages name.
+    section = "design";
+    aliases DESIGN_FLAGS {
+        x_target_mm, flag: Some("x-target");
+    }
+}
+
 /// Flags of `design`.
 #[derive(Debug, Clone, Args)]
 pub struct DesignArgs {
@@ -23,7 +31,8 @@ pub struct DesignArgs {
     /// Target disc position x in mm (from the hinge): carry the part at least this far.
     ///
     /// Above x(90 deg) = r + h, the position at a right-angled palm.
-    #[arg(long, value_name = "MM", allow_negative_numbers = true, value_parser = parse_f64)]
+    #[arg(long = flag!(DESIGN_FLAGS, x_target_mm), value_name = "MM", allow_negative_numbers = true,
+          value_parser = parse_f64)]
     pub x_target: f64,
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]

@@ -173,14 +173,14 @@ impl From<String> for Done {
 /// changes (`render --check`), 2 bad input or failure.
 pub fn main() -> i32 {
     crate::atomic::install_signal_cleanup();
-    let cli = match Cli::try_parse() {
-        Ok(cli) => cli,
+    let (cli, name) = match parse(std::env::args_os()) {
+        Ok(parsed) => parsed,
         Err(e) => return clap_exit(e),
     };
     let pool = match threads::start() {
         Ok(pool) => pool,
         Err(e) => {
-            eprintln!("jamchart: {}", terminal::safe(&describe(&e)));
+            eprintln!("jamchart: {}", terminal::safe(&describe(&e, &name)));
             return 2;
         }
     };
@@ -212,7 +212,7 @@ pub fn main() -> i32 {
             printed.max(code)
         }
         Err(e) => {
-            eprintln!("jamchart: {}", terminal::safe(&describe(&e)));
+            eprintln!("jamchart: {}", terminal::safe(&describe(&e, &name)));
             2
         }
     }
@@ -290,12 +290,40 @@ fn one_line(rendered: &str) -> String {
     format!("{text}; see 'jamchart --help'")
 }
 
-/// The error message, with the flag that sets a key named beside the key.
-fn describe(e: &Error) -> String {
+/// The command line parsed, and the name of its subcommand.
+fn parse(args: impl IntoIterator<Item = std::ffi::OsString>) -> Result<(Cli, String), clap::Error> {
+    use clap::{CommandFactory, FromArgMatches};
+    let mut matches = Cli::command().try_get_matches_from(args)?;
+    let name = matches.subcommand_name().unwrap_or_default().to_string();
+    let cli = Cli::from_arg_matches_mut(&mut matches).map_err(|e| e.format(&mut Cli::command()))?;
+    Ok((cli, name))
+}
+
+/// The commands' own flags that set a key a message may name (the settings' flags are
+/// declared with the settings).
+fn own_flags() -> impl Iterator<Item = &'static crate::settings::Decl> + Clone {
+    let own: [&'static [crate::settings::Decl]; 5] = [
+        accuracy::ACCURACY_FLAGS,
+        stability::STABILITY_FLAGS,
+        design::DESIGN_FLAGS,
+        solve_range::DIST_FLAGS,
+        vlocator::GEOMETRY_FLAGS,
+    ];
+    own.into_iter().flatten()
+}
+
+/// The error message of subcommand `command`, with the flags of that command that set the key
+/// named beside the key.
+fn describe(e: &Error, command: &str) -> String {
+    use clap::CommandFactory;
     match e {
         Error::InvalidValue { key, value, reason } => {
-            match args::flag_for_key(key).or_else(|| vlocator::flag_for_key(key).map(String::from))
-            {
+            let cli = Cli::command();
+            let sub = cli.find_subcommand(command);
+            let takes = |flag: &str| {
+                sub.is_some_and(|c| c.get_arguments().any(|a| a.get_long() == Some(flag)))
+            };
+            match crate::settings::flags_naming(key, own_flags(), takes) {
                 Some(flag) => format!("invalid {key} = {value} (flag {flag}): {reason}"),
                 None => e.to_string(),
             }

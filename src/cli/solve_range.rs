@@ -17,6 +17,17 @@ use crate::uncertain::UncertainSet;
 use crate::uncertain::dist::{self, DistAnswer, DistMethod, DistQuestion, Estimate};
 use crate::uncertain::range::{self, Corner, End, InputEnds, RangeAnswer, RangeMethod, Reached};
 
+settings! {
+    /// The flags of `solve` for distributed inputs, by the key the messages of its question
+    /// name.
+    section = "solve";
+    aliases DIST_FLAGS {
+        before_mm, flag: Some("before");
+        quantiles, flag: Some("quantiles");
+        samples, flag: Some("samples");
+    }
+}
+
 /// Flags of `solve` for distributed inputs (ignored without one). Each takes a negative number
 /// as its value, to refuse it naming the flag (clap otherwise read `--samples -1` as an unknown
 /// flag `-1`).
@@ -26,15 +37,15 @@ pub struct DistArgs {
     /// Positions x (mm) for the probability that the disc jams before x (x_jam < x).
     ///
     /// With a distributed input (e.g. --mu normal(0.2,0.03)); a comma-separated list.
-    #[arg(long = "before", value_name = "MM", value_delimiter = ',', value_parser = parse_f64,
+    #[arg(long = flag!(DIST_FLAGS, before_mm), value_name = "MM", value_delimiter = ',', value_parser = parse_f64,
           allow_negative_numbers = true)]
     pub before_mm: Vec<f64>,
     /// Probabilities q in (0, 1) of the quantiles of x_jam printed with a distributed input.
-    #[arg(long, value_name = "Q", value_delimiter = ',', value_parser = parse_f64,
+    #[arg(long = flag!(DIST_FLAGS, quantiles), value_name = "Q", value_delimiter = ',', value_parser = parse_f64,
           default_value = DEFAULT_QUANTILES, allow_negative_numbers = true)]
     pub quantiles: Vec<f64>,
     /// Monte Carlo samples where the answer is not exact.
-    #[arg(long, value_name = "N", long_help = samples_help(), value_parser = parse_count,
+    #[arg(long = flag!(DIST_FLAGS, samples), value_name = "N", long_help = samples_help(), value_parser = parse_count,
           allow_negative_numbers = true)]
     pub samples: Option<u64>,
     /// Seed of the Monte Carlo samples: the same seed gives the same answer on any number of

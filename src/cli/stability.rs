@@ -21,6 +21,14 @@ use crate::study::stability::{self, Class, StabilityReport};
 /// Most cases named on the command line (the default matrix has fewer).
 const MAX_CASES: usize = 64;
 
+settings! {
+    /// The report's own flag, by the key its messages name.
+    section = "stability";
+    aliases STABILITY_FLAGS {
+        cases, flag: Some("cases");
+    }
+}
+
 /// Flags of `stability`.
 #[derive(Debug, Clone, Args)]
 pub struct StabilityArgs {
@@ -32,7 +40,7 @@ pub struct StabilityArgs {
     ///
     /// Each case changes the scene and settings given by the other flags (the paper's by
     /// default); an unknown name is refused with the list of cases.
-    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    #[arg(long = flag!(STABILITY_FLAGS, cases), value_name = "LIST", value_delimiter = ',')]
     pub cases: Option<Vec<String>>,
     /// Output format on stdout.
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]

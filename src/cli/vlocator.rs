@@ -16,6 +16,16 @@ use crate::numbers::Num;
 use crate::settings::flags::{Flags, LocatorSet};
 use crate::uncertain::UncertainSet;
 
+settings! {
+    /// The V's geometry flags: each sets both flank angles (a symmetric V, or the two given).
+    section = "locator";
+    aliases GEOMETRY_FLAGS {
+        flank_angles, flag: Some("flank-angles"), sets: &["flank_left_deg", "flank_right_deg"];
+        included_angle_deg, flag: Some("included-angle"),
+            sets: &["flank_left_deg", "flank_right_deg"];
+    }
+}
+
 /// Flags of `vlocator`: the V's geometry, then the declared locator settings
 /// ([`crate::settings`]: frictions, disc, load, rotation).
 #[derive(Debug, Clone, Args)]
@@ -25,7 +35,7 @@ pub struct VlocatorArgs {
     /// With a range (a design over the box) it is your V, whose verdict is added (`given_v`);
     /// left out, no V of your own is judged.
     #[arg(
-        long,
+        long = flag!(GEOMETRY_FLAGS, included_angle_deg),
         value_name = "DEG",
         allow_negative_numbers = true,
         conflicts_with = "flank_angles",
@@ -38,7 +48,7 @@ pub struct VlocatorArgs {
     /// is 180 - a1 - a2 [default: 45,45]. With a range it is your V, judged over the box
     /// (`given_v`); left out, no V of your own is judged.
     #[arg(
-        long,
+        long = flag!(GEOMETRY_FLAGS, flank_angles),
         value_name = "A1,A2",
         value_delimiter = ',',
         // "-5,40" is not a number: without this clap reads it as a flag.
@@ -92,21 +102,6 @@ impl VlocatorArgs {
         super::warn(&p.unit_warnings());
         Ok((p, uncertain))
     }
-}
-
-/// The flag of a locator key that is not a declared flag, for error messages: the flanks are set
-/// by the V's geometry flags.
-pub fn flag_for_key(key: &str) -> Option<&'static str> {
-    Some(match key {
-        "included_angle_deg" => "--included-angle",
-        "mass_kg * gravity_m_s2" => "--mass and --gravity",
-        "load_n + mass_kg * gravity_m_s2" => "--load, --mass and --gravity",
-        "flank_angles" => "--flank-angles",
-        "flank_left_deg" | "flank_right_deg" | "flank_left_deg + flank_right_deg" => {
-            "--flank-angles or --included-angle"
-        }
-        _ => return None,
-    })
 }
 
 /// The JSON document: the verdict, forces, capacity and optimum, then the inputs.

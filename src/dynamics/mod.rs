@@ -77,6 +77,8 @@ pub(crate) mod nonsmooth;
 pub(crate) mod params;
 mod run;
 pub(crate) mod system;
+#[cfg(test)]
+mod tests;
 mod verdict;
 
 use serde::Serialize;
@@ -204,7 +206,7 @@ pub struct DynamicsSolution {
 /// Simulates one push until the jam is read (plus `after_jam_s`), and, with `verify`, once more
 /// at a tenth of the tolerances to estimate the error of x_jam. `series_dt_s` asks for the time
 /// series at that interval. Errors only for invalid parameters.
-pub fn simulate(
+pub(crate) fn simulate(
     scene: &SceneParams,
     params: &DynamicsParams,
     series_dt_s: Option<f64>,

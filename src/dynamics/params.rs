@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 use crate::scene::{SceneParams, finite_positive};
-use crate::settings::decl::{Check, Decl, Kind};
+use crate::settings::decl::Check;
 
 choice! {
     /// How the palm is driven.
@@ -112,21 +112,16 @@ settings! {
     }
 }
 
-/// The friction law's alias: `mu_static` sets both static coefficients.
-pub(crate) const FRICTION_ALIASES: &[Decl] = &[Decl {
-    key: "mu_static",
-    section: "dynamics.friction",
-    flag: Some("mu-static"),
-    quantity: "static friction coefficient",
-    unit: "-",
-    doc: "Static friction coefficient at both contacts (unset: the dynamic mu).",
-    check: Check::AtLeast(0.0),
-    kind: Kind::Derived,
-    sets: &["mu_static_ground", "mu_static_palm"],
-    value_name: "MU",
-    uncertain: false,
-    ..Decl::BASE
-}];
+settings! {
+    /// The friction law's alias: `mu_static` sets both static coefficients.
+    section = "dynamics.friction";
+    aliases FRICTION_ALIASES {
+        /// Static friction coefficient at both contacts (unset: the dynamic mu).
+        mu_static, sets: &["mu_static_ground", "mu_static_palm"], flag: Some("mu-static"),
+            quantity: "static friction coefficient", unit: "-", check: Check::AtLeast(0.0),
+            value_name: "MU";
+    }
+}
 
 settings! {
     /// The time integrator and its tolerances.

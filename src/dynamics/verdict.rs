@@ -62,7 +62,7 @@ pub enum CrossCheck {
         stiction_velocity_mm_s: f64,
     },
     /// The palm lifts the disc off the ground at `theta_deg` (above 90 deg its push points up):
-    /// no model here represents a disc in the air. [`crate::dynamics::simulate`] says so for a
+    /// no model here represents a disc in the air. The simulation called directly says so for a
     /// start above 90 deg before any step; through the model port ([`crate::models::solve`])
     /// such a start is answered for every model by `OutsideModel::PalmLiftsDisc` first.
     LiftsOff { theta_deg: f64 },

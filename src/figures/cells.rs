@@ -90,11 +90,24 @@ impl<'a> Summary<'a> {
                 .filter(|x| x.is_finite())
                 .collect(),
             Column::Words { words, of } => {
+                // Each index counted, with its first cell, in one pass (a string compare per
+                // cell was three quarters of `render fig3`'s data file); then the words in the
+                // order of their first cell, an index whose word repeats another's merged.
+                let (mut count, mut first) = ([0usize; 256], [0usize; 256]);
+                for (cell, &w) in of.iter().enumerate() {
+                    let w = usize::from(w);
+                    if count[w] == 0 {
+                        first[w] = cell;
+                    }
+                    count[w] += 1;
+                }
+                let mut seen: Vec<usize> = (0..256).filter(|&w| count[w] > 0).collect();
+                seen.sort_by_key(|&w| first[w]);
                 let mut counts: Vec<(&str, usize)> = Vec::new();
-                for w in of.iter().map(|&w| words[usize::from(w)]) {
-                    match counts.iter_mut().find(|(k, _)| *k == w) {
-                        Some((_, n)) => *n += 1,
-                        None => counts.push((w, 1)),
+                for w in seen {
+                    match counts.iter_mut().find(|(k, _)| *k == words[w]) {
+                        Some((_, n)) => *n += count[w],
+                        None => counts.push((words[w], count[w])),
                     }
                 }
                 return Summary::Words(counts);
@@ -187,6 +200,26 @@ mod tests {
         assert_eq!(
             String::from_utf8(t.to_bytes()).unwrap(),
             "x,y,region\n0,0,jam\n1,0,slide\n0,1,jam\n1,1,beyond_reach\n"
+        );
+    }
+
+    /// Words are summed over every index that spells them and listed in the order of their
+    /// first cell, not of their index.
+    #[test]
+    fn words_are_counted_in_the_order_of_their_first_cell() {
+        let cols = [(
+            "region",
+            Column::Words {
+                words: &["slide", "jam", "slide", "beyond_reach"],
+                of: &[1, 3, 2, 0, 1, 1],
+            },
+        )];
+        let (xs, ys) = ([0.0, 1.0, 2.0], [0.0, 1.0]);
+        let t = CellsTable::new([("x", &xs), ("y", &ys)], &cols);
+        let doc = serde_json::to_string(&serde_json::to_value(&t).unwrap()["summary"]).unwrap();
+        assert_eq!(
+            doc,
+            r#"{"region":{"cells":{"jam":3,"beyond_reach":1,"slide":2}}}"#
         );
     }
 }

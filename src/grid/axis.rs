@@ -204,7 +204,7 @@ pub enum AxisScale {
 
 /// One grid axis: `count` samples of `param` from `min` to `max` inclusive.
 ///
-/// `P` is the parameter type of the [`ParamSet`] the axis varies: [`GridParam`] for the palm
+/// `P` is the parameter type of the `ParamSet` the axis varies: [`GridParam`] for the palm
 /// scene (the default), the locator's for a V-locator.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

@@ -300,6 +300,7 @@ impl GridResult {
     }
 
     /// The flat index of cell (ix, iy).
+    #[cfg(test)]
     pub fn index(&self, ix: usize, iy: usize) -> usize {
         iy * self.nx() + ix
     }

@@ -87,7 +87,7 @@
 //! least -a/b over rows with b < 0 (unbounded if none), and the binding ray names the failure
 //! mode. Under free rotation with a rim load, T2 = T1 + m P makes the rows affine in (T1, P):
 //! P_max is the best vertex of that polygon (`capacity_by_enumeration`, which also checks
-//! the closed form). Both are checked against clarabel ([`capacity_clarabel`]).
+//! the closed form). Both are checked against clarabel (`capacity_clarabel`).
 //!
 //! # The optimum included angle
 //!
@@ -133,7 +133,7 @@
 mod exact;
 mod optimum;
 pub(crate) mod params;
-mod reference;
+pub(crate) mod reference;
 pub mod robust;
 #[cfg(test)]
 mod robust_tests;
@@ -167,9 +167,9 @@ pub(crate) fn bisect_bracket(
 #[cfg(test)]
 mod tests;
 
-pub use exact::{Capacity, FailureMode, capacity, self_locking};
+pub use exact::{Capacity, FailureMode, capacity};
 #[cfg(test)]
-use exact::{capacity_by_enumeration, held_at};
+use exact::{capacity_by_enumeration, held_at, self_locking};
 #[cfg(test)]
 use optimum::closed_form_free_centre;
 pub(crate) use optimum::{OPT_MAX_DEG, OPT_MIN_DEG, just_unlocked};
@@ -177,15 +177,11 @@ pub use optimum::{Optimum, optimum};
 #[cfg(test)]
 use optimum::{balanced_rho, rho_lock};
 pub use params::{Flank, LocatorParams, Rotation};
-pub use reference::{ReferenceCapacity, capacity_clarabel};
-pub use robust::{
-    BoxVerdict, DroppedLoad, Opening, RobustAngle, RobustBox, RobustDesign, robust_design,
-    verdict_over_box,
-};
+#[cfg(test)]
+use reference::{ReferenceCapacity, capacity_clarabel};
+pub(crate) use robust::{BoxVerdict, verdict_over_box};
+pub use robust::{DroppedLoad, Opening, RobustAngle, RobustBox, RobustDesign, robust_design};
 pub(crate) use robust::{SCAN_STEP_DEG, lock_angle_deg};
 pub use solve::{FlankForce, LocatorSolution, Verdict, solve};
 #[cfg(test)]
 use solve::{contact_problem, min_norm_forces};
-/// Whether the closed form of the symmetric V answers `p` (equal flanks and frictions, free
-/// rotation, the load at the centre): the capacity map's fast path.
-pub use symmetric::applies as closed_form_applies;

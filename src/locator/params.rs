@@ -3,7 +3,7 @@
 use serde::Serialize;
 
 use crate::error::{Error, Result};
-use crate::settings::decl::{Check, Decl, Declared, Kind};
+use crate::settings::decl::{Check, Declared};
 
 choice! {
     /// How the V carries the moment about the disc centre.
@@ -101,23 +101,18 @@ settings! {
     }
 }
 
-/// The locator's aliases: `mu` sets both flank frictions.
-pub(crate) const LOCATOR_ALIASES: &[Decl] = &[Decl {
-    key: "mu",
-    section: "locator",
-    flag: Some("mu"),
-    symbol: "μ",
-    quantity: "flank friction coefficient",
-    unit: "-",
-    doc: "Friction coefficient on both flanks.\n\n\
-          --mu-left or --mu-right given as well take precedence for their flank.",
-    check: Check::AtLeast(0.0),
-    kind: Kind::Derived,
-    default: || "0.3".to_string(),
-    sets: &["mu_left", "mu_right"],
-    value_name: "MU",
-    uncertain: true,
-}];
+settings! {
+    /// The locator's aliases: `mu` sets both flank frictions.
+    section = "locator";
+    aliases LOCATOR_ALIASES {
+        /// Friction coefficient on both flanks.
+        ///
+        /// --mu-left or --mu-right given as well take precedence for their flank.
+        mu = 0.3, sets: &["mu_left", "mu_right"], flag: Some("mu"), symbol: "μ",
+            quantity: "flank friction coefficient", unit: "-", check: Check::AtLeast(0.0),
+            value_name: "MU", uncertain: true;
+    }
+}
 
 impl LocatorParams {
     /// A symmetric V of included angle `gamma_deg` (a1 = a2 = 90 - gamma/2), other fields kept.

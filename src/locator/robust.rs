@@ -304,7 +304,7 @@ impl Sector {
 /// What one V does over a whole box.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "status", rename_all = "snake_case")]
-pub enum BoxVerdict {
+pub(crate) enum BoxVerdict {
     /// Holds every load at every friction and never locks.
     Works,
     /// Self-locks at the box's top frictions.
@@ -323,7 +323,7 @@ pub enum BoxVerdict {
 
 /// What the V of `gamma_deg` (`base` turned to it) does over the box: locking at the highs,
 /// then every load held at the lows (module docs, items 1 to 3).
-pub fn verdict_over_box(base: &LocatorParams, b: &RobustBox, gamma_deg: f64) -> BoxVerdict {
+pub(crate) fn verdict_over_box(base: &LocatorParams, b: &RobustBox, gamma_deg: f64) -> BoxVerdict {
     match works(base, b, gamma_deg) {
         Ok(()) => BoxVerdict::Works,
         Err(None) => BoxVerdict::Locks {

@@ -6,7 +6,8 @@ use crate::locator::{
     self, FailureMode, Flank, LocatorParams, ReferenceCapacity, Rotation, Verdict, capacity,
     capacity_by_enumeration, capacity_clarabel, closed_form_free_centre, held_at, self_locking,
 };
-use crate::minnorm::{HoldStatus, QpSettings, solve_clarabel};
+use crate::minnorm::qp::solve_clarabel;
+use crate::minnorm::{HoldStatus, QpSettings};
 use crate::statics;
 use proptest::prelude::*;
 

@@ -128,14 +128,23 @@
 //! move it, F <= m g sin(alpha_g).
 
 mod column;
-mod contact;
+#[cfg(test)]
+mod column_tests;
+pub(crate) mod contact;
 mod dense;
 mod exact;
-pub mod palm;
+pub(crate) mod palm;
+#[cfg(test)]
+mod palm_tests;
 pub(crate) mod qp;
+#[cfg(test)]
+mod random_planar;
+#[cfg(test)]
+mod solver_tests;
 pub(crate) mod tolerance;
 
-pub use column::solve_column;
-pub use contact::{Contact, ContactProblem, Joint, Space, Wrench};
-pub use palm::{Formulation, MinNormCheck, MinNormSettings, PalmSolution, palm_problem};
-pub use qp::{Backend, ContactSolution, HoldStatus, QpSettings, solve, solve_clarabel};
+pub(crate) use column::solve_column;
+pub(crate) use contact::{Contact, ContactProblem, Joint, Space, Wrench};
+pub use palm::{Formulation, MinNormCheck, MinNormSettings, PalmSolution};
+pub(crate) use qp::solve;
+pub use qp::{Backend, ContactSolution, HoldStatus, QpSettings};

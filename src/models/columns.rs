@@ -60,10 +60,12 @@ impl Pushes<'_> {
                     GridParam::PushRatio => Sets::PushRatio,
                     p => {
                         let d = p.decl();
-                        match d.sets {
-                            [] => Sets::Fields(std::slice::from_ref(&d.key)),
-                            keys => Sets::Fields(keys),
-                        }
+                        let keys = match d.sets {
+                            [] => std::slice::from_ref(&d.key),
+                            keys => keys,
+                        };
+                        let setters = keys.iter().filter_map(|k| SceneParams::real_setter(k));
+                        Sets::Fields(keys, setters.collect())
                     }
                 };
                 (set, *values)
@@ -94,11 +96,14 @@ impl Pushes<'_> {
     }
 }
 
+/// A field's setter, [`SceneParams::real_setter`].
+type Setter = fn(&mut SceneParams, f64) -> bool;
+
 /// What a column sets in a push's scene.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 enum Sets {
-    /// These fields, to the column's value (an alias sets several).
-    Fields(&'static [&'static str]),
+    /// These fields, to the column's value (an alias sets several), and their setters.
+    Fields(&'static [&'static str], Vec<Setter>),
     /// The push as a multiple of the weight: force_n = value m g.
     PushRatio,
 }
@@ -129,12 +134,17 @@ impl Resolved<'_> {
         }
         let mut first: Option<usize> = None;
         for (set, values) in &self.columns {
-            let Sets::Fields(keys) = set else { continue };
-            for key in *keys {
-                let Some(decl) = crate::settings::find(key) else {
+            let Sets::Fields(keys, _) = set else { continue };
+            let decls: Vec<_> = keys
+                .iter()
+                .filter_map(|k| crate::settings::find(k))
+                .collect();
+            for (k, decl) in decls.iter().enumerate() {
+                // Fields with the same check (both frictions of `mu`) are one pass.
+                if decls[..k].iter().any(|d| d.check == decl.check) {
                     continue;
-                };
-                let bad = values.iter().position(|&v| decl.check.refuse(v).is_some());
+                }
+                let bad = values.iter().position(|&v| !decl.check.accepts(v));
                 // A column of one value is every push's: the first push shows it.
                 let bad = bad.map(|i| if values.len() == 1 { 0 } else { i });
                 first = match (first, bad) {
@@ -157,9 +167,9 @@ impl Resolved<'_> {
                 values[i]
             };
             match set {
-                Sets::Fields(keys) => {
-                    for k in *keys {
-                        p.set_real(k, v);
+                Sets::Fields(_, setters) => {
+                    for set in setters {
+                        set(&mut p, v);
                     }
                 }
                 Sets::PushRatio => p = GridParam::PushRatio.apply(p, v),

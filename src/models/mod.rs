@@ -3,7 +3,7 @@
 //! A model is chosen by data, a [`ModelSpec`] carrying its settings, and answers with one
 //! [`Solution`]: the status, theta_jam and x_jam every consumer reads (`solve`'s text and JSON,
 //! grids, sweeps, charts, the reports), the counted work, and the model's own [`Detail`].
-//! [`solve`] is the only dispatch on the model: grids ([`crate::grid`]) and charts call it per
+//! [`solve`] is the only dispatch on the model: grids (`crate::grid`) and charts call it per
 //! cell or per point.
 //!
 //! # Adding a model
@@ -29,6 +29,8 @@
 //! upwards there and can lift the disc, and every model keeps it on the ground. `Err` is left
 //! for misuse: parameters that no model accepts.
 
+// The array entry: N pushes in, the answers written into buffers the caller owns (the Python
+// package calls it; so can any front end that holds its own arrays).
 pub mod columns;
 mod record;
 
@@ -311,7 +313,7 @@ pub fn solve(spec: &ModelSpec, scene: &SceneParams) -> Result<Solution> {
 /// Solves `scenes` in order with the model of `spec`: a line of a map (one parameter fixed).
 ///
 /// The min-norm model starts each cell's search from its neighbours' answers
-/// ([`crate::minnorm::solve_column`]: Newton on the friction utilisation, about three programs a
+/// (`crate::minnorm::solve_column`: Newton on the friction utilisation, about three programs a
 /// cell; each jam within the bisection's tolerance of [`solve`]'s, every status the same);
 /// the other models solve cell by cell. A min-norm cell's [`Solution::elapsed_s`] is the
 /// column's time over its cells.

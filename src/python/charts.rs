@@ -82,7 +82,8 @@ impl Chart {
             "svg" => svg(),
             "png" => self.rendered.png.clone().unwrap_or_default(),
             "pdf" => py
-                .detach(|| charts::output::pdf(&svg()))
+                // The page is the chart's own size: no paper, so no size to fit.
+                .detach(|| charts::output::pdf(&svg(), (0, 0), None))
                 .map_err(PyValueError::new_err)?,
             e if e == self.rendered.data.extension => self.rendered.data.bytes.clone(),
             _ => {

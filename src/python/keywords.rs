@@ -299,6 +299,9 @@ fn given<'py>(py: Python<'py>, param: GridParam, v: &Bound<'py, PyAny>) -> PyRes
                 e.value(py)
             ))
         })?;
+    // Aligned (a copy where not): an array read from bytes at an odd offset, as dask's workers
+    // receive theirs, is valid numpy but cannot be read as Rust numbers in place.
+    let a = numpy.call_method1("require", (a, py.None(), "A"))?;
     let a = a.cast_into::<PyArrayDyn<f64>>()?;
     if a.ndim() == 0 {
         return number(a.get_owned([0; 0].as_slice()).unwrap_or(f64::NAN));
@@ -315,7 +318,7 @@ fn check_array(decl: &Decl, a: &Bound<'_, PyArrayDyn<f64>>) -> PyResult<()> {
     // Row-major position, then its index: an indexed walk cost more than the check.
     let bad = view
         .iter()
-        .position(|v| decl.check.refuse(*v).is_some())
+        .position(|v| !decl.check.accepts(*v))
         .map(|pos| {
             let mut rest = pos;
             let mut index: Vec<usize> = view

@@ -32,7 +32,13 @@ pub(crate) enum Check {
 impl Check {
     /// Why `v` is refused, or None when it is fine.
     pub(crate) fn refuse(&self, v: f64) -> Option<String> {
-        let ok = v.is_finite()
+        (!self.accepts(v)).then(|| format!("must be {}", self.describe()))
+    }
+
+    /// Whether `v` is valid: [`Check::refuse`] without its words, for a pass over many values.
+    #[inline]
+    pub(crate) fn accepts(&self, v: f64) -> bool {
+        v.is_finite()
             && match *self {
                 Check::Finite | Check::Typed => true,
                 Check::AtLeast(lo) => v >= lo,
@@ -42,8 +48,7 @@ impl Check {
                 Check::Closed(lo, hi) => v >= lo && v <= hi,
                 Check::CloseOpen(lo, hi) => v >= lo && v < hi,
                 Check::CountAtLeast(lo) => v >= lo as f64,
-            };
-        (!ok).then(|| format!("must be {}", self.describe()))
+            }
     }
 
     /// The valid values in words, e.g. `a finite number > 0`.
@@ -322,13 +327,56 @@ impl Decl {
     /// The flags that set this setting, e.g. `--mu-ground or --mu`: its own and those of the
     /// aliases in `family` that set it.
     pub(crate) fn flags(&self, family: impl Iterator<Item = &'static Decl>) -> Option<String> {
-        let own = self.flag.map(|f| format!("--{f}"));
+        self.flags_taken(family, |_| true)
+    }
+
+    /// As [`Decl::flags`], keeping the flags a command takes (`takes` of the flag without
+    /// its dashes).
+    pub(crate) fn flags_taken(
+        &self,
+        family: impl Iterator<Item = &'static Decl>,
+        takes: impl Fn(&str) -> bool,
+    ) -> Option<String> {
         let aliases = family
             .filter(|a| a.sets.contains(&self.key) && a.section == self.section)
-            .filter_map(|a| a.flag.map(|f| format!("--{f}")));
-        let all: Vec<String> = own.into_iter().chain(aliases).collect();
+            .filter_map(|a| a.flag);
+        let all: Vec<String> = (self.flag.into_iter().chain(aliases))
+            .filter(|f| takes(f))
+            .map(|f| format!("--{f}"))
+            .collect();
         (!all.is_empty()).then(|| all.join(" or "))
     }
+}
+
+/// The flag of the declaration of `key` in `decls`, for a clap attribute (`long = flag!(..)`):
+/// evaluated at compile time, so that a key without a declared flag fails the build.
+pub(crate) const fn flag_of(decls: &[Decl], key: &str) -> &'static str {
+    let mut i = 0;
+    while i < decls.len() {
+        if let Some(flag) = decls[i].flag
+            && same(decls[i].key, key)
+        {
+            return flag;
+        }
+        i += 1;
+    }
+    panic!("the key has no declared flag")
+}
+
+/// `a == b`, in a `const fn`.
+const fn same(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
 }
 
 /// Parses a count flag: a whole number >= 0, written out (`100000`, not `1e5`), with a message

@@ -8,7 +8,34 @@
 /// Generates the struct (`serde(default, deny_unknown_fields)`, the default in each field's
 /// rustdoc), `Default`, [`crate::settings::Declared`] and the methods `check_declared` (every
 /// field against its declared range), `real` and `set_real` (a field as a number, by key).
+///
+/// The `aliases NAME { .. }` form declares names that are no field of a settings struct, as the
+/// constant `NAME: &[Decl]`: an alias that sets several fields (`mu = 0.4, sets: &["mu_ground",
+/// "mu_palm"], ..`), or a command's own flag and the key its messages name (`runs, flag:
+/// Some("runs")`), so that every flag a message names comes from a declaration.
 macro_rules! settings {
+    (
+        $(#[doc = $sdoc:literal])*
+        section = $section:literal;
+        aliases $name:ident {
+            $(
+                $(#[doc = $doc:literal])*
+                $key:ident $(= $default:expr)? $(, $k:ident : $v:expr)* ;
+            )*
+        }
+    ) => {
+        $(#[doc = $sdoc])*
+        pub(crate) const $name: &[$crate::settings::decl::Decl] = &[$(
+            $crate::settings::decl::Decl {
+                key: stringify!($key),
+                section: $section,
+                doc: concat!($($doc, "\n"),*),
+                $(default: || $crate::settings::decl::Value::text(&$default),)?
+                $($k: $v,)*
+                ..$crate::settings::decl::Decl::BASE
+            },
+        )*];
+    };
     (
         $(#[doc = $sdoc:literal])*
         section = $section:literal;
@@ -94,7 +121,26 @@ macro_rules! settings {
                     _ => false,
                 }
             }
+
+            /// [`Self::set_real`] of `key` looked up once: the setter a loop over many values
+            /// calls without matching the name each time.
+            pub(crate) fn real_setter(key: &str) -> Option<fn(&mut Self, f64) -> bool> {
+                match key {
+                    $(stringify!($field) => Some(|s: &mut Self, v: f64| {
+                        $crate::settings::decl::Value::set_real(&mut s.$field, v)
+                    }),)*
+                    _ => None,
+                }
+            }
         }
+    };
+}
+
+/// The long flag declared for `key` in the aliases `decls`, for a clap attribute: `#[arg(long =
+/// flag!(ACCURACY_FLAGS, runs))]`. A key without a declared flag fails the build.
+macro_rules! flag {
+    ($decls:expr, $key:ident) => {
+        const { $crate::settings::decl::flag_of($decls, stringify!($key)) }
     };
 }
 

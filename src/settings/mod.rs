@@ -67,8 +67,42 @@ pub(crate) fn find(key: &str) -> Option<&'static Decl> {
 /// The flags that set `key` (a bare key or a dotted path), e.g. `--mu-ground or --mu`: its own
 /// and those of the aliases that set it.
 pub(crate) fn flag_for(key: &str) -> Option<String> {
-    let decl = find(key).or_else(|| locator_family().find(|d| d.key == key))?;
-    decl.flags(all())
+    flags_naming(key, std::iter::empty(), |_| true)
+}
+
+/// The flags a message names beside `key`, among those a command takes (`takes`): a setting's
+/// own flag and its aliases' (`--mu-ground or --mu`), searched first among the command's own
+/// declarations (`own`: its report flags, e.g. `runs` for `--runs`); for a quantity of several
+/// settings (`mass_kg * gravity_m_s2`, every word a declared key) each one's flags (`--mass and
+/// --gravity`). None where the command takes no flag for it (`render` sets `radius_mm` by
+/// `--set` or a scene file).
+pub(crate) fn flags_naming(
+    key: &str,
+    own: impl Iterator<Item = &'static Decl> + Clone,
+    takes: impl Fn(&str) -> bool,
+) -> Option<String> {
+    let decl = |k: &str| {
+        own.clone()
+            .find(|d| d.key == k)
+            .or_else(|| all().find(|d| d.key == k || d.path() == k))
+    };
+    let flags = |d: &Decl| d.flags_taken(own.clone().chain(all()), &takes);
+    if let Some(d) = decl(key) {
+        return flags(d);
+    }
+    let words = key.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_' || c == '.'));
+    let decls: Option<Vec<&Decl>> = words.filter(|w| !w.is_empty()).map(decl).collect();
+    let mut parts: Vec<String> = Vec::new();
+    for f in decls?.into_iter().filter_map(flags) {
+        if !parts.contains(&f) {
+            parts.push(f);
+        }
+    }
+    let last = parts.pop()?;
+    Some(match parts.is_empty() {
+        true => last,
+        false => format!("{} and {last}", parts.join(", ")),
+    })
 }
 
 /// Where an unknown key of section `section` belongs, if it is a key of another section:

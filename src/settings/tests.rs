@@ -195,3 +195,65 @@ fn equal_frictions_above_two_warn_once() {
     let p = crate::scene::SceneParams { mu_palm: 3.0, ..p };
     assert_eq!(p.unit_warnings().len(), 2);
 }
+
+/// A message's key that is a quantity of several settings names each one's flags, once each;
+/// a key with words that are no setting (`force_n of case barely_moves`: a stability case
+/// derives it) names none, nor does a flag the command does not take.
+#[test]
+fn a_quantity_of_several_settings_names_each_ones_flags() {
+    let none = std::iter::empty;
+    let naming = |key: &str| flags_naming(key, none(), |_| true);
+    assert_eq!(
+        naming("load_n + mass_kg * gravity_m_s2").as_deref(),
+        Some("--load, --mass and --gravity")
+    );
+    assert_eq!(naming("force_n of case barely_moves"), None);
+    assert_eq!(flags_naming("radius_mm", none(), |f| f != "radius"), None);
+}
+
+/// A mass typed in grams (400 for 0.4 kg) and a palm typed in cm (8 for 80 mm) on a 12.5 mm part
+/// are valid numbers, but each draws a warning naming the unit; the paper's scene draws none.
+#[test]
+fn mass_in_grams_and_palm_in_cm_warn() {
+    let paper = crate::scene::SceneParams::default();
+    assert!(
+        paper.unit_warnings().is_empty(),
+        "{:?}",
+        paper.unit_warnings()
+    );
+    let part = crate::scene::SceneParams {
+        radius_mm: 12.5,
+        mass_kg: 0.4,
+        palm_length_mm: 80.0,
+        ..paper
+    };
+    assert!(
+        part.unit_warnings().is_empty(),
+        "{:?}",
+        part.unit_warnings()
+    );
+    let grams = crate::scene::SceneParams {
+        mass_kg: 400.0,
+        ..part
+    };
+    let w = grams.unit_warnings();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].starts_with("mass_kg (--mass) = 400 kg weighs as much as a steel bar"),
+        "{w:?}"
+    );
+    assert!(
+        w[0].contains("103.8 m long") && w[0].ends_with("not grams"),
+        "{w:?}"
+    );
+    let cm = crate::scene::SceneParams {
+        palm_length_mm: 8.0,
+        ..part
+    };
+    let w = cm.unit_warnings();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].contains("= 8 mm is shorter than the disc's radius (12.5 mm)"),
+        "{w:?}"
+    );
+}

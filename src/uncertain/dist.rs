@@ -20,8 +20,6 @@
 //! P is given with its 95 % interval p +- 1.96 sqrt(p (1 - p) / n); a quantile with the 95 %
 //! interval of the order statistics at ranks n q +- 1.96 sqrt(n q (1 - q)).
 
-use rand_chacha::ChaCha8Rng;
-use rand_core::{Rng, SeedableRng};
 use serde::Serialize;
 
 use super::UncertainSet;
@@ -237,7 +235,11 @@ fn exact_estimate(v: f64) -> Estimate {
 
 /// The inputs' values of sample `index` for the seed: the chunk's ChaCha8 stream, advanced to
 /// the sample's place in it.
-pub fn draw(set: &UncertainSet, seed: u64, index: u64) -> Vec<f64> {
+#[cfg(test)]
+pub(crate) fn draw(set: &UncertainSet, seed: u64, index: u64) -> Vec<f64> {
+    use rand_chacha::ChaCha8Rng;
+    use rand_core::{Rng, SeedableRng};
+
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     rng.set_stream(index / CHUNK as u64);
     let k = set.inputs.len() as u128;

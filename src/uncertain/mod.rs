@@ -45,9 +45,8 @@ use crate::settings::Decl;
 pub(crate) use table::take;
 
 /// The worked example of the range, distribution and `design` tests, shared with the
-/// integration tests.
+/// uncertainty benchmark.
 #[cfg(test)]
-#[path = "../../tests/common/shaft.rs"]
 pub(crate) mod shaft;
 
 /// One input's uncertainty: a point, a range (worst case) or a distribution.
@@ -483,5 +482,9 @@ pub(crate) fn sorted_samples(
     Ok(xs)
 }
 
+#[cfg(test)]
+mod dist_tests;
+#[cfg(test)]
+mod range_tests;
 #[cfg(test)]
 mod tests;

@@ -15,7 +15,7 @@
 //!
 //! Write theta* for the closed form's raw angle alpha_g + alpha_p + asin(m g sin(alpha_g) / F)
 //! (+inf where m g sin(alpha_g) >= F), S for the start angle and rho for the palm's reach angle
-//! ([`statics::reach_angle_rad`], the contact at the palm's end). Neither S nor rho depends on
+//! (`statics::reach_angle_rad`, the contact at the palm's end). Neither S nor rho depends on
 //! an input that takes a range, and S <= 90 deg wherever the closed form answers (above it the
 //! port answers `outside_model` at every point of the box). A point answers ([`statics`]):
 //!
@@ -69,7 +69,7 @@
 //! and the palm's friction, by Newton's method in the friction angle for the ground's friction
 //! (`invert`, derived in its docs), and the statuses a hair either side of it confirm it
 //! (regula falsi on theta_jam, then bisection of the status, where they do not); other changes
-//! are bisected with the cheap [`statics::status`] (no past-palm extras), at most 30 halvings
+//! are bisected with the cheap `statics::status` (no past-palm extras), at most 30 halvings
 //! and never below the spacing of floats (a range 1e-8 wide at 3.6 is 45 floats wide). So a
 //! range answer over one input costs its two corners, a root and two statuses per change
 //! (`cargo bench --bench uncertain` prints it against a point answer).
@@ -199,7 +199,7 @@ pub struct RangeAnswer {
 
 /// The interval of a box from the closed form's answers at its two extreme corners (`hull`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Hull {
+pub(crate) struct Hull {
     /// [min, max] of theta_jam in deg over the box's answering points.
     pub theta_jam_deg: [f64; 2],
     /// [min, max] of x_jam in mm over the same points.
@@ -255,7 +255,7 @@ pub(crate) fn hull(p: &SceneParams, earliest: PointAnswer, latest: PointAnswer) 
 /// The box's two extreme corners and its interval: the part of a [`RangeAnswer`] without the
 /// status changes along each input.
 #[derive(Debug, Clone, PartialEq)]
-pub struct BoxEnds {
+pub(crate) struct BoxEnds {
     /// Every input at its theta-raising end (the earliest jam), and the answer there.
     pub earliest: Corner,
     /// The opposite corner (the latest jam).
@@ -335,7 +335,7 @@ pub fn closed_form(p: &SceneParams, set: &UncertainSet) -> Result<RangeAnswer> {
 
 /// The box's two extreme corners, answered through the port, and its interval (`hull`):
 /// two point answers' work, without the status changes that [`closed_form`] adds.
-pub fn ends(p: &SceneParams, set: &UncertainSet) -> Result<BoxEnds> {
+pub(crate) fn ends(p: &SceneParams, set: &UncertainSet) -> Result<BoxEnds> {
     let per_input: Vec<(f64, f64, End)> = set
         .inputs
         .iter()

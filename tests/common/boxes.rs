@@ -1,6 +1,5 @@
 //! Random boxes of uncertain inputs over random palm scenes, and the point answers inside a
-//! box (`#[path = "common/boxes.rs"] mod boxes;`): what the range, sweep band and jam map band
-//! tests check their intervals against.
+//! box: what the range, sweep band and jam map band tests check their intervals against.
 
 use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
 use jamchart::{JamStatus, ModelSpec, SceneParams};

@@ -1,8 +1,7 @@
-//! `render --check` wrote its new renders into `$TMPDIR/jamchart-check-<pid>`: a predictable
-//! name, reused as found (a folder made there beforehand, or a link planted there, which
-//! redirected the writes outside it). It now makes a fresh private folder.
+//! `render --check` wrote its new renders into a folder under `$TMPDIR` and left it there on
+//! every failed check. A check now writes nothing anywhere: the report says how to look at the
+//! new pictures (render into another folder) and how to accept them (`--bless`).
 
-use std::os::unix::fs::PermissionsExt;
 use std::path::Path;
 use std::time::Duration;
 
@@ -16,17 +15,31 @@ fn render(dir: &Path, tmp: &Path, args: &[&str]) -> std::process::Output {
     run_within(dir, &all, &[("TMPDIR", tmp)], Duration::from_secs(60))
 }
 
+/// Every file under `dir`, as paths relative to it, sorted.
+fn files(dir: &Path) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap().flatten() {
+            match e.path().is_dir() {
+                true => stack.push(e.path()),
+                false => out.push(e.path().strip_prefix(dir).unwrap().display().to_string()),
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
 #[test]
-fn the_new_renders_go_to_a_fresh_private_folder() {
+fn a_check_leaves_no_folder_behind_and_says_how_to_accept() {
     let dir = tempfile::tempdir().unwrap();
     let tmp = tempfile::tempdir().unwrap();
     let o = render(dir.path(), tmp.path(), &["--bless", "-q"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    // A check that passes writes nothing anywhere.
+    let blessed = files(dir.path());
     let o = render(dir.path(), tmp.path(), &["--check"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    assert_eq!(std::fs::read_dir(tmp.path()).unwrap().count(), 0);
-    // A check that fails names its folder: new, under TMPDIR, mode 0700, holding the renders.
     let o = render(
         dir.path(),
         tmp.path(),
@@ -34,25 +47,16 @@ fn the_new_renders_go_to_a_fresh_private_folder() {
     );
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     let out = stdout(&o);
-    let named = out
-        .lines()
-        .find_map(|l| l.strip_prefix("the new renders are in "))
-        .unwrap_or_else(|| panic!("no folder named: {out}"));
-    let folder = Path::new(named);
-    assert_eq!(folder.parent(), Some(tmp.path()), "{named}");
-    let name = folder.file_name().unwrap().to_string_lossy();
-    assert!(name.starts_with("jamchart-check-"), "{name}");
-    let meta = std::fs::symlink_metadata(folder).unwrap();
-    assert!(meta.is_dir(), "{named} is not a plain folder");
-    assert_eq!(meta.permissions().mode() & 0o777, 0o700, "{named}");
-    assert!(folder.join("fig6.png").is_file());
-    // A second failing check makes another folder: nothing is reused.
-    let o = render(
-        dir.path(),
-        tmp.path(),
-        &["--check", "--set", "title=changed"],
+    assert!(out.contains("fig6.png: changed (blessed "), "{out}");
+    assert!(
+        out.contains("render them into another folder: the same command with another --out"),
+        "{out}"
     );
-    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
-    assert_eq!(std::fs::read_dir(tmp.path()).unwrap().count(), 2);
-    assert!(!stdout(&o).contains(named));
+    assert!(
+        out.contains("accept it: the same command with --bless instead of --check"),
+        "{out}"
+    );
+    // Neither the temporary directory nor the checked folder gained a file.
+    assert_eq!(files(tmp.path()), Vec::<String>::new());
+    assert_eq!(files(dir.path()), blessed);
 }

@@ -1,6 +1,9 @@
 """A nonsmooth-simulation map sharded over a dask.distributed cluster of two worker processes
 answers exactly as one call: the README's recipe, run."""
 
+import pathlib
+import re
+
 import numpy as np
 import pytest
 
@@ -35,3 +38,31 @@ def test_a_sharded_map_is_the_single_call():
     assert x.tobytes() == whole.x_jam_mm.tobytes()
     assert (whole.status == "jams").sum() > 0
     assert workers, "no worker held a shard"
+
+
+def readme_recipe():
+    """The README's dask recipe, as written there (its one ```python block)."""
+    readme = (pathlib.Path(__file__).parents[2] / "README.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", readme, re.S)
+    assert len(blocks) == 1, "the README has one Python block: the dask recipe"
+    return blocks[0]
+
+
+def test_the_readme_recipe_runs_on_a_local_cluster():
+    code = readme_recipe()
+    # The recipe's cluster and sizes, as a test can have them: a LocalCluster of two worker
+    # processes for the scheduler's address, 400 x 400 cut to 40 x 40.
+    assert code.count('Client("tcp://scheduler:8786")') == 1, code
+    assert code.count(", 400)") == 2, code
+    code = code.replace('Client("tcp://scheduler:8786")', "Client(cluster)")
+    code = code.replace(", 400)", ", 40)")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster:
+        scope = {"cluster": cluster}
+        exec(compile(code, "README.md", "exec"), scope)
+        scope["client"].close()
+    mu, force = np.linspace(0.1, 0.6, 40), np.linspace(20, 400, 40)
+    whole = jc.solve(mu=mu[:, None], force_n=force, model="dynamics", method="nonsmooth")
+    assert scope["x_jam_mm"].shape == (40, 40)
+    assert scope["x_jam_mm"].tobytes() == whole.x_jam_mm.tobytes()
+    assert np.isfinite(whole.x_jam_mm).sum() > 0

@@ -133,6 +133,22 @@ def test_lists_non_contiguous_and_zero_dimensional_arrays():
     assert isinstance(zero_d, jc.Solution) and zero_d.x_jam_mm == jc.solve(mu=0.3).x_jam_mm
 
 
+def test_misaligned_and_read_only_arrays_are_read():
+    # A dask worker receives its shard as numbers in a byte frame, at any offset: numpy reads
+    # them in place (ALIGNED false), and so must solve.
+    frame = bytearray(8 * 12 + 1)
+    mu = np.frombuffer(memoryview(frame)[1:], dtype=np.float64)
+    mu[:] = np.linspace(0.1, 0.6, 12)
+    assert not mu.flags["ALIGNED"]
+    want = jc.solve(mu=mu.copy(), force_n=40.0).x_jam_mm
+    assert np.isfinite(want).sum() > 0
+    for given, expected in ((mu, want), (mu[:, None], want[:, None]), (mu[::2], want[::2])):
+        np.testing.assert_array_equal(jc.solve(mu=given, force_n=40.0).x_jam_mm, expected)
+    read_only = np.linspace(0.1, 0.6, 12)
+    read_only.flags.writeable = False
+    np.testing.assert_array_equal(jc.solve(mu=read_only, force_n=40.0).x_jam_mm, want)
+
+
 def test_a_key_given_with_its_alias_wins_for_itself():
     r = jc.solve(mu=np.array([0.3, 0.4]), mu_palm=0.2)
     for i, mu in enumerate([0.3, 0.4]):

@@ -1,10 +1,11 @@
 //! Random planar contact problems, shared by the solver tests and the benchmark (which
 //! measures the exact path's agreement with clarabel on many of them).
 
-use jamchart::minnorm::{
-    Contact, ContactProblem, ContactSolution, HoldStatus, Joint, QpSettings, Space, Wrench, solve,
-    solve_clarabel,
+// Through `bench_support`, which the benchmark sees too (the crate's unit tests see it as well).
+use jamchart::bench_support::{
+    Contact, ContactProblem, Joint, Space, Wrench, solve_clarabel, solve_program as solve,
 };
+use jamchart::minnorm::{ContactSolution, HoldStatus, QpSettings};
 use proptest::prelude::*;
 
 prop_compose! {

@@ -1,12 +1,12 @@
 //! The min-norm palm scene against the closed form (formulation a) and against its own derived
 //! closed form (formulation b), on Table 1 and on random scenes across the foundation's ranges.
 
-use jamchart::minnorm::{
-    Backend, Formulation, MinNormCheck, MinNormSettings, QpSettings, palm, palm_problem,
-};
+use jamchart::minnorm::palm::{self, palm_problem};
+use jamchart::minnorm::{Backend, Formulation, MinNormCheck, MinNormSettings, QpSettings};
 use jamchart::paper::TABLE1;
+use jamchart::scene::{disc_position_mm, palm_angle_at};
 use jamchart::statics::{self, margin_n};
-use jamchart::{JamStatus, SceneParams, disc_position_mm, palm_angle_at};
+use jamchart::{JamStatus, SceneParams};
 use proptest::prelude::*;
 
 /// The agreement asked of the min-norm model: 1e-5 deg between min-norm and closed-form theta_jam.
@@ -238,7 +238,7 @@ prop_compose! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(2000))]
+    #![proptest_config(crate::proptest_config(2000))]
 
     #[test]
     fn random_scenes_agree_with_closed_form(p in scene()) {
@@ -298,7 +298,7 @@ proptest! {
 
 proptest! {
     // clarabel takes ~50 us a solve and ~35 solves a scene: fewer cases.
-    #![proptest_config(ProptestConfig::with_cases(300))]
+    #![proptest_config(crate::proptest_config(300))]
 
     #[test]
     fn random_scenes_agree_with_closed_form_by_clarabel(p in scene(), mu_p in mu()) {

@@ -2,13 +2,14 @@
 //! second-order cones, bad input, and the exact fast path against clarabel on random problems.
 
 use jamchart::Error;
+use jamchart::minnorm::qp::solve_clarabel;
 use jamchart::minnorm::{
     Backend, Contact, ContactProblem, ContactSolution, HoldStatus, Joint, QpSettings, Space,
-    Wrench, solve, solve_clarabel,
+    Wrench, solve,
 };
 use proptest::prelude::*;
 
-use crate::common::random_planar;
+use super::random_planar;
 use random_planar::{compare, load_scale, planar_problem};
 
 fn exact_first() -> QpSettings {
@@ -281,7 +282,7 @@ fn check_held(p: &ContactProblem, sol: &ContactSolution, rel: f64) -> Result<(),
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(2000))]
+    #![proptest_config(crate::proptest_config(2000))]
 
     #[test]
     fn exact_path_agrees_with_clarabel(p in planar_problem()) {

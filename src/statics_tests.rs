@@ -1,13 +1,14 @@
 //! The closed-form statics against the corrected Table 1, hand derivations and its invariants.
 
 use jamchart::paper::TABLE1;
+use jamchart::scene::disc_position_mm;
 use jamchart::statics::{self, margin_n};
-use jamchart::{JamStatus, SceneParams, disc_position_mm};
+use jamchart::{JamStatus, SceneParams};
 use proptest::prelude::*;
 
 /// Rows of tests/golden/table1.csv: (mu, theta_deg, x_mm, paper_theta_deg, paper_x_mm).
 fn golden_table1() -> Vec<[f64; 5]> {
-    include_str!("golden/table1.csv")
+    include_str!("../tests/golden/table1.csv")
         .lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with("mu,"))
         .map(|l| {
@@ -197,7 +198,7 @@ fn any_scene() -> impl Strategy<Value = SceneParams> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 4000, max_global_rejects: 20_000, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { max_global_rejects: 20_000, ..crate::proptest_config(4000) })]
 
     #[test]
     fn no_nan_or_infinity_reaches_an_output(p in any_scene(), u in 0.0..1.0f64) {

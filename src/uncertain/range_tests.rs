@@ -8,7 +8,7 @@ use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
 use jamchart::{JamStatus, SceneParams};
 
 /// The 25 mm shaft: r 12.5 mm, 0.4 kg, 40 N, an 80 mm palm; mu nominal 0.21.
-use crate::common::shaft as shaft_25mm;
+use super::shaft as shaft_25mm;
 use shaft_25mm::shaft_25mm as shaft;
 
 fn input(name: &'static str, keys: &[&'static str], lo: f64, hi: f64) -> UncertainInput {
