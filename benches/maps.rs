@@ -21,7 +21,9 @@
 //! min-norm ratio is printed in wall time (the goal's) and in CPU time, and, where valgrind is
 //! installed, in instructions: callgrind counts a sample of the map (whole columns of 400 cells,
 //! so each search starts from its neighbours as in the full map) and one `render fig3`.
-//! `cargo bench --bench maps -- goals` runs only these.
+//! `cargo bench --bench maps -- goals` runs only these. The sample is this binary run with
+//! `column-sample [COLUMNS]` (20 columns by default, 400 the whole map): a process to count or
+//! to time from outside against `jamchart render fig3`.
 
 mod common;
 

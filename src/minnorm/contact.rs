@@ -260,7 +260,7 @@ impl Default for Lowered {
 /// `m` as a zero matrix of `rows` x `cols`, in its own buffer when the shape is the same.
 fn zeroed(m: &mut DMatrix<f64>, rows: usize, cols: usize) {
     if m.shape() == (rows, cols) {
-        m.fill(0.0);
+        m.as_mut_slice().fill(0.0);
     } else {
         *m = DMatrix::zeros(rows, cols);
     }
@@ -405,7 +405,7 @@ impl ContactProblem {
         zeroed(eq, n_eq_rows + prescribed.len(), n_vars);
         let eq_rhs = &mut low.eq_rhs;
         if eq_rhs.len() == eq.nrows() {
-            eq_rhs.fill(0.0);
+            eq_rhs.as_mut_slice().fill(0.0);
         } else {
             *eq_rhs = DVector::zeros(eq.nrows());
         }

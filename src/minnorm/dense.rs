@@ -7,33 +7,15 @@
 //! reciprocal scaling, `LU::solve`, `Matrix * Vector`, `amax`), so every answer is bit for bit
 //! the one a `DMatrix` gives; the tests hold them to it on random and singular matrices.
 
-/// Calls `$f(k)` with `k` a constant for the sizes of small planar problems' KKT systems (7 and
-/// 8 in the palm scene), so that the compiler unrolls each size's loops, and as it is otherwise.
-macro_rules! unrolled {
-    ($k:expr, $f:expr) => {
-        match $k {
-            1 => $f(1),
-            2 => $f(2),
-            3 => $f(3),
-            4 => $f(4),
-            5 => $f(5),
-            6 => $f(6),
-            7 => $f(7),
-            8 => $f(8),
-            9 => $f(9),
-            10 => $f(10),
-            k => $f(k),
-        }
-    };
-}
-pub(super) use unrolled;
-
 /// Factorises the k x k column-major `a` in place by Gaussian elimination with partial
 /// pivoting (the unit lower factor below the diagonal, the upper factor on and above it), as
 /// nalgebra's `LU::new`: a column without a non-zero pivot is left as it is. The row swaps are
 /// written to `swaps` in order; returns their number.
+///
+/// Inlined, so that a caller that knows `k` has the loops unrolled.
+#[inline(always)]
 pub(super) fn lu_in_place(a: &mut [f64], k: usize, swaps: &mut [(usize, usize)]) -> usize {
-    unrolled!(k, |k| lu_steps(a, k, 0, swaps, 0))
+    lu_steps(a, k, 0, swaps, 0)
 }
 
 /// The elimination steps `from..k` of [`lu_in_place`], after `n_swaps` swaps.
@@ -94,26 +76,11 @@ fn lu_steps(
 /// are the base's as long as no bordering row would be chosen as a pivot in them, the
 /// bordering rows' multipliers need only the base's upper factor and the bordering columns its
 /// swaps and lower factor, in the same operations in the same order. So the factors are
-/// [`lu_in_place`]'s bit for bit, at about a third of the cost for one bordering row. None,
-/// with `a` spoilt, when a bordering row would have been a pivot: factorise the matrix whole.
-pub(super) fn lu_bordered(
-    a: &mut [f64],
-    k: usize,
-    base: &[f64],
-    b: usize,
-    base_swaps: &[(usize, usize)],
-    swaps: &mut [(usize, usize)],
-) -> Option<usize> {
-    if b + 1 == k {
-        // One bordering row (a set of one active row): both sizes known to the compiler.
-        unrolled!(k, |k| lu_bordered_k(a, k, base, k - 1, base_swaps, swaps))
-    } else {
-        lu_bordered_k(a, k, base, b, base_swaps, swaps)
-    }
-}
-
+/// [`lu_in_place`]'s bit for bit, for a fraction of the work when the border is thin (one
+/// row and column for a set of one active row). None, with `a` spoilt, when a bordering row
+/// would have been a pivot: factorise the matrix whole.
 #[inline(always)]
-fn lu_bordered_k(
+pub(super) fn lu_bordered(
     a: &mut [f64],
     k: usize,
     base: &[f64],
@@ -176,13 +143,8 @@ fn lu_bordered_k(
 /// Solves `A x = b` in place of `b` from [`lu_in_place`]'s factors `lu` and `swaps`, as
 /// nalgebra's `LU::solve`: false (and `b` spoilt) when the upper factor has a zero on its
 /// diagonal.
-pub(super) fn lu_solve(lu: &[f64], k: usize, swaps: &[(usize, usize)], b: &mut [f64]) -> bool {
-    unrolled!(k, |k| lu_solve_k(lu, k, swaps, b))
-}
-
-/// [`lu_solve`] inlined, for a caller that knows `k`.
 #[inline(always)]
-pub(super) fn lu_solve_k(lu: &[f64], k: usize, swaps: &[(usize, usize)], b: &mut [f64]) -> bool {
+pub(super) fn lu_solve(lu: &[f64], k: usize, swaps: &[(usize, usize)], b: &mut [f64]) -> bool {
     let b = &mut b[..k];
     for &(i, j) in swaps {
         b.swap(i, j);
