@@ -205,6 +205,27 @@ impl OdeSystem<1> for Decay {
     }
 }
 
+/// RADAU5 keeps J from step to step while the Newton iteration contracts faster than 0.001
+/// (Hairer's THET), and evaluates it anew after a slow contraction or a rejection: on a linear
+/// problem, where the simplified Newton iteration is exact, J is evaluated on a few steps of
+/// the run, not on every one; on Van der Pol (mu = 1e3) on fewer steps than are taken, with
+/// the reference solution still met (`radau5_van_der_pol_mu_1e3`).
+#[test]
+fn radau5_keeps_its_jacobian_while_newton_contracts_fast() {
+    let mut y = [1.0];
+    let (out, st) = Radau5.integrate(&Decay, 0.0, &mut y, 5.0, &tol(1e-8, 1e-12), &mut Nothing);
+    assert_eq!(out, Outcome::Finished);
+    assert_close("decay(5)", &y, &[(-5f64).exp()], 1e-6, 1e-12);
+    assert!(st.jacobian_evals * 10 <= st.steps, "decay: {st:?}");
+    let mut y = [2.0, -0.66];
+    let (_, st) = Radau5.integrate(&VanDerPol, 0.0, &mut y, 2.0, &tol(1e-9, 1e-9), &mut Nothing);
+    assert!(st.jacobian_evals < st.steps, "van der pol: {st:?}");
+    eprintln!(
+        "van der pol: {} Jacobians for {} steps",
+        st.jacobian_evals, st.steps
+    );
+}
+
 #[test]
 fn dense_output_between_steps() {
     for radau in [false, true] {
