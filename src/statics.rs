@@ -62,14 +62,34 @@
 //! boundary's angle (`reach_angle_rad`, the start angle), found by regula falsi, or by
 //! bisection of `status` for the other changes. The tests check the interval against a
 //! dense grid of point answers over random boxes (`tests/range_promise.rs`).
+//!
+//! ## Evaluation: one arctangent per push
+//!
+//! Each angle of theta_jam is known by its tangent or sine, so each is held as the unit vector
+//! (cos, sin) and their sum as the product of unit complex numbers:
+//!
+//! ```text
+//! alpha = atan(mu):          (1, mu) / sqrt(1 + mu^2)
+//! beta = asin(k), k < 1:     (sqrt((1 - k)(1 + k)), k),   k = m g sin(alpha_g) / F
+//! theta_jam = alpha_g + alpha_p + beta:   (cos, sin) = product of the three
+//! tan(theta_jam / 2) = sin / (1 + cos)    ((1 - cos) / sin where cos <= 0)
+//! x_jam = r / tan(theta_jam / 2) + h / sin(theta_jam),   s_B = x_jam cos + r sin
+//! ```
+//!
+//! and the start margin mu_g (m g + F cos(phi)) - F sin(phi) takes phi = theta_start -
+//! alpha_p the same way. Only theta_jam in degrees needs an arctangent, 2 atan(tan(theta/2)).
+//! The trigonometric form above is the oracle of the tests (a few ulp apart); this one takes
+//! square roots and divisions where that one takes six transcendental functions, and a batch
+//! of pushes lets their chains overlap (`jam_batch`), the same bits as one push alone.
 
-use std::f64::consts::FRAC_PI_2;
+use std::f64::consts::PI;
 
 use serde::Serialize;
 
 use crate::scene::{JamStatus, SceneParams};
 
 /// Ground reaction at contact A for a palm angle, from the corrected Eq. 1.
+#[cfg(test)]
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub(crate) struct GroundReaction {
     /// Tangential reaction R_t in N, positive against the disc's motion (towards the hinge).
@@ -90,6 +110,7 @@ pub(crate) fn ground_reaction(p: &SceneParams, theta: f64) -> GroundReaction {
 }
 
 /// [`ground_reaction`] with the palm's friction angle `alpha_palm` (rad) given.
+#[cfg(test)]
 fn reaction_at(p: &SceneParams, alpha_palm: f64, theta: f64) -> GroundReaction {
     let phi = theta - alpha_palm;
     let r_t = p.force_n * phi.sin();
@@ -108,9 +129,10 @@ pub(crate) fn margin_n(p: &SceneParams, theta: f64) -> f64 {
     ground_reaction(p, theta).margin_n
 }
 
-/// [`margin_n`] with the palm's friction angle `alpha_palm` (rad) given.
-fn margin_at(p: &SceneParams, alpha_palm: f64, theta: f64) -> f64 {
-    reaction_at(p, alpha_palm, theta).margin_n
+/// [`margin_n`] at the palm angle `theta` less the palm's friction angle, both as [`Turn`]s:
+/// mu_g (m g + F cos(phi)) - F sin(phi) with phi = theta - alpha_p.
+fn margin_at(p: &SceneParams, phi: Turn) -> f64 {
+    p.mu_ground * (p.weight_n() + p.force_n * phi.cos) - p.force_n * phi.sin
 }
 
 /// The closed-form answer for one push.
@@ -159,37 +181,199 @@ pub struct PastPalm {
 /// The closed-form jam angle in rad, alpha_g + alpha_p + asin(m g sin(alpha_g) / F), before the
 /// statuses are decided; +infinity when the push can never move the disc (m g sin(alpha_g) >= F).
 pub(crate) fn theta_jam_rad(p: &SceneParams) -> f64 {
-    theta_jam_from(p, &FrictionAngles::of(p))
+    Core::of(p).theta_jam
 }
 
-/// The friction angles alpha_g = atan(mu_ground) and alpha_p = atan(mu_palm) in rad, each
-/// computed once per scene: [`decide`] needs them three times over.
-struct FrictionAngles {
-    ground: f64,
-    palm: f64,
+/// An angle held as its cosine and sine: the friction angles and their sum are composed by
+/// multiplying unit complex numbers, so the closed form takes no trigonometric function but
+/// one arctangent for the angle it reports.
+#[derive(Debug, Clone, Copy)]
+struct Turn {
+    cos: f64,
+    sin: f64,
 }
 
-impl FrictionAngles {
+impl Turn {
+    /// The angle 0.
+    const ZERO: Turn = Turn { cos: 1.0, sin: 0.0 };
+
+    /// The angle `theta` (rad).
+    fn of(theta: f64) -> Self {
+        let (sin, cos) = theta.sin_cos();
+        Turn { cos, sin }
+    }
+
+    /// The friction angle atan(mu): (1, mu) / sqrt(1 + mu^2), or (1/mu, 1) where 1 + mu^2
+    /// would overflow.
+    fn friction(mu: f64) -> Self {
+        if mu > 1e150 {
+            return Turn {
+                cos: 1.0 / mu,
+                sin: 1.0,
+            };
+        }
+        let cos = 1.0 / (1.0 + mu * mu).sqrt();
+        Turn { cos, sin: mu * cos }
+    }
+
+    /// The angle asin(s) for s in [0, 1]: (sqrt((1 - s)(1 + s)), s).
+    fn arcsine(s: f64) -> Self {
+        Turn {
+            cos: ((1.0 - s) * (1.0 + s)).sqrt(),
+            sin: s,
+        }
+    }
+
+    /// The sum of both angles.
+    fn plus(self, o: Turn) -> Turn {
+        Turn {
+            cos: self.cos * o.cos - self.sin * o.sin,
+            sin: self.sin * o.cos + self.cos * o.sin,
+        }
+    }
+
+    /// This angle less `o`.
+    fn minus(self, o: Turn) -> Turn {
+        Turn {
+            cos: self.cos * o.cos + self.sin * o.sin,
+            sin: self.sin * o.cos - self.cos * o.sin,
+        }
+    }
+
+    /// tan(theta / 2): sin / (1 + cos), or (1 - cos) / sin where cos <= 0, so that neither
+    /// form subtracts nearly equal numbers.
+    fn half_tan(self) -> f64 {
+        match self.cos > 0.0 {
+            true => self.sin / (1.0 + self.cos),
+            false => (1.0 - self.cos) / self.sin,
+        }
+    }
+
+    /// The angle in rad, in [0, 2 pi): 2 atan(tan(theta / 2)), a half turn added below the
+    /// axis.
+    fn angle(self) -> f64 {
+        let half = self.half_tan().atan();
+        match half < 0.0 {
+            true => 2.0 * (half + PI),
+            false => 2.0 * half,
+        }
+    }
+
+    /// The disc's position x = r cot(theta/2) + h / sin(theta) in mm where the palm stands
+    /// at this angle ([`SceneParams::disc_position_mm`]).
+    fn disc_position_mm(self, p: &SceneParams) -> f64 {
+        let base = p.radius_mm / self.half_tan();
+        match p.palm_offset_mm == 0.0 {
+            true => base,
+            false => base + p.palm_offset_mm / self.sin,
+        }
+    }
+
+    /// The contact's distance s_B = x cos(theta) + r sin(theta) in mm from the hinge along
+    /// the palm, with the disc at `x` ([`crate::scene::contact_distance_at_mm`]).
+    fn contact_distance_mm(self, p: &SceneParams, x: f64) -> f64 {
+        match p.palm_offset_mm == 0.0 {
+            true => x,
+            false => x * self.cos + p.radius_mm * self.sin,
+        }
+    }
+}
+
+/// The friction angles alpha_g = atan(mu_ground) and alpha_p = atan(mu_palm) as [`Turn`]s,
+/// each computed once per scene.
+#[derive(Clone, Copy)]
+struct Frictions {
+    ground: Turn,
+    palm: Turn,
+}
+
+impl Frictions {
     fn of(p: &SceneParams) -> Self {
-        let ground = p.alpha_ground();
-        // Equal frictions (the paper's one mu) have one angle: one arctangent, the same bits.
+        let ground = Turn::friction(p.mu_ground);
+        // Equal frictions (the paper's one mu) have one angle: one square root, the same bits.
         let palm = match p.mu_palm.to_bits() == p.mu_ground.to_bits() {
             true => ground,
-            false => p.alpha_palm(),
+            false => Turn::friction(p.mu_palm),
         };
-        FrictionAngles { ground, palm }
+        Frictions { ground, palm }
+    }
+
+    /// The wedge alpha_g + alpha_p is under 90 deg: tan(alpha_g + alpha_p) = (mu_g + mu_p) /
+    /// (1 - mu_g mu_p) is finite and positive.
+    fn wedge_open(p: &SceneParams) -> bool {
+        p.mu_ground * p.mu_palm < 1.0
     }
 }
 
-/// [`theta_jam_rad`] from the scene's friction angles.
-fn theta_jam_from(p: &SceneParams, a: &FrictionAngles) -> f64 {
-    // m g sin(alpha_g) / F, written so that mu -> infinity stays finite.
-    let load_ratio = p.weight_n() * a.ground.sin() / p.force_n;
-    if load_ratio < 1.0 {
-        a.ground + a.palm + load_ratio.asin()
-    } else {
-        f64::INFINITY
+/// The start angle as an angle in rad and a [`Turn`]: what every push of a batch that shares
+/// its start angle computes once.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Start {
+    rad: f64,
+    turn: Turn,
+}
+
+impl Start {
+    /// The start angle of `p`.
+    pub(crate) fn of(p: &SceneParams) -> Self {
+        let rad = p.start_angle_deg.to_radians();
+        Start {
+            rad,
+            turn: Turn::of(rad),
+        }
     }
+}
+
+/// What a push's status rests on besides its start angle: the friction angles and theta_jam,
+/// as a [`Turn`] (None when the push is too weak) and in rad (+infinity then).
+#[derive(Clone, Copy)]
+struct Core {
+    frictions: Frictions,
+    jam: Option<Turn>,
+    theta_jam: f64,
+}
+
+impl Core {
+    fn of(p: &SceneParams) -> Self {
+        let [core] = Self::batch([p]);
+        core
+    }
+
+    /// The cores of `N` pushes, each lane computed by the same operations as [`Core::of`] (the
+    /// same bits), phase by phase across the lanes: a push's square roots, divisions and
+    /// arctangent form one chain, and the chains of `N` pushes overlap where one push's would
+    /// leave the processor waiting.
+    #[inline(always)]
+    fn batch<const N: usize>(ps: [&SceneParams; N]) -> [Core; N] {
+        let mut cores = [Core {
+            frictions: Frictions {
+                ground: Turn::ZERO,
+                palm: Turn::ZERO,
+            },
+            jam: None,
+            theta_jam: f64::INFINITY,
+        }; N];
+        for (core, p) in cores.iter_mut().zip(ps) {
+            core.frictions = Frictions::of(p);
+        }
+        for (core, p) in cores.iter_mut().zip(ps) {
+            core.jam = jam_turn(p, &core.frictions);
+        }
+        for core in &mut cores {
+            if let Some(jam) = core.jam {
+                core.theta_jam = jam.angle();
+            }
+        }
+        cores
+    }
+}
+
+/// theta_jam = alpha_g + alpha_p + asin(m g sin(alpha_g) / F) as a [`Turn`]; None when the push
+/// can never move the disc (m g sin(alpha_g) >= F).
+fn jam_turn(p: &SceneParams, a: &Frictions) -> Option<Turn> {
+    // m g sin(alpha_g) / F, written so that mu -> infinity stays finite.
+    let load_ratio = p.weight_n() * a.ground.sin / p.force_n;
+    (load_ratio < 1.0).then(|| a.ground.plus(a.palm).plus(Turn::arcsine(load_ratio)))
 }
 
 /// The palm angle in rad at which the contact sits at the palm's end, s_B = L: the status
@@ -211,24 +395,26 @@ pub(crate) fn reach_angle_rad(p: &SceneParams) -> f64 {
 /// closed (frictionless) or x_rigid is not finite. Depends on mu_ground, mu_palm, radius_mm and
 /// palm_offset_mm only.
 pub(crate) fn rigid_limit(p: &SceneParams) -> (f64, Option<f64>) {
-    rigid_limit_from(p, &FrictionAngles::of(p))
+    rigid_limit_from(p, &Frictions::of(p))
 }
 
 /// [`rigid_limit`] from the scene's friction angles.
-fn rigid_limit_from(p: &SceneParams, a: &FrictionAngles) -> (f64, Option<f64>) {
-    let wedge = a.ground + a.palm;
-    let x_rigid = finite_or_none(p.disc_position_mm(wedge)).filter(|_| wedge > 0.0);
-    (wedge.to_degrees(), x_rigid)
+fn rigid_limit_from(p: &SceneParams, a: &Frictions) -> (f64, Option<f64>) {
+    let wedge = a.ground.plus(a.palm);
+    let angle = wedge.angle();
+    let x_rigid = finite_or_none(wedge.disc_position_mm(p)).filter(|_| angle > 0.0);
+    (angle.to_degrees(), x_rigid)
 }
 
 /// Solves the scene in closed form. `p` must have passed [`SceneParams::validate`].
 pub(crate) fn solve(p: &SceneParams) -> StaticsSolution {
-    let start = p.start_angle_deg.to_radians();
-    let angles = FrictionAngles::of(p);
-    let lift_off_above = lift_off_angle(p, angles.palm);
-    let lifts_off = lift_off_above.is_some_and(|t| t < start);
+    let start = Start::of(p);
+    let core = Core::of(p);
+    let frictions = core.frictions;
+    let lift_off_above = lift_off_angle(p, frictions.palm.angle());
+    let lifts_off = lift_off_above.is_some_and(|t| t < start.rad);
 
-    let (theta_rigid_deg, x_rigid_mm) = rigid_limit_from(p, &angles);
+    let (theta_rigid_deg, x_rigid_mm) = rigid_limit_from(p, &frictions);
     let mut out = StaticsSolution {
         status: JamStatus::Jams,
         theta_jam_deg: None,
@@ -240,8 +426,8 @@ pub(crate) fn solve(p: &SceneParams) -> StaticsSolution {
         past_palm: None,
     };
 
-    let decision = decide_with(p, &angles);
-    (out.status, out.theta_jam_deg, out.x_jam_mm) = jam_of(p, &decision);
+    let decision = decide_with(p, &core, &start);
+    (out.status, out.theta_jam_deg, out.x_jam_mm) = jam_of(p, &start, &decision);
     if let Decision::PastPalm {
         theta_jam,
         x_jam,
@@ -262,16 +448,37 @@ pub(crate) fn solve(p: &SceneParams) -> StaticsSolution {
 /// limit, the jam past the palm): what a batch of pushes needs. `p` must have passed
 /// [`SceneParams::validate`].
 pub(crate) fn jam(p: &SceneParams) -> (JamStatus, Option<f64>, Option<f64>) {
-    jam_of(p, &decide(p))
+    jam_from(p, &Start::of(p))
+}
+
+/// [`jam`] with `p`'s start angle given: a batch whose pushes share it computes it once
+/// (the same bits).
+pub(crate) fn jam_from(p: &SceneParams, start: &Start) -> (JamStatus, Option<f64>, Option<f64>) {
+    jam_of(p, start, &decide_with(p, &Core::of(p), start))
+}
+
+/// A status, theta_jam in deg and x_jam in mm: [`jam`]'s answer.
+pub(crate) type Jam = (JamStatus, Option<f64>, Option<f64>);
+
+/// [`jam_from`] for `N` pushes at once, each the same bits as alone: the pushes' arithmetic
+/// overlaps ([`Core::batch`]). `starts` gives each push's start angle.
+#[inline]
+pub(crate) fn jam_batch<const N: usize>(ps: [&SceneParams; N], starts: [&Start; N]) -> [Jam; N] {
+    let cores = Core::batch(ps);
+    let mut jams = [(JamStatus::Jams, None, None); N];
+    for (i, jam) in jams.iter_mut().enumerate() {
+        *jam = jam_of(ps[i], starts[i], &decide_with(ps[i], &cores[i], starts[i]));
+    }
+    jams
 }
 
 /// The status, theta_jam (deg) and x_jam (mm) of decision `d` for `p`.
-fn jam_of(p: &SceneParams, d: &Decision) -> (JamStatus, Option<f64>, Option<f64>) {
+fn jam_of(p: &SceneParams, start: &Start, d: &Decision) -> (JamStatus, Option<f64>, Option<f64>) {
     match *d {
         Decision::JammedAtStart => (
             JamStatus::JammedAtStart,
             Some(p.start_angle_deg),
-            finite_or_none(p.disc_position_mm(p.start_angle_deg.to_radians())),
+            finite_or_none(start.turn.disc_position_mm(p)),
         ),
         Decision::Jams { theta_jam, x_jam } => {
             (JamStatus::Jams, Some(theta_jam.to_degrees()), Some(x_jam))
@@ -284,7 +491,7 @@ fn jam_of(p: &SceneParams, d: &Decision) -> (JamStatus, Option<f64>, Option<f64>
 /// angle, rigid limit or past-palm bisection), for scans that only need the verdict, such
 /// as the status breakpoints of a range answer. `p` must have passed validation.
 pub(crate) fn status(p: &SceneParams) -> JamStatus {
-    decide(p).status()
+    decide_with(p, &Core::of(p), &Start::of(p)).status()
 }
 
 /// The verdict of the closed form and the numbers it rests on, before [`solve`] adds its extras.
@@ -316,36 +523,36 @@ impl Decision {
 }
 
 /// Decides the status in the order beyond_reach (start), never_jams, too_weak,
-/// jammed_at_start, beyond_reach (jam past the palm), jams.
-fn decide(p: &SceneParams) -> Decision {
-    decide_with(p, &FrictionAngles::of(p))
-}
-
-/// [`decide`] from the scene's friction angles.
-fn decide_with(p: &SceneParams, a: &FrictionAngles) -> Decision {
-    let start = p.start_angle_deg.to_radians();
+/// jammed_at_start, beyond_reach (jam past the palm), jams, from the scene's friction angles
+/// and its start angle.
+fn decide_with(p: &SceneParams, core: &Core, start: &Start) -> Decision {
     // A disc that starts beyond the palm's end is never touched, whatever the friction.
-    if p.contact_distance_mm(start) > p.palm_length_mm {
+    let at_start = start.turn.disc_position_mm(p);
+    if start.turn.contact_distance_mm(p, at_start) > p.palm_length_mm {
         return Decision::Bare(JamStatus::BeyondReach);
     }
-    let theta_jam = theta_jam_from(p, a);
+    let Some(jam) = core.jam else {
+        // Too weak: no angle slides the disc, not even 90 deg + alpha_g + alpha_p where the
+        // push slides it best. When that angle lies past 180 deg (mu_g mu_p >= 1) the wedge
+        // self-locks at every palm angle whatever the push, and the disc is jammed at the
+        // start instead.
+        return match Frictions::wedge_open(p) {
+            true => Decision::Bare(JamStatus::TooWeak),
+            false => Decision::JammedAtStart,
+        };
+    };
+    let theta_jam = core.theta_jam;
     if theta_jam <= 0.0 {
         return Decision::Bare(JamStatus::NeverJams);
     }
-    // Too weak: no angle slides the disc, not even 90 deg + alpha_g + alpha_p where the push
-    // slides it best. When that angle lies past 180 deg (mu_g mu_p >= 1) the wedge self-locks
-    // at every palm angle whatever the push, and the disc is jammed at the start instead.
-    if theta_jam.is_infinite() && a.ground + a.palm < FRAC_PI_2 {
-        return Decision::Bare(JamStatus::TooWeak);
-    }
     // The margin is checked at the start as well: with a heavy disc and a start near 180 deg the
     // ground may hold beyond the second root of the margin, above theta_jam.
-    if theta_jam >= start || margin_at(p, a.palm, start) >= 0.0 {
+    if theta_jam >= start.rad || margin_at(p, start.turn.minus(core.frictions.palm)) >= 0.0 {
         return Decision::JammedAtStart;
     }
-    let x_jam = p.disc_position_mm(theta_jam);
+    let x_jam = jam.disc_position_mm(p);
     // x_jam may overflow to +inf for a vanishing wedge angle; that is beyond any palm.
-    let s_b = crate::scene::contact_distance_at_mm(p.radius_mm, p.palm_offset_mm, theta_jam, x_jam);
+    let s_b = jam.contact_distance_mm(p, x_jam);
     if x_jam.is_nan() || s_b.is_nan() || s_b > p.palm_length_mm {
         return Decision::PastPalm {
             theta_jam,
@@ -415,6 +622,59 @@ mod statics_tests;
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A [`Turn`] gives back its angle over the whole circle, within 2 ulp of 2 pi.
+    #[test]
+    fn a_turn_gives_back_its_angle() {
+        for i in 0..=4000 {
+            let theta = 2.0 * PI * f64::from(i) / 4001.0;
+            let back = Turn::of(theta).angle();
+            assert!(
+                (back - theta).abs() <= 4.0 * f64::EPSILON * PI,
+                "{theta}: {back}"
+            );
+        }
+    }
+
+    /// theta_jam composed from the frictions' unit vectors is the trigonometric closed form
+    /// atan(mu_g) + atan(mu_p) + asin(m g sin(atan mu_g) / F), and x_jam is r cot(theta/2) +
+    /// h / sin(theta) at it, both to a few ulp, over frictions, loads and offsets.
+    #[test]
+    fn the_composed_closed_form_is_the_trigonometric_one() {
+        for mu_g in [0.0, 1e-6, 0.05, 0.2, 0.4, 0.9, 1.7, 40.0, 1e200] {
+            for mu_p in [0.0, 0.01, 0.3, 1.2, 8.0] {
+                for force in [0.5, 3.0, 40.0, 1e6] {
+                    for offset in [0.0, 0.5] {
+                        let p = SceneParams {
+                            mu_ground: mu_g,
+                            mu_palm: mu_p,
+                            force_n: force,
+                            palm_offset_mm: offset,
+                            ..SceneParams::default()
+                        };
+                        let load = p.weight_n() * mu_g.atan().sin() / force;
+                        let composed = theta_jam_rad(&p);
+                        if load >= 1.0 {
+                            assert!(composed.is_infinite(), "{p:?}");
+                            continue;
+                        }
+                        let trig = mu_g.atan() + mu_p.atan() + load.asin();
+                        let d = (composed - trig).abs() / trig.max(1e-300);
+                        assert!(
+                            d <= 8.0 * f64::EPSILON || composed == trig,
+                            "{p:?}: {composed} {trig}"
+                        );
+                        if composed > 0.0 && composed < PI {
+                            let x = Core::of(&p).jam.unwrap().disc_position_mm(&p);
+                            let want = p.disc_position_mm(trig);
+                            let dx = (x - want).abs() / want;
+                            assert!(dx <= 1e-13, "{p:?}: x {x} {want}");
+                        }
+                    }
+                }
+            }
+        }
+    }
 
     /// Regression: a push too weak ever to move the disc was reported `jammed_at_start`, the
     /// same as a disc that jams as soon as the palm touches it.

@@ -7,6 +7,7 @@
 //! detail); the other models go through [`super::solve`], min-norm pushes that differ in one
 //! parameter only a column at a time ([`super::solve_column`]).
 
+use std::array::from_fn;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use rayon::prelude::*;
@@ -114,6 +115,14 @@ struct Resolved<'a> {
 }
 
 impl Resolved<'_> {
+    /// Whether a column sets the field `key`.
+    fn sets(&self, key: &str) -> bool {
+        self.columns.iter().any(|(set, _)| match set {
+            Sets::Fields(keys, _) => keys.contains(&key),
+            Sets::PushRatio => false,
+        })
+    }
+
     /// The first push whose scene from `base` is invalid, if any. Each field's check stands
     /// alone ([`SceneParams::validate`]), so a column's values are checked against the fields
     /// they set, one pass over each column; a column of push ratios (a force from the mass
@@ -179,6 +188,9 @@ impl Resolved<'_> {
     }
 }
 
+/// Closed-form pushes answered together ([`statics::jam_batch`]).
+const LANES: usize = 4;
+
 /// Pushes answered per task of the thread pool: large enough that a closed-form answer
 /// (about 0.1 us) outweighs the task, small enough that 2 threads share a map of 10^4.
 const CHUNK: usize = 512;
@@ -235,11 +247,16 @@ pub fn solve_into_until(
     if let Some(i) = resolved.first_invalid(pushes.base, n) {
         scene(i).validate()?;
     }
+    // The start angle's sine and cosine once, where no column sets it.
+    let start_angle = (!resolved.sets("start_angle_deg")).then(|| statics::Start::of(&pushes.base));
     let answer = |i: usize| -> Result<(JamStatus, Option<f64>, Option<f64>)> {
         let p = scene(i);
         Ok(match spec {
             _ if let Some(_why) = outside(spec.kind(), &p) => (JamStatus::OutsideModel, None, None),
-            ModelSpec::Statics => statics::jam(&p),
+            ModelSpec::Statics => match &start_angle {
+                Some(start) => statics::jam_from(&p, start),
+                None => statics::jam(&p),
+            },
             _ => {
                 let s = solve(spec, &p)?;
                 (s.status, s.theta_jam_deg, s.x_jam_mm)
@@ -275,7 +292,32 @@ pub fn solve_into_until(
                     put(k, (a.status, a.theta_jam_deg, a.x_jam_mm));
                 }
             }
-            // Written in place: a closed-form answer costs less than collecting it.
+            // Closed-form answers LANES at a time, their arithmetic overlapping, each the same
+            // bits as alone ([`statics::jam_batch`]); written in place.
+            ModelSpec::Statics => {
+                let mut k = 0;
+                while k + LANES <= len {
+                    let scenes: [SceneParams; LANES] = from_fn(|j| scene(start + k + j));
+                    let starts: [statics::Start; LANES] =
+                        from_fn(|j| start_angle.unwrap_or_else(|| statics::Start::of(&scenes[j])));
+                    let jams: [statics::Jam; LANES] =
+                        statics::jam_batch(from_fn(|j| &scenes[j]), from_fn(|j| &starts[j]));
+                    for (j, jam) in jams.into_iter().enumerate() {
+                        put(
+                            k + j,
+                            match outside(spec.kind(), &scenes[j]) {
+                                Some(_) => (JamStatus::OutsideModel, None, None),
+                                None => jam,
+                            },
+                        );
+                    }
+                    k += LANES;
+                }
+                for k in k..len {
+                    put(k, answer(start + k)?);
+                }
+            }
+            // Written in place: an answer costs less than collecting it.
             _ => {
                 for k in 0..len {
                     put(k, answer(start + k)?);
@@ -347,6 +389,74 @@ mod tests {
         solve_into(&ModelSpec::Statics, &pushes, out).unwrap();
         assert_eq!(st, st1);
         assert!(th.iter().zip(&th1).all(|(a, b)| a.to_bits() == b.to_bits()));
+    }
+
+    /// Closed-form pushes answered together are the same bits as each answered alone by
+    /// [`super::solve`], with every status among them, whichever fields vary (the start
+    /// angle too, above 90 deg outside the model), and a count that leaves a partial batch.
+    #[test]
+    fn closed_form_batches_answer_each_push_as_solve_does() {
+        let n = 4 * 250 + 3;
+        // A fixed sequence spread over each field's range (a Weyl sequence per column).
+        let spread = |k: usize, lo: f64, hi: f64| -> Vec<f64> {
+            let a = [
+                0.618_033_988_75,
+                0.414_213_562_37,
+                0.732_050_807_57,
+                0.236_067_977_5,
+            ][k % 4]
+                + 0.1 * k as f64;
+            (0..n)
+                .map(|i| lo + (hi - lo) * (a * (i as f64 + 1.0)).fract())
+                .collect()
+        };
+        let mu_g = spread(0, 0.0, 1.5);
+        let mu_p = spread(1, 0.0, 1.5);
+        let mass = spread(2, 0.0, 30.0);
+        let force = spread(3, 1.0, 300.0);
+        let start = spread(4, 20.0, 110.0);
+        let offset = spread(5, 0.0, 3.0);
+        let palm = spread(6, 5.0, 120.0);
+        let named = |k: &str| GridParam::named(k).unwrap();
+        let columns = vec![
+            (named("mu_ground"), &mu_g[..]),
+            (named("mu_palm"), &mu_p[..]),
+            (named("mass_kg"), &mass[..]),
+            (named("force_n"), &force[..]),
+            (named("palm_offset_mm"), &offset[..]),
+            (named("palm_length_mm"), &palm[..]),
+        ];
+        let mut seen = std::collections::HashSet::new();
+        for with_start in [false, true] {
+            let mut columns = columns.clone();
+            if with_start {
+                columns.push((named("start_angle_deg"), &start[..]));
+            }
+            let pushes = Pushes {
+                base: SceneParams::default(),
+                columns,
+            };
+            let (mut st, mut th, mut x) = (vec![0u8; n], vec![0.0; n], vec![0.0; n]);
+            let out = Answers {
+                status: &mut st,
+                theta_jam_deg: &mut th,
+                x_jam_mm: &mut x,
+            };
+            solve_into(&ModelSpec::Statics, &pushes, out).unwrap();
+            let resolved = pushes.resolved();
+            for i in 0..n {
+                let one = solve(&ModelSpec::Statics, &resolved.scene(pushes.base, i)).unwrap();
+                seen.insert(one.status);
+                assert_eq!(JamStatus::ALL[st[i] as usize], one.status, "push {i}");
+                let bits = |v: Option<f64>| v.unwrap_or(f64::NAN).to_bits();
+                assert_eq!(th[i].to_bits(), bits(one.theta_jam_deg), "push {i}");
+                assert_eq!(x[i].to_bits(), bits(one.x_jam_mm), "push {i}");
+            }
+        }
+        use JamStatus::*;
+        for status in [TooWeak, JammedAtStart, BeyondReach, Jams, OutsideModel] {
+            assert!(seen.contains(&status), "{status:?} not among {seen:?}");
+        }
     }
 
     /// Of several invalid pushes the first in order is refused, whichever column holds it, with
