@@ -444,24 +444,14 @@ pub(crate) fn solve(p: &SceneParams) -> StaticsSolution {
     out
 }
 
-/// [`solve`]'s status, theta_jam in deg and x_jam in mm without its extras (lift-off, rigid
-/// limit, the jam past the palm): what a batch of pushes needs. `p` must have passed
-/// [`SceneParams::validate`].
-pub(crate) fn jam(p: &SceneParams) -> (JamStatus, Option<f64>, Option<f64>) {
-    jam_from(p, &Start::of(p))
-}
-
-/// [`jam`] with `p`'s start angle given: a batch whose pushes share it computes it once
-/// (the same bits).
-pub(crate) fn jam_from(p: &SceneParams, start: &Start) -> (JamStatus, Option<f64>, Option<f64>) {
-    jam_of(p, start, &decide_with(p, &Core::of(p), start))
-}
-
-/// A status, theta_jam in deg and x_jam in mm: [`jam`]'s answer.
+/// A status, theta_jam in deg and x_jam in mm (None where there is none): [`solve`]'s answer
+/// without its extras (lift-off, rigid limit, the jam past the palm), what a batch of pushes
+/// needs.
 pub(crate) type Jam = (JamStatus, Option<f64>, Option<f64>);
 
-/// [`jam_from`] for `N` pushes at once, each the same bits as alone: the pushes' arithmetic
-/// overlaps ([`Core::batch`]). `starts` gives each push's start angle.
+/// The [`Jam`]s of `N` pushes, each the same bits as [`solve`]'s, their arithmetic overlapping
+/// ([`Core::batch`]); `starts` gives each push's start angle, so that a batch whose pushes
+/// share it computes it once. Each push must have passed [`SceneParams::validate`].
 #[inline]
 pub(crate) fn jam_batch<const N: usize>(ps: [&SceneParams; N], starts: [&Start; N]) -> [Jam; N] {
     let cores = Core::batch(ps);
@@ -473,7 +463,7 @@ pub(crate) fn jam_batch<const N: usize>(ps: [&SceneParams; N], starts: [&Start; 
 }
 
 /// The status, theta_jam (deg) and x_jam (mm) of decision `d` for `p`.
-fn jam_of(p: &SceneParams, start: &Start, d: &Decision) -> (JamStatus, Option<f64>, Option<f64>) {
+fn jam_of(p: &SceneParams, start: &Start, d: &Decision) -> Jam {
     match *d {
         Decision::JammedAtStart => (
             JamStatus::JammedAtStart,
@@ -525,6 +515,7 @@ impl Decision {
 /// Decides the status in the order beyond_reach (start), never_jams, too_weak,
 /// jammed_at_start, beyond_reach (jam past the palm), jams, from the scene's friction angles
 /// and its start angle.
+#[inline]
 fn decide_with(p: &SceneParams, core: &Core, start: &Start) -> Decision {
     // A disc that starts beyond the palm's end is never touched, whatever the friction.
     let at_start = start.turn.disc_position_mm(p);

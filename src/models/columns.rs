@@ -167,6 +167,7 @@ impl Resolved<'_> {
 
     /// Push `i`'s scene from `base`: each column's value set in order, as
     /// [`GridParam::apply`] sets it.
+    #[inline]
     fn scene(&self, base: SceneParams, i: usize) -> SceneParams {
         let mut p = base;
         for (set, values) in &self.columns {
@@ -249,20 +250,6 @@ pub fn solve_into_until(
     }
     // The start angle's sine and cosine once, where no column sets it.
     let start_angle = (!resolved.sets("start_angle_deg")).then(|| statics::Start::of(&pushes.base));
-    let answer = |i: usize| -> Result<(JamStatus, Option<f64>, Option<f64>)> {
-        let p = scene(i);
-        Ok(match spec {
-            _ if let Some(_why) = outside(spec.kind(), &p) => (JamStatus::OutsideModel, None, None),
-            ModelSpec::Statics => match &start_angle {
-                Some(start) => statics::jam_from(&p, start),
-                None => statics::jam(&p),
-            },
-            _ => {
-                let s = solve(spec, &p)?;
-                (s.status, s.theta_jam_deg, s.x_jam_mm)
-            }
-        })
-    };
     let chunk = match spec {
         ModelSpec::Statics => CHUNK,
         ModelSpec::MinNorm(_) => column_len(pushes, n),
@@ -292,17 +279,19 @@ pub fn solve_into_until(
                     put(k, (a.status, a.theta_jam_deg, a.x_jam_mm));
                 }
             }
-            // Closed-form answers LANES at a time, their arithmetic overlapping, each the same
-            // bits as alone ([`statics::jam_batch`]); written in place.
+            // Closed-form answers LANES at a time, written in place; a last, partial batch
+            // repeats its last push (one instance of the batch: LLVM inlines all of it).
             ModelSpec::Statics => {
-                let mut k = 0;
-                while k + LANES <= len {
-                    let scenes: [SceneParams; LANES] = from_fn(|j| scene(start + k + j));
+                for k in (0..len).step_by(LANES) {
+                    let mut scenes = [pushes.base; LANES];
+                    for (j, p) in scenes.iter_mut().enumerate() {
+                        *p = scene(start + (k + j).min(len - 1));
+                    }
                     let starts: [statics::Start; LANES] =
                         from_fn(|j| start_angle.unwrap_or_else(|| statics::Start::of(&scenes[j])));
                     let jams: [statics::Jam; LANES] =
                         statics::jam_batch(from_fn(|j| &scenes[j]), from_fn(|j| &starts[j]));
-                    for (j, jam) in jams.into_iter().enumerate() {
+                    for (j, jam) in jams.into_iter().take(len - k).enumerate() {
                         put(
                             k + j,
                             match outside(spec.kind(), &scenes[j]) {
@@ -311,16 +300,13 @@ pub fn solve_into_until(
                             },
                         );
                     }
-                    k += LANES;
-                }
-                for k in k..len {
-                    put(k, answer(start + k)?);
                 }
             }
             // Written in place: an answer costs less than collecting it.
-            _ => {
+            ModelSpec::Dynamics { .. } => {
                 for k in 0..len {
-                    put(k, answer(start + k)?);
+                    let s = solve(spec, &scene(start + k))?;
+                    put(k, (s.status, s.theta_jam_deg, s.x_jam_mm));
                 }
             }
         }
