@@ -79,10 +79,19 @@
 //! and the start margin mu_g (m g + F cos(phi)) - F sin(phi) takes phi = theta_start -
 //! alpha_p the same way. Only theta_jam in degrees needs an arctangent, 2 atan(tan(theta/2)).
 //! The trigonometric form above is the oracle of the tests (a few ulp apart); this one takes
-//! square roots and divisions where that one takes six transcendental functions, and a batch
-//! of pushes lets their chains overlap (`jam_batch`), the same bits as one push alone.
+//! square roots and divisions where that one takes six transcendental functions.
+//!
+//! ## Many pushes at once, the same bits
+//!
+//! The arithmetic is written once, over `N` lanes (`Many<N>`): every step is one IEEE
+//! operation per lane (+, -, *, /, sqrt, never a fused multiply-add), the arctangent too
+//! (Cephes' rational function instead of libm's call), and the status is chosen from values
+//! all computed, not reached by branches. A single push is `N = 1`; an array of pushes goes 16
+//! at a time, which the compiler turns into vector instructions (AVX2 where the processor
+//! has it, chosen at run time). A lane's result is the same bits as the push alone, on every
+//! machine, so a chart, the CLI and the Python package agree to the last bit.
 
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 
 use serde::Serialize;
 
@@ -127,12 +136,6 @@ fn reaction_at(p: &SceneParams, alpha_palm: f64, theta: f64) -> GroundReaction {
 #[cfg(test)]
 pub(crate) fn margin_n(p: &SceneParams, theta: f64) -> f64 {
     ground_reaction(p, theta).margin_n
-}
-
-/// [`margin_n`] at the palm angle `theta` less the palm's friction angle, both as [`Turn`]s:
-/// mu_g (m g + F cos(phi)) - F sin(phi) with phi = theta - alpha_p.
-fn margin_at(p: &SceneParams, phi: Turn) -> f64 {
-    p.mu_ground * (p.weight_n() + p.force_n * phi.cos) - p.force_n * phi.sin
 }
 
 /// The closed-form answer for one push.
@@ -181,43 +184,243 @@ pub struct PastPalm {
 /// The closed-form jam angle in rad, alpha_g + alpha_p + asin(m g sin(alpha_g) / F), before the
 /// statuses are decided; +infinity when the push can never move the disc (m g sin(alpha_g) >= F).
 pub(crate) fn theta_jam_rad(p: &SceneParams) -> f64 {
-    Core::of(p).theta_jam
+    verdict(&Push::of(p)).theta_jam.one()
 }
 
-/// An angle held as its cosine and sine: the friction angles and their sum are composed by
-/// multiplying unit complex numbers, so the closed form takes no trigonometric function but
-/// one arctangent for the angle it reports.
+/// `N` numbers, one per push of a batch. Each operation is a loop over the lanes doing one
+/// IEEE operation (no fused multiply-add), which the compiler turns into one vector
+/// instruction where the processor has them: a lane gets the same bits as a push alone
+/// (`N = 1`, the scalar code), on every machine and lane width.
 #[derive(Debug, Clone, Copy)]
-struct Turn {
-    cos: f64,
-    sin: f64,
+struct Many<const N: usize>([f64; N]);
+
+/// `N` truths, one per lane of [`Many`].
+#[derive(Debug, Clone, Copy)]
+struct Mask<const N: usize>([bool; N]);
+
+impl<const N: usize> From<f64> for Many<N> {
+    #[inline(always)]
+    fn from(v: f64) -> Self {
+        Many([v; N])
+    }
+}
+
+impl Many<1> {
+    /// The one lane's number.
+    fn one(self) -> f64 {
+        self.0[0]
+    }
+}
+
+impl<const N: usize> Many<N> {
+    #[inline(always)]
+    fn map(self, f: impl Fn(f64) -> f64) -> Self {
+        let mut out = self.0;
+        for v in &mut out {
+            *v = f(*v);
+        }
+        Many(out)
+    }
+
+    #[inline(always)]
+    fn zip(self, o: Self, f: impl Fn(f64, f64) -> f64) -> Self {
+        let mut out = self.0;
+        for (v, w) in out.iter_mut().zip(o.0) {
+            *v = f(*v, w);
+        }
+        Many(out)
+    }
+
+    #[inline(always)]
+    fn test(self, o: impl Into<Self>, f: impl Fn(f64, f64) -> bool) -> Mask<N> {
+        let o = o.into();
+        let mut out = [false; N];
+        for (j, m) in out.iter_mut().enumerate() {
+            *m = f(self.0[j], o.0[j]);
+        }
+        Mask(out)
+    }
+
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        self.map(f64::sqrt)
+    }
+
+    #[inline(always)]
+    fn lt(self, o: impl Into<Self>) -> Mask<N> {
+        self.test(o, |a, b| a < b)
+    }
+
+    #[inline(always)]
+    fn le(self, o: impl Into<Self>) -> Mask<N> {
+        self.test(o, |a, b| a <= b)
+    }
+
+    #[inline(always)]
+    fn gt(self, o: impl Into<Self>) -> Mask<N> {
+        self.test(o, |a, b| a > b)
+    }
+
+    #[inline(always)]
+    fn ge(self, o: impl Into<Self>) -> Mask<N> {
+        self.test(o, |a, b| a >= b)
+    }
+
+    #[inline(always)]
+    fn eq(self, o: impl Into<Self>) -> Mask<N> {
+        self.test(o, |a, b| a == b)
+    }
+
+    #[inline(always)]
+    fn is_nan(self) -> Mask<N> {
+        self.test(self, |a, _| a.is_nan())
+    }
+
+    #[inline(always)]
+    fn is_finite(self) -> Mask<N> {
+        self.test(self, |a, _| a.is_finite())
+    }
+}
+
+impl<const N: usize> Mask<N> {
+    /// `yes` where true, `no` where false, lane by lane.
+    #[inline(always)]
+    fn select(self, yes: impl Into<Many<N>>, no: impl Into<Many<N>>) -> Many<N> {
+        let (yes, no) = (yes.into(), no.into());
+        let mut out = no.0;
+        for ((o, m), y) in out.iter_mut().zip(self.0).zip(yes.0) {
+            if m {
+                *o = y;
+            }
+        }
+        Many(out)
+    }
+}
+
+/// The lane-by-lane operators of [`Many`], with a plain number on either side.
+macro_rules! lane_ops {
+    ($($trait:ident $method:ident $op:tt),*) => {$(
+        impl<const N: usize> std::ops::$trait for Many<N> {
+            type Output = Self;
+            #[inline(always)]
+            fn $method(self, o: Self) -> Self {
+                self.zip(o, |a, b| a $op b)
+            }
+        }
+        impl<const N: usize> std::ops::$trait<f64> for Many<N> {
+            type Output = Self;
+            #[inline(always)]
+            fn $method(self, o: f64) -> Self {
+                self.zip(o.into(), |a, b| a $op b)
+            }
+        }
+        impl<const N: usize> std::ops::$trait<Many<N>> for f64 {
+            type Output = Many<N>;
+            #[inline(always)]
+            fn $method(self, o: Many<N>) -> Many<N> {
+                Many::from(self).zip(o, |a, b| a $op b)
+            }
+        }
+    )*};
+}
+lane_ops!(Add add +, Sub sub -, Mul mul *, Div div /);
+
+/// The lane-by-lane logic of [`Mask`].
+macro_rules! mask_ops {
+    ($($trait:ident $method:ident $op:tt),*) => {$(
+        impl<const N: usize> std::ops::$trait for Mask<N> {
+            type Output = Self;
+            #[inline(always)]
+            fn $method(self, o: Self) -> Self {
+                let mut out = self.0;
+                for (m, n) in out.iter_mut().zip(o.0) {
+                    *m $op n;
+                }
+                Mask(out)
+            }
+        }
+    )*};
+}
+mask_ops!(BitAnd bitand &=, BitOr bitor |=);
+
+/// The arctangent in plain arithmetic: Cephes' `atan` (S. L. Moshier), |x| reduced to at most
+/// 0.66 through tan(pi/4) or the reciprocal, then a rational function of degree 4 over 5 in
+/// x^2; within 1 ulp of libm's on the tests' sample.
+///
+/// libm's arctangent is a call that a batch cannot share; this one has no branch and no
+/// fused multiply-add, so a batch of pushes evaluates it in the processor's vector lanes
+/// and every lane width, scalar included, gives the same bits on every machine (a crate's
+/// vector arctangent, such as `wide`'s, fuses or not as the build's target features say).
+#[inline(always)]
+fn atan<const N: usize>(x: Many<N>) -> Many<N> {
+    // tan(3 pi / 8), and pi / 2 less its nearest double (pi / 4's is half of it).
+    const TAN_3PI_8: f64 = 2.414_213_562_373_095;
+    const MORE_BITS: f64 = 6.123_233_995_736_766e-17;
+    const P: [f64; 5] = [
+        -8.750_608_600_031_904e-1,
+        -1.615_753_718_733_365e1,
+        -7.500_855_792_314_705e1,
+        -1.228_866_684_490_136_2e2,
+        -6.485_021_904_942_025e1,
+    ];
+    const Q: [f64; 5] = [
+        2.485_846_490_142_306e1,
+        1.650_270_098_316_988_6e2,
+        4.328_810_604_912_903e2,
+        4.853_903_996_359_137e2,
+        1.945_506_571_482_614e2,
+    ];
+    let a = x.map(f64::abs);
+    // atan(a) = base + atan(num / den): pi/2 - atan(1/a) above tan(3 pi / 8), pi/4 +
+    // atan((a - 1) / (a + 1)) above 0.66, atan(a) below.
+    let (big, mid) = (a.gt(TAN_3PI_8), a.gt(0.66));
+    let num = big.select(-1.0, mid.select(a - 1.0, a));
+    let den = big.select(a, mid.select(a + 1.0, 1.0));
+    let base = big.select(FRAC_PI_2, mid.select(FRAC_PI_4, 0.0));
+    let more = big.select(MORE_BITS, mid.select(0.5 * MORE_BITS, 0.0));
+    let t = num / den;
+    let z = t * t;
+    let p = (((z * P[0] + P[1]) * z + P[2]) * z + P[3]) * z + P[4];
+    let q = ((((z + Q[0]) * z + Q[1]) * z + Q[2]) * z + Q[3]) * z + Q[4];
+    (base + ((t * (z * p / q) + t) + more)).zip(x, f64::copysign)
+}
+
+/// An angle held as its cosine and sine (`N` of them, one per lane): the friction angles and
+/// their sum are composed by multiplying unit complex numbers, so the closed form takes no
+/// trigonometric function but one arctangent for the angle it reports.
+#[derive(Debug, Clone, Copy)]
+struct Turn<const N: usize = 1> {
+    cos: Many<N>,
+    sin: Many<N>,
 }
 
 impl Turn {
-    /// The angle 0.
-    const ZERO: Turn = Turn { cos: 1.0, sin: 0.0 };
-
     /// The angle `theta` (rad).
     fn of(theta: f64) -> Self {
         let (sin, cos) = theta.sin_cos();
-        Turn { cos, sin }
+        Turn {
+            cos: cos.into(),
+            sin: sin.into(),
+        }
     }
+}
 
+impl<const N: usize> Turn<N> {
     /// The friction angle atan(mu): (1, mu) / sqrt(1 + mu^2), or (1/mu, 1) where 1 + mu^2
     /// would overflow.
-    fn friction(mu: f64) -> Self {
-        if mu > 1e150 {
-            return Turn {
-                cos: 1.0 / mu,
-                sin: 1.0,
-            };
+    #[inline(always)]
+    fn friction(mu: Many<N>) -> Self {
+        let huge = mu.gt(1e150);
+        let cos = 1.0 / huge.select(mu, (1.0 + mu * mu).sqrt());
+        Turn {
+            cos,
+            sin: huge.select(1.0, mu * cos),
         }
-        let cos = 1.0 / (1.0 + mu * mu).sqrt();
-        Turn { cos, sin: mu * cos }
     }
 
     /// The angle asin(s) for s in [0, 1]: (sqrt((1 - s)(1 + s)), s).
-    fn arcsine(s: f64) -> Self {
+    #[inline(always)]
+    fn arcsine(s: Many<N>) -> Self {
         Turn {
             cos: ((1.0 - s) * (1.0 + s)).sqrt(),
             sin: s,
@@ -225,7 +428,8 @@ impl Turn {
     }
 
     /// The sum of both angles.
-    fn plus(self, o: Turn) -> Turn {
+    #[inline(always)]
+    fn plus(self, o: Self) -> Self {
         Turn {
             cos: self.cos * o.cos - self.sin * o.sin,
             sin: self.sin * o.cos + self.cos * o.sin,
@@ -233,7 +437,8 @@ impl Turn {
     }
 
     /// This angle less `o`.
-    fn minus(self, o: Turn) -> Turn {
+    #[inline(always)]
+    fn minus(self, o: Self) -> Self {
         Turn {
             cos: self.cos * o.cos + self.sin * o.sin,
             sin: self.sin * o.cos - self.cos * o.sin,
@@ -242,138 +447,319 @@ impl Turn {
 
     /// tan(theta / 2): sin / (1 + cos), or (1 - cos) / sin where cos <= 0, so that neither
     /// form subtracts nearly equal numbers.
-    fn half_tan(self) -> f64 {
-        match self.cos > 0.0 {
-            true => self.sin / (1.0 + self.cos),
-            false => (1.0 - self.cos) / self.sin,
-        }
+    #[inline(always)]
+    fn half_tan(self) -> Many<N> {
+        let right = self.cos.gt(0.0);
+        right.select(self.sin, 1.0 - self.cos) / right.select(1.0 + self.cos, self.sin)
     }
 
     /// The angle in rad, in [0, 2 pi): 2 atan(tan(theta / 2)), a half turn added below the
     /// axis.
-    fn angle(self) -> f64 {
-        let half = self.half_tan().atan();
-        match half < 0.0 {
-            true => 2.0 * (half + PI),
-            false => 2.0 * half,
-        }
+    #[inline(always)]
+    fn angle(self) -> Many<N> {
+        let half = atan(self.half_tan());
+        2.0 * half.lt(0.0).select(half + PI, half)
     }
 
-    /// The disc's position x = r cot(theta/2) + h / sin(theta) in mm where the palm stands
-    /// at this angle ([`SceneParams::disc_position_mm`]).
-    fn disc_position_mm(self, p: &SceneParams) -> f64 {
-        let base = p.radius_mm / self.half_tan();
-        match p.palm_offset_mm == 0.0 {
+    /// The disc's position x = r cot(theta/2) + h / sin(theta) in mm, radius `r` and palm
+    /// offset `h` in mm, where the palm stands at this angle
+    /// ([`SceneParams::disc_position_mm`]).
+    #[inline(always)]
+    fn disc_position_mm(self, r: Many<N>, h: Many<N>) -> Many<N> {
+        let base = r / self.half_tan();
+        // Without a palm offset in any lane (the paper's palm), no lane divides by sin.
+        match h.0.iter().all(|&h| h == 0.0) {
             true => base,
-            false => base + p.palm_offset_mm / self.sin,
+            false => h.eq(0.0).select(base, base + h / self.sin),
         }
     }
 
     /// The contact's distance s_B = x cos(theta) + r sin(theta) in mm from the hinge along
     /// the palm, with the disc at `x` ([`crate::scene::contact_distance_at_mm`]).
-    fn contact_distance_mm(self, p: &SceneParams, x: f64) -> f64 {
-        match p.palm_offset_mm == 0.0 {
-            true => x,
-            false => x * self.cos + p.radius_mm * self.sin,
-        }
-    }
-}
-
-/// The friction angles alpha_g = atan(mu_ground) and alpha_p = atan(mu_palm) as [`Turn`]s,
-/// each computed once per scene.
-#[derive(Clone, Copy)]
-struct Frictions {
-    ground: Turn,
-    palm: Turn,
-}
-
-impl Frictions {
-    fn of(p: &SceneParams) -> Self {
-        let ground = Turn::friction(p.mu_ground);
-        // Equal frictions (the paper's one mu) have one angle: one square root, the same bits.
-        let palm = match p.mu_palm.to_bits() == p.mu_ground.to_bits() {
-            true => ground,
-            false => Turn::friction(p.mu_palm),
-        };
-        Frictions { ground, palm }
-    }
-
-    /// The wedge alpha_g + alpha_p is under 90 deg: tan(alpha_g + alpha_p) = (mu_g + mu_p) /
-    /// (1 - mu_g mu_p) is finite and positive.
-    fn wedge_open(p: &SceneParams) -> bool {
-        p.mu_ground * p.mu_palm < 1.0
-    }
-}
-
-/// The start angle as an angle in rad and a [`Turn`]: what every push of a batch that shares
-/// its start angle computes once.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Start {
-    rad: f64,
-    turn: Turn,
-}
-
-impl Start {
-    /// The start angle of `p`.
-    pub(crate) fn of(p: &SceneParams) -> Self {
-        let rad = p.start_angle_deg.to_radians();
-        Start {
-            rad,
-            turn: Turn::of(rad),
-        }
-    }
-}
-
-/// What a push's status rests on besides its start angle: the friction angles and theta_jam,
-/// as a [`Turn`] (None when the push is too weak) and in rad (+infinity then).
-#[derive(Clone, Copy)]
-struct Core {
-    frictions: Frictions,
-    jam: Option<Turn>,
-    theta_jam: f64,
-}
-
-impl Core {
-    fn of(p: &SceneParams) -> Self {
-        let [core] = Self::batch([p]);
-        core
-    }
-
-    /// The cores of `N` pushes, each lane computed by the same operations as [`Core::of`] (the
-    /// same bits), phase by phase across the lanes: a push's square roots, divisions and
-    /// arctangent form one chain, and the chains of `N` pushes overlap where one push's would
-    /// leave the processor waiting.
     #[inline(always)]
-    fn batch<const N: usize>(ps: [&SceneParams; N]) -> [Core; N] {
-        let mut cores = [Core {
-            frictions: Frictions {
-                ground: Turn::ZERO,
-                palm: Turn::ZERO,
+    fn contact_distance_mm(self, r: Many<N>, h: Many<N>, x: Many<N>) -> Many<N> {
+        h.eq(0.0).select(x, x * self.cos + r * self.sin)
+    }
+}
+
+/// The friction angles alpha_g = atan(mu_ground) and alpha_p = atan(mu_palm) as [`Turn`]s.
+#[derive(Clone, Copy)]
+struct Frictions<const N: usize = 1> {
+    ground: Turn<N>,
+    palm: Turn<N>,
+}
+
+impl<const N: usize> Frictions<N> {
+    #[inline(always)]
+    fn of(mu_ground: Many<N>, mu_palm: Many<N>) -> Self {
+        Frictions {
+            ground: Turn::friction(mu_ground),
+            palm: Turn::friction(mu_palm),
+        }
+    }
+}
+
+/// The start angle in deg and rad and as a [`Turn`], and where the disc sits there (`N` of
+/// each, one per lane): what a batch whose pushes share the start angle, the radius, the palm
+/// offset and the palm length takes from its first push.
+#[derive(Debug, Clone, Copy)]
+struct Start<const N: usize = 1> {
+    deg: Many<N>,
+    rad: Many<N>,
+    turn: Turn<N>,
+    /// The disc's position in mm at the start angle.
+    x_mm: Many<N>,
+    /// The disc starts past the palm's end: the palm never touches it.
+    beyond: Mask<N>,
+}
+
+/// What the closed form reads of `N` pushes (one lane each), in [`SceneParams`]'s units: the
+/// scene fields [`Push::INPUTS`], then what the start derives from them ([`Start`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Push<const N: usize = 1> {
+    inputs: [Many<N>; Push::INPUTS.len()],
+    start: Start<N>,
+}
+
+impl Push {
+    /// The scene fields the closed form reads, in the order of [`Push`]'s inputs.
+    const INPUTS: [&'static str; 9] = [
+        "mu_ground",
+        "mu_palm",
+        "mass_kg",
+        "gravity_m_s2",
+        "force_n",
+        "radius_mm",
+        "palm_offset_mm",
+        "palm_length_mm",
+        "start_angle_deg",
+    ];
+
+    /// The inputs [`Push::derive`] derives the start from: the start angle, the radius, the
+    /// palm offset and length.
+    pub(crate) const START_INPUTS: [usize; 4] = [5, 6, 7, START];
+
+    /// The push of scene `p`.
+    pub(crate) fn of(p: &SceneParams) -> Self {
+        let inputs = [
+            p.mu_ground,
+            p.mu_palm,
+            p.mass_kg,
+            p.gravity_m_s2,
+            p.force_n,
+            p.radius_mm,
+            p.palm_offset_mm,
+            p.palm_length_mm,
+            p.start_angle_deg,
+        ];
+        let mut push = Push {
+            inputs: inputs.map(Many::from),
+            start: Start {
+                deg: 0.0.into(),
+                rad: 0.0.into(),
+                turn: Turn::of(0.0),
+                x_mm: 0.0.into(),
+                beyond: Mask([false]),
             },
-            jam: None,
-            theta_jam: f64::INFINITY,
-        }; N];
-        for (core, p) in cores.iter_mut().zip(ps) {
-            core.frictions = Frictions::of(p);
+        };
+        push.derive(0, true);
+        push
+    }
+}
+
+/// Where [`Push::INPUTS`] holds the start angle.
+const START: usize = 8;
+
+impl<const N: usize> Push<N> {
+    /// `N` copies of push `q`.
+    pub(crate) fn splat(q: Push) -> Self {
+        let one = |v: Many<1>| Many::from(v.one());
+        let s = q.start;
+        Push {
+            inputs: q.inputs.map(one),
+            start: Start {
+                deg: one(s.deg),
+                rad: one(s.rad),
+                turn: Turn {
+                    cos: one(s.turn.cos),
+                    sin: one(s.turn.sin),
+                },
+                x_mm: one(s.x_mm),
+                beyond: Mask([s.beyond.0[0]; N]),
+            },
         }
-        for (core, p) in cores.iter_mut().zip(ps) {
-            core.jam = jam_turn(p, &core.frictions);
+    }
+
+    /// The index of the input that scene field `key` sets; None for a field the closed
+    /// form does not read.
+    pub(crate) fn input(key: &str) -> Option<usize> {
+        Push::INPUTS.iter().position(|k| *k == key)
+    }
+
+    /// The lanes of input `i` ([`Self::input`]); after writing those of
+    /// [`Push::START_INPUTS`], call [`Self::derive`] for each lane written.
+    #[inline(always)]
+    pub(crate) fn input_mut(&mut self, i: usize) -> &mut [f64; N] {
+        &mut self.inputs[i].0
+    }
+
+    /// Lane `j`'s start ([`Start`]) from its inputs; its angle in rad and as a [`Turn`] only
+    /// if `angle` (its start angle changed).
+    pub(crate) fn derive(&mut self, j: usize, angle: bool) {
+        let s = &mut self.start;
+        if angle {
+            let deg = self.inputs[START].0[j];
+            let rad = deg.to_radians();
+            let (sin, cos) = rad.sin_cos();
+            (s.deg.0[j], s.rad.0[j]) = (deg, rad);
+            (s.turn.cos.0[j], s.turn.sin.0[j]) = (cos, sin);
         }
-        for core in &mut cores {
-            if let Some(jam) = core.jam {
-                core.theta_jam = jam.angle();
+        let turn: Turn<1> = Turn {
+            cos: s.turn.cos.0[j].into(),
+            sin: s.turn.sin.0[j].into(),
+        };
+        let [r, h, l] = [5, 6, 7].map(|i| Many::<1>::from(self.inputs[i].0[j]));
+        let x = turn.disc_position_mm(r, h);
+        s.x_mm.0[j] = x.one();
+        s.beyond.0[j] = turn.contact_distance_mm(r, h, x).gt(l).0[0];
+    }
+
+    /// Lane `j` set to push `q`.
+    pub(crate) fn set(&mut self, j: usize, q: &Push) {
+        for (input, v) in self.inputs.iter_mut().zip(q.inputs) {
+            input.0[j] = v.one();
+        }
+        let (s, t) = (&mut self.start, &q.start);
+        (s.deg.0[j], s.rad.0[j]) = (t.deg.one(), t.rad.one());
+        (s.turn.cos.0[j], s.turn.sin.0[j]) = (t.turn.cos.one(), t.turn.sin.one());
+        (s.x_mm.0[j], s.beyond.0[j]) = (t.x_mm.one(), t.beyond.0[0]);
+    }
+
+    /// The start angle of lane `j` in deg.
+    pub(crate) fn start_deg(&self, j: usize) -> f64 {
+        self.start.deg.0[j]
+    }
+
+    /// Each lane's status (its index in [`JamStatus::NAMES`]), theta_jam in deg and x_jam in
+    /// mm, NaN where none: [`solve`]'s answer, the same bits, for each push valid by
+    /// [`SceneParams::validate`].
+    #[inline(always)]
+    pub(crate) fn answer(
+        &self,
+        status: &mut [u8; N],
+        theta_deg: &mut [f64; N],
+        x_mm: &mut [f64; N],
+    ) {
+        let v = verdict(self);
+        let (theta, x) = v.answer(self.start.deg);
+        *status = v.status.0.map(|code| code as u8);
+        (*theta_deg, *x_mm) = (theta.0, x.0);
+    }
+}
+
+/// The closed form's verdict on `N` pushes and the numbers it rests on, lane by lane.
+#[derive(Debug, Clone, Copy)]
+struct Verdict<const N: usize = 1> {
+    /// Each push's status as its index in [`JamStatus::NAMES`] (a whole number).
+    status: Many<N>,
+    /// The disc starts past the palm's end (beyond_reach from the start).
+    beyond_at_start: Mask<N>,
+    /// theta_jam in rad, alpha_g + alpha_p + asin(m g sin(alpha_g) / F); +infinity when the
+    /// push is too weak ever to move the disc.
+    theta_jam: Many<N>,
+    /// The disc's position at theta_jam in mm (computed whatever the status).
+    x_jam: Many<N>,
+    /// The contact's distance from the hinge at theta_jam in mm.
+    s_b: Many<N>,
+    /// The disc's position at the start angle in mm.
+    x_start: Many<N>,
+}
+
+impl<const N: usize> Verdict<N> {
+    /// theta_jam in deg and x_jam in mm, NaN where the status has none: the start angle
+    /// `start_deg` and the disc's place there when held at the start, the jam when it jams.
+    #[inline(always)]
+    fn answer(&self, start_deg: Many<N>) -> (Many<N>, Many<N>) {
+        let is = |s: JamStatus| self.status.eq(f64::from(s.index()));
+        let (held, jams) = (is(JamStatus::JammedAtStart), is(JamStatus::Jams));
+        let x_start = self.x_start.is_finite().select(self.x_start, f64::NAN);
+        let theta = held.select(
+            start_deg,
+            jams.select(self.theta_jam.map(f64::to_degrees), f64::NAN),
+        );
+        let x = held.select(x_start, jams.select(self.x_jam, f64::NAN));
+        (theta, x)
+    }
+}
+
+/// Decides the pushes `q` in the order beyond_reach (start), never_jams, too_weak,
+/// jammed_at_start, beyond_reach (jam past the palm), jams.
+///
+/// Every quantity is computed whatever the status and the status chosen last, so that the
+/// decision is a choice of values, not a branch: a batch decides its pushes lane by lane.
+#[inline(always)]
+fn verdict<const N: usize>(q: &Push<N>) -> Verdict<N> {
+    let [mu_g, mu_p, mass, gravity, force, r, h, l, _] = &q.inputs;
+    let (mu_g, mu_p, mass, gravity, force, r, h, l) =
+        (*mu_g, *mu_p, *mass, *gravity, *force, *r, *h, *l);
+    let start = &q.start;
+    // A disc that starts beyond the palm's end is never touched, whatever the friction.
+    let (x_start, beyond_at_start) = (start.x_mm, start.beyond);
+    let weight_n = mass * gravity;
+    // Equal frictions (the paper's one mu) have one angle: the same bits, half the work.
+    let a = match mu_g.0.map(f64::to_bits) == mu_p.0.map(f64::to_bits) {
+        true => {
+            let ground = Turn::friction(mu_g);
+            Frictions {
+                ground,
+                palm: ground,
             }
         }
-        cores
-    }
-}
-
-/// theta_jam = alpha_g + alpha_p + asin(m g sin(alpha_g) / F) as a [`Turn`]; None when the push
-/// can never move the disc (m g sin(alpha_g) >= F).
-fn jam_turn(p: &SceneParams, a: &Frictions) -> Option<Turn> {
+        false => Frictions::of(mu_g, mu_p),
+    };
     // m g sin(alpha_g) / F, written so that mu -> infinity stays finite.
-    let load_ratio = p.weight_n() * a.ground.sin / p.force_n;
-    (load_ratio < 1.0).then(|| a.ground.plus(a.palm).plus(Turn::arcsine(load_ratio)))
+    let load_ratio = weight_n * a.ground.sin / force;
+    let moves = load_ratio.lt(1.0);
+    let jam = a.ground.plus(a.palm).plus(Turn::arcsine(load_ratio));
+    let theta_jam = moves.select(jam.angle(), f64::INFINITY);
+    // The jam margin mu_g R_n - R_t at the start, phi = theta_start - alpha_p: with a heavy
+    // disc and a start near 180 deg the ground may hold beyond the margin's second root,
+    // above theta_jam.
+    let phi = start.turn.minus(a.palm);
+    let margin = mu_g * (weight_n + force * phi.cos) - force * phi.sin;
+    let held = theta_jam.ge(start.rad) | margin.ge(0.0);
+    let x_jam = jam.disc_position_mm(r, h);
+    // x_jam may overflow to +inf for a vanishing wedge angle; that is beyond any palm.
+    let s_b = jam.contact_distance_mm(r, h, x_jam);
+    let past = x_jam.is_nan() | s_b.is_nan() | s_b.gt(l);
+    let wedge_open = (mu_g * mu_p).lt(1.0);
+    let never = theta_jam.le(0.0);
+    // The status as its index, chosen lane by lane in the order of the decision. Too weak: no
+    // angle slides the disc, not even 90 deg + alpha_g + alpha_p where the push slides it
+    // best; when that angle lies past 180 deg (mu_g mu_p >= 1, a closed wedge) the wedge
+    // self-locks at every palm angle whatever the push: jammed at the start instead.
+    let code = |s: JamStatus| f64::from(s.index());
+    let status = beyond_at_start.select(
+        code(JamStatus::BeyondReach),
+        moves.select(
+            never.select(
+                code(JamStatus::NeverJams),
+                held.select(
+                    code(JamStatus::JammedAtStart),
+                    past.select(code(JamStatus::BeyondReach), code(JamStatus::Jams)),
+                ),
+            ),
+            wedge_open.select(code(JamStatus::TooWeak), code(JamStatus::JammedAtStart)),
+        ),
+    );
+    Verdict {
+        status,
+        beyond_at_start,
+        theta_jam,
+        x_jam,
+        s_b,
+        x_start,
+    }
 }
 
 /// The palm angle in rad at which the contact sits at the palm's end, s_B = L: the status
@@ -395,85 +781,40 @@ pub(crate) fn reach_angle_rad(p: &SceneParams) -> f64 {
 /// closed (frictionless) or x_rigid is not finite. Depends on mu_ground, mu_palm, radius_mm and
 /// palm_offset_mm only.
 pub(crate) fn rigid_limit(p: &SceneParams) -> (f64, Option<f64>) {
-    rigid_limit_from(p, &Frictions::of(p))
-}
-
-/// [`rigid_limit`] from the scene's friction angles.
-fn rigid_limit_from(p: &SceneParams, a: &Frictions) -> (f64, Option<f64>) {
+    let a = Frictions::<1>::of(p.mu_ground.into(), p.mu_palm.into());
     let wedge = a.ground.plus(a.palm);
-    let angle = wedge.angle();
-    let x_rigid = finite_or_none(wedge.disc_position_mm(p)).filter(|_| angle > 0.0);
-    (angle.to_degrees(), x_rigid)
+    let angle = wedge.angle().one();
+    let x = wedge.disc_position_mm(p.radius_mm.into(), p.palm_offset_mm.into());
+    (
+        angle.to_degrees(),
+        finite_or_none(x.one()).filter(|_| angle > 0.0),
+    )
 }
 
 /// Solves the scene in closed form. `p` must have passed [`SceneParams::validate`].
 pub(crate) fn solve(p: &SceneParams) -> StaticsSolution {
-    let start = Start::of(p);
-    let core = Core::of(p);
-    let frictions = core.frictions;
-    let lift_off_above = lift_off_angle(p, frictions.palm.angle());
-    let lifts_off = lift_off_above.is_some_and(|t| t < start.rad);
-
-    let (theta_rigid_deg, x_rigid_mm) = rigid_limit_from(p, &frictions);
-    let mut out = StaticsSolution {
-        status: JamStatus::Jams,
-        theta_jam_deg: None,
-        x_jam_mm: None,
+    let push = Push::of(p);
+    let v = verdict(&push);
+    let lift_off_above = lift_off_angle(p, Turn::friction(p.mu_palm.into()).angle().one());
+    let (theta_rigid_deg, x_rigid_mm) = rigid_limit(p);
+    let (theta, x) = v.answer(push.start.deg);
+    let status = JamStatus::ALL[v.status.one() as usize];
+    let past = status == JamStatus::BeyondReach && !v.beyond_at_start.0[0];
+    let (theta_jam, x_jam, s_b) = (v.theta_jam.one(), v.x_jam.one(), v.s_b.one());
+    StaticsSolution {
+        status,
+        theta_jam_deg: finite_or_none(theta.one()),
+        x_jam_mm: finite_or_none(x.one()),
         theta_rigid_deg,
         x_rigid_mm,
         lift_off_above_deg: lift_off_above.map(f64::to_degrees),
-        lifts_off,
-        past_palm: None,
-    };
-
-    let decision = decide_with(p, &core, &start);
-    (out.status, out.theta_jam_deg, out.x_jam_mm) = jam_of(p, &start, &decision);
-    if let Decision::PastPalm {
-        theta_jam,
-        x_jam,
-        s_b,
-    } = decision
-    {
-        out.past_palm = (x_jam.is_finite() && s_b.is_finite()).then(|| PastPalm {
+        lifts_off: lift_off_above.is_some_and(|t| t < push.start.rad.one()),
+        past_palm: (past && x_jam.is_finite() && s_b.is_finite()).then(|| PastPalm {
             theta_jam_deg: theta_jam.to_degrees(),
             x_jam_mm: x_jam,
             palm_length_needed_mm: s_b,
             friction_factor_needed: friction_factor_to_reach(p),
-        });
-    }
-    out
-}
-
-/// A status, theta_jam in deg and x_jam in mm (None where there is none): [`solve`]'s answer
-/// without its extras (lift-off, rigid limit, the jam past the palm), what a batch of pushes
-/// needs.
-pub(crate) type Jam = (JamStatus, Option<f64>, Option<f64>);
-
-/// The [`Jam`]s of `N` pushes, each the same bits as [`solve`]'s, their arithmetic overlapping
-/// ([`Core::batch`]); `starts` gives each push's start angle, so that a batch whose pushes
-/// share it computes it once. Each push must have passed [`SceneParams::validate`].
-#[inline]
-pub(crate) fn jam_batch<const N: usize>(ps: [&SceneParams; N], starts: [&Start; N]) -> [Jam; N] {
-    let cores = Core::batch(ps);
-    let mut jams = [(JamStatus::Jams, None, None); N];
-    for (i, jam) in jams.iter_mut().enumerate() {
-        *jam = jam_of(ps[i], starts[i], &decide_with(ps[i], &cores[i], starts[i]));
-    }
-    jams
-}
-
-/// The status, theta_jam (deg) and x_jam (mm) of decision `d` for `p`.
-fn jam_of(p: &SceneParams, start: &Start, d: &Decision) -> Jam {
-    match *d {
-        Decision::JammedAtStart => (
-            JamStatus::JammedAtStart,
-            Some(p.start_angle_deg),
-            finite_or_none(start.turn.disc_position_mm(p)),
-        ),
-        Decision::Jams { theta_jam, x_jam } => {
-            (JamStatus::Jams, Some(theta_jam.to_degrees()), Some(x_jam))
-        }
-        _ => (d.status(), None, None),
+        }),
     }
 }
 
@@ -481,77 +822,7 @@ fn jam_of(p: &SceneParams, start: &Start, d: &Decision) -> Jam {
 /// angle, rigid limit or past-palm bisection), for scans that only need the verdict, such
 /// as the status breakpoints of a range answer. `p` must have passed validation.
 pub(crate) fn status(p: &SceneParams) -> JamStatus {
-    decide_with(p, &Core::of(p), &Start::of(p)).status()
-}
-
-/// The verdict of the closed form and the numbers it rests on, before [`solve`] adds its extras.
-enum Decision {
-    /// A status with no jam angle: beyond the palm from the start, never jams, too weak.
-    Bare(JamStatus),
-    /// Held where the palm first touches the disc.
-    JammedAtStart,
-    /// The jam at `theta_jam` (rad), `x_jam` (mm) lies past the palm's end (contact `s_b` mm).
-    PastPalm {
-        theta_jam: f64,
-        x_jam: f64,
-        s_b: f64,
-    },
-    /// Jams on the palm at `theta_jam` (rad), `x_jam` (mm).
-    Jams { theta_jam: f64, x_jam: f64 },
-}
-
-impl Decision {
-    /// The status it decides.
-    fn status(&self) -> JamStatus {
-        match self {
-            Decision::Bare(status) => *status,
-            Decision::JammedAtStart => JamStatus::JammedAtStart,
-            Decision::PastPalm { .. } => JamStatus::BeyondReach,
-            Decision::Jams { .. } => JamStatus::Jams,
-        }
-    }
-}
-
-/// Decides the status in the order beyond_reach (start), never_jams, too_weak,
-/// jammed_at_start, beyond_reach (jam past the palm), jams, from the scene's friction angles
-/// and its start angle.
-#[inline]
-fn decide_with(p: &SceneParams, core: &Core, start: &Start) -> Decision {
-    // A disc that starts beyond the palm's end is never touched, whatever the friction.
-    let at_start = start.turn.disc_position_mm(p);
-    if start.turn.contact_distance_mm(p, at_start) > p.palm_length_mm {
-        return Decision::Bare(JamStatus::BeyondReach);
-    }
-    let Some(jam) = core.jam else {
-        // Too weak: no angle slides the disc, not even 90 deg + alpha_g + alpha_p where the
-        // push slides it best. When that angle lies past 180 deg (mu_g mu_p >= 1) the wedge
-        // self-locks at every palm angle whatever the push, and the disc is jammed at the
-        // start instead.
-        return match Frictions::wedge_open(p) {
-            true => Decision::Bare(JamStatus::TooWeak),
-            false => Decision::JammedAtStart,
-        };
-    };
-    let theta_jam = core.theta_jam;
-    if theta_jam <= 0.0 {
-        return Decision::Bare(JamStatus::NeverJams);
-    }
-    // The margin is checked at the start as well: with a heavy disc and a start near 180 deg the
-    // ground may hold beyond the second root of the margin, above theta_jam.
-    if theta_jam >= start.rad || margin_at(p, start.turn.minus(core.frictions.palm)) >= 0.0 {
-        return Decision::JammedAtStart;
-    }
-    let x_jam = jam.disc_position_mm(p);
-    // x_jam may overflow to +inf for a vanishing wedge angle; that is beyond any palm.
-    let s_b = jam.contact_distance_mm(p, x_jam);
-    if x_jam.is_nan() || s_b.is_nan() || s_b > p.palm_length_mm {
-        return Decision::PastPalm {
-            theta_jam,
-            x_jam,
-            s_b,
-        };
-    }
-    Decision::Jams { theta_jam, x_jam }
+    JamStatus::ALL[verdict(&Push::of(p)).status.one() as usize]
 }
 
 /// The least factor k >= 1 on both frictions for which the jam lies on the palm (the contact
@@ -619,12 +890,50 @@ mod tests {
     fn a_turn_gives_back_its_angle() {
         for i in 0..=4000 {
             let theta = 2.0 * PI * f64::from(i) / 4001.0;
-            let back = Turn::of(theta).angle();
+            let back = Turn::of(theta).angle().one();
             assert!(
                 (back - theta).abs() <= 4.0 * f64::EPSILON * PI,
                 "{theta}: {back}"
             );
         }
+    }
+
+    /// The plain arctangent is libm's within 1 ulp, over the whole line (magnitudes from
+    /// 1e-300 to 1e300, both signs, the reduction's bounds 0.66 and tan(3 pi / 8) and their
+    /// neighbours), and keeps atan's values at 0, the infinities and NaN.
+    #[test]
+    fn the_plain_arctangent_is_libms_within_an_ulp() {
+        let ulp = |y: f64| f64::from_bits(y.abs().to_bits() + 1) - y.abs();
+        let mut xs: Vec<f64> = (0..=60_000)
+            .map(|i| 10f64.powf(-300.0 + 600.0 * f64::from(i) / 60_000.0))
+            .collect();
+        xs.extend((0..=200_000).map(|i| 4.0 * f64::from(i) / 200_000.0));
+        for edge in [0.66, 2.414_213_562_373_095, 1.0] {
+            let bits = f64::to_bits(edge);
+            xs.extend((bits - 50..=bits + 50).map(f64::from_bits));
+        }
+        let mut worst: f64 = 0.0;
+        for x in xs.iter().flat_map(|&x| [x, -x]) {
+            let (ours, libm) = (atan(Many::<1>::from(x)).one(), x.atan());
+            let err = (ours - libm).abs() / ulp(libm);
+            worst = worst.max(err);
+            assert!(
+                err <= 1.0,
+                "atan({x:e}) = {ours:e}, libm {libm:e}: {err} ulp"
+            );
+        }
+        assert!(
+            worst > 0.0,
+            "a sample where the two differ: the comparison compares"
+        );
+        assert_eq!(atan(Many::<1>::from(0.0)).one().to_bits(), 0.0f64.to_bits());
+        assert_eq!(
+            atan(Many::<1>::from(-0.0)).one().to_bits(),
+            (-0.0f64).to_bits()
+        );
+        assert_eq!(atan(Many::<1>::from(f64::INFINITY)).one(), FRAC_PI_2);
+        assert_eq!(atan(Many::<1>::from(f64::NEG_INFINITY)).one(), -FRAC_PI_2);
+        assert!(atan(Many::<1>::from(f64::NAN)).one().is_nan());
     }
 
     /// theta_jam composed from the frictions' unit vectors is the trigonometric closed form
@@ -656,7 +965,7 @@ mod tests {
                             "{p:?}: {composed} {trig}"
                         );
                         if composed > 0.0 && composed < PI {
-                            let x = Core::of(&p).jam.unwrap().disc_position_mm(&p);
+                            let x = verdict(&Push::of(&p)).x_jam.one();
                             let want = p.disc_position_mm(trig);
                             let dx = (x - want).abs() / want;
                             assert!(dx <= 1e-13, "{p:?}: x {x} {want}");

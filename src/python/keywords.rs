@@ -316,24 +316,25 @@ fn check_array(decl: &Decl, a: &Bound<'_, PyArrayDyn<f64>>) -> PyResult<()> {
     let ro = a.readonly();
     let view = ro.as_array();
     // Row-major position, then its index: an indexed walk cost more than the check.
-    let bad = view
-        .iter()
-        .position(|v| !decl.check.accepts(*v))
-        .map(|pos| {
-            let mut rest = pos;
-            let mut index: Vec<usize> = view
-                .shape()
-                .iter()
-                .rev()
-                .map(|&d| {
-                    let i = rest % d.max(1);
-                    rest /= d.max(1);
-                    i
-                })
-                .collect();
-            index.reverse();
-            (index, view.iter().nth(pos).copied().unwrap_or(f64::NAN))
-        });
+    let first = match view.as_slice() {
+        Some(values) => decl.check.first_refused(values),
+        None => view.iter().position(|v| !decl.check.accepts(*v)),
+    };
+    let bad = first.map(|pos| {
+        let mut rest = pos;
+        let mut index: Vec<usize> = view
+            .shape()
+            .iter()
+            .rev()
+            .map(|&d| {
+                let i = rest % d.max(1);
+                rest /= d.max(1);
+                i
+            })
+            .collect();
+        index.reverse();
+        (index, view.iter().nth(pos).copied().unwrap_or(f64::NAN))
+    });
     match bad {
         None => Ok(()),
         Some((index, v)) => {

@@ -38,17 +38,49 @@ impl Check {
     /// Whether `v` is valid: [`Check::refuse`] without its words, for a pass over many values.
     #[inline]
     pub(crate) fn accepts(&self, v: f64) -> bool {
-        v.is_finite()
-            && match *self {
-                Check::Finite | Check::Typed => true,
-                Check::AtLeast(lo) => v >= lo,
-                Check::Above(lo) => v > lo,
-                Check::Open(lo, hi) => v > lo && v < hi,
-                Check::OpenClosed(lo, hi) => v > lo && v <= hi,
-                Check::Closed(lo, hi) => v >= lo && v <= hi,
-                Check::CloseOpen(lo, hi) => v >= lo && v < hi,
-                Check::CountAtLeast(lo) => v >= lo as f64,
+        Self::within(self.bounds(), v)
+    }
+
+    /// Whether `v` is finite and within `bounds` ([`Check::bounds`]).
+    #[inline(always)]
+    fn within((lo, with_lo, hi, with_hi): (f64, bool, f64, bool), v: f64) -> bool {
+        v.is_finite() & ((v > lo) | (with_lo & (v == lo))) & ((v < hi) | (with_hi & (v == hi)))
+    }
+
+    /// The index of the first value in `values` that [`Check::accepts`] refuses, if any. A
+    /// block's values are all checked before any is looked at alone, against bounds read
+    /// once, so that the comparisons run in vector lanes.
+    pub(crate) fn first_refused(&self, values: &[f64]) -> Option<usize> {
+        const BLOCK: usize = 256;
+        let bounds = self.bounds();
+        values.chunks(BLOCK).enumerate().find_map(|(b, block)| {
+            let refused = block
+                .iter()
+                .fold(0u32, |n, &v| n + u32::from(!Self::within(bounds, v)));
+            match refused {
+                0 => None,
+                _ => block
+                    .iter()
+                    .position(|&v| !Self::within(bounds, v))
+                    .map(|i| b * BLOCK + i),
             }
+        })
+    }
+
+    /// The valid interval: its lower and upper bounds, each with whether it is valid itself.
+    #[inline]
+    fn bounds(&self) -> (f64, bool, f64, bool) {
+        let inf = f64::INFINITY;
+        match *self {
+            Check::Finite | Check::Typed => (-inf, true, inf, true),
+            Check::AtLeast(lo) => (lo, true, inf, true),
+            Check::Above(lo) => (lo, false, inf, true),
+            Check::Open(lo, hi) => (lo, false, hi, false),
+            Check::OpenClosed(lo, hi) => (lo, false, hi, true),
+            Check::Closed(lo, hi) => (lo, true, hi, true),
+            Check::CloseOpen(lo, hi) => (lo, true, hi, false),
+            Check::CountAtLeast(lo) => (lo as f64, true, inf, true),
+        }
     }
 
     /// The valid values in words, e.g. `a finite number > 0`.
@@ -448,4 +480,63 @@ pub fn float_range_problem(raw: &str, v: f64) -> Option<&'static str> {
         );
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The blockwise search finds the first value the check refuses, wherever it lies in its
+    /// block, for every kind of check: the bounds themselves, just past them, NaN and the
+    /// infinities.
+    #[test]
+    fn the_first_refused_value_is_found_blockwise() {
+        let checks = [
+            Check::Finite,
+            Check::AtLeast(0.0),
+            Check::Above(0.0),
+            Check::Open(0.0, 180.0),
+            Check::OpenClosed(0.0, 1.0),
+            Check::Closed(-1.0, 1.0),
+            Check::CloseOpen(0.0, 1.0),
+            Check::CountAtLeast(2),
+        ];
+        let odd = [
+            -1.0,
+            0.0,
+            -0.0,
+            1.0,
+            2.0,
+            180.0,
+            1.0 + f64::EPSILON,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ];
+        for check in checks {
+            let fine = [0.5, 0.75, 3.0]
+                .into_iter()
+                .find(|&v| check.accepts(v))
+                .expect("a valid value");
+            let mut refused = 0;
+            for at in [0, 1, 255, 256, 257, 777, 9_999] {
+                for &v in &odd {
+                    let mut values = vec![fine; 10_000];
+                    values[at] = v;
+                    let want = values.iter().position(|&v| !check.accepts(v));
+                    assert_eq!(check.first_refused(&values), want, "{check:?}: {v} at {at}");
+                    refused += usize::from(want.is_some());
+                }
+            }
+            assert!(refused > 0, "{check:?} refuses some of the odd values");
+            assert_eq!(check.first_refused(&vec![fine; 1000]), None);
+        }
+        // Each bound as the check says it: in or out.
+        assert!(Check::AtLeast(0.0).accepts(0.0) && !Check::Above(0.0).accepts(0.0));
+        assert!(Check::Closed(-1.0, 1.0).accepts(1.0) && !Check::CloseOpen(0.0, 1.0).accepts(1.0));
+        assert!(
+            !Check::Open(0.0, 180.0).accepts(180.0) && Check::OpenClosed(0.0, 1.0).accepts(1.0)
+        );
+        assert!(!Check::Finite.accepts(f64::NAN) && !Check::AtLeast(0.0).accepts(f64::INFINITY));
+    }
 }
