@@ -537,7 +537,7 @@ impl Push {
 
     /// The inputs [`Push::derive`] derives the start from: the start angle, the radius, the
     /// palm offset and length.
-    pub(crate) const START_INPUTS: [usize; 4] = [5, 6, 7, START];
+    pub(crate) const START_INPUTS: [usize; 4] = [RADIUS, OFFSET, LENGTH, START];
 
     /// The push of scene `p`.
     pub(crate) fn of(p: &SceneParams) -> Self {
@@ -567,7 +567,10 @@ impl Push {
     }
 }
 
-/// Where [`Push::INPUTS`] holds the start angle.
+/// Where [`Push::INPUTS`] holds the radius, the palm's offset and length, and the start angle.
+const RADIUS: usize = 5;
+const OFFSET: usize = 6;
+const LENGTH: usize = 7;
 const START: usize = 8;
 
 impl<const N: usize> Push<N> {
@@ -618,7 +621,7 @@ impl<const N: usize> Push<N> {
             cos: s.turn.cos.0[j].into(),
             sin: s.turn.sin.0[j].into(),
         };
-        let [r, h, l] = [5, 6, 7].map(|i| Many::<1>::from(self.inputs[i].0[j]));
+        let [r, h, l] = [RADIUS, OFFSET, LENGTH].map(|i| Many::<1>::from(self.inputs[i].0[j]));
         let x = turn.disc_position_mm(r, h);
         s.x_mm.0[j] = x.one();
         s.beyond.0[j] = turn.contact_distance_mm(r, h, x).gt(l).0[0];
@@ -895,6 +898,31 @@ mod tests {
                 (back - theta).abs() <= 4.0 * f64::EPSILON * PI,
                 "{theta}: {back}"
             );
+        }
+    }
+
+    /// Each input of a push is the scene field it names, read from where [`Push::of`] reads
+    /// it, and the start's inputs are where the derivation looks for them.
+    #[test]
+    fn a_pushs_inputs_are_the_fields_they_name() {
+        let mut p = SceneParams::default();
+        for (i, key) in Push::INPUTS.iter().enumerate() {
+            let set = SceneParams::real_setter(key).expect("a scene field");
+            set(&mut p, 1.0 + i as f64);
+        }
+        let push = Push::of(&p);
+        for (i, key) in Push::INPUTS.iter().enumerate() {
+            assert_eq!(push.inputs[i].one(), 1.0 + i as f64, "{key}");
+        }
+        let named = [(RADIUS, "radius_mm"), (OFFSET, "palm_offset_mm")];
+        let named = [
+            named[0],
+            named[1],
+            (LENGTH, "palm_length_mm"),
+            (START, "start_angle_deg"),
+        ];
+        for (i, key) in named {
+            assert_eq!(Push::INPUTS[i], key);
         }
     }
 
