@@ -4,6 +4,8 @@
 //! The parameter structs declare their fields with these; the families that gather every
 //! declaration, and what is derived from them, are one floor up ([`super`]).
 
+use rayon::prelude::*;
+
 use crate::error::{Error, Result};
 
 /// What values a setting takes, for its flag's parser, its help and its range check.
@@ -49,22 +51,23 @@ impl Check {
 
     /// The index of the first value in `values` that [`Check::accepts`] refuses, if any. A
     /// block's values are all checked before any is looked at alone, against bounds read
-    /// once, so that the comparisons run in vector lanes.
+    /// once, so that the comparisons run in vector lanes, and the blocks are shared by the
+    /// thread pool: a column of a million values is one pass over memory, split between the
+    /// cores.
     pub(crate) fn first_refused(&self, values: &[f64]) -> Option<usize> {
-        const BLOCK: usize = 256;
+        const BLOCK: usize = 4096;
         let bounds = self.bounds();
-        values.chunks(BLOCK).enumerate().find_map(|(b, block)| {
-            let refused = block
-                .iter()
-                .fold(0u32, |n, &v| n + u32::from(!Self::within(bounds, v)));
-            match refused {
-                0 => None,
-                _ => block
-                    .iter()
-                    .position(|&v| !Self::within(bounds, v))
-                    .map(|i| b * BLOCK + i),
-            }
-        })
+        let refused = |v: f64| !Self::within(bounds, v);
+        let (b, block) = values
+            .par_chunks(BLOCK)
+            .enumerate()
+            .find_first(|(_, block)| {
+                block.iter().fold(0u32, |n, &v| n + u32::from(refused(v))) > 0
+            })?;
+        block
+            .iter()
+            .position(|&v| refused(v))
+            .map(|i| b * BLOCK + i)
     }
 
     /// The valid interval: its lower and upper bounds, each with whether it is valid itself.
@@ -519,7 +522,7 @@ mod tests {
                 .find(|&v| check.accepts(v))
                 .expect("a valid value");
             let mut refused = 0;
-            for at in [0, 1, 255, 256, 257, 777, 9_999] {
+            for at in [0, 1, 4_095, 4_096, 4_097, 7_777, 9_999] {
                 for &v in &odd {
                     let mut values = vec![fine; 10_000];
                     values[at] = v;
