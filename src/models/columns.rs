@@ -275,7 +275,15 @@ pub fn solve_into_until(
             // A column of min-norm pushes searches each from its neighbours' answers.
             ModelSpec::MinNorm(_) => {
                 let scenes: Vec<SceneParams> = (start..start + len).map(scene).collect();
-                for (k, a) in solve_column(spec, &scenes)?.into_iter().enumerate() {
+                let answers = solve_column(spec, &scenes)?;
+                // Every element is written: a binding hands over arrays it has not set.
+                if answers.len() != len {
+                    return Err(Error::Defect(format!(
+                        "a min-norm column of {len} pushes gave {} answers",
+                        answers.len()
+                    )));
+                }
+                for (k, a) in answers.into_iter().enumerate() {
                     put(k, (a.status, a.theta_jam_deg, a.x_jam_mm));
                 }
             }
@@ -345,15 +353,15 @@ impl<'a> ClosedForm<'a> {
                 continue;
             };
             for &key in *keys {
-                let Some(list) = varying.as_mut() else { break };
-                list.retain(|(k, _)| *k != key);
-                match values.len() == 1 {
-                    true => {
-                        if let Some(set) = SceneParams::real_setter(key) {
-                            set(&mut base, values[0]);
-                        }
+                // A column of one value is every push's: it joins the shared inputs.
+                if let (Some(set), [v]) = (SceneParams::real_setter(key), values) {
+                    set(&mut base, *v);
+                }
+                if let Some(list) = varying.as_mut() {
+                    list.retain(|(k, _)| *k != key);
+                    if values.len() > 1 {
+                        list.push((key, values));
                     }
-                    false => list.push((key, values)),
                 }
             }
         }
@@ -546,10 +554,12 @@ mod tests {
         let radius = spread(8, 2.0, 60.0);
         let ratio = spread(9, 0.1, 40.0);
         let one_mass = [0.3];
+        // Above 90 deg: every push lies outside the model.
+        let one_start = [120.0];
         let mut seen = std::collections::HashSet::new();
         // Six fields; the same and the start angle; one friction for both contacts (`mu`),
         // the radius and a column of one value, without a palm offset; push ratios, whose
-        // scenes are built push by push.
+        // scenes are built push by push, with and without a start angle shared by all.
         let configurations = [
             columns.clone(),
             [
@@ -563,6 +573,10 @@ mod tests {
                 (named("mass_kg"), &one_mass[..]),
             ],
             vec![(named("mu"), &mu[..]), (GridParam::PushRatio, &ratio[..])],
+            vec![
+                (GridParam::PushRatio, &ratio[..]),
+                (named("start_angle_deg"), &one_start[..]),
+            ],
         ];
         for columns in configurations {
             let pushes = Pushes {
