@@ -15,7 +15,8 @@
 //! sees it: in one process after a warm-up map, with MALLOC_TOP_PAD_ set so that glibc keeps
 //! the top of its heap instead of giving a map's freed temporaries back to the kernel and
 //! faulting them in again for the next map (the script's docs; it prints its page faults per
-//! map, 0 when warm). The Rust map is warm alike: its 1.6 MB of cells come from a heap that
+//! map, 0 when warm). The Rust map is warm alike: its 360 kB of cells (P_max / W and the
+//! failure mode, 9 bytes a cell; numpy's map holds P_max / W alone) come from a heap that
 //! glibc keeps after the first map. Without the Python baseline it prints
 //! `no baseline: <why>` and no ratio.
 //!

@@ -193,8 +193,8 @@ pub use cli::main as run_cli;
 #[doc(hidden)]
 pub mod bench_support {
     pub use crate::grid::{
-        Grid, GridAxis, GridParam, GridRequest, LocatorParam, Quantity, capacity_map, evaluate,
-        statics_point,
+        CapacityCells, Grid, GridAxis, GridParam, GridRequest, LocatorParam, Quantity,
+        capacity_map, evaluate, statics_point,
     };
     pub use crate::locator::reference::capacity_clarabel;
     pub use crate::locator::symmetric::applies as closed_form_applies;

@@ -21,7 +21,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 pub use axis::{AxisScale, GridAxis, GridParam};
-pub use locator::{LocatorParam, capacity_map};
+pub use locator::{CapacityCells, LocatorParam, capacity_map};
 
 use crate::error::{Error, Result};
 use crate::models::{self, Detail, ModelSpec, Solution};

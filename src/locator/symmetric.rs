@@ -24,7 +24,7 @@
 
 use std::mem::MaybeUninit;
 
-use super::exact::{Capacity, FailureMode};
+use super::exact::FailureMode;
 use super::params::{LocatorParams, Rotation};
 
 /// Whether the closed form applies to `p`: free rotation, a centre load, equal frictions and
@@ -42,8 +42,8 @@ pub fn applies(p: &LocatorParams) -> bool {
 pub struct SymmetricV {
     /// x = tan(gamma / 2).
     tan_half_gamma: f64,
-    /// The V self-locks (x < mu): every load is held.
-    locks: bool,
+    /// The flanks' friction mu: the V self-locks where x < mu, and then every load is held.
+    mu: f64,
 }
 
 impl SymmetricV {
@@ -53,31 +53,93 @@ impl SymmetricV {
         let x = (0.5 * p.included_angle_deg().to_radians()).tan();
         SymmetricV {
             tan_half_gamma: x,
-            locks: x < p.mu_left,
+            mu: p.mu_left,
         }
     }
 
-    /// The capacity under a load in direction `d`, for a disc of weight `weight_n` N, one
-    /// cell at a time: the reference the row kernels are tested against.
+    /// Whether the V self-locks (x < mu): every load is held.
+    fn locks(&self) -> bool {
+        self.tan_half_gamma < self.mu
+    }
+
+    /// The capacity under a load in direction `d`, one cell at a time, as a row holds it
+    /// (P_max / W or NaN, and the failure mode): the reference the row kernels are tested
+    /// against.
     #[cfg(test)]
-    fn capacity(&self, d: &LoadDirection, weight_n: f64) -> Capacity {
+    fn capacity(&self, d: &LoadDirection) -> (f64, Option<FailureMode>) {
         let bracket = d.cos_abs * self.tan_half_gamma + d.sin;
-        cell(self.locks, bracket, 1.0 / bracket, d.mode, weight_n)
+        match self.locks() || bracket <= 0.0 {
+            true => (f64::NAN, None),
+            false => (1.0 / bracket, Some(d.mode)),
+        }
     }
 }
 
-/// One cell of the closed form: unbounded where the V `locks` or the `bracket` |cos phi| x +
-/// sin phi is <= 0, otherwise P_max / W = `over_w` (1 / bracket, computed by the caller so that
-/// a row's divisions run together) leaving by `mode`. Written without branches: a branch per
-/// field cost a store per padding byte.
-#[inline(always)]
-fn cell(locks: bool, bracket: f64, over_w: f64, mode: FailureMode, weight_n: f64) -> Capacity {
-    let bounded = !(locks || bracket <= 0.0);
-    Capacity {
-        p_max_n: bounded.then_some(over_w * weight_n),
-        p_max_over_w: bounded.then_some(over_w),
-        unbounded: !bounded,
-        failure_mode: bounded.then_some(mode),
+/// A row of a capacity map as the row kernels write it, a column per answer: P_max / W of
+/// each cell (NaN where every load is held) and how the part leaves past it (None there).
+/// The two slices are as long as each other.
+pub struct Row<'a> {
+    /// P_max / W, dimensionless; NaN where the cell is unbounded.
+    pub over_w: &'a mut [MaybeUninit<f64>],
+    /// How the part leaves just beyond P_max; None where the cell is unbounded.
+    pub mode: &'a mut [MaybeUninit<Option<FailureMode>>],
+}
+
+impl Row<'_> {
+    /// Fills the row from its cells' brackets |cos phi| x + sin phi (`bracket(i)`), whether
+    /// their V locks (`locks(i)`) and their failure mode (`mode(i)`): unbounded where the V
+    /// locks or the bracket is <= 0, otherwise P_max / W = 1 / bracket. Compiled for AVX2
+    /// where the processor has it (four cells a vector instead of two: the same IEEE
+    /// operations, no fused multiply-add, so the same bits).
+    #[inline(always)]
+    fn fill(
+        self,
+        bracket: impl Fn(usize) -> f64,
+        locks: impl Fn(usize) -> bool,
+        mode: impl Fn(usize) -> FailureMode,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the processor has AVX2, checked just above.
+            return unsafe { self.fill_avx2(bracket, locks, mode) };
+        }
+        self.fill_in(bracket, locks, mode);
+    }
+
+    /// [`Row::fill`] compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn fill_avx2(
+        self,
+        bracket: impl Fn(usize) -> f64,
+        locks: impl Fn(usize) -> bool,
+        mode: impl Fn(usize) -> FailureMode,
+    ) {
+        self.fill_in(bracket, locks, mode);
+    }
+
+    /// [`Row::fill`]: one pass for P_max / W, then one for the modes, each a plain loop
+    /// with selects, not branches, that vectorises.
+    #[inline(always)]
+    fn fill_in(
+        self,
+        bracket: impl Fn(usize) -> f64,
+        locks: impl Fn(usize) -> bool,
+        mode: impl Fn(usize) -> FailureMode,
+    ) {
+        let n = self.over_w.len().min(self.mode.len());
+        let (over_w, modes) = (&mut self.over_w[..n], &mut self.mode[..n]);
+        for (i, o) in over_w.iter_mut().enumerate() {
+            let b = bracket(i);
+            let bounded = !(locks(i) | (b <= 0.0));
+            o.write(if bounded { 1.0 / b } else { f64::NAN });
+        }
+        // SAFETY: the loop above wrote every cell of `over_w`.
+        let over_w = unsafe { &*(over_w as *const [MaybeUninit<f64>] as *const [f64]) };
+        // A bounded cell's 1 / bracket is never NaN (the bracket is > 0 there).
+        for (i, (m, o)) in modes.iter_mut().zip(over_w).enumerate() {
+            m.write((!o.is_nan()).then_some(mode(i)));
+        }
     }
 }
 
@@ -107,17 +169,14 @@ impl LoadDirection {
     }
 }
 
-/// Cells a row kernel takes at once: eight brackets, their reciprocals, then their cells, with
-/// no bounds checks and no branch on the row's length between them.
-const LANES: usize = 8;
-
 /// The Vs along a map's axis of included angles, as flat arrays for the row kernel.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Vs {
     /// x = tan(gamma / 2) of each V.
     tan_half_gamma: Vec<f64>,
-    /// Whether each V self-locks.
-    locks: Vec<bool>,
+    /// The flanks' friction of each V (each locks where its x < mu): compared in the row
+    /// kernel as numbers, which vectorises where a row of flags would be widened lane by lane.
+    mu: Vec<f64>,
 }
 
 impl Vs {
@@ -125,7 +184,7 @@ impl Vs {
     pub fn new(vs: &[SymmetricV]) -> Self {
         Vs {
             tan_half_gamma: vs.iter().map(|v| v.tan_half_gamma).collect(),
-            locks: vs.iter().map(|v| v.locks).collect(),
+            mu: vs.iter().map(|v| v.mu).collect(),
         }
     }
 }
@@ -155,67 +214,25 @@ impl LoadDirections {
 impl LoadDirection {
     /// [`SymmetricV::capacity`] of every V of `vs` under this direction, into `out` (as long
     /// as `vs`): a row of a map with the included angle on x, bit for bit the cells'.
-    pub fn capacities(&self, vs: &Vs, weight_n: f64, out: &mut [MaybeUninit<Capacity>]) {
-        let bracket = |x: f64| self.cos_abs * x + self.sin;
-        let mut outs = out.chunks_exact_mut(LANES);
-        let mut xs = vs.tan_half_gamma.chunks_exact(LANES);
-        let mut locks = vs.locks.chunks_exact(LANES);
-        for ((o, x), l) in (&mut outs).zip(&mut xs).zip(&mut locks) {
-            let b: [f64; LANES] = std::array::from_fn(|j| bracket(x[j]));
-            lanes(o, &b, |j| l[j], |_| self.mode, weight_n);
-        }
-        let rest = outs.into_remainder().iter_mut();
-        for ((o, &x), &l) in rest.zip(xs.remainder()).zip(locks.remainder()) {
-            let b = bracket(x);
-            o.write(cell(l, b, 1.0 / b, self.mode, weight_n));
-        }
+    pub fn capacities(&self, vs: &Vs, out: Row) {
+        let n = out.over_w.len();
+        let (x, mu) = (&vs.tan_half_gamma[..n], &vs.mu[..n]);
+        out.fill(
+            |i| self.cos_abs * x[i] + self.sin,
+            |i| x[i] < mu[i],
+            |_| self.mode,
+        );
     }
 }
 
 impl SymmetricV {
     /// [`SymmetricV::capacity`] of this V under every direction of `ds`, into `out` (as long
     /// as `ds`): a row of a map with the load direction on x, bit for bit the cells'.
-    pub fn capacities(
-        &self,
-        ds: &LoadDirections,
-        weight_n: f64,
-        out: &mut [MaybeUninit<Capacity>],
-    ) {
-        let bracket = |cos_abs: f64, sin: f64| cos_abs * self.tan_half_gamma + sin;
-        let mut outs = out.chunks_exact_mut(LANES);
-        let mut coss = ds.cos_abs.chunks_exact(LANES);
-        let mut sins = ds.sin.chunks_exact(LANES);
-        let mut modes = ds.mode.chunks_exact(LANES);
-        for (((o, c), s), m) in (&mut outs).zip(&mut coss).zip(&mut sins).zip(&mut modes) {
-            let b: [f64; LANES] = std::array::from_fn(|j| bracket(c[j], s[j]));
-            lanes(o, &b, |_| self.locks, |j| m[j], weight_n);
-        }
-        let rest = outs.into_remainder().iter_mut();
-        let dirs = coss
-            .remainder()
-            .iter()
-            .zip(sins.remainder())
-            .zip(modes.remainder());
-        for (o, ((&c, &s), &m)) in rest.zip(dirs) {
-            let b = bracket(c, s);
-            o.write(cell(self.locks, b, 1.0 / b, m, weight_n));
-        }
-    }
-}
-
-/// [`LANES`] cells from their brackets `b`, whether their V `locks(j)` and their `mode(j)`:
-/// the reciprocals first, then the cells ([`cell`]).
-#[inline(always)]
-fn lanes(
-    out: &mut [MaybeUninit<Capacity>],
-    b: &[f64; LANES],
-    locks: impl Fn(usize) -> bool,
-    mode: impl Fn(usize) -> FailureMode,
-    weight_n: f64,
-) {
-    let over_w: [f64; LANES] = std::array::from_fn(|j| 1.0 / b[j]);
-    for (j, o) in out.iter_mut().enumerate().take(LANES) {
-        o.write(cell(locks(j), b[j], over_w[j], mode(j), weight_n));
+    pub fn capacities(&self, ds: &LoadDirections, out: Row) {
+        let n = out.over_w.len();
+        let (cos_abs, sin, mode) = (&ds.cos_abs[..n], &ds.sin[..n], &ds.mode[..n]);
+        let x = self.tan_half_gamma;
+        out.fill(|i| cos_abs[i] * x + sin[i], |_| self.locks(), |i| mode[i]);
     }
 }
 
@@ -229,7 +246,6 @@ mod tests {
     #[test]
     fn row_kernels_give_the_cells_bit_for_bit() {
         let base = LocatorParams::default().with_mu(0.4);
-        let weight_n = 3.7;
         for n in [1, 7, 8, 9, 23, 64] {
             let gammas: Vec<f64> = (0..n).map(|i| 5.0 + 170.0 * i as f64 / n as f64).collect();
             let phis: Vec<f64> = (0..n)
@@ -240,7 +256,7 @@ mod tests {
                 .map(|&g| SymmetricV::of(&base.with_included_angle_same_tilt(g)))
                 .chain([SymmetricV {
                     tan_half_gamma: 1.0,
-                    locks: false,
+                    mu: 0.4,
                 }])
                 .collect();
             let ds: Vec<LoadDirection> = phis
@@ -252,30 +268,31 @@ mod tests {
                     mode: FailureMode::RollsOverLeft,
                 }])
                 .collect();
-            let bits = |c: &Capacity| {
-                (
-                    c.p_max_n.map(f64::to_bits),
-                    c.p_max_over_w.map(f64::to_bits),
-                    c.unbounded,
-                    c.failure_mode,
-                )
-            };
-            let mut row = vec![MaybeUninit::uninit(); vs.len().max(ds.len())];
+            let bits = |(over_w, mode): (f64, Option<FailureMode>)| (over_w.to_bits(), mode);
+            let (mut over_w, mut mode) = (Vec::new(), Vec::new());
+            let mut check =
+                |n: usize,
+                 fill: &dyn Fn(Row),
+                 want: &dyn Fn(usize) -> (f64, Option<FailureMode>)| {
+                    over_w.resize(n, MaybeUninit::uninit());
+                    mode.resize(n, MaybeUninit::uninit());
+                    fill(Row {
+                        over_w: &mut over_w,
+                        mode: &mut mode,
+                    });
+                    for j in 0..n {
+                        // SAFETY: `capacities` wrote every cell of the row.
+                        let got = unsafe { (over_w[j].assume_init(), mode[j].assume_init()) };
+                        assert_eq!(bits(got), bits(want(j)), "cell {j} of {n}");
+                    }
+                };
             for d in &ds {
-                d.capacities(&Vs::new(&vs), weight_n, &mut row[..vs.len()]);
-                for (v, got) in vs.iter().zip(&row) {
-                    // SAFETY: `capacities` wrote every cell of the row.
-                    let got = unsafe { got.assume_init() };
-                    assert_eq!(bits(&got), bits(&v.capacity(d, weight_n)), "{v:?} {d:?}");
-                }
+                let fill = |row: Row| d.capacities(&Vs::new(&vs), row);
+                check(vs.len(), &fill, &|j| vs[j].capacity(d));
             }
             for v in &vs {
-                v.capacities(&LoadDirections::new(&ds), weight_n, &mut row[..ds.len()]);
-                for (d, got) in ds.iter().zip(&row) {
-                    // SAFETY: `capacities` wrote every cell of the row.
-                    let got = unsafe { got.assume_init() };
-                    assert_eq!(bits(&got), bits(&v.capacity(d, weight_n)), "{v:?} {d:?}");
-                }
+                let fill = |row: Row| v.capacities(&LoadDirections::new(&ds), row);
+                check(ds.len(), &fill, &|j| v.capacity(&ds[j]));
             }
         }
     }
