@@ -204,6 +204,19 @@ impl Decl {
         }
     }
 
+    /// Whether `name` is this setting's [`Decl::path`], compared without building the path:
+    /// a lookup by name runs for every cell a grid sets.
+    pub(crate) fn path_is(&self, name: &str) -> bool {
+        match self.section {
+            "scene" | "locator" | "" => self.key == name,
+            section => {
+                name.strip_prefix(section)
+                    .and_then(|rest| rest.strip_prefix('.'))
+                    == Some(self.key)
+            }
+        }
+    }
+
     /// The short help: the doc's first paragraph, on one line.
     pub(crate) fn summary(&self) -> String {
         let first: Vec<&str> = self
@@ -488,6 +501,40 @@ pub fn float_range_problem(raw: &str, v: f64) -> Option<&'static str> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `path_is` answers as comparing with the built path does, for every declaration against
+    /// every declaration's path and key, and against near misses: a section without its dot,
+    /// a path cut short or run on, another section's key.
+    #[test]
+    fn a_path_is_recognised_without_building_it() {
+        let decls: Vec<&Decl> = crate::settings::all().collect();
+        let mut names: Vec<String> = Vec::new();
+        for d in &decls {
+            let path = d.path();
+            names.extend([
+                path.clone(),
+                d.key.to_string(),
+                format!("{}{}", d.section, d.key),
+                format!("{path}x"),
+                path[..path.len() - 1].to_string(),
+                format!("x.{}", d.key),
+                format!("{}.", d.section),
+            ]);
+        }
+        let mut matched = 0;
+        for d in &decls {
+            for name in &names {
+                assert_eq!(
+                    d.path_is(name),
+                    d.path() == *name,
+                    "{} vs {name:?}",
+                    d.path()
+                );
+                matched += usize::from(d.path_is(name));
+            }
+        }
+        assert!(matched >= decls.len(), "{matched} of {}", decls.len());
+    }
 
     /// The blockwise search finds the first value the check refuses, wherever it lies in its
     /// block, for every kind of check: the bounds themselves, just past them, NaN and the

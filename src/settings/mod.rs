@@ -61,7 +61,7 @@ pub(crate) fn all() -> impl Iterator<Item = &'static Decl> {
 
 /// The declaration of a key of the palm family, by its bare key or its dotted path.
 pub(crate) fn find(key: &str) -> Option<&'static Decl> {
-    palm_family().find(|d| d.key == key || d.path() == key)
+    palm_family().find(|d| d.key == key || d.path_is(key))
 }
 
 /// The flags that set `key` (a bare key or a dotted path), e.g. `--mu-ground or --mu`: its own
@@ -84,7 +84,7 @@ pub(crate) fn flags_naming(
     let decl = |k: &str| {
         own.clone()
             .find(|d| d.key == k)
-            .or_else(|| all().find(|d| d.key == k || d.path() == k))
+            .or_else(|| all().find(|d| d.key == k || d.path_is(k)))
     };
     let flags = |d: &Decl| d.flags_taken(own.clone().chain(all()), &takes);
     if let Some(d) = decl(key) {
