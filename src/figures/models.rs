@@ -5,7 +5,7 @@
 //! them a counting implementation and check the scene principle: a scene computes only what it
 //! draws (fig3 builds no program and no simulation; fig4 runs no simulation). [`Live`] calls the
 //! models. The closed-form statics' margin and F -> infinity limit are cheap closed forms and
-//! are called directly.
+//! are called directly, as are its jam points over a grid (in batches, [`evaluate`]).
 
 use crate::dynamics::DynamicsParams;
 use crate::dynamics::accuracy::{Study, StudySettings, run_study};
@@ -109,7 +109,9 @@ pub(crate) fn along(
 
 /// The grid of `req` with the jam points of `spec`: the min-norm model a column at a time
 /// (each search starts from its neighbours' answers, about three programs a cell against 31
-/// for a bisection from the reach), every other model cell by cell.
+/// for a bisection from the reach), the closed form in batches of cells
+/// ([`grid::evaluate_closed_form`], each cell's answer as its own), every other model cell by
+/// cell.
 pub(crate) fn evaluate(
     models: &dyn Models,
     spec: &ModelSpec,
@@ -117,6 +119,7 @@ pub(crate) fn evaluate(
 ) -> Result<GridResult> {
     match spec {
         ModelSpec::MinNorm(_) => grid::evaluate_columns(req, |c| models.min_norm_column(spec, c)),
+        ModelSpec::Statics => grid::evaluate_closed_form(req),
         _ => grid::evaluate(req, |p| models.jam_point(spec, p)),
     }
 }

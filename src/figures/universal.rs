@@ -26,7 +26,7 @@ use super::models::Models;
 use super::{At, DataFormat, Figure, FigureData, Input};
 use crate::csv_out::Column;
 use crate::error::{Error, Result};
-use crate::grid::{self, GridAxis, GridParam, GridRequest, Quantity};
+use crate::grid::{GridAxis, GridParam, GridRequest, Quantity};
 use crate::models::ModelKind;
 use crate::scene::{JamStatus, SceneParams};
 
@@ -126,7 +126,7 @@ impl Figure for UniversalSettings {
     fn compute(&self, input: &Input, models: &dyn Models) -> Result<UniversalData> {
         let p = input.params;
         let model = ModelKind::Statics.with(&input.min_norm, &input.dynamics);
-        let g = grid::evaluate(&self.request(&p), |q| models.jam_point(&model, q))?;
+        let g = super::models::evaluate(models, &model, &self.request(&p))?;
         let statuses = g.status.unwrap_or_default();
         let thetas = g.theta_jam_deg.unwrap_or_default();
         // theta_jam per cell in deg: the start angle where held at the start, 0 where it
@@ -160,7 +160,7 @@ impl Figure for UniversalSettings {
             quantities: vec![Quantity::Status],
             ..self.request(&p)
         };
-        let status_here = grid::evaluate(&on_palm, |q| models.jam_point(&model, q))?
+        let status_here = super::models::evaluate(models, &model, &on_palm)?
             .status
             .unwrap_or_default();
         let (xa, ya) = (&self.x_axis, &self.y_axis);

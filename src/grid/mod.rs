@@ -24,7 +24,7 @@ pub use axis::{AxisScale, GridAxis, GridParam};
 pub use locator::{CapacityCells, LocatorParam, capacity_map};
 
 use crate::error::{Error, Result};
-use crate::models::{self, Detail, ModelSpec, Solution};
+use crate::models::{self, ModelKind, ModelSpec, Solution};
 use crate::scene::{JamStatus, SceneParams};
 
 /// A set of parameters a grid can vary, one named parameter per axis.
@@ -249,11 +249,10 @@ pub fn statics_point(p: &SceneParams) -> Result<JamPoint> {
 /// The closed form's F -> infinity limit of `p` (theta_rigid in deg, x_rigid in mm), through
 /// the port like [`statics_point`]: None where the scene lies outside the closed form.
 pub(crate) fn rigid_point(p: &SceneParams) -> Result<Option<(f64, Option<f64>)>> {
-    let s = models::solve(&ModelSpec::Statics, p)?;
-    Ok(match s.detail {
-        Detail::Statics(s) => Some((s.theta_rigid_deg, s.x_rigid_mm)),
-        _ => None,
-    })
+    // What `models::solve` reports as the closed form's detail, without solving for the jam.
+    p.validate()?;
+    let outside = models::outside(ModelKind::Statics, p).is_some();
+    Ok((!outside).then(|| crate::statics::rigid_limit(p)))
 }
 
 /// What to evaluate: the base scene, the two axes and the quantities.
@@ -364,10 +363,69 @@ pub fn evaluate_columns(
     evaluate_with(req, JamPoints::Columns(&jam_column))
 }
 
-/// How a grid's jam points are answered: cell by cell or a column at a time.
+/// [`evaluate`] with the closed-form statics' jam points, answered in batches of cells
+/// ([`models::columns::solve_into`]: the axes' values as columns, no scene built and no clock
+/// read per cell), each cell's bit for bit as [`models::solve`] gives it alone. A palm-angle
+/// axis (a margin map's) is no column of pushes: such a grid's cells go one by one.
+pub fn evaluate_closed_form(req: &GridRequest) -> Result<GridResult> {
+    let theta_axis = req.x.param == GridParam::ThetaDeg || req.y.param == GridParam::ThetaDeg;
+    match theta_axis {
+        true => evaluate(req, statics_point),
+        false => evaluate_with(req, JamPoints::ClosedForm),
+    }
+}
+
+/// How a grid's jam points are answered: cell by cell, a column at a time, or by the closed
+/// form's batches.
 enum JamPoints<'a> {
     Cells(&'a (dyn Fn(&SceneParams) -> Result<JamPoint> + Sync)),
     Columns(&'a (dyn Fn(&[SceneParams]) -> Result<Vec<JamPoint>> + Sync)),
+    ClosedForm,
+}
+
+/// The closed form's jam point of every cell of `grid` (no palm-angle axis), in index order,
+/// validated first ([`evaluate_closed_form`]).
+fn closed_form_points(grid: &Grid<SceneParams>) -> Result<Cells<JamPoint>> {
+    use models::columns::{Answers, Pushes, solve_into};
+    grid.validate()?;
+    let x_values = grid.x.values();
+    let y_values = grid.y.as_ref().map_or(vec![f64::NAN], GridAxis::values);
+    let nx = x_values.len();
+    let n = nx * y_values.len();
+    let xs: Vec<f64> = (0..n).map(|i| x_values[i % nx]).collect();
+    let ys: Vec<f64> = match grid.y {
+        Some(_) => (0..n).map(|i| y_values[i / nx]).collect(),
+        None => Vec::new(),
+    };
+    // In the order a cell sets them: x first, then y.
+    let mut columns = vec![(grid.x.param, xs.as_slice())];
+    if let Some(y) = &grid.y {
+        columns.push((y.param, ys.as_slice()));
+    }
+    let pushes = Pushes {
+        base: grid.base,
+        columns,
+    };
+    let (mut status, mut theta, mut x) = (vec![0; n], vec![0.0; n], vec![0.0; n]);
+    let out = Answers {
+        status: &mut status,
+        theta_jam_deg: &mut theta,
+        x_jam_mm: &mut x,
+    };
+    solve_into(&ModelSpec::Statics, &pushes, out)?;
+    let some = |v: f64| (!v.is_nan()).then_some(v);
+    let values = (status.iter().zip(&theta).zip(&x))
+        .map(|((&s, &t), &x)| JamPoint {
+            status: JamStatus::ALL[usize::from(s)],
+            theta_jam_deg: some(t),
+            x_jam_mm: some(x),
+        })
+        .collect();
+    Ok(Cells {
+        x_values,
+        y_values,
+        values,
+    })
 }
 
 fn evaluate_with(req: &GridRequest, jam: JamPoints) -> Result<GridResult> {
@@ -380,6 +438,7 @@ fn evaluate_with(req: &GridRequest, jam: JamPoints) -> Result<GridResult> {
         .then(|| match jam {
             JamPoints::Cells(f) => grid.map(f),
             JamPoints::Columns(f) => grid.map_columns(f),
+            JamPoints::ClosedForm => closed_form_points(&grid),
         })
         .transpose()?;
     let x_rigid_mm = wants(Quantity::XRigidMm)

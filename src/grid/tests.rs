@@ -1,6 +1,7 @@
 use proptest::prelude::*;
 
 use super::*;
+use crate::models::Detail;
 use crate::statics;
 
 /// The closed form as the grid's jam-point function.
@@ -354,4 +355,120 @@ fn capacity_map_falls_back_to_the_exact_path() {
         }
         assert_eq!(map.failure_mode.len(), exact.values.len());
     }
+}
+
+/// The closed form's batches answer every cell of a grid as the cell alone does
+/// (`evaluate_closed_form` against `evaluate` with [`statics_point`]), bit for bit, for every
+/// ordered pair of parameters an axis can vary (aliases, push ratios, start angles past
+/// 90 deg, offsets), each over half to one and a half times its base value (0 to 1 where
+/// that is 0), around four scenes that between them meet every status of the closed form; a
+/// grid one refuses the other refuses too.
+#[test]
+fn closed_form_batches_answer_a_grid_as_its_cells() {
+    let d = SceneParams::default();
+    // The default scene, a push too weak to move the disc, a short palm, no friction.
+    let bases = [
+        d,
+        SceneParams { force_n: 3.0, ..d },
+        SceneParams {
+            palm_length_mm: 25.0,
+            ..d
+        },
+        SceneParams {
+            mu_ground: 0.0,
+            mu_palm: 0.0,
+            ..d
+        },
+    ];
+    let params: Vec<GridParam> = GridParam::all()
+        .filter(|&p| p != GridParam::ThetaDeg)
+        .collect();
+    let (mut compared, mut refused) = (0, 0);
+    let mut seen = std::collections::BTreeSet::new();
+    for (base, xp) in bases
+        .iter()
+        .flat_map(|b| params.iter().map(move |p| (*b, *p)))
+    {
+        let span = |p: GridParam| match p.get(&base).unwrap_or(1.0) {
+            0.0 => (0.0, 1.0),
+            v => (0.5 * v, 1.5 * v),
+        };
+        for &yp in params.iter().filter(|&&p| p != xp) {
+            let ((x0, x1), (y0, y1)) = (span(xp), span(yp));
+            let req = GridRequest {
+                base,
+                x: GridAxis::linear(xp, x0, x1, 7),
+                y: GridAxis::linear(yp, y0, y1, 5),
+                quantities: vec![Quantity::Status, Quantity::ThetaJamDeg, Quantity::XJamMm],
+            };
+            let (cells, batches) = (evaluate(&req, st), evaluate_closed_form(&req));
+            let (Ok(cells), Ok(batches)) = (&cells, &batches) else {
+                assert!(
+                    cells.is_err() && batches.is_err(),
+                    "{xp:?} {yp:?}: {cells:?} {batches:?}"
+                );
+                refused += 1;
+                continue;
+            };
+            assert_eq!(cells.status, batches.status, "{xp:?} {yp:?}");
+            seen.extend(cells.status.iter().flatten().map(|s| s.as_str()));
+            for (a, b) in [
+                (&cells.theta_jam_deg, &batches.theta_jam_deg),
+                (&cells.x_jam_mm, &batches.x_jam_mm),
+            ] {
+                assert_eq!(
+                    opt_bits(a.as_ref().unwrap()),
+                    opt_bits(b.as_ref().unwrap()),
+                    "{xp:?} {yp:?}"
+                );
+            }
+            compared += 1;
+        }
+    }
+    println!("{compared} grids compared, {refused} refused by both; statuses {seen:?}");
+    assert!(
+        compared >= 2 * params.len() * (params.len() - 1),
+        "{compared} {refused}"
+    );
+    let statuses = [
+        "never_jams",
+        "too_weak",
+        "jammed_at_start",
+        "beyond_reach",
+        "jams",
+    ];
+    assert!(statuses.iter().all(|s| seen.contains(s)), "{seen:?}");
+    assert!(seen.contains("outside_model"), "{seen:?}");
+}
+
+/// A cell's F -> infinity limit is what `solve` reports in the closed form's detail, and none
+/// outside the model (a start past 90 deg), for frictions from none to high and a palm
+/// offset.
+#[test]
+fn the_rigid_point_is_the_closed_forms_detail() {
+    let d = SceneParams::default();
+    let mut checked = [0, 0];
+    for mu in [0.0, 0.1, 0.4, 2.0] {
+        for (offset, start) in [(0.0, 90.0), (0.5, 60.0), (0.0, 120.0)] {
+            let p = SceneParams {
+                mu_ground: mu,
+                mu_palm: 0.5 * mu,
+                palm_offset_mm: offset,
+                start_angle_deg: start,
+                ..d
+            };
+            let want = match models::solve(&ModelSpec::Statics, &p).unwrap().detail {
+                Detail::Statics(s) => {
+                    Some((s.theta_rigid_deg.to_bits(), s.x_rigid_mm.map(f64::to_bits)))
+                }
+                _ => None,
+            };
+            let got = rigid_point(&p)
+                .unwrap()
+                .map(|(t, x)| (t.to_bits(), x.map(f64::to_bits)));
+            assert_eq!(got, want, "{p:?}");
+            checked[usize::from(got.is_some())] += 1;
+        }
+    }
+    assert!(checked[0] > 0 && checked[1] > 0, "{checked:?}");
 }
