@@ -17,7 +17,10 @@
 //! faulting them in again for the next map (the script's docs; it prints its page faults per
 //! map, 0 when warm). The Rust map is warm alike: its 360 kB of cells (P_max / W and the
 //! failure mode, 9 bytes a cell; numpy's map holds P_max / W alone) come from a heap that
-//! glibc keeps after the first map. Without the Python baseline it prints
+//! glibc keeps after the first map. A 200 x 200 map is below the size from which
+//! `capacity_map` shares a map among the pool's threads (waking them costs more than the map),
+//! so its figure on all threads is the calling thread's work, as a caller gets it. Without
+//! the Python baseline it prints
 //! `no baseline: <why>` and no ratio.
 //!
 //! Where valgrind is installed it also prints the instructions per cell of the closed-form
