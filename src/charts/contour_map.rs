@@ -20,7 +20,9 @@ use super::style::{self, LineKind};
 use super::typeset;
 use super::{axis_label, grid_polygons, param_symbol, param_unit, scene_subtitle};
 use crate::figures::At;
-use crate::figures::contour_map::{ContourMapData, ContourMapSettings, dense_x_jam};
+use crate::figures::contour_map::{
+    ContourMapData, ContourMapSettings, LOWEST_BAND_EDGE, dense_x_jam,
+};
 use crate::figures::contours::{Paths, axis_value};
 use crate::grid::GridParam;
 use crate::scene::JamStatus;
@@ -50,8 +52,9 @@ impl Picture for ContourMap {
         let c = &data.cells;
         let b = ContourBuilder::new(c.x.len(), c.y.len(), true);
         let xj = dense_x_jam(c.x_jam_mm.as_deref().unwrap_or_default());
-        // Bands: below the first level, between levels, above the last.
-        let mut edges = vec![f64::MIN];
+        // Bands: below the first level (down to 0: a cell without a jam is in none), between
+        // levels, above the last.
+        let mut edges = vec![LOWEST_BAND_EDGE];
         edges.extend(&data.settings.x_jam_levels_mm);
         edges.push(f64::MAX);
         // Finite values and levels cannot fail; nothing is drawn if they ever did.
@@ -320,6 +323,13 @@ impl ContourMap {
             Swatch::Line(LineKind::Solid),
             "x_jam iso-lines (mm), bands as in the colour bar",
         )];
+        let cells = self.data.cells.x_jam_mm.as_deref().unwrap_or_default();
+        if cells.iter().any(Option::is_none) {
+            e.push(LegendEntry::new(
+                Swatch::Patch(style::PAPER),
+                "blank: no jam (x_jam empty in the CSV: outside the model, too weak, beyond the palm or never)",
+            ));
+        }
         // Only where a line is drawn: at mu = 0.27 fig7c's 44-47 deg levels lie off the map.
         let theta_lines = &self.data.iso_lines.theta_jam_deg;
         if theta_lines.iter().any(|l| !l.paths.paths.is_empty()) {

@@ -567,3 +567,115 @@ fn jam_map_cells_beyond_the_palms_reach_are_their_own_class() {
     }
     assert_eq!(seen.len(), 3, "all three classes on this map: {seen:?}");
 }
+
+/// A contour map over cells without a jam (a start past 90 deg is outside the model, a push
+/// below about 3.6 N too weak) leaves them out of every band, says so in its legend, and
+/// traces no iso-line along their edge: each point of a theta_jam iso-line lies between cells
+/// that all jam and whose theta_jam straddle its level. Those cells carried a stand-in below
+/// every level, so each level under its neighbours' values ran along that edge, labelled, and
+/// the cells were shaded as the lowest band.
+#[test]
+fn contour_lines_end_where_the_cells_stop_jamming() {
+    let set: Vec<overrides::Setting> = [
+        "chart.y_axis.param=start_angle_deg",
+        "chart.y_axis.min=60",
+        "chart.y_axis.max=150",
+        "chart.y_axis.count=30",
+        "chart.x_axis.min=2",
+        "chart.x_axis.count=40",
+    ]
+    .iter()
+    .map(|s| s.parse().unwrap())
+    .collect();
+    let scene = SceneSource::BuiltIn("fig7c".into()).load(&set).unwrap();
+    let chart = Chart::of_scene(&scene).unwrap();
+    let doc: serde_json::Value =
+        serde_json::from_slice(&chart.data_file(&scene.name, &scene.title).bytes).unwrap();
+    let csv = String::from_utf8(chart.cells().unwrap().to_bytes()).unwrap();
+    // force_n, start_angle_deg, x_jam_mm, theta_jam_deg per cell, x fastest.
+    let rows: Vec<Vec<&str>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    let (nx, ny) = (40, 30);
+    assert_eq!(rows.len(), nx * ny);
+    let theta: Vec<Option<f64>> = rows.iter().map(|r| r[3].parse().ok()).collect();
+    let xs: Vec<f64> = rows[..nx].iter().map(|r| r[0].parse().unwrap()).collect();
+    let ys: Vec<f64> = rows
+        .iter()
+        .step_by(nx)
+        .map(|r| r[1].parse().unwrap())
+        .collect();
+    assert!(theta.iter().any(Option::is_none) && theta.iter().any(Option::is_some));
+    // The samples on either side of `v` along an axis (one where `v` is a sample).
+    let around = |axis: &[f64], v: f64| -> Vec<usize> {
+        let tol = 1e-6 * (axis[axis.len() - 1] - axis[0]);
+        match axis.iter().position(|a| (a - v).abs() <= tol) {
+            Some(i) => vec![i],
+            None => {
+                let i = axis.iter().rposition(|a| *a < v).unwrap();
+                vec![i, i + 1]
+            }
+        }
+    };
+    let mut points = 0;
+    for line in doc["iso_lines"]["theta_jam_deg"].as_array().unwrap() {
+        let level = line["level"].as_f64().unwrap();
+        for path in line["paths"].as_array().unwrap() {
+            for pt in path.as_array().unwrap() {
+                let (x, y) = (pt[0].as_f64().unwrap(), pt[1].as_f64().unwrap());
+                let cells: Vec<Option<f64>> = around(&ys, y)
+                    .into_iter()
+                    .flat_map(|j| around(&xs, x).into_iter().map(move |i| (i, j)))
+                    .map(|(i, j)| theta[j * nx + i])
+                    .collect();
+                let ok = cells.iter().all(Option::is_some) && {
+                    let v = cells.iter().flatten();
+                    v.clone().any(|t| *t <= level) && v.clone().any(|t| *t >= level)
+                };
+                assert!(ok, "{level} deg line at ({x}, {y}): cells {cells:?}");
+                points += 1;
+            }
+        }
+    }
+    assert!(points > 20, "{points} points");
+    let svg = String::from_utf8(render(&scene, Formats::Svg).unwrap().svg.unwrap()).unwrap();
+    assert!(
+        svg.contains("blank: no jam"),
+        "the legend names the blank cells"
+    );
+    // Pixels of the lowest band (every jam here is below the first level, 25 mm): with the
+    // blank cells, under half of those of the same map up to 89 deg and from 5 N, where all
+    // jam (the jams fill under a third of the wider map).
+    let lowest = |set: &[overrides::Setting]| {
+        let scene = SceneSource::BuiltIn("fig7c".into()).load(set).unwrap();
+        let png = render(&scene, Formats::Png).unwrap().png.unwrap();
+        let mut decoder = png::Decoder::new(std::io::Cursor::new(png));
+        decoder.set_transformations(png::Transformations::EXPAND);
+        let mut reader = decoder.read_info().unwrap();
+        let mut buf = vec![0; reader.output_buffer_size()];
+        let info = reader.next_frame(&mut buf).unwrap();
+        let RGBColor(r, g, b) = style::band_colors(scene_levels(&scene) + 1)[0];
+        let px = &buf[..info.buffer_size()];
+        px.chunks_exact(3).filter(|p| *p == [r, g, b]).count()
+    };
+    let all_jam: Vec<overrides::Setting> = set[..]
+        .iter()
+        .cloned()
+        .chain([
+            "chart.y_axis.max=89".parse().unwrap(),
+            "chart.x_axis.min=5".parse().unwrap(),
+        ])
+        .collect();
+    let (some, all) = (lowest(&set), lowest(&all_jam));
+    assert!(all > 10_000 && 2 * some < all, "{some} of {all} pixels");
+}
+
+/// The x_jam levels of a contour map scene.
+fn scene_levels(scene: &Scene) -> usize {
+    match Chart::of_scene(scene).unwrap() {
+        Chart::ContourMap(c) => c.data().settings.x_jam_levels_mm.len(),
+        _ => panic!("a contour map"),
+    }
+}

@@ -9,7 +9,7 @@ use contour::ContourBuilder;
 use serde::{Deserialize, Serialize};
 
 use super::cells::{self, CellsTable, HasCells};
-use super::contours::{Traced, grid_lines};
+use super::contours::{Traced, grid_lines_among};
 use super::models::{self, Models};
 use super::{At, DataFormat, Figure, FigureData, Input};
 use crate::csv_out::Column;
@@ -149,14 +149,22 @@ impl Figure for ContourMapSettings {
         };
         let (xa, ya) = (&self.x_axis, &self.y_axis);
         let b = ContourBuilder::new(grid.nx(), grid.ny(), true);
+        // Lines run among the cells that jam: at a cell without one they end.
+        let jammed: Vec<bool> = (grid.x_jam_mm.as_deref().unwrap_or_default().iter())
+            .map(Option::is_some)
+            .collect();
         // Finite values and levels cannot fail; nothing is traced if they ever did.
         let lines = |values: &[f64], levels: &[f64]| -> Vec<IsoLine> {
             b.lines(values, levels)
                 .unwrap_or_default()
                 .into_iter()
-                .map(|l| IsoLine {
-                    level: l.threshold(),
-                    paths: Traced::over(grid_lines(&l.into_inner().0, xa, ya), xa, ya),
+                .map(|l| {
+                    let level = l.threshold();
+                    let paths = grid_lines_among(&l.into_inner().0, xa, ya, &jammed);
+                    IsoLine {
+                        level,
+                        paths: Traced::over(paths, xa, ya),
+                    }
                 })
                 .collect()
         };
@@ -247,6 +255,10 @@ fn round_levels(values: &[f64]) -> Vec<f64> {
 
 /// A value for cells where a model gives no jam: below every level, so they stay unshaded.
 const NO_JAM: f64 = -1.0;
+
+/// The lower edge of the lowest band: below every jam's x_jam and theta_jam (both > 0) and
+/// above [`NO_JAM`], so that a cell without a jam lies in no band and stays blank.
+pub(crate) const LOWEST_BAND_EDGE: f64 = 0.5 * NO_JAM;
 
 /// A quantity per cell as the contour crate needs it: [`NO_JAM`] where there is none.
 pub(crate) fn dense_x_jam(v: &[Option<f64>]) -> Vec<f64> {

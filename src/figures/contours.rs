@@ -106,6 +106,47 @@ pub fn grid_lines<P>(
     xa: &GridAxis<P>,
     ya: &GridAxis<P>,
 ) -> Vec<Vec<(f64, f64)>> {
+    lines_off(ml, xa, ya, |_| false)
+}
+
+/// [`grid_lines`] of a field with cells that hold no value (`valued` false, x fastest): a
+/// line is also cut where it touches such a cell. Those cells carry a stand-in below every
+/// level, so the crate traces each level below its neighbours' values along their edge: lines
+/// of the stand-in, not of the field.
+pub fn grid_lines_among<P>(
+    ml: &MultiLineString<f64>,
+    xa: &GridAxis<P>,
+    ya: &GridAxis<P>,
+    valued: &[bool],
+) -> Vec<Vec<(f64, f64)>> {
+    let (nx, ny) = (xa.count, ya.count);
+    // The cells (1, 2 or 4) around grid point c: a traced point lies on the edge between two
+    // cell centres (at integer + 0.5), read within 1e-6 of a cell so that rounding in the
+    // crate does not reach into the next row or column.
+    let span = |g: f64, n: usize| {
+        let g = g - 0.5;
+        let near = g.round();
+        let (lo, hi) = match (g - near).abs() < 1e-6 {
+            true => (near, near),
+            false => (g.floor(), g.ceil()),
+        };
+        let clamp = |v: f64| v.clamp(0.0, (n - 1) as f64) as usize;
+        clamp(lo)..=clamp(hi)
+    };
+    let blank = |c: &geo_types::Coord<f64>| {
+        span(c.y, ny)
+            .any(|j| span(c.x, nx).any(|i| !valued.get(j * nx + i).copied().unwrap_or(true)))
+    };
+    lines_off(ml, xa, ya, blank)
+}
+
+/// [`grid_lines`], cutting also each segment with an end where `cut` holds.
+fn lines_off<P>(
+    ml: &MultiLineString<f64>,
+    xa: &GridAxis<P>,
+    ya: &GridAxis<P>,
+    cut: impl Fn(&geo_types::Coord<f64>) -> bool,
+) -> Vec<Vec<(f64, f64)>> {
     let (nx, ny) = (xa.count as f64, ya.count as f64);
     let on_border =
         |c: &geo_types::Coord<f64>| c.x <= 0.5 || c.x >= nx - 0.5 || c.y <= 0.5 || c.y >= ny - 0.5;
@@ -113,7 +154,7 @@ pub fn grid_lines<P>(
     for ls in &ml.0 {
         let mut cur: Vec<(f64, f64)> = Vec::new();
         for w in ls.0.windows(2) {
-            if on_border(&w[0]) && on_border(&w[1]) {
+            if (on_border(&w[0]) && on_border(&w[1])) || cut(&w[0]) || cut(&w[1]) {
                 if cur.len() > 1 {
                     out.push(std::mem::take(&mut cur));
                 }
