@@ -569,8 +569,9 @@ fn jam_map_cells_beyond_the_palms_reach_are_their_own_class() {
 }
 
 /// A contour map over cells without a jam (a start past 90 deg is outside the model, a push
-/// below about 3.6 N too weak) leaves them out of every band, says so in its legend, and
-/// traces no iso-line along their edge: each point of a theta_jam iso-line lies between cells
+/// below about 3.6 N too weak) leaves them out of every band, says so in its legend, writes
+/// no gap to the rigid limit for them (it wrote 100 %), and traces no iso-line along their
+/// edge: each point of a theta_jam iso-line lies between cells
 /// that all jam and whose theta_jam straddle its level. Those cells carried a stand-in below
 /// every level, so each level under its neighbours' values ran along that edge, labelled, and
 /// the cells were shaded as the lowest band.
@@ -608,6 +609,10 @@ fn contour_lines_end_where_the_cells_stop_jamming() {
         .map(|r| r[1].parse().unwrap())
         .collect();
     assert!(theta.iter().any(Option::is_none) && theta.iter().any(Option::is_some));
+    // No gap to the rigid limit is claimed where there is no jam.
+    for r in &rows {
+        assert_eq!(r[2].is_empty(), r[4].is_empty(), "{r:?}");
+    }
     // The samples on either side of `v` along an axis (one where `v` is a sample).
     let around = |axis: &[f64], v: f64| -> Vec<usize> {
         let tol = 1e-6 * (axis[axis.len() - 1] - axis[0]);

@@ -134,15 +134,11 @@ impl Figure for ContourMapSettings {
         let p = &input.params;
         let model = self.model.with(&input.min_norm, &input.dynamics);
         let grid = models::evaluate(models, &model, &self.request(p))?;
-        let gap_pct: Option<Vec<f64>> = match (&grid.x_jam_mm, &grid.x_rigid_mm) {
+        let gap_pct: Option<Vec<Option<f64>>> = match (&grid.x_jam_mm, &grid.x_rigid_mm) {
             (Some(x), Some(r)) => Some(
                 x.iter()
                     .zip(r)
-                    .map(|(x, r)| match (x, r) {
-                        (Some(x), Some(r)) => 100.0 * (r - x) / r,
-                        // No jam or no limit: far from settled.
-                        _ => 100.0,
-                    })
+                    .map(|(x, r)| Some(100.0 * (r.as_ref()? - x.as_ref()?) / r.as_ref()?))
                     .collect(),
             ),
             _ => None,
@@ -180,7 +176,11 @@ impl Figure for ContourMapSettings {
             .map(|tj| lines(&dense_x_jam(tj), &settings.theta_jam_levels_deg))
             .unwrap_or_default();
         let gap_to_x_rigid_pct = match (&gap_pct, settings.settle_pct) {
-            (Some(gap), Some(pct)) => lines(gap, &[pct]),
+            // No jam or no limit: far from settled (the line ends there all the same).
+            (Some(gap), Some(pct)) => {
+                let dense: Vec<f64> = gap.iter().map(|g| g.unwrap_or(100.0)).collect();
+                lines(&dense, &[pct])
+            }
             _ => Vec::new(),
         };
         let read_off = match (settings.read_off, xa.param.get(p), ya.param.get(p)) {
@@ -327,8 +327,9 @@ pub struct ContourMapCells {
     pub x_jam_mm: Option<Vec<Option<f64>>>,
     /// theta_jam in deg, when its iso-lines are asked for.
     pub theta_jam_deg: Option<Vec<Option<f64>>>,
-    /// (x_rigid - x_jam) / x_rigid in %, with the settle line.
-    pub gap_to_x_rigid_pct: Option<Vec<f64>>,
+    /// (x_rigid - x_jam) / x_rigid in %, with the settle line; None where there is no jam or
+    /// no F -> infinity limit.
+    pub gap_to_x_rigid_pct: Option<Vec<Option<f64>>>,
 }
 
 impl HasCells for ContourMapCells {
@@ -347,7 +348,7 @@ impl HasCells for ContourMapCells {
         columns.extend(
             self.gap_to_x_rigid_pct
                 .as_deref()
-                .map(|v| ("gap_to_x_rigid_pct", Column::Dense(v))),
+                .map(|v| ("gap_to_x_rigid_pct", Column::Sparse(v))),
         );
         let [x, y] = self.params;
         CellsTable::new([(x.as_str(), &self.x), (y.as_str(), &self.y)], &columns)
