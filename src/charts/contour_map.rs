@@ -52,8 +52,8 @@ impl Picture for ContourMap {
         let c = &data.cells;
         let b = ContourBuilder::new(c.x.len(), c.y.len(), true);
         let xj = dense_x_jam(c.x_jam_mm.as_deref().unwrap_or_default());
-        // Bands: below the first level (down to 0: a cell without a jam is in none), between
-        // levels, above the last.
+        // Bands: below the first level (from just below 0, so that a cell without a jam is in
+        // none), between levels, above the last.
         let mut edges = vec![LOWEST_BAND_EDGE];
         edges.extend(&data.settings.x_jam_levels_mm);
         edges.push(f64::MAX);
@@ -327,7 +327,7 @@ impl ContourMap {
         if cells.iter().any(Option::is_none) {
             e.push(LegendEntry::new(
                 Swatch::Patch(style::PAPER),
-                "blank: no jam (x_jam empty in the CSV: outside the model, too weak, beyond the palm or never)",
+                "blank: the model gives no jam there (x_jam empty in the CSV)",
             ));
         }
         // Only where a line is drawn: at mu = 0.27 fig7c's 44-47 deg levels lie off the map.

@@ -647,7 +647,7 @@ fn contour_lines_end_where_the_cells_stop_jamming() {
     assert!(points > 20, "{points} points");
     let svg = String::from_utf8(render(&scene, Formats::Svg).unwrap().svg.unwrap()).unwrap();
     assert!(
-        svg.contains("blank: no jam"),
+        svg.contains("blank: the model gives no jam"),
         "the legend names the blank cells"
     );
     // Pixels of the lowest band (every jam here is below the first level, 25 mm): with the

@@ -246,8 +246,10 @@ pub fn statics_point(p: &SceneParams) -> Result<JamPoint> {
     models::solve(&ModelSpec::Statics, p).map(|s| JamPoint::from(&s))
 }
 
-/// The closed form's F -> infinity limit of `p` (theta_rigid in deg, x_rigid in mm), through
-/// the port like [`statics_point`]: None where the scene lies outside the closed form.
+/// The closed form's F -> infinity limit of `p` (theta_rigid in deg, x_rigid in mm) under the
+/// port's rules, as [`models::solve`] reports it in the closed form's detail: an invalid scene
+/// is an error, and a scene outside the closed form (`models::outside`) has none. A test
+/// checks it against that detail.
 pub(crate) fn rigid_point(p: &SceneParams) -> Result<Option<(f64, Option<f64>)>> {
     // What `models::solve` reports as the closed form's detail, without solving for the jam.
     p.validate()?;
