@@ -232,6 +232,7 @@ impl ContourMap {
     ) -> DrawResult<DB> {
         let levels = &self.data.settings.theta_jam_levels_deg;
         let lines = self.data.iso_lines.theta_jam_deg.iter();
+        let mut placed: Vec<PxBox> = Vec::new();
         for (i, (level, paths)) in lines.map(|l| (&l.level, &l.paths.paths)).enumerate() {
             for p in paths {
                 style::draw_line_px(
@@ -242,9 +243,34 @@ impl ContourMap {
                     THETA_LINE_PX,
                 )?;
             }
+            let s = format!("θ_jam = {}°", level_text(*level));
+            let (w, h) = root.estimate_text_size(&s, &style::text(style::TICK_PX))?;
+            // The label's box with its left edge 5 px right of `at`, as `boxed_text` draws it.
+            let label = |at: (i32, i32)| PxBox {
+                x0: at.0 + 5 - axes::BOX_PAD,
+                y0: at.1 - h as i32 / 2 - axes::BOX_PAD,
+                x1: at.0 + 5 + w as i32 + axes::BOX_PAD,
+                y1: at.1 - h as i32 / 2 + h as i32 + axes::BOX_PAD,
+            };
+            // From its staggered height down the line to the first place clear of the labels
+            // drawn already: lines that stop short of their height (at cells without a jam)
+            // would put every label at their top ends, one over the other.
             let frac = 0.95 - 0.06 * (levels.len() - 1 - i) as f64;
-            if let Some((_, at)) = at_height(paths, chart, y, frac) {
-                let s = format!("θ_jam = {}°", level_text(*level));
+            let places = (0..)
+                .map(|k| frac - 0.04 * k as f64)
+                .take_while(|f| *f > 0.0)
+                .filter_map(|f| at_height(paths, chart, y, f).map(|(_, at)| at));
+            let mut first = None;
+            let mut clear = None;
+            for at in places {
+                first.get_or_insert(at);
+                if !placed.iter().any(|b| b.overlaps(&label(at))) {
+                    clear = Some(at);
+                    break;
+                }
+            }
+            if let Some(at) = clear.or(first) {
+                placed.push(label(at));
                 let pos = Pos::new(HPos::Left, VPos::Center);
                 axes::boxed_text(root, &s, (at.0 + 5, at.1), pos, style::TICK_PX)?;
             }

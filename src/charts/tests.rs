@@ -574,7 +574,8 @@ fn jam_map_cells_beyond_the_palms_reach_are_their_own_class() {
 /// edge: each point of a theta_jam iso-line lies between cells
 /// that all jam and whose theta_jam straddle its level. Those cells carried a stand-in below
 /// every level, so each level under its neighbours' values ran along that edge, labelled, and
-/// the cells were shaded as the lowest band.
+/// the cells were shaded as the lowest band. The lines' labels, which then sat at the lines'
+/// top ends, are clear of one another.
 #[test]
 fn contour_lines_end_where_the_cells_stop_jamming() {
     let set: Vec<overrides::Setting> = [
@@ -650,6 +651,29 @@ fn contour_lines_end_where_the_cells_stop_jamming() {
         svg.contains("blank: the model gives no jam"),
         "the legend names the blank cells"
     );
+    // The labels' boxes (white, 22 px high, in the plot) are clear of one another: the
+    // theta_jam lines stop at 90 deg, short of their labels' staggered heights, and their
+    // labels at the lines' top ends overlapped.
+    let attr = |tag: &str, name: &str| -> f64 {
+        let at = tag.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
+        tag[at..].split('"').next().unwrap().parse().unwrap()
+    };
+    let boxes: Vec<[f64; 4]> = svg
+        .split("<rect")
+        .skip(1)
+        .filter(|t| t.contains("fill=\"#FFFFFF\"") && attr(t, "height") == 22.0)
+        .map(|t| {
+            let (x, y) = (attr(t, "x"), attr(t, "y"));
+            [x, y, x + attr(t, "width"), y + 22.0]
+        })
+        .collect();
+    assert!(boxes.len() >= 5, "{boxes:?}");
+    for (k, a) in boxes.iter().enumerate() {
+        for b in &boxes[k + 1..] {
+            let overlap = a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
+            assert!(!overlap, "labels overlap: {a:?} {b:?}");
+        }
+    }
     // Pixels of the lowest band (every jam here is below the first level, 25 mm): with the
     // blank cells, under half of those of the same map up to 89 deg and from 5 N, where all
     // jam (the jams fill under a third of the wider map).
