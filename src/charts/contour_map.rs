@@ -244,32 +244,24 @@ impl ContourMap {
                 )?;
             }
             let s = format!("θ_jam = {}°", level_text(*level));
-            let (w, h) = root.estimate_text_size(&s, &style::text(style::TICK_PX))?;
-            // The label's box with its left edge 5 px right of `at`, as `boxed_text` draws it.
-            let label = |at: (i32, i32)| PxBox {
-                x0: at.0 + 5 - axes::BOX_PAD,
-                y0: at.1 - h as i32 / 2 - axes::BOX_PAD,
-                x1: at.0 + 5 + w as i32 + axes::BOX_PAD,
-                y1: at.1 - h as i32 / 2 + h as i32 + axes::BOX_PAD,
+            let size = typeset::text_size(&s, style::TICK_PX);
+            // Its box with the left edge 5 px right of the line, as drawn below.
+            let label = |at: (i32, i32)| {
+                PxBox::centred((at.0 + 5 + size.0 as i32 / 2, at.1), size, axes::BOX_PAD)
             };
-            // From its staggered height down the line to the first place clear of the labels
+            // From its staggered height down the line, the first place clear of the labels
             // drawn already: lines that stop short of their height (at cells without a jam)
             // would put every label at their top ends, one over the other.
             let frac = 0.95 - 0.06 * (levels.len() - 1 - i) as f64;
-            let places = (0..)
+            let found: Vec<(i32, i32)> = (0..)
                 .map(|k| frac - 0.04 * k as f64)
                 .take_while(|f| *f > 0.0)
-                .filter_map(|f| at_height(paths, chart, y, f).map(|(_, at)| at));
-            let mut first = None;
-            let mut clear = None;
-            for at in places {
-                first.get_or_insert(at);
-                if !placed.iter().any(|b| b.overlaps(&label(at))) {
-                    clear = Some(at);
-                    break;
-                }
-            }
-            if let Some(at) = clear.or(first) {
+                .filter_map(|f| at_height(paths, chart, y, f).map(|(_, at)| at))
+                .collect();
+            let clear = found
+                .iter()
+                .find(|at| !placed.iter().any(|b| b.overlaps(&label(**at))));
+            if let Some(at) = clear.or(found.first()).copied() {
                 placed.push(label(at));
                 let pos = Pos::new(HPos::Left, VPos::Center);
                 axes::boxed_text(root, &s, (at.0 + 5, at.1), pos, style::TICK_PX)?;

@@ -373,13 +373,7 @@ fn print_style_draws_greys_only() {
         assert_eq!(scene.style, print::Ink::Print);
         let r = render(&scene, Formats::Both).unwrap();
         let png = r.png.unwrap();
-        let mut decoder = png::Decoder::new(std::io::Cursor::new(png));
-        // An indexed PNG (output::encode_png's smaller form) decoded to RGB.
-        decoder.set_transformations(png::Transformations::EXPAND);
-        let mut reader = decoder.read_info().unwrap();
-        let mut buf = vec![0; reader.output_buffer_size()];
-        let info = reader.next_frame(&mut buf).unwrap();
-        let px = &buf[..info.buffer_size()];
+        let px = &rgb_pixels(&png);
         assert!(
             px.chunks_exact(3).all(|p| p[0] == p[1] && p[1] == p[2]),
             "{name}: a pixel is not grey"
@@ -537,14 +531,11 @@ fn the_universal_chart_reads_back_the_closed_form_for_any_part() {
 /// margin's sign.
 #[test]
 fn jam_map_cells_beyond_the_palms_reach_are_their_own_class() {
-    let set: Vec<overrides::Setting> = [
+    let set = settings(&[
         "palm_length_mm=40",
         "chart.x_axis.count=21",
         "chart.y_axis.count=31",
-    ]
-    .iter()
-    .map(|s| s.parse().unwrap())
-    .collect();
+    ]);
     let scene = SceneSource::BuiltIn("fig3".into()).load(&set).unwrap();
     let chart = Chart::of_scene(&scene).unwrap();
     let csv = String::from_utf8(chart.cells().unwrap().to_bytes()).unwrap();
@@ -578,17 +569,14 @@ fn jam_map_cells_beyond_the_palms_reach_are_their_own_class() {
 /// top ends, are clear of one another.
 #[test]
 fn contour_lines_end_where_the_cells_stop_jamming() {
-    let set: Vec<overrides::Setting> = [
+    let set = settings(&[
         "chart.y_axis.param=start_angle_deg",
         "chart.y_axis.min=60",
         "chart.y_axis.max=150",
         "chart.y_axis.count=30",
         "chart.x_axis.min=2",
         "chart.x_axis.count=40",
-    ]
-    .iter()
-    .map(|s| s.parse().unwrap())
-    .collect();
+    ]);
     let scene = SceneSource::BuiltIn("fig7c".into()).load(&set).unwrap();
     let chart = Chart::of_scene(&scene).unwrap();
     let doc: serde_json::Value =
@@ -680,25 +668,34 @@ fn contour_lines_end_where_the_cells_stop_jamming() {
     let lowest = |set: &[overrides::Setting]| {
         let scene = SceneSource::BuiltIn("fig7c".into()).load(set).unwrap();
         let png = render(&scene, Formats::Png).unwrap().png.unwrap();
-        let mut decoder = png::Decoder::new(std::io::Cursor::new(png));
-        decoder.set_transformations(png::Transformations::EXPAND);
-        let mut reader = decoder.read_info().unwrap();
-        let mut buf = vec![0; reader.output_buffer_size()];
-        let info = reader.next_frame(&mut buf).unwrap();
         let RGBColor(r, g, b) = style::band_colors(scene_levels(&scene) + 1)[0];
-        let px = &buf[..info.buffer_size()];
+        let px = rgb_pixels(&png);
         px.chunks_exact(3).filter(|p| *p == [r, g, b]).count()
     };
-    let all_jam: Vec<overrides::Setting> = set[..]
-        .iter()
-        .cloned()
-        .chain([
-            "chart.y_axis.max=89".parse().unwrap(),
-            "chart.x_axis.min=5".parse().unwrap(),
-        ])
-        .collect();
+    let all_jam = [
+        set.clone(),
+        settings(&["chart.y_axis.max=89", "chart.x_axis.min=5"]),
+    ]
+    .concat();
     let (some, all) = (lowest(&set), lowest(&all_jam));
     assert!(all > 10_000 && 2 * some < all, "{some} of {all} pixels");
+}
+
+/// `key=value` overrides, as `--set` takes them.
+fn settings(pairs: &[&str]) -> Vec<overrides::Setting> {
+    pairs.iter().map(|s| s.parse().unwrap()).collect()
+}
+
+/// The RGB bytes of a rendered PNG (an indexed PNG, `output::encode_png`'s smaller form, is
+/// expanded).
+fn rgb_pixels(png: &[u8]) -> Vec<u8> {
+    let mut decoder = png::Decoder::new(std::io::Cursor::new(png));
+    decoder.set_transformations(png::Transformations::EXPAND);
+    let mut reader = decoder.read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    buf.truncate(info.buffer_size());
+    buf
 }
 
 /// The x_jam levels of a contour map scene.
