@@ -381,6 +381,16 @@ impl Stepper {
         }
     }
 
+    /// Moves the disc along the ground out of the palm at palm angle `theta`, when it lags
+    /// inside it (g_B < 0): x by -g_B / sin theta.
+    pub fn touch_palm(&self, q: &mut [f64; 3], theta: f64) {
+        let (s, c) = theta.sin_cos();
+        let gap = q[0] * s - q[1] * c - self.radius - self.offset;
+        if gap < 0.0 {
+            q[0] -= gap / s;
+        }
+    }
+
     /// Velocities after the step for impulses `p`: v+ = v_free + M^-1 J^T P.
     pub fn velocities(&self, built: &Built, p: &[f64; 4]) -> [f64; 3] {
         let mut v = built.v_free;
