@@ -242,8 +242,8 @@ impl Cruise {
         let turn = theta - theta_end;
         let (s, c) = theta_end.sin_cos();
         let reach = q_end[0] * c + q_end[1] * s;
-        // A cruise's end lags by its own second order: the palm's end is met a cruise later,
-        // after the steps that give that back.
+        // The contact's distance from the hinge a cruise further on, at the cruise's rate: the
+        // palm's end is met by the run's own steps.
         let reach_next = 2.0 * reach - built.contact_distance;
         let steady = st.dt != self.last_dt
             || self.in_row < 2
