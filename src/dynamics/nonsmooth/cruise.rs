@@ -103,6 +103,8 @@ pub(super) struct Cruise {
     wedge_rad: f64,
     /// The wedge's angle in rad with the dynamic frictions, alpha_g + alpha_p.
     wedge_dynamic_rad: f64,
+    /// The drive's limit on the palm's push in N (infinite: motion drive).
+    push_limit_n: f64,
 }
 
 /// Whether the modes are a steady push: the ground slides, the palm touches, the drive runs.
@@ -156,6 +158,8 @@ impl Cruise {
             in_row: 0,
             wedge_rad: (0..2).map(|k| st.mu[k].max(st.mu_static[k]).atan()).sum(),
             wedge_dynamic_rad: st.mu.iter().map(|mu| mu.atan()).sum(),
+            // kg mm/s per step -> N.
+            push_limit_n: st.push_limit * 1e-3 / st.dt,
         })
     }
 
@@ -251,7 +255,7 @@ impl Cruise {
         let ahead = theta_end - LIMIT_CRUISES * turn;
         let ok = built.gaps[0] + st.dt * v_end[1] <= LIFT_MM
             && steady
-            && self.below_limit(push.max(push_n), theta, ahead, st)
+            && self.below_limit(push.max(push_n), theta, ahead)
             && theta_end - self.wedge_rad >= WEDGE_CRUISES * turn
             && reach_next <= self.palm_length_mm;
         if !ok {
@@ -260,7 +264,7 @@ impl Cruise {
         // With a limit on the drive, the run's step after the cruise must keep the modes: its
         // push carries the disc's acceleration times the cruise's length over its own, which
         // must not stall the palm.
-        if self.step.push_limit.is_finite() {
+        if self.push_limit_n.is_finite() {
             st.touch_palm(&mut q_end, theta_end);
             *tries += 1;
             let after = self.step.build(&q_end, &v_end, theta_end);
@@ -274,13 +278,11 @@ impl Cruise {
     /// alpha_g - alpha_p) with the dynamic friction angles (N_B (sin theta - mu_p cos theta) =
     /// mu_g N_A + m x'' with N_A = m g + N_B (cos theta + mu_p sin theta)), its inertial part
     /// too, so the push ahead is read off that law.
-    fn below_limit(&self, push: f64, theta: f64, theta_ahead: f64, st: &Stepper) -> bool {
-        if st.push_limit.is_infinite() {
+    fn below_limit(&self, push: f64, theta: f64, theta_ahead: f64) -> bool {
+        if self.push_limit_n.is_infinite() {
             return true;
         }
         let margin = (theta_ahead - self.wedge_dynamic_rad).sin();
-        margin > 0.0
-            && push * (theta - self.wedge_dynamic_rad).sin()
-                <= margin * st.push_limit * 1e-3 / st.dt
+        margin > 0.0 && push * (theta - self.wedge_dynamic_rad).sin() <= margin * self.push_limit_n
     }
 }

@@ -362,7 +362,7 @@ impl Stepper {
                     .sum();
             }
         }
-        let gaps = [q[1] - r, q[0] * s - q[1] * c - r - h];
+        let gaps = [q[1] - r, self.palm_gap(q, s, c)];
         Built {
             problem: StepProblem {
                 b,
@@ -385,10 +385,16 @@ impl Stepper {
     /// inside it (g_B < 0): x by -g_B / sin theta.
     pub fn touch_palm(&self, q: &mut [f64; 3], theta: f64) {
         let (s, c) = theta.sin_cos();
-        let gap = q[0] * s - q[1] * c - self.radius - self.offset;
+        let gap = self.palm_gap(q, s, c);
         if gap < 0.0 {
             q[0] -= gap / s;
         }
+    }
+
+    /// The palm's gap g_B = x sin theta - y cos theta - r - h in mm at configuration `q`, with
+    /// `s`, `c` the sine and cosine of the palm angle.
+    fn palm_gap(&self, q: &[f64; 3], s: f64, c: f64) -> f64 {
+        q[0] * s - q[1] * c - self.radius - self.offset
     }
 
     /// Velocities after the step for impulses `p`: v+ = v_free + M^-1 J^T P.
