@@ -370,10 +370,10 @@ pub fn evaluate_columns(
 /// read per cell), each cell's bit for bit as [`models::solve`] gives it alone. A palm-angle
 /// axis (a margin map's) is no column of pushes: such a grid's cells go one by one.
 pub fn evaluate_closed_form(req: &GridRequest) -> Result<GridResult> {
-    let theta_axis = req.x.param == GridParam::ThetaDeg || req.y.param == GridParam::ThetaDeg;
-    match theta_axis {
-        true => evaluate(req, statics_point),
-        false => evaluate_with(req, JamPoints::ClosedForm),
+    if req.x.param == GridParam::ThetaDeg || req.y.param == GridParam::ThetaDeg {
+        evaluate(req, statics_point)
+    } else {
+        evaluate_with(req, JamPoints::ClosedForm)
     }
 }
 

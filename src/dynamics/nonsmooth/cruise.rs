@@ -38,7 +38,7 @@
 //! test prints (round-off), and the steps on the design map's cases fall 16 times with the
 //! force drive and 5 times with the motion drive.
 
-use super::step::{Built, ContactMode, DriveMode, LIFT_MM, Modes, StepSolution, Stepper};
+use super::step::{ContactMode, DriveMode, LIFT_MM, Modes, Stepper};
 
 /// The longest cruise in deg of palm turn: the motion drive's cruise at its default 0.1 deg
 /// step, where the lag above was measured.
@@ -74,13 +74,30 @@ const SETTLE_STEPS: u32 = 2;
 
 /// One length of cruise.
 #[derive(Debug, Clone, Copy)]
-pub(super) struct Level {
+struct Level {
     /// The stepper with the cruise's step.
-    pub stepper: Stepper,
+    stepper: Stepper,
     /// The run's steps the cruise spans.
-    pub steps: u32,
+    steps: u32,
     /// The run's steps to wait before this length is tried again.
     wait: u32,
+}
+
+/// A cruise kept: where the run goes on from, and what it reports of it.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Cruised {
+    /// The run's steps it spans.
+    pub steps: u32,
+    /// Its length in s.
+    pub dt: f64,
+    /// The palm's push in N.
+    pub push_n: f64,
+    /// The palm's speed in rad/s.
+    pub theta_dot: f64,
+    /// The state at its end, the disc touching the palm: configuration, velocity, palm angle.
+    pub q: [f64; 3],
+    pub v: [f64; 3],
+    pub theta: f64,
 }
 
 /// The state of cruising in one run.
@@ -187,9 +204,9 @@ impl Cruise {
     }
 
     /// Tries a cruise from (q, v, theta) in the modes of the last step, whose push was
-    /// `push_n` (N), the longest length first. Returns the length, its problem and answer when
-    /// one is kept; a length refused waits its own span before it is tried again. `tries`
-    /// counts the step problems solved.
+    /// `push_n` (N), the longest length first. Returns the cruise when one is kept; a length
+    /// refused waits its own span before it is tried again. `tries` counts the step problems
+    /// solved.
     pub fn try_step(
         &mut self,
         q: &[f64; 3],
@@ -198,7 +215,7 @@ impl Cruise {
         modes: Modes,
         push_n: f64,
         tries: &mut u64,
-    ) -> Option<(Level, Built, StepSolution)> {
+    ) -> Option<Cruised> {
         if self.settle > 0 || !steady(modes) || push_n <= 0.0 {
             return None;
         }
@@ -207,10 +224,10 @@ impl Cruise {
             if level.wait > 0 {
                 continue;
             }
-            match self.accept(&level.stepper, (q, v, theta), modes, push_n, tries) {
-                Some((built, sol)) => {
+            match self.accept(&level, (q, v, theta), modes, push_n, tries) {
+                Some(kept) => {
                     self.pass(level.steps, level.stepper.dt);
-                    return Some((level, built, sol));
+                    return Some(kept);
                 }
                 None => self.levels[j].wait = level.steps,
             }
@@ -218,8 +235,8 @@ impl Cruise {
         None
     }
 
-    /// The cruise by `st` from (q, v, theta) in `modes`, when it is kept: its problem and
-    /// answer. `push_n` (N) is the last step's push; `tries` counts the problems solved.
+    /// The cruise of `level` from (q, v, theta) in `modes`, when it is kept. `push_n` (N) is
+    /// the last step's push; `tries` counts the problems solved.
     ///
     /// Pushes are compared only between cruises of one length that follow one as long. Each
     /// step's velocity closes the gap with the geometry at its start, so its push carries the
@@ -228,12 +245,13 @@ impl Cruise {
     /// after them 5.16 N. The first two cruises of a length are judged by the rest alone.
     fn accept(
         &self,
-        st: &Stepper,
+        level: &Level,
         (q, v, theta): (&[f64; 3], &[f64; 3], f64),
         modes: Modes,
         push_n: f64,
         tries: &mut u64,
-    ) -> Option<(Built, StepSolution)> {
+    ) -> Option<Cruised> {
+        let st = &level.stepper;
         let built = st.build(q, v, theta);
         *tries += 1;
         let sol = built.problem.try_modes(modes)?;
@@ -261,16 +279,24 @@ impl Cruise {
         if !ok {
             return None;
         }
+        st.touch_palm(&mut q_end, theta_end);
         // With a limit on the drive, the run's step after the cruise must keep the modes: its
         // push carries the disc's acceleration times the cruise's length over its own, which
         // must not stall the palm.
         if self.push_limit_n.is_finite() {
-            st.touch_palm(&mut q_end, theta_end);
             *tries += 1;
             let after = self.step.build(&q_end, &v_end, theta_end);
             after.problem.try_modes(modes)?;
         }
-        Some((built, sol))
+        Some(Cruised {
+            steps: level.steps,
+            dt: st.dt,
+            push_n: push,
+            theta_dot: sol.theta_dot,
+            q: q_end,
+            v: v_end,
+            theta: theta_end,
+        })
     }
 
     /// Whether the force drive's push, `push` (N) at palm angle `theta`, stays below its limit

@@ -307,27 +307,20 @@ fn run_with(
         }
         if rest.is_none()
             && let Some(c) = cruise.as_mut()
-            && let Some((level, built, sol)) =
-                c.try_step(&q, &v, theta, modes, last_push, &mut out.mode_solves)
+            && let Some(k) = c.try_step(&q, &v, theta, modes, last_push, &mut out.mode_solves)
         {
-            let dt_c = level.stepper.dt;
-            last_push = sol.impulse[2] * 1e-3 / dt_c;
+            last_push = k.push_n;
             // Counted as the steps it spans, all sliding; a lock-up right after it is located
             // in its last step's length.
-            out.tally.slipping_steps += u64::from(level.steps);
-            v = level.stepper.velocities(&built, &sol.impulse);
+            out.tally.slipping_steps += u64::from(k.steps);
+            (q, v, theta) = (k.q, k.v, k.theta);
             out.moved |= v[0] != 0.0;
-            for k in 0..3 {
-                q[k] += dt_c * v[k];
-            }
-            theta += dt_c * sol.theta_dot;
-            st.touch_palm(&mut q, theta);
-            t += dt_c;
+            t += k.dt;
             last = Some(LastStep {
                 q: [q[0] - dt * v[0], q[1] - dt * v[1], q[2] - dt * v[2]],
                 v,
-                theta: theta - dt * sol.theta_dot,
-                theta_dot: sol.theta_dot,
+                theta: theta - dt * k.theta_dot,
+                theta_dot: k.theta_dot,
                 t: t - dt,
             });
             travel = dt * v[0].abs();
