@@ -14,9 +14,9 @@
 //! the palm's end) the run takes its own step: a cruise is kept only when its answer has the
 //! same contact modes, the push changed by less than [`PUSH_CHANGE`] since the cruise before, a
 //! force-limited push stays [`LIMIT_CRUISES`] cruises of its growth below its limit and the
-//! run's step after the cruise keeps the modes, the palm stays [`WEDGE_CRUISES`] cruises short
-//! of the self-locking wedge (the sum of the friction angles, static or dynamic, whichever is
-//! larger) and the contact stays on the palm a cruise longer.
+//! run's step after the cruise keeps the modes (below), the palm stays [`WEDGE_CRUISES`]
+//! cruises short of the self-locking wedge (the sum of the friction angles, static or dynamic,
+//! whichever is larger) and the contact stays on the palm a cruise longer.
 //!
 //! The shortest cruise is ten steps; each longer one is three times the next, up to
 //! [`LONGEST_CRUISE_DEG`] of palm turn, the longest tried first: the motion drive (0.1 deg
@@ -32,11 +32,25 @@
 //! of the lengths: at 900 deg/s, where that acceleration is most of the push, letting it stall
 //! the palm moved the rest by up to 0.7 %.
 //!
+//! That step is only taken where cruising ends: a cruise followed by another hands its state to
+//! a cruise, whose own push is checked. So a cruise is kept on trial, and the run's own step
+//! after it is the check: when that step leaves the cruise's modes, the run goes back to where
+//! the cruise began and cruising goes on as if its length had been refused (then, in turn, the
+//! cruise before it is on trial). From the first cruise taken back on, each cruise is checked
+//! by solving its next step before it is kept, as a run that keeps taking cruises back (at low
+//! friction and push the catch-up stalls the palm after every long cruise) would otherwise walk
+//! back and forth. With each cruise's next step solved first, a cell of the design map took
+//! 562 step problems with the force drive; with cruises on trial, 391 (and a margin of one
+//! cruise to the drive's limit, [`LIMIT_CRUISES`]; `cargo bench --bench maps -- goals`), with
+//! the same answers to round-off.
+//!
 //! Measured by `cruising_keeps_the_answers` (tests of the nonsmooth module): over mu 0.1-0.8,
 //! F 20-2000 N, both drives, palm speeds of 30 and 900 deg/s and a palm the disc leaves, every
 //! run ends as without cruising, with the same steps off the palm, x_jam within the figure the
-//! test prints (round-off), and the steps on the design map's cases fall 16 times with the
-//! force drive and 5 times with the motion drive.
+//! test prints (round-off), and the steps on the design map's cases fall 17 times with the
+//! force drive and 5 times with the motion drive. At 30 deg/s no run solves more step problems
+//! than without cruising; at 900 deg/s, where the catch-up stalls the palm after most cruises,
+//! the cruises refused cost up to a tenth more (the figures the test prints).
 
 use super::step::{ContactMode, DriveMode, LIFT_MM, Modes, Stepper};
 
@@ -65,9 +79,11 @@ const WEDGE_CRUISES: f64 = 3.0;
 
 /// Cruises of the push's growth that must fit between the push at a cruise's end and the
 /// force drive's limit, where the palm stalls and the disc comes to rest: the steps towards the
-/// limit are the run's own (a long cruise ends three of its lengths before it, a short one
-/// goes on closer).
-const LIMIT_CRUISES: f64 = 3.0;
+/// limit are the run's own (a long cruise ends a length of itself before it, a short one goes
+/// on closer), and the run's step after the last cruise checks that the palm still runs. A
+/// margin of three cruises took 424 step problems a cell of the design map against 391, with
+/// the same answers.
+const LIMIT_CRUISES: f64 = 1.0;
 
 /// Steady steps needed before a cruise.
 const SETTLE_STEPS: u32 = 2;
@@ -79,8 +95,22 @@ struct Level {
     stepper: Stepper,
     /// The run's steps the cruise spans.
     steps: u32,
-    /// The run's steps to wait before this length is tried again.
-    wait: u32,
+}
+
+/// What cruising remembers of the run's last steps: small, so that a cruise can be taken back.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Pace {
+    /// For each length, the run's steps to wait before it is tried again.
+    waits: [u32; LEVELS],
+    /// Steady steps still needed before a cruise.
+    settle: u32,
+    /// The length in s of the last step taken (a step or a cruise).
+    last_dt: f64,
+    /// Steps of that length taken in a row up to the last.
+    in_row: u32,
+    /// Whether a cruise's next step is checked before the cruise is kept (with a limit on the
+    /// drive, once a cruise was taken back).
+    probes: bool,
 }
 
 /// A cruise kept: where the run goes on from, and what it reports of it.
@@ -94,6 +124,11 @@ pub(super) struct Cruised {
     pub push_n: f64,
     /// The palm's speed in rad/s.
     pub theta_dot: f64,
+    /// Cruising as it was before this cruise, with its length refused: what
+    /// [`Cruise::take_back`] restores when the run's step after it leaves its modes.
+    pub refused: Pace,
+    /// Whether it is on trial: with a limit on the drive, kept without its next step solved.
+    pub on_trial: bool,
     /// The state at its end, the disc touching the palm: configuration, velocity, palm angle.
     pub q: [f64; 3],
     pub v: [f64; 3],
@@ -110,12 +145,7 @@ pub(super) struct Cruise {
     step: Stepper,
     /// The palm's length in mm: a cruise stays on the palm.
     palm_length_mm: f64,
-    /// Steady steps still needed before a cruise.
-    settle: u32,
-    /// The length in s of the last step taken (a step or a cruise).
-    last_dt: f64,
-    /// Steps of that length taken in a row up to the last.
-    in_row: u32,
+    pace: Pace,
     /// The self-locking wedge's angle in rad with the larger of each contact's frictions.
     wedge_rad: f64,
     /// The wedge's angle in rad with the dynamic frictions, alpha_g + alpha_p.
@@ -151,7 +181,6 @@ impl Cruise {
                     ..*st
                 },
                 steps,
-                wait: 0,
             }
         };
         let mut levels = [level(SHORTEST_STEPS); LEVELS];
@@ -170,9 +199,13 @@ impl Cruise {
             count,
             step: *st,
             palm_length_mm,
-            settle: SETTLE_STEPS,
-            last_dt: st.dt,
-            in_row: 0,
+            pace: Pace {
+                waits: [0; LEVELS],
+                settle: SETTLE_STEPS,
+                last_dt: st.dt,
+                in_row: 0,
+                probes: false,
+            },
             wedge_rad: (0..2).map(|k| st.mu[k].max(st.mu_static[k]).atan()).sum(),
             wedge_dynamic_rad: st.mu.iter().map(|mu| mu.atan()).sum(),
             // kg mm/s per step -> N.
@@ -182,14 +215,15 @@ impl Cruise {
 
     /// Counts `steps` of the run's steps taken, as one step of `dt` (s): a step, or a cruise.
     fn pass(&mut self, steps: u32, dt: f64) {
-        self.in_row = if dt == self.last_dt {
-            self.in_row + 1
+        let pace = &mut self.pace;
+        pace.in_row = if dt == pace.last_dt {
+            pace.in_row + 1
         } else {
             1
         };
-        self.last_dt = dt;
-        for level in &mut self.levels[..self.count] {
-            level.wait = level.wait.saturating_sub(steps);
+        pace.last_dt = dt;
+        for wait in &mut pace.waits[..self.count] {
+            *wait = wait.saturating_sub(steps);
         }
     }
 
@@ -197,9 +231,9 @@ impl Cruise {
     pub fn after_step(&mut self, modes: Modes, lifts: bool) {
         self.pass(1, self.step.dt);
         if steady(modes) && !lifts {
-            self.settle = self.settle.saturating_sub(1);
+            self.pace.settle = self.pace.settle.saturating_sub(1);
         } else {
-            self.settle = SETTLE_STEPS;
+            self.pace.settle = SETTLE_STEPS;
         }
     }
 
@@ -216,23 +250,31 @@ impl Cruise {
         push_n: f64,
         tries: &mut u64,
     ) -> Option<Cruised> {
-        if self.settle > 0 || !steady(modes) || push_n <= 0.0 {
+        if self.pace.settle > 0 || !steady(modes) || push_n <= 0.0 {
             return None;
         }
         for j in 0..self.count {
             let level = self.levels[j];
-            if level.wait > 0 {
+            if self.pace.waits[j] > 0 {
                 continue;
             }
-            match self.accept(&level, (q, v, theta), modes, push_n, tries) {
-                Some(kept) => {
-                    self.pass(level.steps, level.stepper.dt);
-                    return Some(kept);
-                }
-                None => self.levels[j].wait = level.steps,
+            if let Some(mut kept) = self.accept(&level, (q, v, theta), modes, push_n, tries) {
+                kept.refused.waits[j] = level.steps;
+                self.pass(level.steps, level.stepper.dt);
+                return Some(kept);
             }
+            self.pace.waits[j] = level.steps;
         }
         None
+    }
+
+    /// Takes back a cruise whose next step of the run left its modes: cruising goes on as if
+    /// its length had been refused.
+    pub fn take_back(&mut self, refused: Pace) {
+        self.pace = Pace {
+            probes: true,
+            ..refused
+        };
     }
 
     /// The cruise of `level` from (q, v, theta) in `modes`, when it is kept. `push_n` (N) is
@@ -267,8 +309,8 @@ impl Cruise {
         // The contact's distance from the hinge a cruise further on, at the cruise's rate: the
         // palm's end is met by the run's own steps.
         let reach_next = 2.0 * reach - built.contact_distance;
-        let steady = st.dt != self.last_dt
-            || self.in_row < 2
+        let steady = st.dt != self.pace.last_dt
+            || self.pace.in_row < 2
             || (push - push_n).abs() <= PUSH_CHANGE * push_n;
         let ahead = theta_end - LIMIT_CRUISES * turn;
         let ok = built.gaps[0] + st.dt * v_end[1] <= LIFT_MM
@@ -280,10 +322,7 @@ impl Cruise {
             return None;
         }
         st.touch_palm(&mut q_end, theta_end);
-        // With a limit on the drive, the run's step after the cruise must keep the modes: its
-        // push carries the disc's acceleration times the cruise's length over its own, which
-        // must not stall the palm.
-        if self.push_limit_n.is_finite() {
+        if self.pace.probes {
             *tries += 1;
             let after = self.step.build(&q_end, &v_end, theta_end);
             after.problem.try_modes(modes)?;
@@ -293,6 +332,9 @@ impl Cruise {
             dt: st.dt,
             push_n: push,
             theta_dot: sol.theta_dot,
+            // Its own length refused by the caller.
+            refused: self.pace,
+            on_trial: self.push_limit_n.is_finite() && !self.pace.probes,
             q: q_end,
             v: v_end,
             theta: theta_end,

@@ -86,8 +86,8 @@
 //! The steps in the table are the plain run's: without a time series a run cruises
 //! (`cruise`: 10 steps in one while the push is steady, up to 1 deg of palm turn in one far
 //! from the wedge and the drive's limit), which on the design map's cases (mu 0.1-0.8, F 20-2000
-//! N) takes 16 times fewer steps with the force drive (up to 37 times a run) and 4.9 times fewer
-//! with the motion drive (2.0-5.8 times a run), and moves no jam by more than round-off (2e-13
+//! N) takes 17 times fewer steps with the force drive (up to 37 times a run) and 4.9 times fewer
+//! with the motion drive (2.0-5.8 times a run), and moves no jam by more than round-off (3e-13
 //! of itself; `cruising_keeps_the_answers`, which prints the figures).
 //!
 //! The error is of second order in the step: each step closes the palm's gap with the geometry
@@ -156,7 +156,7 @@ pub(crate) mod step;
 
 use serde::Serialize;
 
-use self::cruise::Cruise;
+use self::cruise::{Cruise, Pace};
 use self::step::{ContactMode, DriveMode, LIFT_MM, Modes, Stepper};
 use super::jam::SeriesRow;
 use super::{Drive, DynamicsParams};
@@ -244,6 +244,28 @@ struct LastStep {
     t: f64,
 }
 
+/// The run before a cruise, kept while the cruise is on trial: with a limit on the drive, the
+/// run's step after a cruise must keep the cruise's modes (its push catches up with the disc's
+/// acceleration over the cruise, times the cruise's length over its own, and must not stall
+/// the palm). A cruise followed by another needs no such step; one followed by the run's step
+/// that leaves the modes is taken back, and with it, in turn, each cruise before it that the
+/// run's step then leaves in the same way.
+#[derive(Debug, Clone, Copy)]
+struct OnTrial {
+    q: [f64; 3],
+    v: [f64; 3],
+    theta: f64,
+    t: f64,
+    last: Option<LastStep>,
+    travel: f64,
+    last_push: f64,
+    slipping_steps: u64,
+    steps: u64,
+    moved: bool,
+    /// Cruising with the cruise's length refused.
+    refused: Pace,
+}
+
 /// Halvings of the step in which the palm locks up: the lock-up is located to 2^-16 of a step
 /// (7e-6 mm at mu = 0.15 and the default 0.1 deg), far below the method's own error.
 const LOCATE_HALVINGS: u32 = 16;
@@ -295,6 +317,8 @@ fn run_with(
     let mut last: Option<LastStep> = None;
     // The disc's travel in the previous step in mm.
     let mut travel = 0.0;
+    // The cruises on trial since the run's last step, the latest last.
+    let mut on_trial: Vec<OnTrial> = Vec::new();
     while theta > 0.0 {
         if let Some(End::AtRest { t: t_jam, .. }) = rest
             && t >= t_jam + params.series.after_jam_s
@@ -309,6 +333,24 @@ fn run_with(
             && let Some(c) = cruise.as_mut()
             && let Some(k) = c.try_step(&q, &v, theta, modes, last_push, &mut out.mode_solves)
         {
+            if !k.on_trial {
+                // Checked against its next step: the cruises before it are kept.
+                on_trial.clear();
+            } else {
+                on_trial.push(OnTrial {
+                    q,
+                    v,
+                    theta,
+                    t,
+                    last,
+                    travel,
+                    last_push,
+                    slipping_steps: out.tally.slipping_steps,
+                    steps: out.steps,
+                    moved: out.moved,
+                    refused: k.refused,
+                });
+            }
             last_push = k.push_n;
             // Counted as the steps it spans, all sliding; a lock-up right after it is located
             // in its last step's length.
@@ -350,7 +392,23 @@ fn run_with(
             };
             break;
         }
-        let Some(sol) = built.problem.solve(modes) else {
+        let solved = built.problem.solve(modes);
+        if let Some(before) = on_trial.pop() {
+            if solved.is_some_and(|s| s.modes == modes) {
+                on_trial.clear();
+            } else {
+                out.mode_solves += 1;
+                (q, v, theta, t) = (before.q, before.v, before.theta, before.t);
+                (last, travel, last_push) = (before.last, before.travel, before.last_push);
+                (out.tally.slipping_steps, out.steps) = (before.slipping_steps, before.steps);
+                out.moved = before.moved;
+                if let Some(c) = cruise.as_mut() {
+                    c.take_back(before.refused);
+                }
+                continue;
+            }
+        }
+        let Some(sol) = solved else {
             out.end = match (params.drive.mode, last) {
                 (Drive::Motion, Some(last)) => {
                     let located = locate_lock_up(&st, &last, modes, last_push);

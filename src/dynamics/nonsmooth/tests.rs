@@ -276,6 +276,8 @@ fn end_x(end: &End) -> (std::mem::Discriminant<End>, Option<f64>) {
 #[test]
 fn cruising_keeps_the_answers() {
     let (mut worst, mut steps, mut steps_cruising) = (0.0_f64, 0_u64, 0_u64);
+    // The step problems solved cruising over those without, at 30 deg/s and at 900.
+    let mut worst_cost = [0.0_f64; 2];
     for drive in [Drive::Motion, Drive::Force] {
         // The design map's cases: from 90 deg, a 150 mm palm, 30 deg/s.
         let (mut map_steps, mut map_cruising) = (0_u64, 0_u64);
@@ -329,6 +331,17 @@ fn cruising_keeps_the_answers() {
                         );
                     }
                     assert!(fast.steps <= plain.steps, "{case}");
+                    // Where the push's catch-up after a cruise stalls the palm more often
+                    // than not (900 deg/s), the cruises tried and refused cost a little.
+                    let cost = fast.mode_solves as f64 / plain.mode_solves.max(1) as f64;
+                    let k = usize::from(omega > 30.0);
+                    worst_cost[k] = worst_cost[k].max(cost);
+                    assert!(
+                        cost <= [1.0, 1.15][k],
+                        "{case}: {} step problems against {} without cruising",
+                        fast.mode_solves,
+                        plain.mode_solves
+                    );
                     if start_deg == 90.0 && palm_mm == 150.0 && omega == 30.0 {
                         map_steps += plain.steps;
                         map_cruising += fast.steps;
@@ -351,8 +364,11 @@ fn cruising_keeps_the_answers() {
     }
     eprintln!(
         "cruising: x_jam within {worst:.2e} of the plain run; {steps} steps against \
-         {steps_cruising} ({:.1}x fewer)",
+         {steps_cruising} ({:.1}x fewer); step problems at most {:.2}x the plain run's at 30 deg/s, \
+         {:.2}x at 900",
         steps as f64 / steps_cruising as f64,
+        worst_cost[0],
+        worst_cost[1],
     );
     assert!(steps_cruising < steps);
 }
