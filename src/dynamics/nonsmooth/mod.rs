@@ -447,7 +447,9 @@ fn run_with(
                 out.tally.lifted_steps += 1;
                 out.lift_off_deg.get_or_insert(theta.to_degrees());
             } else if ground == ContactMode::Stick {
-                if v[0] != 0.0 {
+                // Moving faster than rest: a sliding disc held by the ground keeps a velocity of
+                // round-off size, which is no roll.
+                if v[0].abs() > REST_MM_S {
                     out.tally.rolling_steps += 1;
                 }
             } else {

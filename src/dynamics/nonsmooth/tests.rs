@@ -267,6 +267,15 @@ fn end_x(end: &End) -> (std::mem::Discriminant<End>, Option<f64>) {
     (std::mem::discriminant(end), x)
 }
 
+/// The nonsmooth method's defaults under `drive` at `omega` deg/s.
+fn nonsmooth_params(drive: Drive, omega: f64) -> DynamicsParams {
+    let mut params = DynamicsParams::default();
+    params.integrator.method = crate::dynamics::Method::Nonsmooth;
+    params.drive.mode = drive;
+    params.drive.omega_deg_s = omega;
+    params
+}
+
 /// Cruising (strides of 10 steps and more while the push is steady, `cruise`) must not change
 /// an answer. Over the design map's mu 0.1-0.8 and F 20-2000 N, both drives, a palm from 90
 /// and from 40 deg, a short palm (the disc leaves it) and a fast one (30 and 900 deg/s), every
@@ -297,10 +306,7 @@ fn cruising_keeps_the_answers() {
                         ..SceneParams::default()
                     }
                     .with_mu(mu);
-                    let mut params = DynamicsParams::default();
-                    params.integrator.method = crate::dynamics::Method::Nonsmooth;
-                    params.drive.mode = drive;
-                    params.drive.omega_deg_s = omega;
+                    let params = nonsmooth_params(drive, omega);
                     let plain = run_with(&scene, &params, None, false);
                     let fast = run_with(&scene, &params, None, true);
                     let (kind, x) = end_x(&plain.end);
@@ -371,6 +377,33 @@ fn cruising_keeps_the_answers() {
         worst_cost[1],
     );
     assert!(steps_cruising < steps);
+}
+
+/// A disc that only slides (its rotation locked) never rolls: the ground holding it leaves a
+/// velocity of round-off size, which the tally must not count as a roll (`solve` would say
+/// "the disc rolled 1 steps" of a disc that cannot turn, coming to rest).
+#[test]
+fn a_sliding_disc_never_rolls() {
+    let mut rolled = Vec::new();
+    for drive in [Drive::Motion, Drive::Force] {
+        for mu in [0.1, 0.2, 0.3, 0.45, 0.6, 0.8] {
+            for force_n in [20.0, 200.0, 2000.0] {
+                for omega in [0.5, 30.0, 900.0] {
+                    let scene = SceneParams {
+                        force_n,
+                        ..SceneParams::default()
+                    }
+                    .with_mu(mu);
+                    let params = nonsmooth_params(drive, omega);
+                    let run = run(&scene, &params, None);
+                    if run.tally.rolling_steps > 0 {
+                        rolled.push(format!("{drive}, mu {mu}, {force_n} N, {omega} deg/s"));
+                    }
+                }
+            }
+        }
+    }
+    assert!(rolled.is_empty(), "rolled: {rolled:?}");
 }
 
 /// The motion drive's run at the defaults with `mu` at both contacts and the nonsmooth step
