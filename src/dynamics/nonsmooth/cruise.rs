@@ -44,8 +44,8 @@
 //! friction and push the catch-up stalls the palm after every long cruise) would otherwise walk
 //! back and forth. With each cruise's next step solved first, a cell of the design map took
 //! 562 step problems with the force drive; with cruises on trial, 391 (and a margin of one
-//! cruise to the drive's limit, [`LIMIT_CRUISES`]; `cargo bench --bench maps -- goals`), with
-//! the same answers to round-off.
+//! cruise to the drive's limit, [`LIMIT_CRUISES`]), with the same answers to round-off; with
+//! the longer waits after refusals too, 382 (`cargo bench --bench maps -- goals`).
 //!
 //! Measured by `cruising_keeps_the_answers` (tests of the nonsmooth module): over mu 0.1-0.8,
 //! F 20-2000 N, both drives, palm speeds of 30 and 900 deg/s and a palm the disc leaves, every
