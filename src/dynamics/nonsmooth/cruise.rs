@@ -104,13 +104,6 @@ struct Level {
     steps: u32,
 }
 
-impl Level {
-    /// The run's steps to wait after a refusal that follows `refused` others in a row.
-    fn wait(&self, refused: u32) -> u32 {
-        self.steps << refused.min(LONGEST_WAIT.ilog2())
-    }
-}
-
 /// What cruising remembers of the run's last steps: small, so that a cruise can be taken back.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Pace {
@@ -127,6 +120,15 @@ pub(super) struct Pace {
     /// Whether a cruise's next step is checked before the cruise is kept (with a limit on the
     /// drive, once a cruise was taken back).
     probes: bool,
+}
+
+impl Pace {
+    /// Refuses the `j`-th length, of `steps` run steps: it waits that long, twice as long after
+    /// each refusal in a row, up to [`LONGEST_WAIT`] times.
+    fn refuse(&mut self, j: usize, steps: u32) {
+        self.waits[j] = steps << self.refusals[j].min(LONGEST_WAIT.ilog2());
+        self.refusals[j] += 1;
+    }
 }
 
 /// A cruise kept: where the run goes on from, and what it reports of it.
@@ -276,14 +278,12 @@ impl Cruise {
                 continue;
             }
             if let Some(mut kept) = self.accept(&level, (q, v, theta), modes, push_n, tries) {
-                kept.refused.waits[j] = level.wait(self.pace.refusals[j]);
-                kept.refused.refusals[j] += 1;
+                kept.refused.refuse(j, level.steps);
                 self.pace.refusals[j] = 0;
                 self.pass(level.steps, level.stepper.dt);
                 return Some(kept);
             }
-            self.pace.waits[j] = level.wait(self.pace.refusals[j]);
-            self.pace.refusals[j] += 1;
+            self.pace.refuse(j, level.steps);
         }
         None
     }
