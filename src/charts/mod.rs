@@ -81,6 +81,7 @@ pub(crate) mod xy;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use crate::atomic::Content;
 use crate::error::{Error, Result};
 pub(crate) use crate::figures::contours::{grid_lines, grid_polygons};
 use axes::DrawResult;
@@ -211,18 +212,18 @@ impl Chart {
 
 /// Computes and draws `scene` into the requested formats.
 pub fn render(scene: &Scene, formats: Formats) -> Result<Rendered> {
-    render_with(scene, formats, &|_| Ok(()))
+    render_with(scene, formats, &|_, _| Ok(()))
 }
 
-/// [`render`], with `cells_to` called on a map's cells while the pictures are drawn: a caller
-/// that writes files writes the cells CSV (megabytes, the longest file) there, beside the
-/// drawing instead of after it (`cargo bench --bench render` times `render fig3`). An error of
-/// the drawing comes before one of `cells_to`.
-pub(crate) fn render_with(
-    scene: &Scene,
-    formats: Formats,
-    cells_to: &(dyn Fn(&CellsCsv) -> Result<()> + Sync),
-) -> Result<Rendered> {
+/// Takes each file of a scene as soon as it is made: its extension and its content.
+pub(crate) type Made<'a> = dyn Fn(&'static str, Content) -> Result<()> + Sync + 'a;
+
+/// [`render`], with `made` called on each file as it is made, from the thread that made it: a
+/// caller that writes files writes each there (and its sync starts), beside the rest of the
+/// drawing instead of after it (`cargo bench --bench render` times `render fig3`). A map's
+/// cells CSV (megabytes, the longest file) is written into the file as it is made; the PDF,
+/// made from the SVG last, is not passed. An error of the drawing comes before one of `made`.
+pub(crate) fn render_with(scene: &Scene, formats: Formats, made: &Made) -> Result<Rendered> {
     style::init_fonts();
     let chart = std::sync::Arc::new(Chart::of_scene(scene)?);
     let cells = chart.cells().is_some().then(|| CellsCsv(chart.clone()));
@@ -232,44 +233,57 @@ pub(crate) fn render_with(
         message: m,
     };
     let scale = scene.size.scale;
+    // A picture, and whether `made` took it: the drawing's error first.
+    type Drawn = (Result<Option<(Vec<u8>, Vec<axes::PlotFrame>)>>, Result<()>);
+    let hand_over = |ext, picture: &Result<Option<(Vec<u8>, _)>>, write: bool| match picture {
+        Ok(Some((bytes, _))) if write => made(ext, Content::Bytes(bytes)),
+        _ => Ok(()),
+    };
     // The data is built beside the pictures, not after them. The PNG (drawing, palette,
-    // filters, deflate) is the longest job: it starts first, on this thread, while the SVG,
-    // the data file and the cells CSV follow one another on a second. (Callgrind of `render
-    // fig3`: the SVG then the PNG on one thread were 123 M instructions, the data file and
-    // the CSV on the other 85 M; now 92 M and 74 M.)
-    let (png, (svg, (data, cells_written))) = rayon::join(
-        || -> Result<Option<(Vec<u8>, Vec<axes::PlotFrame>)>> {
+    // filters, deflate) is the longest job: it starts first, on this thread. The cells CSV
+    // (megabytes) comes first on a second, so that its sync runs while the SVG and the data
+    // file are made. (`render fig3`: the SVG, the data file, then the CSV and its sync made
+    // the second thread finish 2-3 ms after the PNG.)
+    let ((png, png_made), (cells_made, ((svg, svg_made), (data, data_made)))) = rayon::join(
+        || -> Drawn {
             if !formats.png() {
-                return Ok(None);
+                return (Ok(None), Ok(()));
             }
             let (bytes, frames) = axes::record_frames(|| {
                 output::png(w, h, scale, scene.style, |root| {
                     chart.draw(root).map_err(|e| e.to_string())
                 })
             });
-            Ok(Some((bytes.map_err(draw_err)?, frames)))
+            let png = bytes.map(|b| Some((b, frames))).map_err(draw_err);
+            let png_made = hand_over("png", &png, true);
+            (png, png_made)
         },
         || {
-            rayon::join(
-                || -> Result<Option<(Vec<u8>, Vec<axes::PlotFrame>)>> {
+            let cells_made = cells
+                .as_ref()
+                .map_or(Ok(()), |c| made(CellsCsv::EXTENSION, Content::Writer(c)));
+            let rest = rayon::join(
+                || -> Drawn {
                     // A PDF is made from the SVG drawing.
                     if !formats.svg() && !formats.pdf() {
-                        return Ok(None);
+                        return (Ok(None), Ok(()));
                     }
                     let (bytes, frames) = axes::record_frames(|| {
                         output::svg(w, h, scale, scene.style, |root| {
                             chart.draw(root).map_err(|e| e.to_string())
                         })
                     });
-                    Ok(Some((bytes.map_err(draw_err)?, frames)))
+                    let svg = bytes.map(|b| Some((b, frames))).map_err(draw_err);
+                    let svg_made = hand_over("svg", &svg, formats.svg());
+                    (svg, svg_made)
                 },
                 || {
-                    rayon::join(
-                        || chart.data_file(&scene.name, &scene.title),
-                        || cells.as_ref().map_or(Ok(()), cells_to),
-                    )
+                    let data = chart.data_file(&scene.name, &scene.title);
+                    let data_made = made(data.extension, Content::Bytes(&data.bytes));
+                    (data, data_made)
                 },
-            )
+            );
+            (cells_made, rest)
         },
     );
     let (svg, png) = (svg?, png?);
@@ -285,7 +299,9 @@ pub(crate) fn render_with(
     let read_off = chart
         .read_off(frames.unwrap_or_default())
         .map(|v| readoff::rounded(v).to_string());
-    cells_written?;
+    for m in [data_made, cells_made, svg_made, png_made] {
+        m?;
+    }
     Ok(Rendered {
         name: scene.name.clone(),
         svg: svg.map(|(b, _)| b),

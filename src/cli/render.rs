@@ -343,32 +343,21 @@ pub fn write_rendered(
             .chain(extra.iter().map(|(p, _)| p))
             .map(PathBuf::as_path),
     )?;
-    commit_rendered(set, &per_scene, extra, CellsStaged::No)?;
+    commit_rendered(set, &per_scene, extra)?;
     Ok(paths_per_scene(&per_scene))
 }
 
-/// Whether the cells CSVs of a set were staged while their maps were drawn
-/// ([`render_scenes`] with a set).
-#[derive(Clone, Copy, PartialEq)]
-enum CellsStaged {
-    Yes,
-    No,
-}
-
-/// Stages the files of `per_scene` (but the cells CSVs when they are staged already) and
-/// `extra` in `set`, and commits it.
+/// Stages the files of `per_scene` (but those staged already, while their scene was drawn)
+/// and `extra` in `set`, and commits it.
 fn commit_rendered(
     set: Set,
     per_scene: &[Vec<(PathBuf, Content)>],
     extra: &[(PathBuf, &[u8])],
-    cells: CellsStaged,
 ) -> Result<()> {
-    // A writer's content is a map's cells CSV, the one file staged while drawing.
-    let staged_already = |c: &Content| cells == CellsStaged::Yes && matches!(c, Content::Writer(_));
     let outputs: Vec<Output> = per_scene
         .iter()
         .flatten()
-        .filter(|(_, content)| !staged_already(content))
+        .filter(|(path, _)| !set.has(path))
         .map(|(path, content)| Output {
             path,
             content: *content,
@@ -409,11 +398,11 @@ fn render_scenes(
         .into_par_iter()
         .map(|i| {
             let r = match staging {
-                Some((set, out)) => charts::render_with(&scenes[i], formats, &|cells| {
-                    let path = file_path(out, &scenes[i].name, charts::CellsCsv::EXTENSION);
+                Some((set, out)) => charts::render_with(&scenes[i], formats, &|ext, content| {
+                    let path = file_path(out, &scenes[i].name, ext);
                     set.stage(Output {
                         path: &path,
-                        content: Content::Writer(cells),
+                        content,
                     })
                 }),
                 None => charts::render(&scenes[i], formats),
@@ -496,7 +485,7 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
     }
     let per_scene: Vec<Vec<(PathBuf, Content)>> =
         rendered.iter().map(|r| files_of(&a.out, r)).collect();
-    commit_rendered(set, &per_scene, &extra, CellsStaged::Yes)?;
+    commit_rendered(set, &per_scene, &extra)?;
     let written = paths_per_scene(&per_scene);
     let mut text = String::new();
     for (scene, paths) in scenes.iter().zip(written) {
