@@ -205,6 +205,61 @@ fn a_failed_command_leaves_the_output_folder_as_it_found_it() {
     }
 }
 
+/// A render writes each picture as soon as it is drawn: one that goes to a FIFO is written
+/// through once, the same bytes as into a file, and not again with the rest of the set (a
+/// second write would wait for a reader forever).
+#[test]
+fn a_picture_into_a_fifo_is_written_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let (o, plain) = (dir.path().join("o"), dir.path().join("plain"));
+    std::fs::create_dir(&o).unwrap();
+    let fifo = o.join("fig3.svg");
+    mkfifo(&fifo);
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read(fifo).unwrap())
+    };
+    let render = |out: &str| {
+        Command::new(env!("CARGO_BIN_EXE_jamchart"))
+            .args([
+                "render",
+                "fig3",
+                "--out",
+                out,
+                "--scenes-dir",
+                &scenes_dir(),
+            ])
+            .current_dir(dir.path())
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap()
+    };
+    let mut child = render("o");
+    let t0 = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if t0.elapsed() > Duration::from_secs(60) {
+            kill_and_wait(&mut child, "KILL");
+            panic!("the render did not finish: a second write into the FIFO?");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    assert!(status.success());
+    let through = reader.join().unwrap();
+    assert!(render("plain").wait().unwrap().success());
+    assert_eq!(through, std::fs::read(plain.join("fig3.svg")).unwrap());
+    assert!(
+        std::fs::symlink_metadata(&fifo)
+            .unwrap()
+            .file_type()
+            .is_fifo()
+    );
+    assert!(o.join("fig3.png").is_file() && o.join("fig3.csv").is_file());
+}
+
 /// The temporary files of a render that is still writing, in `o`.
 fn temporaries(o: &Path) -> Vec<String> {
     names(o)

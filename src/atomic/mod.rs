@@ -6,7 +6,7 @@
 //!    a FIFO, terminal or /dev/null is written through, anything else is refused;
 //! 2. every regular file is written to a temporary file beside it, and synced (on a thread of
 //!    its own, so the next file is made while the disk catches up; step 4 waits for every sync);
-//! 3. the streams are written;
+//! 3. the streams are written (by a [`Set`], each as it is staged);
 //! 4. the temporary files are renamed over their final names, each old file kept aside (a hard
 //!    link) until all renames succeeded, and put back if one fails.
 //!
