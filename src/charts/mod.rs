@@ -243,7 +243,7 @@ pub(crate) fn render_with(scene: &Scene, formats: Formats, made: &Made) -> Resul
     // filters, deflate) is the longest job: it starts first, on this thread. The cells CSV
     // (megabytes) comes first on a second, so that its sync runs while the SVG and the data
     // file are made. (`render fig3`: the SVG, the data file, then the CSV and its sync made
-    // the second thread finish 2-3 ms after the PNG.)
+    // the second thread finish 2-4 ms after the PNG.)
     let ((png, png_made), (cells_made, ((svg, svg_made), (data, data_made)))) = rayon::join(
         || -> Drawn {
             if !formats.png() {
