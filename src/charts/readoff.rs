@@ -129,9 +129,7 @@ pub fn column<T: Serialize>(values: impl Iterator<Item = T>) -> Value {
 pub fn rounded(doc: Value) -> Value {
     match doc {
         Value::Number(n) => match n.as_f64() {
-            Some(v) if n.is_f64() && v.is_finite() => {
-                json!(format!("{v:.6e}").parse::<f64>().unwrap_or(v))
-            }
+            Some(v) if n.is_f64() && v.is_finite() => json!(crate::csv_out::significant(v)),
             _ => Value::Number(n),
         },
         Value::Array(a) => Value::Array(a.into_iter().map(rounded).collect()),

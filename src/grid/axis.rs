@@ -122,19 +122,35 @@ impl GridParam {
 
     /// `p` with this parameter set to `v` (an alias sets each of its keys; `push_ratio` sets
     /// force_n = v m g); [`GridParam::ThetaDeg`] leaves `p` unchanged.
-    pub fn apply(self, mut p: SceneParams, v: f64) -> SceneParams {
-        if self == GridParam::PushRatio {
-            p.force_n = v * p.weight_n();
-            return p;
-        }
+    pub fn apply(self, p: SceneParams, v: f64) -> SceneParams {
+        self.setter()(p, v)
+    }
+
+    /// [`GridParam::apply`] with the declaration and the fields it sets looked up once.
+    pub(crate) fn setter(self) -> impl Fn(SceneParams, f64) -> SceneParams + Sync {
+        let push_ratio = self == GridParam::PushRatio;
         let d = self.decl();
-        if d.sets.is_empty() {
-            p.set_real(d.key, v);
+        let keys = if d.sets.is_empty() {
+            &[d.key][..]
+        } else {
+            d.sets
+        };
+        let fields: Vec<_> = match push_ratio {
+            true => Vec::new(),
+            false => keys
+                .iter()
+                .filter_map(|k| SceneParams::real_setter(k))
+                .collect(),
+        };
+        move |mut p, v| {
+            if push_ratio {
+                p.force_n = v * p.weight_n();
+            }
+            for set in &fields {
+                set(&mut p, v);
+            }
+            p
         }
-        for k in d.sets {
-            p.set_real(k, v);
-        }
-        p
     }
 }
 
@@ -163,6 +179,10 @@ impl ParamSet for SceneParams {
 
     fn with(self, param: GridParam, value: f64) -> Self {
         param.apply(self, value)
+    }
+
+    fn setter(param: GridParam) -> impl Fn(Self, f64) -> Self + Sync {
+        param.setter()
     }
 
     fn validate(&self) -> Result<()> {
