@@ -15,6 +15,7 @@ use super::legend::{self, LegendEntry, Swatch};
 use super::picture::Picture;
 use super::style::{self, INK, LineKind, PAPER};
 use super::{grid_lines, grid_polygons, readoff};
+use crate::figures::contours::lines_at;
 use crate::figures::vlocator_capacity::{
     STANDARD_V_DEG, UNBOUNDED_OVER_W, VlocatorCapacityData, VlocatorCapacitySettings,
 };
@@ -69,9 +70,7 @@ impl Picture for VlocatorCapacity {
             .collect();
         let mut levels = s.levels_over_w.clone();
         levels.push(0.5 * UNBOUNDED_OVER_W);
-        let mut lines: Vec<(f64, Paths)> = b
-            .lines(&field, &levels)
-            .unwrap_or_default()
+        let mut lines: Vec<(f64, Paths)> = lines_at(&b, &field, &levels)
             .into_iter()
             .map(|l| (l.threshold(), grid_lines(&l.into_inner().0, xa, ya)))
             .collect();

@@ -9,7 +9,7 @@ use contour::ContourBuilder;
 use serde::{Deserialize, Serialize};
 
 use super::cells::{self, CellsTable, HasCells};
-use super::contours::{Traced, grid_lines_among};
+use super::contours::{Traced, grid_lines_among, lines_at};
 use super::models::{self, Models};
 use super::{At, DataFormat, Figure, FigureData, Input};
 use crate::csv_out::Column;
@@ -151,8 +151,7 @@ impl Figure for ContourMapSettings {
             .collect();
         // Finite values and levels cannot fail; nothing is traced if they ever did.
         let lines = |values: &[f64], levels: &[f64]| -> Vec<IsoLine> {
-            b.lines(values, levels)
-                .unwrap_or_default()
+            lines_at(&b, values, levels)
                 .into_iter()
                 .map(|l| {
                     let level = l.threshold();

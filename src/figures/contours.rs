@@ -53,6 +53,23 @@ pub fn axis_value(u: f64, scale: AxisScale) -> f64 {
     }
 }
 
+/// The `contour` crate's iso-lines of `values` at each of `levels`, in order, the levels traced
+/// in parallel: the crate passes over the whole grid for each level, one after another, and a
+/// level's lines do not depend on the others' (the universal chart's thirty levels were a third
+/// of `render universal`, on one core). Finite values and levels cannot fail; nothing is traced
+/// if they ever did.
+pub fn lines_at(
+    builder: &contour::ContourBuilder,
+    values: &[f64],
+    levels: &[f64],
+) -> Vec<contour::Line> {
+    use rayon::prelude::*;
+    levels
+        .par_iter()
+        .flat_map_iter(|&level| builder.lines(values, &[level]).unwrap_or_default())
+        .collect()
+}
+
 /// The exterior rings of contour polygons, mapped from the contour crate's grid coordinates to
 /// the axes' own coordinates (ln for log axes). The crate puts sample i at the centre of cell [i, i + 1].
 pub fn grid_polygons<P>(

@@ -21,7 +21,7 @@ use contour::ContourBuilder;
 use serde::{Deserialize, Serialize};
 
 use super::cells::{self, CellsTable, HasCells};
-use super::contours::{Traced, grid_lines};
+use super::contours::{Traced, grid_lines, lines_at};
 use super::models::Models;
 use super::{At, DataFormat, Figure, FigureData, Input};
 use crate::csv_out::Column;
@@ -180,10 +180,7 @@ impl Figure for UniversalSettings {
                 .take_while(|v| *v < hi)
                 .collect()
         };
-        // Finite values and levels cannot fail; nothing is drawn if they ever did.
-        let iso_lines = b
-            .lines(&field, &levels(self.theta_step_deg))
-            .unwrap_or_default()
+        let iso_lines = lines_at(&b, &field, &levels(self.theta_step_deg))
             .into_iter()
             .map(|l| IsoLine {
                 theta_jam_deg: l.threshold(),
