@@ -554,8 +554,8 @@ impl Serialize for Num {
 /// `v` rounded to [`SIGNIFICANT_DIGITS`] significant digits whatever its size, as parsing
 /// `format!("{v:.6e}")` gives it (`plain` keeps every whole digit above 10^7, this does not).
 /// Below 10^7 the digits are [`plain`]'s, so their value comes from [`Rounded`] without any
-/// text (an exact formatting and a parse was 15 % of `render fig7c`, whose gallery read-off
-/// holds its 20,000 cells); above, and where [`Rounded`] declines, the text is made and
+/// text (an exact formatting and a parse per number of the gallery's read-offs was 3 % of
+/// `render fig7c`'s instructions); above, and where [`Rounded`] declines, the text is made and
 /// parsed. Not finite or 0: `v` itself.
 pub fn significant(v: f64) -> f64 {
     if !v.is_finite() || v == 0.0 {

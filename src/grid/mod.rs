@@ -267,7 +267,7 @@ pub fn statics_point(p: &SceneParams) -> Result<JamPoint> {
 /// mm) under the port's rules, as [`models::solve`] reports it in the closed form's detail: a
 /// scene outside the closed form (`models::outside`) has none. A test checks it against that
 /// detail. The scene is a cell of a grid whose corners were checked ([`Grid::validate`]):
-/// checking every cell's scene again was a sixth of `render fig7c`.
+/// checking every cell's scene again was 9 % of `render fig7c`'s instructions.
 pub(crate) fn rigid_point(p: &SceneParams) -> Option<(f64, Option<f64>)> {
     // What `models::solve` reports as the closed form's detail, without solving for the jam.
     let outside = models::outside(ModelKind::Statics, p).is_some();
