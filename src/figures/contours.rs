@@ -56,8 +56,8 @@ pub fn axis_value(u: f64, scale: AxisScale) -> f64 {
 /// The `contour` crate's iso-lines of `values` at each of `levels`, in order, the levels traced
 /// in parallel: the crate passes over the whole grid for each level, one after another, and a
 /// level's lines do not depend on the others' (the universal chart's iso-lines were a third of
-/// `render universal`'s instructions, on one core). Finite values and levels cannot fail; nothing is traced
-/// if they ever did.
+/// `render universal`'s instructions, on one core). Finite values and levels cannot fail;
+/// nothing is traced if they ever did.
 pub fn lines_at(
     builder: &contour::ContourBuilder,
     values: &[f64],

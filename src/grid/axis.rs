@@ -8,6 +8,9 @@ use crate::error::{Error, Result};
 use crate::scene::SceneParams;
 use crate::settings::{self, Check, Decl, Kind};
 
+/// A scene field's setter, [`SceneParams::real_setter`].
+pub(crate) type Setter = fn(&mut SceneParams, f64) -> bool;
+
 /// A scene parameter a grid axis can vary: any number of `[scene]`, the alias `mu` (both
 /// frictions) or the palm angle `theta_deg`, named by its TOML key. Its symbol, unit and axis
 /// label come from its declaration (`crate::settings`), so a new scene parameter is an axis
@@ -126,22 +129,23 @@ impl GridParam {
         self.setter()(p, v)
     }
 
+    /// The scene fields this parameter sets (an alias's keys, or its own key) and their
+    /// setters: none for `push_ratio` (it sets force_n from the weight) or `theta_deg`, which
+    /// are no fields.
+    pub(crate) fn fields(self) -> (&'static [&'static str], Vec<Setter>) {
+        let d = self.decl();
+        let keys = match d.sets {
+            [] => std::slice::from_ref(&d.key),
+            keys => keys,
+        };
+        let setters = keys.iter().filter_map(|k| SceneParams::real_setter(k));
+        (keys, setters.collect())
+    }
+
     /// [`GridParam::apply`] with the declaration and the fields it sets looked up once.
     pub(crate) fn setter(self) -> impl Fn(SceneParams, f64) -> SceneParams + Sync {
         let push_ratio = self == GridParam::PushRatio;
-        let d = self.decl();
-        let keys = if d.sets.is_empty() {
-            &[d.key][..]
-        } else {
-            d.sets
-        };
-        let fields: Vec<_> = match push_ratio {
-            true => Vec::new(),
-            false => keys
-                .iter()
-                .filter_map(|k| SceneParams::real_setter(k))
-                .collect(),
-        };
+        let (_, fields) = self.fields();
         move |mut p, v| {
             if push_ratio {
                 p.force_n = v * p.weight_n();

@@ -20,6 +20,7 @@ mod margin;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+pub(crate) use axis::Setter;
 pub use axis::{AxisScale, GridAxis, GridParam};
 pub use locator::{CapacityCells, LocatorParam, capacity_map};
 

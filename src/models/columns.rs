@@ -14,7 +14,7 @@ use rayon::prelude::*;
 
 use super::{ModelSpec, outside, solve, solve_column};
 use crate::error::{Error, Result};
-use crate::grid::GridParam;
+use crate::grid::{GridParam, Setter};
 use crate::scene::{JamStatus, SceneParams};
 use crate::statics;
 
@@ -60,13 +60,8 @@ impl Pushes<'_> {
                 let set = match *param {
                     GridParam::PushRatio => Sets::PushRatio,
                     p => {
-                        let d = p.decl();
-                        let keys = match d.sets {
-                            [] => std::slice::from_ref(&d.key),
-                            keys => keys,
-                        };
-                        let setters = keys.iter().filter_map(|k| SceneParams::real_setter(k));
-                        Sets::Fields(keys, setters.collect())
+                        let (keys, setters) = p.fields();
+                        Sets::Fields(keys, setters)
                     }
                 };
                 (set, *values)
@@ -96,9 +91,6 @@ impl Pushes<'_> {
         Ok(())
     }
 }
-
-/// A field's setter, [`SceneParams::real_setter`].
-type Setter = fn(&mut SceneParams, f64) -> bool;
 
 /// What a column sets in a push's scene.
 #[derive(Debug, Clone)]
