@@ -145,7 +145,12 @@ impl GridParam {
     /// [`GridParam::apply`] with the declaration and the fields it sets looked up once.
     pub(crate) fn setter(self) -> impl Fn(SceneParams, f64) -> SceneParams + Sync {
         let push_ratio = self == GridParam::PushRatio;
-        let (_, fields) = self.fields();
+        // No field to look up for the push ratio: a column of them sets each push's scene
+        // through here (`models::columns`).
+        let fields = match push_ratio {
+            true => Vec::new(),
+            false => self.fields().1,
+        };
         move |mut p, v| {
             if push_ratio {
                 p.force_n = v * p.weight_n();
