@@ -168,6 +168,7 @@ pub mod models;
 pub mod statics;
 
 // The other questions of a scene, and the charts.
+pub mod ask;
 pub mod charts;
 pub mod design;
 pub mod locator;

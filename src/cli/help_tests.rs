@@ -109,7 +109,13 @@ fn check_vlocator_geometry(long: &str, value: &str) -> Result<(), String> {
     let Command::Vlocator(a) = cli.command else {
         return Err("not vlocator".into());
     };
-    let (p, _) = a.params_uncertain().map_err(|e| e.to_string())?;
+    let question = crate::ask::VlocatorQuestion::new(
+        a.included_angle,
+        a.flank_angles.as_deref(),
+        &a.locator.overrides(),
+    )
+    .map_err(|e| e.to_string())?;
+    let p = question.params;
     if p == LocatorParams::default() {
         Ok(())
     } else {

@@ -179,8 +179,10 @@ use optimum::{balanced_rho, rho_lock};
 pub use params::{Flank, LocatorParams, Rotation};
 #[cfg(test)]
 use reference::{ReferenceCapacity, capacity_clarabel};
-pub(crate) use robust::{BoxVerdict, verdict_over_box};
-pub use robust::{DroppedLoad, Opening, RobustAngle, RobustBox, RobustDesign, robust_design};
+pub(crate) use robust::verdict_over_box;
+pub use robust::{
+    BoxVerdict, DroppedLoad, Opening, RobustAngle, RobustBox, RobustDesign, robust_design,
+};
 pub(crate) use robust::{SCAN_STEP_DEG, lock_angle_deg};
 pub use solve::{FlankForce, LocatorSolution, Verdict, solve};
 #[cfg(test)]

@@ -304,7 +304,7 @@ impl Sector {
 /// What one V does over a whole box.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "status", rename_all = "snake_case")]
-pub(crate) enum BoxVerdict {
+pub enum BoxVerdict {
     /// Holds every load at every friction and never locks.
     Works,
     /// Self-locks at the box's top frictions.

@@ -364,6 +364,15 @@ fn intro(function: &str) -> &'static str {
     }
 }
 
+/// The names of `function`'s keywords (none for a function without declared keywords).
+pub(super) fn keyword_names(function: &str) -> Vec<&'static str> {
+    keywords_of(function)
+        .unwrap_or_default()
+        .into_iter()
+        .map(|k| k.name)
+        .collect()
+}
+
 /// The keywords of `function` for its Python signature and stubs: (name, default as Python
 /// text or None where it has none, type).
 #[pyfunction]

@@ -34,6 +34,8 @@ fn jamchart_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<answers::BoxAnswer>()?;
     m.add_class::<keywords::Distribution>()?;
     m.add_class::<charts::Chart>()?;
+    m.add_class::<reports::DesignAnswer>()?;
+    m.add_class::<reports::VlocatorAnswer>()?;
     m.add_function(wrap_pyfunction!(solve::solve, m)?)?;
     m.add_function(wrap_pyfunction!(keywords::normal, m)?)?;
     m.add_function(wrap_pyfunction!(keywords::uniform, m)?)?;

@@ -288,7 +288,7 @@ pub fn monte_carlo(
 
 /// What a Monte Carlo reports as it goes, for a progress bar.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Progress {
+pub enum Progress {
     /// Accepted, before the first draw: how many samples, and their estimated CPU time in s.
     Started {
         /// The samples to draw.

@@ -50,6 +50,7 @@ class Solution:
     def inputs(self) -> Dict[str, Any]: ...
     @property
     def record(self) -> Dict[str, Any]: ...
+    def to_dict(self) -> Dict[str, Any]: ...
 
 class Solutions:
     """Many pushes' answers, shaped like the broadcast inputs."""
@@ -86,6 +87,22 @@ class BoxAnswer:
     def quantiles(self) -> List[Tuple[float, float]]: ...
     @property
     def record(self) -> Dict[str, Any]: ...
+    def to_dict(self) -> Dict[str, Any]: ...
+
+class _Report:
+    """An answer whose JSON document's keys are its attributes."""
+    @property
+    def headline(self) -> str: ...
+    @property
+    def report(self) -> str: ...
+    def to_dict(self) -> Dict[str, Any]: ...
+    def __getattr__(self, name: str) -> Any: ...
+
+class DesignAnswer(_Report):
+    """jamchart.design's answer; each key of `jamchart design --format json` is an attribute."""
+
+class VlocatorAnswer(_Report):
+    """jamchart.vlocator's answer; each key of `jamchart vlocator --format json` is an attribute."""
 
 class Chart:
     """A drawn design chart."""
@@ -123,7 +140,7 @@ def stub(K):
     for rep, ret, ign in over:
         body.append(f"@overload\ndef solve({ign}\n    *,\n{params(K, 'solve', rep)}\n) -> {ret}: ...")
     body.append(f"def render(\n    scene: Union[str, \"os.PathLike[str]\"],\n    *,\n{params(K, 'render', {})}\n) -> Chart: ...")
-    body.append(f"def design(\n    *,\n{params(K, 'design', {})}\n) -> Dict[str, Any]: ...")
-    body.append(f"def vlocator(\n    *,\n{params(K, 'vlocator', {})}\n) -> Dict[str, Any]: ...")
+    body.append(f"def design(\n    *,\n{params(K, 'design', {})}\n) -> DesignAnswer: ...")
+    body.append(f"def vlocator(\n    *,\n{params(K, 'vlocator', {})}\n) -> VlocatorAnswer: ...")
     text = HEAD.replace("from typing import", "import os\nfrom typing import") + "\n" + "\n\n".join(body) + "\n"
     return text

@@ -30,9 +30,11 @@ from ._jamchart import (
     STATUSES,
     BoxAnswer,
     Chart,
+    DesignAnswer,
     Distribution,
     Solution,
     Solutions,
+    VlocatorAnswer,
     __version__,
     lognormal,
     normal,
@@ -44,10 +46,12 @@ __all__ = [
     "BoxAnswer",
     "CHART_FORMAT",
     "Chart",
+    "DesignAnswer",
     "Distribution",
     "STATUSES",
     "Solution",
     "Solutions",
+    "VlocatorAnswer",
     "design",
     "keywords",
     "lognormal",
@@ -68,14 +72,14 @@ def render(scene: str, **keywords: Any) -> Chart:
     return _jamchart.render(scene, keywords)
 
 
-def design(**keywords: Any) -> Dict[str, Any]:
+def design(**keywords: Any) -> DesignAnswer:
     if "x_target_mm" not in keywords:
         raise TypeError("design() missing required keyword argument: 'x_target_mm'")
-    return _jamchart.design(keywords)  # type: ignore[no-any-return]
+    return _jamchart.design(keywords)
 
 
-def vlocator(**keywords: Any) -> Dict[str, Any]:
-    return _jamchart.vlocator(keywords)  # type: ignore[no-any-return]
+def vlocator(**keywords: Any) -> VlocatorAnswer:
+    return _jamchart.vlocator(keywords)
 
 
 def keywords(function: str = "solve") -> List[str]:
