@@ -4,7 +4,7 @@
 //! The value becomes the scene's (as `--set` would make it) and the chart draws its read-off
 //! there: the 1-2-3 lines of a jam map, universal or contour map, the lines to the axes of a
 //! sweep, with the closed form's theta_jam and x_jam printed. A key is any scene parameter an
-//! axis can vary ([`GridParam::all`], `theta_deg` aside), so `push_ratio` (F / (m g), which
+//! axis can vary ([`Param::all`], `theta_deg` aside), so `push_ratio` (F / (m g), which
 //! sets force_n from the scene's mass and gravity) is one too.
 
 use std::str::FromStr;
@@ -12,20 +12,20 @@ use std::str::FromStr;
 use super::Words;
 use crate::charts::Scene;
 use crate::error::{Error, Result};
-use crate::grid::GridParam;
+use crate::scene::Param;
 
 /// One read-off, `KEY=VALUE` as typed: a scene parameter and the user's value of it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ReadOff {
-    param: GridParam,
+    param: Param,
     value: f64,
     typed: String,
 }
 
 /// The parameters `--read-off` takes: every axis parameter but the palm angle (that is what a
 /// chart reads off, not a property of the part).
-fn read_off_params() -> impl Iterator<Item = GridParam> {
-    GridParam::all().filter(|p| *p != GridParam::ThetaDeg)
+fn read_off_params() -> impl Iterator<Item = Param> {
+    Param::all().filter(|p| *p != Param::ThetaDeg)
 }
 
 impl FromStr for ReadOff {
@@ -34,15 +34,15 @@ impl FromStr for ReadOff {
     fn from_str(s: &str) -> std::result::Result<Self, String> {
         let names = || {
             read_off_params()
-                .map(GridParam::as_str)
+                .map(Param::as_str)
                 .collect::<Vec<_>>()
                 .join(", ")
         };
         let (key, raw) = s
             .split_once('=')
             .ok_or_else(|| format!("'{s}' is not KEY=VALUE (e.g. mu=0.27)"))?;
-        let param = GridParam::named(key.trim())
-            .filter(|p| *p != GridParam::ThetaDeg)
+        let param = Param::named(key.trim())
+            .filter(|p| *p != Param::ThetaDeg)
             .ok_or_else(|| format!("'{s}': {} is not one of {}", key.trim(), names()))?;
         let value = crate::settings::decl::parse_f64(raw).map_err(|e| format!("'{s}': {e}"))?;
         if let Some(why) = param.decl().check.refuse(value) {

@@ -416,7 +416,7 @@ fn models_named(name: &str) -> Result<Vec<ModelKind>> {
 /// Sets the push from `ratio` = F / (m g), refused with an uncertain mass or push (the ratio
 /// is of one weight).
 fn push_by_ratio(config: &mut Config, uncertain: &UncertainSet, ratio: f64) -> Result<()> {
-    let decl = crate::grid::GridParam::PushRatio.decl();
+    let decl = crate::scene::Param::PushRatio.decl();
     decl.check_real(ratio)?;
     if let Some(i) = uncertain.inputs.iter().find(|i| {
         i.keys
@@ -433,7 +433,7 @@ fn push_by_ratio(config: &mut Config, uncertain: &UncertainSet, ratio: f64) -> R
             ),
         ));
     }
-    config.scene = crate::grid::GridParam::PushRatio.apply(config.scene, ratio);
+    config.scene = crate::scene::Param::PushRatio.apply(config.scene, ratio);
     config.scene.validate()
 }
 

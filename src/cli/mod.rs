@@ -9,7 +9,7 @@ mod gallery;
 mod help_tests;
 mod manifest;
 mod progress;
-pub mod render;
+pub(crate) mod render;
 mod shell;
 mod solve;
 mod stability;

@@ -122,7 +122,7 @@ impl RenderArgs {
     fn formats(&self) -> Result<Formats> {
         match (self.format, self.paper) {
             (RenderFormat::Pdf, paper) => Ok(Formats::Pdf(paper)),
-            (format, None) => Ok(format.into()),
+            (format, None) => Ok(format.formats()),
             (format, Some(paper)) => Err(Error::invalid(
                 "--paper",
                 paper,
@@ -142,11 +142,10 @@ impl RenderFormat {
             .map(|v| v.get_name().to_string())
             .unwrap_or_default()
     }
-}
 
-impl From<RenderFormat> for Formats {
-    fn from(f: RenderFormat) -> Self {
-        match f {
+    /// The pictures it asks for.
+    pub(crate) fn formats(self) -> Formats {
+        match self {
             RenderFormat::Svg => Formats::Svg,
             RenderFormat::Png => Formats::Png,
             RenderFormat::Both => Formats::Both,

@@ -309,19 +309,9 @@ impl BoxAnswer {
         self.answer.text(Words::Keys)
     }
 
+    /// The one-line verdict: the interval of each model, and the probabilities asked.
     fn __repr__(&self) -> String {
-        let r = &self.record().range;
-        let span = |v: Option<[f64; 2]>, unit: &str| {
-            v.map_or("no jam".to_string(), |[a, b]| {
-                format!("{a:.3} to {b:.3} {unit}")
-            })
-        };
-        format!(
-            "jamchart.BoxAnswer({}: theta_jam {}, x_jam {})",
-            self.record().model,
-            span(r.theta_jam_deg, "deg"),
-            span(r.x_jam_mm, "mm")
-        )
+        format!("jamchart.BoxAnswer({})", self.answer.headline())
     }
 }
 

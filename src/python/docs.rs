@@ -4,7 +4,7 @@
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
-use crate::grid::GridParam;
+use crate::scene::Param;
 use crate::settings::{self, Decl, Kind};
 
 /// The functions whose keywords are declared settings.
@@ -110,8 +110,8 @@ const UNCERTAIN_VALUES: &str = "float, array_like, (low, high) or Distribution";
 
 /// The scene's parameters as keywords (`mu` ... `palm_offset_mm`, `push_ratio`).
 fn scene_keywords(arrays: bool) -> Vec<Keyword> {
-    GridParam::all()
-        .filter(|p| *p != GridParam::ThetaDeg)
+    Param::all()
+        .filter(|p| *p != Param::ThetaDeg)
         .map(|p| {
             let d = p.decl();
             let values = match (arrays, d.uncertain) {

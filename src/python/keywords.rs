@@ -9,7 +9,7 @@ use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyString, PyTuple};
 
 use crate::ask::Keywords;
 use crate::error::Error;
-use crate::grid::GridParam;
+use crate::scene::Param;
 use crate::settings::{self, Decl};
 use crate::uncertain::Uncertain;
 
@@ -108,13 +108,13 @@ pub(super) struct Given<'py> {
     /// Every keyword but the arrays, as the library reads them.
     pub keywords: Keywords,
     /// The scene's parameters given as arrays, as float64.
-    pub arrays: Vec<(GridParam, Bound<'py, PyArrayDyn<f64>>)>,
+    pub arrays: Vec<(Param, Bound<'py, PyArrayDyn<f64>>)>,
 }
 
 /// The scene parameters a keyword names: every parameter a grid axis can vary but the palm
 /// angle (the state of a push, not a parameter of its scene).
-pub(super) fn scene_param(key: &str) -> Option<GridParam> {
-    GridParam::all().find(|p| p.as_str() == key && *p != GridParam::ThetaDeg)
+pub(super) fn scene_param(key: &str) -> Option<Param> {
+    Param::all().find(|p| p.as_str() == key && *p != Param::ThetaDeg)
 }
 
 /// Reads `kwargs` of `function`: a keyword left at None is left out (it is the signature's

@@ -16,9 +16,9 @@ use pyo3::types::PyDict;
 use super::answers::{BoxAnswer, Solution, Solutions, shape_text};
 use super::keywords::{self, error, refused};
 use crate::ask::{SolveAnswer, SolveQuestion, Words};
-use crate::grid::GridParam;
 use crate::models::ModelSpec;
 use crate::models::columns::{self, Answers, Finished, Pushes};
+use crate::scene::Param;
 
 /// How often a long map looks for Ctrl-C: an interrupt is seen within this and one chunk of
 /// work per thread.
@@ -36,7 +36,7 @@ pub(super) fn solve<'py>(
     keywords: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let given = keywords::given(py, "solve", keywords, true, &["before_mm", "quantiles"])?;
-    let scalars: Vec<(GridParam, f64)> = given
+    let scalars: Vec<(Param, f64)> = given
         .keywords
         .0
         .iter()
@@ -82,8 +82,8 @@ pub(super) fn solve<'py>(
     let spec = model.with(&question.config.min_norm, &question.config.dynamics);
     // A number whose parameter applies after an array's (a key an array's alias sets as well,
     // push_ratio after the mass) is applied per push, after the array.
-    let order = |p: &GridParam| GridParam::all().position(|q| q == *p);
-    let late: Vec<(GridParam, f64)> = scalars
+    let order = |p: &Param| Param::all().position(|q| q == *p);
+    let late: Vec<(Param, f64)> = scalars
         .into_iter()
         .filter(|(p, _)| given.arrays.iter().any(|(a, _)| order(a) < order(p)))
         .collect();
@@ -96,14 +96,14 @@ pub(super) fn solve<'py>(
 fn solve_arrays<'py>(
     py: Python<'py>,
     question: &SolveQuestion,
-    arrays: &[(GridParam, Bound<'py, PyArrayDyn<f64>>)],
-    late: &[(GridParam, f64)],
+    arrays: &[(Param, Bound<'py, PyArrayDyn<f64>>)],
+    late: &[(Param, f64)],
     spec: &ModelSpec,
 ) -> PyResult<Solutions> {
     let shape = broadcast_shape(arrays)?;
     let numpy = py.import("numpy")?;
     // Each array as it is where it has the answers' shape (no copy), broadcast where not.
-    let mut held: Vec<(GridParam, PyReadonlyArrayDyn<'py, f64>)> = Vec::new();
+    let mut held: Vec<(Param, PyReadonlyArrayDyn<'py, f64>)> = Vec::new();
     for (param, a) in arrays {
         let column = match a.len() == 1 || (a.shape() == shape.as_slice() && a.is_c_contiguous()) {
             true => numpy.call_method1("ascontiguousarray", (a,))?,
@@ -114,8 +114,8 @@ fn solve_arrays<'py>(
         };
         held.push((*param, column.cast_into::<PyArrayDyn<f64>>()?.readonly()));
     }
-    let late: Vec<(GridParam, [f64; 1])> = late.iter().map(|(p, v)| (*p, [*v])).collect();
-    let mut columns: Vec<(GridParam, &[f64])> = Vec::new();
+    let late: Vec<(Param, [f64; 1])> = late.iter().map(|(p, v)| (*p, [*v])).collect();
+    let mut columns: Vec<(Param, &[f64])> = Vec::new();
     for (param, a) in &held {
         let values = a
             .as_slice()
@@ -216,7 +216,7 @@ fn answer_watched(py: Python<'_>, spec: &ModelSpec, pushes: &Pushes, out: Answer
 }
 
 /// The shape the arrays broadcast to, by numpy's rules; the error names two that do not.
-fn broadcast_shape(arrays: &[(GridParam, Bound<'_, PyArrayDyn<f64>>)]) -> PyResult<Vec<usize>> {
+fn broadcast_shape(arrays: &[(Param, Bound<'_, PyArrayDyn<f64>>)]) -> PyResult<Vec<usize>> {
     let ndim = arrays.iter().map(|(_, a)| a.ndim()).max().unwrap_or(0);
     let mut shape = vec![1usize; ndim];
     let mut from: Vec<Option<usize>> = vec![None; ndim];

@@ -6,6 +6,11 @@
 //! whose face lies h off the hinge line (its thickness) puts the disc at
 //! x = r cot(theta/2) + h / sin(theta) ([`disc_position_mm`]).
 
+mod param;
+
+pub use param::Param;
+pub(crate) use param::Setter;
+
 use crate::error::{Error, Result};
 use crate::settings::decl::{Check, Decl, Declared};
 
