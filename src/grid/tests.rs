@@ -135,7 +135,7 @@ fn margin_without_theta_axis_is_refused() {
     assert!(msg.contains("mu_ground = -0.1"), "{msg}");
 }
 
-/// The hoisted kernel of `req` against `statics::margin_n` cell by cell:
+/// The hoisted kernel of `req` against `statics::reference::margin_n` cell by cell:
 /// |diff| <= 1e-12 (|F| + m g), worst case reported.
 fn assert_margin_matches_statics(req: &GridRequest) {
     let g = evaluate(req, st).unwrap();
@@ -146,7 +146,7 @@ fn assert_margin_matches_statics(req: &GridRequest) {
         for (ix, &xv) in g.x_values.iter().enumerate() {
             let p = req.grid().cell(xv, Some(yv));
             let t = if theta_on_x { xv } else { yv };
-            let d = (m[g.index(ix, iy)] - statics::margin_n(&p, t.to_radians())).abs();
+            let d = (m[g.index(ix, iy)] - statics::reference::margin_n(&p, t.to_radians())).abs();
             if d > worst.0 {
                 worst = (d, xv, yv);
             }

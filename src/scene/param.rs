@@ -70,6 +70,10 @@ impl Param {
     pub const PalmLengthMm: Param = Param {
         key: "palm_length_mm",
     };
+    /// Palm angle in deg where the push starts.
+    pub const StartAngleDeg: Param = Param {
+        key: "start_angle_deg",
+    };
     /// Offset h of the palm's face from the hinge line in mm.
     pub const PalmOffsetMm: Param = Param {
         key: "palm_offset_mm",
@@ -107,7 +111,7 @@ impl Param {
     }
 
     /// The snake_case name, as in TOML and in CSV headers.
-    pub fn as_str(self) -> &'static str {
+    pub const fn as_str(self) -> &'static str {
         self.key
     }
 
