@@ -158,6 +158,33 @@ pub struct Rendered {
     /// What the gallery's read-off needs, as compact JSON (see `charts/readoff.rs`); None for kinds
     /// without a read-off.
     pub read_off: Option<String>,
+    /// The computed figure the pictures and files were made from.
+    pub computed: Computed,
+}
+
+/// A computed chart: the figure's typed data, as its kind computed it.
+#[derive(Clone)]
+pub struct Computed(std::sync::Arc<Chart>);
+
+impl Computed {
+    /// The figure's typed data as its serde form, every number as computed (the data file
+    /// rounds them to 7 significant digits): what a face hands its user without reading the
+    /// file back.
+    pub fn data(&self) -> serde_json::Value {
+        self.0.data_value()
+    }
+}
+
+impl std::fmt::Debug for Computed {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Computed(..)")
+    }
+}
+
+impl PartialEq for Computed {
+    fn eq(&self, other: &Self) -> bool {
+        std::sync::Arc::ptr_eq(&self.0, &other.0) || self.data() == other.data()
+    }
 }
 
 /// A map's cells CSV, made from its computed chart when it is written.
@@ -316,6 +343,7 @@ pub(crate) fn render_with(scene: &Scene, formats: Formats, made: &Made) -> Resul
         data,
         cells,
         read_off,
+        computed: Computed(chart),
     })
 }
 

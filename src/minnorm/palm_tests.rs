@@ -5,8 +5,8 @@ use jamchart::minnorm::palm::{self, palm_problem};
 use jamchart::minnorm::{Backend, Formulation, MinNormCheck, MinNormSettings, QpSettings};
 use jamchart::paper::TABLE1;
 use jamchart::scene::{disc_position_mm, palm_angle_at};
-use jamchart::statics::reference::{ground_reaction, margin_n};
 use jamchart::statics;
+use jamchart::statics::reference::{ground_reaction, margin_n};
 use jamchart::{JamStatus, SceneParams};
 use proptest::prelude::*;
 

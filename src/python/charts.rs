@@ -48,18 +48,14 @@ impl Chart {
         PyBytes::new(py, self.rendered.png.as_deref().unwrap_or_default())
     }
 
-    /// The data behind the chart: a JSON chart's document as dicts with its lists of numbers
-    /// as float64 numpy arrays (null as NaN), or a CSV chart's columns as {name: array}.
+    /// The data behind the chart: a JSON chart's figure as dicts with its lists of numbers
+    /// as float64 numpy arrays (null as NaN), every number as computed (the `.json` file
+    /// rounds them to 7 significant digits); a CSV chart's columns as {name: array}.
     #[getter]
     fn data<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let bytes = &self.rendered.data.bytes;
         match self.rendered.data.extension {
-            "json" => {
-                let doc: serde_json::Value = serde_json::from_slice(bytes)
-                    .map_err(|e| PyValueError::new_err(format!("the chart's data: {e}")))?;
-                to_python(py, &doc, Lists::Arrays)
-            }
-            _ => csv_columns(py, bytes),
+            "json" => to_python(py, &self.rendered.computed.data(), Lists::Arrays),
+            _ => csv_columns(py, &self.rendered.data.bytes),
         }
     }
 
