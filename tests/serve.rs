@@ -159,7 +159,7 @@ fn bad_requests_are_refused_by_key_and_reason_never_with_a_server_error() {
         "/api/v1/solve",
         r#"{"mu": "normal(0.3,0.01)", "model": "min-norm", "samples": 1000000}"#,
     );
-    refused(&r, 413, None, "the server's limit per request");
+    refused(&r, 413, Some("samples"), "the server's limit per request");
     let big = format!(r#"{{"mu": 0.3, "pad": "{}"}}"#, "x".repeat(100_000));
     let r = server.post("/api/v1/solve", &big);
     refused(&r, 413, Some("body"), "at most 64 KiB");

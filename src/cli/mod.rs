@@ -361,6 +361,20 @@ fn describe(e: &Error, command: &str) -> String {
                 None => e.to_string(),
             }
         }
+        // A cost names the key that sets it; the command line names its flag.
+        Error::TooLong { key, .. } | Error::TooLarge { key, .. } => {
+            let cli = Cli::command();
+            let sub = cli.find_subcommand(command);
+            let takes = |flag: &str| {
+                sub.is_some_and(|c| c.get_arguments().any(|a| a.get_long() == Some(flag)))
+            };
+            match crate::settings::flags_naming(key, own_flags(), takes) {
+                Some(flag) => e
+                    .to_string()
+                    .replace(&format!("(set by {key})"), &format!("(set by {flag})")),
+                None => e.to_string(),
+            }
+        }
         _ => e.to_string(),
     }
 }
