@@ -50,7 +50,38 @@ pub(super) fn router(shared: Arc<Shared>) -> Router {
         .route("/api/v1/scenes", get(scenes))
         .fallback(not_found)
         .method_not_allowed_fallback(wrong_method)
+        .layer(axum::middleware::from_fn_with_state(
+            shared.clone(),
+            own_host,
+        ))
         .with_state(shared)
+}
+
+/// Refuses a request addressed to another host than the server's (see [`super::Shared`]).
+async fn own_host(
+    State(shared): State<Arc<Shared>>,
+    request: Request,
+    next: axum::middleware::Next,
+) -> Response {
+    let Some(hosts) = &shared.hosts else {
+        return next.run(request).await;
+    };
+    let host = request
+        .headers()
+        .get(header::HOST)
+        .and_then(|h| h.to_str().ok())
+        .unwrap_or_default();
+    match hosts.iter().any(|h| h.eq_ignore_ascii_case(host)) {
+        true => next.run(request).await,
+        false => http_refusal(
+            StatusCode::MISDIRECTED_REQUEST,
+            Some("host"),
+            format!(
+                "this server answers requests to {} only (it listens on the loopback)",
+                hosts.join(" or ")
+            ),
+        ),
+    }
 }
 
 /// A refusal as its response: `{"error": {...}}` with `status`.
