@@ -95,6 +95,22 @@ pub(crate) struct Shared {
     hosts: Option<Vec<String>>,
 }
 
+impl Shared {
+    fn new(
+        limits: Limits,
+        pool: Option<Arc<rayon::ThreadPool>>,
+        hosts: Option<Vec<String>>,
+    ) -> Self {
+        Shared {
+            limits,
+            slots: Arc::new(Semaphore::new(limits.slots)),
+            waiting: Default::default(),
+            pool,
+            hosts,
+        }
+    }
+}
+
 /// The page, with everything it needs inline: it fetches nothing but the API.
 pub const PAGE: &str = include_str!("page.html");
 
@@ -132,13 +148,7 @@ async fn serve(
     let bound = listener
         .local_addr()
         .map_err(|e| Error::io("listen on", addr.to_string(), e))?;
-    let shared = Arc::new(Shared {
-        limits,
-        slots: Arc::new(Semaphore::new(limits.slots)),
-        waiting: Default::default(),
-        pool,
-        hosts: loopback_hosts(bound),
-    });
+    let shared = Arc::new(Shared::new(limits, pool, loopback_hosts(bound)));
     let router = api::router(shared);
     let graceful = GracefulShutdown::new();
     let connections = Arc::new(Semaphore::new(MAX_CONNECTIONS));
