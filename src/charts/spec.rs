@@ -218,6 +218,12 @@ pub struct Scene {
     pub style: Ink,
     /// Chart kind and settings.
     pub chart: ChartSpec,
+    /// The ranges and distributions of `[scene]` (the parameters hold their nominal values),
+    /// given to the chart by [`Scene::validate_chart`] at the values it is drawn with.
+    pub(crate) uncertain: super::scene_uncertain::Uncertainty,
+    /// The title as written, its `[chart]` keys filled ([`super::title`]): `title` is it with
+    /// the scene's values in place of its `[scene]` keys.
+    pub(crate) title_as_written: String,
 }
 
 /// Where a scene comes from: built into the binary, or a file of the user's.
@@ -323,6 +329,7 @@ fn parse_scene(
             )
         })?;
     }
+    let title_as_written = super::title::fill_chart_keys(&file.title, &file.chart)?;
     let chart = read_chart(&file.chart).map_err(|r| {
         let set: Vec<String> = settings
             .iter()
@@ -400,8 +407,9 @@ fn parse_scene(
         size: file.size.default_at_least(chart.kind()),
         style: file.style,
         chart,
+        uncertain: taken.uncertainty,
+        title_as_written,
     };
-    super::scene_uncertain::attach(&mut scene, &taken)?;
     scene.validate_chart()?;
     Ok(scene)
 }
@@ -449,12 +457,23 @@ impl Scene {
             .collect()
     }
 
-    /// Checks the chart's settings against the scene's parameters.
+    /// Gives the chart what the scene's values decide, then checks its settings against them:
+    /// called when the scene is read and again after anything changed its values (a
+    /// `--read-off`).
     ///
-    /// An axis `mu` sets both frictions, so it is refused when the scene's frictions differ
+    /// The chart takes the uncertain inputs a single value has not replaced since
+    /// ([`super::scene_uncertain::attach`]: a band at the scene's values, the universal
+    /// chart's box, the probability chart's distributions) and the title its values in place
+    /// of the keys it names ([`super::title`]). An axis `mu` sets both frictions, so it is refused when the scene's frictions differ
     /// (say `--set mu_palm=0.6` on fig3): the chart would draw mu_palm = mu while the read-off
     /// used 0.6.
-    pub fn validate_chart(&self) -> Result<()> {
+    pub fn validate_chart(&mut self) -> Result<()> {
+        super::scene_uncertain::attach(self)?;
+        self.title = super::title::fill_scene_keys(
+            &self.title_as_written,
+            &self.params,
+            self.uncertain.set(),
+        )?;
         self.validate_title()?;
         self.size.check_for(self.chart.kind())?;
         let p = &self.params;

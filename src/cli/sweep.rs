@@ -11,6 +11,7 @@ use super::args::{SceneArgs, parse_f64};
 use super::gallery::{page, typed_command};
 use super::render::{RenderFormat, output_paths, write_rendered};
 use crate::charts::gallery::Entry;
+use crate::charts::scene_uncertain::Uncertainty;
 use crate::charts::spec::Size;
 use crate::charts::{self, ChartSpec, Scene, axis_label};
 use crate::error::{Error, Result};
@@ -179,7 +180,8 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
                 panels: vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg],
                 layers: vec![SweepLayer::Statics, SweepLayer::Rigid],
                 read_off: a.read_off,
-                band: crate::figures::band::from_uncertain(&config.scene, &uncertain, axis.param)?,
+                // Drawn from the scene's uncertain inputs below.
+                band: None,
             });
             let title = format!("Jam point against {}", axis_label(axis.param));
             (chart, format!("sweep_{}", axis.param.as_str()), title)
@@ -205,8 +207,9 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
         }
         _ => unreachable!("clap takes one or two axes"),
     };
-    let scene = Scene {
+    let mut scene = Scene {
         name: a.name.clone().unwrap_or(default_name),
+        title_as_written: title.clone(),
         title,
         params: config.scene,
         min_norm: config.min_norm,
@@ -214,6 +217,7 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
         size: Size::default(),
         style: Default::default(),
         chart,
+        uncertain: Uncertainty::of_flags(uncertain),
     };
     scene.validate_chart()?;
     Ok(scene)
