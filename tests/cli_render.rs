@@ -111,7 +111,7 @@ fn bad_scene_file_names_file_line_and_key() {
     std::fs::create_dir(&charts).unwrap();
     std::fs::write(
         charts.join("bad.toml"),
-        "title = \"t\"\nbase = \"none.toml\"\n[chart]\nkind = \"sweep\"\naxis = { param = \"mu\", min = 0.1, max = 0.5, count = 5 }\n",
+        "title = \"t\"\nbase = \"none.toml\"\n[chart]\nkind = \"sweep\"\nx_axis = { param = \"mu\", min = 0.1, max = 0.5, count = 5 }\n",
     )
     .unwrap();
     let out = jamchart(dir.path(), &["render", "--scenes-dir", "charts"]);
@@ -198,7 +198,7 @@ fn own_scene_file_renders_from_its_path_and_set_overrides_it() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::create_dir(dir.path().join("mine")).unwrap();
     let text = "title = \"shaft\"\n[scene]\nradius_mm = 25.0\n[chart]\nkind = \"sweep\"\n\
-                axis = { param = \"mu\", min = 0.1, max = 0.5, count = 5 }\n\
+                x_axis = { param = \"mu\", min = 0.1, max = 0.5, count = 5 }\n\
                 panels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n";
     std::fs::write(dir.path().join("mine/shaft.toml"), text).unwrap();
     let plain = jamchart(dir.path(), &["render", "mine/shaft.toml", "--out", "a"]);
@@ -288,7 +288,7 @@ fn a_bad_scene_key_names_its_file_and_line() {
     let dir = tempfile::tempdir().unwrap();
     let scenes = dir.path().join("scenes");
     std::fs::create_dir(&scenes).unwrap();
-    let sweep = "[chart]\nkind = \"sweep\"\naxis = { param = \"force_n\", min = 50.0, max = 1000.0, count = 5 }\n";
+    let sweep = "[chart]\nkind = \"sweep\"\nx_axis = { param = \"force_n\", min = 50.0, max = 1000.0, count = 5 }\n";
     std::fs::write(
         scenes.join("good.toml"),
         format!("title = \"good\"\n[scene]\nmu = 0.2\n{sweep}"),
@@ -358,7 +358,7 @@ fn a_scene_that_cannot_show_a_set_key_says_so() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let err = stderr(&o);
     assert!(
-        err.contains("scene fig7a varies radius_mm along chart.axis, so --set radius_mm=12"),
+        err.contains("scene fig7a varies radius_mm along chart.x_axis, so --set radius_mm=12"),
         "{err}"
     );
     assert!(

@@ -225,7 +225,7 @@ fn a_range_given_to_a_scene_was_refused_as_an_invalid_type() {
     let o = jamchart(dir.path(), &[&args[..], &["--format", "svg"]].concat());
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let file = "title = \"t\"\n[scene]\nmu = \"0.12:0.3\"\n[chart]\nkind = \"sweep\"\n\
-                axis = { param = \"force_n\", min = 50.0, max = 10000.0, count = 301, scale = \"log\" }\n";
+                x_axis = { param = \"force_n\", min = 50.0, max = 10000.0, count = 301, scale = \"log\" }\n";
     std::fs::write(dir.path().join("s.toml"), file).unwrap();
     let o = jamchart(
         dir.path(),

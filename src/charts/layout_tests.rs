@@ -178,9 +178,9 @@ fn awkward_scenes() -> Vec<(String, Scene)> {
         (
             "fig7b",
             &[
-                "chart.axis.min=1e-2",
-                "chart.axis.max=1e10",
-                "chart.axis.count=61",
+                "chart.x_axis.min=1e-2",
+                "chart.x_axis.max=1e10",
+                "chart.x_axis.count=61",
             ],
         ),
         (
@@ -218,7 +218,7 @@ fn awkward_scenes() -> Vec<(String, Scene)> {
                        \"simulation_force\"]";
     scenes.push((
         "fig6 with every layer".into(),
-        builtin("fig6", &[every_layer, "chart.axis.count=21"]),
+        builtin("fig6", &[every_layer, "chart.x_axis.count=21"]),
     ));
     scenes
 }

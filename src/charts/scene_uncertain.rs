@@ -276,7 +276,7 @@ pub(super) fn attach(scene: &mut Scene) -> Result<()> {
     let band = |param| crate::figures::band::from_uncertain(&scene.params, &u.set, param);
     match &mut scene.chart {
         ChartSpec::Sweep(spec) => {
-            spec.band = band(spec.axis.param).map_err(as_written(name))?;
+            spec.band = band(spec.x_axis.param).map_err(as_written(name))?;
             Ok(())
         }
         // Its regions are the statics' margin, monotone in every uncertain input.

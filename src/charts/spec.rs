@@ -316,6 +316,7 @@ fn parse_scene(
     let mut file: SceneFile = parse_toml(text, path)?;
     if !settings.is_empty() {
         let mut table: toml::Table = parse_toml(text, path)?;
+        let settings = &axis_spelt_as(table.get("chart"), settings);
         overrides::apply(&mut table, settings)?;
         file = SceneFile::deserialize(toml::Value::Table(table)).map_err(|e| {
             let typed: Vec<String> = settings.iter().map(Setting::to_string).collect();
@@ -337,7 +338,14 @@ fn parse_scene(
             .map(Setting::to_string)
             .collect();
         if set.is_empty() {
-            let (line, column) = config::key_line_column(text, &r.key).unwrap_or((1, 1));
+            // A sweep's x axis may be written under its old key.
+            let key = match file.chart.contains_key(OLD_AXIS_KEY) {
+                true => r
+                    .key
+                    .replacen("chart.x_axis", &format!("chart.{OLD_AXIS_KEY}"), 1),
+                false => r.key.clone(),
+            };
+            let (line, column) = config::key_line_column(text, &key).unwrap_or((1, 1));
             Error::Config {
                 path: path.to_path_buf(),
                 line,
@@ -515,6 +523,63 @@ impl Scene {
     }
 }
 
+/// A sweep's key for its x axis before every chart kind named its x axis `x_axis`: still read
+/// as `x_axis`, so that scene files and `--set chart.axis.count=51` written for it keep
+/// working (both keys at once are refused).
+const OLD_AXIS_KEY: &str = "axis";
+
+/// Whether `chart` is a sweep's `[chart]`.
+fn is_sweep(chart: Option<&toml::Value>) -> bool {
+    chart
+        .and_then(|c| c.get("kind"))
+        .and_then(toml::Value::as_str)
+        == Some("sweep")
+}
+
+/// A sweep's `[chart]` with its x axis under [`OLD_AXIS_KEY`] moved to `x_axis`.
+fn read_old_axis_key(chart: &mut toml::Table) -> std::result::Result<(), Refusal> {
+    let Some(axis) = chart.remove(OLD_AXIS_KEY) else {
+        return Ok(());
+    };
+    if chart.contains_key("x_axis") {
+        let key = format!("chart.{OLD_AXIS_KEY}");
+        return Err(Refusal {
+            message: keyed(
+                Some(&key),
+                None,
+                "the old spelling of chart.x_axis, which is given as well: keep x_axis",
+            ),
+            key,
+        });
+    }
+    chart.insert("x_axis".into(), axis);
+    Ok(())
+}
+
+/// `settings` with a sweep's x axis spelt as the scene file's `[chart]` spells it, so that
+/// `--set chart.axis.count=51` sets a file's `x_axis` and `--set chart.x_axis.count=51` an old
+/// file's `axis`, instead of adding a second axis beside it.
+fn axis_spelt_as(chart: Option<&toml::Value>, settings: &[Setting]) -> Vec<Setting> {
+    let old = chart.is_some_and(|c| c.get(OLD_AXIS_KEY).is_some());
+    let (from, to) = match old {
+        true => ("x_axis", OLD_AXIS_KEY),
+        false => (OLD_AXIS_KEY, "x_axis"),
+    };
+    let respelt = |key: &str| {
+        let rest = key.strip_prefix("chart.")?.strip_prefix(from)?;
+        (rest.is_empty() || rest.starts_with('.')).then(|| format!("chart.{to}{rest}"))
+    };
+    (settings.iter())
+        .map(|s| match respelt(&s.key).filter(|_| is_sweep(chart)) {
+            Some(key) => Setting {
+                key,
+                value: s.value.clone(),
+            },
+            None => s.clone(),
+        })
+        .collect()
+}
+
 /// `[chart]` read by its `kind` key; the kinds are those of [`super::kinds`].
 fn read_chart(table: &toml::Table) -> std::result::Result<ChartSpec, Refusal> {
     let kinds = ChartSpec::KINDS.join(", ");
@@ -533,6 +598,9 @@ fn read_chart(table: &toml::Table) -> std::result::Result<ChartSpec, Refusal> {
     };
     let mut rest = table.clone();
     rest.remove("kind");
+    if kind == "sweep" {
+        read_old_axis_key(&mut rest)?;
+    }
     ChartSpec::read(kind, &rest).unwrap_or_else(|| {
         Err(refuse(
             table.get("kind"),
@@ -574,8 +642,13 @@ mod tests {
                 "s.toml:4:56: chart.x_axis.count = \"ten\": invalid type: string",
             ),
             (
+                "kind = \"sweep\"\nx_axis = [1, 2]\n",
+                "s.toml:4:10: chart.x_axis = [1, 2]: expected a table",
+            ),
+            // The old spelling of a sweep's x axis is read as x_axis, at its own line.
+            (
                 "kind = \"sweep\"\naxis = [1, 2]\n",
-                "s.toml:4:8: chart.axis = [1, 2]: expected a table",
+                "s.toml:4:8: chart.x_axis = [1, 2]: expected a table",
             ),
         ];
         for (chart, says) in cases {
@@ -597,5 +670,35 @@ mod tests {
             let msg = scene_error(&format!("title = \"t\"\n[chart]\n{kind}"));
             assert!(msg.contains(says), "{msg}");
         }
+    }
+
+    /// Every chart kind names its x axis `x_axis`; a sweep's was `axis`. A scene written with
+    /// the old key, and `--set chart.axis...` typed for it, still work, whichever key the file
+    /// uses; both keys at once are refused.
+    #[test]
+    fn a_sweeps_old_axis_key_reads_as_x_axis() {
+        let axis = "{ param = \"mu\", min = 0.1, max = 0.5, count = 5 }";
+        let load = |key: &str, set: &[&str]| {
+            let text = format!("title = \"t\"\n[chart]\nkind = \"sweep\"\n{key} = {axis}\n");
+            let set: Vec<Setting> = set.iter().map(|s| s.parse().unwrap()).collect();
+            parse_scene("s".into(), &text, Path::new("s.toml"), Path::new(""), &set)
+        };
+        let count = |scene: Scene| match scene.chart {
+            ChartSpec::Sweep(s) => s.x_axis.count,
+            _ => panic!("a sweep"),
+        };
+        for key in ["x_axis", "axis"] {
+            assert_eq!(count(load(key, &[]).unwrap()), 5, "{key}");
+            for set in ["chart.axis.count=7", "chart.x_axis.count=7"] {
+                assert_eq!(count(load(key, &[set]).unwrap()), 7, "{key} with {set}");
+            }
+        }
+        let text =
+            format!("title = \"t\"\n[chart]\nkind = \"sweep\"\nx_axis = {axis}\naxis = {axis}\n");
+        let msg = scene_error(&text);
+        assert!(
+            msg.starts_with("s.toml:5:8: chart.axis: the old spelling of chart.x_axis"),
+            "{msg}"
+        );
     }
 }

@@ -87,7 +87,7 @@ impl Picture for Sweep {
         if frames.len() != self.data.settings.panels.len() {
             return None;
         }
-        let a = &self.data.settings.axis;
+        let a = &self.data.settings.x_axis;
         let x = PlotAxis::new(a.min, a.max, a.scale, axis_label(a.param));
         let panels: Vec<_> = self
             .data
@@ -132,7 +132,7 @@ impl Picture for Sweep {
             None => legend::rows_needed(root, &entries)?,
         };
         let legend_top = h - 12 - rows * legend::ROW_PX;
-        let a = &self.data.settings.axis;
+        let a = &self.data.settings.x_axis;
         let x = PlotAxis::new(a.min, a.max, a.scale, axis_label(a.param));
         let panels = &self.data.settings.panels;
         for (panel, m) in panels
@@ -189,7 +189,7 @@ impl Sweep {
         let l = self.data.params.palm_length_mm;
         let shown = panel == SweepPanel::XJamMm
             && self.data.params.palm_offset_mm == 0.0
-            && self.data.settings.axis.param != GridParam::PalmLengthMm
+            && self.data.settings.x_axis.param != GridParam::PalmLengthMm
             && (y.min..=y.max).contains(&l);
         if !shown {
             return Ok(());
@@ -338,7 +338,7 @@ impl Sweep {
     /// The read-off's legend entry when it is drawn (a legend never names a line that is not
     /// drawn: off the axis, or no jam there).
     fn read_off_entry(&self) -> Option<LegendEntry> {
-        let a = &self.data.settings.axis;
+        let a = &self.data.settings.x_axis;
         let (v, what) = match (&self.data.read_off_band, &self.data.read_off) {
             (Some(r), _) if r.x_jam_mm.is_some() => {
                 (r.at, "the band's ends: earliest and latest jam")
@@ -451,7 +451,7 @@ impl Sweep {
         if !s.curve.is_line() {
             return None;
         }
-        let param = self.data.settings.axis.param;
+        let param = self.data.settings.x_axis.param;
         let fmt = |v: f64| style::fmt_num(v, 3);
         let mut runs: Vec<(JamStatus, f64, f64)> = Vec::new();
         let mut prev = None;

@@ -176,7 +176,7 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
         [x] => {
             let axis = x.axis(201);
             let chart = ChartSpec::Sweep(SweepSettings {
-                axis,
+                x_axis: axis,
                 panels: vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg],
                 layers: vec![SweepLayer::Statics, SweepLayer::Rigid],
                 read_off: a.read_off,
@@ -223,7 +223,7 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
     Ok(scene)
 }
 
-/// The memory and file checks name the scene key a sweep fills (`chart.axis.count`); the user
+/// The memory and file checks name the scene key a sweep fills (`chart.x_axis.count`); the user
 /// wrote the count in an axis argument, so the message names that (`COUNT of mu=MIN:MAX:COUNT`).
 fn key_as_written(e: Error, a: &SweepArgs) -> Error {
     match e {
