@@ -181,7 +181,7 @@ pub fn main() -> i32 {
     let pool = match threads::start() {
         Ok(pool) => pool,
         Err(e) => {
-            eprintln!("jamchart: {}", terminal::safe(&describe(&e, &name)));
+            terminal::diagnostic(&format!("jamchart: {}", describe(&e, &name)));
             return 2;
         }
     };
@@ -207,13 +207,13 @@ pub fn main() -> i32 {
             };
             let printed = print(text);
             if let Done::Failed { summary, .. } = &done {
-                eprintln!("jamchart: {}", terminal::safe(summary));
+                terminal::diagnostic(&format!("jamchart: {summary}"));
             }
             // A lost answer (exit 2) outranks a failed check (exit 1).
             printed.max(code)
         }
         Err(e) => {
-            eprintln!("jamchart: {}", terminal::safe(&describe(&e, &name)));
+            terminal::diagnostic(&format!("jamchart: {}", describe(&e, &name)));
             2
         }
     }
@@ -223,7 +223,7 @@ pub fn main() -> i32 {
 /// likely a mistake, where the answer still follows.
 pub(crate) fn warn(lines: &[String]) {
     for l in lines {
-        eprintln!("jamchart: warning: {}", terminal::safe(l));
+        terminal::diagnostic(&format!("jamchart: warning: {l}"));
     }
 }
 
@@ -238,7 +238,9 @@ fn print(text: &str) -> i32 {
         Ok(()) => 0,
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => 0,
         Err(e) => {
-            eprintln!("jamchart: writing the answer to standard output: {e}");
+            terminal::diagnostic(&format!(
+                "jamchart: writing the answer to standard output: {e}"
+            ));
             2
         }
     }
@@ -254,7 +256,8 @@ fn clap_exit(e: clap::Error) -> i32 {
         }
         // `jamchart` alone: the help is the answer, but it is still a usage error.
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            eprint!("{}", terminal::safe(&e.render().to_string()));
+            let help = e.render().to_string();
+            terminal::diagnostic(help.strip_suffix('\n').unwrap_or(&help));
             2
         }
         _ => {
@@ -265,7 +268,7 @@ fn clap_exit(e: clap::Error) -> i32 {
             {
                 rendered = rendered.replace(&format!("'{v}'"), &format!("'{}'", error::cut(v)));
             }
-            eprintln!("jamchart: {}", terminal::safe(&one_line(&rendered)));
+            terminal::diagnostic(&format!("jamchart: {}", one_line(&rendered)));
             2
         }
     }

@@ -5,6 +5,7 @@
 //! the bidirectional controls that reorder what a line shows.
 
 use std::borrow::Cow;
+use std::io::Write;
 
 /// Whether `c` is written as an escape: C0 and C1 controls (but newline and tab), DEL, and the
 /// bidirectional embeddings, overrides and isolates (U+202A-U+202E, U+2066-U+2069).
@@ -29,6 +30,17 @@ pub(crate) fn safe(text: &str) -> Cow<'_, str> {
         }
     }
     Cow::Owned(out)
+}
+
+/// Writes `text` and a newline to stderr, control characters escaped ([`safe`]): every
+/// diagnostic (a warning, an error, a note) goes through here.
+///
+/// A failed write is dropped: `eprintln!` panicked on an unwritable stderr (`2>/dev/full`), so a
+/// warning cost the answer on stdout and turned exit 0 into 101. A diagnostic nobody can read
+/// changes neither the answer nor the exit code.
+pub(crate) fn diagnostic(text: &str) {
+    let mut err = std::io::stderr().lock();
+    let _ = writeln!(err, "{}", safe(text)).and_then(|()| err.flush());
 }
 
 #[cfg(test)]
