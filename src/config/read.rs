@@ -17,25 +17,33 @@ use serde::de::DeserializeOwned;
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
-use crate::error::{Error, Result, cut};
+use crate::error::{Error, QUOTE_MAX_CHARS, Result, cut};
 use crate::settings::decl::float_range_problem;
 
 /// A hint where TOML refuses a value at byte `at` of `text` that is a range or a distribution
 /// written without quotes (`mu = 0.12:0.3`, which TOML reads as a broken number): what to
 /// write instead. Empty otherwise.
+///
+/// The hint quotes the line back, so it is given only where the line is that mistake: a bare
+/// key and a value that reads as a range or a distribution. The file may be anything
+/// (`--config .env`, `/proc/self/environ` as a scene's base), and a hint that echoed any line
+/// printed a password and the environment.
 fn unquoted_range_hint(text: &str, at: usize) -> String {
     let line_start = text[..at.min(text.len())].rfind('\n').map_or(0, |i| i + 1);
     let line = text[line_start..].lines().next().unwrap_or("");
     let Some((key, value)) = line.split_once('=') else {
         return String::new();
     };
-    let value = value.split('#').next().unwrap_or("").trim();
-    let looks_uncertain = value.contains(':') || value.ends_with(')');
-    match looks_uncertain && !value.starts_with('"') && !value.starts_with('\'') {
-        true => format!(
-            " (a range or a distribution is a string in a file: {} = \"{value}\")",
-            key.trim()
-        ),
+    let (key, value) = (key.trim(), value.split('#').next().unwrap_or("").trim());
+    let bare_key = !key.is_empty()
+        && key.len() <= QUOTE_MAX_CHARS
+        && key
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-');
+    let uncertain = value.len() <= QUOTE_MAX_CHARS
+        && crate::uncertain::Uncertain::parse(value).is_ok_and(|u| u.is_uncertain());
+    match bare_key && uncertain {
+        true => format!(" (a range or a distribution is a string in a file: {key} = \"{value}\")"),
         false => String::new(),
     }
 }
@@ -350,5 +358,29 @@ mod tests {
             .to_string();
         assert!(e.contains("mu = \"normal(0.2,0.03)\""), "{e}");
         assert_eq!(unquoted_range_hint("mu = 0.2x\n", 5), "");
+    }
+
+    /// The hint quoted the refused line back whatever it held: `--config .env` printed a
+    /// database password, `/proc/self/environ` as a config or a scene's base the whole
+    /// environment. Only a line that is the mistake it names (a bare key and a range or a
+    /// distribution) is quoted; every other message names the file, line and column alone.
+    #[test]
+    fn a_file_that_is_not_toml_is_never_quoted() {
+        let secret = "s3cr3t-Pa55";
+        for text in [
+            format!("DATABASE_URL=postgres://admin:{secret}@db:5432/app\nDEBUG=1\n"),
+            format!("SHELL=/bin/bash\0PASSWORD={secret}\0HOME=/root\0"),
+            format!("[scene]\nmu = 0.1:{secret}\n"),
+            format!("[scene]\nmu = normal({secret})\n"),
+            format!("key with spaces = 0.1:0.3 {secret}\n"),
+            format!("TOKEN = {secret}:0.3\n"),
+        ] {
+            let e = parse_toml::<toml::Table>(&text, Path::new(".env"))
+                .unwrap_err()
+                .to_string();
+            assert!(e.starts_with(".env:"), "{e}");
+            assert!(!e.contains(secret) && !e.contains("admin"), "{e}");
+            assert!(!e.contains("a range or a distribution"), "{e}");
+        }
     }
 }

@@ -141,7 +141,9 @@ fn an_unwritable_stderr_loses_only_the_diagnostic() {
         // The answer but its timing ("took 21.3 us").
         let answer = |o: &std::process::Output| -> String {
             let text = String::from_utf8_lossy(&o.stdout).into_owned();
-            let lines = text.lines().filter(|l| !l.trim_start().starts_with("took "));
+            let lines = text
+                .lines()
+                .filter(|l| !l.trim_start().starts_with("took "));
             lines.collect::<Vec<_>>().join("\n")
         };
         assert_eq!(answer(&o), answer(&heard), "{args:?}");
