@@ -9,7 +9,8 @@
 //! With the closed form and one distributed input U, x_jam = X(U) is monotone (the statics
 //! docs, "Monotone in every uncertain input"), so its quantiles are the input's mapped:
 //! Q_x(q) = X(Q_U(q)) where X rises with U and X(Q_U(1 - q)) where it falls; and P(x_jam < x)
-//! = F_U(u*) or 1 - F_U(u*) with X(u*) = x found by bisection to 1e-12 of the support.
+//! = q* or 1 - q* with X(Q_U(q*)) = x, q* found by bisection in probability to 1e-15 (halving
+//! the input's value instead leaves a wide distribution's P coarse: [`exact`]).
 //!
 //! ## Monte Carlo
 //!
@@ -165,9 +166,26 @@ fn raw_x(p: &SceneParams) -> Option<f64> {
     (t > 0.0).then(|| p.disc_position_mm(t))
 }
 
+/// Probabilities at the ends of the support the exact answer reads: the distribution's 1e-12
+/// and 1 - 1e-12 quantiles.
+const EXACT_TAIL: f64 = 1e-12;
+
+/// Halvings of the bisection in probability for P(x_jam < x): 2^-50 < 1e-15, below the digits
+/// a probability is printed with.
+const EXACT_HALVINGS: usize = 50;
+
 /// The exact answer for the closed form with one distributed input; None when it does not
-/// apply (several inputs, a range among them, no distribution, or a support that reaches no
-/// friction at all at an end, where the disc never jams).
+/// apply (several inputs, a range among them, no distribution, a support that reaches no
+/// friction at all at an end, where the disc never jams, or an asked quantile whose jam
+/// position overflows a double, which [`monte_carlo`] refuses by name).
+///
+/// P(x_jam < x) is found by bisection in the input's probability, not in its value: q* with
+/// X(Q_U(q*)) = x, so P = q* (or 1 - q* where X falls). Halving the value over the whole
+/// support left a wide distribution's probability coarse: lognormal(0.01,3) reaches mu =
+/// 7e-12 to 1.5e7, whose 40 halvings are 1.4e-5 wide, so the frictions below that (1.4 % of
+/// the distribution) were one bracket, and P(x_jam < 1e6 mm) and P(x_jam < 1e7 mm) both came
+/// out 0.9926 beside a 99 % quantile of 1.05e6 mm. In probability each halving halves the
+/// error of P.
 pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<DistAnswer> {
     let [input] = &set.inputs[..] else {
         return None;
@@ -176,41 +194,39 @@ pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<
     if !u.is_distribution() {
         return None;
     }
-    let x_of = |v: f64| raw_x(&set.apply(p, &[v]));
-    // The support's ends as the distribution reaches them (1e-12 tails).
-    let (a, b) = (u.quantile(1e-12), u.quantile(1.0 - 1e-12));
-    let (xa, xb) = (x_of(a)?, x_of(b)?);
+    let x_at = |q: f64| raw_x(&set.apply(p, &[u.quantile(q)]));
+    let (qa, qb) = (EXACT_TAIL, 1.0 - EXACT_TAIL);
+    let (xa, xb) = (x_at(qa)?, x_at(qb)?);
     let falls = xb < xa;
     let quantiles = ask
         .quantiles
         .iter()
         .map(|&q| {
-            let v = u.quantile(if falls { 1.0 - q } else { q });
-            let x = x_of(v).unwrap_or(f64::NAN);
-            Quantile {
+            let x = x_at(if falls { 1.0 - q } else { q })?;
+            x.is_finite().then(|| Quantile {
                 q,
                 x_jam_mm: exact_estimate(x),
-            }
+            })
         })
-        .collect();
+        .collect::<Option<Vec<_>>>()?;
     let before = ask
         .before_mm
         .iter()
         .map(|&x| {
-            // P(X(U) < x): bisect X(u*) = x over the support.
             let prob = if x <= xa.min(xb) {
                 0.0
             } else if x > xa.max(xb) {
                 1.0
             } else {
-                // 40 halvings: 2^-40 < 1e-12 of the support; fewer where the bracket reaches
-                // neighbouring floats first (a support 1e-15 wide hung at 1e-27).
-                let below = |m: f64| x_of(m).is_some_and(|xm| xm < x);
+                // The probabilities whose jam lies before x are one stretch of (qa, qb): below
+                // q* where x_jam rises with the input, above it where it falls.
+                let below = |q: f64| x_at(q).is_some_and(|xq| xq < x);
                 let mid = |lo: f64, hi: f64| 0.5 * (lo + hi);
-                let (lo, hi) =
-                    crate::locator::bisect_bracket((a, b), 40, mid, |m| below(m) != falls);
-                let f = u.cdf(0.5 * (lo + hi));
-                if falls { 1.0 - f } else { f }
+                let (lo, hi) = crate::locator::bisect_bracket((qa, qb), EXACT_HALVINGS, mid, |q| {
+                    below(q) != falls
+                });
+                let q_star = 0.5 * (lo + hi);
+                if falls { 1.0 - q_star } else { q_star }
             };
             Before {
                 x_mm: x,
@@ -223,6 +239,24 @@ pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<
         before,
         quantiles,
     })
+}
+
+/// The refusal of quantile `q` whose jam position (or an end of its interval) overflows a
+/// double: x_jam = r cot(theta_jam / 2) passes 1.8e308 mm where theta_jam is below about
+/// 1e-307 rad (a friction below about 5e-308), and `inf mm [inf, inf] (width NaN)` was printed
+/// as an answer.
+fn beyond_every_position(q: f64) -> Error {
+    Error::invalid(
+        "quantiles",
+        crate::numbers::Num(q),
+        format!(
+            "x_jam at this quantile lies beyond {:.1e} mm, past every position a double holds \
+             (the frictions there are too small for a jam anywhere in reach); ask for \
+             quantiles where the disc jams within reach, or give an input whose values are \
+             larger",
+            f64::MAX
+        ),
+    )
 }
 
 fn exact_estimate(v: f64) -> Estimate {
@@ -356,16 +390,20 @@ pub(crate) fn monte_carlo_observed(
         .filter(|_| !xs.is_empty())
         .map(|&q| {
             let half = Z95 * (m * q * (1.0 - q)).sqrt();
-            Quantile {
-                q,
-                x_jam_mm: Estimate {
-                    value: at(m * q - 0.5),
-                    lo: at(m * q - 0.5 - half),
-                    hi: at(m * q - 0.5 + half),
-                },
+            let x_jam_mm = Estimate {
+                value: at(m * q - 0.5),
+                lo: at(m * q - 0.5 - half),
+                hi: at(m * q - 0.5 + half),
+            };
+            match [x_jam_mm.value, x_jam_mm.lo, x_jam_mm.hi]
+                .iter()
+                .all(|x| x.is_finite())
+            {
+                true => Ok(Quantile { q, x_jam_mm }),
+                false => Err(beyond_every_position(q)),
             }
         })
-        .collect();
+        .collect::<Result<_>>()?;
     Ok(DistAnswer {
         method: DistMethod::MonteCarlo {
             samples: n,
