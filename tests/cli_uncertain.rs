@@ -574,3 +574,19 @@ fn the_universal_chart_reads_off_a_ranges_ends() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("along its axes"), "{}", stderr(&o));
 }
+
+/// `solve --mu 0:0.3` said `never_jams for mu < 2.794e-10`, while only mu = 0 never jams
+/// (`--mu 1e-10` is beyond_reach): the statuses along the range name that one point.
+#[test]
+fn a_friction_range_from_zero_never_jams_at_zero_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(dir.path(), &["solve", "--mu", "0:0.3"]);
+    let text = cli_util::stdout(&o);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        text.contains("mu in [0, 0.3]: never_jams at mu = 0, beyond_reach from 0 to 0.06507, "),
+        "{text}"
+    );
+    let o = jamchart(dir.path(), &["solve", "--mu", "1e-10"]);
+    assert!(cli_util::stdout(&o).contains("statics: beyond_reach"));
+}

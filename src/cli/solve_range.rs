@@ -406,6 +406,7 @@ fn segments_text(i: &InputEnds) -> String {
             .iter()
             .enumerate()
             .map(|(j, g)| match j {
+                _ if g.from == g.to => format!("{} at {n} = {}", g.status, round(g.from)),
                 0 => format!("{} for {n} < {}", g.status, round(g.to)),
                 _ => format!("{} from {} to {}", g.status, round(g.from), round(g.to)),
             })

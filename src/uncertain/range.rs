@@ -619,8 +619,18 @@ fn walk(
     // Each status has one stretch, so there are fewer changes than statuses; the bound only
     // guards against a status that is not monotone after all.
     while here != last && out.len() < JamStatus::ALL.len() {
-        let (to, next) = change_by_theta((from, hi), tol, here, last, keys, &at)
-            .map_or_else(|| bisect_change((from, hi), here, status), |to| (to, last));
+        let (to, next) = match here {
+            // never_jams holds only where theta* = 0, with no friction at either contact:
+            // along a friction that is its low end alone (any friction above 0 jams
+            // somewhere), so the stretch ends where it begins, and the next status is the one
+            // just above it (a step of `tol`: along the box's diagonal the first float above
+            // 0 can round the frictions back to 0). Bisection put the end at the bracket's
+            // last float, 2^-30 of the range: `--mu 0:0.3` said never_jams for mu <
+            // 2.794e-10, where `--mu 1e-10` is beyond_reach.
+            JamStatus::NeverJams => (from, status((from + tol).max(from.next_up()))),
+            _ => change_by_theta((from, hi), tol, here, last, keys, &at)
+                .map_or_else(|| bisect_change((from, hi), here, status), |to| (to, last)),
+        };
         out.push(Segment {
             from,
             to,
