@@ -623,11 +623,11 @@ fn walk(
             // never_jams holds only where theta* = 0, with no friction at either contact:
             // along a friction that is its low end alone (any friction above 0 jams
             // somewhere), so the stretch ends where it begins, and the next status is the one
-            // just above it (a step of `tol`: along the box's diagonal the first float above
-            // 0 can round the frictions back to 0). Bisection put the end at the bracket's
+            // just above it (a step of `tol`, at least a float's: along the box's diagonal the
+            // first float above 0 can round the frictions back to 0). Bisection put the end at the bracket's
             // last float, 2^-30 of the range: `--mu 0:0.3` said never_jams for mu <
             // 2.794e-10, where `--mu 1e-10` is beyond_reach.
-            JamStatus::NeverJams => (from, status((from + tol).max(from.next_up()))),
+            JamStatus::NeverJams => (from, status(from + tol.max(f64::EPSILON * from.abs()))),
             _ => change_by_theta((from, hi), tol, here, last, keys, &at)
                 .map_or_else(|| bisect_change((from, hi), here, status), |to| (to, last)),
         };
