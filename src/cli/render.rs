@@ -16,6 +16,7 @@ use super::gallery::{self, shell_word};
 use super::manifest;
 use super::progress::{self, Quiet};
 use super::read_off::{self, ReadOffArg};
+use super::terminal;
 
 /// Flags of `render`.
 #[derive(Debug, Clone, Args)]
@@ -489,15 +490,15 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
     let written = paths_per_scene(&per_scene);
     let mut text = String::new();
     for (scene, paths) in scenes.iter().zip(written) {
-        let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+        let list: Vec<String> = paths.iter().map(|p| terminal::path(p)).collect();
         let _ = writeln!(text, "{}: {}", scene.name, list.join(" "));
     }
-    let _ = writeln!(text, "gallery: {}", index.display());
+    let _ = writeln!(text, "gallery: {}", terminal::path(&index));
     if let Some(hashes) = &hashes {
         let _ = writeln!(
             text,
             "manifest: {} ({} blessed)",
-            manifest_path.display(),
+            terminal::path(&manifest_path),
             pictures(hashes.len())
         );
     }
@@ -600,7 +601,7 @@ fn json_changes(at: &str, a: &serde_json::Value, b: &serde_json::Value, out: &mu
 fn check(manifest_path: &Path, blessed: &manifest::Hashes, rendered: &[Rendered]) -> Result<Done> {
     let now = manifest::hashes(rendered);
     let diffs = manifest::compare(blessed, &now);
-    let shown = manifest_path.display();
+    let shown = terminal::path(manifest_path);
     if diffs.is_empty() {
         let verb = if now.len() == 1 { "matches" } else { "match" };
         return Ok(Done::Ok(format!(

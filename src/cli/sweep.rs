@@ -276,12 +276,12 @@ pub fn run(a: &SweepArgs) -> Result<String> {
     let html = page(&a.out, &[entry])?;
     let extra = [(index.clone(), html.as_bytes())];
     let paths = write_rendered(&a.out, std::slice::from_ref(&rendered), &extra)?.concat();
-    let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    let list: Vec<String> = paths.iter().map(|p| super::terminal::path(p)).collect();
     Ok(format!(
         "{}: {}\ngallery: {}\n",
         scene.name,
         list.join(" "),
-        index.display()
+        super::terminal::path(&index)
     ))
 }
 
