@@ -70,8 +70,10 @@ pub struct RenderArgs {
     ///
     /// Exit 0 when every picture has its blessed bytes. Exit 1 naming each picture that
     /// changed, that is in the manifest but was not rendered, or that was rendered but is not
-    /// in the manifest; the new renders are then written to a temporary folder (named in the
-    /// report) to look at. Exit 2 for bad input (no manifest, an unknown scene).
+    /// in the manifest, with how each one's data moved; nothing is written anywhere, and the
+    /// report says how to look at the new pictures (the same command with another --out and
+    /// without --check) and how to accept them (--bless). Exit 2 for bad input (no manifest,
+    /// an unknown scene).
     #[arg(long)]
     pub check: bool,
     #[command(flatten)]

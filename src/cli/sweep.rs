@@ -48,6 +48,8 @@ pub struct SweepArgs {
     /// mu=0.1:0.5 --mu 0.27 --read-off`; a map reads off at both flags' values.
     #[arg(long)]
     pub read_off: bool,
+    #[command(flatten)]
+    pub quiet: super::progress::Quiet,
 }
 
 /// The parameters a sweep varies: every axis parameter but the palm angle (a sweep's panels
@@ -276,6 +278,9 @@ pub fn run(a: &SweepArgs) -> Result<String> {
     let html = page(&a.out, &[entry])?;
     let extra = [(index.clone(), html.as_bytes())];
     let paths = write_rendered(&a.out, std::slice::from_ref(&rendered), &extra)?.concat();
+    if a.quiet.quiet {
+        return Ok(String::new());
+    }
     let list: Vec<String> = paths.iter().map(|p| super::terminal::path(p)).collect();
     Ok(format!(
         "{}: {}\ngallery: {}\n",
