@@ -10,7 +10,7 @@ use serde::{Serialize, Serializer};
 /// a 45 deg angle, below anything the models claim.
 pub const SIGNIFICANT_DIGITS: i32 = 7;
 
-/// A number written as a plain decimal with [`SIGNIFICANT_DIGITS`] (see [`plain`]).
+/// A number in a data file, written as a plain decimal of 7 significant digits.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Dec(pub f64);
 
@@ -509,7 +509,7 @@ pub fn grid_cells(header: &[&str], xs: &[f64], ys: &[f64], columns: &[Column]) -
 /// enough that a map of 10^7 cells never holds its CSV (hundreds of MB) in memory.
 const ROWS_BUFFER_BYTES: usize = 1 << 16;
 
-/// Writes [`grid_cells`] to `out` as it is made, [`ROWS_BUFFER_BYTES`] at a time.
+/// Writes a map's cells as long-format CSV (one row per cell, x fastest) to `out` as it is made, [`ROWS_BUFFER_BYTES`] at a time.
 ///
 /// The header goes through the csv crate; the rows are written here byte by byte: a number
 /// ([`push_plain`]) is digits, a sign and a point, which never need quoting, and a word is

@@ -81,6 +81,15 @@ pub enum Error {
         message: String,
     },
 
+    /// A key that names no setting of the question it was given to (a keyword, a JSON key).
+    #[error("unknown key {key}{}", nearest.as_ref().map_or(String::new(), |n| format!("; did you mean {n}?")))]
+    UnknownKey {
+        /// The key as given, cut to a readable length.
+        key: String,
+        /// The known key nearest it, where one is near enough to be a typo.
+        nearest: Option<String>,
+    },
+
     /// A file could not be read or written; `action` says which ("read", "write", ...).
     #[error("cannot {action} {}: {source}", path_text(path))]
     Io {

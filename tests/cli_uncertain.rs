@@ -376,7 +376,18 @@ fn a_range_narrower_than_the_float_spacing_answers() {
         let (code, out) = run_within(&args, 30);
         assert_eq!(code, Some(0), "{range:?} did not answer in 30 s");
         assert!(out.contains("statuses in the box"), "{range:?}: {out}");
+        assert!(
+            !out.contains(" inf") && !out.contains("NaN"),
+            "{range:?}: {out}"
+        );
     }
+    // Every friction of the subnormal lognormal jams beyond what a double holds: its
+    // quantiles say so.
+    let (_, out) = run_within(&["solve", "--mu", "lognormal(5e-324,1)"], 30);
+    assert!(
+        out.contains("50 % quantile of x_jam: beyond 1.8e308 mm, past every position"),
+        "{out}"
+    );
 }
 
 /// Regression: at subnormal frictions every point's jam lies past the palm (x_jam overflows to

@@ -32,6 +32,7 @@ mod hostile;
 mod names_agree;
 mod palm_offset;
 mod python_package;
+mod questions;
 mod range_promise;
 mod readme;
 mod scene_docs;

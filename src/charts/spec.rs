@@ -31,9 +31,9 @@ use super::print::Ink;
 use crate::config::{self, Config, Refusal, keyed, parse_toml};
 use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
-use crate::grid::GridParam;
 use crate::limits::MAX_TITLE_CHARS;
 use crate::minnorm::MinNormSettings;
+use crate::scene::Param;
 use crate::scene::SceneParams;
 
 /// Picture size in px, and the scale of everything drawn on it.
@@ -424,7 +424,7 @@ impl Scene {
         settings
             .iter()
             .filter_map(|s| {
-                let param = GridParam::named(&s.key)?;
+                let param = Param::named(&s.key)?;
                 if !self.chart.takes_scene() {
                     return Some(format!(
                         "scene {} does not take --set {s}: a V-block chart has its own \
@@ -462,7 +462,7 @@ impl Scene {
             .chart
             .param_axes()
             .into_iter()
-            .find(|(_, a)| a.param == GridParam::Mu)
+            .find(|(_, a)| a.param == Param::Mu)
             && p.mu_ground != p.mu_palm
         {
             return Err(Error::invalid(
@@ -483,7 +483,7 @@ impl Scene {
 
 impl Scene {
     /// Checks the title: not blank (`--set title=` drew a chart without a heading) and at most
-    /// [`MAX_TITLE_CHARS`](crate::limits::MAX_TITLE_CHARS) characters.
+    /// [`crate::limits::MAX_TITLE_CHARS`] characters.
     fn validate_title(&self) -> Result<()> {
         let why = if self.title.trim().is_empty() {
             "a chart needs a title; write what it shows".to_string()

@@ -8,7 +8,6 @@ use clap::{ArgAction, Args};
 use serde::Serialize;
 
 use super::args::{SceneArgs, TableFormat, parse_f64};
-use super::dynamics::DynamicsArgs;
 use super::gallery::{page, typed_command};
 use super::progress::{self, Quiet};
 use crate::atomic::{Output, check_all, write_all};
@@ -18,6 +17,7 @@ use crate::dynamics::Method;
 use crate::error::{Error, Result};
 use crate::models::ModelKind;
 use crate::numbers::{angle_deg, length_mm, ratio};
+use crate::settings::flags::{DynamicsSet, Flags};
 use crate::settings::number_text;
 use crate::study::ReferenceKind;
 use crate::study::accuracy::{self, AccuracyReport, AccuracyRow, AccuracySettings};
@@ -47,7 +47,7 @@ pub struct AccuracyArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     #[command(flatten)]
-    pub dynamics: DynamicsArgs,
+    pub dynamics: Flags<DynamicsSet>,
     /// Integrator tolerances rtol = atol, comma-separated, at most 64.
     #[arg(long = flag!(ACCURACY_FLAGS, tolerances), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
           value_parser = parse_f64, default_value = list(&defaults().tolerances))]

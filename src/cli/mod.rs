@@ -3,28 +3,21 @@
 
 mod accuracy;
 mod args;
-pub(crate) mod design;
-mod dynamics;
+mod design;
 mod gallery;
-mod guidance;
 #[cfg(test)]
 mod help_tests;
 mod manifest;
-mod min_norm;
-
 mod progress;
-pub(crate) mod read_off;
-pub mod render;
+pub(crate) mod render;
 mod shell;
 mod solve;
-pub(crate) mod solve_range;
 mod stability;
 mod sweep;
 mod table;
 mod terminal;
 mod threads;
-pub(crate) mod vlocator;
-mod vlocator_robust;
+mod vlocator;
 
 use std::io::Write;
 
@@ -227,6 +220,11 @@ pub(crate) fn warn(lines: &[String]) {
     }
 }
 
+/// An answer's `--format json` document: its serde form, pretty, with a final newline.
+fn json(answer: &impl serde::Serialize) -> String {
+    serde_json::to_string_pretty(answer).expect("answers serialise") + "\n"
+}
+
 /// Writes the answer to stdout (control characters escaped: [`terminal::safe`]) and returns
 /// the exit code: a failed write (a full disk, `> /dev/full`) lost the answer and is an error,
 /// once reported as success with an empty file. A closed pipe (`| head`) is the reader's
@@ -309,9 +307,9 @@ fn own_flags() -> impl Iterator<Item = &'static crate::settings::Decl> + Clone {
     let own: [&'static [crate::settings::Decl]; 5] = [
         accuracy::ACCURACY_FLAGS,
         stability::STABILITY_FLAGS,
-        design::DESIGN_FLAGS,
-        solve_range::DIST_FLAGS,
-        vlocator::GEOMETRY_FLAGS,
+        crate::ask::DESIGN_KEYS,
+        crate::ask::DIST_KEYS,
+        crate::ask::GEOMETRY_KEYS,
     ];
     own.into_iter().flatten()
 }

@@ -15,8 +15,8 @@ use super::Done;
 use super::gallery::{self, shell_word};
 use super::manifest;
 use super::progress::{self, Quiet};
-use super::read_off::{self, ReadOffArg};
 use super::terminal;
+use crate::ask::{ReadOff, Words};
 
 /// Flags of `render`.
 #[derive(Debug, Clone, Args)]
@@ -56,7 +56,7 @@ pub struct RenderArgs {
     /// off at both its axes' values: give one --read-off for each. A chart without a
     /// read-off says so on stderr.
     #[arg(long = "read-off", value_name = "KEY=VALUE")]
-    pub read_off: Vec<ReadOffArg>,
+    pub read_off: Vec<ReadOff>,
     /// Folder whose scene files replace the built-in scenes (names then refer to its files).
     #[arg(long, value_name = "DIR")]
     pub scenes_dir: Option<PathBuf>,
@@ -125,7 +125,7 @@ impl RenderArgs {
     fn formats(&self) -> Result<Formats> {
         match (self.format, self.paper) {
             (RenderFormat::Pdf, paper) => Ok(Formats::Pdf(paper)),
-            (format, None) => Ok(format.into()),
+            (format, None) => Ok(format.formats()),
             (format, Some(paper)) => Err(Error::invalid(
                 "--paper",
                 paper,
@@ -145,11 +145,10 @@ impl RenderFormat {
             .map(|v| v.get_name().to_string())
             .unwrap_or_default()
     }
-}
 
-impl From<RenderFormat> for Formats {
-    fn from(f: RenderFormat) -> Self {
-        match f {
+    /// The pictures it asks for.
+    pub(crate) fn formats(self) -> Formats {
+        match self {
             RenderFormat::Svg => Formats::Svg,
             RenderFormat::Png => Formats::Png,
             RenderFormat::Both => Formats::Both,
@@ -422,7 +421,7 @@ fn render_scenes(
 pub fn run(a: &RenderArgs) -> Result<Done> {
     let mut scenes = load_scenes(&a.scenes, a.scenes_dir.as_deref(), &a.set)?;
     for s in &mut scenes {
-        super::warn(&read_off::apply(s, &a.read_off)?);
+        super::warn(&ReadOff::apply_all(s, &a.read_off, Words::Flags)?);
     }
     for s in &scenes {
         let named: Vec<String> = (s.params.unit_warnings().into_iter())

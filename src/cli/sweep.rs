@@ -18,8 +18,9 @@ use crate::figures::contour_map::ContourMapSettings;
 use crate::figures::sweep::SweepSettings;
 use crate::figures::sweep_layers::{SweepLayer, SweepPanel};
 
-use crate::grid::{AxisScale, GridAxis, GridParam};
+use crate::grid::{AxisScale, GridAxis};
 use crate::models::ModelKind;
+use crate::scene::Param;
 
 /// Flags of `sweep`.
 #[derive(Debug, Clone, Args)]
@@ -54,18 +55,18 @@ pub struct SweepArgs {
 
 /// The parameters a sweep varies: every axis parameter but the palm angle (a sweep's panels
 /// are the jam's angle and position).
-fn sweep_params() -> impl Iterator<Item = GridParam> {
-    GridParam::all().filter(|p| *p != GridParam::ThetaDeg)
+fn sweep_params() -> impl Iterator<Item = Param> {
+    Param::all().filter(|p| *p != Param::ThetaDeg)
 }
 
-/// `--help` of the axes, its list of parameters made from [`GridParam::all`] with each one's
+/// `--help` of the axes, its list of parameters made from [`Param::all`] with each one's
 /// quantity and unit, so that a new scene parameter is listed with no edit here.
 fn axes_long_help() -> String {
     let params: Vec<String> = sweep_params()
         .map(|p| {
             let d = p.decl();
             let sets = match d.sets {
-                [] if p == GridParam::PushRatio => ", sets force_n = push_ratio m g".to_string(),
+                [] if p == Param::PushRatio => ", sets force_n = push_ratio m g".to_string(),
                 [] => String::new(),
                 keys => format!(", sets {}", keys.join(" and ")),
             };
@@ -86,7 +87,7 @@ fn axes_long_help() -> String {
 /// `PARAM=MIN:MAX[:COUNT][:log]` as typed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AxisArg {
-    param: GridParam,
+    param: Param,
     min: f64,
     max: f64,
     count: Option<usize>,
@@ -99,7 +100,7 @@ impl FromStr for AxisArg {
     fn from_str(s: &str) -> std::result::Result<Self, String> {
         let usage = || format!("'{s}' is not PARAM=MIN:MAX[:COUNT][:log] (e.g. mu=0.1:0.5)");
         let (name, range) = s.split_once('=').ok_or_else(usage)?;
-        let param = GridParam::deserialize(toml::Value::String(name.trim().to_string()))
+        let param = Param::deserialize(toml::Value::String(name.trim().to_string()))
             .map_err(|e| format!("'{s}': {}", e.message().trim()))?;
         // Numbers as the flags read them: `1e-400` is refused, never read as 0.
         let number = |p: Option<&str>| match p {
@@ -259,7 +260,7 @@ pub fn run(a: &SweepArgs) -> Result<String> {
             "a file name without folders or a leading dot; --out gives the folder",
         ));
     }
-    let formats = a.format.into();
+    let formats = a.format.formats();
     // Every output path is checked before anything is computed.
     let planned = output_paths(&a.out, &scene.name, &scene.chart, formats);
     let index = a.out.join("index.html");
@@ -300,7 +301,7 @@ mod tests {
         let g = a.axis(201);
         assert_eq!(
             (g.param, g.count, g.scale),
-            (GridParam::ForceN, 31, AxisScale::Log)
+            (Param::ForceN, 31, AxisScale::Log)
         );
         assert!((g.min - 50.0).abs() < 1e-12 && (g.max - 1e4).abs() < 1e-12);
         assert_eq!("mu=0.1:0.5".parse::<AxisArg>().unwrap().axis(7).count, 7);

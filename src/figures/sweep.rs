@@ -13,7 +13,8 @@ use super::sweep_layers::{self, Curve, Series, SeriesPoint, SweepLayer, SweepPan
 use super::{DataFormat, Figure, FigureData, Input};
 use crate::csv_out::{Dec, dec, to_csv_with_header};
 use crate::error::{Error, Result};
-use crate::grid::{GridAxis, GridParam};
+use crate::grid::GridAxis;
+use crate::scene::Param;
 use crate::scene::{JamStatus, SceneParams};
 
 /// `[chart]` keys of `kind = "sweep"`.
@@ -70,7 +71,7 @@ impl Figure for SweepSettings {
     /// Checks the axis, panels and layers against the scene.
     fn validate(&self, input: &Input) -> Result<()> {
         self.axis.validate("chart.axis")?;
-        if self.axis.param == GridParam::ThetaDeg {
+        if self.axis.param == Param::ThetaDeg {
             return Err(Error::invalid(
                 "chart.axis.param",
                 "theta_deg",

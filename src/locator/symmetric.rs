@@ -217,7 +217,7 @@ impl LoadDirections {
 }
 
 impl LoadDirection {
-    /// [`SymmetricV::capacity`] of every V of `vs` under this direction, into `out` (as long
+    /// `SymmetricV::capacity` of every V of `vs` under this direction, into `out` (as long
     /// as `vs`): a row of a map with the included angle on x, bit for bit the cells'.
     pub fn capacities(&self, vs: &Vs, out: Row) {
         let n = out.over_w.len();
@@ -231,7 +231,7 @@ impl LoadDirection {
 }
 
 impl SymmetricV {
-    /// [`SymmetricV::capacity`] of this V under every direction of `ds`, into `out` (as long
+    /// `SymmetricV::capacity` of this V under every direction of `ds`, into `out` (as long
     /// as `ds`): a row of a map with the load direction on x, bit for bit the cells'.
     pub fn capacities(&self, ds: &LoadDirections, out: Row) {
         let n = out.over_w.len();

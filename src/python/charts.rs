@@ -10,9 +10,9 @@ use pyo3::types::{PyBool, PyBytes, PyDict, PyFloat, PyInt, PyList, PyString, PyT
 
 use super::convert::{Lists, to_python};
 use super::keywords::{error, scene_param};
+use crate::ask::{ReadOff, Words};
 use crate::charts::overrides::Setting;
 use crate::charts::{self, Formats, Rendered, SceneSource};
-use crate::cli::read_off::{self, ReadOffArg};
 use crate::settings;
 
 /// A drawn design chart: its SVG and PNG, the data behind it, and the scene's name and kind.
@@ -48,18 +48,14 @@ impl Chart {
         PyBytes::new(py, self.rendered.png.as_deref().unwrap_or_default())
     }
 
-    /// The data behind the chart: a JSON chart's document as dicts with its lists of numbers
-    /// as float64 numpy arrays (null as NaN), or a CSV chart's columns as {name: array}.
+    /// The data behind the chart: a JSON chart's figure as dicts with its lists of numbers
+    /// as float64 numpy arrays (null as NaN), every number as computed (the `.json` file
+    /// rounds them to 7 significant digits); a CSV chart's columns as {name: array}.
     #[getter]
     fn data<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let bytes = &self.rendered.data.bytes;
         match self.rendered.data.extension {
-            "json" => {
-                let doc: serde_json::Value = serde_json::from_slice(bytes)
-                    .map_err(|e| PyValueError::new_err(format!("the chart's data: {e}")))?;
-                to_python(py, &doc, Lists::Arrays)
-            }
-            _ => csv_columns(py, bytes),
+            "json" => to_python(py, &self.rendered.computed.data(), Lists::Arrays),
+            _ => csv_columns(py, &self.rendered.data.bytes),
         }
     }
 
@@ -156,7 +152,7 @@ pub(super) fn render(
             "read_off" if !v.is_none() => {
                 for (rk, rv) in v.cast::<PyDict>()?.iter() {
                     let text = format!("{}={}", rk.str()?, rv.extract::<f64>()?);
-                    read_offs.push(text.parse::<ReadOffArg>().map_err(PyValueError::new_err)?);
+                    read_offs.push(text.parse::<ReadOff>().map_err(PyValueError::new_err)?);
                 }
             }
             "set" if !v.is_none() => {
@@ -182,14 +178,17 @@ pub(super) fn render(
             }
         }
     }
-    let (rendered, kind) = py
-        .detach(|| -> crate::error::Result<(Rendered, String)> {
-            let mut s = source.load(&settings_given)?;
-            read_off::apply(&mut s, &read_offs)?;
-            let kind = s.chart.kind().to_string();
-            Ok((charts::render(&s, Formats::Both)?, kind))
-        })
+    let (rendered, kind, warnings) = py
+        .detach(
+            || -> crate::error::Result<(Rendered, String, Vec<String>)> {
+                let mut s = source.load(&settings_given)?;
+                let warnings = ReadOff::apply_all(&mut s, &read_offs, Words::Keys)?;
+                let kind = s.chart.kind().to_string();
+                Ok((charts::render(&s, Formats::Both)?, kind, warnings))
+            },
+        )
         .map_err(error)?;
+    super::solve::warn(py, warnings)?;
     Ok(Chart { rendered, kind })
 }
 

@@ -5,7 +5,7 @@
 //! of `validate`, the clap flag and both registers of its help ([`flags`]), `--set` and the
 //! sections of scene files (every override is a TOML table merged over the defaults, [`merge`]),
 //! the key-to-flag names in error messages ([`flag_for`]), a grid axis and its label
-//! ([`crate::grid::GridParam`]) and the key reference tables (`jamchart settings`, the guide,
+//! ([`crate::scene::Param`]) and the key reference tables (`jamchart settings`, the guide,
 //! charts/README.md; a test compares them).
 //!
 //! Keys are unique across the sections of one family (the palm scene's `[scene]`, `[min_norm]`

@@ -107,8 +107,14 @@ pub struct DistAnswer {
     pub method: DistMethod,
     /// P(x_jam < x) for each asked x.
     pub before: Vec<Before>,
-    /// The asked quantiles.
+    /// The asked quantiles whose jam position lies within what a double holds.
     pub quantiles: Vec<Quantile>,
+    /// The asked quantiles q whose x_jam (or an end of its 95 % interval) lies beyond
+    /// [`f64::MAX`] mm, past every position a double holds: frictions so small (below about
+    /// 5e-308) that the disc jams nowhere within reach. An outcome, not an error: `solve --mu
+    /// 'lognormal(5e-324,1)'` answers its box, and its default quantiles say this.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub beyond_every_position: Vec<f64>,
 }
 
 impl DistQuestion {
@@ -174,18 +180,24 @@ const EXACT_TAIL: f64 = 1e-12;
 /// a probability is printed with.
 const EXACT_HALVINGS: usize = 50;
 
+/// Halvings of the input's value within the probability bisection's last bracket, after
+/// which P is F_U at the crossing: 60 reach neighbouring floats from any bracket, so a P of
+/// 1e-12 keeps its seven digits (the probability's 1e-15 alone left it 1e-4 off in the
+/// jam-probability chart's tail).
+const EXACT_VALUE_HALVINGS: usize = 60;
+
 /// The exact answer for the closed form with one distributed input; None when it does not
-/// apply (several inputs, a range among them, no distribution, a support that reaches no
-/// friction at all at an end, where the disc never jams, or an asked quantile whose jam
-/// position overflows a double, which [`monte_carlo`] refuses by name).
+/// apply (several inputs, a range among them, no distribution, or a support that reaches no
+/// friction at all at an end, where the disc never jams).
 ///
-/// P(x_jam < x) is found by bisection in the input's probability, not in its value: q* with
-/// X(Q_U(q*)) = x, so P = q* (or 1 - q* where X falls). Halving the value over the whole
-/// support left a wide distribution's probability coarse: lognormal(0.01,3) reaches mu =
-/// 7e-12 to 1.5e7, whose 40 halvings are 1.4e-5 wide, so the frictions below that (1.4 % of
-/// the distribution) were one bracket, and P(x_jam < 1e6 mm) and P(x_jam < 1e7 mm) both came
-/// out 0.9926 beside a 99 % quantile of 1.05e6 mm. In probability each halving halves the
-/// error of P.
+/// P(x_jam < x) is found by bisection in the input's probability first: q* with X(Q_U(q*)) =
+/// x, so P = q* (or 1 - q* where X falls). Halving the value over the whole support left a
+/// wide distribution's probability coarse: lognormal(0.01,3) reaches mu = 7e-12 to 1.5e7,
+/// whose 40 halvings are 1.4e-5 wide, so the frictions below that (1.4 % of the distribution)
+/// were one bracket, and P(x_jam < 1e6 mm) and P(x_jam < 1e7 mm) both came out 0.9926 beside
+/// a 99 % quantile of 1.05e6 mm. In probability each halving halves the error of P, but only
+/// to 1e-15 absolute, coarse for a P of 1e-12 in a tail; so the last bracket's values are
+/// halved on to neighbouring floats and P is F_U there ([`EXACT_VALUE_HALVINGS`]).
 pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<DistAnswer> {
     let [input] = &set.inputs[..] else {
         return None;
@@ -198,17 +210,17 @@ pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<
     let (qa, qb) = (EXACT_TAIL, 1.0 - EXACT_TAIL);
     let (xa, xb) = (x_at(qa)?, x_at(qb)?);
     let falls = xb < xa;
-    let quantiles = ask
-        .quantiles
-        .iter()
-        .map(|&q| {
-            let x = x_at(if falls { 1.0 - q } else { q })?;
-            x.is_finite().then(|| Quantile {
+    let mut quantiles = Vec::new();
+    let mut beyond_every_position = Vec::new();
+    for &q in &ask.quantiles {
+        match x_at(if falls { 1.0 - q } else { q })? {
+            x if x.is_finite() => quantiles.push(Quantile {
                 q,
                 x_jam_mm: exact_estimate(x),
-            })
-        })
-        .collect::<Option<Vec<_>>>()?;
+            }),
+            _ => beyond_every_position.push(q),
+        }
+    }
     let before = ask
         .before_mm
         .iter()
@@ -225,8 +237,16 @@ pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<
                 let (lo, hi) = crate::locator::bisect_bracket((qa, qb), EXACT_HALVINGS, mid, |q| {
                     below(q) != falls
                 });
-                let q_star = 0.5 * (lo + hi);
-                if falls { 1.0 - q_star } else { q_star }
+                // On in the value, between the bracket's ends' values (in order: a quantile
+                // function rises).
+                let below_v = |v: f64| raw_x(&set.apply(p, &[v])).is_some_and(|xv| xv < x);
+                let (vlo, vhi) = (u.quantile(lo), u.quantile(hi));
+                let (vlo, vhi) =
+                    crate::locator::bisect_bracket((vlo, vhi), EXACT_VALUE_HALVINGS, mid, |v| {
+                        below_v(v) != falls
+                    });
+                let f = u.cdf(0.5 * (vlo + vhi));
+                if falls { 1.0 - f } else { f }
             };
             Before {
                 x_mm: x,
@@ -238,25 +258,8 @@ pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<
         method: DistMethod::Exact,
         before,
         quantiles,
+        beyond_every_position,
     })
-}
-
-/// The refusal of quantile `q` whose jam position (or an end of its interval) overflows a
-/// double: x_jam = r cot(theta_jam / 2) passes 1.8e308 mm where theta_jam is below about
-/// 1e-307 rad (a friction below about 5e-308), and `inf mm [inf, inf] (width NaN)` was printed
-/// as an answer.
-fn beyond_every_position(q: f64) -> Error {
-    Error::invalid(
-        "quantiles",
-        crate::numbers::Num(q),
-        format!(
-            "x_jam at this quantile lies beyond {:.1e} mm, past every position a double holds \
-             (the frictions there are too small for a jam anywhere in reach); ask for \
-             quantiles where the disc jams within reach, or give an input whose values are \
-             larger",
-            f64::MAX
-        ),
-    )
 }
 
 fn exact_estimate(v: f64) -> Estimate {
@@ -322,7 +325,7 @@ pub fn monte_carlo(
 
 /// What a Monte Carlo reports as it goes, for a progress bar.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Progress {
+pub enum Progress {
     /// Accepted, before the first draw: how many samples, and their estimated CPU time in s.
     Started {
         /// The samples to draw.
@@ -384,26 +387,25 @@ pub(crate) fn monte_carlo_observed(
         .collect();
     let m = xs.len() as f64;
     let at = |rank: f64| xs[(rank.round().max(0.0) as usize).min(xs.len() - 1)];
-    let quantiles = ask
-        .quantiles
-        .iter()
-        .filter(|_| !xs.is_empty())
-        .map(|&q| {
-            let half = Z95 * (m * q * (1.0 - q)).sqrt();
-            let x_jam_mm = Estimate {
-                value: at(m * q - 0.5),
-                lo: at(m * q - 0.5 - half),
-                hi: at(m * q - 0.5 + half),
-            };
-            match [x_jam_mm.value, x_jam_mm.lo, x_jam_mm.hi]
-                .iter()
-                .all(|x| x.is_finite())
-            {
-                true => Ok(Quantile { q, x_jam_mm }),
-                false => Err(beyond_every_position(q)),
-            }
-        })
-        .collect::<Result<_>>()?;
+    // x_jam = r cot(theta_jam / 2) passes 1.8e308 mm where theta_jam is below about 1e-307
+    // rad: such a quantile is said to lie beyond every position, not printed as `inf mm [inf,
+    // inf] (width NaN)`.
+    let (mut quantiles, mut beyond_every_position) = (Vec::new(), Vec::new());
+    for &q in ask.quantiles.iter().filter(|_| !xs.is_empty()) {
+        let half = Z95 * (m * q * (1.0 - q)).sqrt();
+        let x_jam_mm = Estimate {
+            value: at(m * q - 0.5),
+            lo: at(m * q - 0.5 - half),
+            hi: at(m * q - 0.5 + half),
+        };
+        match [x_jam_mm.value, x_jam_mm.lo, x_jam_mm.hi]
+            .iter()
+            .all(|x| x.is_finite())
+        {
+            true => quantiles.push(Quantile { q, x_jam_mm }),
+            false => beyond_every_position.push(q),
+        }
+    }
     Ok(DistAnswer {
         method: DistMethod::MonteCarlo {
             samples: n,
@@ -412,5 +414,6 @@ pub(crate) fn monte_carlo_observed(
         },
         before,
         quantiles,
+        beyond_every_position,
     })
 }

@@ -7,7 +7,7 @@ use super::shaft;
 
 use jamchart::SceneParams;
 use jamchart::statics;
-use jamchart::uncertain::dist::{self, DistMethod, DistQuestion};
+use jamchart::uncertain::dist::{self, DistAnswer, DistMethod, DistQuestion};
 use jamchart::uncertain::{Uncertain, UncertainInput, UncertainSet};
 
 /// The 25 mm shaft with mu normal(0.2, 0.03) for both contacts.
@@ -217,10 +217,11 @@ fn a_wide_distribution_gives_each_quantile_its_own_probability() {
 }
 
 /// `solve --mu 'lognormal(5e-324,1)'` printed `quantile of x_jam = inf mm [inf, inf] (width
-/// NaN)` with exit 0: a jam position beyond what a double holds. Such a quantile is refused
-/// by name, and no answer carries a number that is not finite.
+/// NaN)` with exit 0: a jam position beyond what a double holds. Such a quantile is answered
+/// as beyond every position (an outcome: the box is still answered), and no answer carries a
+/// number that is not finite.
 #[test]
-fn a_quantile_beyond_every_position_is_refused_not_infinite() {
+fn a_quantile_beyond_every_position_is_said_so_not_infinite() {
     let p = SceneParams::default();
     let set = UncertainSet {
         inputs: vec![UncertainInput {
@@ -238,13 +239,19 @@ fn a_quantile_beyond_every_position_is_refused_not_infinite() {
         samples: 10_000,
         seed: 1,
     };
-    assert!(dist::exact(&p, &set, &ask).is_none());
-    let e = dist::monte_carlo(&jamchart::ModelSpec::Statics, &p, &set, &ask).unwrap_err();
-    let msg = e.to_string();
-    assert!(
-        msg.starts_with("invalid quantiles = 0.05: x_jam at this quantile lies beyond"),
-        "{msg}"
-    );
+    let mc = dist::monte_carlo(&jamchart::ModelSpec::Statics, &p, &set, &ask).unwrap();
+    let answers: Vec<DistAnswer> = dist::exact(&p, &set, &ask)
+        .into_iter()
+        .chain([mc])
+        .collect();
+    for d in &answers {
+        assert!(d.quantiles.is_empty(), "{d:?}");
+        assert_eq!(d.beyond_every_position, ask.quantiles, "{d:?}");
+        assert!(
+            (d.before.iter()).all(|b| b.probability.value == 0.0 && b.probability.hi == 0.0),
+            "{d:?}"
+        );
+    }
     // Where the jam lies within reach the same question answers, every number finite.
     let set = UncertainSet {
         inputs: vec![UncertainInput {

@@ -358,6 +358,17 @@ fn only_a_friction_of_zero_never_jams() {
     assert_eq!(segments[1].status, JamStatus::BeyondReach, "{segments:?}");
     assert_eq!(segments[1].from, 0.0, "{segments:?}");
     assert_eq!(statics::status(&p.with_mu(1e-10)), JamStatus::BeyondReach);
+    // Over a subnormal range the step above 0 is a float, not 1e-9 of the width (which
+    // rounds to 0): never_jams once, then the next status, not never_jams eight times over.
+    let (p0, set0) = paper_box(90.0, "mu", 0.0, 1e-322);
+    let a = range::closed_form(&p0, &set0).unwrap();
+    let statuses: Vec<JamStatus> = a.inputs[0].segments.iter().map(|s| s.status).collect();
+    assert_eq!(
+        statuses,
+        [JamStatus::NeverJams, JamStatus::BeyondReach],
+        "{:?}",
+        a.inputs[0].segments
+    );
     // Two frictions from 0: the statuses of the box, found along its diagonal.
     let set = UncertainSet {
         inputs: vec![

@@ -6,6 +6,11 @@
 //! whose face lies h off the hinge line (its thickness) puts the disc at
 //! x = r cot(theta/2) + h / sin(theta) ([`disc_position_mm`]).
 
+mod param;
+
+pub use param::Param;
+pub(crate) use param::Setter;
+
 use crate::error::{Error, Result};
 use crate::settings::decl::{Check, Decl, Declared};
 
@@ -185,7 +190,7 @@ impl SceneParams {
     }
 
     /// Distance in mm from the hinge along the palm to the contact B at the start angle, its
-    /// right angles exact ([`sin_cos_deg`]): r cot(theta/2) + h cot(theta), r at 90 deg
+    /// right angles exact (`sin_cos_deg`): r cot(theta/2) + h cot(theta), r at 90 deg
     /// however far the palm's face lies off the hinge line.
     pub fn start_contact_distance_mm(&self) -> f64 {
         let (r, h) = (self.radius_mm, self.palm_offset_mm);

@@ -96,48 +96,7 @@ use std::f64::consts::PI;
 use serde::Serialize;
 
 use self::lanes::{Many, Mask, atan};
-use crate::scene::{JamStatus, SceneParams};
-
-/// Ground reaction at contact A for a palm angle, from the corrected Eq. 1.
-#[cfg(test)]
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub(crate) struct GroundReaction {
-    /// Tangential reaction R_t in N, positive against the disc's motion (towards the hinge).
-    pub r_t_n: f64,
-    /// Normal reaction R_n in N, positive up.
-    pub r_n_n: f64,
-    /// Jam margin mu_g R_n - R_t in N: positive where the ground holds the disc (jammed),
-    /// negative where the disc slides.
-    pub margin_n: f64,
-    /// R_n < 0: the palm would lift the disc off the ground, and the model does not apply.
-    pub lifts_off: bool,
-}
-
-/// Ground reaction and jam margin at palm angle `theta` (rad), with the palm sliding.
-#[cfg(test)]
-pub(crate) fn ground_reaction(p: &SceneParams, theta: f64) -> GroundReaction {
-    reaction_at(p, p.alpha_palm(), theta)
-}
-
-/// [`ground_reaction`] with the palm's friction angle `alpha_palm` (rad) given.
-#[cfg(test)]
-fn reaction_at(p: &SceneParams, alpha_palm: f64, theta: f64) -> GroundReaction {
-    let phi = theta - alpha_palm;
-    let r_t = p.force_n * phi.sin();
-    let r_n = p.weight_n() + p.force_n * phi.cos();
-    GroundReaction {
-        r_t_n: r_t,
-        r_n_n: r_n,
-        margin_n: p.mu_ground * r_n - r_t,
-        lifts_off: r_n < 0.0,
-    }
-}
-
-/// The jam margin mu_g R_n - R_t in N at palm angle `theta` (rad); see [`ground_reaction`].
-#[cfg(test)]
-pub(crate) fn margin_n(p: &SceneParams, theta: f64) -> f64 {
-    ground_reaction(p, theta).margin_n
-}
+use crate::scene::{JamStatus, Param, SceneParams};
 
 /// The closed-form answer for one push.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -183,6 +142,7 @@ pub struct PastPalm {
 }
 
 mod lanes;
+pub mod reference;
 
 /// The closed-form jam angle in rad, alpha_g + alpha_p + asin(m g sin(alpha_g) / F), before the
 /// statuses are decided; +infinity when the push can never move the disc (m g sin(alpha_g) >= F).
@@ -328,16 +288,16 @@ pub(crate) struct Push<const N: usize = 1> {
 
 impl Push {
     /// The scene fields the closed form reads, in the order of [`Push`]'s inputs.
-    const INPUTS: [&'static str; 9] = [
-        "mu_ground",
-        "mu_palm",
-        "mass_kg",
-        "gravity_m_s2",
-        "force_n",
-        "radius_mm",
-        "palm_offset_mm",
-        "palm_length_mm",
-        "start_angle_deg",
+    const INPUTS: [Param; 9] = [
+        Param::MuGround,
+        Param::MuPalm,
+        Param::MassKg,
+        Param::GravityMS2,
+        Param::ForceN,
+        Param::RadiusMm,
+        Param::PalmOffsetMm,
+        Param::PalmLengthMm,
+        Param::StartAngleDeg,
     ];
 
     /// The inputs [`Push::derive`] derives the start from: the start angle, the radius, the
@@ -373,10 +333,23 @@ impl Push {
 }
 
 /// Where [`Push::INPUTS`] holds the radius, the palm's offset and length, and the start angle.
-const RADIUS: usize = 5;
-const OFFSET: usize = 6;
-const LENGTH: usize = 7;
-const START: usize = 8;
+const RADIUS: usize = input_of(Param::RadiusMm);
+const OFFSET: usize = input_of(Param::PalmOffsetMm);
+const LENGTH: usize = input_of(Param::PalmLengthMm);
+const START: usize = input_of(Param::StartAngleDeg);
+
+/// The index of `param` in [`Push::INPUTS`], at compile time: a parameter the closed form
+/// does not read fails the build.
+const fn input_of(param: Param) -> usize {
+    let mut i = 0;
+    while i < Push::INPUTS.len() {
+        if crate::settings::decl::same(Push::INPUTS[i].as_str(), param.as_str()) {
+            return i;
+        }
+        i += 1;
+    }
+    panic!("the closed form does not read this parameter")
+}
 
 impl<const N: usize> Push<N> {
     /// `N` copies of push `q`.
@@ -401,7 +374,7 @@ impl<const N: usize> Push<N> {
     /// The index of the input that scene field `key` sets; None for a field the closed
     /// form does not read.
     pub(crate) fn input(key: &str) -> Option<usize> {
-        Push::INPUTS.iter().position(|k| *k == key)
+        Push::INPUTS.iter().position(|p| p.as_str() == key)
     }
 
     /// The lanes of input `i` ([`Self::input`]); after writing those of
@@ -688,8 +661,7 @@ pub(crate) fn least_push_n(p: &SceneParams) -> f64 {
 
 /// The closed form against the corrected Table 1, hand derivations and its invariants.
 #[cfg(test)]
-#[path = "statics_tests.rs"]
-mod statics_tests;
+mod closed_form_tests;
 
 #[cfg(test)]
 mod tests {
@@ -713,29 +685,19 @@ mod tests {
     #[test]
     fn a_pushs_inputs_are_the_fields_they_name() {
         let mut p = SceneParams::default();
-        for (i, key) in Push::INPUTS.iter().enumerate() {
-            let set = SceneParams::real_setter(key).expect("a scene field");
-            set(&mut p, 1.0 + i as f64);
+        for (i, param) in Push::INPUTS.iter().enumerate() {
+            p = param.apply(p, 1.0 + i as f64);
         }
         let push = Push::of(&p);
-        for (i, key) in Push::INPUTS.iter().enumerate() {
-            assert_eq!(push.inputs[i].one(), 1.0 + i as f64, "{key}");
-        }
-        let named = [(RADIUS, "radius_mm"), (OFFSET, "palm_offset_mm")];
-        let named = [
-            named[0],
-            named[1],
-            (LENGTH, "palm_length_mm"),
-            (START, "start_angle_deg"),
-        ];
-        for (i, key) in named {
-            assert_eq!(Push::INPUTS[i], key);
+        for (i, param) in Push::INPUTS.iter().enumerate() {
+            assert_eq!(push.inputs[i].one(), 1.0 + i as f64, "{}", param.as_str());
         }
     }
 
-    /// theta_jam composed from the frictions' unit vectors is the trigonometric closed form
-    /// atan(mu_g) + atan(mu_p) + asin(m g sin(atan mu_g) / F), and x_jam is r cot(theta/2) +
-    /// h / sin(theta) at it, both to a few ulp, over frictions, loads and offsets.
+    /// theta_jam composed from the frictions' unit vectors is the textbook closed form
+    /// ([`reference`]: atan(mu_g) + atan(mu_p) + asin(m g sin(atan mu_g) / F)), and x_jam is
+    /// r cot(theta/2) + h / sin(theta) at it, both to a few ulp, over frictions, loads and
+    /// offsets.
     #[test]
     fn the_composed_closed_form_is_the_trigonometric_one() {
         for mu_g in [0.0, 1e-6, 0.05, 0.2, 0.4, 0.9, 1.7, 40.0, 1e200] {
@@ -749,13 +711,11 @@ mod tests {
                             palm_offset_mm: offset,
                             ..SceneParams::default()
                         };
-                        let load = p.weight_n() * mu_g.atan().sin() / force;
                         let composed = theta_jam_rad(&p);
-                        if load >= 1.0 {
+                        let Some(trig) = reference::theta_jam_rad(&p) else {
                             assert!(composed.is_infinite(), "{p:?}");
                             continue;
-                        }
-                        let trig = mu_g.atan() + mu_p.atan() + load.asin();
+                        };
                         let d = (composed - trig).abs() / trig.max(1e-300);
                         assert!(
                             d <= 8.0 * f64::EPSILON || composed == trig,
@@ -763,7 +723,7 @@ mod tests {
                         );
                         if composed > 0.0 && composed < PI {
                             let x = verdict(&Push::of(&p)).x_jam.one();
-                            let want = p.disc_position_mm(trig);
+                            let want = reference::x_mm(&p, trig);
                             let dx = (x - want).abs() / want;
                             assert!(dx <= 1e-13, "{p:?}: x {x} {want}");
                         }
@@ -957,7 +917,7 @@ mod tests {
             force_n: 2.0_f64.sqrt(),
             ..Default::default()
         };
-        let g = ground_reaction(&p, 90_f64.to_radians());
+        let g = reference::ground_reaction(&p, 90_f64.to_radians());
         // ... so R_t = F sin 45 = 1 N and R_n = F cos 45 = 1 N (the palm presses down).
         assert!((g.r_t_n - 1.0).abs() < 1e-12 && (g.r_n_n - 1.0).abs() < 1e-12);
         assert!((g.margin_n + 1.0).abs() < 1e-12);
