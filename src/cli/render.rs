@@ -330,21 +330,16 @@ fn files_of<'a>(out: &Path, r: &'a Rendered) -> Vec<(PathBuf, Content<'a>)> {
         .collect()
 }
 
-/// Writes the rendered files of all scenes and `extra` files into `out` as one set (all or
-/// none); returns the paths per scene.
+/// Writes the rendered files of all scenes and `extra` files into `out` as `set` (begun with
+/// every one of their paths), all or none; returns the paths per scene.
 pub fn write_rendered(
+    set: Set,
     out: &Path,
     rendered: &[Rendered],
     extra: &[(PathBuf, &[u8])],
 ) -> Result<Vec<Vec<PathBuf>>> {
     let per_scene: Vec<Vec<(PathBuf, Content)>> =
         rendered.iter().map(|r| files_of(out, r)).collect();
-    let declared = per_scene.iter().flatten().map(|(p, _)| p);
-    let set = Set::begin(
-        declared
-            .chain(extra.iter().map(|(p, _)| p))
-            .map(PathBuf::as_path),
-    )?;
     commit_rendered(set, &per_scene, extra)?;
     Ok(paths_per_scene(&per_scene))
 }
@@ -475,7 +470,9 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
         })
         .collect();
     // The page lists every chart in the folder: the previous page's sections of charts not
-    // drawn now, and the pictures of other runs.
+    // drawn now, and the pictures of other runs; built and written under the folder's lock,
+    // so that a writer into the same folder at once adds to it instead of overwriting it.
+    let lock = gallery::lock_folder(&a.out)?;
     let html = gallery::page(&a.out, &entries)?;
     // The pictures are hashed only for the manifest (a SHA-256 of each picture was 2.4 % of
     // `render fig3`'s instructions, after the pictures and on one thread).
@@ -488,6 +485,7 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
     let per_scene: Vec<Vec<(PathBuf, Content)>> =
         rendered.iter().map(|r| files_of(&a.out, r)).collect();
     commit_rendered(set, &per_scene, &extra)?;
+    drop(lock);
     let written = paths_per_scene(&per_scene);
     let mut text = String::new();
     for (scene, paths) in scenes.iter().zip(written) {

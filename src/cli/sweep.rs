@@ -8,8 +8,9 @@ use clap::Args;
 use serde::Deserialize;
 
 use super::args::{SceneArgs, parse_f64};
-use super::gallery::{page, typed_command};
+use super::gallery::{lock_folder, page, typed_command};
 use super::render::{RenderFormat, output_paths, write_rendered};
+use crate::atomic::Set;
 use crate::charts::gallery::Entry;
 use crate::charts::spec::Size;
 use crate::charts::{self, ChartSpec, Scene, axis_label};
@@ -264,7 +265,7 @@ pub fn run(a: &SweepArgs) -> Result<String> {
     // Every output path is checked before anything is computed.
     let planned = output_paths(&a.out, &scene.name, &scene.chart, formats);
     let index = a.out.join("index.html");
-    crate::atomic::check_all(planned.iter().chain([&index]).map(PathBuf::as_path))?;
+    let set = Set::begin(planned.iter().chain([&index]).map(PathBuf::as_path))?;
     let rendered = charts::render(&scene, formats)?;
     // The sweep joins the folder's gallery as a render does: its section with the parameters,
     // the command that reproduces it and the read-off.
@@ -276,9 +277,12 @@ pub fn run(a: &SweepArgs) -> Result<String> {
         read_off: rendered.read_off.as_deref(),
         ..Entry::of_scene(&scene, files, typed_command())
     };
+    // Built and written under the folder's lock, as a render's (see `gallery`).
+    let lock = lock_folder(&a.out)?;
     let html = page(&a.out, &[entry])?;
     let extra = [(index.clone(), html.as_bytes())];
-    let paths = write_rendered(&a.out, std::slice::from_ref(&rendered), &extra)?.concat();
+    let paths = write_rendered(set, &a.out, std::slice::from_ref(&rendered), &extra)?.concat();
+    drop(lock);
     if a.quiet.quiet {
         return Ok(String::new());
     }

@@ -197,7 +197,7 @@ const EXACT_VALUE_HALVINGS: usize = 60;
 /// were one bracket, and P(x_jam < 1e6 mm) and P(x_jam < 1e7 mm) both came out 0.9926 beside
 /// a 99 % quantile of 1.05e6 mm. In probability each halving halves the error of P, but only
 /// to 1e-15 absolute, coarse for a P of 1e-12 in a tail; so the last bracket's values are
-/// halved on to neighbouring floats and P is F_U there ([`EXACT_VALUE_HALVINGS`]).
+/// halved on to neighbouring floats and P is F_U there (`EXACT_VALUE_HALVINGS`).
 pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<DistAnswer> {
     let [input] = &set.inputs[..] else {
         return None;
