@@ -33,6 +33,16 @@ pub enum Error {
         message: String,
     },
 
+    /// Several mistakes in one file, each a [`Error::Config`] (or another error, after them),
+    /// in file order: all of a scene file's sections are read before any is refused.
+    #[error("{} mistakes in {}:\n{}", errors.len(), path_text(path), errors.iter().map(|e| format!("  {e}")).collect::<Vec<_>>().join("\n"))]
+    InFile {
+        /// The file.
+        path: PathBuf,
+        /// The mistakes, by line and column.
+        errors: Vec<Error>,
+    },
+
     /// A request whose estimated memory or output exceeds its limit (`crate::limits`).
     #[error(
         "{what} would take about {}, over the limit of {}{limit_source} (set by {key})",
@@ -198,6 +208,22 @@ impl Error {
             // A reason quotes numbers too (a bound, the other end of a range, a parser's
             // message), each in full: `x_min_mm is -1000...0` had 309 digits.
             reason: short_numbers(&reason.into()),
+        }
+    }
+
+    /// The mistakes of file `path` as one error in file order (by line and column; those
+    /// without a place last, as found): the one alone where there is one.
+    pub fn in_file_order(path: &std::path::Path, mut errors: Vec<Error>) -> Self {
+        errors.sort_by_key(|e| match e {
+            Error::Config { line, column, .. } => (*line, *column),
+            _ => (usize::MAX, usize::MAX),
+        });
+        match errors.len() {
+            1 => errors.remove(0),
+            _ => Error::InFile {
+                path: path.to_path_buf(),
+                errors,
+            },
         }
     }
 
