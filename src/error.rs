@@ -6,6 +6,8 @@
 use std::borrow::Cow;
 use std::path::{Path, PathBuf};
 
+use serde::Serialize;
+
 /// Everything that can go wrong before or around a computation.
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
@@ -66,7 +68,8 @@ pub enum Error {
     /// A request whose estimated run time exceeds its limit (`crate::limits`): a time bound, as
     /// [`Error::TooLarge`] is a memory bound.
     #[error(
-        "{what} would take about {} of one core, over the limit of {} (set by {key}); lower it",
+        "{what} would take about {} of one core, over the limit of {}{limit_source} (set by \
+         {key}); lower it",
         crate::numbers::human_seconds(*estimate_s),
         crate::numbers::human_seconds(*limit_s)
     )]
@@ -79,6 +82,9 @@ pub enum Error {
         estimate_s: f64,
         /// The limit in s.
         limit_s: f64,
+        /// Where a limit lower than the crate's comes from, as a phrase after the figure
+        /// (" (the server's limit per request)"), or empty.
+        limit_source: &'static str,
     },
 
     /// A settings table (a scene file's section, `--set`, a flag) the settings refuse: an unknown
@@ -250,6 +256,79 @@ impl Error {
                 reason,
             },
             e => e,
+        }
+    }
+}
+
+/// What kind of fault an [`Error`] is, for a face that answers with a status: an HTTP code,
+/// an exit code, an exception class.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Fault {
+    /// The question is wrong: a value out of range, an unknown key, settings that conflict,
+    /// a model that cannot answer this scene. Ask again with what the reason says.
+    Input,
+    /// The question is fine but over a limit on its cost (memory, CPU time): lower what the
+    /// key sets.
+    Cost,
+    /// A file could not be read or written.
+    Io,
+    /// The tool's own fault: a drawing, encoding or solver failure, a defect.
+    Internal,
+}
+
+/// An [`Error`] as a face hands it to its user: the key at fault, the value given, and the
+/// reason in full, with the [`Fault`] that decides its status.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Refusal {
+    /// The setting at fault, as the settings name it (`radius_mm`, `chart.x_axis.count`).
+    pub key: Option<String>,
+    /// The value as given, cut to a readable length.
+    pub value: Option<String>,
+    /// The whole message: what is wrong and what to give instead.
+    pub reason: String,
+    /// What kind of fault.
+    pub fault: Fault,
+}
+
+impl Error {
+    /// What kind of fault this is.
+    pub fn fault(&self) -> Fault {
+        match self {
+            Error::InvalidValue { .. }
+            | Error::Config { .. }
+            | Error::Refused { .. }
+            | Error::UnknownKey { .. }
+            | Error::Conflict { .. }
+            | Error::ModelFailed { .. } => Fault::Input,
+            Error::TooLarge { .. } | Error::TooLong { .. } => Fault::Cost,
+            Error::Io { .. }
+            | Error::UnsafeOutput { .. }
+            | Error::NoManifest { .. }
+            | Error::OutputTwice { .. } => Fault::Io,
+            Error::SolverRefused { .. }
+            | Error::Draw { .. }
+            | Error::Encode { .. }
+            | Error::Defect(_) => Fault::Internal,
+        }
+    }
+
+    /// This error as its user is told it: key, value, reason.
+    pub fn refusal(&self) -> Refusal {
+        let (key, value) = match self {
+            Error::InvalidValue { key, value, .. } => (Some(key.clone()), Some(value.clone())),
+            Error::Refused { key, .. }
+            | Error::UnknownKey { key, .. }
+            | Error::TooLarge { key, .. }
+            | Error::TooLong { key, .. } => (Some(key.clone()), None),
+            Error::Conflict { flag, .. } => (Some(flag.to_string()), None),
+            _ => (None, None),
+        };
+        Refusal {
+            key,
+            value,
+            reason: self.to_string(),
+            fault: self.fault(),
         }
     }
 }

@@ -173,6 +173,8 @@ pub mod ask;
 pub mod charts;
 pub mod design;
 pub mod locator;
+#[cfg(feature = "serve")]
+pub mod serve;
 pub mod uncertain;
 
 #[doc = include_str!("guide.md")]
@@ -181,10 +183,11 @@ pub mod guide {}
 // Where a library user or a binding starts: the scene, the port with its one solution type,
 // the errors.
 pub use config::Config;
-pub use error::{Error, Result};
+pub use error::{Error, Fault, Refusal, Result};
+pub use limits::Budget;
 pub use models::{Detail, ModelKind, ModelSpec, OutsideModel, Solution, solve, solve_column};
 pub use scene::{JamStatus, Param, SceneParams};
-pub use settings::Numbers;
+pub use settings::{Numbers, SettingDoc, documented as settings_documented};
 
 /// The `jamchart` command line (`src/main.rs` calls it): not a library entry.
 #[doc(hidden)]

@@ -36,4 +36,6 @@ mod questions;
 mod range_promise;
 mod readme;
 mod scene_docs;
+#[cfg(feature = "serve")]
+mod serve;
 mod uncertain_dist;

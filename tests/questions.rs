@@ -4,33 +4,8 @@
 
 use jamchart::Error;
 use jamchart::ask::{DesignQuestion, SolveQuestion, VlocatorQuestion};
-use serde_json::Value;
 
-use crate::common::cli::{SHAFT, jamchart, json};
-
-/// `doc` without its wall times, which differ from run to run.
-fn timeless(mut doc: Value) -> Value {
-    fn strip(v: &mut Value) {
-        match v {
-            Value::Object(map) => {
-                map.remove("elapsed_s");
-                map.values_mut().for_each(strip);
-            }
-            Value::Array(items) => items.iter_mut().for_each(strip),
-            _ => {}
-        }
-    }
-    strip(&mut doc);
-    doc
-}
-
-/// The command line's JSON for `args` (with `--format json`).
-fn cli(args: &[&str]) -> Value {
-    let dir = tempfile::tempdir().unwrap();
-    let mut all = args.to_vec();
-    all.extend(["--format", "json"]);
-    timeless(json(&jamchart(dir.path(), &all)))
-}
+use crate::common::cli::{SHAFT, json_of, timeless};
 
 /// The shaft's flags as the keys of a JSON body.
 const SHAFT_KEYS: &str =
@@ -67,7 +42,7 @@ fn a_json_body_asks_solve_what_its_flags_ask() {
         if body.contains("radius_mm") {
             args.extend(SHAFT);
         }
-        assert_eq!(timeless(answer), cli(&args), "{body}");
+        assert_eq!(timeless(answer), json_of(&args), "{body}");
     }
 }
 
@@ -79,7 +54,7 @@ fn a_json_body_asks_design_and_vlocator_what_their_flags_ask() {
     args.extend(SHAFT);
     assert_eq!(
         serde_json::to_value(question.answer().unwrap()).unwrap(),
-        cli(&args)
+        json_of(&args)
     );
     for (body, args) in [
         (
@@ -115,7 +90,7 @@ fn a_json_body_asks_design_and_vlocator_what_their_flags_ask() {
     ] {
         let question: VlocatorQuestion = serde_json::from_str(body).unwrap();
         let answer = serde_json::to_value(question.answer().unwrap()).unwrap();
-        assert_eq!(answer, cli(&args), "{body}");
+        assert_eq!(answer, json_of(&args), "{body}");
     }
 }
 

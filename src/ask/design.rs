@@ -17,7 +17,8 @@ settings! {
     /// The key of `design`'s target, with the flag that gives it.
     section = "design";
     aliases DESIGN_KEYS {
-        x_target_mm, flag: Some("x-target");
+        /// Target disc position x (from the hinge): carry the part at least this far.
+        x_target_mm, flag: Some("x-target"), unit: "mm";
     }
 }
 

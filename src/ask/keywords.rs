@@ -24,6 +24,24 @@ impl Keywords {
         Keywords(pairs.into_iter().collect())
     }
 
+    /// Keywords of a JSON object (an HTTP body): each value a number, a string, a switch, a
+    /// list or an object (a table, for `set` and `read_off`). A null is refused: leave the
+    /// key out for its default.
+    pub fn from_json(json: serde_json::Value) -> Result<Self> {
+        let serde_json::Value::Object(map) = json else {
+            return Err(Error::invalid(
+                "body",
+                json_kind(&json),
+                "give a JSON object of keys to values, e.g. {\"mu\": 0.3}",
+            ));
+        };
+        let pairs = map.into_iter().map(|(key, value)| {
+            let value = toml_of_json(&key, value)?;
+            Ok((key, value))
+        });
+        Ok(Keywords(pairs.collect::<Result<_>>()?))
+    }
+
     /// Takes the question's own key `key` out, if given.
     pub(crate) fn take(&mut self, key: &str) -> Option<toml::Value> {
         self.0.remove(key)
@@ -116,6 +134,53 @@ impl Keywords {
     }
 }
 
+/// A JSON value as the TOML value of key `key`.
+fn toml_of_json(key: &str, value: serde_json::Value) -> Result<toml::Value> {
+    use serde_json::Value as J;
+    Ok(match value {
+        J::Null => {
+            return Err(Error::invalid(
+                key,
+                "null",
+                "give a value, or leave the key out for its default",
+            ));
+        }
+        J::Bool(b) => toml::Value::Boolean(b),
+        J::Number(n) => match (n.as_i64(), n.as_f64()) {
+            (Some(i), _) => toml::Value::Integer(i),
+            (None, Some(x)) => toml::Value::Float(x),
+            (None, None) => return Err(Error::invalid(key, n, "give a number a double holds")),
+        },
+        J::String(s) => toml::Value::String(s),
+        J::Array(items) => toml::Value::Array(
+            items
+                .into_iter()
+                .map(|v| toml_of_json(key, v))
+                .collect::<Result<_>>()?,
+        ),
+        J::Object(map) => toml::Value::Table(
+            map.into_iter()
+                .map(|(k, v)| {
+                    let v = toml_of_json(&format!("{key}.{k}"), v)?;
+                    Ok((k, v))
+                })
+                .collect::<Result<_>>()?,
+        ),
+    })
+}
+
+/// What kind of JSON value `v` is, for a message.
+fn json_kind(v: &serde_json::Value) -> &'static str {
+    match v {
+        serde_json::Value::Null => "null",
+        serde_json::Value::Bool(_) => "a switch",
+        serde_json::Value::Number(_) => "a number",
+        serde_json::Value::String(_) => "a string",
+        serde_json::Value::Array(_) => "a list",
+        serde_json::Value::Object(_) => "an object",
+    }
+}
+
 /// `value` of setting `decl`, checked as a flag's value is: a number against its range (an
 /// integer read as a number), the text of a range or distribution parsed.
 fn checked(decl: &Decl, value: toml::Value) -> Result<toml::Value> {
@@ -164,7 +229,7 @@ fn checked(decl: &Decl, value: toml::Value) -> Result<toml::Value> {
 }
 
 /// A value as a message quotes it: a string bare, anything else as TOML writes it.
-fn shown(v: &toml::Value) -> String {
+pub(crate) fn shown(v: &toml::Value) -> String {
     match v {
         toml::Value::String(s) => s.clone(),
         v => v.to_string(),

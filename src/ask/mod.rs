@@ -1,6 +1,6 @@
 //! Every question a face asks of the library, and its answer: typed in, typed out.
 //!
-//! The command line, the Python package and the HTTP API are faces over these types: each
+//! The command line, the Python package and the HTTP API (`jamchart serve`) are faces over these types: each
 //! builds a question from what its user gave (flags, keywords, a JSON body), calls `answer`,
 //! and shows the answer (text, a Python object, JSON). None decides, checks or formats anything
 //! another face needs: that is here.
@@ -10,6 +10,7 @@
 //! | [`SolveQuestion`] | [`SolveAnswer`] | `jamchart solve` | `jamchart.solve` (one push, a range, a distribution) |
 //! | [`DesignQuestion`] | [`DesignAnswer`] | `jamchart design` | `jamchart.design` |
 //! | [`VlocatorQuestion`] | [`VlocatorAnswer`] | `jamchart vlocator` | `jamchart.vlocator` |
+//! | [`RenderQuestion`] | [`RenderAnswer`] | `jamchart render` | `jamchart.render` |
 //! | [`ReadOff`] | the chart's read-off | `render --read-off` | `jamchart.render(read_off=...)` |
 //!
 //! ## Building a question
@@ -35,6 +36,7 @@ mod design_text;
 mod keywords;
 mod model_text;
 mod read_off;
+mod render;
 mod solve;
 mod solve_box_text;
 mod solve_text;
@@ -48,6 +50,7 @@ pub use design::{DesignAnswer, DesignQuestion, DesignReport, SimCheck};
 pub use keywords::Keywords;
 pub(crate) use keywords::nearest;
 pub use read_off::ReadOff;
+pub use render::{RenderAnswer, RenderQuestion};
 pub use solve::{
     BoxAnswer, BoxRecord, DistAsk, DynamicsRecord, PushAnswer, PushRecord, SolveAnswer,
     SolveQuestion, Trace,

@@ -20,9 +20,15 @@ settings! {
     /// The keys of a distribution's question, with the flags of `solve` that give them.
     section = "solve";
     aliases DIST_KEYS {
-        before_mm, flag: Some("before");
-        quantiles, flag: Some("quantiles");
-        samples, flag: Some("samples");
+        /// Positions x to give P(x_jam < x) at: the probability that the part jams before
+        /// reaching each (a distributed input only).
+        before_mm, flag: Some("before"), unit: "mm";
+        /// Probabilities (0 to 1) to give the quantiles of x_jam at (a distributed input
+        /// only; default 0.05, 0.5, 0.95).
+        quantiles, flag: Some("quantiles"), unit: "-";
+        /// Monte Carlo samples where the answer is sampled (default 100,000 for the closed
+        /// form, 2,000 for the other models).
+        samples, flag: Some("samples"), unit: "-";
     }
 }
 
@@ -455,6 +461,14 @@ impl SolveAnswer {
         match self {
             SolveAnswer::Push(a) => a.text(words),
             SolveAnswer::Box(a) => a.text(words),
+        }
+    }
+
+    /// The verdict in one line.
+    pub fn headline(&self) -> String {
+        match self {
+            SolveAnswer::Push(a) => a.headline(),
+            SolveAnswer::Box(a) => a.headline(),
         }
     }
 }

@@ -13,8 +13,12 @@ settings! {
     /// symmetric V, or the two given).
     section = "locator";
     aliases GEOMETRY_KEYS {
-        flank_angles, flag: Some("flank-angles"), sets: &["flank_left_deg", "flank_right_deg"];
-        included_angle_deg, flag: Some("included-angle"),
+        /// The two flank angles from the horizontal, left and right (an asymmetric V).
+        flank_angles, flag: Some("flank-angles"), unit: "deg",
+            sets: &["flank_left_deg", "flank_right_deg"];
+        /// The V's included angle (a symmetric V): both flanks at (180 - angle) / 2 from
+        /// the horizontal.
+        included_angle_deg, flag: Some("included-angle"), unit: "deg",
             sets: &["flank_left_deg", "flank_right_deg"];
     }
 }

@@ -10,6 +10,8 @@ mod help_tests;
 mod manifest;
 mod progress;
 pub(crate) mod render;
+#[cfg(feature = "serve")]
+mod serve;
 mod shell;
 mod solve;
 mod stability;
@@ -130,6 +132,18 @@ pub enum Command {
     /// window; and the verdict of your V (if given) and of the standard 60/90/120 deg V-blocks
     /// over the box. A distribution is refused: a robust V holds every value of a range.
     Vlocator(vlocator::VlocatorArgs),
+    /// Serve the live design page and the HTTP API until Ctrl-C.
+    ///
+    /// The page (GET /) is a design calculator: the scene's settings with their units and
+    /// ranges, the answer of `solve` as you type (a number, a range lo:hi or a distribution
+    /// normal(m,s) in any field), the universal chart with your point or box marked, and a
+    /// V-block tab. The API answers POST /api/v1/solve, /api/v1/design and /api/v1/vlocator
+    /// with a JSON body of the Python keywords ({"mu": 0.3, "radius_mm": 12.5}) by the same
+    /// JSON document as --format json, and GET /api/v1/render/SCENE.svg?KEY=VALUE draws a
+    /// built-in scene (.png, .json, .csv too). No request reads or writes a file. The guide
+    /// (`jamchart guide`, the crate docs) lists every route.
+    #[cfg(feature = "serve")]
+    Serve(serve::ServeArgs),
     /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
     ///
     /// bash: `jamchart completions bash > ~/.local/share/bash-completion/completions/jamchart`;
@@ -166,11 +180,19 @@ impl From<String> for Done {
 /// Runs the command line and returns the process exit code: 0 success, 1 a check that found
 /// changes (`render --check`), 2 bad input or failure.
 pub fn main() -> i32 {
-    crate::atomic::install_signal_cleanup();
     let (cli, name) = match parse(std::env::args_os()) {
         Ok(parsed) => parsed,
         Err(e) => return clap_exit(e),
     };
+    // The server writes no file, and its Ctrl-C lets the answers in flight finish: it handles
+    // the signals itself.
+    #[cfg(feature = "serve")]
+    let serving = matches!(cli.command, Command::Serve(_));
+    #[cfg(not(feature = "serve"))]
+    let serving = false;
+    if !serving {
+        crate::atomic::install_signal_cleanup();
+    }
     let pool = match threads::start() {
         Ok(pool) => pool,
         Err(e) => {
@@ -178,6 +200,16 @@ pub fn main() -> i32 {
             return 2;
         }
     };
+    #[cfg(feature = "serve")]
+    if let Command::Serve(a) = &cli.command {
+        return match serve::run(a, pool) {
+            Ok(()) => 0,
+            Err(e) => {
+                eprintln!("jamchart: {}", terminal::safe(&describe(&e, &name)));
+                2
+            }
+        };
+    }
     let result: crate::error::Result<Done> = pool.run(|| match &cli.command {
         Command::Solve(a) => solve::run(a).map(Done::from),
         Command::Design(a) => design::run(a).map(Done::from),
@@ -191,6 +223,8 @@ pub fn main() -> i32 {
         Command::Vlocator(a) => vlocator::run(a).map(Done::from),
         Command::Completions(a) => shell::completions(a).map(Done::from),
         Command::Man(a) => shell::man(a).map(Done::from),
+        #[cfg(feature = "serve")]
+        Command::Serve(_) => Err(Error::Defect("serve runs outside the pool".into())),
     });
     match result {
         Ok(done) => {
@@ -327,6 +361,20 @@ fn describe(e: &Error, command: &str) -> String {
             };
             match crate::settings::flags_naming(key, own_flags(), takes) {
                 Some(flag) => format!("invalid {key} = {value} (flag {flag}): {reason}"),
+                None => e.to_string(),
+            }
+        }
+        // A cost names the key that sets it; the command line names its flag.
+        Error::TooLong { key, .. } | Error::TooLarge { key, .. } => {
+            let cli = Cli::command();
+            let sub = cli.find_subcommand(command);
+            let takes = |flag: &str| {
+                sub.is_some_and(|c| c.get_arguments().any(|a| a.get_long() == Some(flag)))
+            };
+            match crate::settings::flags_naming(key, own_flags(), takes) {
+                Some(flag) => e
+                    .to_string()
+                    .replace(&format!("(set by {key})"), &format!("(set by {flag})")),
                 None => e.to_string(),
             }
         }

@@ -347,7 +347,7 @@ pub(crate) fn monte_carlo_observed(
 ) -> Result<DistAnswer> {
     ask.validate()?;
     let per = cost_per_sample(spec, p, set)?;
-    crate::limits::check_samples("--samples", ask.samples, per)?;
+    crate::limits::check_samples("samples", ask.samples, per)?;
     progress(Progress::Started {
         samples: ask.samples,
         estimated_cpu_s: crate::limits::sampled_cpu_s(ask.samples, per),
