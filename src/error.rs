@@ -310,6 +310,8 @@ impl Error {
             | Error::Draw { .. }
             | Error::Encode { .. }
             | Error::Defect(_) => Fault::Internal,
+            // A file's mistakes are input (a base file that does not load comes alone).
+            Error::InFile { errors, .. } => errors.first().map_or(Fault::Input, Error::fault),
         }
     }
 
