@@ -8,10 +8,9 @@ mod common;
 use std::time::Instant;
 
 use common::median;
+use jamchart::Param;
 use jamchart::SceneParams;
-use jamchart::bench_support::{
-    GridAxis, GridParam, GridRequest, Quantity, evaluate, statics_point,
-};
+use jamchart::grid::{GridAxis, GridRequest, Quantity, evaluate, statics_point};
 
 fn measure(req: &GridRequest, runs: usize) -> f64 {
     let cells = (req.x.count * req.y.count) as f64;
@@ -30,8 +29,8 @@ fn measure(req: &GridRequest, runs: usize) -> f64 {
 fn request(n: usize) -> GridRequest {
     GridRequest {
         base: SceneParams::default(),
-        x: GridAxis::linear(GridParam::Mu, 0.1, 0.5, n),
-        y: GridAxis::log(GridParam::ThetaDeg, 10.0, 70.0, n),
+        x: GridAxis::linear(Param::Mu, 0.1, 0.5, n),
+        y: GridAxis::log(Param::ThetaDeg, 10.0, 70.0, n),
         quantities: vec![Quantity::MarginN],
     }
 }

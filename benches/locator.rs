@@ -31,9 +31,8 @@ mod baseline;
 mod common;
 
 use common::{median, median_s};
-use jamchart::bench_support::{
-    Grid, GridAxis, LocatorParam, capacity_clarabel, capacity_map, closed_form_applies,
-};
+use jamchart::bench_support::{capacity_clarabel, closed_form_applies};
+use jamchart::grid::{Grid, GridAxis, LocatorParam, capacity_map};
 use jamchart::locator::{self, LocatorParams};
 
 fn map(rotation: locator::Rotation) -> Grid<LocatorParams> {

@@ -28,8 +28,9 @@
 mod common;
 
 use common::median_s;
-use jamchart::bench_support::{Grid, GridAxis, GridParam};
+use jamchart::Param;
 use jamchart::dynamics::{Drive, DynamicsParams, Method};
+use jamchart::grid::{Grid, GridAxis};
 use jamchart::minnorm::MinNormSettings;
 use jamchart::models::Detail;
 use jamchart::{JamStatus, ModelSpec, SceneParams};
@@ -38,8 +39,8 @@ use jamchart::{JamStatus, ModelSpec, SceneParams};
 fn map(k: usize) -> Grid<SceneParams> {
     Grid {
         base: SceneParams::default(),
-        x: GridAxis::linear(GridParam::Mu, 0.1, 0.8, k),
-        y: Some(GridAxis::log(GridParam::ForceN, 20.0, 2000.0, k)),
+        x: GridAxis::linear(Param::Mu, 0.1, 0.8, k),
+        y: Some(GridAxis::log(Param::ForceN, 20.0, 2000.0, k)),
     }
 }
 
@@ -71,7 +72,7 @@ const SAMPLE_COLUMNS: usize = 20;
 fn column_sample(columns: usize) -> u32 {
     let spec = ModelSpec::MinNorm(MinNormSettings::default());
     let mut grid = map(400);
-    grid.x = GridAxis::linear(GridParam::Mu, 0.1, 0.8, columns);
+    grid.x = GridAxis::linear(Param::Mu, 0.1, 0.8, columns);
     let cells = grid.map_columns(|column| jamchart::solve_column(&spec, column));
     programs(&cells.expect("every cell answers").values)
 }

@@ -3,7 +3,10 @@
 //! Physical outcomes ("never jams", "QP infeasible", "integrator gave up") are never errors;
 //! they are values of the status enums of each model.
 
-use std::path::PathBuf;
+use std::borrow::Cow;
+use std::path::{Path, PathBuf};
+
+use serde::Serialize;
 
 /// Everything that can go wrong before or around a computation.
 #[derive(Debug, thiserror::Error)]
@@ -20,7 +23,7 @@ pub enum Error {
     },
 
     /// A TOML file does not parse or has an unknown key.
-    #[error("{path}:{line}:{column}: {message}")]
+    #[error("{}:{line}:{column}: {message}", path_text(path))]
     Config {
         /// The file.
         path: PathBuf,
@@ -30,6 +33,16 @@ pub enum Error {
         column: usize,
         /// The parser's message, naming the key.
         message: String,
+    },
+
+    /// Several mistakes in one file, each a [`Error::Config`] (or another error, after them),
+    /// in file order: all of a scene file's sections are read before any is refused.
+    #[error("{} mistakes in {}:\n{}", errors.len(), path_text(path), errors.iter().map(|e| format!("  {e}")).collect::<Vec<_>>().join("\n"))]
+    InFile {
+        /// The file.
+        path: PathBuf,
+        /// The mistakes, by line and column.
+        errors: Vec<Error>,
     },
 
     /// A request whose estimated memory or output exceeds its limit (`crate::limits`).
@@ -55,7 +68,8 @@ pub enum Error {
     /// A request whose estimated run time exceeds its limit (`crate::limits`): a time bound, as
     /// [`Error::TooLarge`] is a memory bound.
     #[error(
-        "{what} would take about {} of one core, over the limit of {} (set by {key}); lower it",
+        "{what} would take about {} of one core, over the limit of {}{limit_source} (set by \
+         {key}); lower it",
         crate::numbers::human_seconds(*estimate_s),
         crate::numbers::human_seconds(*limit_s)
     )]
@@ -68,6 +82,9 @@ pub enum Error {
         estimate_s: f64,
         /// The limit in s.
         limit_s: f64,
+        /// Where a limit lower than the crate's comes from, as a phrase after the figure
+        /// (" (the server's limit per request)"), or empty.
+        limit_source: &'static str,
     },
 
     /// A settings table (a scene file's section, `--set`, a flag) the settings refuse: an unknown
@@ -80,8 +97,17 @@ pub enum Error {
         message: String,
     },
 
+    /// A key that names no setting of the question it was given to (a keyword, a JSON key).
+    #[error("unknown key {key}{}", nearest.as_ref().map_or(String::new(), |n| format!("; did you mean {n}?")))]
+    UnknownKey {
+        /// The key as given, cut to a readable length.
+        key: String,
+        /// The known key nearest it, where one is near enough to be a typo.
+        nearest: Option<String>,
+    },
+
     /// A file could not be read or written; `action` says which ("read", "write", ...).
-    #[error("cannot {action} {path}: {source}")]
+    #[error("cannot {action} {}: {source}", path_text(path))]
     Io {
         /// What was being done: "read", "write", ...
         action: &'static str,
@@ -94,8 +120,9 @@ pub enum Error {
     /// An output path jamchart will not write: `what` says what is there (a symbolic link, a
     /// directory, a device); nothing was written.
     #[error(
-        "refusing to write {path}: it is {what}; jamchart writes only new names, regular files \
-         (replaced atomically), FIFOs, terminals and /dev/null: give another path"
+        "refusing to write {}: it is {what}; jamchart writes only new names, regular files \
+         (replaced atomically), FIFOs, terminals and /dev/null: give another path",
+        path_text(path)
     )]
     UnsafeOutput {
         /// The refused path.
@@ -126,8 +153,9 @@ pub enum Error {
 
     /// `render --check` without a manifest to check against.
     #[error(
-        "no manifest {path} to check against: write it first with the same scenes and --out, \
-         adding --bless instead of --check"
+        "no manifest {} to check against: write it first with the same scenes and --out, \
+         adding --bless instead of --check",
+        path_text(path)
     )]
     NoManifest {
         /// Where the manifest was looked for (`<out>/SHA256SUMS`).
@@ -144,7 +172,10 @@ pub enum Error {
     },
 
     /// One path named for two outputs of one run.
-    #[error("{} is named twice as an output; give each output its own path", path.display())]
+    #[error(
+        "{} is named twice as an output; give each output its own path",
+        path_text(path)
+    )]
     OutputTwice {
         /// The path.
         path: PathBuf,
@@ -180,7 +211,25 @@ impl Error {
         Error::InvalidValue {
             key: key.to_string(),
             value: cut(&value.to_string()),
-            reason: reason.into(),
+            // A reason quotes numbers too (a bound, the other end of a range, a parser's
+            // message), each in full: `x_min_mm is -1000...0` had 309 digits.
+            reason: short_numbers(&reason.into()),
+        }
+    }
+
+    /// The mistakes of file `path` as one error in file order (by line and column; those
+    /// without a place last, as found): the one alone where there is one.
+    pub fn in_file_order(path: &std::path::Path, mut errors: Vec<Error>) -> Self {
+        errors.sort_by_key(|e| match e {
+            Error::Config { line, column, .. } => (*line, *column),
+            _ => (usize::MAX, usize::MAX),
+        });
+        match errors.len() {
+            1 => errors.remove(0),
+            _ => Error::InFile {
+                path: path.to_path_buf(),
+                errors,
+            },
         }
     }
 
@@ -211,18 +260,95 @@ impl Error {
     }
 }
 
+/// What kind of fault an [`Error`] is, for a face that answers with a status: an HTTP code,
+/// an exit code, an exception class.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Fault {
+    /// The question is wrong: a value out of range, an unknown key, settings that conflict,
+    /// a model that cannot answer this scene. Ask again with what the reason says.
+    Input,
+    /// The question is fine but over a limit on its cost (memory, CPU time): lower what the
+    /// key sets.
+    Cost,
+    /// A file could not be read or written.
+    Io,
+    /// The tool's own fault: a drawing, encoding or solver failure, a defect.
+    Internal,
+}
+
+/// An [`Error`] as a face hands it to its user: the key at fault, the value given, and the
+/// reason in full, with the [`Fault`] that decides its status.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Refusal {
+    /// The setting at fault, as the settings name it (`radius_mm`, `chart.x_axis.count`).
+    pub key: Option<String>,
+    /// The value as given, cut to a readable length.
+    pub value: Option<String>,
+    /// The whole message: what is wrong and what to give instead.
+    pub reason: String,
+    /// What kind of fault.
+    pub fault: Fault,
+}
+
+impl Error {
+    /// What kind of fault this is.
+    pub fn fault(&self) -> Fault {
+        match self {
+            Error::InvalidValue { .. }
+            | Error::Config { .. }
+            | Error::Refused { .. }
+            | Error::UnknownKey { .. }
+            | Error::Conflict { .. }
+            | Error::ModelFailed { .. } => Fault::Input,
+            Error::TooLarge { .. } | Error::TooLong { .. } => Fault::Cost,
+            Error::Io { .. }
+            | Error::UnsafeOutput { .. }
+            | Error::NoManifest { .. }
+            | Error::OutputTwice { .. } => Fault::Io,
+            Error::SolverRefused { .. }
+            | Error::Draw { .. }
+            | Error::Encode { .. }
+            | Error::Defect(_) => Fault::Internal,
+            // A file's mistakes are input (a base file that does not load comes alone).
+            Error::InFile { errors, .. } => errors.first().map_or(Fault::Input, Error::fault),
+        }
+    }
+
+    /// This error as its user is told it: key, value, reason.
+    pub fn refusal(&self) -> Refusal {
+        let (key, value) = match self {
+            Error::InvalidValue { key, value, .. } => (Some(key.clone()), Some(value.clone())),
+            Error::Refused { key, .. }
+            | Error::UnknownKey { key, .. }
+            | Error::TooLarge { key, .. }
+            | Error::TooLong { key, .. } => (Some(key.clone()), None),
+            Error::Conflict { flag, .. } => (Some(flag.to_string()), None),
+            _ => (None, None),
+        };
+        Refusal {
+            key,
+            value,
+            reason: self.to_string(),
+            fault: self.fault(),
+        }
+    }
+}
+
 /// Values quoted in messages are cut to this many characters: a message stays one readable line
 /// even when the value is a 50 MB string.
 pub const QUOTE_MAX_CHARS: usize = 60;
 
 /// `s` whole if short, else its first [`QUOTE_MAX_CHARS`] characters, an ellipsis and the full
-/// length.
+/// length. A value is one token of a one-line message: a newline or tab in it is escaped too
+/// ([`escape_controls`]).
 pub fn cut(s: &str) -> String {
     let s = &short_numbers(s);
-    match s.char_indices().nth(QUOTE_MAX_CHARS) {
+    let shown = match s.char_indices().nth(QUOTE_MAX_CHARS) {
         None => s.to_string(),
         Some((end, _)) => format!("{}... ({} bytes in all)", &s[..end], s.len()),
-    }
+    };
+    escape_controls(&shown, false).into_owned()
 }
 
 /// A number printed in full is longer than this (f64's Display writes 1e300 with 301 digits).
@@ -255,12 +381,67 @@ fn short_numbers(s: &str) -> String {
     out
 }
 
+/// `path` as a message shows it, on one line: each control character (a newline and a tab
+/// too) written as an escape ([`escape_controls`]).
+pub fn path_text(path: &Path) -> String {
+    escape_controls(&path.display().to_string(), false).into_owned()
+}
+
+/// Whether `c` is written as an escape: C0 and C1 controls (but newline and tab where
+/// `keep_lines`), DEL, and the bidirectional embeddings, overrides and isolates
+/// (U+202A-U+202E, U+2066-U+2069).
+fn escaped(c: char, keep_lines: bool) -> bool {
+    (c.is_control() && !(keep_lines && (c == '\n' || c == '\t')))
+        || ('\u{202a}'..='\u{202e}').contains(&c)
+        || ('\u{2066}'..='\u{2069}').contains(&c)
+}
+
+/// Text bound for a terminal with each character [`escaped`] written as Rust writes it
+/// (`\u{1b}`), the rest as it is; borrowed when nothing needs it. File names, paths, scene
+/// titles and values a user typed are echoed in answers and messages: a control character
+/// among them (`ESC [ 2 J` in a scene file's name clears the screen, `ESC ] 52` writes the
+/// clipboard) reached the terminal raw, and the bidirectional controls reorder what a line
+/// shows.
+pub(crate) fn escape_controls(text: &str, keep_lines: bool) -> Cow<'_, str> {
+    if !text.chars().any(|c| escaped(c, keep_lines)) {
+        return Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len() + 16);
+    for c in text.chars() {
+        if escaped(c, keep_lines) {
+            out.extend(c.escape_unicode());
+        } else {
+            out.push(c);
+        }
+    }
+    Cow::Owned(out)
+}
+
 /// Result with [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `render jam-probability --set chart.x_min_mm=-1e308` said `(x_min_mm is
+    /// -1000...0)` with 309 digits, and a parser's message quoted `floating point
+    /// 1000...0.0`: a reason's numbers read in exponent form as a value's do.
+    #[test]
+    fn numbers_in_a_reason_are_short() {
+        let e = Error::invalid("chart.x_max_mm", 100.0, format!("x_min_mm is {}", -1e308));
+        assert_eq!(
+            e.to_string(),
+            "invalid chart.x_max_mm = 100: x_min_mm is -1e308"
+        );
+        let serde = format!("invalid type: floating point `{:.1}`, expected u32", 1e308);
+        let e = Error::invalid("--set", "size.width_px=1e308", serde);
+        assert!(
+            e.to_string()
+                .ends_with("floating point `1e308`, expected u32"),
+            "{e}"
+        );
+    }
 
     #[test]
     fn long_values_are_cut_short_ones_kept() {

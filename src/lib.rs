@@ -121,6 +121,7 @@
 //! bit-identical for any thread count.
 
 #![warn(missing_docs)]
+#![warn(unnameable_types)]
 
 // The unit tests share fixtures with the integration tests, which name the crate `jamchart`.
 #[cfg(test)]
@@ -150,8 +151,8 @@ mod cli;
 mod config;
 mod csv_out;
 mod error;
-mod figures;
-mod grid;
+pub mod figures;
+pub mod grid;
 mod limits;
 mod numbers;
 mod paper;
@@ -159,7 +160,7 @@ mod paper;
 #[cfg(feature = "python")]
 mod python;
 mod scene;
-mod study;
+pub mod study;
 
 // The models, each with its settings and its own answer, and the port that runs them.
 pub mod dynamics;
@@ -168,9 +169,12 @@ pub mod models;
 pub mod statics;
 
 // The other questions of a scene, and the charts.
+pub mod ask;
 pub mod charts;
 pub mod design;
 pub mod locator;
+#[cfg(feature = "serve")]
+pub mod serve;
 pub mod uncertain;
 
 #[doc = include_str!("guide.md")]
@@ -178,24 +182,22 @@ pub mod guide {}
 
 // Where a library user or a binding starts: the scene, the port with its one solution type,
 // the errors.
-pub use error::{Error, Result};
+pub use config::Config;
+pub use error::{Error, Fault, Refusal, Result};
+pub use limits::Budget;
 pub use models::{Detail, ModelKind, ModelSpec, OutsideModel, Solution, solve, solve_column};
-pub use scene::{JamStatus, SceneParams};
+pub use scene::{JamStatus, Param, SceneParams};
+pub use settings::{Numbers, SettingDoc, documented as settings_documented};
 
 /// The `jamchart` command line (`src/main.rs` calls it): not a library entry.
 #[doc(hidden)]
 pub use cli::main as run_cli;
 
 /// What the benchmarks (`benches/`) time or compare that no public entry reaches on its own:
-/// the kernels under the charts (the statics margin over a map, the symmetric V's capacity map),
 /// one minimum-norm program, a range's two corners, and the reference solvers the fast paths
 /// are checked against. Not a library entry: it changes with the code it times.
 #[doc(hidden)]
 pub mod bench_support {
-    pub use crate::grid::{
-        CapacityCells, Grid, GridAxis, GridParam, GridRequest, LocatorParam, Quantity,
-        capacity_map, evaluate, statics_point,
-    };
     pub use crate::locator::reference::capacity_clarabel;
     pub use crate::locator::symmetric::applies as closed_form_applies;
     pub use crate::minnorm::contact::{Contact, ContactProblem, Joint, Space, Wrench};

@@ -205,16 +205,54 @@ pub fn per_sample(spec: &crate::models::ModelSpec) -> PerSample {
 /// were accepted (`solve --model min-norm --samples 10000000`).
 pub const MAX_SAMPLED_CPU_S: f64 = 600.0;
 
+/// A tighter bound on one computation than the crate's own limits, for a caller that shares
+/// its machine: a server answering many clients gives each request a [`Budget`] so that no
+/// one question may take the minutes and the gigabyte a command-line user may ask for.
+///
+/// Set for the calling thread by `limits::within`; the checks that run before any work is
+/// done (of a sampled answer's time, of a chart's memory) run on the thread that asked, so the bound holds for
+/// the parallel work that follows.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Budget {
+    /// CPU time a sampled answer may be estimated to take, s.
+    pub cpu_s: f64,
+    /// Memory one computation may be estimated to take, bytes.
+    pub memory_bytes: u64,
+    /// Who sets it, as a phrase after the figure: `" (the server's limit per request)"`.
+    pub source: &'static str,
+}
+
+thread_local! {
+    static BUDGET: std::cell::Cell<Option<Budget>> = const { std::cell::Cell::new(None) };
+}
+
+/// Runs `f` with `budget` bounding what the checks of this module accept on this thread (the
+/// lower of the budget and the crate's limits), then restores the bound before.
+pub fn within<T>(budget: Budget, f: impl FnOnce() -> T) -> T {
+    struct Restore(Option<Budget>);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            BUDGET.set(self.0);
+        }
+    }
+    let _restore = Restore(BUDGET.replace(Some(budget)));
+    f()
+}
+
 /// The estimated CPU time of `samples` samples of `per`, in s.
 pub fn sampled_cpu_s(samples: u64, per: PerSample) -> f64 {
     samples as f64 * per.cpu_s
 }
 
-/// Refuses `samples` samples of `per` whose estimated CPU time exceeds [`MAX_SAMPLED_CPU_S`];
-/// `key` names the setting to lower.
+/// Refuses `samples` samples of `per` whose estimated CPU time exceeds [`MAX_SAMPLED_CPU_S`]
+/// (or the [`Budget`] of the calling thread, when lower); `key` names the setting to lower.
 pub fn check_samples(key: &str, samples: u64, per: PerSample) -> Result<()> {
     let estimate_s = sampled_cpu_s(samples, per);
-    if estimate_s <= MAX_SAMPLED_CPU_S {
+    let (limit_s, limit_source) = match BUDGET.get() {
+        Some(b) if b.cpu_s < MAX_SAMPLED_CPU_S => (b.cpu_s, b.source),
+        _ => (MAX_SAMPLED_CPU_S, ""),
+    };
+    if estimate_s <= limit_s {
         return Ok(());
     }
     Err(Error::TooLong {
@@ -225,7 +263,8 @@ pub fn check_samples(key: &str, samples: u64, per: PerSample) -> Result<()> {
             human_seconds(per.cpu_s)
         ),
         estimate_s,
-        limit_s: MAX_SAMPLED_CPU_S,
+        limit_s,
+        limit_source,
     })
 }
 
@@ -298,6 +337,10 @@ pub fn memory_limit_bytes() -> (u64, &'static str) {
         (ok && r.rlim_cur != libc::RLIM_INFINITY).then_some(r.rlim_cur / 2)
     };
     let limits = [
+        (
+            BUDGET.get().map(|b| b.memory_bytes),
+            BUDGET.get().map_or("", |b| b.source),
+        ),
         (
             soft(libc::RLIMIT_AS),
             " (half the address-space limit, ulimit -v)",

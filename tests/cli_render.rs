@@ -128,7 +128,7 @@ fn bad_scene_file_names_file_line_and_key() {
     let err = stderr(&out);
     // The chart's own mistake comes before the missing base, named with its line and path.
     assert!(
-        err.contains("bad.toml:5:7: chart.axs = 1: unknown field `axs`"),
+        err.contains("bad.toml:5:7: chart.axs = 1: unknown key; did you mean axis?"),
         "{err}"
     );
 }
@@ -278,6 +278,49 @@ fn second_render_into_the_folder_keeps_the_other_charts_in_the_gallery() {
             "{scene}"
         );
     }
+}
+
+/// Regression: writers into one folder at once lost gallery entries. Six sweeps and a render
+/// each built index.html from the folder as they found it, and the last page written listed
+/// 1 to 6 of the 8 charts. Each now builds and writes the page under the folder's lock; the
+/// test widens the window between building and writing (the staging pause) so that every
+/// writer would build its page before any wrote one.
+#[test]
+fn writers_into_one_folder_at_once_all_join_its_gallery() {
+    let dir = tempfile::tempdir().unwrap();
+    let sweeps: Vec<String> = (0..6).map(|i| format!("s{i}")).collect();
+    let run = |args: Vec<String>| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_jamchart"))
+            .args(args)
+            .current_dir(dir.path())
+            .env("JAMCHART_TEST_PAUSE_AFTER_STAGING_MS", "300")
+            .env("RAYON_NUM_THREADS", "1")
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap()
+    };
+    let mut children: Vec<std::process::Child> = sweeps
+        .iter()
+        .map(|name| {
+            let args = ["sweep", "mu=0.2:0.6:5", "--name", name, "--out", "o"];
+            run(args.iter().map(|s| s.to_string()).collect())
+        })
+        .collect();
+    let render = ["render", "fig7a", "fig7b", "--out", "o", "--scenes-dir"];
+    let mut args: Vec<String> = render.iter().map(|s| s.to_string()).collect();
+    args.push(scenes_dir());
+    children.push(run(args));
+    for c in children {
+        let out = c.wait_with_output().unwrap();
+        assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    }
+    let index = std::fs::read_to_string(dir.path().join("o/index.html")).unwrap();
+    let names = sweeps.iter().map(String::as_str).chain(["fig7a", "fig7b"]);
+    let missing: Vec<&str> = names
+        .filter(|n| !index.contains(&format!("<section id=\"{n}\">")))
+        .collect();
+    assert!(missing.is_empty(), "missing from index.html: {missing:?}");
 }
 
 /// Regression: a wrong or invalid `[scene]` key in a scene file named no file or

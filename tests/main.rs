@@ -32,7 +32,10 @@ mod hostile;
 mod names_agree;
 mod palm_offset;
 mod python_package;
+mod questions;
 mod range_promise;
 mod readme;
 mod scene_docs;
+#[cfg(feature = "serve")]
+mod serve;
 mod uncertain_dist;

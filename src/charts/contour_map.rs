@@ -24,8 +24,8 @@ use crate::figures::contour_map::{
     ContourMapData, ContourMapSettings, LOWEST_BAND_EDGE, dense_x_jam,
 };
 use crate::figures::contours::{Paths, axis_value};
-use crate::grid::GridParam;
 use crate::scene::JamStatus;
+use crate::scene::Param;
 
 /// Width of the theta_jam iso-lines in px: as wide as the settle line they may run on
 /// ([`LineKind::Dashed`]), so that drawn over it they stay visible.
@@ -339,8 +339,8 @@ impl ContourMap {
             self.data.settings.y_axis.param,
         ];
         let one_mu = self.data.params.mu_ground == self.data.params.mu_palm
-            && !axes.contains(&GridParam::MuGround)
-            && !axes.contains(&GridParam::MuPalm);
+            && !axes.contains(&Param::MuGround)
+            && !axes.contains(&Param::MuPalm);
         if one_mu {
             "r/μ"
         } else {

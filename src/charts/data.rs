@@ -52,7 +52,7 @@ impl DataFile {
         }
     }
 
-    /// CSV bytes (see [`crate::csv_out`]).
+    /// CSV bytes, numbers in plain decimals.
     pub fn csv(bytes: Vec<u8>) -> Self {
         DataFile {
             extension: "csv",

@@ -307,7 +307,9 @@
   }
 
   var charts = {};
-  document.querySelectorAll("figure.readoff").forEach(function (fig) {
+  // Makes `fig` (a figure.readoff: its picture, data, overlay, live line and pins) read off
+  // under the pointer. The live design page calls it again each time it draws a new chart.
+  function attach(fig) {
     var chart = {
       data: JSON.parse(fig.querySelector("script.readoff-data").textContent),
       img: fig.querySelector("img"),
@@ -337,7 +339,10 @@
       show(chart, r, a[1]);
       pin(chart, r);
     });
-  });
+    return chart;
+  }
+  document.querySelectorAll("figure.readoff").forEach(attach);
+  window.jamchartReadOff = { attach: attach, read: read };
 
   // The test hooks (see the top of this file), once the pictures are laid out.
   window.addEventListener("load", function () {

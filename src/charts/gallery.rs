@@ -150,7 +150,7 @@ pub fn index_html(entries: &[Entry], previous: Option<&str>, files: &[String]) -
 }
 
 /// The read-off script, inline so that the page works from disk with nothing fetched.
-const READ_OFF_JS: &str = include_str!("gallery.js");
+pub(crate) const READ_OFF_JS: &str = include_str!("gallery.js");
 
 /// The chart sections of a page written by [`index_html`]: name and HTML, markers included.
 fn sections_of(page: &str) -> Vec<(String, String)> {

@@ -13,7 +13,8 @@ use super::readoff;
 use super::style::{self, LineKind};
 use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, Tag};
 use crate::figures::jam_probability::{JamProbabilityData, JamProbabilitySettings};
-use crate::grid::{AxisScale, GridParam};
+use crate::grid::AxisScale;
+use crate::scene::Param;
 use crate::uncertain::dist::{Before, DistMethod};
 
 /// A probability chart ready to draw.
@@ -206,18 +207,18 @@ impl JamProbability {
     /// The source and the distribution, then the scene's other parameters.
     fn subtitle(&self) -> String {
         let d = &self.data;
-        let given: Vec<GridParam> = d
+        let given: Vec<Param> = d
             .distribution
             .inputs
             .iter()
-            .filter_map(|i| GridParam::named(i.name))
+            .filter_map(|i| Param::named(i.name))
             .collect();
         let each: Vec<String> = d
             .distribution
             .inputs
             .iter()
             .map(|i| {
-                let symbol = GridParam::named(i.name).map_or(i.name, super::param_symbol);
+                let symbol = Param::named(i.name).map_or(i.name, super::param_symbol);
                 format!("{symbol} ~ {}", i.value)
             })
             .collect();

@@ -188,6 +188,16 @@ macro_rules! chart_kinds {
                     $(Chart::$variant(c) => c.data_file(scene, title),)+
                 }
             }
+
+            /// The figure's typed data as its serde form, every number as computed (the data
+            /// file rounds them to 7 significant digits).
+            pub fn data_value(&self) -> serde_json::Value {
+                match self {
+                    $(Chart::$variant(c) => {
+                        serde_json::to_value(c.data()).expect("figure data serialises")
+                    })+
+                }
+            }
         }
     };
 }

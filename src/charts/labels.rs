@@ -1,26 +1,26 @@
 //! The words on a chart: each scene parameter's symbol, unit and axis label, and the subtitle
 //! line naming a scene's parameters.
 
-use crate::grid::GridParam;
+use crate::scene::Param;
 use crate::scene::SceneParams;
 
 /// The symbol of a scene parameter in labels, e.g. `F` for force_n (its declaration's).
-pub fn param_symbol(p: GridParam) -> &'static str {
+pub fn param_symbol(p: Param) -> &'static str {
     p.decl().symbol
 }
 
 /// The unit of a scene parameter in labels; `-` for the friction coefficients.
-pub fn param_unit(p: GridParam) -> &'static str {
+pub fn param_unit(p: Param) -> &'static str {
     p.decl().unit
 }
 
 /// Axis label of a scene parameter: quantity, symbol and unit. An alias names what it sets
 /// (`μ = μ_ground = μ_palm`).
-pub fn axis_label(p: GridParam) -> String {
+pub fn axis_label(p: Param) -> String {
     let d = p.decl();
     let mut symbol = d.symbol.to_string();
     for k in d.sets {
-        if let Some(set) = GridParam::named(k) {
+        if let Some(set) = Param::named(k) {
             symbol = format!("{symbol} = {}", param_symbol(set));
         }
     }
@@ -28,7 +28,7 @@ pub fn axis_label(p: GridParam) -> String {
 }
 
 /// `symbol = value unit`, e.g. `F = 200 N`; a dimensionless one without unit (`μ = 0.27`).
-pub fn param_value(p: GridParam, v: f64) -> String {
+pub fn param_value(p: Param, v: f64) -> String {
     match param_unit(p) {
         "-" => format!("{} = {v}", param_symbol(p)),
         unit => format!("{} = {v} {unit}", param_symbol(p)),
@@ -37,12 +37,12 @@ pub fn param_value(p: GridParam, v: f64) -> String {
 
 /// One line naming the scene's parameters for under the title, without the `swept` ones (they
 /// are on an axis).
-pub fn scene_subtitle(p: &SceneParams, swept: &[GridParam]) -> String {
+pub fn scene_subtitle(p: &SceneParams, swept: &[Param]) -> String {
     scene_subtitle_with("closed-form statics (corrected Eq. 1)", p, swept)
 }
 
 /// [`scene_subtitle`] naming another source than the closed form, e.g. "simulation, ...".
-pub fn scene_subtitle_with(source: &str, p: &SceneParams, swept: &[GridParam]) -> String {
+pub fn scene_subtitle_with(source: &str, p: &SceneParams, swept: &[Param]) -> String {
     scene_subtitle_given(source, p, swept, &[])
 }
 
@@ -51,36 +51,35 @@ pub fn scene_subtitle_with(source: &str, p: &SceneParams, swept: &[GridParam]) -
 pub fn scene_subtitle_given(
     source: &str,
     p: &SceneParams,
-    swept: &[GridParam],
-    given: &[(GridParam, String)],
+    swept: &[Param],
+    given: &[(Param, String)],
 ) -> String {
-    let own = |k: GridParam| given.iter().find(|(g, _)| *g == k).map(|(_, t)| t.clone());
-    let split = own(GridParam::MuGround).is_some() || own(GridParam::MuPalm).is_some();
-    let mu = match own(GridParam::Mu) {
+    let own = |k: Param| given.iter().find(|(g, _)| *g == k).map(|(_, t)| t.clone());
+    let split = own(Param::MuGround).is_some() || own(Param::MuPalm).is_some();
+    let mu = match own(Param::Mu) {
         Some(t) => t,
         None if p.mu_ground == p.mu_palm && !split => format!("μ = {}", p.mu_ground),
         None => format!(
             "{}, {}",
-            own(GridParam::MuGround).unwrap_or_else(|| format!("μ_ground = {}", p.mu_ground)),
-            own(GridParam::MuPalm).unwrap_or_else(|| format!("μ_palm = {}", p.mu_palm))
+            own(Param::MuGround).unwrap_or_else(|| format!("μ_ground = {}", p.mu_ground)),
+            own(Param::MuPalm).unwrap_or_else(|| format!("μ_palm = {}", p.mu_palm))
         ),
     };
     let shown = [
-        GridParam::MassKg,
-        GridParam::RadiusMm,
-        GridParam::ForceN,
-        GridParam::GravityMS2,
+        Param::MassKg,
+        Param::RadiusMm,
+        Param::ForceN,
+        Param::GravityMS2,
     ];
     // The palm's offset only where it is not the paper's 0.
-    let offset = (p.palm_offset_mm != 0.0).then_some(GridParam::PalmOffsetMm);
-    let parts = std::iter::once((GridParam::Mu, mu)).chain(
-        shown.into_iter().chain(offset).filter_map(|k| {
+    let offset = (p.palm_offset_mm != 0.0).then_some(Param::PalmOffsetMm);
+    let parts =
+        std::iter::once((Param::Mu, mu)).chain(shown.into_iter().chain(offset).filter_map(|k| {
             k.get(p)
                 .map(|v| (k, own(k).unwrap_or_else(|| param_value(k, v))))
-        }),
-    );
+        }));
     // The palm's length: where its reach ends curves and shades maps.
-    let palm = (!swept.contains(&GridParam::PalmLengthMm))
+    let palm = (!swept.contains(&Param::PalmLengthMm))
         .then(|| format!("palm L = {} mm", p.palm_length_mm));
     let kept: Vec<String> = parts
         .filter(|(k, _)| !swept.contains(k))

@@ -26,12 +26,14 @@
 //! - A model over a map (jam map boundary and read-off, contour map): nothing to do here. Maps
 //!   name any model of the port ([`crate::models::ModelKind`]: `model = "min_norm"`) and call
 //!   it per cell through `models::Models::solve`.
-//! - A new chart kind: a module with its `[chart]` settings (implementing `kinds::Kind`: name,
-//!   data format, checks, `compute`) and its computed chart (implementing `kinds::Drawn`: a
-//!   backend-generic `draw` and its data; x-y panels through `xy::Figure`, as `convergence`
-//!   and `time_series` do), then one line in the list of `kinds.rs`, which generates
-//!   [`ChartSpec`], `Chart` and their dispatch. A scene `charts/<name>.toml` is built in by
-//!   `build.rs`; its keys go in charts/README.md.
+//! - A new chart kind: what it computes in `figures/<kind>.rs` (its `[chart]` settings,
+//!   implementing `figures::Figure` with its checks and `compute` through the model
+//!   port, and a `Serialize` data type implementing `figures::FigureData`, whose serde
+//!   form is the data file), how it looks in `charts/<kind>.rs` (implementing `picture::Picture`:
+//!   a backend-generic `draw` of that data and its gallery read-off; x-y panels through `xy`, as
+//!   `convergence` and `time_series` do), then one line in the list of `kinds.rs`, which
+//!   generates [`ChartSpec`], `Chart` and their dispatch. A scene `charts/<name>.toml` is built
+//!   in by `build.rs`; its keys go in charts/README.md (`tests/scene_docs.rs` checks it).
 //!
 //! Beside the kinds: `axes` draws frames and ticks that `ticks` places, `colorbar` the colour bar of a
 //! filled map, `labels` words
@@ -88,13 +90,18 @@ pub(crate) use crate::figures::contours::{grid_lines, grid_polygons};
 use axes::DrawResult;
 pub(crate) use builtin::SCENE_KEYS;
 pub use builtin::scene_names as builtin_scene_names;
-pub(crate) use data::DataFile;
+pub(crate) use gallery::READ_OFF_JS as GALLERY_JS;
+
+pub use data::DataFile;
 pub(crate) use kinds::Chart;
 pub use kinds::ChartSpec;
 pub(crate) use labels::{
     axis_label, param_symbol, param_unit, scene_subtitle, scene_subtitle_with,
 };
 pub use output::Paper;
+pub use overrides::Setting;
+pub use print::Ink;
+pub use spec::Size;
 pub(crate) use spec::scene_files;
 pub use spec::{Scene, SceneSource, load_scene, scene_names};
 
@@ -153,6 +160,33 @@ pub struct Rendered {
     /// What the gallery's read-off needs, as compact JSON (see `charts/readoff.rs`); None for kinds
     /// without a read-off.
     pub read_off: Option<String>,
+    /// The computed figure the pictures and files were made from.
+    pub computed: Computed,
+}
+
+/// A computed chart: the figure's typed data, as its kind computed it.
+#[derive(Clone)]
+pub struct Computed(std::sync::Arc<Chart>);
+
+impl Computed {
+    /// The figure's typed data as its serde form, every number as computed (the data file
+    /// rounds them to 7 significant digits): what a face hands its user without reading the
+    /// file back.
+    pub fn data(&self) -> serde_json::Value {
+        self.0.data_value()
+    }
+}
+
+impl std::fmt::Debug for Computed {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Computed(..)")
+    }
+}
+
+impl PartialEq for Computed {
+    fn eq(&self, other: &Self) -> bool {
+        std::sync::Arc::ptr_eq(&self.0, &other.0) || self.data() == other.data()
+    }
 }
 
 /// A map's cells CSV, made from its computed chart when it is written.
@@ -311,6 +345,7 @@ pub(crate) fn render_with(scene: &Scene, formats: Formats, made: &Made) -> Resul
         data,
         cells,
         read_off,
+        computed: Computed(chart),
     })
 }
 

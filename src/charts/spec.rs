@@ -31,9 +31,9 @@ use super::print::Ink;
 use crate::config::{self, Config, Refusal, keyed, parse_toml};
 use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
-use crate::grid::GridParam;
 use crate::limits::MAX_TITLE_CHARS;
 use crate::minnorm::MinNormSettings;
+use crate::scene::Param;
 use crate::scene::SceneParams;
 
 /// Picture size in px, and the scale of everything drawn on it.
@@ -362,10 +362,14 @@ fn parse_scene(
                 ),
             )
         }
-    })?;
-    let base = match &file.base {
-        Some(b) => Config::load(&dir.join(b))?,
-        None => super::builtin::paper_config(),
+    });
+    let base = match (&file.base, &chart) {
+        (Some(b), Ok(_)) => Config::load(&dir.join(b))?,
+        // The chart's own mistake comes before a base that does not load.
+        (Some(b), Err(_)) => {
+            Config::load(&dir.join(b)).unwrap_or_else(|_| super::builtin::paper_config())
+        }
+        (None, _) => super::builtin::paper_config(),
     };
     // A refused or invalid key written in this file is named with its file, line and column
     // (a key from --set or the base file keeps its own message).
@@ -396,16 +400,31 @@ fn parse_scene(
             None => e,
         }
     };
-    let params: SceneParams = config::overlay(&base.scene, &file.scene, "scene")
+    let params: Result<SceneParams> = config::overlay(&base.scene, &file.scene, "scene")
         .and_then(|p: SceneParams| p.validate().map(|_| p))
-        .map_err(|e| locate("scene", e))?;
-    let min_norm: MinNormSettings = config::overlay(&base.min_norm, &file.min_norm, "min_norm")
-        .and_then(|m: MinNormSettings| m.validate().map(|_| m))
-        .map_err(|e| locate("min_norm", e))?;
-    let dynamics: DynamicsParams = config::overlay(&base.dynamics, &file.dynamics, "dynamics")
-        .and_then(|d: DynamicsParams| d.validate().map(|_| d))
-        .map_err(|e| locate("dynamics", e))?;
-    file.size.validate().map_err(|e| locate("size", e))?;
+        .map_err(|e| locate("scene", e));
+    let min_norm: Result<MinNormSettings> =
+        config::overlay(&base.min_norm, &file.min_norm, "min_norm")
+            .and_then(|m: MinNormSettings| m.validate().map(|_| m))
+            .map_err(|e| locate("min_norm", e));
+    let dynamics: Result<DynamicsParams> =
+        config::overlay(&base.dynamics, &file.dynamics, "dynamics")
+            .and_then(|d: DynamicsParams| d.validate().map(|_| d))
+            .map_err(|e| locate("dynamics", e));
+    let size = file.size.validate().map_err(|e| locate("size", e));
+    // Every section's mistake in one report, in file order (a later missing x_axis was
+    // reported before an earlier typo in [scene]).
+    let mut errors = Vec::new();
+    let chart = ok_or_keep(chart, &mut errors);
+    let params = ok_or_keep(params, &mut errors);
+    let min_norm = ok_or_keep(min_norm, &mut errors);
+    let dynamics = ok_or_keep(dynamics, &mut errors);
+    ok_or_keep(size, &mut errors);
+    let (Some(chart), Some(params), Some(min_norm), Some(dynamics), true) =
+        (chart, params, min_norm, dynamics, errors.is_empty())
+    else {
+        return Err(Error::in_file_order(path, errors));
+    };
     let mut scene = Scene {
         name,
         title: file.title,
@@ -420,6 +439,11 @@ fn parse_scene(
     };
     scene.validate_chart()?;
     Ok(scene)
+}
+
+/// `r`'s value, or None with its error kept in `errors`.
+fn ok_or_keep<T>(r: Result<T>, errors: &mut Vec<Error>) -> Option<T> {
+    r.map_err(|e| errors.push(e)).ok()
 }
 
 impl Scene {
@@ -440,7 +464,7 @@ impl Scene {
         settings
             .iter()
             .filter_map(|s| {
-                let param = GridParam::named(&s.key)?;
+                let param = Param::named(&s.key)?;
                 if !self.chart.takes_scene() {
                     return Some(format!(
                         "scene {} does not take --set {s}: a V-block chart has its own \
@@ -489,7 +513,7 @@ impl Scene {
             .chart
             .param_axes()
             .into_iter()
-            .find(|(_, a)| a.param == GridParam::Mu)
+            .find(|(_, a)| a.param == Param::Mu)
             && p.mu_ground != p.mu_palm
         {
             return Err(Error::invalid(
@@ -510,7 +534,7 @@ impl Scene {
 
 impl Scene {
     /// Checks the title: not blank (`--set title=` drew a chart without a heading) and at most
-    /// [`MAX_TITLE_CHARS`](crate::limits::MAX_TITLE_CHARS) characters.
+    /// [`crate::limits::MAX_TITLE_CHARS`] characters.
     fn validate_title(&self) -> Result<()> {
         let why = if self.title.trim().is_empty() {
             "a chart needs a title; write what it shows".to_string()
@@ -623,8 +647,62 @@ mod tests {
     fn unknown_chart_key_is_refused_with_its_line() {
         let msg = scene_error("title = \"t\"\n[chart]\nkind = \"sweep\"\npanls = []\n");
         assert!(
-            msg.starts_with("s.toml:4:9: chart.panls = []: unknown field `panls`"),
+            msg.starts_with("s.toml:4:9: chart.panls = []: unknown key; did you mean panels?"),
             "{msg}"
+        );
+    }
+
+    /// A scene file's mistakes came one at a time, and not in file order: a chart's mistake
+    /// was reported before an earlier typo in [scene]. Every section is read and its mistake
+    /// reported, by line.
+    #[test]
+    fn every_sections_mistake_is_reported_in_file_order() {
+        let msg = scene_error(
+            "title = \"t\"\n[scene]\nraduis_mm = 12.5\n[chart]\nkind = \"contour_map\"\n\
+             model = \"statix\"\n\
+             y_axis = { param = \"mu\", min = 0.1, max = 0.3, count = 5 }\n",
+        );
+        let lines: Vec<&str> = msg.lines().collect();
+        assert_eq!(lines[0], "2 mistakes in s.toml:", "{msg}");
+        assert!(
+            lines[1].starts_with("  s.toml:3:13: scene.raduis_mm"),
+            "{msg}"
+        );
+        assert!(lines[2].starts_with("  s.toml:6:9: chart.model"), "{msg}");
+    }
+
+    /// Scene-file errors spoke serde: "unknown field `raduis_mm`, expected one of ..." (without
+    /// `mu`, which sets both frictions), "invalid type: string \"heavy\", expected f64",
+    /// "unknown variant `statix`, expected one of ...". They speak of keys, numbers and the
+    /// words to choose from, with the nearest to a typo.
+    #[test]
+    fn scene_file_errors_speak_of_keys_numbers_and_choices() {
+        let map = "[chart]\nkind = \"contour_map\"\n\
+                   x_axis = { param = \"force_n\", min = 10.0, max = 100.0, count = 5 }\n\
+                   y_axis = { param = \"mu\", min = 0.1, max = 0.3, count = 5 }\n";
+        let typo = scene_error(&format!("title = \"t\"\n[scene]\nraduis_mm = 12.5\n{map}"));
+        assert!(
+            typo.starts_with(
+                "s.toml:3:13: scene.raduis_mm = 12.5: unknown key; did you mean \
+                 radius_mm? The keys here: mu, "
+            ),
+            "{typo}"
+        );
+        assert!(typo.contains("mu_ground, mu_palm, radius_mm"), "{typo}");
+        let heavy = scene_error(&format!(
+            "title = \"t\"\n[scene]\nmass_kg = \"heavy\"\n{map}"
+        ));
+        assert!(
+            heavy.ends_with(
+                "scene.mass_kg = \"heavy\": expected a number, found the text \"heavy\""
+            ),
+            "{heavy}"
+        );
+        let model = scene_error(&format!("title = \"t\"\n{map}model = \"statix\"\n"));
+        assert!(
+            model.contains("chart.model = \"statix\": statix is not one of statics, ")
+                && model.ends_with("; did you mean statics?"),
+            "{model}"
         );
     }
 
@@ -639,7 +717,8 @@ mod tests {
         let cases = [
             (
                 map,
-                "s.toml:4:56: chart.x_axis.count = \"ten\": invalid type: string",
+                "s.toml:4:56: chart.x_axis.count = \"ten\": expected a whole number, found the \
+                 text \"ten\"",
             ),
             (
                 "kind = \"sweep\"\nx_axis = [1, 2]\n",

@@ -19,8 +19,9 @@ use super::{axis_label, param_symbol, param_unit};
 use crate::figures::band::BandRow;
 use crate::figures::sweep::{SweepData, SweepSettings};
 use crate::figures::sweep_layers::{Curve, Series, SeriesPoint, SweepLayer, SweepPanel};
-use crate::grid::{AxisScale, GridParam};
+use crate::grid::AxisScale;
 use crate::scene::JamStatus;
+use crate::scene::Param;
 
 /// How a series is drawn.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -195,7 +196,7 @@ impl Sweep {
         let l = self.data.params.palm_length_mm;
         let shown = panel == SweepPanel::XJamMm
             && self.data.params.palm_offset_mm == 0.0
-            && self.data.settings.x_axis.param != GridParam::PalmLengthMm
+            && self.data.settings.x_axis.param != Param::PalmLengthMm
             && (y.min..=y.max).contains(&l);
         if !shown {
             return Ok(Vec::new());
@@ -410,7 +411,7 @@ impl Sweep {
 
     /// The band's inputs as the subtitle names them, each in place of its nominal value:
     /// `μ = 0.12 to 0.3 (curves at 0.21)`.
-    fn given(&self) -> Vec<(GridParam, String)> {
+    fn given(&self) -> Vec<(Param, String)> {
         let Some(band) = &self.data.settings.band else {
             return Vec::new();
         };
@@ -418,7 +419,7 @@ impl Sweep {
         band.inputs
             .iter()
             .filter_map(|i| {
-                let k = GridParam::named(&i.name)?;
+                let k = Param::named(&i.name)?;
                 let unit = match param_unit(k) {
                     "-" => String::new(),
                     u => format!(" {u}"),
@@ -440,7 +441,7 @@ impl Sweep {
             .inputs
             .iter()
             .filter_map(|i| {
-                let k = GridParam::named(&i.name)?;
+                let k = Param::named(&i.name)?;
                 Some(super::labels::param_value(
                     k,
                     if earliest { i.earliest } else { i.latest },

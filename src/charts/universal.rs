@@ -26,9 +26,9 @@ use crate::figures::contours::{Paths, mask_rings};
 use crate::figures::universal::{
     RangeEnd, UniversalData, UniversalReadOff, UniversalSettings, cot_half, theta_field,
 };
-use crate::grid::GridParam;
 use crate::models::ModelKind;
 use crate::scene::JamStatus;
+use crate::scene::Param;
 
 /// Shading of the cells held at the start: a light grey under the bands' colours.
 const HELD_FILL: RGBColor = RGBColor(200, 200, 200);
@@ -155,8 +155,8 @@ impl Picture for Universal {
         let sub = format!(
             "closed-form statics (corrected Eq. 1) for any r, m, F and g{}, start at {}°",
             match xa.param {
-                GridParam::MuGround => format!(", μ_palm = {}", params.mu_palm),
-                GridParam::MuPalm => format!(", μ_ground = {}", params.mu_ground),
+                Param::MuGround => format!(", μ_palm = {}", params.mu_palm),
+                Param::MuPalm => format!(", μ_ground = {}", params.mu_ground),
                 _ => String::new(),
             },
             params.start_angle_deg
@@ -502,7 +502,7 @@ fn off_lines(at: (i32, i32), size: (u32, u32), lines: &[[(i32, i32); 2]]) -> Vec
 mod tests {
     use super::{Label, PxBox, move_off_lines};
     use crate::charts::{Formats, SceneSource, render};
-    use crate::grid::GridParam;
+    use crate::scene::Param;
     use serde_json::Value;
 
     /// The gallery's hover on the universal chart said `status = jams` at mu 0.12 for the 25 mm
@@ -534,7 +534,7 @@ mod tests {
         let (iy, at_ratio, _) = nearest(&g["y"], ratio);
         assert!((mu - 0.12).abs() < 0.01 && (at_ratio / ratio - 1.0).abs() < 0.05);
         let cell = |q: &str| g["cells"][q][iy * nx + ix].clone();
-        let q = GridParam::PushRatio.apply(GridParam::Mu.apply(scene.params, mu), at_ratio);
+        let q = Param::PushRatio.apply(Param::Mu.apply(scene.params, mu), at_ratio);
         let s = crate::statics::solve(&q);
         assert_eq!(s.status, crate::scene::JamStatus::BeyondReach);
         assert_eq!(cell("status"), "beyond_reach");

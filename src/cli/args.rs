@@ -47,7 +47,7 @@ impl SceneArgs {
     /// As [`SceneArgs::resolve`], with the ranges and distributions of `[scene]` (file, then
     /// flags) taken out: the config holds their nominal values.
     pub fn resolve_uncertain(&self, more: &[toml::Table]) -> Result<(Config, UncertainSet)> {
-        let (base, mut uncertain) = match &self.config {
+        let base = match &self.config {
             Some(path) => Config::load_uncertain(path)?,
             None => (Config::default(), UncertainSet::default()),
         };
@@ -55,12 +55,7 @@ impl SceneArgs {
         for m in more {
             crate::settings::merge(&mut over, m);
         }
-        if let Some(scene) = over.get_mut("scene").and_then(toml::Value::as_table_mut) {
-            let given = crate::uncertain::take(scene, crate::config::scene_decls())?;
-            uncertain.override_by(scene, given);
-        }
-        let config = base.overlay(&over)?;
-        config.validate()?;
+        let (config, uncertain) = crate::ask::palm_scene(base, over)?;
         super::warn(&config.scene.unit_warnings());
         Ok((config, uncertain))
     }
@@ -137,4 +132,66 @@ pub enum TableFormat {
     Csv,
     /// A JSON array of rows.
     Json,
+}
+
+/// Flags of `solve` for distributed inputs (ignored without one). Each takes a negative number
+/// as its value, to refuse it naming the flag (clap otherwise read `--samples -1` as an unknown
+/// flag `-1`).
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Uncertain inputs")]
+pub struct DistArgs {
+    /// Positions x (mm) for the probability that the disc jams before x (x_jam < x).
+    ///
+    /// With a distributed input (e.g. --mu normal(0.2,0.03)); a comma-separated list.
+    #[arg(long = flag!(crate::ask::DIST_KEYS, before_mm), value_name = "MM", value_delimiter = ',', value_parser = parse_f64,
+          allow_negative_numbers = true)]
+    pub before_mm: Vec<f64>,
+    /// Probabilities q in (0, 1) of the quantiles of x_jam printed with a distributed input.
+    #[arg(long = flag!(crate::ask::DIST_KEYS, quantiles), value_name = "Q", value_delimiter = ',', value_parser = parse_f64,
+          default_value = DEFAULT_QUANTILES, allow_negative_numbers = true)]
+    pub quantiles: Vec<f64>,
+    /// Monte Carlo samples where the answer is not exact.
+    #[arg(long = flag!(crate::ask::DIST_KEYS, samples), value_name = "N", long_help = samples_help(), value_parser = parse_count,
+          allow_negative_numbers = true)]
+    pub samples: Option<u64>,
+    /// Seed of the Monte Carlo samples: the same seed gives the same answer on any number of
+    /// threads.
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 1,
+        allow_negative_numbers = true
+    )]
+    pub seed: u64,
+}
+
+/// The quantiles printed unless --quantiles says otherwise: the question's default
+/// ([`crate::ask::DistAsk`]), written for clap.
+const DEFAULT_QUANTILES: &str = "0.05,0.5,0.95";
+
+/// The long help of --samples, with the counts of the code.
+fn samples_help() -> String {
+    format!(
+        "Monte Carlo samples where the answer is not exact (unset: {} for the \
+         statics, {} for min-norm and dynamics).\n\nThe statics are exact (the \
+         monotone map) where one distribution is the only uncertain input (no range beside it) \
+         and its support keeps some friction; several inputs or the other models are sampled, \
+         with 95 % intervals printed. At most {}.",
+        crate::ask::STATICS_SAMPLES,
+        crate::ask::MODEL_SAMPLES,
+        crate::uncertain::dist::MAX_SAMPLES
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    /// The flag's default is written out for clap's help; it must be the question's.
+    #[test]
+    fn the_default_quantiles_are_the_questions() {
+        let flag: Vec<f64> = super::DEFAULT_QUANTILES
+            .split(',')
+            .map(|q| q.parse().unwrap())
+            .collect();
+        assert_eq!(flag, crate::ask::DistAsk::default().quantiles);
+    }
 }

@@ -109,7 +109,13 @@ fn check_vlocator_geometry(long: &str, value: &str) -> Result<(), String> {
     let Command::Vlocator(a) = cli.command else {
         return Err("not vlocator".into());
     };
-    let (p, _) = a.params_uncertain().map_err(|e| e.to_string())?;
+    let question = crate::ask::VlocatorQuestion::new(
+        a.included_angle,
+        a.flank_angles.as_deref(),
+        &a.locator.overrides(),
+    )
+    .map_err(|e| e.to_string())?;
+    let p = question.params;
     if p == LocatorParams::default() {
         Ok(())
     } else {
@@ -241,7 +247,7 @@ fn vlocator_help_describes_the_json_it_prints() {
     );
 }
 
-/// `sweep --help`'s parameter list is made from `GridParam::all()` (written by
+/// `sweep --help`'s parameter list is made from `Param::all()` (written by
 /// hand, it once missed palm_offset_mm and push_ratio): every parameter
 /// a sweep takes is listed on a line of its own with its quantity and unit, and the palm
 /// angle, which a sweep cannot vary, is not.
@@ -257,8 +263,8 @@ fn sweep_help_lists_every_parameter_a_sweep_takes() {
         .take_while(|l| !l.trim().is_empty())
         .filter_map(|l| l.split_whitespace().next())
         .collect();
-    let all: Vec<&str> = crate::grid::GridParam::all()
-        .map(crate::grid::GridParam::as_str)
+    let all: Vec<&str> = crate::scene::Param::all()
+        .map(crate::scene::Param::as_str)
         .filter(|p| *p != "theta_deg")
         .collect();
     assert!(all.contains(&"push_ratio") && all.contains(&"palm_offset_mm"));
@@ -267,7 +273,7 @@ fn sweep_help_lists_every_parameter_a_sweep_takes() {
             .lines()
             .find(|l| l.split_whitespace().next() == Some(p))
             .unwrap_or_else(|| panic!("sweep --help does not list {p}:\n{help}"));
-        let unit = crate::grid::GridParam::named(p).unwrap().decl().unit;
+        let unit = crate::scene::Param::named(p).unwrap().decl().unit;
         assert!(line.contains(&format!("({unit})")), "{line}");
     }
     assert_eq!(listed, all, "{help}");

@@ -3,28 +3,23 @@
 
 mod accuracy;
 mod args;
-pub(crate) mod design;
-mod dynamics;
+mod design;
 mod gallery;
-mod guidance;
 #[cfg(test)]
 mod help_tests;
 mod manifest;
-mod min_norm;
-
 mod progress;
-pub(crate) mod read_off;
-pub mod render;
+pub(crate) mod render;
+#[cfg(feature = "serve")]
+mod serve;
 mod shell;
 mod solve;
-pub(crate) mod solve_range;
 mod stability;
 mod sweep;
 mod table;
 mod terminal;
 mod threads;
-pub(crate) mod vlocator;
-mod vlocator_robust;
+mod vlocator;
 
 use std::io::Write;
 
@@ -137,6 +132,18 @@ pub enum Command {
     /// window; and the verdict of your V (if given) and of the standard 60/90/120 deg V-blocks
     /// over the box. A distribution is refused: a robust V holds every value of a range.
     Vlocator(vlocator::VlocatorArgs),
+    /// Serve the live design page and the HTTP API until Ctrl-C.
+    ///
+    /// The page (GET /) is a design calculator: the scene's settings with their units and
+    /// ranges, the answer of `solve` as you type (a number, a range lo:hi or a distribution
+    /// normal(m,s) in any field), the universal chart with your point or box marked, and a
+    /// V-block tab. The API answers POST /api/v1/solve, /api/v1/design and /api/v1/vlocator
+    /// with a JSON body of the Python keywords ({"mu": 0.3, "radius_mm": 12.5}) by the same
+    /// JSON document as --format json, and GET /api/v1/render/SCENE.svg?KEY=VALUE draws a
+    /// built-in scene (.png, .json, .csv too). No request reads or writes a file. The guide
+    /// (`jamchart guide`, the crate docs) lists every route.
+    #[cfg(feature = "serve")]
+    Serve(serve::ServeArgs),
     /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
     ///
     /// bash: `jamchart completions bash > ~/.local/share/bash-completion/completions/jamchart`;
@@ -173,18 +180,36 @@ impl From<String> for Done {
 /// Runs the command line and returns the process exit code: 0 success, 1 a check that found
 /// changes (`render --check`), 2 bad input or failure.
 pub fn main() -> i32 {
-    crate::atomic::install_signal_cleanup();
     let (cli, name) = match parse(std::env::args_os()) {
         Ok(parsed) => parsed,
         Err(e) => return clap_exit(e),
     };
+    // The server writes no file, and its Ctrl-C lets the answers in flight finish: it handles
+    // the signals itself.
+    #[cfg(feature = "serve")]
+    let serving = matches!(cli.command, Command::Serve(_));
+    #[cfg(not(feature = "serve"))]
+    let serving = false;
+    if !serving {
+        crate::atomic::install_signal_cleanup();
+    }
     let pool = match threads::start() {
         Ok(pool) => pool,
         Err(e) => {
-            eprintln!("jamchart: {}", terminal::safe(&describe(&e, &name)));
+            terminal::diagnostic(&format!("jamchart: {}", describe(&e, &name)));
             return 2;
         }
     };
+    #[cfg(feature = "serve")]
+    if let Command::Serve(a) = &cli.command {
+        return match serve::run(a, pool) {
+            Ok(()) => 0,
+            Err(e) => {
+                eprintln!("jamchart: {}", terminal::safe(&describe(&e, &name)));
+                2
+            }
+        };
+    }
     let result: crate::error::Result<Done> = pool.run(|| match &cli.command {
         Command::Solve(a) => solve::run(a).map(Done::from),
         Command::Design(a) => design::run(a).map(Done::from),
@@ -198,6 +223,8 @@ pub fn main() -> i32 {
         Command::Vlocator(a) => vlocator::run(a).map(Done::from),
         Command::Completions(a) => shell::completions(a).map(Done::from),
         Command::Man(a) => shell::man(a).map(Done::from),
+        #[cfg(feature = "serve")]
+        Command::Serve(_) => Err(Error::Defect("serve runs outside the pool".into())),
     });
     match result {
         Ok(done) => {
@@ -207,13 +234,13 @@ pub fn main() -> i32 {
             };
             let printed = print(text);
             if let Done::Failed { summary, .. } = &done {
-                eprintln!("jamchart: {}", terminal::safe(summary));
+                terminal::diagnostic(&format!("jamchart: {summary}"));
             }
             // A lost answer (exit 2) outranks a failed check (exit 1).
             printed.max(code)
         }
         Err(e) => {
-            eprintln!("jamchart: {}", terminal::safe(&describe(&e, &name)));
+            terminal::diagnostic(&format!("jamchart: {}", describe(&e, &name)));
             2
         }
     }
@@ -223,8 +250,13 @@ pub fn main() -> i32 {
 /// likely a mistake, where the answer still follows.
 pub(crate) fn warn(lines: &[String]) {
     for l in lines {
-        eprintln!("jamchart: warning: {}", terminal::safe(l));
+        terminal::diagnostic(&format!("jamchart: warning: {l}"));
     }
+}
+
+/// An answer's `--format json` document: its serde form, pretty, with a final newline.
+fn json(answer: &impl serde::Serialize) -> String {
+    serde_json::to_string_pretty(answer).expect("answers serialise") + "\n"
 }
 
 /// Writes the answer to stdout (control characters escaped: [`terminal::safe`]) and returns
@@ -238,7 +270,9 @@ fn print(text: &str) -> i32 {
         Ok(()) => 0,
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => 0,
         Err(e) => {
-            eprintln!("jamchart: writing the answer to standard output: {e}");
+            terminal::diagnostic(&format!(
+                "jamchart: writing the answer to standard output: {e}"
+            ));
             2
         }
     }
@@ -254,7 +288,8 @@ fn clap_exit(e: clap::Error) -> i32 {
         }
         // `jamchart` alone: the help is the answer, but it is still a usage error.
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            eprint!("{}", terminal::safe(&e.render().to_string()));
+            let help = e.render().to_string();
+            terminal::diagnostic(help.strip_suffix('\n').unwrap_or(&help));
             2
         }
         _ => {
@@ -265,7 +300,7 @@ fn clap_exit(e: clap::Error) -> i32 {
             {
                 rendered = rendered.replace(&format!("'{v}'"), &format!("'{}'", error::cut(v)));
             }
-            eprintln!("jamchart: {}", terminal::safe(&one_line(&rendered)));
+            terminal::diagnostic(&format!("jamchart: {}", one_line(&rendered)));
             2
         }
     }
@@ -306,9 +341,9 @@ fn own_flags() -> impl Iterator<Item = &'static crate::settings::Decl> + Clone {
     let own: [&'static [crate::settings::Decl]; 5] = [
         accuracy::ACCURACY_FLAGS,
         stability::STABILITY_FLAGS,
-        design::DESIGN_FLAGS,
-        solve_range::DIST_FLAGS,
-        vlocator::GEOMETRY_FLAGS,
+        crate::ask::DESIGN_KEYS,
+        crate::ask::DIST_KEYS,
+        crate::ask::GEOMETRY_KEYS,
     ];
     own.into_iter().flatten()
 }
@@ -326,6 +361,20 @@ fn describe(e: &Error, command: &str) -> String {
             };
             match crate::settings::flags_naming(key, own_flags(), takes) {
                 Some(flag) => format!("invalid {key} = {value} (flag {flag}): {reason}"),
+                None => e.to_string(),
+            }
+        }
+        // A cost names the key that sets it; the command line names its flag.
+        Error::TooLong { key, .. } | Error::TooLarge { key, .. } => {
+            let cli = Cli::command();
+            let sub = cli.find_subcommand(command);
+            let takes = |flag: &str| {
+                sub.is_some_and(|c| c.get_arguments().any(|a| a.get_long() == Some(flag)))
+            };
+            match crate::settings::flags_naming(key, own_flags(), takes) {
+                Some(flag) => e
+                    .to_string()
+                    .replace(&format!("(set by {key})"), &format!("(set by {flag})")),
                 None => e.to_string(),
             }
         }

@@ -8,13 +8,13 @@ use serde::Serialize;
 
 use super::accuracy::{fixed, model_name, to_csv, write_set};
 use super::args::{SceneArgs, TableFormat};
-use super::dynamics::DynamicsArgs;
 use crate::atomic::check_all;
 use crate::csv_out::{Dec, dec};
 use crate::error::{Error, Result};
 use crate::models::ModelKind;
 use crate::numbers::length_mm;
 use crate::scene::JamStatus;
+use crate::settings::flags::{DynamicsSet, Flags};
 use crate::study::ReferenceKind;
 use crate::study::stability::{self, Class, StabilityReport};
 
@@ -35,7 +35,7 @@ pub struct StabilityArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     #[command(flatten)]
-    pub dynamics: DynamicsArgs,
+    pub dynamics: Flags<DynamicsSet>,
     /// Cases to run, comma-separated [default: every case].
     ///
     /// Each case changes the scene and settings given by the other flags (the paper's by
@@ -103,13 +103,13 @@ pub fn run(a: &StabilityArgs) -> Result<String> {
         )));
     }
     if !a.quiet.quiet {
-        eprintln!(
+        super::terminal::diagnostic(&format!(
             "jamchart: stability matrix of {} cases x {} methods took {:.1} s on {} threads",
             report.cases.len(),
             report.methods.len(),
             report.elapsed_s,
             rayon::current_num_threads()
-        );
+        ));
     }
     let md = markdown(&report);
     let csv = csv_rows(&report)?;

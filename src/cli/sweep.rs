@@ -8,8 +8,9 @@ use clap::Args;
 use serde::Deserialize;
 
 use super::args::{SceneArgs, parse_f64};
-use super::gallery::{page, typed_command};
+use super::gallery::{lock_folder, page, typed_command};
 use super::render::{RenderFormat, output_paths, write_rendered};
+use crate::atomic::Set;
 use crate::charts::gallery::Entry;
 use crate::charts::scene_uncertain::Uncertainty;
 use crate::charts::spec::Size;
@@ -19,8 +20,9 @@ use crate::figures::contour_map::ContourMapSettings;
 use crate::figures::sweep::SweepSettings;
 use crate::figures::sweep_layers::{SweepLayer, SweepPanel};
 
-use crate::grid::{AxisScale, GridAxis, GridParam};
+use crate::grid::{AxisScale, GridAxis};
 use crate::models::ModelKind;
+use crate::scene::Param;
 
 /// Flags of `sweep`.
 #[derive(Debug, Clone, Args)]
@@ -49,22 +51,24 @@ pub struct SweepArgs {
     /// mu=0.1:0.5 --mu 0.27 --read-off`; a map reads off at both flags' values.
     #[arg(long)]
     pub read_off: bool,
+    #[command(flatten)]
+    pub quiet: super::progress::Quiet,
 }
 
 /// The parameters a sweep varies: every axis parameter but the palm angle (a sweep's panels
 /// are the jam's angle and position).
-fn sweep_params() -> impl Iterator<Item = GridParam> {
-    GridParam::all().filter(|p| *p != GridParam::ThetaDeg)
+fn sweep_params() -> impl Iterator<Item = Param> {
+    Param::all().filter(|p| *p != Param::ThetaDeg)
 }
 
-/// `--help` of the axes, its list of parameters made from [`GridParam::all`] with each one's
+/// `--help` of the axes, its list of parameters made from [`Param::all`] with each one's
 /// quantity and unit, so that a new scene parameter is listed with no edit here.
 fn axes_long_help() -> String {
     let params: Vec<String> = sweep_params()
         .map(|p| {
             let d = p.decl();
             let sets = match d.sets {
-                [] if p == GridParam::PushRatio => ", sets force_n = push_ratio m g".to_string(),
+                [] if p == Param::PushRatio => ", sets force_n = push_ratio m g".to_string(),
                 [] => String::new(),
                 keys => format!(", sets {}", keys.join(" and ")),
             };
@@ -85,7 +89,7 @@ fn axes_long_help() -> String {
 /// `PARAM=MIN:MAX[:COUNT][:log]` as typed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AxisArg {
-    param: GridParam,
+    param: Param,
     min: f64,
     max: f64,
     count: Option<usize>,
@@ -98,7 +102,7 @@ impl FromStr for AxisArg {
     fn from_str(s: &str) -> std::result::Result<Self, String> {
         let usage = || format!("'{s}' is not PARAM=MIN:MAX[:COUNT][:log] (e.g. mu=0.1:0.5)");
         let (name, range) = s.split_once('=').ok_or_else(usage)?;
-        let param = GridParam::deserialize(toml::Value::String(name.trim().to_string()))
+        let param = Param::deserialize(toml::Value::String(name.trim().to_string()))
             .map_err(|e| format!("'{s}': {}", e.message().trim()))?;
         // Numbers as the flags read them: `1e-400` is refused, never read as 0.
         let number = |p: Option<&str>| match p {
@@ -261,11 +265,11 @@ pub fn run(a: &SweepArgs) -> Result<String> {
             "a file name without folders or a leading dot; --out gives the folder",
         ));
     }
-    let formats = a.format.into();
+    let formats = a.format.formats();
     // Every output path is checked before anything is computed.
     let planned = output_paths(&a.out, &scene.name, &scene.chart, formats);
     let index = a.out.join("index.html");
-    crate::atomic::check_all(planned.iter().chain([&index]).map(PathBuf::as_path))?;
+    let set = Set::begin(planned.iter().chain([&index]).map(PathBuf::as_path))?;
     let rendered = charts::render(&scene, formats)?;
     // The sweep joins the folder's gallery as a render does: its section with the parameters,
     // the command that reproduces it and the read-off.
@@ -277,15 +281,21 @@ pub fn run(a: &SweepArgs) -> Result<String> {
         read_off: rendered.read_off.as_deref(),
         ..Entry::of_scene(&scene, files, typed_command())
     };
+    // Built and written under the folder's lock, as a render's (see `gallery`).
+    let lock = lock_folder(&a.out)?;
     let html = page(&a.out, &[entry])?;
     let extra = [(index.clone(), html.as_bytes())];
-    let paths = write_rendered(&a.out, std::slice::from_ref(&rendered), &extra)?.concat();
-    let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    let paths = write_rendered(set, &a.out, std::slice::from_ref(&rendered), &extra)?.concat();
+    drop(lock);
+    if a.quiet.quiet {
+        return Ok(String::new());
+    }
+    let list: Vec<String> = paths.iter().map(|p| super::terminal::path(p)).collect();
     Ok(format!(
         "{}: {}\ngallery: {}\n",
         scene.name,
         list.join(" "),
-        index.display()
+        super::terminal::path(&index)
     ))
 }
 
@@ -299,7 +309,7 @@ mod tests {
         let g = a.axis(201);
         assert_eq!(
             (g.param, g.count, g.scale),
-            (GridParam::ForceN, 31, AxisScale::Log)
+            (Param::ForceN, 31, AxisScale::Log)
         );
         assert!((g.min - 50.0).abs() < 1e-12 && (g.max - 1e4).abs() < 1e-12);
         assert_eq!("mu=0.1:0.5".parse::<AxisArg>().unwrap().axis(7).count, 7);

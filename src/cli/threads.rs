@@ -28,6 +28,16 @@ pub(crate) enum Pool {
 }
 
 impl Pool {
+    /// The worker threads, shared (None for the calling thread alone: rayon's global pool is
+    /// then that thread).
+    #[cfg(feature = "serve")]
+    pub(crate) fn shared(self) -> Option<std::sync::Arc<ThreadPool>> {
+        match self {
+            Pool::Threads(pool) => Some(std::sync::Arc::new(pool)),
+            Pool::Calling => None,
+        }
+    }
+
     /// Runs `op` so that its parallel work uses this pool.
     pub(crate) fn run<R: Send>(&self, op: impl FnOnce() -> R + Send) -> R {
         match self {

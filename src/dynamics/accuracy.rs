@@ -37,7 +37,7 @@ impl Default for StudySettings {
 }
 
 impl StudySettings {
-    /// Checks the counts: 1 to [`MAX_TOLERANCES`] tolerances, 1 to [`MAX_RUNS`] runs (the
+    /// Checks the counts: at least 1 and at most the limits of tolerances and runs (the
     /// tolerances' values are checked point by point in [`run_study`]).
     pub fn validate(&self) -> Result<()> {
         limits::check_count(
@@ -53,10 +53,15 @@ impl StudySettings {
 /// A reference solution.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Reference {
+    /// The integrator that made it.
     pub method: Method,
+    /// Its relative tolerance (atol = rtol).
     pub rtol: f64,
+    /// Its status.
     pub status: JamStatus,
+    /// Its jam position in mm, where it jams.
     pub x_jam_mm: Option<f64>,
+    /// Steps taken.
     pub steps: u64,
     /// Why it has no jam, if it has none.
     pub reason: Option<String>,
@@ -65,9 +70,13 @@ pub struct Reference {
 /// One point of the study.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct StudyRow {
+    /// The integrator.
     pub method: Method,
+    /// The relative tolerance tried (atol = rtol).
     pub rtol: f64,
+    /// The status it answered.
     pub status: JamStatus,
+    /// Its jam position in mm, where it jams.
     pub x_jam_mm: Option<f64>,
     /// |x_jam - x_ref| in mm.
     pub error_mm: Option<f64>,
@@ -77,10 +86,15 @@ pub struct StudyRow {
     pub reference: Option<Method>,
     /// Median wall time of the runs in s.
     pub median_time_s: f64,
+    /// Timed runs.
     pub runs: usize,
+    /// Steps taken (accepted).
     pub steps: u64,
+    /// Steps rejected by the error control.
     pub rejected_steps: u64,
+    /// Right-hand-side evaluations.
     pub rhs_evals: u64,
+    /// Jacobian evaluations.
     pub jacobian_evals: u64,
     /// Why the row has no trusted jam (cross-check or failure), if it has none.
     pub reason: Option<String>,
@@ -89,9 +103,11 @@ pub struct StudyRow {
 /// The whole study.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Study {
+    /// The references, one per integrator at the reference tolerance.
     pub references: Vec<Reference>,
     /// |x_ref(radau5) - x_ref(dopri5)| / x_ref(radau5), when both jam.
     pub references_rel_diff: Option<f64>,
+    /// Each integrator at each tolerance.
     pub rows: Vec<StudyRow>,
 }
 

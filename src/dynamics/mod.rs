@@ -68,7 +68,7 @@
 //! (rtol' = 0.1 rtol^(2/3)), as Hairer's code does. A method that gives up reports
 //! `integrator_failed` with the time and the reason.
 
-pub(crate) mod accuracy;
+pub mod accuracy;
 pub(crate) mod contact;
 mod held;
 pub(crate) mod integrators;
@@ -88,13 +88,14 @@ use serde::Serialize;
 pub(crate) const MM_PER_M: f64 = 1000.0;
 
 pub use integrators::Failure;
-pub(crate) use jam::SeriesRow;
+pub use jam::SeriesRow;
+pub use nonsmooth::{LockUp, MotionTally};
 pub use params::{
     ContactLaw, DiscMotion, Drive, DriveSettings, DynamicsParams, FrictionLaw, IntegratorSettings,
     JamReading, Method, SeriesSettings, Verification,
 };
 pub use verdict::CrossCheck;
-pub(crate) use verdict::Refinement;
+pub use verdict::Refinement;
 
 use crate::error::Result;
 use crate::scene::{JamStatus, SceneParams};

@@ -631,7 +631,7 @@ mod tests {
             force_n: push,
             ..scene
         };
-        let g = crate::statics::ground_reaction(&p, th);
+        let g = crate::statics::reference::ground_reaction(&p, th);
         assert!(
             (f.ground_normal - g.r_n_n).abs() < 1e-9 * g.r_n_n,
             "{} vs {}",

@@ -5,7 +5,7 @@
 //! theta_jam is monotone in every uncertain input (the proof is in [`crate::statics`]), so at
 //! each swept value the box's answers run between its earliest-jam corner's and its
 //! latest-jam corner's; the band's two edges are those corners' curves. The shaded interval at
-//! a swept value is [`crate::uncertain::range::hull`] of the two corners' answers: a corner
+//! a swept value is the hull of the two corners' answers (as a range's interval is): a corner
 //! that jams or is held at the start gives its own end, a too weak earliest corner the start
 //! angle (the points where the push just moves the disc are held there), a latest corner whose
 //! jam lies past the palm's end (or that never jams) the palm's end; nothing where no point of
@@ -22,8 +22,9 @@ use serde::{Deserialize, Serialize};
 use super::Input;
 use super::sweep_layers::{Curve, Series, SeriesPoint, SweepPanel, closed_form, point};
 use crate::error::{Error, Result};
-use crate::grid::{GridAxis, GridParam};
+use crate::grid::GridAxis;
 use crate::numbers::Num;
+use crate::scene::Param;
 use crate::scene::{JamStatus, SceneParams};
 use crate::uncertain::{Uncertain, UncertainSet, range};
 
@@ -65,7 +66,7 @@ pub struct BandInput {
 pub fn from_uncertain(
     p: &SceneParams,
     uncertain: &UncertainSet,
-    param: GridParam,
+    param: Param,
 ) -> Result<Option<Band>> {
     if uncertain.is_empty() {
         return Ok(None);
@@ -185,7 +186,7 @@ impl BandRow {
 
 /// The band at the value `v` of the swept parameter `param`: the closed form at both
 /// corners there and the interval between them (a sweep's read-off with a band).
-pub fn at(param: GridParam, v: f64, band: &Band) -> Result<BandRow> {
+pub fn at(param: Param, v: f64, band: &Band) -> Result<BandRow> {
     let corner = |p: &SceneParams| -> Result<SeriesPoint> {
         let s = crate::models::solve(&crate::models::ModelSpec::Statics, &param.apply(*p, v))?;
         Ok(SeriesPoint {
@@ -200,7 +201,7 @@ pub fn at(param: GridParam, v: f64, band: &Band) -> Result<BandRow> {
 /// The band's rows from its two edges (same swept values, in order), the latest corner's
 /// parameters `latest_params` giving the palm's end at each value of `param`.
 pub fn rows(
-    param: GridParam,
+    param: Param,
     latest_params: &SceneParams,
     earliest: &[SeriesPoint],
     latest: &[SeriesPoint],
@@ -250,7 +251,7 @@ mod tests {
         };
         let e = [pt(40.0, JamStatus::Jams, Some(40.0), Some(35.0))];
         let l = [pt(40.0, JamStatus::BeyondReach, None, None)];
-        let r = &rows(GridParam::ForceN, &p, &e, &l)[0];
+        let r = &rows(Param::ForceN, &p, &e, &l)[0];
         let (lo, hi) = r.x_jam_mm.unwrap();
         assert!(
             (lo - 40.0).abs() < 1e-12 && (hi - 80.0).abs() < 1e-9,
@@ -262,9 +263,7 @@ mod tests {
         // A too weak earliest corner: the pushes that just move the disc hold it at the start
         // (90 deg, x = r = 10 mm), so the shade runs from there to the palm's end.
         let too_weak = [pt(40.0, JamStatus::TooWeak, None, None)];
-        let (lo, hi) = rows(GridParam::ForceN, &p, &too_weak, &l)[0]
-            .x_jam_mm
-            .unwrap();
+        let (lo, hi) = rows(Param::ForceN, &p, &too_weak, &l)[0].x_jam_mm.unwrap();
         assert!(
             (lo - 10.0).abs() < 1e-9 && (hi - 80.0).abs() < 1e-9,
             "{lo} {hi}"

@@ -24,7 +24,7 @@ pub struct CellsTable<'a> {
 
 impl<'a> CellsTable<'a> {
     /// The cells over `axes`, each `(name, column)` in index order `iy * nx + ix`.
-    pub fn new(axes: CellAxes<'a>, columns: &[(&'a str, Column<'a>)]) -> Self {
+    pub(crate) fn new(axes: CellAxes<'a>, columns: &[(&'a str, Column<'a>)]) -> Self {
         let mut header = vec![axes[0].0, axes[1].0];
         header.extend(columns.iter().map(|(name, _)| *name));
         CellsTable {

@@ -14,8 +14,9 @@ use super::models::{self, Models};
 use super::{At, DataFormat, Figure, FigureData, Input};
 use crate::csv_out::Column;
 use crate::error::{Error, Result};
-use crate::grid::{GridAxis, GridParam, GridRequest, Quantity};
+use crate::grid::{GridAxis, GridRequest, Quantity};
 use crate::models::ModelKind;
+use crate::scene::Param;
 use crate::scene::SceneParams;
 
 /// `[chart]` keys of `kind = "contour_map"`.
@@ -56,7 +57,7 @@ impl Figure for ContourMapSettings {
 
     /// Checks the axes and levels.
     fn validate(&self, input: &Input) -> Result<()> {
-        if [self.x_axis.param, self.y_axis.param].contains(&GridParam::ThetaDeg) {
+        if [self.x_axis.param, self.y_axis.param].contains(&Param::ThetaDeg) {
             return Err(Error::invalid(
                 "chart.x_axis/y_axis",
                 "theta_deg",
@@ -90,7 +91,7 @@ impl Figure for ContourMapSettings {
         }
         // The settle line's label and legend read "F ≈ ...", "to the right": true only when the
         // push force runs along x (x_jam falls towards r/mu as F grows).
-        if self.settle_pct.is_some() && self.x_axis.param != GridParam::ForceN {
+        if self.settle_pct.is_some() && self.x_axis.param != Param::ForceN {
             return Err(Error::invalid(
                 "chart.settle_pct",
                 format!("x_axis.param = {}", self.x_axis.param.as_str()),
@@ -317,7 +318,7 @@ pub struct IsoLine {
 #[derive(Debug, Clone)]
 pub struct ContourMapCells {
     /// The x and y parameters.
-    pub params: [GridParam; 2],
+    pub params: [Param; 2],
     /// The x samples.
     pub x: Vec<f64>,
     /// The y samples.

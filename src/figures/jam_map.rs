@@ -11,8 +11,9 @@ use super::models::{self, Models};
 use super::{At, DataFormat, Figure, FigureData, Input};
 use crate::csv_out::Column;
 use crate::error::{Error, Result};
-use crate::grid::{GridAxis, GridParam, GridRequest, GridResult, Quantity};
+use crate::grid::{GridAxis, GridRequest, GridResult, Quantity};
 use crate::models::ModelKind;
+use crate::scene::Param;
 use crate::scene::SceneParams;
 
 /// What a jam map draws (`layers`, default all).
@@ -94,14 +95,14 @@ impl Figure for JamMapSettings {
 
     /// Checks the axes against the scene.
     fn validate(&self, input: &Input) -> Result<()> {
-        if self.y_axis.param != GridParam::ThetaDeg {
+        if self.y_axis.param != Param::ThetaDeg {
             return Err(Error::invalid(
                 "chart.y_axis.param",
                 self.y_axis.param.as_str(),
                 "a jam map's y axis is theta_deg",
             ));
         }
-        if matches!(self.x_axis.param, GridParam::ThetaDeg | GridParam::RadiusMm) {
+        if matches!(self.x_axis.param, Param::ThetaDeg | Param::RadiusMm) {
             return Err(Error::invalid(
                 "chart.x_axis.param",
                 self.x_axis.param.as_str(),
@@ -218,7 +219,7 @@ impl FigureData for JamMapData {
 #[derive(Debug, Clone)]
 pub struct JamMapCells {
     /// The x parameter's name and samples.
-    pub x: (GridParam, Vec<f64>),
+    pub x: (Param, Vec<f64>),
     /// The palm angles in deg.
     pub theta_deg: Vec<f64>,
     /// The statics margin mu_g R_n - R_t in N (>= 0: the ground holds the disc).
@@ -231,12 +232,7 @@ pub struct JamMapCells {
 }
 
 impl JamMapCells {
-    fn new(
-        g: GridResult,
-        corners: Option<[Vec<f64>; 2]>,
-        p: &SceneParams,
-        param: GridParam,
-    ) -> Self {
+    fn new(g: GridResult, corners: Option<[Vec<f64>; 2]>, p: &SceneParams, param: Param) -> Self {
         let margin_n = g.margin_n.unwrap_or_default();
         // The palm cannot reach the disc below the reach angle of the column's scene,
         // whatever the margin.
@@ -306,7 +302,7 @@ impl HasCells for JamMapCells {
         }
         let axes = [
             (self.x.0.as_str(), &self.x.1[..]),
-            (GridParam::ThetaDeg.as_str(), &self.theta_deg[..]),
+            (Param::ThetaDeg.as_str(), &self.theta_deg[..]),
         ];
         CellsTable::new(axes, &columns)
     }

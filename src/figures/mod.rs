@@ -36,12 +36,14 @@ use serde::de::DeserializeOwned;
 
 use crate::dynamics::DynamicsParams;
 use crate::error::Result;
-use crate::grid::{GridAxis, GridParam, JamPoint};
+use crate::grid::{GridAxis, JamPoint};
 use crate::minnorm::MinNormSettings;
+use crate::scene::Param;
 use crate::scene::SceneParams;
 
+pub use crate::csv_out::Dec;
 pub use cells::CellsTable;
-pub use models::Models;
+pub use models::{Models, TouchingDisc};
 
 /// What a figure is computed from besides its own settings: the scene's parameters and the
 /// settings of the models it may run.
@@ -110,7 +112,7 @@ pub(crate) trait Figure: Sized + DeserializeOwned + Serialize {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct At<const N: usize> {
     /// The parameters.
-    pub params: [GridParam; N],
+    pub params: [Param; N],
     /// Their values, in their units.
     pub at: [f64; N],
     /// The model's answer there.

@@ -11,10 +11,11 @@ use crate::dynamics::DynamicsParams;
 use crate::dynamics::accuracy::{Study, StudySettings, run_study};
 use crate::dynamics::system::System;
 use crate::error::Result;
-use crate::grid::{self, GridParam, GridRequest, GridResult, JamPoint, ParamSet};
+use crate::grid::{self, GridRequest, GridResult, JamPoint, ParamSet};
 use crate::minnorm::tolerance::{ToleranceRow, tolerance_study};
 use crate::minnorm::{ContactSolution, MinNormSettings, palm};
 use crate::models::{self, ModelSpec, Solution};
+use crate::scene::Param;
 use crate::scene::SceneParams;
 
 /// The model calls of charts; implementations must be callable from several threads.
@@ -95,7 +96,7 @@ pub(crate) fn along(
     models: &dyn Models,
     spec: &ModelSpec,
     base: &SceneParams,
-    param: GridParam,
+    param: Param,
     values: &[f64],
 ) -> Result<Vec<JamPoint>> {
     match spec {

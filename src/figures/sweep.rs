@@ -13,7 +13,8 @@ use super::sweep_layers::{self, Curve, Series, SeriesPoint, SweepLayer, SweepPan
 use super::{DataFormat, Figure, FigureData, Input};
 use crate::csv_out::{Dec, dec, to_csv_with_header};
 use crate::error::{Error, Result};
-use crate::grid::{GridAxis, GridParam};
+use crate::grid::GridAxis;
+use crate::scene::Param;
 use crate::scene::{JamStatus, SceneParams};
 
 /// `[chart]` keys of `kind = "sweep"`.
@@ -72,7 +73,7 @@ impl Figure for SweepSettings {
     /// Checks the axis, panels and layers against the scene.
     fn validate(&self, input: &Input) -> Result<()> {
         self.x_axis.validate("chart.x_axis")?;
-        if self.x_axis.param == GridParam::ThetaDeg {
+        if self.x_axis.param == Param::ThetaDeg {
             return Err(Error::invalid(
                 "chart.x_axis.param",
                 "theta_deg",

@@ -16,10 +16,11 @@ use super::Input;
 use super::models::Models;
 use crate::dynamics::{Drive, DynamicsParams};
 use crate::error::{Error, Result};
-use crate::grid::{self, GridAxis, GridParam};
+use crate::grid::{self, GridAxis};
 use crate::minnorm::{Formulation, MinNormSettings};
 use crate::models::{self, Detail, ModelSpec, Solution};
 use crate::paper::{ADAMS_X_JAM_MM_MU_0_4, TABLE1};
+use crate::scene::Param;
 use crate::scene::{JamStatus, disc_position_mm};
 use crate::study::{self, Why};
 
@@ -177,7 +178,7 @@ pub struct Series {
 /// Checks that `layer` can be drawn on a sweep along `axis`.
 pub fn validate(layer: SweepLayer, axis: &GridAxis) -> Result<()> {
     let at_mu = !matches!(layer, SweepLayer::Statics | SweepLayer::Rigid);
-    if at_mu && axis.param != GridParam::Mu {
+    if at_mu && axis.param != Param::Mu {
         return Err(Error::invalid(
             "chart.layers",
             format!("{layer:?}"),
@@ -313,7 +314,7 @@ fn model_points(
     mu: &[f64],
     model: &'static str,
 ) -> Result<(Vec<SeriesPoint>, Option<String>)> {
-    let answers = grid::at_values(&scene.params, GridParam::Mu, mu, |p| {
+    let answers = grid::at_values(&scene.params, Param::Mu, mu, |p| {
         let s = models.solve(spec, p)?;
         let failure = study::why(&s).filter(|w| !matches!(w, Why::NoJam { .. }));
         let point = jam_point(p.mu_ground, s.status, s.x_jam_mm, s.theta_jam_deg);

@@ -26,8 +26,9 @@ use super::models::Models;
 use super::{At, DataFormat, Figure, FigureData, Input};
 use crate::csv_out::Column;
 use crate::error::{Error, Result};
-use crate::grid::{GridAxis, GridParam, GridRequest, Quantity};
+use crate::grid::{GridAxis, GridRequest, Quantity};
 use crate::models::ModelKind;
+use crate::scene::Param;
 use crate::scene::{JamStatus, SceneParams};
 
 /// `[chart]` keys of `kind = "universal"`.
@@ -64,7 +65,7 @@ fn default_label_step() -> f64 {
 const CELLS: &str = "chart.x_axis.count * chart.y_axis.count";
 
 /// The frictions a universal chart's x axis may vary.
-const FRICTIONS: [GridParam; 3] = [GridParam::Mu, GridParam::MuGround, GridParam::MuPalm];
+const FRICTIONS: [Param; 3] = [Param::Mu, Param::MuGround, Param::MuPalm];
 
 impl Figure for UniversalSettings {
     type Data = UniversalData;
@@ -91,7 +92,7 @@ impl Figure for UniversalSettings {
                 "a universal chart's x axis is a friction: mu, mu_ground or mu_palm",
             ));
         }
-        if self.y_axis.param != GridParam::PushRatio {
+        if self.y_axis.param != Param::PushRatio {
             return Err(Error::invalid(
                 "chart.y_axis.param",
                 self.y_axis.param.as_str(),
@@ -195,13 +196,13 @@ impl Figure for UniversalSettings {
             .into_iter()
             .flat_map(|l| grid_lines(&l.into_inner().0, xa, ya))
             .collect();
-        let read_off = match (xa.param.get(&p), GridParam::PushRatio.get(&p)) {
+        let read_off = match (xa.param.get(&p), Param::PushRatio.get(&p)) {
             (Some(mu), Some(push_ratio)) => {
                 let long = self.request(&p).base;
                 let on_long = models.jam_point(&model, &long)?;
                 Some(UniversalReadOff {
                     at: At {
-                        params: [xa.param, GridParam::PushRatio],
+                        params: [xa.param, Param::PushRatio],
                         at: [mu, push_ratio],
                         point: models.jam_point(&model, &p)?,
                     },
@@ -281,10 +282,10 @@ impl UniversalSettings {
         let corner = |values: &[f64]| -> Result<RangeEnd> {
             let q = self.range.apply(p, values);
             let long = models.jam_point(&model, &self.request(&q).base)?;
-            let (mu, push_ratio) = (x.get(&q), GridParam::PushRatio.get(&q));
+            let (mu, push_ratio) = (x.get(&q), Param::PushRatio.get(&q));
             Ok(RangeEnd {
                 at: At {
-                    params: [x, GridParam::PushRatio],
+                    params: [x, Param::PushRatio],
                     at: [mu.unwrap_or(f64::NAN), push_ratio.unwrap_or(f64::NAN)],
                     point: models.jam_point(&model, &q)?,
                 },
@@ -442,7 +443,7 @@ pub struct RangeEnd {
 #[derive(Debug, Clone)]
 pub struct UniversalCells {
     /// The friction on the x axis.
-    pub param: GridParam,
+    pub param: Param,
     /// Its samples.
     pub x: Vec<f64>,
     /// The samples of F / (m g).
@@ -468,7 +469,7 @@ impl HasCells for UniversalCells {
         CellsTable::new(
             [
                 (self.param.as_str(), &self.x),
-                (GridParam::PushRatio.as_str(), &self.push_ratio),
+                (Param::PushRatio.as_str(), &self.push_ratio),
             ],
             &[
                 (
@@ -513,7 +514,7 @@ mod tests {
         for (iy, &ratio) in c.push_ratio.iter().enumerate() {
             for (ix, &mu) in c.x.iter().enumerate() {
                 let i = iy * c.x.len() + ix;
-                let q = GridParam::PushRatio.apply(c.param.apply(scene.params, mu), ratio);
+                let q = Param::PushRatio.apply(c.param.apply(scene.params, mu), ratio);
                 let s = solve(&ModelSpec::Statics, &q).unwrap();
                 assert_eq!(
                     JamStatus::NAMES[usize::from(c.status[i])],

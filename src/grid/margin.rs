@@ -14,12 +14,13 @@
 
 use rayon::prelude::*;
 
-use super::{GridParam, GridRequest};
+use super::GridRequest;
+use crate::scene::Param;
 use crate::scene::SceneParams;
 
 /// The margin of one scene as a function of theta: `c0_n + a_n cos(theta) + b_n sin(theta)`.
 ///
-/// Derived from the corrected Eq. 1 ([`crate::statics::ground_reaction`]): margin = mu_g R_n - R_t
+/// Derived from the corrected Eq. 1 (the statics' ground reaction): margin = mu_g R_n - R_t
 /// with R_n = m g + F cos(theta - alpha_p) and R_t = F sin(theta - alpha_p); expanding the
 /// difference angles and collecting cos(theta) and sin(theta) gives the three coefficients.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,7 +53,7 @@ impl MarginCoeffs {
 
 /// The margin over the grid of `req` (one axis is `theta_deg`), in index order.
 pub(super) fn margin_grid(req: &GridRequest, xs: &[f64], ys: &[f64]) -> Vec<f64> {
-    let theta_on_x = req.x.param == GridParam::ThetaDeg;
+    let theta_on_x = req.x.param == Param::ThetaDeg;
     let (thetas, other, other_param) = if theta_on_x {
         (xs, ys, req.y.param)
     } else {

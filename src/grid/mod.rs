@@ -20,13 +20,12 @@ mod margin;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
-pub(crate) use axis::Setter;
-pub use axis::{AxisScale, GridAxis, GridParam};
+pub use axis::{AxisScale, GridAxis};
 pub use locator::{CapacityCells, LocatorParam, capacity_map};
 
 use crate::error::{Error, Result};
 use crate::models::{self, ModelKind, ModelSpec, Solution};
-use crate::scene::{JamStatus, SceneParams};
+use crate::scene::{JamStatus, Param, SceneParams};
 
 /// A set of parameters a grid can vary, one named parameter per axis.
 pub trait ParamSet: Copy + Send + Sync {
@@ -339,7 +338,7 @@ impl GridRequest {
     pub fn validate(&self) -> Result<()> {
         self.grid().validate()?;
         for axis in [&self.x, &self.y] {
-            if axis.param == GridParam::ThetaDeg && !(axis.min >= 0.0 && axis.max <= 180.0) {
+            if axis.param == Param::ThetaDeg && !(axis.min >= 0.0 && axis.max <= 180.0) {
                 return Err(Error::invalid(
                     "theta_deg axis",
                     format!("{}..{}", axis.min, axis.max),
@@ -347,7 +346,7 @@ impl GridRequest {
                 ));
             }
         }
-        let has_theta = [self.x.param, self.y.param].contains(&GridParam::ThetaDeg);
+        let has_theta = [self.x.param, self.y.param].contains(&Param::ThetaDeg);
         if self.quantities.contains(&Quantity::MarginN) && !has_theta {
             return Err(Error::invalid(
                 "quantities",
@@ -388,7 +387,7 @@ pub fn evaluate_columns(
 /// read per cell), each cell's bit for bit as [`models::solve`] gives it alone. A palm-angle
 /// axis (a margin map's) is no column of pushes: such a grid's cells go one by one.
 pub fn evaluate_closed_form(req: &GridRequest) -> Result<GridResult> {
-    if req.x.param == GridParam::ThetaDeg || req.y.param == GridParam::ThetaDeg {
+    if req.x.param == Param::ThetaDeg || req.y.param == Param::ThetaDeg {
         evaluate(req, statics_point)
     } else {
         evaluate_with(req, JamPoints::ClosedForm)

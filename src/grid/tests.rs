@@ -12,8 +12,8 @@ fn st(p: &SceneParams) -> Result<JamPoint> {
 fn mu_theta(nx: usize, ny: usize) -> GridRequest {
     GridRequest {
         base: SceneParams::default(),
-        x: GridAxis::linear(GridParam::Mu, 0.1, 0.5, nx),
-        y: GridAxis::log(GridParam::ThetaDeg, 10.0, 70.0, ny),
+        x: GridAxis::linear(Param::Mu, 0.1, 0.5, nx),
+        y: GridAxis::log(Param::ThetaDeg, 10.0, 70.0, ny),
         quantities: vec![Quantity::MarginN],
     }
 }
@@ -55,8 +55,8 @@ fn bit_identical_for_any_thread_count() {
     let margin_req = mu_theta(257, 131);
     let rf_req = GridRequest {
         base: SceneParams::default(),
-        x: GridAxis::log(GridParam::ForceN, 50.0, 10_000.0, 97),
-        y: GridAxis::linear(GridParam::RadiusMm, 10.0, 30.0, 61),
+        x: GridAxis::log(Param::ForceN, 50.0, 10_000.0, 97),
+        y: GridAxis::linear(Param::RadiusMm, 10.0, 30.0, 61),
         quantities: vec![
             Quantity::Status,
             Quantity::ThetaJamDeg,
@@ -100,8 +100,8 @@ fn bit_identical_for_any_thread_count() {
 fn only_requested_quantities_and_index_order() {
     let req = GridRequest {
         quantities: vec![Quantity::XJamMm],
-        x: GridAxis::linear(GridParam::Mu, 0.2, 0.4, 3),
-        y: GridAxis::linear(GridParam::RadiusMm, 10.0, 20.0, 2),
+        x: GridAxis::linear(Param::Mu, 0.2, 0.4, 3),
+        y: GridAxis::linear(Param::RadiusMm, 10.0, 20.0, 2),
         base: SceneParams::default(),
     };
     let g = evaluate(&req, st).unwrap();
@@ -122,31 +122,31 @@ fn only_requested_quantities_and_index_order() {
 #[test]
 fn margin_without_theta_axis_is_refused() {
     let req = GridRequest {
-        y: GridAxis::linear(GridParam::ForceN, 50.0, 100.0, 2),
+        y: GridAxis::linear(Param::ForceN, 50.0, 100.0, 2),
         ..mu_theta(2, 2)
     };
     let msg = evaluate(&req, st).unwrap_err().to_string();
     assert!(msg.contains("theta_deg"), "{msg}");
     let req = GridRequest {
-        x: GridAxis::linear(GridParam::Mu, -0.1, 0.5, 2),
+        x: GridAxis::linear(Param::Mu, -0.1, 0.5, 2),
         ..mu_theta(2, 2)
     };
     let msg = evaluate(&req, st).unwrap_err().to_string();
     assert!(msg.contains("mu_ground = -0.1"), "{msg}");
 }
 
-/// The hoisted kernel of `req` against `statics::margin_n` cell by cell:
+/// The hoisted kernel of `req` against `statics::reference::margin_n` cell by cell:
 /// |diff| <= 1e-12 (|F| + m g), worst case reported.
 fn assert_margin_matches_statics(req: &GridRequest) {
     let g = evaluate(req, st).unwrap();
     let m = g.margin_n.as_ref().unwrap();
-    let theta_on_x = req.x.param == GridParam::ThetaDeg;
+    let theta_on_x = req.x.param == Param::ThetaDeg;
     let mut worst = (0.0_f64, 0.0, 0.0);
     for (iy, &yv) in g.y_values.iter().enumerate() {
         for (ix, &xv) in g.x_values.iter().enumerate() {
             let p = req.grid().cell(xv, Some(yv));
             let t = if theta_on_x { xv } else { yv };
-            let d = (m[g.index(ix, iy)] - statics::margin_n(&p, t.to_radians())).abs();
+            let d = (m[g.index(ix, iy)] - statics::reference::margin_n(&p, t.to_radians())).abs();
             if d > worst.0 {
                 worst = (d, xv, yv);
             }
@@ -169,14 +169,14 @@ fn assert_margin_matches_statics(req: &GridRequest) {
 /// mu_palm grid puts theta on x, the branch no chart uses.
 #[test]
 fn hoisted_margin_matches_statics() {
-    let theta = |n| GridAxis::log(GridParam::ThetaDeg, 10.0, 70.0, n);
+    let theta = |n| GridAxis::log(Param::ThetaDeg, 10.0, 70.0, n);
     assert_margin_matches_statics(&mu_theta(101, 89));
     assert_margin_matches_statics(&GridRequest {
         base: SceneParams {
             mu_palm: 0.7,
             ..SceneParams::default()
         },
-        x: GridAxis::linear(GridParam::MuGround, 0.1, 0.9, 53),
+        x: GridAxis::linear(Param::MuGround, 0.1, 0.9, 53),
         y: theta(47),
         quantities: vec![Quantity::MarginN],
     });
@@ -186,7 +186,7 @@ fn hoisted_margin_matches_statics() {
             ..SceneParams::default()
         },
         x: theta(43),
-        y: GridAxis::linear(GridParam::MuPalm, 0.1, 0.9, 37),
+        y: GridAxis::linear(Param::MuPalm, 0.1, 0.9, 37),
         quantities: vec![Quantity::MarginN],
     });
 }
@@ -221,8 +221,8 @@ proptest! {
         let base = SceneParams { mass_kg: mass, force_n: force, ..SceneParams::default() };
         let req = GridRequest {
             base,
-            x: GridAxis::linear(GridParam::Mu, mu_lo, mu_lo + mu_span, 7),
-            y: GridAxis::linear(GridParam::ThetaDeg, t_lo, t_lo + t_span, 5),
+            x: GridAxis::linear(Param::Mu, mu_lo, mu_lo + mu_span, 7),
+            y: GridAxis::linear(Param::ThetaDeg, t_lo, t_lo + t_span, 5),
             quantities: vec![Quantity::MarginN, Quantity::Status, Quantity::ThetaJamDeg, Quantity::XJamMm, Quantity::XRigidMm],
         };
         let g = evaluate(&req, st).unwrap();
@@ -380,16 +380,14 @@ fn closed_form_batches_answer_a_grid_as_its_cells() {
             ..d
         },
     ];
-    let params: Vec<GridParam> = GridParam::all()
-        .filter(|&p| p != GridParam::ThetaDeg)
-        .collect();
+    let params: Vec<Param> = Param::all().filter(|&p| p != Param::ThetaDeg).collect();
     let (mut compared, mut refused) = (0, 0);
     let mut seen = std::collections::BTreeSet::new();
     for (base, xp) in bases
         .iter()
         .flat_map(|b| params.iter().map(move |p| (*b, *p)))
     {
-        let span = |p: GridParam| match p.get(&base).unwrap_or(1.0) {
+        let span = |p: Param| match p.get(&base).unwrap_or(1.0) {
             0.0 => (0.0, 1.0),
             v => (0.5 * v, 1.5 * v),
         };

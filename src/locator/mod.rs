@@ -172,15 +172,18 @@ pub use exact::{Capacity, FailureMode, capacity};
 use exact::{capacity_by_enumeration, held_at, self_locking};
 #[cfg(test)]
 use optimum::closed_form_free_centre;
+pub use optimum::{Criterion, Optimum, optimum};
 pub(crate) use optimum::{OPT_MAX_DEG, OPT_MIN_DEG, just_unlocked};
-pub use optimum::{Optimum, optimum};
 #[cfg(test)]
 use optimum::{balanced_rho, rho_lock};
 pub use params::{Flank, LocatorParams, Rotation};
+pub use reference::ReferenceCapacity;
 #[cfg(test)]
-use reference::{ReferenceCapacity, capacity_clarabel};
-pub(crate) use robust::{BoxVerdict, verdict_over_box};
-pub use robust::{DroppedLoad, Opening, RobustAngle, RobustBox, RobustDesign, robust_design};
+use reference::capacity_clarabel;
+pub(crate) use robust::verdict_over_box;
+pub use robust::{
+    BoxVerdict, DroppedLoad, Opening, RobustAngle, RobustBox, RobustDesign, robust_design,
+};
 pub(crate) use robust::{SCAN_STEP_DEG, lock_angle_deg};
 pub use solve::{FlankForce, LocatorSolution, Verdict, solve};
 #[cfg(test)]

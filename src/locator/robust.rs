@@ -47,7 +47,7 @@
 //!
 //! # The most robust angle
 //!
-//! As for the point design ([`super::optimum`]), robust means: survives the largest common
+//! As for the point design ([`crate::locator::optimum()`]), robust means: survives the largest common
 //! proportional error rho before it fails either way, applied to the whole box. rho_lock is
 //! the factor on the highs at which the V starts to lock (free: tan(gamma/2) / mu_hi); rho_hold
 //! the largest factor for which the V holds every load of the box scaled by rho at the lows'
@@ -304,7 +304,7 @@ impl Sector {
 /// What one V does over a whole box.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "status", rename_all = "snake_case")]
-pub(crate) enum BoxVerdict {
+pub enum BoxVerdict {
     /// Holds every load at every friction and never locks.
     Works,
     /// Self-locks at the box's top frictions.

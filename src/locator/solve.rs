@@ -79,10 +79,16 @@ pub struct FlankForce {
     pub utilisation: f64,
 }
 
+/// A verdict by its name alone (`Verdict::as_str`).
+fn verdict_name<S: serde::Serializer>(v: &Verdict, s: S) -> std::result::Result<S::Ok, S::Error> {
+    s.serialize_str(v.as_str())
+}
+
 /// Everything the locator model says about one V and load.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct LocatorSolution {
-    /// The verdict under the given load.
+    /// The verdict under the given load (serialised by its name: `held`, `slips`, ...).
+    #[serde(serialize_with = "verdict_name")]
     pub verdict: Verdict,
     /// The V self-locks (frictional force closure of the two contacts).
     pub self_locking: bool,

@@ -2,8 +2,9 @@
 //! must answer what the cell-by-cell search answers, to the bisection's tolerance, with the
 //! closed form as the oracle, and the map must not depend on the thread count.
 
-use jamchart::grid::{Grid, GridAxis, GridParam};
+use jamchart::grid::{Grid, GridAxis};
 use jamchart::minnorm::{Formulation, MinNormSettings, palm, solve_column};
+use jamchart::scene::Param;
 use jamchart::statics;
 use jamchart::{JamStatus, ModelSpec, SceneParams};
 
@@ -13,7 +14,7 @@ const AGREE_DEG: f64 = 1e-5;
 /// One column of the design map (`cargo bench --bench maps`): mu fixed, F 20 ... 2000 N (log)
 /// in `n` samples, as `Grid::map_columns` hands it to a model.
 fn column(mu: f64, n: usize) -> Vec<SceneParams> {
-    GridAxis::log(GridParam::ForceN, 20.0, 2000.0, n)
+    GridAxis::log(Param::ForceN, 20.0, 2000.0, n)
         .values()
         .into_iter()
         .map(|force_n| SceneParams {
@@ -90,8 +91,8 @@ fn a_column_by_brackets_answers_what_each_cell_answers() {
 fn a_map_by_columns_does_not_depend_on_the_thread_count() {
     let grid = Grid {
         base: SceneParams::default(),
-        x: GridAxis::linear(GridParam::Mu, 0.1, 0.8, 6),
-        y: Some(GridAxis::log(GridParam::ForceN, 20.0, 2000.0, 40)),
+        x: GridAxis::linear(Param::Mu, 0.1, 0.8, 6),
+        y: Some(GridAxis::log(Param::ForceN, 20.0, 2000.0, 40)),
     };
     let spec = ModelSpec::MinNorm(MinNormSettings::default());
     let run = |threads| {
@@ -143,8 +144,8 @@ fn a_min_norm_map_by_columns_answers_what_the_cells_answer() {
                 palm_length_mm: 40.0,
                 ..SceneParams::default()
             },
-            x: GridAxis::log(GridParam::ForceN, 5.0, 2000.0, 12),
-            y: GridAxis::linear(GridParam::Mu, 0.02, 1.4, 150),
+            x: GridAxis::log(Param::ForceN, 5.0, 2000.0, 12),
+            y: GridAxis::linear(Param::Mu, 0.02, 1.4, 150),
             quantities: vec![Quantity::Status, Quantity::ThetaJamDeg, Quantity::XJamMm],
         };
         let by_columns = evaluate_columns(&req, |c| {

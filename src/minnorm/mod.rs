@@ -147,4 +147,7 @@ pub(crate) use column::solve_column;
 pub(crate) use contact::{Contact, ContactProblem, Joint, Space, Wrench};
 pub use palm::{Formulation, MinNormCheck, MinNormSettings, PalmSolution};
 pub(crate) use qp::solve;
-pub use qp::{Backend, ContactSolution, HoldStatus, QpSettings};
+pub use qp::{
+    Backend, ClarabelStatus, ContactForce, ContactSolution, HoldStatus, QpSettings, TracePoint,
+};
+pub use tolerance::ToleranceRow;

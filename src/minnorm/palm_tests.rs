@@ -5,7 +5,8 @@ use jamchart::minnorm::palm::{self, palm_problem};
 use jamchart::minnorm::{Backend, Formulation, MinNormCheck, MinNormSettings, QpSettings};
 use jamchart::paper::TABLE1;
 use jamchart::scene::{disc_position_mm, palm_angle_at};
-use jamchart::statics::{self, margin_n};
+use jamchart::statics;
+use jamchart::statics::reference::{ground_reaction, margin_n};
 use jamchart::{JamStatus, SceneParams};
 use proptest::prelude::*;
 
@@ -140,7 +141,7 @@ fn translational_forces_are_the_corrected_eq1() {
             };
             let sol = jamchart::minnorm::solve(&prob, &qs).unwrap();
             assert_eq!(sol.status, jamchart::minnorm::HoldStatus::Held, "{deg} deg");
-            let g = statics::ground_reaction(&p, theta);
+            let g = ground_reaction(&p, theta);
             let (f, stop) = (sol.forces[0], sol.forces[1]);
             // 1e-6 relative to the push: clarabel's tolerance is 1e-8 of the load.
             let tol = 1e-6 * p.force_n;

@@ -14,8 +14,8 @@ use rayon::prelude::*;
 
 use super::{ModelSpec, outside, solve, solve_column};
 use crate::error::{Error, Result};
-use crate::grid::{GridParam, Setter};
 use crate::scene::{JamStatus, SceneParams};
+use crate::scene::{Param, Setter};
 use crate::statics;
 
 /// N pushes: a base scene and the parameters that vary, each a column of N values (or of one,
@@ -25,7 +25,7 @@ pub struct Pushes<'a> {
     /// The scene every push starts from.
     pub base: SceneParams,
     /// The parameters that vary and their values, in their units (`mu` sets both frictions).
-    pub columns: Vec<(GridParam, &'a [f64])>,
+    pub columns: Vec<(Param, &'a [f64])>,
 }
 
 /// Where the answers go, one element per push; each slice N long.
@@ -58,7 +58,7 @@ impl Pushes<'_> {
             .iter()
             .map(|(param, values)| {
                 let set = match *param {
-                    GridParam::PushRatio => Sets::PushRatio,
+                    Param::PushRatio => Sets::PushRatio,
                     p => {
                         let (keys, setters) = p.fields();
                         Sets::Fields(keys, setters)
@@ -73,7 +73,7 @@ impl Pushes<'_> {
     /// Checks the columns' lengths and that each parameter is a scene parameter.
     fn validate(&self, n: usize) -> Result<()> {
         for (param, values) in &self.columns {
-            if *param == GridParam::ThetaDeg {
+            if *param == Param::ThetaDeg {
                 return Err(Error::invalid(
                     param.as_str(),
                     "a column",
@@ -158,7 +158,7 @@ impl Resolved<'_> {
     }
 
     /// Push `i`'s scene from `base`: each column's value set in order, as
-    /// [`GridParam::apply`] sets it.
+    /// [`Param::apply`] sets it.
     #[inline]
     fn scene(&self, base: SceneParams, i: usize) -> SceneParams {
         let mut p = base;
@@ -174,7 +174,7 @@ impl Resolved<'_> {
                         set(&mut p, v);
                     }
                 }
-                Sets::PushRatio => p = GridParam::PushRatio.apply(p, v),
+                Sets::PushRatio => p = Param::PushRatio.apply(p, v),
             }
         }
         p
@@ -477,7 +477,7 @@ mod tests {
         let mu: Vec<f64> = (1..=3000).map(|i| f64::from(i) * 1e-4).collect();
         let pushes = Pushes {
             base: SceneParams::default(),
-            columns: vec![(GridParam::named("mu").unwrap(), &mu[..])],
+            columns: vec![(Param::named("mu").unwrap(), &mu[..])],
         };
         let n = mu.len();
         let run = |stop: bool| {
@@ -533,7 +533,7 @@ mod tests {
         let start = spread(4, 20.0, 110.0);
         let offset = spread(5, 0.0, 3.0);
         let palm = spread(6, 5.0, 120.0);
-        let named = |k: &str| GridParam::named(k).unwrap();
+        let named = |k: &str| Param::named(k).unwrap();
         let columns = vec![
             (named("mu_ground"), &mu_g[..]),
             (named("mu_palm"), &mu_p[..]),
@@ -564,9 +564,9 @@ mod tests {
                 (named("radius_mm"), &radius[..]),
                 (named("mass_kg"), &one_mass[..]),
             ],
-            vec![(named("mu"), &mu[..]), (GridParam::PushRatio, &ratio[..])],
+            vec![(named("mu"), &mu[..]), (Param::PushRatio, &ratio[..])],
             vec![
-                (GridParam::PushRatio, &ratio[..]),
+                (Param::PushRatio, &ratio[..]),
                 (named("start_angle_deg"), &one_start[..]),
             ],
         ];
@@ -605,7 +605,7 @@ mod tests {
     fn the_first_invalid_push_is_refused_as_solve_refuses_it() {
         let mu = [0.1, 0.2, 0.3, -0.4];
         let force = [40.0, -1.0, 40.0, 40.0];
-        fn run(columns: Vec<(GridParam, &[f64])>) -> (String, Pushes<'_>) {
+        fn run(columns: Vec<(Param, &[f64])>) -> (String, Pushes<'_>) {
             let pushes = Pushes {
                 base: SceneParams::default(),
                 columns,
@@ -621,8 +621,8 @@ mod tests {
             (e.to_string(), pushes)
         }
         let (msg, pushes) = run(vec![
-            (GridParam::named("mu").unwrap(), &mu[..]),
-            (GridParam::named("force_n").unwrap(), &force[..]),
+            (Param::named("mu").unwrap(), &mu[..]),
+            (Param::named("force_n").unwrap(), &force[..]),
         ]);
         let alone = pushes
             .resolved()
@@ -633,8 +633,8 @@ mod tests {
         assert!(msg.contains("force_n") && msg.contains("-1"), "{msg}");
         let mass = [1.0, 0.0, 2.0];
         let (msg, _) = run(vec![
-            (GridParam::named("mass_kg").unwrap(), &mass[..]),
-            (GridParam::PushRatio, &[10.0][..]),
+            (Param::named("mass_kg").unwrap(), &mass[..]),
+            (Param::PushRatio, &[10.0][..]),
         ]);
         assert!(msg.contains("force_n") && msg.contains("= 0"), "{msg}");
     }

@@ -376,7 +376,7 @@ mod tests {
     /// with a column that varies and one that stays; NaN where `solve` has no number.
     #[test]
     fn columns_answer_each_push_as_solve_does() {
-        use crate::grid::GridParam;
+        use crate::scene::Param;
         // Out of order, with a weak push, a held start and a jam past the palm among them.
         let mu = [0.3, 0.05, 0.9, 0.12, 0.4, 0.2, 1e-9, 0.6];
         let force = [40.0, 2.0, 40.0, 40.0, 200.0, 40.0, 40.0, 5.0];
@@ -388,9 +388,9 @@ mod tests {
         let pushes = columns::Pushes {
             base,
             columns: vec![
-                (GridParam::named("mu").unwrap(), &mu[..]),
-                (GridParam::named("force_n").unwrap(), &force[..]),
-                (GridParam::named("radius_mm").unwrap(), &[12.5][..]),
+                (Param::named("mu").unwrap(), &mu[..]),
+                (Param::named("force_n").unwrap(), &force[..]),
+                (Param::named("radius_mm").unwrap(), &[12.5][..]),
             ],
         };
         let fast = DynamicsParams {
@@ -441,9 +441,9 @@ mod tests {
     /// wrong length and an invalid value are refused before anything is solved, naming them.
     #[test]
     fn columns_refuse_what_solve_would() {
-        use crate::grid::GridParam;
-        let mu = GridParam::named("mu").unwrap();
-        let run = |columns: Vec<(GridParam, &[f64])>, n: usize| {
+        use crate::scene::Param;
+        let mu = Param::named("mu").unwrap();
+        let run = |columns: Vec<(Param, &[f64])>, n: usize| {
             let pushes = columns::Pushes {
                 base: SceneParams::default(),
                 columns,
@@ -458,10 +458,10 @@ mod tests {
                 .unwrap_err()
                 .to_string()
         };
-        let force = GridParam::named("force_n").unwrap();
+        let force = Param::named("force_n").unwrap();
         let msg = run(vec![(mu, &[0.1, 0.2]), (force, &[1.0, 2.0, 3.0])], 3);
         assert!(msg.contains("mu") && msg.contains("2 values"), "{msg}");
-        let msg = run(vec![(GridParam::ThetaDeg, &[10.0])], 1);
+        let msg = run(vec![(Param::ThetaDeg, &[10.0])], 1);
         assert!(msg.contains("theta_deg"), "{msg}");
         let msg = run(vec![(mu, &[0.1, 0.2])], 3);
         assert!(msg.contains("answers"), "{msg}");

@@ -1,5 +1,6 @@
 //! What `solve` returns: one push's [`Solution`], many pushes' [`Solutions`] (numpy arrays
-//! shaped like the broadcast inputs), a range's or distribution's [`BoxAnswer`].
+//! shaped like the broadcast inputs), a range's or distribution's [`BoxAnswer`]; each a face
+//! over the library's answer ([`crate::ask`]).
 
 use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::exceptions::PyImportError;
@@ -7,7 +8,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
 use super::convert::{Lists, serde_to_python};
-use crate::cli::solve_range::Record;
+use crate::ask::{self, Words};
 use crate::models::{self, ModelKind};
 use crate::scene::{JamStatus, SceneParams};
 
@@ -15,8 +16,14 @@ use crate::scene::{JamStatus, SceneParams};
 /// none), and the model's whole record as `jamchart solve --format json` prints it.
 #[pyclass(frozen, module = "jamchart")]
 pub(super) struct Solution {
-    pub(super) solution: models::Solution,
-    pub(super) inputs: SceneParams,
+    /// The library's answer, of one model.
+    pub(super) answer: ask::PushAnswer,
+}
+
+impl Solution {
+    fn solution(&self) -> &models::Solution {
+        &self.answer.results[0].solution
+    }
 }
 
 #[pymethods]
@@ -24,49 +31,59 @@ impl Solution {
     /// The model that answered: `statics`, `min-norm` or `dynamics`.
     #[getter]
     fn model(&self) -> &'static str {
-        self.solution.model.as_str()
+        self.solution().model.as_str()
     }
 
     /// The outcome of the push: one of `jamchart.STATUSES` (`jams`, `beyond_reach`, ...).
     #[getter]
     fn status(&self) -> &'static str {
-        self.solution.status.as_str()
+        self.solution().status.as_str()
     }
 
     /// The palm angle at the jam in deg; NaN where the model gives none.
     #[getter]
     fn theta_jam_deg(&self) -> f64 {
-        self.solution.theta_jam_deg.unwrap_or(f64::NAN)
+        self.solution().theta_jam_deg.unwrap_or(f64::NAN)
     }
 
     /// The disc position at the jam in mm (hinge to ground contact); NaN where the model gives
     /// none.
     #[getter]
     fn x_jam_mm(&self) -> f64 {
-        self.solution.x_jam_mm.unwrap_or(f64::NAN)
+        self.solution().x_jam_mm.unwrap_or(f64::NAN)
     }
 
     /// Wall time of the answer in s.
     #[getter]
     fn elapsed_s(&self) -> f64 {
-        self.solution.elapsed_s
+        self.solution().elapsed_s
     }
 
     /// The scene answered, as a dict of its settings (TOML keys, their units).
     #[getter]
     fn inputs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        serde_to_python(py, &self.inputs, Lists::Plain)
+        serde_to_python(py, &self.answer.inputs, Lists::Plain)
     }
 
     /// The model's whole answer as a dict: the record of `jamchart solve --format json`
     /// (shared keys, then the model's own, `None` where JSON has null).
     #[getter]
     fn record<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        serde_to_python(py, &self.solution, Lists::Plain)
+        serde_to_python(py, &self.answer.results[0], Lists::Plain)
+    }
+
+    /// The whole answer as `jamchart solve --format json` prints it: `inputs` and `results`.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        serde_to_python(py, &self.answer, Lists::Plain)
+    }
+
+    /// The command line's report, the settings named by their keywords.
+    fn __str__(&self) -> String {
+        self.answer.text(Words::Keys)
     }
 
     fn __repr__(&self) -> String {
-        let s = &self.solution;
+        let s = self.solution();
         match (s.theta_jam_deg, s.x_jam_mm) {
             (Some(t), Some(x)) => format!(
                 "jamchart.Solution({}: {}, theta_jam_deg={t:.3}, x_jam_mm={x:.3})",
@@ -204,7 +221,14 @@ impl Solutions {
 /// quantiles; `record` is `jamchart solve --format json`'s record.
 #[pyclass(frozen, module = "jamchart")]
 pub(super) struct BoxAnswer {
-    pub(super) record: Record,
+    /// The library's answer, of one model.
+    pub(super) answer: ask::BoxAnswer,
+}
+
+impl BoxAnswer {
+    fn record(&self) -> &ask::BoxRecord {
+        &self.answer.results[0]
+    }
 }
 
 #[pymethods]
@@ -212,25 +236,25 @@ impl BoxAnswer {
     /// The model that answered.
     #[getter]
     fn model(&self) -> &'static str {
-        self.record.model
+        self.record().model
     }
 
     /// (min, max) of theta_jam in deg over the box; None where no point of it jams.
     #[getter]
     fn theta_jam_deg(&self) -> Option<(f64, f64)> {
-        self.record.range.theta_jam_deg.map(|[a, b]| (a, b))
+        self.record().range.theta_jam_deg.map(|[a, b]| (a, b))
     }
 
     /// (min, max) of x_jam in mm over the box; None where no point of it jams.
     #[getter]
     fn x_jam_mm(&self) -> Option<(f64, f64)> {
-        self.record.range.x_jam_mm.map(|[a, b]| (a, b))
+        self.record().range.x_jam_mm.map(|[a, b]| (a, b))
     }
 
     /// Every status met in the box.
     #[getter]
     fn statuses(&self) -> Vec<&'static str> {
-        self.record
+        self.record()
             .range
             .statuses
             .iter()
@@ -242,7 +266,7 @@ impl BoxAnswer {
     /// a distribution.
     #[getter]
     fn probability(&self) -> Vec<(f64, f64)> {
-        self.record
+        self.record()
             .distribution
             .as_ref()
             .map_or_else(Vec::new, |d| {
@@ -254,39 +278,43 @@ impl BoxAnswer {
     }
 
     /// The quantiles of x_jam in mm asked (`quantiles`), as [(q, x_jam_mm)]; empty without a
-    /// distribution.
+    /// distribution. A quantile whose jam lies beyond every position a double holds (a
+    /// friction below about 5e-308) comes last, with x_jam_mm = inf.
     #[getter]
     fn quantiles(&self) -> Vec<(f64, f64)> {
-        self.record
+        self.record()
             .distribution
             .as_ref()
             .map_or_else(Vec::new, |d| {
+                let beyond = d.beyond_every_position.iter().map(|&q| (q, f64::INFINITY));
                 d.quantiles
                     .iter()
                     .map(|q| (q.q, q.x_jam_mm.value))
+                    .chain(beyond)
                     .collect()
             })
     }
 
     /// The whole answer as a dict: `jamchart solve --format json`'s record for this model.
-    #[getter]
-    fn record<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        serde_to_python(py, &self.record, Lists::Plain)
+    #[getter(record)]
+    fn record_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        serde_to_python(py, self.record(), Lists::Plain)
     }
 
+    /// The whole answer as `jamchart solve --format json` prints it: `inputs`, `uncertain`
+    /// and `results`.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        serde_to_python(py, &self.answer, Lists::Plain)
+    }
+
+    /// The command line's report.
+    fn __str__(&self) -> String {
+        self.answer.text(Words::Keys)
+    }
+
+    /// The one-line verdict: the interval of each model, and the probabilities asked.
     fn __repr__(&self) -> String {
-        let r = &self.record.range;
-        let span = |v: Option<[f64; 2]>, unit: &str| {
-            v.map_or("no jam".to_string(), |[a, b]| {
-                format!("{a:.3} to {b:.3} {unit}")
-            })
-        };
-        format!(
-            "jamchart.BoxAnswer({}: theta_jam {}, x_jam {})",
-            self.record.model,
-            span(r.theta_jam_deg, "deg"),
-            span(r.x_jam_mm, "mm")
-        )
+        format!("jamchart.BoxAnswer({})", self.answer.headline())
     }
 }
 

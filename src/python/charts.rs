@@ -10,9 +10,8 @@ use pyo3::types::{PyBool, PyBytes, PyDict, PyFloat, PyInt, PyList, PyString, PyT
 
 use super::convert::{Lists, to_python};
 use super::keywords::{error, scene_param};
-use crate::charts::overrides::Setting;
+use crate::ask::{Keywords, RenderAnswer, RenderQuestion, Words};
 use crate::charts::{self, Formats, Rendered, SceneSource};
-use crate::cli::read_off::{self, ReadOffArg};
 use crate::settings;
 
 /// A drawn design chart: its SVG and PNG, the data behind it, and the scene's name and kind.
@@ -48,18 +47,14 @@ impl Chart {
         PyBytes::new(py, self.rendered.png.as_deref().unwrap_or_default())
     }
 
-    /// The data behind the chart: a JSON chart's document as dicts with its lists of numbers
-    /// as float64 numpy arrays (null as NaN), or a CSV chart's columns as {name: array}.
+    /// The data behind the chart: a JSON chart's figure as dicts with its lists of numbers
+    /// as float64 numpy arrays (null as NaN), every number as computed (the `.json` file
+    /// rounds them to 7 significant digits); a CSV chart's columns as {name: array}.
     #[getter]
     fn data<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let bytes = &self.rendered.data.bytes;
         match self.rendered.data.extension {
-            "json" => {
-                let doc: serde_json::Value = serde_json::from_slice(bytes)
-                    .map_err(|e| PyValueError::new_err(format!("the chart's data: {e}")))?;
-                to_python(py, &doc, Lists::Arrays)
-            }
-            _ => csv_columns(py, bytes),
+            "json" => to_python(py, &self.rendered.computed.data(), Lists::Arrays),
+            _ => csv_columns(py, &self.rendered.data.bytes),
         }
     }
 
@@ -147,32 +142,30 @@ pub(super) fn render(
             )));
         }
     };
-    let mut settings_given = Vec::new();
-    let mut read_offs = Vec::new();
+    let mut given = Keywords::default();
     for (k, v) in keywords.into_iter().flat_map(|d| d.iter()) {
         let key: String = k.extract()?;
-        let key = key.as_str();
-        match key {
-            "read_off" if !v.is_none() => {
+        match key.as_str() {
+            "read_off" | "set" if v.is_none() => continue,
+            "read_off" => {
+                let mut table = toml::Table::new();
                 for (rk, rv) in v.cast::<PyDict>()?.iter() {
-                    let text = format!("{}={}", rk.str()?, rv.extract::<f64>()?);
-                    read_offs.push(text.parse::<ReadOffArg>().map_err(PyValueError::new_err)?);
+                    table.insert(
+                        rk.str()?.to_string(),
+                        toml::Value::Float(rv.extract::<f64>()?),
+                    );
                 }
+                given.0.insert(key, toml::Value::Table(table));
             }
-            "set" if !v.is_none() => {
+            "set" => {
+                let mut table = toml::Table::new();
                 for (sk, sv) in v.cast::<PyDict>()?.iter() {
-                    settings_given.push(Setting {
-                        key: sk.extract()?,
-                        value: toml_of(&sv)?,
-                    });
+                    table.insert(sk.extract()?, toml_of(&sv)?);
                 }
+                given.0.insert(key, toml::Value::Table(table));
             }
-            "read_off" | "set" => {}
-            _ if scene_param(key).is_some() || settings::find(key).is_some() => {
-                settings_given.push(Setting {
-                    key: key.to_string(),
-                    value: toml_of(&v)?,
-                });
+            k if scene_param(k).is_some() || settings::find(k).is_some() => {
+                given.0.insert(key, toml_of(&v)?);
             }
             _ => {
                 return Err(PyTypeError::new_err(format!(
@@ -182,14 +175,15 @@ pub(super) fn render(
             }
         }
     }
-    let (rendered, kind) = py
-        .detach(|| -> crate::error::Result<(Rendered, String)> {
-            let mut s = source.load(&settings_given)?;
-            read_off::apply(&mut s, &read_offs)?;
-            let kind = s.chart.kind().to_string();
-            Ok((charts::render(&s, Formats::Both)?, kind))
-        })
+    let question = RenderQuestion::of(source, given).map_err(error)?;
+    let RenderAnswer {
+        rendered,
+        kind,
+        warnings,
+    } = py
+        .detach(|| question.answer(Formats::Both, Words::Keys))
         .map_err(error)?;
+    super::solve::warn(py, warnings)?;
     Ok(Chart { rendered, kind })
 }
 

@@ -1,14 +1,13 @@
-//! The package's keywords and docstrings, made from the settings' one declaration: the
-//! signatures `help(jamchart.solve)` shows, the parameters' units, defaults and valid values.
+//! The package's functions, registered from one list ([`FUNCTIONS`]): each one's native
+//! function, its keywords (made from the settings' one declaration), its docstring and its
+//! type stub. `jamchart/__init__.py` wraps every function of the list alike, and the stub
+//! `jamchart/__init__.pyi` is [`stub`]'s output (a test compares them).
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
-use crate::grid::GridParam;
+use crate::scene::Param;
 use crate::settings::{self, Decl, Kind};
-
-/// The functions whose keywords are declared settings.
-const FUNCTIONS: [&str; 4] = ["solve", "render", "design", "vlocator"];
 
 /// One keyword of a function: its name, its default as Python text (None: no default shown)
 /// and its doc entry (numpydoc: `name : type, default X` and the indented text).
@@ -110,8 +109,8 @@ const UNCERTAIN_VALUES: &str = "float, array_like, (low, high) or Distribution";
 
 /// The scene's parameters as keywords (`mu` ... `palm_offset_mm`, `push_ratio`).
 fn scene_keywords(arrays: bool) -> Vec<Keyword> {
-    GridParam::all()
-        .filter(|p| *p != GridParam::ThetaDeg)
+    Param::all()
+        .filter(|p| *p != Param::ThetaDeg)
         .map(|p| {
             let d = p.decl();
             let values = match (arrays, d.uncertain) {
@@ -139,258 +138,476 @@ fn model_keywords() -> Vec<Keyword> {
         .collect()
 }
 
-/// The keywords of `function`, in the order of its signature.
-fn keywords_of(function: &str) -> Option<Vec<Keyword>> {
-    let models: Vec<&str> = crate::models::ModelKind::ALL
+/// `model`: the model that answers.
+fn model_keyword() -> Keyword {
+    let quoted: Vec<String> = crate::models::ModelKind::ALL
         .iter()
-        .map(|k| k.as_str())
+        .map(|k| format!("{:?}", k.as_str()))
         .collect();
-    let model_type = format!(
-        "Literal[{}]",
-        models
-            .iter()
-            .map(|m| format!("{m:?}"))
-            .collect::<Vec<_>>()
-            .join(", ")
-    );
-    let model = own(
-        "model",
-        &format!(
-            "{{{}}}",
-            models
-                .iter()
-                .map(|m| format!("{m:?}"))
-                .collect::<Vec<_>>()
-                .join(", ")
+    typed(
+        own(
+            "model",
+            &format!("{{{}}}", quoted.join(", ")),
+            Some("\"statics\""),
+            "The model that answers: the closed-form statics (corrected Eq. 1-2), the \
+             minimum-norm contact forces (a convex program), or the dynamic simulation (its \
+             `method` and drive `mode` below; `method=\"nonsmooth\"` is the fast one).",
         ),
-        Some("\"statics\""),
-        "The model that answers: the closed-form statics (corrected Eq. 1-2), the minimum-norm \
-         contact forces (a convex program), or the dynamic simulation (its `method` and drive \
-         `mode` below; `method=\"nonsmooth\"` is the fast one).",
+        &format!("Literal[{}]", quoted.join(", ")),
+    )
+}
+
+/// `solve`'s keywords: the model, the scene (arrays, ranges, distributions), the models'
+/// settings, a distribution's question.
+fn solve_keywords() -> Vec<Keyword> {
+    let mut all = vec![model_keyword()];
+    all.extend(scene_keywords(true));
+    all.extend(model_keywords());
+    all.extend([
+        typed(
+            own(
+                "before_mm",
+                "float or sequence of float",
+                Some("()"),
+                "With a distributed input: positions x in mm for P(x_jam < x), the probability \
+                 that the disc jams before x.",
+            ),
+            "Union[float, Sequence[float]]",
+        ),
+        typed(
+            own(
+                "quantiles",
+                "sequence of float",
+                Some("(0.05, 0.5, 0.95)"),
+                "With a distributed input: the probabilities q in (0, 1) of the quantiles of \
+                 x_jam.",
+            ),
+            "Sequence[float]",
+        ),
+        typed(
+            own(
+                "samples",
+                "int or None",
+                Some("None"),
+                "Monte Carlo samples where the answer is not exact (None: 100000 for the \
+                 statics, 2000 for min-norm and dynamics).",
+            ),
+            "Optional[int]",
+        ),
+        typed(
+            own(
+                "seed",
+                "int",
+                Some("1"),
+                "Seed of the Monte Carlo samples: the same seed gives the same answer on any \
+                 number of threads.",
+            ),
+            "int",
+        ),
+    ]);
+    all
+}
+
+/// `render`'s keywords: a read-off, any key of the scene file, the scene's and models'
+/// settings (single values).
+fn render_keywords() -> Vec<Keyword> {
+    let mut all = vec![
+        typed(
+            own(
+                "read_off",
+                "dict of str to float or None",
+                Some("None"),
+                "Read every map and sweep off at your own value, e.g. {\"mu\": 0.27}: the chart \
+                 draws its read-off there (render --read-off mu=0.27).",
+            ),
+            "Optional[Mapping[str, float]]",
+        ),
+        typed(
+            own(
+                "set",
+                "dict of str to value or None",
+                Some("None"),
+                "Any other key of the scene file by its dotted path, e.g. \
+                 {\"chart.x_axis.count\": 51, \"size.width_px\": 2000} (render --set).",
+            ),
+            "Optional[Mapping[str, Any]]",
+        ),
+    ];
+    all.extend(
+        scene_keywords(false)
+            .into_iter()
+            .filter(|k| k.name != "push_ratio"),
     );
-    let model = typed(model, &model_type);
-    Some(match function {
-        "solve" => {
-            let mut all = vec![model];
-            all.extend(scene_keywords(true));
-            all.extend(model_keywords());
-            all.extend([
-                typed(
-                    own(
-                        "before_mm",
-                        "float or sequence of float",
-                        Some("()"),
-                        "With a distributed input: positions x in mm for P(x_jam < x), the \
-                     probability that the disc jams before x.",
-                    ),
-                    "Union[float, Sequence[float]]",
+    all.extend(model_keywords());
+    all
+}
+
+/// `design`'s keywords: the target, the scene (ranges and distributions).
+fn design_keywords() -> Vec<Keyword> {
+    let mut all = vec![typed(
+        own(
+            "x_target_mm",
+            "float",
+            None,
+            "Target disc position x in mm (from the hinge): carry the part at least this far; \
+             above x(90 deg) = r + h.",
+        ),
+        "float",
+    )];
+    all.extend(
+        scene_keywords(false)
+            .into_iter()
+            .filter(|k| k.name != "push_ratio"),
+    );
+    all
+}
+
+/// `vlocator`'s keywords: the V's geometry, the locator's settings (ranges).
+fn vlocator_keywords() -> Vec<Keyword> {
+    let mut all = vec![
+        typed(
+            own(
+                "included_angle_deg",
+                "float or None",
+                Some("None"),
+                "Included angle of a symmetric V in deg, in (0, 180) (None: 90 deg, or with a \
+                 range no V of your own is judged).",
+            ),
+            "Optional[float]",
+        ),
+        typed(
+            own(
+                "flank_angles",
+                "(float, float) or None",
+                Some("None"),
+                "Flank angles a1, a2 above the horizontal in deg (left, right), each in [0, 180) \
+                 with a1 + a2 < 180.",
+            ),
+            "Optional[Tuple[float, float]]",
+        ),
+    ];
+    all.extend(
+        settings::locator_family()
+            .filter(|d| d.flag.is_some())
+            .map(|d| declared(d, "float, (low, high) or Distribution")),
+    );
+    all
+}
+
+/// How a function of the package is typed in its stub.
+enum Stub {
+    /// A function without declared keywords: its whole `def` line.
+    Plain(&'static str),
+    /// A function of declared keywords after `positional` (name: type), one `def` per
+    /// overload: the keywords' stub types replaced as it says, its return type, and the
+    /// comment after `def name(` (a mypy ignore).
+    Keywords {
+        positional: &'static [(&'static str, &'static str)],
+        overloads: &'static [Overload],
+    },
+}
+
+/// One overload of a keyword function's stub: type replacements, return type, comment.
+type Overload = (
+    &'static [(&'static str, &'static str)],
+    &'static str,
+    &'static str,
+);
+
+/// One function of the package: the one place that registers, documents and types it.
+pub(super) struct Function {
+    /// Its name in `jamchart`.
+    pub(super) name: &'static str,
+    /// Adds the native function (of the same name) to the extension module.
+    add: fn(&Bound<'_, PyModule>) -> PyResult<()>,
+    /// Its declared keywords, in the order of its signature (None for a plain function).
+    keywords: Option<fn() -> Vec<Keyword>>,
+    /// The docstring's opening (a keyword function's; a plain one documents itself).
+    intro: &'static str,
+    /// Its stub.
+    stub: Stub,
+}
+
+/// Registers a `#[pyfunction]` by its path.
+macro_rules! native {
+    ($f:path) => {
+        |m: &Bound<'_, PyModule>| m.add_function(pyo3::wrap_pyfunction!($f, m)?)
+    };
+}
+
+/// The package's functions, in the order of their stubs. A new function is its
+/// `#[pyfunction]`, one entry here, and the stub this writes (`__init__.pyi`).
+pub(super) const FUNCTIONS: &[Function] = &[
+    Function {
+        name: "solve",
+        add: native!(super::solve::solve),
+        keywords: Some(solve_keywords),
+        intro: SOLVE,
+        stub: Stub::Keywords {
+            positional: &[],
+            overloads: &[
+                (
+                    &[("_Values", "float"), ("_UncertainValues", "float")],
+                    "Solution",
+                    "  # type: ignore[overload-overlap]",
                 ),
-                typed(
-                    own(
-                        "quantiles",
-                        "sequence of float",
-                        Some("(0.05, 0.5, 0.95)"),
-                        "With a distributed input: the probabilities q in (0, 1) of the quantiles \
-                     of x_jam.",
-                    ),
-                    "Sequence[float]",
+                (
+                    &[("_UncertainValues", "_Values")],
+                    "Solutions",
+                    "  # type: ignore[overload-overlap]",
                 ),
-                typed(
-                    own(
-                        "samples",
-                        "int or None",
-                        Some("None"),
-                        "Monte Carlo samples where the answer is not exact (None: 100000 for the \
-                     statics, 2000 for min-norm and dynamics).",
-                    ),
-                    "Optional[int]",
-                ),
-                typed(
-                    own(
-                        "seed",
-                        "int",
-                        Some("1"),
-                        "Seed of the Monte Carlo samples: the same seed gives the same answer on \
-                     any number of threads.",
-                    ),
-                    "int",
-                ),
-            ]);
-            all
-        }
-        "render" => {
-            let mut all = vec![
-                typed(
-                    own(
-                        "read_off",
-                        "dict of str to float or None",
-                        Some("None"),
-                        "Read every map and sweep off at your own value, e.g. {\"mu\": 0.27}: the \
-                     chart draws its read-off there (render --read-off mu=0.27).",
-                    ),
-                    "Optional[Mapping[str, float]]",
-                ),
-                typed(
-                    own(
-                        "set",
-                        "dict of str to value or None",
-                        Some("None"),
-                        "Any other key of the scene file by its dotted path, e.g. \
-                     {\"chart.x_axis.count\": 51, \"size.width_px\": 2000} (render --set).",
-                    ),
-                    "Optional[Mapping[str, Any]]",
-                ),
-            ];
-            all.extend(
-                scene_keywords(false)
-                    .into_iter()
-                    .filter(|k| k.name != "push_ratio"),
-            );
-            all.extend(model_keywords());
-            all
-        }
-        "design" => {
-            let mut all = vec![typed(
-                own(
-                    "x_target_mm",
-                    "float",
-                    None,
-                    "Target disc position x in mm (from the hinge): carry the part at least this \
-                 far; above x(90 deg) = r + h.",
-                ),
-                "float",
-            )];
-            all.extend(
-                scene_keywords(false)
-                    .into_iter()
-                    .filter(|k| k.name != "push_ratio"),
-            );
-            all
-        }
-        "vlocator" => {
-            let mut all = vec![
-                typed(
-                    own(
-                        "included_angle_deg",
-                        "float or None",
-                        Some("None"),
-                        "Included angle of a symmetric V in deg, in (0, 180) (None: 90 deg, or \
-                     with a range no V of your own is judged).",
-                    ),
-                    "Optional[float]",
-                ),
-                typed(
-                    own(
-                        "flank_angles",
-                        "(float, float) or None",
-                        Some("None"),
-                        "Flank angles a1, a2 above the horizontal in deg (left, right), each in \
-                     [0, 180) with a1 + a2 < 180.",
-                    ),
-                    "Optional[Tuple[float, float]]",
-                ),
-            ];
-            all.extend(
-                settings::locator_family()
-                    .filter(|d| d.flag.is_some())
-                    .map(|d| declared(d, "float, (low, high) or Distribution")),
-            );
-            all
-        }
-        _ => return None,
+                (&[], "BoxAnswer", ""),
+            ],
+        },
+    },
+    Function {
+        name: "render",
+        add: native!(super::charts::render),
+        keywords: Some(render_keywords),
+        intro: RENDER,
+        stub: Stub::Keywords {
+            positional: &[("scene", "Union[str, \"os.PathLike[str]\"]")],
+            overloads: &[(&[], "Chart", "")],
+        },
+    },
+    Function {
+        name: "design",
+        add: native!(super::reports::design),
+        keywords: Some(design_keywords),
+        intro: DESIGN,
+        stub: Stub::Keywords {
+            positional: &[],
+            overloads: &[(&[], "DesignAnswer", "")],
+        },
+    },
+    Function {
+        name: "vlocator",
+        add: native!(super::reports::vlocator),
+        keywords: Some(vlocator_keywords),
+        intro: VLOCATOR,
+        stub: Stub::Keywords {
+            positional: &[],
+            overloads: &[(&[], "VlocatorAnswer", "")],
+        },
+    },
+    Function {
+        name: "normal",
+        add: native!(super::keywords::normal),
+        keywords: None,
+        intro: "",
+        stub: Stub::Plain("def normal(mean: float, sd: float) -> Distribution: ..."),
+    },
+    Function {
+        name: "uniform",
+        add: native!(super::keywords::uniform),
+        keywords: None,
+        intro: "",
+        stub: Stub::Plain("def uniform(low: float, high: float) -> Distribution: ..."),
+    },
+    Function {
+        name: "lognormal",
+        add: native!(super::keywords::lognormal),
+        keywords: None,
+        intro: "",
+        stub: Stub::Plain("def lognormal(median: float, sigma: float) -> Distribution: ..."),
+    },
+    Function {
+        name: "scenes",
+        add: native!(super::charts::scenes),
+        keywords: None,
+        intro: "",
+        stub: Stub::Plain("def scenes() -> List[str]: ..."),
+    },
+    Function {
+        name: "keywords",
+        add: native!(keywords),
+        keywords: None,
+        intro: "",
+        stub: Stub::Plain("def keywords(function: str = \"solve\") -> List[str]: ..."),
+    },
+];
+
+const SOLVE: &str = "Where a push jams: theta_jam (deg) and x_jam (mm) of one scene, of numpy \
+    arrays of scenes, or over a range or distribution of inputs.\n\n\
+    Every keyword is a setting of `jamchart settings`, under its TOML key; one left out keeps \
+    its default (the paper's scene). A scene parameter takes a number, an array (all arrays \
+    broadcast together by numpy's rules; the answers have their shape and are computed in \
+    parallel with the GIL released), a range (low, high) (the answer's interval over it, as \
+    `solve --mu 0.12:0.3`) or a distribution (jamchart.normal, uniform, lognormal: \
+    probabilities and quantiles as well). The models' settings take one value each.\n\n\
+    Returns\n-------\n\
+    Solution\n    For single values: status (str, one of jamchart.STATUSES), theta_jam_deg and \
+    x_jam_mm (float, NaN where the model gives none), record (the model's dict, as `solve \
+    --format json` prints it), to_dict() (the whole document); str() is the command line's \
+    report.\n\
+    Solutions\n    For arrays: status, theta_jam_deg and x_jam_mm as numpy arrays shaped like \
+    the broadcast inputs, status_code (uint8 indices into STATUSES), to_pandas().\n\
+    BoxAnswer\n    For a range or distribution: theta_jam_deg and x_jam_mm as (min, max), \
+    statuses, probability and quantiles, record, to_dict(); repr() is the one-line verdict, \
+    str() the report.\n\n\
+    Raises\n------\n\
+    ValueError\n    A value outside its valid range (the message names the keyword, the value \
+    and the valid values), arrays that do not broadcast.\n\
+    TypeError\n    An unknown keyword.\n\n\
+    Examples\n--------\n\
+    >>> import numpy as np, jamchart as jc\n\
+    >>> r = jc.solve(mu=np.linspace(0.1, 0.5, 5), radius_mm=12.5, mass_kg=0.4,\n\
+    ...              force_n=40, palm_length_mm=80)\n\
+    >>> r.x_jam_mm.shape\n(5,)\n\
+    >>> jc.solve(mu=0.3).status\n'jams'\n";
+
+const RENDER: &str = "Draws a design chart: a built-in scene by name (jamchart.scenes() lists \
+    them) or a scene file by path, with the keywords over the scene's settings.\n\n\
+    Returns a Chart: svg and png (bytes), data (the data behind the chart, lists of numbers as \
+    numpy arrays), save(path) (.svg, .png, .pdf, or the data's .json or .csv). In Jupyter the \
+    chart shows itself.\n\n\
+    Raises ValueError for an unknown scene or a bad value, TypeError for an unknown keyword.\n\n\
+    Examples\n--------\n\
+    >>> import jamchart as jc\n\
+    >>> chart = jc.render(\"universal\", read_off={\"mu\": 0.27}, radius_mm=12, force_n=150)\n\
+    >>> chart.save(\"shaft.pdf\")\n";
+
+const DESIGN: &str = "The inverse questions of `jamchart design`: the least push that carries \
+    the part to x_target_mm (over the box of any ranges given), the palm length it needs, and \
+    each answer checked by the nonsmooth simulation (force drive).\n\n\
+    Returns a DesignAnswer: each key of `jamchart design --format json` is an attribute \
+    (design, earliest_corner, latest_corner, check_least_push, check_latest_jam, uncertain), \
+    to_dict() the whole document; repr() is the one-line verdict, str() the command line's \
+    report.\n";
+
+const VLOCATOR: &str = "A disc in a V-block (`jamchart vlocator`): its verdict (held, slips, \
+    lifts off, wedged), the flank forces, the holding capacity and the optimum included angle; \
+    with a range, the V that works over the whole box.\n\n\
+    Returns a VlocatorAnswer: each key of `jamchart vlocator --format json` is an attribute \
+    (verdict, forces, capacity, optimum, inputs; over a box: box, design, given_v, \
+    standard_v_blocks, inputs), to_dict() the whole document; repr() is the one-line verdict \
+    with the mass and load it depends on, str() the command line's report.\n";
+
+/// Adds every function of [`FUNCTIONS`] to the extension module.
+pub(super) fn add_all(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    FUNCTIONS.iter().try_for_each(|f| (f.add)(m))
+}
+
+/// The keyword function `function` of [`FUNCTIONS`].
+fn keyword_function(function: &str) -> Option<(&'static Function, Vec<Keyword>)> {
+    let f = FUNCTIONS.iter().find(|f| f.name == function)?;
+    Some((f, (f.keywords?)()))
+}
+
+/// The names of `function`'s keywords (none for a function without declared keywords).
+pub(super) fn keyword_names(function: &str) -> Vec<&'static str> {
+    keyword_function(function).map_or_else(Vec::new, |(_, all)| {
+        all.into_iter().map(|k| k.name).collect()
     })
 }
 
-/// The opening of each function's docstring.
-fn intro(function: &str) -> &'static str {
-    match function {
-        "solve" => {
-            "Where a push jams: theta_jam (deg) and x_jam (mm) of one scene, of numpy arrays of \
-             scenes, or over a range or distribution of inputs.\n\n\
-             Every keyword is a setting of `jamchart settings`, under its TOML key; one left \
-             out keeps its default (the paper's scene). A scene parameter takes a number, an \
-             array (all arrays broadcast together by numpy's rules; the answers have their \
-             shape and are computed in parallel with the GIL released), a range (low, high) \
-             (the answer's interval over it, as `solve --mu 0.12:0.3`) or a distribution \
-             (jamchart.normal, uniform, lognormal: probabilities and quantiles as well). The \
-             models' settings take one value each.\n\n\
-             Returns\n-------\n\
-             Solution\n    For single values: status (str, one of jamchart.STATUSES), \
-             theta_jam_deg and x_jam_mm (float, NaN where the model gives none), and record \
-             (the model's dict, as `solve --format json` prints it).\n\
-             Solutions\n    For arrays: status, theta_jam_deg and x_jam_mm as numpy arrays \
-             shaped like the broadcast inputs, status_code (uint8 indices into STATUSES), \
-             to_pandas().\n\
-             BoxAnswer\n    For a range or distribution: theta_jam_deg and x_jam_mm as \
-             (min, max), statuses, probability and quantiles, record.\n\n\
-             Raises\n------\n\
-             ValueError\n    A value outside its valid range (the message names the keyword, \
-             the value and the valid values), arrays that do not broadcast.\n\
-             TypeError\n    An unknown keyword.\n\n\
-             Examples\n--------\n\
-             >>> import numpy as np, jamchart as jc\n\
-             >>> r = jc.solve(mu=np.linspace(0.1, 0.5, 5), radius_mm=12.5, mass_kg=0.4,\n\
-             ...              force_n=40, palm_length_mm=80)\n\
-             >>> r.x_jam_mm.shape\n(5,)\n\
-             >>> jc.solve(mu=0.3).status\n'jams'\n"
-        }
-        "render" => {
-            "Draws a design chart: a built-in scene by name (jamchart.scenes() lists them) or a \
-             scene file by path, with the keywords over the scene's settings.\n\n\
-             Returns a Chart: svg and png (bytes), data (the data behind the chart, lists of \
-             numbers as numpy arrays), save(path) (.svg, .png, .pdf, or the data's .json or \
-             .csv). In Jupyter the chart shows itself.\n\n\
-             Raises ValueError for an unknown scene or a bad value, TypeError for an unknown \
-             keyword.\n\n\
-             Examples\n--------\n\
-             >>> import jamchart as jc\n\
-             >>> chart = jc.render(\"universal\", read_off={\"mu\": 0.27}, radius_mm=12, \
-             force_n=150)\n\
-             >>> chart.save(\"shaft.pdf\")\n"
-        }
-        "design" => {
-            "The inverse questions of `jamchart design`: the least push that carries the part \
-             to x_target_mm (over the box of any ranges given), the palm length it needs, and \
-             each answer checked by the nonsmooth simulation (force drive).\n\n\
-             Returns the answer as a dict, the JSON `jamchart design --format json` prints.\n"
-        }
-        "vlocator" => {
-            "A disc in a V-block (`jamchart vlocator`): its verdict (held, slips, lifts off, \
-             wedged), the flank forces, the holding capacity and the optimum included angle; \
-             with a range or distribution, the robust answer over the box.\n\n\
-             Returns the answer as a dict, the JSON `jamchart vlocator --format json` prints.\n"
-        }
-        _ => "",
-    }
+/// The keywords `function` takes ("solve", "render", "design" or "vlocator"), in order: each
+/// is a setting of `jamchart settings` under its TOML key; `help(jamchart.solve)` gives each
+/// one's unit, default and valid values.
+#[pyfunction]
+#[pyo3(signature = (function = "solve"))]
+pub(super) fn keywords(function: &str) -> PyResult<Vec<&'static str>> {
+    keyword_function(function)
+        .map(|(_, all)| all.into_iter().map(|k| k.name).collect())
+        .ok_or_else(|| unknown_function(function))
 }
 
-/// The keywords of `function` for its Python signature and stubs: (name, default as Python
-/// text or None where it has none, type).
+/// The keyword functions' names and positional parameters, for `__init__.py` to wrap.
 #[pyfunction]
-pub(super) fn keywords(function: &str) -> PyResult<Vec<(&'static str, Option<String>, String)>> {
-    let all = keywords_of(function).ok_or_else(|| unknown_function(function))?;
-    Ok(all
-        .into_iter()
-        .map(|k| (k.name, k.default, k.annotation))
-        .collect())
+pub(super) fn _functions() -> Vec<(&'static str, Vec<&'static str>)> {
+    FUNCTIONS
+        .iter()
+        .filter_map(|f| match f.stub {
+            Stub::Keywords { positional, .. } => {
+                Some((f.name, positional.iter().map(|(n, _)| *n).collect()))
+            }
+            Stub::Plain(_) => None,
+        })
+        .collect()
+}
+
+/// The signature of `function`'s keywords: (name, default as Python text or None where it
+/// has none).
+#[pyfunction]
+pub(super) fn _signature(function: &str) -> PyResult<Vec<(&'static str, Option<String>)>> {
+    let (_, all) = keyword_function(function).ok_or_else(|| unknown_function(function))?;
+    Ok(all.into_iter().map(|k| (k.name, k.default)).collect())
 }
 
 /// The docstring of `function`: what it does and returns, then each keyword with its unit,
 /// default and valid values.
 #[pyfunction]
-pub(super) fn doc(function: &str) -> PyResult<String> {
-    let all = keywords_of(function).ok_or_else(|| unknown_function(function))?;
+pub(super) fn _doc(function: &str) -> PyResult<String> {
+    let (f, all) = keyword_function(function).ok_or_else(|| unknown_function(function))?;
     let entries: Vec<String> = all.into_iter().map(|k| k.entry).collect();
     Ok(format!(
         "{}\nParameters\n----------\n{}\n",
-        intro(function),
+        f.intro,
         entries.join("\n")
     ))
 }
 
 fn unknown_function(function: &str) -> PyErr {
+    let names: Vec<&str> = FUNCTIONS
+        .iter()
+        .filter(|f| f.keywords.is_some())
+        .map(|f| f.name)
+        .collect();
     PyValueError::new_err(format!(
         "no function {function}: the functions with declared keywords are {}",
-        FUNCTIONS.join(", ")
+        names.join(", ")
     ))
+}
+
+/// The package's `__all__`: its constants, classes and functions.
+pub(super) fn all(classes: &[String]) -> Vec<String> {
+    let constants = ["CHART_FORMAT", "STATUSES", "__version__"];
+    let mut names: Vec<String> = constants.map(String::from).to_vec();
+    names.extend(classes.iter().cloned());
+    names.extend(FUNCTIONS.iter().map(|f| f.name.to_string()));
+    names
+}
+
+/// The package's type stub, `jamchart/__init__.pyi`: the classes ([`super::CLASSES_STUB`]),
+/// then every function of [`FUNCTIONS`] with its keywords' types.
+#[pyfunction]
+pub(super) fn _stub() -> String {
+    let mut defs: Vec<String> = Vec::new();
+    for f in FUNCTIONS {
+        match &f.stub {
+            Stub::Plain(line) => defs.push(line.to_string()),
+            Stub::Keywords {
+                positional,
+                overloads,
+            } => {
+                let all = (f.keywords.expect("a keyword function"))();
+                for (replace, returns, comment) in *overloads {
+                    let mut lines: Vec<String> = positional
+                        .iter()
+                        .map(|(name, ty)| format!("    {name}: {ty},"))
+                        .collect();
+                    lines.push("    *,".into());
+                    for k in &all {
+                        let ty = replace
+                            .iter()
+                            .find(|(from, _)| *from == k.annotation)
+                            .map_or(k.annotation.as_str(), |(_, to)| to);
+                        let default = if k.default.is_some() { " = ..." } else { "" };
+                        lines.push(format!("    {}: {ty}{default},", k.name));
+                    }
+                    let overload = if overloads.len() > 1 {
+                        "@overload\n"
+                    } else {
+                        ""
+                    };
+                    defs.push(format!(
+                        "{overload}def {}({comment}\n{}\n) -> {returns}: ...",
+                        f.name,
+                        lines.join("\n")
+                    ));
+                }
+            }
+        }
+    }
+    format!("{}\n{}\n", super::CLASSES_STUB, defs.join("\n\n"))
 }

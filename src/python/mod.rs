@@ -1,14 +1,16 @@
 //! The Python package `jamchart`: the same crate, built with its `python` feature by maturin
 //! (`pip install .` in a checkout; `pyproject.toml`), as the extension module
-//! `jamchart._jamchart` beside the pure-Python layer in `src/python/jamchart/` (keyword
-//! signatures and docs, type stubs). This module has no public Rust API.
+//! `jamchart._jamchart` beside the pure-Python layer in `src/python/jamchart/` (which wraps the
+//! functions with their signatures and docs, and holds the type stubs). This module has no
+//! public Rust API.
 //!
-//! Every keyword of `jamchart.solve` and `jamchart.render` is a declared setting
-//! ([`crate::settings`], under its TOML key); every answer comes from the model port
-//! ([`crate::models`]): arrays through [`crate::models::columns`], filled in place in numpy's
-//! buffers with the GIL released, one push through [`crate::models::solve`] and its record.
-//! Bad input raises `ValueError` with the library's message (the key, the value, the valid
-//! values); an unknown keyword raises `TypeError`.
+//! A face over the library's questions and answers ([`crate::ask`]): each function reads its
+//! keywords as the library's [`crate::ask::Keywords`] (arrays aside, which go to the model
+//! port's array entry, [`crate::models::columns`], filled in place in numpy's buffers with
+//! the GIL released), asks the question and returns its answer as a Python object. Bad input
+//! raises `ValueError` with the library's message (the key, the value and the valid values);
+//! an unknown keyword raises `TypeError`. Every function is registered from one list,
+//! [`docs::FUNCTIONS`].
 
 mod answers;
 mod charts;
@@ -29,20 +31,143 @@ fn jamchart_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("STATUSES", JamStatus::NAMES.to_vec())?;
     m.add("CHART_FORMAT", crate::charts::CHART_FORMAT)?;
-    m.add_class::<answers::Solution>()?;
-    m.add_class::<answers::Solutions>()?;
-    m.add_class::<answers::BoxAnswer>()?;
-    m.add_class::<keywords::Distribution>()?;
-    m.add_class::<charts::Chart>()?;
-    m.add_function(wrap_pyfunction!(solve::solve, m)?)?;
-    m.add_function(wrap_pyfunction!(keywords::normal, m)?)?;
-    m.add_function(wrap_pyfunction!(keywords::uniform, m)?)?;
-    m.add_function(wrap_pyfunction!(keywords::lognormal, m)?)?;
-    m.add_function(wrap_pyfunction!(charts::render, m)?)?;
-    m.add_function(wrap_pyfunction!(charts::scenes, m)?)?;
-    m.add_function(wrap_pyfunction!(reports::design, m)?)?;
-    m.add_function(wrap_pyfunction!(reports::vlocator, m)?)?;
-    m.add_function(wrap_pyfunction!(docs::keywords, m)?)?;
-    m.add_function(wrap_pyfunction!(docs::doc, m)?)?;
+    let classes = [
+        class::<answers::BoxAnswer>(m)?,
+        class::<charts::Chart>(m)?,
+        class::<reports::DesignAnswer>(m)?,
+        class::<keywords::Distribution>(m)?,
+        class::<answers::Solution>(m)?,
+        class::<answers::Solutions>(m)?,
+        class::<reports::VlocatorAnswer>(m)?,
+    ];
+    docs::add_all(m)?;
+    m.add_function(wrap_pyfunction!(docs::_functions, m)?)?;
+    m.add_function(wrap_pyfunction!(docs::_signature, m)?)?;
+    m.add_function(wrap_pyfunction!(docs::_doc, m)?)?;
+    m.add_function(wrap_pyfunction!(docs::_stub, m)?)?;
+    m.add("__all__", docs::all(&classes))?;
     Ok(())
 }
+
+/// Adds class `T` to the module; its Python name.
+fn class<T: pyo3::PyClass>(m: &Bound<'_, PyModule>) -> PyResult<String> {
+    m.add_class::<T>()?;
+    Ok(m.py().get_type::<T>().name()?.to_string())
+}
+
+/// The stub's opening: the module's constants and classes (the functions follow, from
+/// [`docs::FUNCTIONS`]).
+const CLASSES_STUB: &str = r#""""Types of the package jamchart: every keyword is a declared setting (its unit in its name).
+
+The keyword lists below are the settings' declaration's (a test compares them); the docs of
+each are in help(jamchart.solve).
+"""
+
+import os
+from typing import Any, Dict, List, Literal, Mapping, Optional, Sequence, Tuple, Union, overload
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+STATUSES: List[str]
+CHART_FORMAT: str
+
+class Distribution:
+    """A distribution of one input: normal, uniform or lognormal."""
+    @property
+    def nominal(self) -> float: ...
+    def quantile(self, p: float) -> float: ...
+    def cdf(self, x: float) -> float: ...
+
+_Array = Union[npt.NDArray[Any], List[float], List[List[float]]]
+_Values = Union[float, _Array]
+_Uncertain = Union[float, Tuple[float, float], Distribution, str]
+_UncertainValues = Union[float, _Array, Tuple[float, float], Distribution, str]
+
+class Solution:
+    """One push's answer."""
+    @property
+    def model(self) -> str: ...
+    @property
+    def status(self) -> str: ...
+    @property
+    def theta_jam_deg(self) -> float: ...
+    @property
+    def x_jam_mm(self) -> float: ...
+    @property
+    def elapsed_s(self) -> float: ...
+    @property
+    def inputs(self) -> Dict[str, Any]: ...
+    @property
+    def record(self) -> Dict[str, Any]: ...
+    def to_dict(self) -> Dict[str, Any]: ...
+
+class Solutions:
+    """Many pushes' answers, shaped like the broadcast inputs."""
+    @property
+    def model(self) -> str: ...
+    @property
+    def status(self) -> npt.NDArray[np.str_]: ...
+    @property
+    def status_code(self) -> npt.NDArray[np.uint8]: ...
+    @property
+    def theta_jam_deg(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def x_jam_mm(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def shape(self) -> Tuple[int, ...]: ...
+    @property
+    def inputs(self) -> Dict[str, Any]: ...
+    def __len__(self) -> int: ...
+    def to_pandas(self) -> Any: ...
+
+class BoxAnswer:
+    """The answer over a range or distribution of inputs."""
+    @property
+    def model(self) -> str: ...
+    @property
+    def theta_jam_deg(self) -> Optional[Tuple[float, float]]: ...
+    @property
+    def x_jam_mm(self) -> Optional[Tuple[float, float]]: ...
+    @property
+    def statuses(self) -> List[str]: ...
+    @property
+    def probability(self) -> List[Tuple[float, float]]: ...
+    @property
+    def quantiles(self) -> List[Tuple[float, float]]: ...
+    @property
+    def record(self) -> Dict[str, Any]: ...
+    def to_dict(self) -> Dict[str, Any]: ...
+
+class _Report:
+    """An answer whose JSON document's keys are its attributes."""
+    @property
+    def headline(self) -> str: ...
+    @property
+    def report(self) -> str: ...
+    def to_dict(self) -> Dict[str, Any]: ...
+    def __getattr__(self, name: str) -> Any: ...
+
+class DesignAnswer(_Report):
+    """jamchart.design's answer; each key of `jamchart design --format json` is an attribute."""
+
+class VlocatorAnswer(_Report):
+    """jamchart.vlocator's answer; each key of `jamchart vlocator --format json` is an attribute."""
+
+class Chart:
+    """A drawn design chart."""
+    @property
+    def name(self) -> str: ...
+    @property
+    def kind(self) -> str: ...
+    @property
+    def svg(self) -> bytes: ...
+    @property
+    def png(self) -> bytes: ...
+    @property
+    def data(self) -> Any: ...
+    @property
+    def data_format(self) -> str: ...
+    def save(self, path: Union[str, "os.PathLike[str]"]) -> None: ...
+"#;

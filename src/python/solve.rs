@@ -14,14 +14,11 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::answers::{BoxAnswer, Solution, Solutions, shape_text};
-use super::keywords::{self, Read, error};
-use crate::cli::solve_range::{self, DistArgs};
-use crate::grid::GridParam;
+use super::keywords::{self, error, refused};
+use crate::ask::{SolveAnswer, SolveQuestion, Words};
+use crate::models::ModelSpec;
 use crate::models::columns::{self, Answers, Finished, Pushes};
-use crate::models::{self, ModelSpec};
-
-/// The keywords of a distribution's question, named as `solve`'s flags' keys.
-const DIST_KEYWORDS: [&str; 4] = ["before_mm", "quantiles", "samples", "seed"];
+use crate::scene::Param;
 
 /// How often a long map looks for Ctrl-C: an interrupt is seen within this and one chunk of
 /// work per thread.
@@ -38,57 +35,76 @@ pub(super) fn solve<'py>(
     py: Python<'py>,
     keywords: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let read = keywords::read(py, "solve", keywords, &DIST_KEYWORDS)?;
-    warn(py, read.config.scene.unit_warnings())?;
-    // The question's keywords are checked whether or not an input is distributed, as the CLI
-    // checks its flags; without them there is nothing to check.
-    let dist = match read.uncertain.is_empty() && read.extras.is_empty() {
-        true => None,
-        false => Some(dist_args(&read)?),
+    let given = keywords::given(py, "solve", keywords, true, &["before_mm", "quantiles"])?;
+    let scalars: Vec<(Param, f64)> = given
+        .keywords
+        .0
+        .iter()
+        .filter_map(|(k, v)| Some((keywords::scene_param(k)?, v.as_float()?)))
+        .collect();
+    let mut keys: Vec<&str> = given.keywords.0.keys().map(String::as_str).collect();
+    keys.extend(given.arrays.iter().map(|(p, _)| p.as_str()));
+    SolveQuestion::refuse_two_pushes(&keys).map_err(error)?;
+    let question = SolveQuestion::from_keywords(given.keywords).map_err(|e| refused("solve", e))?;
+    let [model] = question.models[..] else {
+        return Err(PyValueError::new_err(
+            "jamchart.solve answers one model a call: give model=\"statics\", \"min-norm\" or \
+             \"dynamics\"",
+        ));
     };
-    if let Some(dist) = dist.filter(|_| !read.uncertain.is_empty()) {
-        let record =
-            solve_range::answer(read.model, &read.config, &read.uncertain, &dist).map_err(error)?;
-        return Ok(Bound::new(py, BoxAnswer { record })?.into_any());
+    warn(py, question.warnings(Words::Keys))?;
+    if !question.uncertain.is_empty() {
+        if let Some((p, _)) = given.arrays.first() {
+            return Err(PyValueError::new_err(format!(
+                "{} is an array, and a range or a distribution is answered for one scene: give \
+                 single values with it, or call solve once per value",
+                p.as_str()
+            )));
+        }
+        // Sampled answers take a while: other threads run meanwhile.
+        let SolveAnswer::Box(answer) = py.detach(|| question.answer()).map_err(error)? else {
+            unreachable!("a question with ranges is answered over its box")
+        };
+        return Ok(Bound::new(py, BoxAnswer { answer })?.into_any());
     }
-    if !read.extras.is_empty() {
-        let given: Vec<&str> = read.extras.iter().map(|(k, _)| *k).collect();
-        warn(
-            py,
-            vec![format!(
-                "{} {} no effect without a distributed input (e.g. mu=jamchart.normal(0.2, 0.03))",
-                given.join(", "),
-                if given.len() == 1 { "has" } else { "have" }
-            )],
-        )?;
-    }
-    let spec = read
-        .model
-        .with(&read.config.min_norm, &read.config.dynamics);
-    if read.arrays.is_empty() {
-        let scene = read.config.scene;
-        let solution = match spec {
-            ModelSpec::Statics => models::solve(&spec, &scene),
+    if given.arrays.is_empty() {
+        let answer = match model {
+            crate::models::ModelKind::Statics => question.answer(),
             // A simulation or a min-norm search takes a while: other threads run meanwhile.
-            _ => py.detach(|| models::solve(&spec, &scene)),
+            _ => py.detach(|| question.answer()),
         }
         .map_err(error)?;
-        let one = Solution {
-            solution,
-            inputs: scene,
+        let SolveAnswer::Push(answer) = answer else {
+            unreachable!("a question without ranges is one push")
         };
-        return Ok(Bound::new(py, one)?.into_any());
+        return Ok(Bound::new(py, Solution { answer: *answer })?.into_any());
     }
-    Ok(Bound::new(py, solve_arrays(py, &read, &spec)?)?.into_any())
+    let spec = model.with(&question.config.min_norm, &question.config.dynamics);
+    // A number whose parameter applies after an array's (a key an array's alias sets as well,
+    // push_ratio after the mass) is applied per push, after the array.
+    let order = |p: &Param| Param::all().position(|q| q == *p);
+    let late: Vec<(Param, f64)> = scalars
+        .into_iter()
+        .filter(|(p, _)| given.arrays.iter().any(|(a, _)| order(a) < order(p)))
+        .collect();
+    let solutions = solve_arrays(py, &question, &given.arrays, &late, &spec)?;
+    Ok(Bound::new(py, solutions)?.into_any())
 }
 
-/// Answers the pushes of `read`'s arrays, broadcast together, into new numpy arrays.
-fn solve_arrays<'py>(py: Python<'py>, read: &Read<'py>, spec: &ModelSpec) -> PyResult<Solutions> {
-    let shape = broadcast_shape(&read.arrays)?;
+/// Answers the pushes of `arrays`, broadcast together over `question`'s scene (with `late`
+/// applied to each push after them), into new numpy arrays.
+fn solve_arrays<'py>(
+    py: Python<'py>,
+    question: &SolveQuestion,
+    arrays: &[(Param, Bound<'py, PyArrayDyn<f64>>)],
+    late: &[(Param, f64)],
+    spec: &ModelSpec,
+) -> PyResult<Solutions> {
+    let shape = broadcast_shape(arrays)?;
     let numpy = py.import("numpy")?;
     // Each array as it is where it has the answers' shape (no copy), broadcast where not.
-    let mut held: Vec<(GridParam, PyReadonlyArrayDyn<'py, f64>)> = Vec::new();
-    for (param, a) in &read.arrays {
+    let mut held: Vec<(Param, PyReadonlyArrayDyn<'py, f64>)> = Vec::new();
+    for (param, a) in arrays {
         let column = match a.len() == 1 || (a.shape() == shape.as_slice() && a.is_c_contiguous()) {
             true => numpy.call_method1("ascontiguousarray", (a,))?,
             false => numpy.call_method1(
@@ -98,8 +114,8 @@ fn solve_arrays<'py>(py: Python<'py>, read: &Read<'py>, spec: &ModelSpec) -> PyR
         };
         held.push((*param, column.cast_into::<PyArrayDyn<f64>>()?.readonly()));
     }
-    let late: Vec<(GridParam, [f64; 1])> = read.late.iter().map(|(p, v)| (*p, [*v])).collect();
-    let mut columns: Vec<(GridParam, &[f64])> = Vec::new();
+    let late: Vec<(Param, [f64; 1])> = late.iter().map(|(p, v)| (*p, [*v])).collect();
+    let mut columns: Vec<(Param, &[f64])> = Vec::new();
     for (param, a) in &held {
         let values = a
             .as_slice()
@@ -108,7 +124,7 @@ fn solve_arrays<'py>(py: Python<'py>, read: &Read<'py>, spec: &ModelSpec) -> PyR
     }
     columns.extend(late.iter().map(|(p, v)| (*p, &v[..])));
     let pushes = Pushes {
-        base: read.config.scene,
+        base: question.config.scene,
         columns,
     };
     // SAFETY: the arrays are left unset (calloc's pass to zero them cost as much as a tenth of
@@ -140,12 +156,11 @@ fn solve_arrays<'py>(py: Python<'py>, read: &Read<'py>, spec: &ModelSpec) -> PyR
         status_code: status.unbind(),
         theta_jam_deg: theta.unbind(),
         x_jam_mm: x.unbind(),
-        inputs: read
-            .arrays
+        inputs: arrays
             .iter()
             .map(|(p, a)| (p.as_str(), a.clone().unbind()))
             .collect(),
-        base: read.config.scene,
+        base: question.config.scene,
     })
 }
 
@@ -201,7 +216,7 @@ fn answer_watched(py: Python<'_>, spec: &ModelSpec, pushes: &Pushes, out: Answer
 }
 
 /// The shape the arrays broadcast to, by numpy's rules; the error names two that do not.
-fn broadcast_shape(arrays: &[(GridParam, Bound<'_, PyArrayDyn<f64>>)]) -> PyResult<Vec<usize>> {
+fn broadcast_shape(arrays: &[(Param, Bound<'_, PyArrayDyn<f64>>)]) -> PyResult<Vec<usize>> {
     let ndim = arrays.iter().map(|(_, a)| a.ndim()).max().unwrap_or(0);
     let mut shape = vec![1usize; ndim];
     let mut from: Vec<Option<usize>> = vec![None; ndim];
@@ -231,54 +246,9 @@ fn broadcast_shape(arrays: &[(GridParam, Bound<'_, PyArrayDyn<f64>>)]) -> PyResu
     Ok(shape)
 }
 
-/// The distribution's question from `before_mm`, `quantiles`, `samples` and `seed` (the CLI's
-/// `--before`, `--quantiles`, `--samples`, `--seed`), checked as the CLI checks them.
-fn dist_args(read: &Read) -> PyResult<DistArgs> {
-    let mut d = DistArgs {
-        before_mm: Vec::new(),
-        quantiles: solve_range::default_quantiles(),
-        samples: None,
-        seed: 1,
-    };
-    for (key, v) in &read.extras {
-        let numbers = |v: &Bound<'_, PyAny>| -> PyResult<Vec<f64>> {
-            match v.extract::<f64>() {
-                Ok(x) => Ok(vec![x]),
-                Err(_) => v.extract::<Vec<f64>>().map_err(|_| {
-                    PyValueError::new_err(format!("{key} takes a number or a list of numbers"))
-                }),
-            }
-        };
-        let count = |v: &Bound<'_, PyAny>| -> PyResult<u64> {
-            v.extract::<u64>().map_err(|_| {
-                PyValueError::new_err(format!(
-                    "invalid {key} = {}: {key} is a whole number >= 0",
-                    v.repr().map_or_else(|_| "?".into(), |r| r.to_string())
-                ))
-            })
-        };
-        match *key {
-            "before_mm" => d.before_mm = numbers(v)?,
-            "quantiles" => d.quantiles = numbers(v)?,
-            "samples" if !v.is_none() => d.samples = Some(count(v)?),
-            "seed" => d.seed = count(v)?,
-            _ => {}
-        }
-    }
-    crate::uncertain::dist::DistQuestion {
-        before_mm: d.before_mm.clone(),
-        quantiles: d.quantiles.clone(),
-        samples: d.samples.unwrap_or(1),
-        seed: d.seed,
-    }
-    .validate()
-    .map_err(error)?;
-    Ok(d)
-}
-
 /// Each line as a Python `UserWarning` at the caller's line (the CLI's warnings on stderr),
 /// without the flags the CLI names: a keyword is its TOML key.
-fn warn(py: Python<'_>, lines: Vec<String>) -> PyResult<()> {
+pub(super) fn warn(py: Python<'_>, lines: Vec<String>) -> PyResult<()> {
     for line in lines {
         let text = without_flags(&line).replace('\0', " ");
         let text = std::ffi::CString::new(text).expect("no NUL");

@@ -5,7 +5,7 @@
 //! of `validate`, the clap flag and both registers of its help ([`flags`]), `--set` and the
 //! sections of scene files (every override is a TOML table merged over the defaults, [`merge`]),
 //! the key-to-flag names in error messages ([`flag_for`]), a grid axis and its label
-//! ([`crate::grid::GridParam`]) and the key reference tables (`jamchart settings`, the guide,
+//! ([`crate::scene::Param`]) and the key reference tables (`jamchart settings`, the guide,
 //! charts/README.md; a test compares them).
 //!
 //! Keys are unique across the sections of one family (the palm scene's `[scene]`, `[min_norm]`
@@ -148,6 +148,120 @@ pub(crate) fn expand_aliases(section: &str, over: &mut toml::Table) {
     }
 }
 
+/// One setting as a face documents it (`GET /api/v1/settings`, a form generated from it):
+/// the facts of `jamchart settings`' table, each its own field.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct SettingDoc {
+    /// The key, as a keyword, a JSON body and `--set` give it (`rtol`; keys are unique).
+    pub key: String,
+    /// Which command's settings: `palm` (solve, design, render) or `locator` (vlocator), or
+    /// which question's own keys: `solve`, `design` or `vlocator`.
+    pub family: &'static str,
+    /// Its section of a parameter file (`scene`, `dynamics.contact`, `locator`).
+    pub section: &'static str,
+    /// The command line's flag, without its dashes.
+    pub flag: Option<&'static str>,
+    /// The unit (`mm`, `N`, `-` for a ratio; empty for a choice or a switch).
+    pub unit: &'static str,
+    /// The default as written in a parameter file (empty where it is derived: see `details`).
+    pub default: String,
+    /// What kind of value: `number`, `optional_number`, `count`, `switch`, `choice`,
+    /// `alias` (a name for several keys, `sets`) or `derived` (a quantity of other keys).
+    pub kind: &'static str,
+    /// A choice's values.
+    pub choices: &'static [&'static str],
+    /// The keys an alias sets.
+    pub sets: &'static [&'static str],
+    /// The valid values in words (`a finite number > 0`), with the range forms it takes.
+    pub valid: String,
+    /// Whether it takes a range (`lo:hi`).
+    pub range: bool,
+    /// Whether it takes a distribution (`normal(m,s)`).
+    pub distribution: bool,
+    /// The chart symbol (`F`) and the quantity in words (`palm push`).
+    pub symbol: &'static str,
+    /// The quantity in words, for a label.
+    pub quantity: &'static str,
+    /// The short help, one line.
+    pub summary: String,
+    /// The rest of the help.
+    pub details: String,
+}
+
+/// Every setting of both families as [`SettingDoc`]s, in the order of `jamchart settings`,
+/// then the questions' own keys (family `solve`, `design` or `vlocator`).
+pub fn documented() -> Vec<SettingDoc> {
+    let own = [
+        ("solve", crate::ask::DIST_KEYS),
+        ("design", crate::ask::DESIGN_KEYS),
+        ("vlocator", crate::ask::GEOMETRY_KEYS),
+    ];
+    let families = all()
+        .map(|d| {
+            (
+                if d.section == "locator" {
+                    "locator"
+                } else {
+                    "palm"
+                },
+                d,
+            )
+        })
+        .chain(
+            own.into_iter()
+                .flat_map(|(f, decls)| decls.iter().map(move |d| (f, d))),
+        );
+    families
+        .map(|(family, d)| {
+            let locator = d.section == "locator";
+            SettingDoc {
+                key: d.key.to_string(),
+                family,
+                section: d.section,
+                flag: d.flag,
+                unit: d.unit,
+                default: d.default_text(),
+                kind: match d.kind {
+                    Kind::Real => "number",
+                    Kind::OptionalReal => "optional_number",
+                    Kind::Count => "count",
+                    Kind::Switch => "switch",
+                    Kind::Choice(_) => "choice",
+                    Kind::Section | Kind::Derived if !d.sets.is_empty() => "alias",
+                    Kind::Section | Kind::Derived if d.unit.is_empty() => "derived",
+                    Kind::Section | Kind::Derived => "number",
+                },
+                choices: match d.kind {
+                    Kind::Choice(c) => c,
+                    _ => &[],
+                },
+                sets: d.sets,
+                valid: valid_text(d),
+                range: d.uncertain,
+                distribution: d.uncertain && !locator,
+                symbol: d.symbol,
+                quantity: d.quantity,
+                summary: d.summary(),
+                details: d.details(),
+            }
+        })
+        .collect()
+}
+
+/// The valid values of `d` in words, with the range forms it takes.
+fn valid_text(d: &Decl) -> String {
+    match d.kind {
+        Kind::Choice(c) => c.join(", "),
+        Kind::Switch => "true, false".into(),
+        Kind::Derived if d.check == Check::Typed => "see meaning".into(),
+        _ if d.uncertain && d.section == "locator" => {
+            format!("{}, or a range", d.check.describe())
+        }
+        _ if d.uncertain => format!("{}, or a range or distribution", d.check.describe()),
+        _ => d.check.describe(),
+    }
+}
+
 /// The key reference as a Markdown table: flag, TOML key, unit, default, valid values, doc.
 pub(crate) fn reference_table() -> String {
     reference_rows(|s| s != "locator")
@@ -177,15 +291,7 @@ pub(crate) fn reference_rows(keep: impl Fn(&str) -> bool) -> String {
         } else {
             format!("`{}` (sets {})", d.key, d.sets.join(", "))
         };
-        let valid = match d.kind {
-            Kind::Choice(c) => c.join(", "),
-            Kind::Switch => "true, false".into(),
-            _ if d.uncertain && d.section == "locator" => {
-                format!("{}, or a range", d.check.describe())
-            }
-            _ if d.uncertain => format!("{}, or a range or distribution", d.check.describe()),
-            _ => d.check.describe(),
-        };
+        let valid = valid_text(d);
         let default = match d.default_text() {
             t if t.is_empty() => "see meaning".to_string(),
             t => t,

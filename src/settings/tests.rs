@@ -145,10 +145,10 @@ fn every_flag_help_gives_its_default_and_unit() {
 /// with no other edit. Shown with the palm's offset.
 #[test]
 fn a_declared_scene_parameter_is_a_flag_a_key_an_axis_and_checked() {
-    use crate::grid::GridParam;
+    use crate::scene::Param;
     let decl = find("palm_offset_mm").unwrap();
     assert_eq!(flag_for("palm_offset_mm").as_deref(), Some("--palm-offset"));
-    let axis = GridParam::named("palm_offset_mm").unwrap();
+    let axis = Param::named("palm_offset_mm").unwrap();
     assert_eq!(
         crate::charts::axis_label(axis),
         "palm offset h (mm)",

@@ -21,9 +21,10 @@ use super::{Reference, Source, check_count, reference, rigid_dynamics_reference,
 use crate::config::Config;
 use crate::dynamics::{DiscMotion, Drive, DynamicsParams, Method};
 use crate::error::Result;
-use crate::grid::{Grid, GridAxis, GridParam};
+use crate::grid::{Grid, GridAxis};
 use crate::models::{self, ModelKind};
 use crate::scene::JamStatus;
+use crate::scene::Param;
 
 /// Most cells per axis of the full map.
 pub const MAX_CELLS_PER_AXIS: usize = 2000;
@@ -164,8 +165,8 @@ pub fn run(base: &Config, settings: &MapCostSettings) -> Result<MapCostReport> {
     ];
     let grid = |[kx, ky]: [usize; 2]| Grid {
         base: base.scene,
-        x: GridAxis::linear(GridParam::Mu, 0.1, 0.8, kx),
-        y: Some(GridAxis::log(GridParam::ForceN, 20.0, 2000.0, ky)),
+        x: GridAxis::linear(Param::Mu, 0.1, 0.8, kx),
+        y: Some(GridAxis::log(Param::ForceN, 20.0, 2000.0, ky)),
     };
     // The simulation's reference per cell, the converged rigid dynamics, computed once per
     // sampling and disc motion (the regularised disc slides; the nonsmooth rows' as set).

@@ -579,7 +579,7 @@ fn answer(solve: SolveFn, base: &Config, c: &Case, m: &Source) -> Result<Stabili
 
 /// The reference `m` is judged by on case `c`: the converged rigid dynamics for a simulation
 /// of the force drive (the regularised model's disc slides; the nonsmooth method's moves as the
-/// case says), else the closed form the source poses ([`reference`]).
+/// case says), else the closed form the source poses ([`reference()`]).
 fn case_reference(c: &Case, m: &Source, cfg: &Config) -> Result<Reference> {
     let disc = match m {
         Source::Simulation { .. } => crate::dynamics::DiscMotion::Slides,

@@ -424,7 +424,7 @@ impl UncertainSet {
 }
 
 /// `each` of `n` samples of `set`'s inputs (its values in declaration order) drawn with
-/// `seed` as [`dist::draw`] draws them, in parallel: the values it returns, sorted by
+/// `seed` as the tests' `dist::draw` draws them, in parallel: the values it returns, sorted by
 /// `f64::total_cmp`, the samples without one left out; on an error, the error of a sample
 /// (the rest are not drawn). `drawn` is told each chunk's size as it is done, from its thread.
 ///

@@ -145,6 +145,14 @@ impl Browser {
         (ff.dom(&context), probed)
     }
 
+    /// Firefox only: a page at `url` in a window of `size`, to drive with scripts.
+    pub fn open(&self, url: &str, size: (u32, u32)) -> Page {
+        assert_eq!(self.kind, Kind::Firefox, "pages are driven over BiDi");
+        let mut ff = Firefox::start(&self.path);
+        let context = ff.open(url, Some(size));
+        Page { ff, context }
+    }
+
     /// Runs headless chromium on `url` with `args`; panics with its stderr when it fails.
     fn chromium(&self, url: &str, args: &[String]) -> String {
         let profile = tempfile::tempdir().unwrap();
@@ -170,6 +178,56 @@ impl Browser {
             String::from_utf8_lossy(&out.stderr)
         );
         String::from_utf8_lossy(&out.stdout).into_owned()
+    }
+}
+
+/// A page open in Firefox, driven by scripts.
+pub struct Page {
+    ff: Firefox,
+    context: String,
+}
+
+impl Page {
+    /// The value of the script `expression` (a promise is awaited).
+    pub fn eval(&mut self, expression: &str) -> Value {
+        let r = self.ff.call(
+            "script.evaluate",
+            json!({ "expression": expression, "target": { "context": self.context },
+                    "awaitPromise": true }),
+        );
+        assert_eq!(r["type"], "success", "{expression}: {r}");
+        r["result"]["value"].clone()
+    }
+
+    /// Polls `expression` until it is true (a bound on a hung page, not a timing assertion).
+    pub fn wait_for(&mut self, expression: &str) {
+        for _ in 0..MAX_POLLS {
+            if self.eval(expression) == Value::Bool(true) {
+                return;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        }
+        panic!("never true: {expression}\n{}", self.dom());
+    }
+
+    /// Loads `url` in the same window and waits for its load event.
+    pub fn navigate(&mut self, url: &str) {
+        self.ff.call(
+            "browsingContext.navigate",
+            json!({ "context": self.context, "url": url, "wait": "complete" }),
+        );
+    }
+
+    /// The DOM as HTML.
+    pub fn dom(&mut self) -> String {
+        let context = self.context.clone();
+        self.ff.dom(&context)
+    }
+
+    /// Saves a PNG of the viewport to `png`.
+    pub fn screenshot(&mut self, png: &Path) {
+        let context = self.context.clone();
+        std::fs::write(png, self.ff.screenshot(&context)).unwrap();
     }
 }
 

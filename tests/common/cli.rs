@@ -113,3 +113,27 @@ pub fn render(dir: &Path, name: &str) -> Output {
         &["render", name, "--scenes-dir", "scenes", "--out", "o"],
     )
 }
+
+/// `doc` without its wall times (`elapsed_s`), which differ from run to run.
+pub fn timeless(mut doc: Value) -> Value {
+    fn strip(v: &mut Value) {
+        match v {
+            Value::Object(map) => {
+                map.remove("elapsed_s");
+                map.values_mut().for_each(strip);
+            }
+            Value::Array(items) => items.iter_mut().for_each(strip),
+            _ => {}
+        }
+    }
+    strip(&mut doc);
+    doc
+}
+
+/// The command line's JSON for `args` (with `--format json`), without wall times.
+pub fn json_of(args: &[&str]) -> Value {
+    let dir = tempfile::tempdir().unwrap();
+    let mut all = args.to_vec();
+    all.extend(["--format", "json"]);
+    timeless(json(&jamchart(dir.path(), &all)))
+}

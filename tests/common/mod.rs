@@ -7,6 +7,7 @@ pub mod browser;
 pub mod cli;
 #[macro_use]
 pub mod gallery;
+pub mod http;
 pub mod port;
 
 /// Says on the terminal that a test was skipped and why. Written to the process's stderr

@@ -233,7 +233,7 @@ def test_a_models_setting_is_refused_with_its_section(cli_error):
     with pytest.raises(ValueError) as e:
         jc.solve(model="dynamics", rtol=-1)
     assert str(e.value) == cli.replace(" (flag --rtol)", "")
-    with pytest.raises(ValueError, match="expected one of `radau5`, `dopri5`, `nonsmooth`"):
+    with pytest.raises(ValueError, match="method = euler: give one of radau5, dopri5, nonsmooth"):
         jc.solve(model="dynamics", method="euler")
     with pytest.raises(ValueError, match="the models are statics, min-norm, dynamics"):
         jc.solve(model="adams")
@@ -250,7 +250,7 @@ def test_arrays_of_non_numbers_and_bools_are_refused():
         jc.solve(mu=["a", "b"])
     with pytest.raises(TypeError, match="not a bool"):
         jc.solve(mu=True)
-    with pytest.raises(ValueError, match="takes a single number or an array"):
+    with pytest.raises(ValueError, match="radius_mm takes a single number; a range or a distribution is taken by mu"):
         jc.solve(radius_mm=(10, 12))
 
 
@@ -331,3 +331,39 @@ def test_none_is_a_keywords_default():
 def test_an_empty_array_gives_empty_answers():
     r = jc.solve(mu=np.zeros((0, 3)), force_n=np.array([40.0, 50.0, 60.0]))
     assert r.shape == (0, 3) and r.x_jam_mm.shape == (0, 3) and r.status.shape == (0, 3)
+
+
+def test_an_array_calls_inputs_are_the_values_passed():
+    """`.inputs` of an array call once reported the default part (r 10, m 1, F 200) beside the
+    arrays: anyone logging it recorded the wrong part."""
+    got = jc.solve(mu=np.array([0.2, 0.3]), radius_mm=12.5, mass_kg=0.4, force_n=40.0)
+    assert got.inputs["radius_mm"] == 12.5
+    assert got.inputs["mass_kg"] == 0.4 and got.inputs["force_n"] == 40.0
+    assert list(got.inputs["mu"]) == [0.2, 0.3]
+
+
+def test_two_ways_to_set_the_push_are_refused():
+    """A push given as force_n and as push_ratio together answered for the ratio's push while
+    `.inputs` showed force_n."""
+    for keywords in [dict(force_n=np.array([100.0, 200.0]), push_ratio=5),
+                     dict(force_n=100.0, push_ratio=np.array([5.0, 6.0])),
+                     dict(force_n=100.0, push_ratio=5)]:
+        with pytest.raises(ValueError, match="set the push one way"):
+            jc.solve(**keywords)
+
+
+def test_arrays_of_bools_complex_numbers_or_dates_are_refused():
+    for values in [np.array([True, False]), np.array([0.2 + 1j, 0.3]),
+                   np.array(["2020-01-01"], dtype="datetime64[D]")]:
+        with pytest.raises(ValueError, match="mu takes a number or an array of numbers, not an "
+                                             "array of"):
+            jc.solve(mu=values)
+
+
+def test_one_push_prints_the_clis_report(cli):
+    got = jc.solve(mu=0.21, radius_mm=12.5, mass_kg=0.4, force_n=40.0, palm_length_mm=80.0)
+    want = cli("solve", "--mu", "0.21", "--radius", "12.5", "--mass", "0.4", "--force", "40",
+               "--palm-length", "80")
+    took = lambda text: [l for l in text.splitlines() if not l.strip().startswith("took")]
+    assert took(str(got)) == took(want)
+    assert got.to_dict()["results"][0] == got.record

@@ -93,3 +93,22 @@ def test_the_range_answer_contains_the_point_answers(lo, width, force, t):
     assert ((points.theta_jam_deg[jams] >= t0 - tol) & (points.theta_jam_deg[jams] <= t1 + tol)).all()
     assert ((points.x_jam_mm[jams] >= x0 * (1 - tol)) & (points.x_jam_mm[jams] <= x1 * (1 + tol))).all()
     assert set(points.status) <= set(box.statuses)
+
+
+def test_a_range_or_distribution_with_a_non_finite_end_is_refused():
+    """A range with a NaN or infinite end was dropped on its way to the scene, which then
+    answered the default friction (mu 0.4) without a word."""
+    nan, inf = float("nan"), float("inf")
+    for keywords in [dict(mu=(0.1, nan)), dict(mu=(0.1, inf)), dict(force_n=(10, nan)),
+                     dict(mass_kg=(1, inf)), dict(mu=jc.normal(nan, 1))]:
+        key = next(iter(keywords))
+        with pytest.raises(ValueError, match=f"invalid {key} = "):
+            jc.solve(**keywords)
+
+
+def test_the_box_answer_is_the_clis_document(cli_json, cli):
+    want = cli_json("solve", "--mu", "normal(0.21,0.03)", "--before", "50", *SHAFT_FLAGS)
+    got = jc.solve(mu=jc.normal(0.21, 0.03), before_mm=50, **SHAFT)
+    assert got.to_dict() == want
+    assert str(got) == cli("solve", "--mu", "normal(0.21,0.03)", "--before", "50", *SHAFT_FLAGS)
+    assert "P(jams before 50 mm) = 0.1756" in repr(got)

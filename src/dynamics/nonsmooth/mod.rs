@@ -5,9 +5,9 @@
 //!
 //! The disc's configuration is q = (x, y, phi) (centre in mm, rotation in rad, counter-clockwise)
 //! with generalised velocity v = (x_dot, y_dot, phi_dot) and mass matrix M = diag(m, m, I),
-//! I = m r^2 / 2 (a solid disc). [`DiscMotion::Slides`] is the paper's translational joint:
+//! I = m r^2 / 2 (a solid disc). [`crate::dynamics::DiscMotion::Slides`] is the paper's translational joint:
 //! phi is locked (I^-1 = 0), so the ground's friction, not a rotation, takes the palm's moment;
-//! [`DiscMotion::Rolls`] lets the disc turn. With the palm's normal n = (sin theta, -cos theta)
+//! [`crate::dynamics::DiscMotion::Rolls`] lets the disc turn. With the palm's normal n = (sin theta, -cos theta)
 //! and direction t = (cos theta, sin theta), the gaps and relative velocities (disc minus
 //! support, mm and mm/s) are
 //!
@@ -100,7 +100,7 @@
 //!
 //! # The disc free to roll
 //!
-//! With [`DiscMotion::Rolls`] the palm's friction turns the disc, and a rolling disc's moment
+//! With [`crate::dynamics::DiscMotion::Rolls`] the palm's friction turns the disc, and a rolling disc's moment
 //! balance makes the ground's and the palm's friction forces equal in size. The ground, pressed
 //! by the weight and the push, holds first; the palm contact reaches its cone where
 //! tan(theta/2) = mu_p; and the disc locks up where tan(theta/2) = min(mu_p, mu_g (1 + m g / N))

@@ -22,69 +22,12 @@ from __future__ import annotations
 
 import ast
 import inspect
-from typing import Any, Callable, Dict, List, Optional, Tuple, Union
+from typing import Any, Callable, Optional, Sequence
 
 from . import _jamchart
-from ._jamchart import (
-    CHART_FORMAT,
-    STATUSES,
-    BoxAnswer,
-    Chart,
-    Distribution,
-    Solution,
-    Solutions,
-    __version__,
-    lognormal,
-    normal,
-    scenes,
-    uniform,
-)
+from ._jamchart import *  # noqa: F401,F403 (the names of _jamchart.__all__)
 
-__all__ = [
-    "BoxAnswer",
-    "CHART_FORMAT",
-    "Chart",
-    "Distribution",
-    "STATUSES",
-    "Solution",
-    "Solutions",
-    "design",
-    "keywords",
-    "lognormal",
-    "normal",
-    "render",
-    "scenes",
-    "solve",
-    "uniform",
-    "vlocator",
-]
-
-
-def solve(**keywords: Any) -> Union[Solution, Solutions, BoxAnswer]:
-    return _jamchart.solve(keywords)
-
-
-def render(scene: str, **keywords: Any) -> Chart:
-    return _jamchart.render(scene, keywords)
-
-
-def design(**keywords: Any) -> Dict[str, Any]:
-    if "x_target_mm" not in keywords:
-        raise TypeError("design() missing required keyword argument: 'x_target_mm'")
-    return _jamchart.design(keywords)  # type: ignore[no-any-return]
-
-
-def vlocator(**keywords: Any) -> Dict[str, Any]:
-    return _jamchart.vlocator(keywords)  # type: ignore[no-any-return]
-
-
-def keywords(function: str = "solve") -> List[str]:
-    """The keywords `function` takes ("solve", "render", "design" or "vlocator"), in order.
-
-    Each is a setting of ``jamchart settings`` under its TOML key; ``help(jamchart.solve)``
-    gives each one's unit, default and valid values.
-    """
-    return [name for name, _, _ in _jamchart.keywords(function)]
+__all__ = list(_jamchart.__all__)
 
 
 class _Shown:
@@ -106,20 +49,33 @@ def _default(text: Optional[str]) -> Any:
         return _Shown(text)
 
 
-def _sign(function: Callable[..., Any], name: str, positional: Tuple[str, ...] = ()) -> None:
-    """Gives `function` the signature and docstring of the declared keywords of `name`."""
-    params = [
-        inspect.Parameter(p, inspect.Parameter.POSITIONAL_OR_KEYWORD) for p in positional
-    ]
+def _wrap(name: str, positional: Sequence[str]) -> Callable[..., Any]:
+    """The function `name` of the extension, called with its keywords as one dict, under the
+    signature and docstring of its declared keywords."""
+    native = getattr(_jamchart, name)
+    declared = _jamchart._signature(name)
+    required = [k for k, d in declared if d is None]
+
+    def function(*args: Any, **keywords: Any) -> Any:
+        given = list(args) + [keywords.pop(p) for p in positional[len(args):] if p in keywords]
+        if len(given) != len(positional):
+            raise TypeError(f"{name}() takes {len(positional)} positional argument(s) "
+                            f"({', '.join(positional)}) but {len(given)} were given")
+        missing = [k for k in required if k not in keywords]
+        if missing:
+            raise TypeError(f"{name}() missing required keyword argument: '{missing[0]}'")
+        return native(*given, keywords)
+
+    params = [inspect.Parameter(p, inspect.Parameter.POSITIONAL_OR_KEYWORD) for p in positional]
     params += [
         inspect.Parameter(k, inspect.Parameter.KEYWORD_ONLY, default=_default(d))
-        for k, d, _ in _jamchart.keywords(name)
+        for k, d in declared
     ]
     function.__signature__ = inspect.Signature(params)  # type: ignore[attr-defined]
-    function.__doc__ = _jamchart.doc(name)
+    function.__doc__ = _jamchart._doc(name)
+    function.__name__ = function.__qualname__ = name
+    return function
 
 
-_sign(solve, "solve")
-_sign(render, "render", positional=("scene",))
-_sign(design, "design")
-_sign(vlocator, "vlocator")
+for _name, _positional in _jamchart._functions():
+    globals()[_name] = _wrap(_name, _positional)

@@ -2,13 +2,14 @@
 
 use jamchart::paper::TABLE1;
 use jamchart::scene::disc_position_mm;
-use jamchart::statics::{self, margin_n};
+use jamchart::statics;
+use jamchart::statics::reference::margin_n;
 use jamchart::{JamStatus, SceneParams};
 use proptest::prelude::*;
 
 /// Rows of tests/golden/table1.csv: (mu, theta_deg, x_mm, paper_theta_deg, paper_x_mm).
 fn golden_table1() -> Vec<[f64; 5]> {
-    include_str!("../tests/golden/table1.csv")
+    include_str!("../../tests/golden/table1.csv")
         .lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with("mu,"))
         .map(|l| {

@@ -1,67 +1,129 @@
-//! The dynamic simulation on the command line: its flags (merged over the `[dynamics]` section
-//! of the TOML file), its record and lines of text for `solve`, and the `--series` CSV.
+//! The min-norm model's and the simulation's own lines of a push's text, and what to do about
+//! each one's typed reasons, in a face's words.
 
-use std::fmt::Write as _;
+use std::fmt::Write;
 use std::path::Path;
 
-use serde::Serialize;
-
-use crate::atomic::write_atomic;
+use super::Words;
+use super::solve::Trace;
 use crate::config::Config;
-use crate::dynamics::{CrossCheck, DynamicsParams, DynamicsSolution, Failure, Method, Refinement};
-use crate::error::Result;
+use crate::dynamics::{CrossCheck, DynamicsSolution, Failure, Method, Refinement};
+use crate::minnorm::qp::{Backend, HoldStatus};
+use crate::minnorm::{MinNormCheck, PalmSolution};
 use crate::numbers::Num;
 use crate::scene::JamStatus;
-use crate::settings::flags::{DynamicsSet, Flags};
 
-/// Dynamics flags: each a declared setting of `[dynamics.*]` ([`crate::settings`]).
-pub type DynamicsArgs = Flags<DynamicsSet>;
-
-/// What to do when the palm lifts the disc (a start above 90 deg, in every model).
-pub const LIFTS_DISC_ADVICE: &str = "start the push at 90 deg or below (--start-angle): above it \
-     the palm's push points upwards and lifts the disc, which no model here represents";
-
-/// What `solve` adds to a simulation's answer in its JSON: the series file and the
-/// `[dynamics]` settings in force, so that the answer can be reproduced.
-#[derive(Debug, Serialize)]
-pub struct Record<'a> {
-    #[serde(skip_serializing_if = "Option::is_none")]
-    series: Option<String>,
-    /// Rows written to the series.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    series_rows: Option<usize>,
-    /// Where the series ends and why ([`series_end`]).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    series_end: Option<String>,
-    settings: &'a DynamicsParams,
-    /// What to do about a `cross_check` or `failure`, naming the flags that act on it.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    advice: Option<String>,
+/// What to do about a min-norm answer's typed reason, in terms of the settings that act on it.
+fn min_norm_advice(c: &MinNormCheck, words: Words) -> String {
+    match *c {
+        MinNormCheck::ConeOverused {
+            backend: Backend::Clarabel,
+            ..
+        } => format!(
+            "use the exact path: set fast_path = true{} (it solves the palm scene's small \
+             programs exactly, inside every cone)",
+            match words {
+                Words::Flags => " under [min_norm.qp] in --config",
+                Words::Keys => "",
+            }
+        ),
+        MinNormCheck::ConeOverused {
+            backend: Backend::Exact,
+            ..
+        } => format!(
+            "this is a defect of the exact path: please report the scene; compare with {}, the \
+             closed form",
+            words.given("model", "statics")
+        ),
+    }
 }
 
-/// The JSON keys of `s`, simulated with `config`'s `[dynamics]`, its series written to `series`.
-pub fn record<'a>(
-    s: &'a DynamicsSolution,
-    config: &'a Config,
-    series: Option<&Path>,
-) -> Record<'a> {
-    Record {
-        series: series.map(|p| p.display().to_string()),
-        series_rows: series.map(|_| s.series.len()),
-        series_end: series.map(|_| series_end(config, s)),
-        settings: &config.dynamics,
-        advice: advice(s),
+/// The min-norm lines under the shared status lines of a push's text.
+pub(super) fn min_norm_lines(
+    out: &mut String,
+    s: &PalmSolution,
+    trace: Option<&Trace>,
+    words: Words,
+) {
+    let _ = writeln!(
+        out,
+        "  formulation {}: {} solves by {} ({} iterations, {} undetermined)",
+        s.formulation.as_str(),
+        s.solves,
+        backend_name(s.backend),
+        s.iterations,
+        s.undetermined_solves,
+    );
+    // Roundoff below the printed digits shows as 0.000, not -0.000.
+    let g = |v: f64| if v.abs() < 5e-4 { 0.0 } else { v };
+    if let Some(sol) = &s.at_jam {
+        for (f, name) in sol.forces.iter().zip(s.formulation.contact_names()) {
+            let _ = writeln!(
+                out,
+                "  at the jam, contact {name}: f_n = {:.3} N, f_t = {:.3} N, friction utilisation {:.4}",
+                Num(g(f.normal_n)),
+                Num(g(f.tangential_n[0])),
+                Num(g(f.utilisation)),
+            );
+        }
+    }
+    if let Some(c) = &s.cross_check {
+        if let (Some(t), Some(x)) = (s.theta_jam_deg, s.x_jam_mm) {
+            let _ = writeln!(
+                out,
+                "  (untrusted) theta_jam = {t:.3} deg, x_jam = {x:.3} mm",
+                t = Num(t),
+                x = Num(x)
+            );
+        }
+        let _ = writeln!(out, "  {}: {c}", s.status);
+        let _ = writeln!(out, "  advice: {}", min_norm_advice(c, words));
+    }
+    if let Some(t) = trace {
+        let _ = writeln!(
+            out,
+            "  clarabel trace at theta = {:.6} deg ({}):\n  {:>4}  {:>18}  {:>10}  {:>10}",
+            Num(t.trace_theta_deg),
+            hold_name(t.trace_status),
+            "iter",
+            "phi^2 [N^2]",
+            "res_primal",
+            "res_dual"
+        );
+        for p in &t.trace {
+            let _ = writeln!(
+                out,
+                "  {:>4}  {:>18.9}  {:>10.3e}  {:>10.3e}",
+                p.iteration, p.objective_n2, p.res_primal, p.res_dual
+            );
+        }
+    }
+}
+
+fn backend_name(b: Backend) -> &'static str {
+    match b {
+        Backend::Exact => "exact",
+        Backend::Clarabel => "clarabel",
+    }
+}
+
+fn hold_name(h: HoldStatus) -> &'static str {
+    match h {
+        HoldStatus::Held => "held",
+        HoldStatus::NotHeld => "not_held",
+        HoldStatus::Undetermined => "undetermined",
     }
 }
 
 /// Where the time series ends and why: the jam's confirmation, `after_jam_s` after the jam, the
 /// palm closing (theta = 0, before the time asked for), the palm's end, or the integrator
 /// giving up.
-pub fn series_end(config: &Config, s: &DynamicsSolution) -> String {
+pub(crate) fn series_end(config: &Config, s: &DynamicsSolution, words: Words) -> String {
     let t = s.simulated_s;
     let closes_s = config.scene.start_angle_deg / config.dynamics.drive.omega_deg_s;
     let after = config.dynamics.series.after_jam_s;
     let closed = t >= closes_s * (1.0 - 1e-9);
+    let after_jam = words.name("after_jam_s");
     if let Some(f) = &s.failure {
         return format!(
             "stops at t = {t:.4} s: the integrator gave up at t = {:.4} s",
@@ -72,17 +134,18 @@ pub fn series_end(config: &Config, s: &DynamicsSolution) -> String {
     match s.t_jam_s {
         Some(jam) if closed && jam + after > t * (1.0 + 1e-9) => format!(
             "stops at t = {t:.4} s: the palm closed (theta = 0), {:.4} s after the jam instead of \
-             the {after} s asked for (--after-jam)",
+             the {after} s asked for ({after_jam})",
             Num(t - jam),
             t = Num(t)
         ),
         Some(jam) if after > 0.0 => format!(
-            "stops at t = {t:.4} s: {:.4} s after the jam, as asked (--after-jam)",
+            "stops at t = {t:.4} s: {:.4} s after the jam, as asked ({after_jam})",
             Num(t - jam),
             t = Num(t)
         ),
         Some(_) => format!(
-            "stops at t = {t:.4} s: at the jam's confirmation (--after-jam S records S s more)",
+            "stops at t = {t:.4} s: at the jam's confirmation ({} records S s more)",
+            words.given("after_jam_s", "S"),
             t = Num(t)
         ),
         None if closed => {
@@ -100,20 +163,14 @@ pub fn series_end(config: &Config, s: &DynamicsSolution) -> String {
     }
 }
 
-/// Writes the time series of `s`, simulated for `config`, to `path` as CSV (atomically), with
-/// the columns of render's fig5.csv.
-pub fn write_series(config: &Config, s: &DynamicsSolution, path: &Path) -> Result<()> {
-    let csv = crate::figures::time_series::series_csv(&config.scene, &config.dynamics, &s.series);
-    write_atomic(path, &csv)
-}
-
-/// The dynamics' own lines under the shared status lines of `solve`: jam time, trust, work,
-/// and where the series written to `series` ends and why.
-pub fn render_details(
+/// The simulation's own lines under the shared status lines of a push's text: jam time, trust,
+/// work, and where the series written to `series` ends and why.
+pub(super) fn dynamics_lines(
     s: &mut String,
     d: &DynamicsSolution,
     config: &Config,
     series: Option<&Path>,
+    words: Words,
 ) {
     if d.status == JamStatus::Inaccurate
         && let (Some(t), Some(x)) = (d.theta_jam_deg, d.x_jam_mm)
@@ -144,8 +201,9 @@ pub fn render_details(
     if let (Some(xr), Some(u)) = (d.x_jam_rigid_mm, d.model_uncertainty_mm) {
         let _ = writeln!(
             s,
-            "  model uncertainty {u:.3} mm: a rigid contact (--method nonsmooth) jams at \
-             {xr:.3} mm; the contact's unknown compliance moves the jam, the integrator does not",
+            "  model uncertainty {u:.3} mm: a rigid contact ({}) jams at {xr:.3} mm; the \
+             contact's unknown compliance moves the jam, the integrator does not",
+            words.given("method", "nonsmooth"),
             u = Num(u),
             xr = Num(xr)
         );
@@ -180,7 +238,7 @@ pub fn render_details(
             "  series: {} rows in {}; it {}",
             d.series.len(),
             path.display(),
-            series_end(config, d)
+            series_end(config, d, words)
         );
     }
     if let Some(m) = d
@@ -209,7 +267,7 @@ pub fn render_details(
     if let Some(f) = &d.failure {
         let _ = writeln!(s, "  the integrator gave up: {f}");
     }
-    if let Some(a) = advice(d) {
+    if let Some(a) = dynamics_advice(d, words) {
         let _ = writeln!(s, "  advice: {a}");
     }
     if nonsmooth {
@@ -239,12 +297,15 @@ pub fn render_details(
 /// speed, and tightening the tolerances changes nothing (V_s sets the error).
 const SPEED_PER_STICTION_VELOCITY: f64 = 20.0;
 
-/// What to do about the typed reason of `s`, in terms of the flags that act on it.
-fn advice(s: &DynamicsSolution) -> Option<String> {
+/// What to do about the typed reason of `s`, in terms of the settings that act on it.
+pub(crate) fn dynamics_advice(s: &DynamicsSolution, words: Words) -> Option<String> {
+    let w = |key: &str| words.name(key);
+    let nonsmooth = words.given("method", "nonsmooth");
+    let radau5 = words.given("method", "radau5");
     if let Some(c) = s.cross_check {
         return Some(match c {
             CrossCheck::LooseTolerance { loosest, .. } => {
-                format!("set --rtol to {loosest} or tighter")
+                format!("set {} to {loosest} or tighter", w("rtol"))
             }
             CrossCheck::HeldBelowSlidingPush {
                 geometric_speed_mm_s: v,
@@ -256,9 +317,9 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
                 stiction_velocity_mm_s: vs,
                 ..
             } if v < SPEED_PER_STICTION_VELOCITY * vs => format!(
-                "the palm is slow against the stiction transition velocity: lower \
-                 --stiction-velocity to {:.2e} mm/s or less (the tolerances do not set this \
-                 error), or use --method nonsmooth",
+                "the palm is slow against the stiction transition velocity: lower {} to {:.2e} \
+                 mm/s or less (the tolerances do not set this error), or use {nonsmooth}",
+                w("stiction_velocity_mm_s"),
                 v / SPEED_PER_STICTION_VELOCITY
             ),
             CrossCheck::VerificationDisagrees {
@@ -269,7 +330,8 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
                 check: Refinement::Step { step_deg },
                 ..
             } => format!(
-                "lower --nonsmooth-step (now {} deg) and compare the answers",
+                "lower {} (now {} deg) and compare the answers",
+                w("nonsmooth_step_deg"),
                 step_deg / 2.0
             ),
             CrossCheck::VerificationDisagrees {
@@ -280,14 +342,18 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
                 check: Refinement::Tolerance { rtol },
                 ..
             } => format!(
-                "tighten --rtol (now {:e}) and compare the answers",
+                "tighten {} (now {:e}) and compare the answers",
+                w("rtol"),
                 rtol * 10.0
             ),
-            CrossCheck::LiftsOff { .. } => LIFTS_DISC_ADVICE.to_string(),
+            CrossCheck::LiftsOff { .. } => super::solve_text::lifts_disc_advice(words),
             CrossCheck::KnockedAhead { x_jam_rigid_mm, .. } => format!(
-                "design to the rigid contact's {x_jam_rigid_mm:.3} mm (--method nonsmooth), measure \
-                 the real contact's --stiffness and --damping, or close the palm slower \
-                 (--omega) so that it does not strike the disc",
+                "design to the rigid contact's {x_jam_rigid_mm:.3} mm ({nonsmooth}), measure \
+                 the real contact's {} and {}, or close the palm slower ({}) so that it does \
+                 not strike the disc",
+                w("stiffness_n_per_mm_e"),
+                w("damping_n_s_per_mm"),
+                w("omega_deg_s"),
                 x_jam_rigid_mm = Num(x_jam_rigid_mm)
             ),
             CrossCheck::RigidDisagrees {
@@ -296,49 +362,52 @@ fn advice(s: &DynamicsSolution) -> Option<String> {
                 ..
             } => match x_jam_rigid_mm {
                 Some(x) => format!(
-                    "the rigid contact's answer ({rigid_status} at {x:.3} mm, --method \
-                     nonsmooth) holds without compliance; give --stiffness of the real contact \
-                     and compare",
+                    "the rigid contact's answer ({rigid_status} at {x:.3} mm, {nonsmooth}) holds \
+                     without compliance; give {} of the real contact and compare",
+                    w("stiffness_n_per_mm_e"),
                     x = Num(x)
                 ),
                 None => format!(
-                    "the rigid contact's answer ({rigid_status}, --method nonsmooth) holds \
-                     without compliance; give --stiffness of the real contact and compare"
+                    "the rigid contact's answer ({rigid_status}, {nonsmooth}) holds without \
+                     compliance; give {} of the real contact and compare",
+                    w("stiffness_n_per_mm_e")
                 ),
             },
             CrossCheck::ContactModelDependent { x_jam_rigid_mm, .. } => format!(
-                "the rigid contact's {x_jam_rigid_mm:.3} mm (--method nonsmooth) is the answer \
-                 without compliance; give --stiffness of the real contact, and check --mass \
-                 (a heavy disc presses a soft contact millimetres deep)",
+                "the rigid contact's {x_jam_rigid_mm:.3} mm ({nonsmooth}) is the answer without \
+                 compliance; give {} of the real contact, and check {} (a heavy disc presses a \
+                 soft contact millimetres deep)",
+                w("stiffness_n_per_mm_e"),
+                w("mass_kg"),
                 x_jam_rigid_mm = Num(x_jam_rigid_mm)
             ),
-            CrossCheck::NotAtRest { .. } => "use --method nonsmooth: its rigid disc comes to \
-                 rest exactly, with no creep"
-                .to_string(),
+            CrossCheck::NotAtRest { .. } => {
+                format!("use {nonsmooth}: its rigid disc comes to rest exactly, with no creep")
+            }
             CrossCheck::PastWedge { .. }
             | CrossCheck::StoppedBelowForceLimit { .. }
             | CrossCheck::HeldBelowSlidingPush { .. } => {
-                "tighten --rtol and compare the answers".to_string()
+                format!("tighten {} and compare the answers", w("rtol"))
             }
         });
     }
     s.failure.map(|f| match f {
         Failure::StepLimit { steps, .. } => format!(
-            "raise max_steps in the [dynamics] section of --config (now {steps}), or use \
-             --method radau5, which takes far fewer steps on this stiff problem"
+            "raise max_steps{} (now {steps}), or use {radau5}, which takes far fewer steps on \
+             this stiff problem",
+            words.file_only("dynamics")
         ),
-        Failure::Stiff { .. } => "use --method radau5, an implicit method built for stiff \
-             problems (an explicit method's step is limited by the stiffness, not the accuracy)"
-            .to_string(),
-        Failure::NoConsistentContact { .. } => {
-            "this is a defect of the nonsmooth method: please report the scene; --method \
-             radau5 simulates it with a compliant contact"
-                .to_string()
-        }
-        Failure::StepSizeTooSmall { .. } => {
-            "use --method radau5 or a softer --stiffness: the contact is too stiff for the \
-             step controller"
-                .to_string()
-        }
+        Failure::Stiff { .. } => format!(
+            "use {radau5}, an implicit method built for stiff problems (an explicit method's \
+             step is limited by the stiffness, not the accuracy)"
+        ),
+        Failure::NoConsistentContact { .. } => format!(
+            "this is a defect of the nonsmooth method: please report the scene; {radau5} \
+             simulates it with a compliant contact"
+        ),
+        Failure::StepSizeTooSmall { .. } => format!(
+            "use {radau5} or a softer {}: the contact is too stiff for the step controller",
+            w("stiffness_n_per_mm_e")
+        ),
     })
 }

@@ -96,48 +96,7 @@ use std::f64::consts::PI;
 use serde::Serialize;
 
 use self::lanes::{Many, Mask, atan};
-use crate::scene::{JamStatus, SceneParams};
-
-/// Ground reaction at contact A for a palm angle, from the corrected Eq. 1.
-#[cfg(test)]
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub(crate) struct GroundReaction {
-    /// Tangential reaction R_t in N, positive against the disc's motion (towards the hinge).
-    pub r_t_n: f64,
-    /// Normal reaction R_n in N, positive up.
-    pub r_n_n: f64,
-    /// Jam margin mu_g R_n - R_t in N: positive where the ground holds the disc (jammed),
-    /// negative where the disc slides.
-    pub margin_n: f64,
-    /// R_n < 0: the palm would lift the disc off the ground, and the model does not apply.
-    pub lifts_off: bool,
-}
-
-/// Ground reaction and jam margin at palm angle `theta` (rad), with the palm sliding.
-#[cfg(test)]
-pub(crate) fn ground_reaction(p: &SceneParams, theta: f64) -> GroundReaction {
-    reaction_at(p, p.alpha_palm(), theta)
-}
-
-/// [`ground_reaction`] with the palm's friction angle `alpha_palm` (rad) given.
-#[cfg(test)]
-fn reaction_at(p: &SceneParams, alpha_palm: f64, theta: f64) -> GroundReaction {
-    let phi = theta - alpha_palm;
-    let r_t = p.force_n * phi.sin();
-    let r_n = p.weight_n() + p.force_n * phi.cos();
-    GroundReaction {
-        r_t_n: r_t,
-        r_n_n: r_n,
-        margin_n: p.mu_ground * r_n - r_t,
-        lifts_off: r_n < 0.0,
-    }
-}
-
-/// The jam margin mu_g R_n - R_t in N at palm angle `theta` (rad); see [`ground_reaction`].
-#[cfg(test)]
-pub(crate) fn margin_n(p: &SceneParams, theta: f64) -> f64 {
-    ground_reaction(p, theta).margin_n
-}
+use crate::scene::{JamStatus, Param, SceneParams};
 
 /// The closed-form answer for one push.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -183,6 +142,7 @@ pub struct PastPalm {
 }
 
 mod lanes;
+pub mod reference;
 
 /// The closed-form jam angle in rad, alpha_g + alpha_p + asin(m g sin(alpha_g) / F), before the
 /// statuses are decided; +infinity when the push can never move the disc (m g sin(alpha_g) >= F).
@@ -328,16 +288,16 @@ pub(crate) struct Push<const N: usize = 1> {
 
 impl Push {
     /// The scene fields the closed form reads, in the order of [`Push`]'s inputs.
-    const INPUTS: [&'static str; 9] = [
-        "mu_ground",
-        "mu_palm",
-        "mass_kg",
-        "gravity_m_s2",
-        "force_n",
-        "radius_mm",
-        "palm_offset_mm",
-        "palm_length_mm",
-        "start_angle_deg",
+    const INPUTS: [Param; 9] = [
+        Param::MuGround,
+        Param::MuPalm,
+        Param::MassKg,
+        Param::GravityMS2,
+        Param::ForceN,
+        Param::RadiusMm,
+        Param::PalmOffsetMm,
+        Param::PalmLengthMm,
+        Param::StartAngleDeg,
     ];
 
     /// The inputs [`Push::derive`] derives the start from: the start angle, the radius, the
@@ -373,10 +333,23 @@ impl Push {
 }
 
 /// Where [`Push::INPUTS`] holds the radius, the palm's offset and length, and the start angle.
-const RADIUS: usize = 5;
-const OFFSET: usize = 6;
-const LENGTH: usize = 7;
-const START: usize = 8;
+const RADIUS: usize = input_of(Param::RadiusMm);
+const OFFSET: usize = input_of(Param::PalmOffsetMm);
+const LENGTH: usize = input_of(Param::PalmLengthMm);
+const START: usize = input_of(Param::StartAngleDeg);
+
+/// The index of `param` in [`Push::INPUTS`], at compile time: a parameter the closed form
+/// does not read fails the build.
+const fn input_of(param: Param) -> usize {
+    let mut i = 0;
+    while i < Push::INPUTS.len() {
+        if crate::settings::decl::same(Push::INPUTS[i].as_str(), param.as_str()) {
+            return i;
+        }
+        i += 1;
+    }
+    panic!("the closed form does not read this parameter")
+}
 
 impl<const N: usize> Push<N> {
     /// `N` copies of push `q`.
@@ -401,7 +374,7 @@ impl<const N: usize> Push<N> {
     /// The index of the input that scene field `key` sets; None for a field the closed
     /// form does not read.
     pub(crate) fn input(key: &str) -> Option<usize> {
-        Push::INPUTS.iter().position(|k| *k == key)
+        Push::INPUTS.iter().position(|p| p.as_str() == key)
     }
 
     /// The lanes of input `i` ([`Self::input`]); after writing those of
@@ -418,7 +391,9 @@ impl<const N: usize> Push<N> {
         if angle {
             let deg = self.inputs[START].0[j];
             let rad = deg.to_radians();
-            let (sin, cos) = rad.sin_cos();
+            // Right angles exact: a cosine of 90 deg of 6.1e-17 put the contact of a palm
+            // 1e300 mm off the hinge line 6.1e283 mm along it, past its end.
+            let (sin, cos) = crate::scene::sin_cos_deg(deg);
             (s.deg.0[j], s.rad.0[j]) = (deg, rad);
             (s.turn.cos.0[j], s.turn.sin.0[j]) = (cos, sin);
         }
@@ -686,8 +661,7 @@ pub(crate) fn least_push_n(p: &SceneParams) -> f64 {
 
 /// The closed form against the corrected Table 1, hand derivations and its invariants.
 #[cfg(test)]
-#[path = "statics_tests.rs"]
-mod statics_tests;
+mod closed_form_tests;
 
 #[cfg(test)]
 mod tests {
@@ -711,29 +685,19 @@ mod tests {
     #[test]
     fn a_pushs_inputs_are_the_fields_they_name() {
         let mut p = SceneParams::default();
-        for (i, key) in Push::INPUTS.iter().enumerate() {
-            let set = SceneParams::real_setter(key).expect("a scene field");
-            set(&mut p, 1.0 + i as f64);
+        for (i, param) in Push::INPUTS.iter().enumerate() {
+            p = param.apply(p, 1.0 + i as f64);
         }
         let push = Push::of(&p);
-        for (i, key) in Push::INPUTS.iter().enumerate() {
-            assert_eq!(push.inputs[i].one(), 1.0 + i as f64, "{key}");
-        }
-        let named = [(RADIUS, "radius_mm"), (OFFSET, "palm_offset_mm")];
-        let named = [
-            named[0],
-            named[1],
-            (LENGTH, "palm_length_mm"),
-            (START, "start_angle_deg"),
-        ];
-        for (i, key) in named {
-            assert_eq!(Push::INPUTS[i], key);
+        for (i, param) in Push::INPUTS.iter().enumerate() {
+            assert_eq!(push.inputs[i].one(), 1.0 + i as f64, "{}", param.as_str());
         }
     }
 
-    /// theta_jam composed from the frictions' unit vectors is the trigonometric closed form
-    /// atan(mu_g) + atan(mu_p) + asin(m g sin(atan mu_g) / F), and x_jam is r cot(theta/2) +
-    /// h / sin(theta) at it, both to a few ulp, over frictions, loads and offsets.
+    /// theta_jam composed from the frictions' unit vectors is the textbook closed form
+    /// ([`reference`]: atan(mu_g) + atan(mu_p) + asin(m g sin(atan mu_g) / F)), and x_jam is
+    /// r cot(theta/2) + h / sin(theta) at it, both to a few ulp, over frictions, loads and
+    /// offsets.
     #[test]
     fn the_composed_closed_form_is_the_trigonometric_one() {
         for mu_g in [0.0, 1e-6, 0.05, 0.2, 0.4, 0.9, 1.7, 40.0, 1e200] {
@@ -747,13 +711,11 @@ mod tests {
                             palm_offset_mm: offset,
                             ..SceneParams::default()
                         };
-                        let load = p.weight_n() * mu_g.atan().sin() / force;
                         let composed = theta_jam_rad(&p);
-                        if load >= 1.0 {
+                        let Some(trig) = reference::theta_jam_rad(&p) else {
                             assert!(composed.is_infinite(), "{p:?}");
                             continue;
-                        }
-                        let trig = mu_g.atan() + mu_p.atan() + load.asin();
+                        };
                         let d = (composed - trig).abs() / trig.max(1e-300);
                         assert!(
                             d <= 8.0 * f64::EPSILON || composed == trig,
@@ -761,7 +723,7 @@ mod tests {
                         );
                         if composed > 0.0 && composed < PI {
                             let x = verdict(&Push::of(&p)).x_jam.one();
-                            let want = p.disc_position_mm(trig);
+                            let want = reference::x_mm(&p, trig);
                             let dx = (x - want).abs() / want;
                             assert!(dx <= 1e-13, "{p:?}: x {x} {want}");
                         }
@@ -798,6 +760,36 @@ mod tests {
             };
             assert_eq!(solve(&p).status, JamStatus::BeyondReach, "mu = {mu}");
         }
+    }
+
+    /// `solve --palm-offset 1e300` said the disc starts past the palm's end, which would
+    /// touch it 6.1e283 mm from the hinge at the start angle 90 deg: the cosine of 90 deg in
+    /// radians (6.1e-17) times the offset, from an offset of about 2.3e18 up. At 90 deg the
+    /// contact lies r from the hinge whatever the offset, so the disc starts on the palm, and
+    /// the jam, 1e300 mm out, lies past the palm's end.
+    #[test]
+    fn a_palm_far_off_the_hinge_line_touches_the_disc_at_its_radius_at_90_deg() {
+        for h in [1e17, 2.3e18, 1e20, 1e300] {
+            let p = SceneParams {
+                palm_offset_mm: h,
+                ..SceneParams::default()
+            };
+            assert_eq!(p.start_contact_distance_mm(), p.radius_mm, "h = {h:e}");
+            let s = solve(&p);
+            assert_eq!(s.status, JamStatus::BeyondReach, "h = {h:e}");
+            let past = s.past_palm.unwrap_or_else(|| panic!("h = {h:e}: {s:?}"));
+            assert!(past.x_jam_mm > h, "h = {h:e}: {past:?}");
+        }
+        // Other starts keep the bits they had: 60 deg as the radians give it.
+        let p = SceneParams {
+            palm_offset_mm: 3.0,
+            start_angle_deg: 60.0,
+            ..SceneParams::default()
+        };
+        let (sin, cos) = crate::scene::sin_cos_deg(60.0);
+        assert_eq!((sin, cos), 60_f64.to_radians().sin_cos());
+        let s_b = p.start_contact_distance_mm();
+        assert!((s_b - p.contact_distance_mm(60_f64.to_radians())).abs() < 1e-12 * s_b);
     }
 
     /// Regression: a jam past the palm's end said `beyond_reach` with no number; the
@@ -925,7 +917,7 @@ mod tests {
             force_n: 2.0_f64.sqrt(),
             ..Default::default()
         };
-        let g = ground_reaction(&p, 90_f64.to_radians());
+        let g = reference::ground_reaction(&p, 90_f64.to_radians());
         // ... so R_t = F sin 45 = 1 N and R_n = F cos 45 = 1 N (the palm presses down).
         assert!((g.r_t_n - 1.0).abs() < 1e-12 && (g.r_n_n - 1.0).abs() < 1e-12);
         assert!((g.margin_n + 1.0).abs() < 1e-12);

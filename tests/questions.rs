@@ -1,0 +1,158 @@
+//! The library's questions and answers (`jamchart::ask`), built from keywords as a JSON body or
+//! a Python call gives them: each answer's serde form is the command line's `--format json`
+//! document for the same inputs, so every face answers alike.
+
+use jamchart::Error;
+use jamchart::ask::{DesignQuestion, SolveQuestion, VlocatorQuestion};
+
+use crate::common::cli::{SHAFT, json_of, timeless};
+
+/// The shaft's flags as the keys of a JSON body.
+const SHAFT_KEYS: &str =
+    r#""radius_mm": 12.5, "mass_kg": 0.4, "force_n": 40, "palm_length_mm": 80"#;
+
+#[test]
+fn a_json_body_asks_solve_what_its_flags_ask() {
+    for (body, flags) in [
+        (
+            format!(r#"{{"mu": 0.21, {SHAFT_KEYS}}}"#),
+            vec!["--mu", "0.21"],
+        ),
+        (
+            format!(r#"{{"mu": "0.12:0.3", {SHAFT_KEYS}}}"#),
+            vec!["--mu", "0.12:0.3"],
+        ),
+        (
+            format!(r#"{{"mu": "normal(0.21,0.03)", "before_mm": [50, 60], {SHAFT_KEYS}}}"#),
+            vec!["--mu", "normal(0.21,0.03)", "--before", "50,60"],
+        ),
+        (
+            r#"{"model": "all", "mu": 0.3}"#.to_string(),
+            vec!["--model", "all", "--mu", "0.3"],
+        ),
+        (
+            r#"{"model": "min_norm", "mu": "0.2:0.4", "samples": 30}"#.to_string(),
+            vec!["--model", "min-norm", "--mu", "0.2:0.4", "--samples", "30"],
+        ),
+    ] {
+        let question: SolveQuestion = serde_json::from_str(&body).unwrap();
+        let answer = serde_json::to_value(question.answer().unwrap()).unwrap();
+        let mut args = vec!["solve"];
+        args.extend(&flags);
+        if body.contains("radius_mm") {
+            args.extend(SHAFT);
+        }
+        assert_eq!(timeless(answer), json_of(&args), "{body}");
+    }
+}
+
+#[test]
+fn a_json_body_asks_design_and_vlocator_what_their_flags_ask() {
+    let body = format!(r#"{{"x_target_mm": 50, "mu": "0.12:0.3", {SHAFT_KEYS}}}"#);
+    let question: DesignQuestion = serde_json::from_str(&body).unwrap();
+    let mut args = vec!["design", "--x-target", "50", "--mu", "0.12:0.3"];
+    args.extend(SHAFT);
+    assert_eq!(
+        serde_json::to_value(question.answer().unwrap()).unwrap(),
+        json_of(&args)
+    );
+    for (body, args) in [
+        (
+            r#"{"included_angle_deg": 70, "mu": 0.25, "load_n": 5}"#,
+            vec![
+                "vlocator",
+                "--included-angle",
+                "70",
+                "--mu",
+                "0.25",
+                "--load",
+                "5",
+            ],
+        ),
+        (
+            r#"{"mu": "0.1:0.25", "load_n": 20, "mass_kg": 0.4}"#,
+            vec![
+                "vlocator", "--mu", "0.1:0.25", "--load", "20", "--mass", "0.4",
+            ],
+        ),
+        (
+            r#"{"flank_angles": [30, 60], "load_n": 5, "rotation": "blocked"}"#,
+            vec![
+                "vlocator",
+                "--flank-angles",
+                "30,60",
+                "--load",
+                "5",
+                "--rotation",
+                "blocked",
+            ],
+        ),
+    ] {
+        let question: VlocatorQuestion = serde_json::from_str(body).unwrap();
+        let answer = serde_json::to_value(question.answer().unwrap()).unwrap();
+        assert_eq!(answer, json_of(&args), "{body}");
+    }
+}
+
+/// A TOML table is keywords too: a parameter file's `[scene]` keys, flat.
+#[test]
+fn a_toml_table_asks_the_same_question() {
+    let question: SolveQuestion = toml::from_str("mu = \"0.12:0.3\"\nradius_mm = 12.5\n").unwrap();
+    assert_eq!(question.uncertain.inputs[0].name, "mu");
+    assert_eq!(question.config.scene.radius_mm, 12.5);
+}
+
+/// Bad keywords are the library's typed errors, with the key, the value and the reason a face
+/// shows (or the nearest key of a typo).
+#[test]
+fn bad_keywords_are_typed_errors_naming_the_key() {
+    let refused = |body: &str| SolveQuestion::from_keywords(serde_json::from_str(body).unwrap());
+    match refused(r#"{"raduis_mm": 10}"#) {
+        Err(Error::UnknownKey { key, nearest }) => {
+            assert_eq!(
+                (key.as_str(), nearest.as_deref()),
+                ("raduis_mm", Some("radius_mm"))
+            );
+        }
+        other => panic!("{other:?}"),
+    }
+    for (body, key) in [
+        (r#"{"mu": "0.1:nan"}"#, "mu"),
+        (r#"{"mu": -1}"#, "mu"),
+        (r#"{"radius_mm": "10:12"}"#, "radius_mm"),
+        (r#"{"mu": true}"#, "mu"),
+        (r#"{"model": "adams"}"#, "model"),
+        (r#"{"samples": -3}"#, "samples"),
+        (r#"{"quantiles": [1.5]}"#, "quantiles"),
+        (r#"{"force_n": 10, "push_ratio": 3}"#, "push_ratio"),
+        (r#"{"method": "euler"}"#, "dynamics.integrator.method"),
+    ] {
+        match refused(body) {
+            Err(Error::InvalidValue { key: k, .. }) => assert_eq!(k, key, "{body}"),
+            other => panic!("{body}: {other:?}"),
+        }
+    }
+    // Deserialising says the same, as text.
+    let e = serde_json::from_str::<SolveQuestion>(r#"{"mu": -1}"#).unwrap_err();
+    assert!(e.to_string().starts_with("invalid mu = -1: "), "{e}");
+}
+
+/// The text of an answer names the settings in a face's words: flags on the command line,
+/// keys elsewhere.
+#[test]
+fn an_answers_text_names_settings_in_a_faces_words() {
+    use jamchart::ask::Words;
+    let question: SolveQuestion =
+        serde_json::from_str(r#"{"mu": 0.05, "palm_length_mm": 40}"#).unwrap();
+    let answer = question.answer().unwrap();
+    let (flags, keys) = (answer.text(Words::Flags), answer.text(Words::Keys));
+    assert!(
+        flags.contains("(--palm-length)") && flags.contains("(--mu)"),
+        "{flags}"
+    );
+    assert!(
+        keys.contains("(palm_length_mm)") && keys.contains("(mu)"),
+        "{keys}"
+    );
+    assert!(!keys.contains("--"), "{keys}");
+}
