@@ -21,7 +21,9 @@ impl Serialize for Dec {
 }
 
 /// `v` as a plain decimal: [`SIGNIFICANT_DIGITS`] significant digits, no exponent, trailing
-/// zeros dropped, never `-0`; empty for NaN and infinities.
+/// zeros dropped, never `-0`; empty for NaN and infinities. Below 1.8e19 (what a u64 holds)
+/// every whole digit is kept; beyond, the whole digits past the seventh are 0
+/// ([`plain_wide`]).
 pub fn plain(v: f64) -> String {
     let mut out = Vec::with_capacity(24);
     push_plain(&mut out, v);
@@ -49,7 +51,60 @@ pub fn push_plain(out: &mut Vec<u8>, v: f64) {
     }
     match Rounded::of(v) {
         Some(r) => r.push(out),
+        None if !(WIDE_BELOW..WIDE_FROM).contains(&v.abs()) => plain_wide(out, v),
         None => out.extend_from_slice(plain_std(v).as_bytes()),
+    }
+}
+
+/// Below this magnitude [`plain`] writes a number from its seven digits in exponent form
+/// ([`plain_wide`]): the same text as std's fixed formatting, which works out hundreds of
+/// exact digits first (1e-300 has 306 decimals).
+const WIDE_BELOW: f64 = 1e-22;
+
+/// From this magnitude (what a u64 holds) [`plain`] keeps seven significant digits and writes
+/// the other whole digits as 0 ([`plain_wide`]).
+const WIDE_FROM: f64 = 1.8e19;
+
+/// [`plain`] of a number of more than 22 decimal places or beyond [`WIDE_FROM`], from the
+/// seven digits of `format!("{v:.6e}")`.
+///
+/// std's fixed formatting works out every exact digit of such a number, 300 for 1e300 (whose
+/// whole digits past the seventeenth are the binary expansion's, not the model's), tens of
+/// microseconds each: `render fig3 --set mass_kg=1:1e300` spent 93 % of half a minute on them,
+/// writing a margin of 1e300 N in each of its 160,801 cells. Below 1e-22 the text is std's
+/// (the seventh digit's place is the same in both forms, and both round exactly there); from
+/// [`WIDE_FROM`] on, the whole digits past the seventh are 0, as the seven significant digits
+/// promise.
+fn plain_wide(out: &mut Vec<u8>, v: f64) {
+    let e = format!("{v:.6e}");
+    let (mantissa, exponent) = e.split_once('e').expect("the e form has an exponent");
+    let exponent: i64 = exponent.parse().expect("the exponent is an integer");
+    let digits: Vec<u8> = mantissa.bytes().filter(u8::is_ascii_digit).collect();
+    let end = digits.iter().rposition(|&d| d != b'0').map_or(1, |i| i + 1);
+    let digits = &digits[..end];
+    if v < 0.0 {
+        out.push(b'-');
+    }
+    match usize::try_from(exponent) {
+        // A whole part of exponent + 1 digits, the fraction after it.
+        Ok(e) => {
+            let whole = e + 1;
+            out.extend_from_slice(&digits[..digits.len().min(whole)]);
+            out.extend(std::iter::repeat_n(
+                b'0',
+                whole.saturating_sub(digits.len()),
+            ));
+            if digits.len() > whole {
+                out.push(b'.');
+                out.extend_from_slice(&digits[whole..]);
+            }
+        }
+        // 0.(-exponent - 1 zeros)(the digits).
+        Err(_) => {
+            out.extend_from_slice(b"0.");
+            out.extend(std::iter::repeat_n(b'0', (-exponent - 1) as usize));
+            out.extend_from_slice(digits);
+        }
     }
 }
 
@@ -631,7 +686,7 @@ mod tests {
             let mut fast = Vec::new();
             push_plain(&mut fast, v);
             let fast = String::from_utf8(fast).unwrap();
-            let want = if v.is_finite() && v != 0.0 {
+            let want = if v.is_finite() && v != 0.0 && v.abs() < WIDE_FROM {
                 plain_std(v)
             } else {
                 plain(v)
@@ -890,6 +945,52 @@ mod tests {
         }
         assert_eq!(significant(0.0), 0.0);
         assert!(significant(f64::NAN).is_nan());
+    }
+
+    /// Beyond what a u64 holds a number keeps its seven significant digits and the other
+    /// whole digits are 0: std's exact expansion of 1e300 wrote the binary expansion's 300
+    /// digits, tens of microseconds each (`render fig3 --set mass_kg=1:1e300` took half a
+    /// minute, 93 % of it here). Below 1e-22 the text is std's exact one, only sooner.
+    #[test]
+    fn numbers_beyond_the_fast_path_keep_seven_digits() {
+        use proptest::prelude::*;
+        assert_eq!(plain(4.9030000000000001e302).len(), 303);
+        assert!(plain(4.903e302).starts_with("4903000000000000000000"));
+        assert_eq!(plain(-1e300), format!("-1{}", "0".repeat(300)));
+        assert_eq!(plain(1.8e19), "18000000000000000000");
+        assert_eq!(plain(123_456_789e20), format!("1234568{}", "0".repeat(22)));
+        assert_eq!(plain(1.5e-300), format!("0.{}15", "0".repeat(299)));
+        let mut runner = runner();
+        let values = (1.0f64..10.0, 19i32..309, -324i32..-22, any::<bool>());
+        runner
+            .run(&values, |(m, big, small, neg)| {
+                let sign = if neg { -1.0 } else { 1.0 };
+                // Large: seven digits as the e form rounds them, the rest zeros.
+                let v = sign * m * 10f64.powi(big);
+                if v.is_finite() && v.abs() >= WIDE_FROM {
+                    let text = plain(v);
+                    let e = format!("{:.6e}", v.abs());
+                    let (mantissa, exponent) = e.split_once('e').unwrap();
+                    let digits: String = mantissa.replace('.', "");
+                    let whole: usize = exponent.parse::<usize>().unwrap() + 1;
+                    let unsigned = text.trim_start_matches('-');
+                    prop_assert_eq!(unsigned.len(), whole, "{:e}", v);
+                    prop_assert!(
+                        unsigned.starts_with(digits.trim_end_matches('0')),
+                        "{:e}",
+                        v
+                    );
+                    prop_assert_eq!(text.starts_with('-'), neg);
+                    prop_assert_eq!(significant(v), text.parse::<f64>().unwrap(), "{:e}", v);
+                }
+                // Small: std's exact text.
+                let v = sign * m * 10f64.powi(small);
+                if v != 0.0 && v.abs() < WIDE_BELOW {
+                    prop_assert_eq!(plain(v), plain_std(v), "{:e}", v);
+                }
+                Ok(())
+            })
+            .unwrap();
     }
 
     /// A row's room for a number holds the longest plain text there is.

@@ -320,7 +320,7 @@ fn avoid_jams(e: &SceneParams) -> AvoidJams {
     AvoidJams::ShorterThan {
         below_mm: below,
         x_jam_earliest_mm: x,
-        touches_mm: e.contact_distance_mm(start),
+        touches_mm: e.start_contact_distance_mm(),
     }
 }
 

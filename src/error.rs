@@ -3,7 +3,8 @@
 //! Physical outcomes ("never jams", "QP infeasible", "integrator gave up") are never errors;
 //! they are values of the status enums of each model.
 
-use std::path::PathBuf;
+use std::borrow::Cow;
+use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
@@ -22,7 +23,7 @@ pub enum Error {
     },
 
     /// A TOML file does not parse or has an unknown key.
-    #[error("{path}:{line}:{column}: {message}")]
+    #[error("{}:{line}:{column}: {message}", path_text(path))]
     Config {
         /// The file.
         path: PathBuf,
@@ -32,6 +33,16 @@ pub enum Error {
         column: usize,
         /// The parser's message, naming the key.
         message: String,
+    },
+
+    /// Several mistakes in one file, each a [`Error::Config`] (or another error, after them),
+    /// in file order: all of a scene file's sections are read before any is refused.
+    #[error("{} mistakes in {}:\n{}", errors.len(), path_text(path), errors.iter().map(|e| format!("  {e}")).collect::<Vec<_>>().join("\n"))]
+    InFile {
+        /// The file.
+        path: PathBuf,
+        /// The mistakes, by line and column.
+        errors: Vec<Error>,
     },
 
     /// A request whose estimated memory or output exceeds its limit (`crate::limits`).
@@ -96,7 +107,7 @@ pub enum Error {
     },
 
     /// A file could not be read or written; `action` says which ("read", "write", ...).
-    #[error("cannot {action} {path}: {source}")]
+    #[error("cannot {action} {}: {source}", path_text(path))]
     Io {
         /// What was being done: "read", "write", ...
         action: &'static str,
@@ -109,8 +120,9 @@ pub enum Error {
     /// An output path jamchart will not write: `what` says what is there (a symbolic link, a
     /// directory, a device); nothing was written.
     #[error(
-        "refusing to write {path}: it is {what}; jamchart writes only new names, regular files \
-         (replaced atomically), FIFOs, terminals and /dev/null: give another path"
+        "refusing to write {}: it is {what}; jamchart writes only new names, regular files \
+         (replaced atomically), FIFOs, terminals and /dev/null: give another path",
+        path_text(path)
     )]
     UnsafeOutput {
         /// The refused path.
@@ -141,8 +153,9 @@ pub enum Error {
 
     /// `render --check` without a manifest to check against.
     #[error(
-        "no manifest {path} to check against: write it first with the same scenes and --out, \
-         adding --bless instead of --check"
+        "no manifest {} to check against: write it first with the same scenes and --out, \
+         adding --bless instead of --check",
+        path_text(path)
     )]
     NoManifest {
         /// Where the manifest was looked for (`<out>/SHA256SUMS`).
@@ -159,7 +172,10 @@ pub enum Error {
     },
 
     /// One path named for two outputs of one run.
-    #[error("{} is named twice as an output; give each output its own path", path.display())]
+    #[error(
+        "{} is named twice as an output; give each output its own path",
+        path_text(path)
+    )]
     OutputTwice {
         /// The path.
         path: PathBuf,
@@ -195,7 +211,25 @@ impl Error {
         Error::InvalidValue {
             key: key.to_string(),
             value: cut(&value.to_string()),
-            reason: reason.into(),
+            // A reason quotes numbers too (a bound, the other end of a range, a parser's
+            // message), each in full: `x_min_mm is -1000...0` had 309 digits.
+            reason: short_numbers(&reason.into()),
+        }
+    }
+
+    /// The mistakes of file `path` as one error in file order (by line and column; those
+    /// without a place last, as found): the one alone where there is one.
+    pub fn in_file_order(path: &std::path::Path, mut errors: Vec<Error>) -> Self {
+        errors.sort_by_key(|e| match e {
+            Error::Config { line, column, .. } => (*line, *column),
+            _ => (usize::MAX, usize::MAX),
+        });
+        match errors.len() {
+            1 => errors.remove(0),
+            _ => Error::InFile {
+                path: path.to_path_buf(),
+                errors,
+            },
         }
     }
 
@@ -276,6 +310,8 @@ impl Error {
             | Error::Draw { .. }
             | Error::Encode { .. }
             | Error::Defect(_) => Fault::Internal,
+            // A file's mistakes are input (a base file that does not load comes alone).
+            Error::InFile { errors, .. } => errors.first().map_or(Fault::Input, Error::fault),
         }
     }
 
@@ -304,13 +340,15 @@ impl Error {
 pub const QUOTE_MAX_CHARS: usize = 60;
 
 /// `s` whole if short, else its first [`QUOTE_MAX_CHARS`] characters, an ellipsis and the full
-/// length.
+/// length. A value is one token of a one-line message: a newline or tab in it is escaped too
+/// ([`escape_controls`]).
 pub fn cut(s: &str) -> String {
     let s = &short_numbers(s);
-    match s.char_indices().nth(QUOTE_MAX_CHARS) {
+    let shown = match s.char_indices().nth(QUOTE_MAX_CHARS) {
         None => s.to_string(),
         Some((end, _)) => format!("{}... ({} bytes in all)", &s[..end], s.len()),
-    }
+    };
+    escape_controls(&shown, false).into_owned()
 }
 
 /// A number printed in full is longer than this (f64's Display writes 1e300 with 301 digits).
@@ -343,12 +381,67 @@ fn short_numbers(s: &str) -> String {
     out
 }
 
+/// `path` as a message shows it, on one line: each control character (a newline and a tab
+/// too) written as an escape ([`escape_controls`]).
+pub fn path_text(path: &Path) -> String {
+    escape_controls(&path.display().to_string(), false).into_owned()
+}
+
+/// Whether `c` is written as an escape: C0 and C1 controls (but newline and tab where
+/// `keep_lines`), DEL, and the bidirectional embeddings, overrides and isolates
+/// (U+202A-U+202E, U+2066-U+2069).
+fn escaped(c: char, keep_lines: bool) -> bool {
+    (c.is_control() && !(keep_lines && (c == '\n' || c == '\t')))
+        || ('\u{202a}'..='\u{202e}').contains(&c)
+        || ('\u{2066}'..='\u{2069}').contains(&c)
+}
+
+/// Text bound for a terminal with each character [`escaped`] written as Rust writes it
+/// (`\u{1b}`), the rest as it is; borrowed when nothing needs it. File names, paths, scene
+/// titles and values a user typed are echoed in answers and messages: a control character
+/// among them (`ESC [ 2 J` in a scene file's name clears the screen, `ESC ] 52` writes the
+/// clipboard) reached the terminal raw, and the bidirectional controls reorder what a line
+/// shows.
+pub(crate) fn escape_controls(text: &str, keep_lines: bool) -> Cow<'_, str> {
+    if !text.chars().any(|c| escaped(c, keep_lines)) {
+        return Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len() + 16);
+    for c in text.chars() {
+        if escaped(c, keep_lines) {
+            out.extend(c.escape_unicode());
+        } else {
+            out.push(c);
+        }
+    }
+    Cow::Owned(out)
+}
+
 /// Result with [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `render jam-probability --set chart.x_min_mm=-1e308` said `(x_min_mm is
+    /// -1000...0)` with 309 digits, and a parser's message quoted `floating point
+    /// 1000...0.0`: a reason's numbers read in exponent form as a value's do.
+    #[test]
+    fn numbers_in_a_reason_are_short() {
+        let e = Error::invalid("chart.x_max_mm", 100.0, format!("x_min_mm is {}", -1e308));
+        assert_eq!(
+            e.to_string(),
+            "invalid chart.x_max_mm = 100: x_min_mm is -1e308"
+        );
+        let serde = format!("invalid type: floating point `{:.1}`, expected u32", 1e308);
+        let e = Error::invalid("--set", "size.width_px=1e308", serde);
+        assert!(
+            e.to_string()
+                .ends_with("floating point `1e308`, expected u32"),
+            "{e}"
+        );
+    }
 
     #[test]
     fn long_values_are_cut_short_ones_kept() {

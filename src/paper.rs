@@ -10,7 +10,9 @@ pub struct Table1Row {
     pub mu: f64,
     /// First model (force analysis): x_jam in mm, as printed.
     pub statics_x_jam_mm: f64,
-    /// First model: theta_jam in degrees, as printed (rounded to 0.1 deg).
+    /// First model: theta_jam in degrees, as printed: the closed form truncated to 0.1 deg,
+    /// not rounded (23.171 deg at mu = 0.20 is printed 23.1;
+    /// `statics_tests::paper_table1_is_our_theta_truncated_and_x_of_that_theta`).
     pub statics_theta_jam_deg: f64,
     /// Second model (minimum norm): x_jam in mm, as printed.
     pub min_norm_x_jam_mm: f64,

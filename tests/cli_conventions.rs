@@ -204,6 +204,57 @@ fn quiet_silences_the_stability_timing_line() {
     assert!(stdout(&quiet).contains("paper"), "{}", stdout(&quiet));
 }
 
+/// `sweep` had no `-q` while `render`, which writes into the same gallery, had: both take it,
+/// and print nothing but errors and warnings with it, their files written all the same.
+#[test]
+fn quiet_silences_render_and_sweep_alike() {
+    let dir = tempfile::tempdir().unwrap();
+    for args in [
+        &["render", "fig6", "--format", "svg", "--out", "o", "-q"][..],
+        &[
+            "sweep",
+            "mu=0.1:0.5:5",
+            "--format",
+            "svg",
+            "--out",
+            "o",
+            "-q",
+        ][..],
+    ] {
+        let o = jamchart(dir.path(), args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
+        assert_eq!(
+            (stdout(&o), stderr(&o)),
+            (String::new(), String::new()),
+            "{args:?}"
+        );
+    }
+    for f in ["fig6.svg", "sweep_mu.svg", "index.html"] {
+        assert!(dir.path().join("o").join(f).is_file(), "{f}");
+    }
+}
+
+/// `render --help` and the guide said a failed `--check` writes the new renders to a
+/// temporary folder named in the report; it writes nothing anywhere (`hostile::check_folder`
+/// checks that) and says how to look at them instead. The help says so, and so does the guide.
+#[test]
+fn the_docs_say_a_failed_check_writes_nothing() {
+    let help = stdout(&jamchart(repo(), &["render", "--help"]));
+    let guide = std::fs::read_to_string(repo().join("src/guide.md")).unwrap();
+    for (doc, text) in [
+        ("render --help", help.as_str()),
+        ("the guide", guide.as_str()),
+    ] {
+        let one_line = text.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(!one_line.contains("temporary folder"), "{doc}");
+        assert!(!one_line.contains("$TMPDIR"), "{doc}");
+        assert!(
+            one_line.contains("another --out") || one_line.contains("another `--out`"),
+            "{doc}"
+        );
+    }
+}
+
 /// Colour is printed in one place, clap's help (bold and underlined headings); it follows
 /// `NO_COLOR` even when colour is forced (`CLICOLOR_FORCE`).
 #[test]

@@ -111,7 +111,7 @@ fn bad_scene_file_names_file_line_and_key() {
     std::fs::create_dir(&charts).unwrap();
     std::fs::write(
         charts.join("bad.toml"),
-        "title = \"t\"\nbase = \"none.toml\"\n[chart]\nkind = \"sweep\"\naxis = { param = \"mu\", min = 0.1, max = 0.5, count = 5 }\n",
+        "title = \"t\"\nbase = \"none.toml\"\n[chart]\nkind = \"sweep\"\nx_axis = { param = \"mu\", min = 0.1, max = 0.5, count = 5 }\n",
     )
     .unwrap();
     let out = jamchart(dir.path(), &["render", "--scenes-dir", "charts"]);
@@ -128,7 +128,7 @@ fn bad_scene_file_names_file_line_and_key() {
     let err = stderr(&out);
     // The chart's own mistake comes before the missing base, named with its line and path.
     assert!(
-        err.contains("bad.toml:5:7: chart.axs = 1: unknown field `axs`"),
+        err.contains("bad.toml:5:7: chart.axs = 1: unknown key; did you mean axis?"),
         "{err}"
     );
 }
@@ -198,7 +198,7 @@ fn own_scene_file_renders_from_its_path_and_set_overrides_it() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::create_dir(dir.path().join("mine")).unwrap();
     let text = "title = \"shaft\"\n[scene]\nradius_mm = 25.0\n[chart]\nkind = \"sweep\"\n\
-                axis = { param = \"mu\", min = 0.1, max = 0.5, count = 5 }\n\
+                x_axis = { param = \"mu\", min = 0.1, max = 0.5, count = 5 }\n\
                 panels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n";
     std::fs::write(dir.path().join("mine/shaft.toml"), text).unwrap();
     let plain = jamchart(dir.path(), &["render", "mine/shaft.toml", "--out", "a"]);
@@ -280,6 +280,49 @@ fn second_render_into_the_folder_keeps_the_other_charts_in_the_gallery() {
     }
 }
 
+/// Regression: writers into one folder at once lost gallery entries. Six sweeps and a render
+/// each built index.html from the folder as they found it, and the last page written listed
+/// 1 to 6 of the 8 charts. Each now builds and writes the page under the folder's lock; the
+/// test widens the window between building and writing (the staging pause) so that every
+/// writer would build its page before any wrote one.
+#[test]
+fn writers_into_one_folder_at_once_all_join_its_gallery() {
+    let dir = tempfile::tempdir().unwrap();
+    let sweeps: Vec<String> = (0..6).map(|i| format!("s{i}")).collect();
+    let run = |args: Vec<String>| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_jamchart"))
+            .args(args)
+            .current_dir(dir.path())
+            .env("JAMCHART_TEST_PAUSE_AFTER_STAGING_MS", "300")
+            .env("RAYON_NUM_THREADS", "1")
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap()
+    };
+    let mut children: Vec<std::process::Child> = sweeps
+        .iter()
+        .map(|name| {
+            let args = ["sweep", "mu=0.2:0.6:5", "--name", name, "--out", "o"];
+            run(args.iter().map(|s| s.to_string()).collect())
+        })
+        .collect();
+    let render = ["render", "fig7a", "fig7b", "--out", "o", "--scenes-dir"];
+    let mut args: Vec<String> = render.iter().map(|s| s.to_string()).collect();
+    args.push(scenes_dir());
+    children.push(run(args));
+    for c in children {
+        let out = c.wait_with_output().unwrap();
+        assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    }
+    let index = std::fs::read_to_string(dir.path().join("o/index.html")).unwrap();
+    let names = sweeps.iter().map(String::as_str).chain(["fig7a", "fig7b"]);
+    let missing: Vec<&str> = names
+        .filter(|n| !index.contains(&format!("<section id=\"{n}\">")))
+        .collect();
+    assert!(missing.is_empty(), "missing from index.html: {missing:?}");
+}
+
 /// Regression: a wrong or invalid `[scene]` key in a scene file named no file or
 /// line (the `--config` path did), and with one bad file in a folder the error did not say
 /// which file.
@@ -288,7 +331,7 @@ fn a_bad_scene_key_names_its_file_and_line() {
     let dir = tempfile::tempdir().unwrap();
     let scenes = dir.path().join("scenes");
     std::fs::create_dir(&scenes).unwrap();
-    let sweep = "[chart]\nkind = \"sweep\"\naxis = { param = \"force_n\", min = 50.0, max = 1000.0, count = 5 }\n";
+    let sweep = "[chart]\nkind = \"sweep\"\nx_axis = { param = \"force_n\", min = 50.0, max = 1000.0, count = 5 }\n";
     std::fs::write(
         scenes.join("good.toml"),
         format!("title = \"good\"\n[scene]\nmu = 0.2\n{sweep}"),
@@ -358,7 +401,7 @@ fn a_scene_that_cannot_show_a_set_key_says_so() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let err = stderr(&o);
     assert!(
-        err.contains("scene fig7a varies radius_mm along chart.axis, so --set radius_mm=12"),
+        err.contains("scene fig7a varies radius_mm along chart.x_axis, so --set radius_mm=12"),
         "{err}"
     );
     assert!(

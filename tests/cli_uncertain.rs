@@ -225,7 +225,7 @@ fn a_range_given_to_a_scene_was_refused_as_an_invalid_type() {
     let o = jamchart(dir.path(), &[&args[..], &["--format", "svg"]].concat());
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let file = "title = \"t\"\n[scene]\nmu = \"0.12:0.3\"\n[chart]\nkind = \"sweep\"\n\
-                axis = { param = \"force_n\", min = 50.0, max = 10000.0, count = 301, scale = \"log\" }\n";
+                x_axis = { param = \"force_n\", min = 50.0, max = 10000.0, count = 301, scale = \"log\" }\n";
     std::fs::write(dir.path().join("s.toml"), file).unwrap();
     let o = jamchart(
         dir.path(),
@@ -376,7 +376,18 @@ fn a_range_narrower_than_the_float_spacing_answers() {
         let (code, out) = run_within(&args, 30);
         assert_eq!(code, Some(0), "{range:?} did not answer in 30 s");
         assert!(out.contains("statuses in the box"), "{range:?}: {out}");
+        assert!(
+            !out.contains(" inf") && !out.contains("NaN"),
+            "{range:?}: {out}"
+        );
     }
+    // Every friction of the subnormal lognormal jams beyond what a double holds: its
+    // quantiles say so.
+    let (_, out) = run_within(&["solve", "--mu", "lognormal(5e-324,1)"], 30);
+    assert!(
+        out.contains("50 % quantile of x_jam: beyond 1.8e308 mm, past every position"),
+        "{out}"
+    );
 }
 
 /// Regression: at subnormal frictions every point's jam lies past the palm (x_jam overflows to
@@ -573,4 +584,20 @@ fn the_universal_chart_reads_off_a_ranges_ends() {
     let o = jamchart(dir.path(), &bad);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("along its axes"), "{}", stderr(&o));
+}
+
+/// `solve --mu 0:0.3` said `never_jams for mu < 2.794e-10`, while only mu = 0 never jams
+/// (`--mu 1e-10` is beyond_reach): the statuses along the range name that one point.
+#[test]
+fn a_friction_range_from_zero_never_jams_at_zero_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = jamchart(dir.path(), &["solve", "--mu", "0:0.3"]);
+    let text = cli_util::stdout(&o);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        text.contains("mu in [0, 0.3]: never_jams at mu = 0, beyond_reach from 0 to 0.06507, "),
+        "{text}"
+    );
+    let o = jamchart(dir.path(), &["solve", "--mu", "1e-10"]);
+    assert!(cli_util::stdout(&o).contains("statics: beyond_reach"));
 }

@@ -9,6 +9,12 @@ use crate::design::{AvoidJams, Carry, LeastPush};
 use crate::numbers::{Num, fixed};
 use crate::scene::SceneParams;
 
+/// A corner's friction, mass or push as the other answers print an input's value: 4
+/// significant digits (a distribution's 0.1 % quantile printed as 0.302706969185).
+fn short(v: f64) -> String {
+    crate::numbers::sig(v, 4)
+}
+
 /// The least push's line of the text answer.
 fn push_line(e: &SceneParams, least_push: LeastPush) -> String {
     match least_push {
@@ -29,8 +35,8 @@ fn push_line(e: &SceneParams, least_push: LeastPush) -> String {
             "least push: none: at mu_ground {} / mu_palm {} the friction wedge locks at {:.3} deg \
              (x = {x_rigid_mm:.3} mm) before the target whatever the push; lower the friction \
              or move the target nearer",
-            Num(e.mu_ground),
-            Num(e.mu_palm),
+            short(e.mu_ground),
+            short(e.mu_palm),
             Num(theta_rigid_deg),
             x_rigid_mm = Num(x_rigid_mm)
         ),
@@ -43,8 +49,8 @@ fn sim_line(c: &SimCheck) -> String {
         "  check (F = {:.3} N, mu {} / {}): closed form x_jam = {}, nonsmooth simulation (force \
          drive) x_jam = {}",
         Num(c.force_n),
-        Num(c.mu.0),
-        Num(c.mu.1),
+        short(c.mu.0),
+        short(c.mu.1),
         mm(c.x_jam_closed_form_mm),
         mm(c.x_jam_nonsmooth_mm)
     )
@@ -78,14 +84,14 @@ impl DesignReport {
             out,
             "jams earliest at mu_ground {} / mu_palm {}, m = {} kg, F = {} N; latest at mu_ground {} / \
          mu_palm {}, m = {} kg, F = {} N",
-            Num(e.mu_ground),
-            Num(e.mu_palm),
-            Num(e.mass_kg),
-            Num(e.force_n),
-            Num(latest.mu_ground),
-            Num(latest.mu_palm),
-            Num(latest.mass_kg),
-            Num(latest.force_n)
+            short(e.mu_ground),
+            short(e.mu_palm),
+            short(e.mass_kg),
+            short(e.force_n),
+            short(latest.mu_ground),
+            short(latest.mu_palm),
+            short(latest.mass_kg),
+            short(latest.force_n)
         );
         if d.target_past_palm {
             let _ = writeln!(
@@ -133,7 +139,7 @@ impl DesignReport {
                  form), or mu up to {} on both",
                     Num(e.force_n),
                     mu(mu_ground_max),
-                    Num(e.mu_palm),
+                    short(e.mu_palm),
                     mu(mu_max)
                 );
             }
@@ -240,5 +246,28 @@ impl DesignReport {
                 ),
             },
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ask::DesignQuestion;
+
+    /// `design` with a distributed friction printed its corners with 12 digits (`mu_ground
+    /// 0.302706969185`) beside answers of 4: a corner reads as an input's value does.
+    #[test]
+    fn design_corners_read_with_the_digits_of_the_other_answers() {
+        let q: DesignQuestion = serde_json::from_value(serde_json::json!({
+            "x_target_mm": 40.0,
+            "mu": "normal(0.21,0.03)",
+        }))
+        .unwrap();
+        let text = q.answer().unwrap().text(Words::Flags);
+        assert!(
+            text.contains("jams earliest at mu_ground 0.3027 / mu_palm 0.3027"),
+            "{text}"
+        );
+        assert!(!text.contains("0.302706969185"), "{text}");
     }
 }

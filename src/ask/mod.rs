@@ -48,7 +48,6 @@ pub use crate::uncertain::dist::Progress;
 pub(crate) use design::DESIGN_KEYS;
 pub use design::{DesignAnswer, DesignQuestion, DesignReport, SimCheck};
 pub use keywords::Keywords;
-#[cfg(feature = "python")]
 pub(crate) use keywords::nearest;
 pub use read_off::ReadOff;
 pub use render::{RenderAnswer, RenderQuestion};

@@ -186,6 +186,15 @@ fn distribution_text(s: &mut String, d: &DistAnswer) {
             interval(&q.x_jam_mm, 3)
         );
     }
+    for q in &d.beyond_every_position {
+        let _ = writeln!(
+            s,
+            "    {:>4} % quantile of x_jam: beyond {:.1e} mm, past every position a double \
+             holds (frictions too small for a jam within any reach)",
+            round(100.0 * q),
+            f64::MAX
+        );
+    }
 }
 
 /// `mu: beyond_reach for mu < 0.148, jams from 0.148 to 0.3; the jam comes earliest at the
@@ -198,6 +207,7 @@ fn segments_text(i: &InputEnds) -> String {
             .iter()
             .enumerate()
             .map(|(j, g)| match j {
+                _ if g.from == g.to => format!("{} at {n} = {}", g.status, round(g.from)),
                 0 => format!("{} for {n} < {}", g.status, round(g.to)),
                 _ => format!("{} from {} to {}", g.status, round(g.from), round(g.to)),
             })

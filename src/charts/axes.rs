@@ -9,6 +9,7 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::collide::PxBox;
 use super::style::{self, GRID_MAJOR, GRID_MINOR, INK, PAPER};
 pub use super::ticks::{PlotAxis, Ticks};
 
@@ -318,6 +319,18 @@ pub fn boxed_text<DB: DrawingBackend>(
     pos: Pos,
     size_px: f64,
 ) -> DrawResult<DB> {
+    boxed_text_placed(root, s, at, pos, size_px).map(|_| ())
+}
+
+/// [`boxed_text`], returning the white box it drew: what a label placed later must keep
+/// clear of.
+pub fn boxed_text_placed<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    s: &str,
+    at: (i32, i32),
+    pos: Pos,
+    size_px: f64,
+) -> Result<PxBox, DrawingAreaErrorKind<DB::ErrorType>> {
     let style = style::text(size_px);
     let (w, h) = root.estimate_text_size(s, &style)?;
     let (w, h) = (w as i32, h as i32);
@@ -340,7 +353,58 @@ pub fn boxed_text<DB: DrawingBackend>(
         s.to_string(),
         (x0, y0),
         style.pos(Pos::new(HPos::Left, VPos::Top)),
-    ))
+    ))?;
+    Ok(PxBox {
+        x0: x0 - pad,
+        y0: y0 - pad,
+        x1: x0 + w + pad,
+        y1: y0 + h + pad,
+    })
+}
+
+/// Space between two lines of a [`boxed_lines`] block, px.
+const LINE_GAP_PX: i32 = 2;
+
+/// The size in px of `lines` set as one [`boxed_lines`] block (without its box's margin).
+pub fn lines_size<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    lines: &[String],
+    size_px: f64,
+) -> Result<(u32, u32), DrawingAreaErrorKind<DB::ErrorType>> {
+    let style = style::text(size_px);
+    let (mut w, mut h) = (0, 0);
+    for (k, l) in lines.iter().enumerate() {
+        let (lw, lh) = root.estimate_text_size(l, &style)?;
+        w = w.max(lw);
+        h += lh + if k > 0 { LINE_GAP_PX as u32 } else { 0 };
+    }
+    Ok((w, h))
+}
+
+/// Lines of text, left-aligned, on one white box whose text starts at `at` (top left): a
+/// label too long for one line beside a point.
+pub fn boxed_lines<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    lines: &[String],
+    at: (i32, i32),
+    size_px: f64,
+) -> DrawResult<DB> {
+    let (w, h) = lines_size(root, lines, size_px)?;
+    let pad = BOX_PAD;
+    root.draw(&Rectangle::new(
+        [
+            (at.0 - pad, at.1 - pad),
+            (at.0 + w as i32 + pad, at.1 + h as i32 + pad),
+        ],
+        PAPER.filled(),
+    ))?;
+    let font = style::text(size_px).pos(Pos::new(HPos::Left, VPos::Top));
+    let mut y = at.1;
+    for l in lines {
+        root.draw(&Text::new(l.clone(), (at.0, y), font.clone()))?;
+        y += root.estimate_text_size(l, &font)?.1 as i32 + LINE_GAP_PX;
+    }
+    Ok(())
 }
 
 /// The chart title centred at the top of `root`, and the subtitle line (the scene, the source) under it.

@@ -82,31 +82,22 @@ impl PxBox {
     }
 }
 
+/// Where a label goes: the top-left corner of its text and its box.
+pub type Placed = ((i32, i32), PxBox);
+
 /// Where a label of `w` x `h` px (its box grown by `pad`) goes beside the point `at`: the first
 /// of the four corners around it, `gap` px off (below right, above right, above left, below
-/// left), whose box lies inside `frame` and meets none of `lines` and none of `boxes`; the
-/// first corner when none is free. Returns the box's top-left text corner and the box.
+/// left), whose box lies inside `frame` and meets none of `lines` and none of `boxes`, or, as
+/// the error, the first corner when none is free (a caller may then try the label in another
+/// shape). Each is the box's top-left text corner and the box.
 pub fn place_beside(
     at: (i32, i32),
-    (w, h): (u32, u32),
+    size: (u32, u32),
     (gap, pad): (i32, i32),
     frame: &PxBox,
     lines: &[Vec<(i32, i32)>],
     boxes: &[PxBox],
-) -> ((i32, i32), PxBox) {
-    let (w, h) = (w as i32, h as i32);
-    let corners = [
-        (at.0 + gap, at.1 + gap),
-        (at.0 + gap, at.1 - gap - h),
-        (at.0 - gap - w, at.1 - gap - h),
-        (at.0 - gap - w, at.1 + gap),
-    ];
-    let boxed = |(x0, y0): (i32, i32)| PxBox {
-        x0: x0 - pad,
-        y0: y0 - pad,
-        x1: x0 + w + pad,
-        y1: y0 + h + pad,
-    };
+) -> Result<Placed, Placed> {
     let free = |b: &PxBox| {
         b.x0 >= frame.x0
             && b.y0 >= frame.y0
@@ -115,24 +106,42 @@ pub fn place_beside(
             && !lines.iter().any(|l| b.meets_polyline(l))
             && !boxes.iter().any(|o| b.overlaps(o))
     };
-    let c = corners
-        .into_iter()
-        .find(|&c| free(&boxed(c)))
-        .unwrap_or(corners[0]);
-    (c, boxed(c))
+    let corners = corners(at, size, (gap, pad));
+    corners.into_iter().find(|(_, b)| free(b)).ok_or(corners[0])
+}
+
+/// The four corners around `at` of [`place_beside`], in its order: each text corner and box.
+fn corners(at: (i32, i32), (w, h): (u32, u32), (gap, pad): (i32, i32)) -> [Placed; 4] {
+    let (w, h) = (w as i32, h as i32);
+    [
+        (at.0 + gap, at.1 + gap),
+        (at.0 + gap, at.1 - gap - h),
+        (at.0 - gap - w, at.1 - gap - h),
+        (at.0 - gap - w, at.1 + gap),
+    ]
+    .map(|(x0, y0)| {
+        let b = PxBox {
+            x0: x0 - pad,
+            y0: y0 - pad,
+            x1: x0 + w + pad,
+            y1: y0 + h + pad,
+        };
+        ((x0, y0), b)
+    })
 }
 
 /// Where a tag of `w` x `h` px (its box grown by `pad`) goes on the axis-parallel segment
 /// `a`-`b`: half-way along, else the first of a few other places along it, else the same
 /// places just beside it (above a horizontal segment, right of a vertical one, then the
-/// other side), whose box meets none of `lines`; half-way along when none is free. Returns
-/// the tag's centre and box.
+/// other side), whose box meets none of `lines` and none of `boxes` (labels drawn already);
+/// half-way along when none is free. Returns the tag's centre and box.
 pub fn place_along(
     a: (i32, i32),
     b: (i32, i32),
     size: (u32, u32),
     pad: i32,
     lines: &[Vec<(i32, i32)>],
+    boxes: &[PxBox],
 ) -> ((i32, i32), PxBox) {
     // Beside: the box clears the segment (and a curve that lies along it) by 2 px.
     let (w, h) = (size.0 as i32, size.1 as i32);
@@ -151,7 +160,9 @@ pub fn place_along(
         .into_iter()
         .flat_map(|k| ts.into_iter().map(move |t| (t, k)))
         .map(|(t, k)| along(t, k))
-        .find(|(_, tag)| !lines.iter().any(|l| tag.meets_polyline(l)))
+        .find(|(_, tag)| {
+            !lines.iter().any(|l| tag.meets_polyline(l)) && !boxes.iter().any(|b| tag.overlaps(b))
+        })
         .unwrap_or_else(|| along(0.5, 0))
 }
 
@@ -166,14 +177,18 @@ mod tests {
     fn a_step_tag_on_a_line_along_a_flat_curve_goes_beside_it() {
         let (a, b) = ((500, 200), (100, 200));
         let curve = vec![(100, 200), (900, 200)];
-        let (mid, tag) = place_along(a, b, (8, 13), 3, std::slice::from_ref(&curve));
+        let (mid, tag) = place_along(a, b, (8, 13), 3, std::slice::from_ref(&curve), &[]);
         assert!(!tag.meets_polyline(&curve), "{tag:?} meets the curve");
         assert!(
             tag.y1 < 200 && mid.0 == 300,
             "{mid:?} {tag:?}: above, half-way"
         );
         // With no curve in the way it stays on the line, half-way.
-        assert_eq!(place_along(a, b, (8, 13), 3, &[]).0, (300, 200));
+        assert_eq!(place_along(a, b, (8, 13), 3, &[], &[]).0, (300, 200));
+        // A label over the line half-way: the tag goes to the next place along it.
+        let label = PxBox::centred((300, 200), (40, 13), 3);
+        let (mid, tag) = place_along(a, b, (8, 13), 3, &[], &[label]);
+        assert!(!tag.overlaps(&label) && mid.1 == 200, "{mid:?}");
     }
 
     /// Regression: fig7b's read-off value sat below right of the point on the
@@ -196,13 +211,14 @@ mod tests {
             &frame,
             std::slice::from_ref(&curve),
             &[],
-        );
+        )
+        .unwrap();
         assert!(!b.meets_polyline(&curve), "{b:?}");
         // Below right (the old place) is taken by the curve: above right is chosen.
         assert_eq!((x, y), (208, 150 - 8 - 15));
         // Nothing free: the first corner.
         let wall = vec![(0, 0), (400, 300), (0, 300), (400, 0), (0, 0)];
-        let (c, _) = place_beside((200, 150), (120, 15), (8, 3), &frame, &[wall], &[]);
+        let (c, _) = place_beside((200, 150), (120, 15), (8, 3), &frame, &[wall], &[]).unwrap_err();
         assert_eq!(c, (208, 158));
     }
 

@@ -136,6 +136,7 @@ impl Picture for ContourMap {
             .map(|f| xr.start + f * (xr.end - xr.start))
             .collect();
         let crossing = self.crossing_lines(&chart);
+        let mut labels = Vec::new();
         for line in &self.data.iso_lines.x_jam_mm {
             let (level, paths) = (&line.level, &line.paths.paths);
             for p in paths {
@@ -154,6 +155,7 @@ impl Picture for ContourMap {
                 !crossing.iter().any(|l| b.meets_polyline(l))
             });
             if let Some(at) = clear.or(found.first()).copied() {
+                labels.push(PxBox::centred(at, size, axes::BOX_PAD));
                 axes::boxed_text(
                     root,
                     &s,
@@ -166,7 +168,7 @@ impl Picture for ContourMap {
         // The theta_jam lines over the settle line and as wide: near the F -> infinity limit
         // they run on it (fig7c: 44 deg on the 1 % line) and their dots show on its dashes.
         self.draw_settle_line(root, &chart, &y)?;
-        self.draw_theta_lines(root, &chart, &y)?;
+        self.draw_theta_lines(root, &chart, &y, labels)?;
         self.draw_read_off(root, &chart, (&x, &y))?;
         axes::draw_frame(root, &chart, &x, &y)?;
         let sub = scene_subtitle(&self.data.params, &[xa.param, ya.param]);
@@ -223,16 +225,17 @@ impl ContourMap {
             .collect()
     }
 
-    /// Dotted theta_jam iso-lines, labelled near the top, staggered so close lines stay legible.
+    /// Dotted theta_jam iso-lines, labelled near the top, staggered so close lines stay
+    /// legible, each label clear of the others and of the labels `placed` already.
     fn draw_theta_lines<DB: DrawingBackend>(
         &self,
         root: &DrawingArea<DB, Shift>,
         chart: &axes::Chart<DB>,
         y: &PlotAxis,
+        mut placed: Vec<PxBox>,
     ) -> DrawResult<DB> {
         let levels = &self.data.settings.theta_jam_levels_deg;
         let lines = self.data.iso_lines.theta_jam_deg.iter();
-        let mut placed: Vec<PxBox> = Vec::new();
         for (i, (level, paths)) in lines.map(|l| (&l.level, &l.paths.paths)).enumerate() {
             for p in paths {
                 style::draw_line_px(
@@ -245,9 +248,14 @@ impl ContourMap {
             }
             let s = format!("θ_jam = {}°", level_text(*level));
             let size = typeset::text_size(&s, style::TICK_PX);
-            // Its box with the left edge 5 px right of the line, as drawn below.
+            // Its box 5 px right of the line, or left of it where the plot ends sooner (a
+            // line near the right edge put its label over the colour bar), as drawn below.
+            let right_edge = chart.plotting_area().get_pixel_range().0.end;
+            let w = size.0 as i32;
+            let left_of = |at: (i32, i32)| at.0 + 5 + w + axes::BOX_PAD > right_edge;
             let label = |at: (i32, i32)| {
-                PxBox::centred((at.0 + 5 + size.0 as i32 / 2, at.1), size, axes::BOX_PAD)
+                let dx = if left_of(at) { -5 - w / 2 } else { 5 + w / 2 };
+                PxBox::centred((at.0 + dx, at.1), size, axes::BOX_PAD)
             };
             // From its staggered height down the line, the first place clear of the labels
             // drawn already: lines that stop short of their height (at cells without a jam)
@@ -263,8 +271,12 @@ impl ContourMap {
                 .find(|at| !placed.iter().any(|b| b.overlaps(&label(**at))));
             if let Some(at) = clear.or(found.first()).copied() {
                 placed.push(label(at));
-                let pos = Pos::new(HPos::Left, VPos::Center);
-                axes::boxed_text(root, &s, (at.0 + 5, at.1), pos, style::TICK_PX)?;
+                let (x, h) = match left_of(at) {
+                    true => (at.0 - 5, HPos::Right),
+                    false => (at.0 + 5, HPos::Left),
+                };
+                let pos = Pos::new(h, VPos::Center);
+                axes::boxed_text(root, &s, (x, at.1), pos, style::TICK_PX)?;
             }
         }
         Ok(())

@@ -178,9 +178,9 @@ fn awkward_scenes() -> Vec<(String, Scene)> {
         (
             "fig7b",
             &[
-                "chart.axis.min=1e-2",
-                "chart.axis.max=1e10",
-                "chart.axis.count=61",
+                "chart.x_axis.min=1e-2",
+                "chart.x_axis.max=1e10",
+                "chart.x_axis.count=61",
             ],
         ),
         (
@@ -218,15 +218,15 @@ fn awkward_scenes() -> Vec<(String, Scene)> {
                        \"simulation_force\"]";
     scenes.push((
         "fig6 with every layer".into(),
-        builtin("fig6", &[every_layer, "chart.axis.count=21"]),
+        builtin("fig6", &[every_layer, "chart.x_axis.count=21"]),
     ));
     scenes
 }
 
-/// No two texts overlap and none leaves the picture in awkward user scenes.
-#[test]
-fn no_text_overlaps_or_leaves_the_picture_in_awkward_scenes() {
-    let faults: Vec<String> = awkward_scenes()
+/// Fails naming every text of `scenes` (each with what it is) that overlaps another or leaves
+/// the picture.
+fn assert_no_layout_faults<W: std::fmt::Display>(scenes: &[(W, Scene)]) {
+    let faults: Vec<String> = scenes
         .iter()
         .flat_map(|(what, s)| {
             layout_faults(s)
@@ -240,6 +240,12 @@ fn no_text_overlaps_or_leaves_the_picture_in_awkward_scenes() {
         faults.len(),
         faults.join("\n")
     );
+}
+
+/// No two texts overlap and none leaves the picture in awkward user scenes.
+#[test]
+fn no_text_overlaps_or_leaves_the_picture_in_awkward_scenes() {
+    assert_no_layout_faults(&awkward_scenes());
 }
 
 /// At the smallest size a scene took (400 x 300 px) the built-in scenes had 5053
@@ -339,4 +345,92 @@ fn texts_at_sizes_above_the_smallest() {
         }
     }
     assert!(faults.is_empty(), "{}", faults.join("\n"));
+}
+
+/// The README's shaft: r = 12.5 mm, 0.4 kg, pushed with 40 N by an 80 mm palm.
+const SHAFT: [&str; 4] = [
+    "radius_mm=12.5",
+    "mass_kg=0.4",
+    "force_n=40",
+    "palm_length_mm=80",
+];
+
+/// `name` with the shaft's values, `settings` over them, and its read-off drawn at the scene's
+/// own values (as `render --read-off` draws it) where `read_off`.
+fn shaft_scene(name: &str, settings: &[&str], read_off: bool) -> Scene {
+    let all: Vec<&str> = SHAFT.iter().chain(settings).copied().collect();
+    let mut scene = builtin(name, &all);
+    if read_off {
+        assert!(scene.chart.enable_read_off(), "{name} has a read-off");
+        scene.validate_chart().unwrap();
+    }
+    scene
+}
+
+/// What an engineer draws for their own part in the first hour: the built-in scenes with
+/// the shaft's values, its friction range or distribution, and the read-off at its point.
+fn user_scenes() -> Vec<(&'static str, Scene)> {
+    let band = ["mu=0.12:0.3", "chart.x_axis.min=10", "chart.x_axis.max=100"];
+    vec![
+        ("fig7b, mu 0.12 to 0.3, read off at 40 N", {
+            shaft_scene("fig7b", &band, true)
+        }),
+        ("fig7b, mu 0.12 to 0.3, read off at 80 N", {
+            shaft_scene("fig7b", &[&band[..], &["force_n=80"]].concat(), true)
+        }),
+        ("fig7b, mu 0.12 to 0.3, read off at 15 N", {
+            shaft_scene("fig7b", &[&band[..], &["force_n=15"]].concat(), true)
+        }),
+        ("fig7a, mu 0.12 to 0.3, read off at 12.5 mm", {
+            shaft_scene("fig7a", &["mu=0.12:0.3"], true)
+        }),
+        ("fig7b, mu 0.27, read off at 40 N", {
+            shaft_scene("fig7b", &["mu=0.27", "chart.x_axis.min=10"], true)
+        }),
+        (
+            "fig3, mu 0.27, read off",
+            shaft_scene("fig3", &["mu=0.27"], true),
+        ),
+        ("fig3, mass 0.3 to 0.5 kg", {
+            shaft_scene("fig3", &["mass_kg=0.3:0.5"], true)
+        }),
+        ("fig7c at 150 N, r = 12 mm", {
+            shaft_scene("fig7c", &["force_n=150", "radius_mm=12"], true)
+        }),
+        ("the mu x F map of the shaft", {
+            let axes = [
+                "chart.y_axis={param=\"mu\", min=0.12, max=0.3, count=61}",
+                "chart.x_axis={param=\"force_n\", min=10.0, max=1000.0, count=61, scale=\"log\"}",
+                "chart.theta_jam_levels_deg=[20.0, 30.0]",
+                "mu=0.2",
+            ];
+            shaft_scene("fig7c", &axes, true)
+        }),
+        ("universal at mu 0.27, 12 mm, 150 N", {
+            shaft_scene(
+                "universal",
+                &["mu=0.27", "radius_mm=12", "force_n=150"],
+                true,
+            )
+        }),
+        ("universal-range with F 30 to 50 N", {
+            shaft_scene("universal-range", &["force_n=30:50"], true)
+        }),
+        ("jam-probability, normal(0.21, 0.03), x = 60 mm", {
+            let set = ["mu=normal(0.21,0.03)", "chart.before_mm=60"];
+            shaft_scene("jam-probability", &set, false)
+        }),
+        ("vlocator-robust-range, mu 0.1 to 0.3", {
+            builtin("vlocator-robust-range", &["chart.mu=0.1:0.3"])
+        }),
+    ]
+}
+
+/// A user's own part on the built-in charts: no text overlaps another or leaves the picture.
+/// The band's read-off on fig7b ("3: x_jam 39.629 mm (earliest, μ = 0.3) to 80.000 mm (the
+/// palm's end: μ = 0.12 jams past it)") ran past the right edge at 40 N on a 10 to 100 N
+/// axis, cut at "μ = 0.12 jar".
+#[test]
+fn no_text_overlaps_or_leaves_the_picture_for_a_users_part() {
+    assert_no_layout_faults(&user_scenes());
 }

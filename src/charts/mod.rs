@@ -63,7 +63,7 @@ pub(crate) mod picture;
 pub(crate) mod point_read_off;
 pub(crate) mod print;
 pub(crate) mod readoff;
-mod scene_uncertain;
+pub(crate) mod scene_uncertain;
 pub(crate) mod spec;
 pub(crate) mod stability;
 pub(crate) mod style;
@@ -72,6 +72,7 @@ pub(crate) mod sweep_band;
 mod tape;
 pub(crate) mod ticks;
 pub(crate) mod time_series;
+mod title;
 pub(crate) mod typeset;
 pub(crate) mod universal;
 pub(crate) mod vlocator_capacity;
@@ -109,7 +110,7 @@ pub use spec::{Scene, SceneSource, load_scene, scene_names};
 /// chart do (a drawing, font, encoder or scene change), so a user whose own charts' hashes
 /// changed can tell whether jamchart's drawing did. `tests/chart_hashes.rs` fails until it is
 /// set to the manifest's hash after a re-bless (`sha256sum charts/SHA256SUMS | cut -c1-12`).
-pub const CHART_FORMAT: &str = "dac442fe9dc7";
+pub const CHART_FORMAT: &str = "0e1c4e919770";
 
 /// Which pictures to produce.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -350,6 +351,8 @@ pub(crate) fn render_with(scene: &Scene, formats: Formats, made: &Made) -> Resul
 
 #[cfg(test)]
 mod layout_tests;
+#[cfg(test)]
+mod override_tests;
 #[cfg(test)]
 mod series_tests;
 #[cfg(test)]

@@ -60,8 +60,23 @@ impl FromStr for Setting {
 }
 
 impl std::fmt::Display for Setting {
+    /// `KEY=VALUE` as it reads back (the gallery's command to reproduce a chart is made of
+    /// it), a number as short as that allows: toml writes 1e308 with 309 digits, and the
+    /// warnings that name a `--set` quoted them all. A whole float keeps its `.0`, so that it
+    /// reads back as a float.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}={}", self.key, self.value)
+        match self.value {
+            toml::Value::Float(v) => {
+                let t = crate::settings::number_text(v);
+                let point = if t.contains(['.', 'e', 'n']) {
+                    ""
+                } else {
+                    ".0"
+                };
+                write!(f, "{}={t}{point}", self.key)
+            }
+            _ => write!(f, "{}={}", self.key, self.value),
+        }
     }
 }
 
@@ -139,6 +154,24 @@ mod tests {
 
     fn set(s: &str) -> Setting {
         s.parse().unwrap()
+    }
+
+    /// The warning on `render fig7b --set force_n=1e308` quoted the value with 309 digits:
+    /// a setting reads as it was typed, and back as the same value.
+    #[test]
+    fn a_setting_shows_its_number_short_and_reads_back() {
+        for (typed, shown) in [
+            ("force_n=1e308", "force_n=1e308"),
+            ("chart.x_min_mm=-1e308", "chart.x_min_mm=-1e308"),
+            ("mu_palm=0.6", "mu_palm=0.6"),
+            ("force_n=200.0", "force_n=200.0"),
+            ("chart.x_axis.count=51", "chart.x_axis.count=51"),
+            ("force_n=inf", "force_n=inf"),
+        ] {
+            let s = set(typed);
+            assert_eq!(s.to_string(), shown);
+            assert_eq!(set(shown), s, "{shown}");
+        }
     }
 
     #[test]

@@ -218,6 +218,12 @@ pub struct Scene {
     pub style: Ink,
     /// Chart kind and settings.
     pub chart: ChartSpec,
+    /// The ranges and distributions of `[scene]` (the parameters hold their nominal values),
+    /// given to the chart by [`Scene::validate_chart`] at the values it is drawn with.
+    pub(crate) uncertain: super::scene_uncertain::Uncertainty,
+    /// The title as written, its `[chart]` keys filled ([`super::title`]): `title` is it with
+    /// the scene's values in place of its `[scene]` keys.
+    pub(crate) title_as_written: String,
 }
 
 /// Where a scene comes from: built into the binary, or a file of the user's.
@@ -310,6 +316,7 @@ fn parse_scene(
     let mut file: SceneFile = parse_toml(text, path)?;
     if !settings.is_empty() {
         let mut table: toml::Table = parse_toml(text, path)?;
+        let settings = &axis_spelt_as(table.get("chart"), settings);
         overrides::apply(&mut table, settings)?;
         file = SceneFile::deserialize(toml::Value::Table(table)).map_err(|e| {
             let typed: Vec<String> = settings.iter().map(Setting::to_string).collect();
@@ -323,6 +330,7 @@ fn parse_scene(
             )
         })?;
     }
+    let title_as_written = super::title::fill_chart_keys(&file.title, &file.chart)?;
     let chart = read_chart(&file.chart).map_err(|r| {
         let set: Vec<String> = settings
             .iter()
@@ -330,7 +338,14 @@ fn parse_scene(
             .map(Setting::to_string)
             .collect();
         if set.is_empty() {
-            let (line, column) = config::key_line_column(text, &r.key).unwrap_or((1, 1));
+            // A sweep's x axis may be written under its old key.
+            let key = match file.chart.contains_key(OLD_AXIS_KEY) {
+                true => r
+                    .key
+                    .replacen("chart.x_axis", &format!("chart.{OLD_AXIS_KEY}"), 1),
+                false => r.key.clone(),
+            };
+            let (line, column) = config::key_line_column(text, &key).unwrap_or((1, 1));
             Error::Config {
                 path: path.to_path_buf(),
                 line,
@@ -347,10 +362,14 @@ fn parse_scene(
                 ),
             )
         }
-    })?;
-    let base = match &file.base {
-        Some(b) => Config::load(&dir.join(b))?,
-        None => super::builtin::paper_config(),
+    });
+    let base = match (&file.base, &chart) {
+        (Some(b), Ok(_)) => Config::load(&dir.join(b))?,
+        // The chart's own mistake comes before a base that does not load.
+        (Some(b), Err(_)) => {
+            Config::load(&dir.join(b)).unwrap_or_else(|_| super::builtin::paper_config())
+        }
+        (None, _) => super::builtin::paper_config(),
     };
     // A refused or invalid key written in this file is named with its file, line and column
     // (a key from --set or the base file keeps its own message).
@@ -381,16 +400,31 @@ fn parse_scene(
             None => e,
         }
     };
-    let params: SceneParams = config::overlay(&base.scene, &file.scene, "scene")
+    let params: Result<SceneParams> = config::overlay(&base.scene, &file.scene, "scene")
         .and_then(|p: SceneParams| p.validate().map(|_| p))
-        .map_err(|e| locate("scene", e))?;
-    let min_norm: MinNormSettings = config::overlay(&base.min_norm, &file.min_norm, "min_norm")
-        .and_then(|m: MinNormSettings| m.validate().map(|_| m))
-        .map_err(|e| locate("min_norm", e))?;
-    let dynamics: DynamicsParams = config::overlay(&base.dynamics, &file.dynamics, "dynamics")
-        .and_then(|d: DynamicsParams| d.validate().map(|_| d))
-        .map_err(|e| locate("dynamics", e))?;
-    file.size.validate().map_err(|e| locate("size", e))?;
+        .map_err(|e| locate("scene", e));
+    let min_norm: Result<MinNormSettings> =
+        config::overlay(&base.min_norm, &file.min_norm, "min_norm")
+            .and_then(|m: MinNormSettings| m.validate().map(|_| m))
+            .map_err(|e| locate("min_norm", e));
+    let dynamics: Result<DynamicsParams> =
+        config::overlay(&base.dynamics, &file.dynamics, "dynamics")
+            .and_then(|d: DynamicsParams| d.validate().map(|_| d))
+            .map_err(|e| locate("dynamics", e));
+    let size = file.size.validate().map_err(|e| locate("size", e));
+    // Every section's mistake in one report, in file order (a later missing x_axis was
+    // reported before an earlier typo in [scene]).
+    let mut errors = Vec::new();
+    let chart = ok_or_keep(chart, &mut errors);
+    let params = ok_or_keep(params, &mut errors);
+    let min_norm = ok_or_keep(min_norm, &mut errors);
+    let dynamics = ok_or_keep(dynamics, &mut errors);
+    ok_or_keep(size, &mut errors);
+    let (Some(chart), Some(params), Some(min_norm), Some(dynamics), true) =
+        (chart, params, min_norm, dynamics, errors.is_empty())
+    else {
+        return Err(Error::in_file_order(path, errors));
+    };
     let mut scene = Scene {
         name,
         title: file.title,
@@ -400,10 +434,16 @@ fn parse_scene(
         size: file.size.default_at_least(chart.kind()),
         style: file.style,
         chart,
+        uncertain: taken.uncertainty,
+        title_as_written,
     };
-    super::scene_uncertain::attach(&mut scene, &taken)?;
     scene.validate_chart()?;
     Ok(scene)
+}
+
+/// `r`'s value, or None with its error kept in `errors`.
+fn ok_or_keep<T>(r: Result<T>, errors: &mut Vec<Error>) -> Option<T> {
+    r.map_err(|e| errors.push(e)).ok()
 }
 
 impl Scene {
@@ -449,12 +489,23 @@ impl Scene {
             .collect()
     }
 
-    /// Checks the chart's settings against the scene's parameters.
+    /// Gives the chart what the scene's values decide, then checks its settings against them:
+    /// called when the scene is read and again after anything changed its values (a
+    /// `--read-off`).
     ///
-    /// An axis `mu` sets both frictions, so it is refused when the scene's frictions differ
+    /// The chart takes the uncertain inputs a single value has not replaced since
+    /// ([`super::scene_uncertain::attach`]: a band at the scene's values, the universal
+    /// chart's box, the probability chart's distributions) and the title its values in place
+    /// of the keys it names ([`super::title`]). An axis `mu` sets both frictions, so it is refused when the scene's frictions differ
     /// (say `--set mu_palm=0.6` on fig3): the chart would draw mu_palm = mu while the read-off
     /// used 0.6.
-    pub fn validate_chart(&self) -> Result<()> {
+    pub fn validate_chart(&mut self) -> Result<()> {
+        super::scene_uncertain::attach(self)?;
+        self.title = super::title::fill_scene_keys(
+            &self.title_as_written,
+            &self.params,
+            self.uncertain.set(),
+        )?;
         self.validate_title()?;
         self.size.check_for(self.chart.kind())?;
         let p = &self.params;
@@ -496,6 +547,63 @@ impl Scene {
     }
 }
 
+/// A sweep's key for its x axis before every chart kind named its x axis `x_axis`: still read
+/// as `x_axis`, so that scene files and `--set chart.axis.count=51` written for it keep
+/// working (both keys at once are refused).
+const OLD_AXIS_KEY: &str = "axis";
+
+/// Whether `chart` is a sweep's `[chart]`.
+fn is_sweep(chart: Option<&toml::Value>) -> bool {
+    chart
+        .and_then(|c| c.get("kind"))
+        .and_then(toml::Value::as_str)
+        == Some("sweep")
+}
+
+/// A sweep's `[chart]` with its x axis under [`OLD_AXIS_KEY`] moved to `x_axis`.
+fn read_old_axis_key(chart: &mut toml::Table) -> std::result::Result<(), Refusal> {
+    let Some(axis) = chart.remove(OLD_AXIS_KEY) else {
+        return Ok(());
+    };
+    if chart.contains_key("x_axis") {
+        let key = format!("chart.{OLD_AXIS_KEY}");
+        return Err(Refusal {
+            message: keyed(
+                Some(&key),
+                None,
+                "the old spelling of chart.x_axis, which is given as well: keep x_axis",
+            ),
+            key,
+        });
+    }
+    chart.insert("x_axis".into(), axis);
+    Ok(())
+}
+
+/// `settings` with a sweep's x axis spelt as the scene file's `[chart]` spells it, so that
+/// `--set chart.axis.count=51` sets a file's `x_axis` and `--set chart.x_axis.count=51` an old
+/// file's `axis`, instead of adding a second axis beside it.
+fn axis_spelt_as(chart: Option<&toml::Value>, settings: &[Setting]) -> Vec<Setting> {
+    let old = chart.is_some_and(|c| c.get(OLD_AXIS_KEY).is_some());
+    let (from, to) = match old {
+        true => ("x_axis", OLD_AXIS_KEY),
+        false => (OLD_AXIS_KEY, "x_axis"),
+    };
+    let respelt = |key: &str| {
+        let rest = key.strip_prefix("chart.")?.strip_prefix(from)?;
+        (rest.is_empty() || rest.starts_with('.')).then(|| format!("chart.{to}{rest}"))
+    };
+    (settings.iter())
+        .map(|s| match respelt(&s.key).filter(|_| is_sweep(chart)) {
+            Some(key) => Setting {
+                key,
+                value: s.value.clone(),
+            },
+            None => s.clone(),
+        })
+        .collect()
+}
+
 /// `[chart]` read by its `kind` key; the kinds are those of [`super::kinds`].
 fn read_chart(table: &toml::Table) -> std::result::Result<ChartSpec, Refusal> {
     let kinds = ChartSpec::KINDS.join(", ");
@@ -514,6 +622,9 @@ fn read_chart(table: &toml::Table) -> std::result::Result<ChartSpec, Refusal> {
     };
     let mut rest = table.clone();
     rest.remove("kind");
+    if kind == "sweep" {
+        read_old_axis_key(&mut rest)?;
+    }
     ChartSpec::read(kind, &rest).unwrap_or_else(|| {
         Err(refuse(
             table.get("kind"),
@@ -536,8 +647,62 @@ mod tests {
     fn unknown_chart_key_is_refused_with_its_line() {
         let msg = scene_error("title = \"t\"\n[chart]\nkind = \"sweep\"\npanls = []\n");
         assert!(
-            msg.starts_with("s.toml:4:9: chart.panls = []: unknown field `panls`"),
+            msg.starts_with("s.toml:4:9: chart.panls = []: unknown key; did you mean panels?"),
             "{msg}"
+        );
+    }
+
+    /// A scene file's mistakes came one at a time, and not in file order: a chart's mistake
+    /// was reported before an earlier typo in [scene]. Every section is read and its mistake
+    /// reported, by line.
+    #[test]
+    fn every_sections_mistake_is_reported_in_file_order() {
+        let msg = scene_error(
+            "title = \"t\"\n[scene]\nraduis_mm = 12.5\n[chart]\nkind = \"contour_map\"\n\
+             model = \"statix\"\n\
+             y_axis = { param = \"mu\", min = 0.1, max = 0.3, count = 5 }\n",
+        );
+        let lines: Vec<&str> = msg.lines().collect();
+        assert_eq!(lines[0], "2 mistakes in s.toml:", "{msg}");
+        assert!(
+            lines[1].starts_with("  s.toml:3:13: scene.raduis_mm"),
+            "{msg}"
+        );
+        assert!(lines[2].starts_with("  s.toml:6:9: chart.model"), "{msg}");
+    }
+
+    /// Scene-file errors spoke serde: "unknown field `raduis_mm`, expected one of ..." (without
+    /// `mu`, which sets both frictions), "invalid type: string \"heavy\", expected f64",
+    /// "unknown variant `statix`, expected one of ...". They speak of keys, numbers and the
+    /// words to choose from, with the nearest to a typo.
+    #[test]
+    fn scene_file_errors_speak_of_keys_numbers_and_choices() {
+        let map = "[chart]\nkind = \"contour_map\"\n\
+                   x_axis = { param = \"force_n\", min = 10.0, max = 100.0, count = 5 }\n\
+                   y_axis = { param = \"mu\", min = 0.1, max = 0.3, count = 5 }\n";
+        let typo = scene_error(&format!("title = \"t\"\n[scene]\nraduis_mm = 12.5\n{map}"));
+        assert!(
+            typo.starts_with(
+                "s.toml:3:13: scene.raduis_mm = 12.5: unknown key; did you mean \
+                 radius_mm? The keys here: mu, "
+            ),
+            "{typo}"
+        );
+        assert!(typo.contains("mu_ground, mu_palm, radius_mm"), "{typo}");
+        let heavy = scene_error(&format!(
+            "title = \"t\"\n[scene]\nmass_kg = \"heavy\"\n{map}"
+        ));
+        assert!(
+            heavy.ends_with(
+                "scene.mass_kg = \"heavy\": expected a number, found the text \"heavy\""
+            ),
+            "{heavy}"
+        );
+        let model = scene_error(&format!("title = \"t\"\n{map}model = \"statix\"\n"));
+        assert!(
+            model.contains("chart.model = \"statix\": statix is not one of statics, ")
+                && model.ends_with("; did you mean statics?"),
+            "{model}"
         );
     }
 
@@ -552,11 +717,17 @@ mod tests {
         let cases = [
             (
                 map,
-                "s.toml:4:56: chart.x_axis.count = \"ten\": invalid type: string",
+                "s.toml:4:56: chart.x_axis.count = \"ten\": expected a whole number, found the \
+                 text \"ten\"",
             ),
             (
+                "kind = \"sweep\"\nx_axis = [1, 2]\n",
+                "s.toml:4:10: chart.x_axis = [1, 2]: expected a table",
+            ),
+            // The old spelling of a sweep's x axis is read as x_axis, at its own line.
+            (
                 "kind = \"sweep\"\naxis = [1, 2]\n",
-                "s.toml:4:8: chart.axis = [1, 2]: expected a table",
+                "s.toml:4:8: chart.x_axis = [1, 2]: expected a table",
             ),
         ];
         for (chart, says) in cases {
@@ -578,5 +749,35 @@ mod tests {
             let msg = scene_error(&format!("title = \"t\"\n[chart]\n{kind}"));
             assert!(msg.contains(says), "{msg}");
         }
+    }
+
+    /// Every chart kind names its x axis `x_axis`; a sweep's was `axis`. A scene written with
+    /// the old key, and `--set chart.axis...` typed for it, still work, whichever key the file
+    /// uses; both keys at once are refused.
+    #[test]
+    fn a_sweeps_old_axis_key_reads_as_x_axis() {
+        let axis = "{ param = \"mu\", min = 0.1, max = 0.5, count = 5 }";
+        let load = |key: &str, set: &[&str]| {
+            let text = format!("title = \"t\"\n[chart]\nkind = \"sweep\"\n{key} = {axis}\n");
+            let set: Vec<Setting> = set.iter().map(|s| s.parse().unwrap()).collect();
+            parse_scene("s".into(), &text, Path::new("s.toml"), Path::new(""), &set)
+        };
+        let count = |scene: Scene| match scene.chart {
+            ChartSpec::Sweep(s) => s.x_axis.count,
+            _ => panic!("a sweep"),
+        };
+        for key in ["x_axis", "axis"] {
+            assert_eq!(count(load(key, &[]).unwrap()), 5, "{key}");
+            for set in ["chart.axis.count=7", "chart.x_axis.count=7"] {
+                assert_eq!(count(load(key, &[set]).unwrap()), 7, "{key} with {set}");
+            }
+        }
+        let text =
+            format!("title = \"t\"\n[chart]\nkind = \"sweep\"\nx_axis = {axis}\naxis = {axis}\n");
+        let msg = scene_error(&text);
+        assert!(
+            msg.starts_with("s.toml:5:8: chart.axis: the old spelling of chart.x_axis"),
+            "{msg}"
+        );
     }
 }

@@ -88,7 +88,7 @@ impl Picture for Sweep {
         if frames.len() != self.data.settings.panels.len() {
             return None;
         }
-        let a = &self.data.settings.axis;
+        let a = &self.data.settings.x_axis;
         let x = PlotAxis::new(a.min, a.max, a.scale, axis_label(a.param));
         let panels: Vec<_> = self
             .data
@@ -133,7 +133,7 @@ impl Picture for Sweep {
             None => legend::rows_needed(root, &entries)?,
         };
         let legend_top = h - 12 - rows * legend::ROW_PX;
-        let a = &self.data.settings.axis;
+        let a = &self.data.settings.x_axis;
         let x = PlotAxis::new(a.min, a.max, a.scale, axis_label(a.param));
         let panels = &self.data.settings.panels;
         for (panel, m) in panels
@@ -146,6 +146,9 @@ impl Picture for Sweep {
             sweep_band::draw(&chart, &self.data.band, *panel, (&x, &y))?;
             axes::draw_grid(&chart, &x, &y)?;
             let area = chart.plotting_area();
+            self.draw_read_off_lines(root, &chart, (&x, &y), *panel)?;
+            // The labels drawn so far: the read-off's step numbers and answer keep clear of them.
+            let mut placed = Vec::new();
             for s in &self.data.series {
                 let pts: Vec<(f64, f64)> = s
                     .points
@@ -160,10 +163,10 @@ impl Picture for Sweep {
                         }
                     }
                 }
-                self.annotate(root, &chart, (&x, &y), *panel, s)?;
+                placed.extend(self.annotate(root, &chart, (&x, &y), *panel, s)?);
             }
-            self.draw_palm_end(root, &chart, (&x, &y), *panel)?;
-            self.draw_read_off(root, &chart, (&x, &y), *panel)?;
+            placed.extend(self.draw_palm_end(root, &chart, (&x, &y), *panel)?);
+            self.draw_read_off(root, &chart, (&x, &y), *panel, &placed)?;
             axes::draw_frame(root, &chart, &x, &y)?;
         }
         let sub = scene_subtitle_given(self.source(), &self.data.params, &[a.param], &self.given());
@@ -175,25 +178,28 @@ impl Picture for Sweep {
     }
 }
 
+/// The boxes of the labels a drawing step drew, or its drawing error.
+type Labels<DB> = Result<Vec<PxBox>, DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
+
 impl Sweep {
     /// In the x_jam panel, the palm's end as a dotted purple level where it lies on the panel's scale
     /// (a jam beyond it is never reached): x = L, where the contact is at the palm's end for a
     /// palm face on the hinge line (h = 0; with an offset the line would bend, so it is left
-    /// out) and the palm length is not the swept parameter.
+    /// out) and the palm length is not the swept parameter. Returns its label's box.
     fn draw_palm_end<DB: DrawingBackend>(
         &self,
         root: &DrawingArea<DB, Shift>,
         chart: &axes::Chart<DB>,
         (x, y): (&PlotAxis, &PlotAxis),
         panel: SweepPanel,
-    ) -> DrawResult<DB> {
+    ) -> Labels<DB> {
         let l = self.data.params.palm_length_mm;
         let shown = panel == SweepPanel::XJamMm
             && self.data.params.palm_offset_mm == 0.0
-            && self.data.settings.axis.param != Param::PalmLengthMm
+            && self.data.settings.x_axis.param != Param::PalmLengthMm
             && (y.min..=y.max).contains(&l);
         if !shown {
-            return Ok(());
+            return Ok(Vec::new());
         }
         let line = [
             (x.to_plot(x.min), y.to_plot(l)),
@@ -204,54 +210,35 @@ impl Sweep {
         let at = axes::pixel(chart, x, y, x.min, l);
         let s = format!("palm's end L = {} mm: no jam above", style::fmt_num(l, 1));
         let pos = Pos::new(HPos::Left, VPos::Bottom);
-        axes::boxed_text(root, &s, (at.0 + 8, at.1 - 4), pos, style::TICK_PX)
+        let label = axes::boxed_text_placed(root, &s, (at.0 + 8, at.1 - 4), pos, style::TICK_PX)?;
+        Ok(vec![label])
     }
 
-    /// The read-off at the scene's value in `panel`, in numbered steps as a jam map's: a dotted
-    /// black line (1) up from the axis to the closed form's value and (2) across to the left
-    /// axis, a dot, and (3) the value printed beside the dot where no curve runs.
+    /// The read-off at the scene's value in `panel`, in numbered steps as a jam map's, over
+    /// its lines ([`Sweep::draw_read_off_lines`]): a dot on each point, the step numbers 1 and
+    /// 2 on their lines, and (3) the value printed beside the upper dot where no curve runs,
+    /// inside the plot, in two lines where one does not fit. Nothing of it covers the labels
+    /// `placed`.
     fn draw_read_off<DB: DrawingBackend>(
         &self,
         root: &DrawingArea<DB, Shift>,
         chart: &axes::Chart<DB>,
         (x, y): (&PlotAxis, &PlotAxis),
         panel: SweepPanel,
+        placed: &[PxBox],
     ) -> DrawResult<DB> {
-        // The read-off's points in the panel (the band's two ends, or the closed form), the
-        // answer printed beside the upper one.
-        let (v, points, s) = if let Some(r) = &self.data.read_off_band {
-            let Some((lo, hi)) = r.interval(panel) else {
-                return Ok(());
-            };
-            (r.at, vec![hi, lo], self.band_answer(r, panel))
-        } else if let Some(p) = &self.data.read_off {
-            let Some(q) = panel.value(p) else {
-                return Ok(());
-            };
-            let s = match panel {
-                SweepPanel::XJamMm => format!("3: x_jam = {} mm", style::fmt_num(q, 3)),
-                SweepPanel::ThetaJamDeg => format!("3: θ_jam = {}°", style::fmt_num(q, 3)),
-            };
-            (p.at, vec![q], s)
-        } else {
+        let Some((v, points, parts)) = self.read_off_in(panel, (x, y)) else {
             return Ok(());
         };
-        if !(x.min..=x.max).contains(&v) || points.iter().any(|q| !(y.min..=y.max).contains(q)) {
-            return Ok(());
-        }
         let at = |a: f64, b: f64| axes::pixel(chart, x, y, a, b);
         let (corner, bottom, left) = (at(v, points[0]), at(v, y.min), at(x.min, points[0]));
-        // Line 1 up to the upper point, line 2 across from each.
         let across: Vec<[(i32, i32); 2]> =
             points.iter().map(|q| [at(v, *q), at(x.min, *q)]).collect();
-        for line in std::iter::once([bottom, corner]).chain(across.iter().copied()) {
-            style::draw_line_px(root, &line, LineKind::Dotted, style::INK, 2)?;
-        }
         for q in &points {
             root.draw(&Circle::new(at(v, *q), 5, style::INK.filled()))?;
         }
         // Every curve of the panel: the step numbers and the value's box cover none.
-        let mut lines: Vec<Vec<(i32, i32)>> = self
+        let lines: Vec<Vec<(i32, i32)>> = self
             .data
             .series
             .iter()
@@ -261,14 +248,6 @@ impl Sweep {
                     .collect()
             })
             .collect();
-        let tag_font = style::text(style::TICK_PX);
-        let mut tags = Vec::new();
-        for (n, (a, b)) in [("1", (bottom, corner)), ("2", (corner, left))] {
-            let size = root.estimate_text_size(n, &tag_font)?;
-            let (mid, tag) = collide::place_along(a, b, size, axes::BOX_PAD, &lines);
-            axes::tag(root, n, mid)?;
-            tags.push(tag);
-        }
         let (lo, hi) = (at(x.min, y.min), at(x.max, y.max));
         let frame = PxBox {
             x0: lo.0,
@@ -276,14 +255,85 @@ impl Sweep {
             x1: hi.0,
             y1: lo.1,
         };
-        // The value's box covers no curve and none of the read-off's own lines.
-        lines.push(vec![bottom, corner]);
-        lines.extend(across.iter().map(|l| l.to_vec()));
-        let size = root.estimate_text_size(&s, &style::text(style::NOTE_PX))?;
+        // The value's box first (it has four places, the step numbers many): it covers no
+        // curve, none of the read-off's own lines and no label; on one line where that fits
+        // beside the point, else in its parts one under another.
+        let mut own_lines = lines.clone();
+        own_lines.push(vec![bottom, corner]);
+        own_lines.extend(across.iter().map(|l| l.to_vec()));
         let pad = (8, axes::BOX_PAD);
-        let (text_at, _) = collide::place_beside(corner, size, pad, &frame, &lines, &tags);
-        let pos = Pos::new(HPos::Left, VPos::Top);
-        axes::boxed_text(root, &s, text_at, pos, style::NOTE_PX)
+        let one = vec![parts.join(" ")];
+        let mut first = None;
+        let mut answer = None;
+        for text in [&one, &parts] {
+            let size = axes::lines_size(root, text, style::NOTE_PX)?;
+            match collide::place_beside(corner, size, pad, &frame, &own_lines, placed) {
+                Ok(free) => {
+                    answer = Some((text, free));
+                    break;
+                }
+                Err(corner) => {
+                    first.get_or_insert((text, corner));
+                }
+            }
+        }
+        // No corner is free: the one-line label's first corner.
+        let (text, (text_at, text_box)) = answer.or(first).expect("a shape was tried");
+        // The step numbers on their lines, clear of the curves, the labels and the value.
+        let taken: Vec<PxBox> = placed.iter().copied().chain([text_box]).collect();
+        let tag_font = style::text(style::TICK_PX);
+        for (n, (a, b)) in [("1", (bottom, corner)), ("2", (corner, left))] {
+            let size = root.estimate_text_size(n, &tag_font)?;
+            let (mid, _) = collide::place_along(a, b, size, axes::BOX_PAD, &lines, &taken);
+            axes::tag(root, n, mid)?;
+        }
+        axes::boxed_lines(root, text, text_at, style::NOTE_PX)
+    }
+
+    /// Where the read-off lies in `panel`, if it is drawn there: the swept value, its points
+    /// (the band's two ends, upper first, or the closed form's value) and step 3's answer,
+    /// printed beside the upper one, in parts for a label too long for one line.
+    fn read_off_in(
+        &self,
+        panel: SweepPanel,
+        (x, y): (&PlotAxis, &PlotAxis),
+    ) -> Option<(f64, Vec<f64>, Vec<String>)> {
+        let (v, points, parts) = if let Some(r) = &self.data.read_off_band {
+            let (lo, hi) = r.interval(panel)?;
+            (r.at, vec![hi, lo], self.band_answer(r, panel))
+        } else {
+            let p = self.data.read_off.as_ref()?;
+            let q = panel.value(p)?;
+            let s = match panel {
+                SweepPanel::XJamMm => format!("3: x_jam = {} mm", style::fmt_num(q, 3)),
+                SweepPanel::ThetaJamDeg => format!("3: θ_jam = {}°", style::fmt_num(q, 3)),
+            };
+            (p.at, vec![q], vec![s])
+        };
+        let on = (x.min..=x.max).contains(&v) && points.iter().all(|q| (y.min..=y.max).contains(q));
+        on.then_some((v, points, parts))
+    }
+
+    /// The read-off's dotted lines in `panel`: 1 up from the axis to the upper point, 2 across
+    /// from each point to the left axis. Drawn under the curves' labels, which stay legible
+    /// on their white boxes where a line passes them.
+    fn draw_read_off_lines<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &axes::Chart<DB>,
+        (x, y): (&PlotAxis, &PlotAxis),
+        panel: SweepPanel,
+    ) -> DrawResult<DB> {
+        let Some((v, points, _)) = self.read_off_in(panel, (x, y)) else {
+            return Ok(());
+        };
+        let at = |a: f64, b: f64| axes::pixel(chart, x, y, a, b);
+        let up = [at(v, y.min), at(v, points[0])];
+        let across = points.iter().map(|q| [at(v, *q), at(x.min, *q)]);
+        for line in std::iter::once(up).chain(across) {
+            style::draw_line_px(root, &line, LineKind::Dotted, style::INK, 2)?;
+        }
+        Ok(())
     }
 
     /// The models behind the drawn layers, for the subtitle.
@@ -339,7 +389,7 @@ impl Sweep {
     /// The read-off's legend entry when it is drawn (a legend never names a line that is not
     /// drawn: off the axis, or no jam there).
     fn read_off_entry(&self) -> Option<LegendEntry> {
-        let a = &self.data.settings.axis;
+        let a = &self.data.settings.x_axis;
         let (v, what) = match (&self.data.read_off_band, &self.data.read_off) {
             (Some(r), _) if r.x_jam_mm.is_some() => {
                 (r.at, "the band's ends: earliest and latest jam")
@@ -403,8 +453,9 @@ impl Sweep {
 
     /// Step 3 of the read-off with a band in `panel`: the shaded interval there, each end
     /// with its corner and why it ends there (the earliest or latest jam, the palm's end past
-    /// which the latest corner jams, the start where the earliest is held or too weak).
-    fn band_answer(&self, r: &BandRow, panel: SweepPanel) -> String {
+    /// which the latest corner jams, the start where the earliest is held or too weak); one
+    /// part per end, for a label too long for one line.
+    fn band_answer(&self, r: &BandRow, panel: SweepPanel) -> Vec<String> {
         let (e, l) = (&r.earliest, &r.latest);
         let (ce, cl) = (self.corner(true), self.corner(false));
         let end = |p: &SeriesPoint, at: &str, jams: &str| match p.status {
@@ -418,18 +469,17 @@ impl Sweep {
             None => at.to_string(),
         };
         let (early, late) = (end(e, &ce, "earliest"), end(l, &cl, "latest"));
+        let f = |v: f64| style::fmt_num(v, 3);
         match (panel, r.interval(panel)) {
-            (SweepPanel::XJamMm, Some((lo, hi))) => format!(
-                "3: x_jam {} mm ({early}) to {} mm ({late})",
-                style::fmt_num(lo, 3),
-                style::fmt_num(hi, 3)
-            ),
-            (SweepPanel::ThetaJamDeg, Some((lo, hi))) => format!(
-                "3: θ_jam {}° ({early}) to {}° ({late})",
-                style::fmt_num(hi, 3),
-                style::fmt_num(lo, 3)
-            ),
-            (_, None) => "3: no jam on the palm over the band".into(),
+            (SweepPanel::XJamMm, Some((lo, hi))) => vec![
+                format!("3: x_jam {} mm ({early})", f(lo)),
+                format!("to {} mm ({late})", f(hi)),
+            ],
+            (SweepPanel::ThetaJamDeg, Some((lo, hi))) => vec![
+                format!("3: θ_jam {}° ({early})", f(hi)),
+                format!("to {}° ({late})", f(lo)),
+            ],
+            (_, None) => vec!["3: no jam on the palm over the band".into()],
         }
     }
 
@@ -452,7 +502,7 @@ impl Sweep {
         if !s.curve.is_line() {
             return None;
         }
-        let param = self.data.settings.axis.param;
+        let param = self.data.settings.x_axis.param;
         let fmt = |v: f64| style::fmt_num(v, 3);
         let mut runs: Vec<(JamStatus, f64, f64)> = Vec::new();
         let mut prev = None;
@@ -544,7 +594,7 @@ impl Sweep {
 }
 
 impl Sweep {
-    /// The flat-curve label and the callout of series `s` in `panel`.
+    /// The flat-curve label and the callout of series `s` in `panel`; returns their boxes.
     fn annotate<DB: DrawingBackend>(
         &self,
         root: &DrawingArea<DB, Shift>,
@@ -552,7 +602,8 @@ impl Sweep {
         (x, y): (&PlotAxis, &PlotAxis),
         panel: SweepPanel,
         s: &Series,
-    ) -> DrawResult<DB> {
+    ) -> Labels<DB> {
+        let mut labels = Vec::new();
         let vals: Vec<(f64, f64)> = s
             .points
             .iter()
@@ -588,19 +639,26 @@ impl Sweep {
                     (-6, VPos::Bottom)
                 };
                 let pos = Pos::new(HPos::Right, vpos);
-                axes::boxed_text(root, &text, (px.0 - 10, px.1 + dy), pos, style::NOTE_PX)?;
+                let at = (px.0 - 10, px.1 + dy);
+                labels.push(axes::boxed_text_placed(
+                    root,
+                    &text,
+                    at,
+                    pos,
+                    style::NOTE_PX,
+                )?);
             }
         }
         if let (Some(note), Some(&(a, v))) = (&s.callout, vals.first()) {
             let px = axes::pixel(chart, x, y, a, v);
-            axes::boxed_text(
+            labels.push(axes::boxed_text_placed(
                 root,
                 note,
                 (px.0 + 14, px.1 - 4),
                 Pos::new(HPos::Left, VPos::Bottom),
                 style::TICK_PX,
-            )?;
+            )?);
         }
-        Ok(())
+        Ok(labels)
     }
 }

@@ -77,9 +77,9 @@ mod tests {
         let ChartSpec::Sweep(mut spec) = scene.chart.clone() else {
             panic!("fig7b is a sweep")
         };
-        spec.axis.min = 10.0;
-        spec.axis.max = 100.0;
-        spec.axis.count = 11;
+        spec.x_axis.min = 10.0;
+        spec.x_axis.max = 100.0;
+        spec.x_axis.count = 11;
         spec.band = Some(Band {
             earliest: scene.params.with_mu(0.3),
             latest: scene.params.with_mu(0.12),

@@ -125,7 +125,7 @@ fn paper_points_on_a_non_mu_sweep_are_refused() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("base.toml"), "").unwrap();
     let text = "title = \"t\"\nbase = \"base.toml\"\n[chart]\nkind = \"sweep\"\n\
-                axis = { param = \"force_n\", min = 50.0, max = 100.0, count = 3 }\n\
+                x_axis = { param = \"force_n\", min = 50.0, max = 100.0, count = 3 }\n\
                 layers = [\"paper_table1\"]\n";
     std::fs::write(dir.path().join("s.toml"), text).unwrap();
     let msg = load_scene(dir.path(), "s").unwrap_err().to_string();
@@ -347,7 +347,7 @@ fn rolling_points_lie_on_the_rigid_limit() {
     };
     let series = sweep_layers::series(
         SweepLayer::MinNormRolling,
-        &spec.axis,
+        &spec.x_axis,
         &scene.input(),
         &Live,
     )
@@ -404,7 +404,7 @@ fn a_sweep_layer_that_failed_at_some_points_names_them() {
         ..Counting::default()
     };
     for layer in [SimulationMotion, SimulationForce] {
-        let s = &sweep_layers::series(layer, &spec.axis, &scene.input(), &failing).unwrap()[0];
+        let s = &sweep_layers::series(layer, &spec.x_axis, &scene.input(), &failing).unwrap()[0];
         let note = s.callout.as_deref().unwrap_or_default();
         assert!(
             note.contains("no answer at μ = 0.175 ("),
@@ -418,7 +418,8 @@ fn a_sweep_layer_that_failed_at_some_points_names_them() {
         );
     }
     // Where the model answers everywhere there is no note.
-    let s = &sweep_layers::series(SimulationMotion, &spec.axis, &scene.input(), &Live).unwrap()[0];
+    let s =
+        &sweep_layers::series(SimulationMotion, &spec.x_axis, &scene.input(), &Live).unwrap()[0];
     assert_eq!(s.callout, None);
 }
 

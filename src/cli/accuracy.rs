@@ -8,9 +8,9 @@ use clap::{ArgAction, Args};
 use serde::Serialize;
 
 use super::args::{SceneArgs, TableFormat, parse_f64};
-use super::gallery::{page, typed_command};
+use super::gallery::{lock_folder, page, typed_command};
 use super::progress::{self, Quiet};
-use crate::atomic::{Output, check_all, write_all};
+use crate::atomic::{Output, Set, check_all, write_all};
 use crate::charts::gallery::Entry;
 use crate::csv_out::{Dec, dec};
 use crate::dynamics::Method;
@@ -259,6 +259,11 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
             command: typed_command(),
             read_off: Some(&drawn.read_off),
         };
+        // The set begun first makes the folder; the page is built and written under its lock,
+        // as a render's (see `gallery`).
+        let kept: Vec<&PathBuf> = out_paths.iter().filter(|p| keep(p)).collect();
+        let set = Set::begin(kept.iter().map(|p| p.as_path()))?;
+        let lock = lock_folder(dir)?;
         let html = page(dir, &[entry])?;
         let contents: [&[u8]; 7] = [
             md.as_bytes(),
@@ -269,7 +274,13 @@ pub fn run(a: &AccuracyArgs) -> Result<String> {
             &drawn.png,
             html.as_bytes(),
         ];
-        write_set(&out_paths, &contents, keep)?;
+        let outputs: Vec<Output> = (out_paths.iter().zip(contents))
+            .filter(|(path, _)| keep(path))
+            .map(|(path, bytes)| Output::bytes(path, bytes))
+            .collect();
+        set.stage_all(&outputs)?;
+        set.commit()?;
+        drop(lock);
     }
     Ok(match a.format {
         TableFormat::Text => md,

@@ -69,8 +69,9 @@ pub fn parse(text: &str, path: &Path) -> Result<Hashes> {
                     line: i + 1,
                     column: 1,
                     message: format!(
-                        "{file} is listed twice with different hashes; keep one line per \
-                         picture (render --bless writes the manifest afresh)"
+                        "{} is listed twice with different hashes; keep one line per \
+                         picture (render --bless writes the manifest afresh)",
+                        crate::error::cut(&file)
                     ),
                 });
             }

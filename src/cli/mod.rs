@@ -196,7 +196,7 @@ pub fn main() -> i32 {
     let pool = match threads::start() {
         Ok(pool) => pool,
         Err(e) => {
-            eprintln!("jamchart: {}", terminal::safe(&describe(&e, &name)));
+            terminal::diagnostic(&format!("jamchart: {}", describe(&e, &name)));
             return 2;
         }
     };
@@ -234,13 +234,13 @@ pub fn main() -> i32 {
             };
             let printed = print(text);
             if let Done::Failed { summary, .. } = &done {
-                eprintln!("jamchart: {}", terminal::safe(summary));
+                terminal::diagnostic(&format!("jamchart: {summary}"));
             }
             // A lost answer (exit 2) outranks a failed check (exit 1).
             printed.max(code)
         }
         Err(e) => {
-            eprintln!("jamchart: {}", terminal::safe(&describe(&e, &name)));
+            terminal::diagnostic(&format!("jamchart: {}", describe(&e, &name)));
             2
         }
     }
@@ -250,7 +250,7 @@ pub fn main() -> i32 {
 /// likely a mistake, where the answer still follows.
 pub(crate) fn warn(lines: &[String]) {
     for l in lines {
-        eprintln!("jamchart: warning: {}", terminal::safe(l));
+        terminal::diagnostic(&format!("jamchart: warning: {l}"));
     }
 }
 
@@ -270,7 +270,9 @@ fn print(text: &str) -> i32 {
         Ok(()) => 0,
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => 0,
         Err(e) => {
-            eprintln!("jamchart: writing the answer to standard output: {e}");
+            terminal::diagnostic(&format!(
+                "jamchart: writing the answer to standard output: {e}"
+            ));
             2
         }
     }
@@ -286,7 +288,8 @@ fn clap_exit(e: clap::Error) -> i32 {
         }
         // `jamchart` alone: the help is the answer, but it is still a usage error.
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            eprint!("{}", terminal::safe(&e.render().to_string()));
+            let help = e.render().to_string();
+            terminal::diagnostic(help.strip_suffix('\n').unwrap_or(&help));
             2
         }
         _ => {
@@ -297,7 +300,7 @@ fn clap_exit(e: clap::Error) -> i32 {
             {
                 rendered = rendered.replace(&format!("'{v}'"), &format!("'{}'", error::cut(v)));
             }
-            eprintln!("jamchart: {}", terminal::safe(&one_line(&rendered)));
+            terminal::diagnostic(&format!("jamchart: {}", one_line(&rendered)));
             2
         }
     }

@@ -10,7 +10,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 /// `--quiet` of a long command.
 #[derive(Debug, Clone, Copy, Default, Args)]
 pub struct Quiet {
-    /// Print no progress bar or notes on stderr (errors are still printed).
+    /// Print no progress bar or notes on stderr, nor the list of files written (errors and
+    /// warnings are still printed).
     #[arg(long, short = 'q')]
     pub quiet: bool,
 }

@@ -15,6 +15,7 @@ use super::Done;
 use super::gallery::{self, shell_word};
 use super::manifest;
 use super::progress::{self, Quiet};
+use super::terminal;
 use crate::ask::{ReadOff, Words};
 
 /// Flags of `render`.
@@ -69,8 +70,10 @@ pub struct RenderArgs {
     ///
     /// Exit 0 when every picture has its blessed bytes. Exit 1 naming each picture that
     /// changed, that is in the manifest but was not rendered, or that was rendered but is not
-    /// in the manifest; the new renders are then written to a temporary folder (named in the
-    /// report) to look at. Exit 2 for bad input (no manifest, an unknown scene).
+    /// in the manifest, with how each one's data moved; nothing is written anywhere, and the
+    /// report says how to look at the new pictures (the same command with another --out and
+    /// without --check) and how to accept them (--bless). Exit 2 for bad input (no manifest,
+    /// an unknown scene).
     #[arg(long)]
     pub check: bool,
     #[command(flatten)]
@@ -327,21 +330,16 @@ fn files_of<'a>(out: &Path, r: &'a Rendered) -> Vec<(PathBuf, Content<'a>)> {
         .collect()
 }
 
-/// Writes the rendered files of all scenes and `extra` files into `out` as one set (all or
-/// none); returns the paths per scene.
+/// Writes the rendered files of all scenes and `extra` files into `out` as `set` (begun with
+/// every one of their paths), all or none; returns the paths per scene.
 pub fn write_rendered(
+    set: Set,
     out: &Path,
     rendered: &[Rendered],
     extra: &[(PathBuf, &[u8])],
 ) -> Result<Vec<Vec<PathBuf>>> {
     let per_scene: Vec<Vec<(PathBuf, Content)>> =
         rendered.iter().map(|r| files_of(out, r)).collect();
-    let declared = per_scene.iter().flatten().map(|(p, _)| p);
-    let set = Set::begin(
-        declared
-            .chain(extra.iter().map(|(p, _)| p))
-            .map(PathBuf::as_path),
-    )?;
     commit_rendered(set, &per_scene, extra)?;
     Ok(paths_per_scene(&per_scene))
 }
@@ -472,7 +470,9 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
         })
         .collect();
     // The page lists every chart in the folder: the previous page's sections of charts not
-    // drawn now, and the pictures of other runs.
+    // drawn now, and the pictures of other runs; built and written under the folder's lock,
+    // so that a writer into the same folder at once adds to it instead of overwriting it.
+    let lock = gallery::lock_folder(&a.out)?;
     let html = gallery::page(&a.out, &entries)?;
     // The pictures are hashed only for the manifest (a SHA-256 of each picture was 2.4 % of
     // `render fig3`'s instructions, after the pictures and on one thread).
@@ -485,18 +485,19 @@ pub fn run(a: &RenderArgs) -> Result<Done> {
     let per_scene: Vec<Vec<(PathBuf, Content)>> =
         rendered.iter().map(|r| files_of(&a.out, r)).collect();
     commit_rendered(set, &per_scene, &extra)?;
+    drop(lock);
     let written = paths_per_scene(&per_scene);
     let mut text = String::new();
     for (scene, paths) in scenes.iter().zip(written) {
-        let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+        let list: Vec<String> = paths.iter().map(|p| terminal::path(p)).collect();
         let _ = writeln!(text, "{}: {}", scene.name, list.join(" "));
     }
-    let _ = writeln!(text, "gallery: {}", index.display());
+    let _ = writeln!(text, "gallery: {}", terminal::path(&index));
     if let Some(hashes) = &hashes {
         let _ = writeln!(
             text,
             "manifest: {} ({} blessed)",
-            manifest_path.display(),
+            terminal::path(&manifest_path),
             pictures(hashes.len())
         );
     }
@@ -599,7 +600,7 @@ fn json_changes(at: &str, a: &serde_json::Value, b: &serde_json::Value, out: &mu
 fn check(manifest_path: &Path, blessed: &manifest::Hashes, rendered: &[Rendered]) -> Result<Done> {
     let now = manifest::hashes(rendered);
     let diffs = manifest::compare(blessed, &now);
-    let shown = manifest_path.display();
+    let shown = terminal::path(manifest_path);
     if diffs.is_empty() {
         let verb = if now.len() == 1 { "matches" } else { "match" };
         return Ok(Done::Ok(format!(

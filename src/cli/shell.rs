@@ -153,7 +153,10 @@ pub fn man(a: &ManArgs) -> Result<String> {
         .map(|(path, (_, roff))| Output::bytes(path, roff))
         .collect();
     write_all(&set)?;
-    Ok(paths.iter().map(|p| format!("{}\n", p.display())).collect())
+    Ok(paths
+        .iter()
+        .map(|p| format!("{}\n", super::terminal::path(p)))
+        .collect())
 }
 
 fn utf8(bytes: Vec<u8>) -> Result<String> {

@@ -103,13 +103,13 @@ pub fn run(a: &StabilityArgs) -> Result<String> {
         )));
     }
     if !a.quiet.quiet {
-        eprintln!(
+        super::terminal::diagnostic(&format!(
             "jamchart: stability matrix of {} cases x {} methods took {:.1} s on {} threads",
             report.cases.len(),
             report.methods.len(),
             report.elapsed_s,
             rayon::current_num_threads()
-        );
+        ));
     }
     let md = markdown(&report);
     let csv = csv_rows(&report)?;

@@ -8,9 +8,11 @@ use clap::Args;
 use serde::Deserialize;
 
 use super::args::{SceneArgs, parse_f64};
-use super::gallery::{page, typed_command};
+use super::gallery::{lock_folder, page, typed_command};
 use super::render::{RenderFormat, output_paths, write_rendered};
+use crate::atomic::Set;
 use crate::charts::gallery::Entry;
+use crate::charts::scene_uncertain::Uncertainty;
 use crate::charts::spec::Size;
 use crate::charts::{self, ChartSpec, Scene, axis_label};
 use crate::error::{Error, Result};
@@ -49,6 +51,8 @@ pub struct SweepArgs {
     /// mu=0.1:0.5 --mu 0.27 --read-off`; a map reads off at both flags' values.
     #[arg(long)]
     pub read_off: bool,
+    #[command(flatten)]
+    pub quiet: super::progress::Quiet,
 }
 
 /// The parameters a sweep varies: every axis parameter but the palm angle (a sweep's panels
@@ -176,11 +180,12 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
         [x] => {
             let axis = x.axis(201);
             let chart = ChartSpec::Sweep(SweepSettings {
-                axis,
+                x_axis: axis,
                 panels: vec![SweepPanel::XJamMm, SweepPanel::ThetaJamDeg],
                 layers: vec![SweepLayer::Statics, SweepLayer::Rigid],
                 read_off: a.read_off,
-                band: crate::figures::band::from_uncertain(&config.scene, &uncertain, axis.param)?,
+                // Drawn from the scene's uncertain inputs below.
+                band: None,
             });
             let title = format!("Jam point against {}", axis_label(axis.param));
             (chart, format!("sweep_{}", axis.param.as_str()), title)
@@ -206,8 +211,9 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
         }
         _ => unreachable!("clap takes one or two axes"),
     };
-    let scene = Scene {
+    let mut scene = Scene {
         name: a.name.clone().unwrap_or(default_name),
+        title_as_written: title.clone(),
         title,
         params: config.scene,
         min_norm: config.min_norm,
@@ -215,12 +221,13 @@ pub fn scene(a: &SweepArgs) -> Result<Scene> {
         size: Size::default(),
         style: Default::default(),
         chart,
+        uncertain: Uncertainty::of_flags(uncertain),
     };
     scene.validate_chart()?;
     Ok(scene)
 }
 
-/// The memory and file checks name the scene key a sweep fills (`chart.axis.count`); the user
+/// The memory and file checks name the scene key a sweep fills (`chart.x_axis.count`); the user
 /// wrote the count in an axis argument, so the message names that (`COUNT of mu=MIN:MAX:COUNT`).
 fn key_as_written(e: Error, a: &SweepArgs) -> Error {
     match e {
@@ -262,7 +269,7 @@ pub fn run(a: &SweepArgs) -> Result<String> {
     // Every output path is checked before anything is computed.
     let planned = output_paths(&a.out, &scene.name, &scene.chart, formats);
     let index = a.out.join("index.html");
-    crate::atomic::check_all(planned.iter().chain([&index]).map(PathBuf::as_path))?;
+    let set = Set::begin(planned.iter().chain([&index]).map(PathBuf::as_path))?;
     let rendered = charts::render(&scene, formats)?;
     // The sweep joins the folder's gallery as a render does: its section with the parameters,
     // the command that reproduces it and the read-off.
@@ -274,15 +281,21 @@ pub fn run(a: &SweepArgs) -> Result<String> {
         read_off: rendered.read_off.as_deref(),
         ..Entry::of_scene(&scene, files, typed_command())
     };
+    // Built and written under the folder's lock, as a render's (see `gallery`).
+    let lock = lock_folder(&a.out)?;
     let html = page(&a.out, &[entry])?;
     let extra = [(index.clone(), html.as_bytes())];
-    let paths = write_rendered(&a.out, std::slice::from_ref(&rendered), &extra)?.concat();
-    let list: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    let paths = write_rendered(set, &a.out, std::slice::from_ref(&rendered), &extra)?.concat();
+    drop(lock);
+    if a.quiet.quiet {
+        return Ok(String::new());
+    }
+    let list: Vec<String> = paths.iter().map(|p| super::terminal::path(p)).collect();
     Ok(format!(
         "{}: {}\ngallery: {}\n",
         scene.name,
         list.join(" "),
-        index.display()
+        super::terminal::path(&index)
     ))
 }
 

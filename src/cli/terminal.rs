@@ -5,30 +5,30 @@
 //! the bidirectional controls that reorder what a line shows.
 
 use std::borrow::Cow;
+use std::io::Write;
+use std::path::Path;
 
-/// Whether `c` is written as an escape: C0 and C1 controls (but newline and tab), DEL, and the
-/// bidirectional embeddings, overrides and isolates (U+202A-U+202E, U+2066-U+2069).
-fn escaped(c: char) -> bool {
-    (c.is_control() && c != '\n' && c != '\t')
-        || ('\u{202a}'..='\u{202e}').contains(&c)
-        || ('\u{2066}'..='\u{2069}').contains(&c)
+/// `text` with each control character but newline and tab, DEL and each bidirectional control
+/// written as Rust writes it (`\u{1b}`), the rest as it is; borrowed when nothing needs it.
+pub(crate) fn safe(text: &str) -> Cow<'_, str> {
+    crate::error::escape_controls(text, true)
 }
 
-/// `text` with each character [`escaped`] written as Rust writes it (`\u{1b}`), the rest as
-/// it is; borrowed when nothing needs it.
-pub(crate) fn safe(text: &str) -> Cow<'_, str> {
-    if !text.chars().any(escaped) {
-        return Cow::Borrowed(text);
-    }
-    let mut out = String::with_capacity(text.len() + 16);
-    for c in text.chars() {
-        if escaped(c) {
-            out.extend(c.escape_unicode());
-        } else {
-            out.push(c);
-        }
-    }
-    Cow::Owned(out)
+/// A path as an answer lists it, on one line: a newline or tab in it escaped as well (`--out
+/// "$(printf 'a\nb')"` split `fig6: a` and `b/fig6.svg` over two lines of the answer).
+pub(crate) fn path(p: &Path) -> String {
+    crate::error::path_text(p)
+}
+
+/// Writes `text` and a newline to stderr, control characters escaped ([`safe`]): every
+/// diagnostic (a warning, an error, a note) goes through here.
+///
+/// A failed write is dropped: `eprintln!` panicked on an unwritable stderr (`2>/dev/full`), so a
+/// warning cost the answer on stdout and turned exit 0 into 101. A diagnostic nobody can read
+/// changes neither the answer nor the exit code.
+pub(crate) fn diagnostic(text: &str) {
+    let mut err = std::io::stderr().lock();
+    let _ = writeln!(err, "{}", safe(text)).and_then(|()| err.flush());
 }
 
 #[cfg(test)]

@@ -17,25 +17,33 @@ use serde::de::DeserializeOwned;
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
-use crate::error::{Error, Result, cut};
+use crate::error::{Error, QUOTE_MAX_CHARS, Result, cut};
 use crate::settings::decl::float_range_problem;
 
 /// A hint where TOML refuses a value at byte `at` of `text` that is a range or a distribution
 /// written without quotes (`mu = 0.12:0.3`, which TOML reads as a broken number): what to
 /// write instead. Empty otherwise.
+///
+/// The hint quotes the line back, so it is given only where the line is that mistake: a bare
+/// key and a value that reads as a range or a distribution. The file may be anything
+/// (`--config .env`, `/proc/self/environ` as a scene's base), and a hint that echoed any line
+/// printed a password and the environment.
 fn unquoted_range_hint(text: &str, at: usize) -> String {
     let line_start = text[..at.min(text.len())].rfind('\n').map_or(0, |i| i + 1);
     let line = text[line_start..].lines().next().unwrap_or("");
     let Some((key, value)) = line.split_once('=') else {
         return String::new();
     };
-    let value = value.split('#').next().unwrap_or("").trim();
-    let looks_uncertain = value.contains(':') || value.ends_with(')');
-    match looks_uncertain && !value.starts_with('"') && !value.starts_with('\'') {
-        true => format!(
-            " (a range or a distribution is a string in a file: {} = \"{value}\")",
-            key.trim()
-        ),
+    let (key, value) = (key.trim(), value.split('#').next().unwrap_or("").trim());
+    let bare_key = !key.is_empty()
+        && key.len() <= QUOTE_MAX_CHARS
+        && key
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-');
+    let uncertain = value.len() <= QUOTE_MAX_CHARS
+        && crate::uncertain::Uncertain::parse(value).is_ok_and(|u| u.is_uncertain());
+    match bare_key && uncertain {
+        true => format!(" (a range or a distribution is a string in a file: {key} = \"{value}\")"),
         false => String::new(),
     }
 }
@@ -145,15 +153,118 @@ pub fn keyed(key: Option<&str>, written: Option<&str>, message: &str) -> String 
             crate::settings::moved(section, last)
         });
     let message = match moved {
-        Some(place) => format!("{message}; it belongs in [{}]: {place}", {
+        Some(place) => format!("unknown key here; it belongs in [{}]: {place}", {
             place.rsplit_once('.').map_or("", |(s, _)| s)
         }),
-        None => message.to_string(),
+        None => in_our_words(key, message),
     };
     match (key, written) {
         (Some(k), Some(w)) => format!("{} = {}: {message}", cut(k), cut(w)),
         (Some(k), None) => format!("{}: {message}", cut(k)),
         _ => message.to_string(),
+    }
+}
+
+/// serde's message said in the tool's words: "a number", not "f64"; "one of ...", with the
+/// nearest where a key or a word is misspelt (`raduis_mm`: did you mean radius_mm?), and the
+/// keys of a section with its aliases (`mu`), which serde does not list. A message serde did
+/// not write is left as it is.
+fn in_our_words(key: Option<&str>, message: &str) -> String {
+    let ticked = |s: &str| -> Vec<String> {
+        s.split('`')
+            .skip(1)
+            .step_by(2)
+            .map(str::to_string)
+            .collect()
+    };
+    if let Some(rest) = message.strip_prefix("unknown field ") {
+        let mut words = ticked(rest);
+        let given = match words.is_empty() {
+            true => return message.to_string(),
+            false => words.remove(0),
+        };
+        // The section's aliases set several keys at once: `[scene] mu` sets both frictions.
+        let section = key.and_then(|k| k.rsplit_once('.')).map_or("", |(s, _)| s);
+        let aliases = crate::settings::all()
+            .filter(|d| d.section == section && !d.sets.is_empty())
+            .map(|d| d.key.to_string());
+        let mut known: Vec<String> = aliases.chain(words).collect();
+        known.dedup();
+        let nearest = crate::ask::nearest(&given, known.iter().map(String::as_str));
+        let mean = nearest.map_or(String::new(), |n| format!("; did you mean {n}?"));
+        return match known.is_empty() {
+            true => format!("unknown key{mean}"),
+            false => format!("unknown key{mean} The keys here: {}", known.join(", ")),
+        };
+    }
+    if let Some(rest) = message.strip_prefix("unknown variant ") {
+        let mut words = ticked(rest);
+        if words.is_empty() {
+            return message.to_string();
+        }
+        let given = words.remove(0);
+        let nearest = crate::ask::nearest(&given, words.iter().map(String::as_str));
+        let mean = nearest.map_or(String::new(), |n| format!("; did you mean {n}?"));
+        return format!("{given} is not one of {}{mean}", words.join(", "));
+    }
+    if let Some(rest) = message.strip_prefix("missing field ") {
+        let field = rest.trim_matches('`');
+        return format!("{field} is missing: a required key");
+    }
+    if let Some(rest) = message.strip_prefix("invalid type: ") {
+        let Some((found, expected)) = rest.rsplit_once(", expected ") else {
+            return message.to_string();
+        };
+        return format!(
+            "expected {}, found {}",
+            wanted(expected),
+            found_words(found)
+        );
+    }
+    if let Some(rest) = message.strip_prefix("invalid value: ") {
+        if let Some((found, expected)) = rest.rsplit_once(", expected ") {
+            return format!(
+                "expected {}, found {}",
+                wanted(expected),
+                found_words(found)
+            );
+        }
+    }
+    message.to_string()
+}
+
+/// What serde expected, in the tool's words.
+fn wanted(expected: &str) -> String {
+    match expected.trim() {
+        "f64" | "f32" | "a f64" | "a float" => "a number".into(),
+        "u8" | "u16" | "u32" | "u64" | "usize" | "i32" | "i64" | "an integer" => {
+            "a whole number".into()
+        }
+        "a boolean" | "bool" => "true or false".into(),
+        "a sequence" => "a list [...]".into(),
+        "a map" | "struct" => "a table".into(),
+        e if e.starts_with("struct ") || e.starts_with("a map") => "a table".into(),
+        e => e.to_string(),
+    }
+}
+
+/// What serde found, in the tool's words: `string "ten"` is the string "ten".
+fn found_words(found: &str) -> String {
+    let found = found.trim();
+    let value = |prefix: &str| found.strip_prefix(prefix).map(|v| v.trim_matches('`'));
+    if let Some(v) = value("string ") {
+        return format!("the text {v}");
+    }
+    if let Some(v) = value("integer ").or_else(|| value("floating point ")) {
+        return format!("the number {v}");
+    }
+    if let Some(v) = value("boolean ") {
+        return v.to_string();
+    }
+    match found {
+        "sequence" => "a list".into(),
+        "map" => "a table".into(),
+        f => f.to_string(),
     }
 }
 
@@ -350,5 +461,29 @@ mod tests {
             .to_string();
         assert!(e.contains("mu = \"normal(0.2,0.03)\""), "{e}");
         assert_eq!(unquoted_range_hint("mu = 0.2x\n", 5), "");
+    }
+
+    /// The hint quoted the refused line back whatever it held: `--config .env` printed a
+    /// database password, `/proc/self/environ` as a config or a scene's base the whole
+    /// environment. Only a line that is the mistake it names (a bare key and a range or a
+    /// distribution) is quoted; every other message names the file, line and column alone.
+    #[test]
+    fn a_file_that_is_not_toml_is_never_quoted() {
+        let secret = "s3cr3t-Pa55";
+        for text in [
+            format!("DATABASE_URL=postgres://admin:{secret}@db:5432/app\nDEBUG=1\n"),
+            format!("SHELL=/bin/bash\0PASSWORD={secret}\0HOME=/root\0"),
+            format!("[scene]\nmu = 0.1:{secret}\n"),
+            format!("[scene]\nmu = normal({secret})\n"),
+            format!("key with spaces = 0.1:0.3 {secret}\n"),
+            format!("TOKEN = {secret}:0.3\n"),
+        ] {
+            let e = parse_toml::<toml::Table>(&text, Path::new(".env"))
+                .unwrap_err()
+                .to_string();
+            assert!(e.starts_with(".env:"), "{e}");
+            assert!(!e.contains(secret) && !e.contains("admin"), "{e}");
+            assert!(!e.contains("a range or a distribution"), "{e}");
+        }
     }
 }

@@ -21,8 +21,10 @@ use crate::scene::{JamStatus, SceneParams};
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SweepSettings {
-    /// The swept parameter, its range, sample count (curves) and scale.
-    pub axis: GridAxis,
+    /// The swept parameter, its range, sample count (curves) and scale: the x axis, under the
+    /// key every chart kind names its x axis with (`axis`, the key's old spelling, is read as
+    /// it).
+    pub x_axis: GridAxis,
     /// The panels, top to bottom (default: x_jam_mm then theta_jam_deg).
     #[serde(default = "both_panels")]
     pub panels: Vec<SweepPanel>,
@@ -55,7 +57,7 @@ impl Figure for SweepSettings {
     type Data = SweepData;
 
     fn param_axes(&self) -> Vec<(&'static str, GridAxis)> {
-        vec![("axis", self.axis)]
+        vec![("x_axis", self.x_axis)]
     }
 
     /// With the read-off, the chart marks the scene's value of the swept parameter.
@@ -70,16 +72,16 @@ impl Figure for SweepSettings {
 
     /// Checks the axis, panels and layers against the scene.
     fn validate(&self, input: &Input) -> Result<()> {
-        self.axis.validate("chart.axis")?;
-        if self.axis.param == Param::ThetaDeg {
+        self.x_axis.validate("chart.x_axis")?;
+        if self.x_axis.param == Param::ThetaDeg {
             return Err(Error::invalid(
-                "chart.axis.param",
+                "chart.x_axis.param",
                 "theta_deg",
                 "a sweep varies a scene parameter",
             ));
         }
-        for v in [self.axis.min, self.axis.max] {
-            self.axis.param.apply(input.params, v).validate()?;
+        for v in [self.x_axis.min, self.x_axis.max] {
+            self.x_axis.param.apply(input.params, v).validate()?;
         }
         if self.panels.is_empty() || self.panels.len() > 3 {
             return Err(Error::invalid(
@@ -89,15 +91,15 @@ impl Figure for SweepSettings {
             ));
         }
         for l in &self.layers {
-            sweep_layers::validate(*l, &self.axis)?;
+            sweep_layers::validate(*l, &self.x_axis)?;
         }
         Ok(())
     }
 
     fn check_size(&self, _input: &Input) -> Result<()> {
         crate::limits::check_items(
-            "chart.axis.count",
-            self.axis.count as f64,
+            "chart.x_axis.count",
+            self.x_axis.count as f64,
             crate::limits::SWEEP_POINT,
         )
     }
@@ -106,24 +108,28 @@ impl Figure for SweepSettings {
     fn compute(&self, input: &Input, models: &dyn Models) -> Result<SweepData> {
         let mut series = Vec::new();
         for l in &self.layers {
-            series.extend(sweep_layers::series(*l, &self.axis, input, models)?);
+            series.extend(sweep_layers::series(*l, &self.x_axis, input, models)?);
         }
         let mut rows = Vec::new();
         if let Some(band) = &self.band {
-            let [earliest, latest] = band::edges(&self.axis, input, band)?;
+            let [earliest, latest] = band::edges(&self.x_axis, input, band)?;
             rows = band::rows(
-                self.axis.param,
+                self.x_axis.param,
                 &band.latest,
                 &earliest.points,
                 &latest.points,
             );
             series.extend([earliest, latest]);
         }
-        let at = self.axis.param.get(&input.params).filter(|_| self.read_off);
+        let at = self
+            .x_axis
+            .param
+            .get(&input.params)
+            .filter(|_| self.read_off);
         // With a band the read-off is its two ends there (the scene's own value of an
         // uncertain input is only the range's midpoint).
         let read_off_band = match (at, &self.band) {
-            (Some(v), Some(b)) => Some(band::at(self.axis.param, v, b)?),
+            (Some(v), Some(b)) => Some(band::at(self.x_axis.param, v, b)?),
             _ => None,
         };
         let read_off = match (self.read_off && self.band.is_none(), at) {
@@ -212,7 +218,7 @@ impl SweepData {
     fn header(&self) -> [&'static str; 5] {
         [
             "layer",
-            self.settings.axis.param.as_str(),
+            self.settings.x_axis.param.as_str(),
             "status",
             "x_jam_mm",
             "theta_jam_deg",

@@ -473,7 +473,8 @@ pub fn held_at(p: &LocatorParams, load_n: f64) -> Result<(), FailureMode> {
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PreparedV<'a> {
     p: &'a LocatorParams,
-    /// The frame and the cone (None: free rotation with a rim load); None when it self-locks.
+    /// The frame and the cone of a load at the centre (the load's own under blocked
+    /// rotation, where a joint carries the moment); None when it self-locks.
     shape: Option<(Frame, Option<PlaneCone>)>,
 }
 
@@ -481,7 +482,11 @@ impl<'a> PreparedV<'a> {
     pub(crate) fn new(p: &'a LocatorParams) -> Self {
         let shape = (!self_locking(p)).then(|| {
             let f = p.frame();
-            (f, PlaneCone::of_unlocked(p, &f))
+            let centre = LocatorParams {
+                load_at_rim_deg: None,
+                ..*p
+            };
+            (f, PlaneCone::of_unlocked(&centre, &f))
         });
         PreparedV { p, shape }
     }
@@ -499,9 +504,14 @@ impl<'a> PreparedV<'a> {
         let Some((f, cone)) = &self.shape else {
             return Ok(());
         };
+        // A rim load turns a free disc only where it has a moment about the centre: at the rim
+        // point on its own line (psi = phi, or the far side, whose sin(pi) is 1.2e-16) it acts
+        // as at the centre. The free rows' tie-breaks there were rounding: a load straight up
+        // at the top of the disc beyond its weight "rolled out over the right flank".
+        let turns = self.p.rotation == Rotation::Free && line.m1.abs() > f64::EPSILON;
         match cone {
-            Some(cone) => cone.held_at(line, load_n),
-            None => free_held_at(
+            Some(cone) if !turns => cone.held_at(line, load_n),
+            _ => free_held_at(
                 &free_rows(self.p, f, line),
                 load_n,
                 tol_of([self.p.weight_n(), load_n]),
@@ -523,10 +533,31 @@ pub fn capacity(p: &LocatorParams) -> Capacity {
     }
     let f = p.frame();
     let line = LoadLine::new(p);
-    match PlaneCone::of(p, &f) {
+    let c = match PlaneCone::of(p, &f) {
         Some(cone) => cone.capacity(&line),
         None => free_capacity(&free_rows(p, &f, &line), p.weight_n()),
+    };
+    match c.p_max_n {
+        Some(u) if cancels_weight(&line, u, p.weight_n()) => Capacity {
+            failure_mode: Some(FailureMode::PulledOut),
+            ..c
+        },
+        _ => c,
     }
+}
+
+/// Whether the load `load_n` N of `line` cancels the weight: no force and no moment left
+/// for the flanks to carry, to [`TOL`] of the forces.
+///
+/// At a P_max where it does, the load is straight up and P_max = W (at the centre, or at the
+/// rim point straight above it): beyond it the support the part needs points straight down,
+/// out of every flank's reach at once, so it lifts off both flanks. Which row bound P_max
+/// there was rounding (cos 90 deg is 6.1e-17 in radians): `vlocator --load 5 --load-angle
+/// 90` said the part "rolls out over the left flank" beyond P_max = W.
+fn cancels_weight(line: &LoadLine, load_n: f64, weight_n: f64) -> bool {
+    let q = line.force_at(load_n);
+    let tol = tol_of([weight_n, load_n]);
+    q[0].abs() <= tol && q[1].abs() <= tol && (line.m1 * load_n).abs() <= tol
 }
 
 /// The capacity under free rotation by vertex enumeration of the LP, whatever the load point

@@ -158,12 +158,17 @@ impl LoadDirection {
     /// The direction `phi_deg` (from +x, counter-clockwise).
     pub fn new(phi_deg: f64) -> Self {
         let (sin, cos) = phi_deg.to_radians().sin_cos();
+        // A load straight up (cos phi zero but for the rounding of a right angle in
+        // radians) is bounded at P_max = W, where it cancels the weight: beyond it the part
+        // leaves both flanks, as the exact path says (`exact::capacity`).
+        let up = cos.abs() <= f64::EPSILON && sin > 0.0;
         LoadDirection {
             sin,
             cos_abs: cos.abs(),
-            mode: match cos > 0.0 {
-                true => FailureMode::RollsOverRight,
-                false => FailureMode::RollsOverLeft,
+            mode: match (up, cos > 0.0) {
+                (true, _) => FailureMode::PulledOut,
+                (false, true) => FailureMode::RollsOverRight,
+                (false, false) => FailureMode::RollsOverLeft,
             },
         }
     }
@@ -239,6 +244,26 @@ impl SymmetricV {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The closed form of a symmetric V, which the capacity maps use, says what the exact
+    /// path says of a load straight up beyond the weight: the part leaves both flanks
+    /// (`locator::tests::a_load_straight_up_beyond_the_weight_pulls_the_part_out`).
+    #[test]
+    fn a_load_straight_up_pulls_the_part_out() {
+        for (phi, mode) in [
+            (90.0, FailureMode::PulledOut),
+            (-270.0, FailureMode::PulledOut),
+            (89.0, FailureMode::RollsOverRight),
+            (91.0, FailureMode::RollsOverLeft),
+        ] {
+            assert_eq!(LoadDirection::new(phi).mode, mode, "{phi}");
+        }
+        let v = SymmetricV::of(&LocatorParams::default());
+        assert_eq!(
+            v.capacity(&LoadDirection::new(90.0)),
+            (1.0, Some(FailureMode::PulledOut))
+        );
+    }
 
     /// A row kernel's cells are [`SymmetricV::capacity`]'s bit for bit, along either axis, for
     /// rows shorter and longer than its lanes: Vs that lock and that do not, loads into the V

@@ -595,3 +595,49 @@ fn a_v_just_wider_than_its_locking_angle_holds_its_weight() {
         }
     }
 }
+
+/// `vlocator --mass 1 --load 5 --load-angle 90` said that beyond P_max = W the part "rolls
+/// out over the left flank": the two rows of its support cone bind at the same load there,
+/// and which one counted was rounding (cos 90 deg is 6.1e-17 in radians). A load straight up
+/// beyond W lifts the disc off both flanks, as the verdict at such a load says, for any V,
+/// rotation and friction, at the centre or at the rim point straight above it.
+#[test]
+fn a_load_straight_up_beyond_the_weight_pulls_the_part_out() {
+    for (flanks, rotation, rim, mu) in [
+        ((45.0, 45.0), Rotation::Free, None, 0.3),
+        ((45.0, 45.0), Rotation::Blocked, None, 0.3),
+        ((30.0, 60.0), Rotation::Free, None, 0.3),
+        ((30.0, 60.0), Rotation::Blocked, None, 0.1),
+        ((10.0, 100.0), Rotation::Free, None, 0.0),
+        ((45.0, 45.0), Rotation::Free, Some(90.0), 0.3),
+        ((20.0, 35.0), Rotation::Free, Some(90.0), 0.2),
+    ] {
+        let p = LocatorParams {
+            flank_left_deg: flanks.0,
+            flank_right_deg: flanks.1,
+            rotation,
+            load_at_rim_deg: rim,
+            load_n: 5.0,
+            load_angle_deg: 90.0,
+            ..LocatorParams::default()
+        }
+        .with_mu(mu);
+        let c = capacity(&p);
+        let w = p.weight_n();
+        let at = format!("{flanks:?} {rotation:?} rim {rim:?} mu {mu}");
+        assert!((c.p_max_n.unwrap() - w).abs() < 1e-9 * w, "{at}: {c:?}");
+        assert_eq!(c.failure_mode, Some(FailureMode::PulledOut), "{at}: {c:?}");
+        assert_eq!(held_at(&p, 1.5 * w), Err(FailureMode::PulledOut), "{at}");
+    }
+    // A load a degree off the vertical rolls the part over the flank it leans towards.
+    let lean = |phi: f64| {
+        let p = LocatorParams {
+            load_n: 5.0,
+            load_angle_deg: phi,
+            ..LocatorParams::default()
+        };
+        capacity(&p).failure_mode
+    };
+    assert_eq!(lean(89.0), Some(FailureMode::RollsOverRight));
+    assert_eq!(lean(91.0), Some(FailureMode::RollsOverLeft));
+}

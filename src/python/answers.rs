@@ -278,16 +278,19 @@ impl BoxAnswer {
     }
 
     /// The quantiles of x_jam in mm asked (`quantiles`), as [(q, x_jam_mm)]; empty without a
-    /// distribution.
+    /// distribution. A quantile whose jam lies beyond every position a double holds (a
+    /// friction below about 5e-308) comes last, with x_jam_mm = inf.
     #[getter]
     fn quantiles(&self) -> Vec<(f64, f64)> {
         self.record()
             .distribution
             .as_ref()
             .map_or_else(Vec::new, |d| {
+                let beyond = d.beyond_every_position.iter().map(|&q| (q, f64::INFINITY));
                 d.quantiles
                     .iter()
                     .map(|q| (q.q, q.x_jam_mm.value))
+                    .chain(beyond)
                     .collect()
             })
     }

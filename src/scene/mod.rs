@@ -188,6 +188,16 @@ impl SceneParams {
     pub fn contact_distance_mm(&self, theta: f64) -> f64 {
         contact_distance_mm(self.radius_mm, self.palm_offset_mm, theta)
     }
+
+    /// Distance in mm from the hinge along the palm to the contact B at the start angle, its
+    /// right angles exact (`sin_cos_deg`): r cot(theta/2) + h cot(theta), r at 90 deg
+    /// however far the palm's face lies off the hinge line.
+    pub fn start_contact_distance_mm(&self) -> f64 {
+        let (r, h) = (self.radius_mm, self.palm_offset_mm);
+        let (sin, cos) = sin_cos_deg(self.start_angle_deg);
+        // cot(theta/2) = (1 + cos) / sin, cot(theta) = cos / sin.
+        r * (1.0 + cos) / sin + h * cos / sin
+    }
 }
 
 /// A warning for each friction coefficient above 2 (a percentage?), as (key, value) of a
@@ -301,6 +311,26 @@ pub fn contact_distance_mm(radius_mm: f64, offset_mm: f64, theta: f64) -> f64 {
         theta,
         disc_position_mm(radius_mm, offset_mm, theta),
     )
+}
+
+/// sin and cos of an angle given in degrees, both exact at a whole number of right angles
+/// (cos 90 deg = 0), as `deg.to_radians().sin_cos()` elsewhere.
+///
+/// 90 deg in radians is pi/2 rounded to a double, whose cosine is 6.1e-17, not 0; a length
+/// multiplied by it is wrong by that fraction of itself: with a palm face 1e300 mm off the
+/// hinge line, `solve` said the palm touches the disc 6.1e283 mm from the hinge at the start
+/// angle 90 deg, where r cot(45 deg) + h cot(90 deg) = r = 10 mm. An angle that is not a
+/// right angle keeps the bits it had, so no chart moves.
+pub(crate) fn sin_cos_deg(deg: f64) -> (f64, f64) {
+    if deg % 90.0 != 0.0 {
+        return deg.to_radians().sin_cos();
+    }
+    match (deg / 90.0).rem_euclid(4.0) as u8 {
+        0 => (0.0, 1.0),
+        1 => (1.0, 0.0),
+        2 => (0.0, -1.0),
+        _ => (-1.0, 0.0),
+    }
 }
 
 /// [`contact_distance_mm`] where the disc's position `x` (mm) at `theta` is known.

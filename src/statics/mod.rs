@@ -391,7 +391,9 @@ impl<const N: usize> Push<N> {
         if angle {
             let deg = self.inputs[START].0[j];
             let rad = deg.to_radians();
-            let (sin, cos) = rad.sin_cos();
+            // Right angles exact: a cosine of 90 deg of 6.1e-17 put the contact of a palm
+            // 1e300 mm off the hinge line 6.1e283 mm along it, past its end.
+            let (sin, cos) = crate::scene::sin_cos_deg(deg);
             (s.deg.0[j], s.rad.0[j]) = (deg, rad);
             (s.turn.cos.0[j], s.turn.sin.0[j]) = (cos, sin);
         }
@@ -758,6 +760,36 @@ mod tests {
             };
             assert_eq!(solve(&p).status, JamStatus::BeyondReach, "mu = {mu}");
         }
+    }
+
+    /// `solve --palm-offset 1e300` said the disc starts past the palm's end, which would
+    /// touch it 6.1e283 mm from the hinge at the start angle 90 deg: the cosine of 90 deg in
+    /// radians (6.1e-17) times the offset, from an offset of about 2.3e18 up. At 90 deg the
+    /// contact lies r from the hinge whatever the offset, so the disc starts on the palm, and
+    /// the jam, 1e300 mm out, lies past the palm's end.
+    #[test]
+    fn a_palm_far_off_the_hinge_line_touches_the_disc_at_its_radius_at_90_deg() {
+        for h in [1e17, 2.3e18, 1e20, 1e300] {
+            let p = SceneParams {
+                palm_offset_mm: h,
+                ..SceneParams::default()
+            };
+            assert_eq!(p.start_contact_distance_mm(), p.radius_mm, "h = {h:e}");
+            let s = solve(&p);
+            assert_eq!(s.status, JamStatus::BeyondReach, "h = {h:e}");
+            let past = s.past_palm.unwrap_or_else(|| panic!("h = {h:e}: {s:?}"));
+            assert!(past.x_jam_mm > h, "h = {h:e}: {past:?}");
+        }
+        // Other starts keep the bits they had: 60 deg as the radians give it.
+        let p = SceneParams {
+            palm_offset_mm: 3.0,
+            start_angle_deg: 60.0,
+            ..SceneParams::default()
+        };
+        let (sin, cos) = crate::scene::sin_cos_deg(60.0);
+        assert_eq!((sin, cos), 60_f64.to_radians().sin_cos());
+        let s_b = p.start_contact_distance_mm();
+        assert!((s_b - p.contact_distance_mm(60_f64.to_radians())).abs() < 1e-12 * s_b);
     }
 
     /// Regression: a jam past the palm's end said `beyond_reach` with no number; the

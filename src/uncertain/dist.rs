@@ -9,7 +9,8 @@
 //! With the closed form and one distributed input U, x_jam = X(U) is monotone (the statics
 //! docs, "Monotone in every uncertain input"), so its quantiles are the input's mapped:
 //! Q_x(q) = X(Q_U(q)) where X rises with U and X(Q_U(1 - q)) where it falls; and P(x_jam < x)
-//! = F_U(u*) or 1 - F_U(u*) with X(u*) = x found by bisection to 1e-12 of the support.
+//! = q* or 1 - q* with X(Q_U(q*)) = x, q* found by bisection in probability to 1e-15 (halving
+//! the input's value instead leaves a wide distribution's P coarse: [`exact`]).
 //!
 //! ## Monte Carlo
 //!
@@ -106,8 +107,14 @@ pub struct DistAnswer {
     pub method: DistMethod,
     /// P(x_jam < x) for each asked x.
     pub before: Vec<Before>,
-    /// The asked quantiles.
+    /// The asked quantiles whose jam position lies within what a double holds.
     pub quantiles: Vec<Quantile>,
+    /// The asked quantiles q whose x_jam (or an end of its 95 % interval) lies beyond
+    /// [`f64::MAX`] mm, past every position a double holds: frictions so small (below about
+    /// 5e-308) that the disc jams nowhere within reach. An outcome, not an error: `solve --mu
+    /// 'lognormal(5e-324,1)'` answers its box, and its default quantiles say this.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub beyond_every_position: Vec<f64>,
 }
 
 impl DistQuestion {
@@ -165,9 +172,32 @@ fn raw_x(p: &SceneParams) -> Option<f64> {
     (t > 0.0).then(|| p.disc_position_mm(t))
 }
 
+/// Probabilities at the ends of the support the exact answer reads: the distribution's 1e-12
+/// and 1 - 1e-12 quantiles.
+const EXACT_TAIL: f64 = 1e-12;
+
+/// Halvings of the bisection in probability for P(x_jam < x): 2^-50 < 1e-15, below the digits
+/// a probability is printed with.
+const EXACT_HALVINGS: usize = 50;
+
+/// Halvings of the input's value within the probability bisection's last bracket, after
+/// which P is F_U at the crossing: 60 reach neighbouring floats from any bracket, so a P of
+/// 1e-12 keeps its seven digits (the probability's 1e-15 alone left it 1e-4 off in the
+/// jam-probability chart's tail).
+const EXACT_VALUE_HALVINGS: usize = 60;
+
 /// The exact answer for the closed form with one distributed input; None when it does not
 /// apply (several inputs, a range among them, no distribution, or a support that reaches no
 /// friction at all at an end, where the disc never jams).
+///
+/// P(x_jam < x) is found by bisection in the input's probability first: q* with X(Q_U(q*)) =
+/// x, so P = q* (or 1 - q* where X falls). Halving the value over the whole support left a
+/// wide distribution's probability coarse: lognormal(0.01,3) reaches mu = 7e-12 to 1.5e7,
+/// whose 40 halvings are 1.4e-5 wide, so the frictions below that (1.4 % of the distribution)
+/// were one bracket, and P(x_jam < 1e6 mm) and P(x_jam < 1e7 mm) both came out 0.9926 beside
+/// a 99 % quantile of 1.05e6 mm. In probability each halving halves the error of P, but only
+/// to 1e-15 absolute, coarse for a P of 1e-12 in a tail; so the last bracket's values are
+/// halved on to neighbouring floats and P is F_U there (`EXACT_VALUE_HALVINGS`).
 pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<DistAnswer> {
     let [input] = &set.inputs[..] else {
         return None;
@@ -176,40 +206,46 @@ pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<
     if !u.is_distribution() {
         return None;
     }
-    let x_of = |v: f64| raw_x(&set.apply(p, &[v]));
-    // The support's ends as the distribution reaches them (1e-12 tails).
-    let (a, b) = (u.quantile(1e-12), u.quantile(1.0 - 1e-12));
-    let (xa, xb) = (x_of(a)?, x_of(b)?);
+    let x_at = |q: f64| raw_x(&set.apply(p, &[u.quantile(q)]));
+    let (qa, qb) = (EXACT_TAIL, 1.0 - EXACT_TAIL);
+    let (xa, xb) = (x_at(qa)?, x_at(qb)?);
     let falls = xb < xa;
-    let quantiles = ask
-        .quantiles
-        .iter()
-        .map(|&q| {
-            let v = u.quantile(if falls { 1.0 - q } else { q });
-            let x = x_of(v).unwrap_or(f64::NAN);
-            Quantile {
+    let mut quantiles = Vec::new();
+    let mut beyond_every_position = Vec::new();
+    for &q in &ask.quantiles {
+        match x_at(if falls { 1.0 - q } else { q })? {
+            x if x.is_finite() => quantiles.push(Quantile {
                 q,
                 x_jam_mm: exact_estimate(x),
-            }
-        })
-        .collect();
+            }),
+            _ => beyond_every_position.push(q),
+        }
+    }
     let before = ask
         .before_mm
         .iter()
         .map(|&x| {
-            // P(X(U) < x): bisect X(u*) = x over the support.
             let prob = if x <= xa.min(xb) {
                 0.0
             } else if x > xa.max(xb) {
                 1.0
             } else {
-                // 40 halvings: 2^-40 < 1e-12 of the support; fewer where the bracket reaches
-                // neighbouring floats first (a support 1e-15 wide hung at 1e-27).
-                let below = |m: f64| x_of(m).is_some_and(|xm| xm < x);
+                // The probabilities whose jam lies before x are one stretch of (qa, qb): below
+                // q* where x_jam rises with the input, above it where it falls.
+                let below = |q: f64| x_at(q).is_some_and(|xq| xq < x);
                 let mid = |lo: f64, hi: f64| 0.5 * (lo + hi);
-                let (lo, hi) =
-                    crate::locator::bisect_bracket((a, b), 40, mid, |m| below(m) != falls);
-                let f = u.cdf(0.5 * (lo + hi));
+                let (lo, hi) = crate::locator::bisect_bracket((qa, qb), EXACT_HALVINGS, mid, |q| {
+                    below(q) != falls
+                });
+                // On in the value, between the bracket's ends' values (in order: a quantile
+                // function rises).
+                let below_v = |v: f64| raw_x(&set.apply(p, &[v])).is_some_and(|xv| xv < x);
+                let (vlo, vhi) = (u.quantile(lo), u.quantile(hi));
+                let (vlo, vhi) =
+                    crate::locator::bisect_bracket((vlo, vhi), EXACT_VALUE_HALVINGS, mid, |v| {
+                        below_v(v) != falls
+                    });
+                let f = u.cdf(0.5 * (vlo + vhi));
                 if falls { 1.0 - f } else { f }
             };
             Before {
@@ -222,6 +258,7 @@ pub fn exact(p: &SceneParams, set: &UncertainSet, ask: &DistQuestion) -> Option<
         method: DistMethod::Exact,
         before,
         quantiles,
+        beyond_every_position,
     })
 }
 
@@ -350,22 +387,25 @@ pub(crate) fn monte_carlo_observed(
         .collect();
     let m = xs.len() as f64;
     let at = |rank: f64| xs[(rank.round().max(0.0) as usize).min(xs.len() - 1)];
-    let quantiles = ask
-        .quantiles
-        .iter()
-        .filter(|_| !xs.is_empty())
-        .map(|&q| {
-            let half = Z95 * (m * q * (1.0 - q)).sqrt();
-            Quantile {
-                q,
-                x_jam_mm: Estimate {
-                    value: at(m * q - 0.5),
-                    lo: at(m * q - 0.5 - half),
-                    hi: at(m * q - 0.5 + half),
-                },
-            }
-        })
-        .collect();
+    // x_jam = r cot(theta_jam / 2) passes 1.8e308 mm where theta_jam is below about 1e-307
+    // rad: such a quantile is said to lie beyond every position, not printed as `inf mm [inf,
+    // inf] (width NaN)`.
+    let (mut quantiles, mut beyond_every_position) = (Vec::new(), Vec::new());
+    for &q in ask.quantiles.iter().filter(|_| !xs.is_empty()) {
+        let half = Z95 * (m * q * (1.0 - q)).sqrt();
+        let x_jam_mm = Estimate {
+            value: at(m * q - 0.5),
+            lo: at(m * q - 0.5 - half),
+            hi: at(m * q - 0.5 + half),
+        };
+        match [x_jam_mm.value, x_jam_mm.lo, x_jam_mm.hi]
+            .iter()
+            .all(|x| x.is_finite())
+        {
+            true => quantiles.push(Quantile { q, x_jam_mm }),
+            false => beyond_every_position.push(q),
+        }
+    }
     Ok(DistAnswer {
         method: DistMethod::MonteCarlo {
             samples: n,
@@ -374,5 +414,6 @@ pub(crate) fn monte_carlo_observed(
         },
         before,
         quantiles,
+        beyond_every_position,
     })
 }

@@ -605,6 +605,9 @@ fn earliest_end(earliest: &[f64], latest: &[f64], i: usize) -> End {
 /// in closed form, [`invert`]). The status alone is asked ([`statics::status`]):
 /// `statics::solve` would run its past-palm bisection at every point beyond the palm (the range
 /// answer took 1450x a point answer).
+/// The smallest positive double (a subnormal, 4.9e-324): `f64::from_bits(1)`, as a constant.
+const SMALLEST_DOUBLE: f64 = 5e-324;
+
 fn walk(
     (lo, hi): (f64, f64),
     known: Option<(JamStatus, JamStatus)>,
@@ -619,8 +622,26 @@ fn walk(
     // Each status has one stretch, so there are fewer changes than statuses; the bound only
     // guards against a status that is not monotone after all.
     while here != last && out.len() < JamStatus::ALL.len() {
-        let (to, next) = change_by_theta((from, hi), tol, here, last, keys, &at)
-            .map_or_else(|| bisect_change((from, hi), here, status), |to| (to, last));
+        let (to, next) = match here {
+            // never_jams holds only where theta* = 0, with no friction at either contact:
+            // along a friction that is its low end alone (any friction above 0 jams
+            // somewhere), so the stretch ends where it begins, and the next status is the one
+            // just above it (a step of `tol`, at least a float's: along the box's diagonal the
+            // first float above 0 can round the frictions back to 0). Bisection put the end at
+            // the bracket's last float, 2^-30 of the range: `--mu 0:0.3` said never_jams for
+            // mu < 2.794e-10, where `--mu 1e-10` is beyond_reach. Over a subnormal range
+            // (`--mu 0:1e-322`) `tol` is 0 and the step is the smallest double; where even
+            // that rounds back to no friction, the next status is the far end's.
+            JamStatus::NeverJams => {
+                let step = tol.max(f64::EPSILON * from.abs()).max(SMALLEST_DOUBLE);
+                match status((from + step).min(hi)) {
+                    JamStatus::NeverJams => (from, last),
+                    next => (from, next),
+                }
+            }
+            _ => change_by_theta((from, hi), tol, here, last, keys, &at)
+                .map_or_else(|| bisect_change((from, hi), here, status), |to| (to, last)),
+        };
         out.push(Segment {
             from,
             to,

@@ -339,6 +339,66 @@ fn a_friction_range_from_zero_keeps_its_interval() {
     assert_eq!(a.reached, Some([Reached::PalmEnd, Reached::Corner]));
 }
 
+/// `solve --mu 0:0.3` said `never_jams for mu < 2.794e-10`: the bisection of the status put
+/// the end of never_jams at its bracket's last float, 2^-30 of the range, while only mu = 0
+/// never jams (`--mu 1e-10` is beyond_reach). never_jams is the low end alone, a stretch
+/// that ends where it begins, and the next status starts there; also along the box's
+/// diagonal, with the other friction a range from 0 as well.
+#[test]
+fn only_a_friction_of_zero_never_jams() {
+    let (p, set) = paper_box(90.0, "mu", 0.0, 0.3);
+    let a = range::closed_form(&p, &set).unwrap();
+    let segments = &a.inputs[0].segments;
+    assert_eq!(segments[0].status, JamStatus::NeverJams);
+    assert_eq!(
+        (segments[0].from, segments[0].to),
+        (0.0, 0.0),
+        "{segments:?}"
+    );
+    assert_eq!(segments[1].status, JamStatus::BeyondReach, "{segments:?}");
+    assert_eq!(segments[1].from, 0.0, "{segments:?}");
+    assert_eq!(statics::status(&p.with_mu(1e-10)), JamStatus::BeyondReach);
+    // Over a subnormal range the step above 0 is a float, not 1e-9 of the width (which
+    // rounds to 0): never_jams once, then the next status, not never_jams eight times over.
+    let (p0, set0) = paper_box(90.0, "mu", 0.0, 1e-322);
+    let a = range::closed_form(&p0, &set0).unwrap();
+    let statuses: Vec<JamStatus> = a.inputs[0].segments.iter().map(|s| s.status).collect();
+    assert_eq!(
+        statuses,
+        [JamStatus::NeverJams, JamStatus::BeyondReach],
+        "{:?}",
+        a.inputs[0].segments
+    );
+    // Two frictions from 0: the statuses of the box, found along its diagonal.
+    let set = UncertainSet {
+        inputs: vec![
+            input("mu_ground", &["mu_ground"], 0.0, 0.3),
+            input("mu_palm", &["mu_palm"], 0.0, 0.3),
+        ],
+    };
+    let a = range::closed_form(&p, &set).unwrap();
+    for i in &a.inputs {
+        let first = &i.segments[0];
+        assert_ne!(
+            first.status,
+            JamStatus::NeverJams,
+            "{}: {:?}",
+            i.name,
+            i.segments
+        );
+    }
+    assert_eq!(
+        a.statuses,
+        [
+            JamStatus::NeverJams,
+            JamStatus::BeyondReach,
+            JamStatus::Jams
+        ],
+        "{:?}",
+        a.statuses
+    );
+}
+
 /// Regression: the statics' interval counted the jams past the palm's end (the closed form on
 /// a long enough palm) while the sampled models left those points out. Now both are over the
 /// points that jam on the palm or are held at the start: for the shaft with mu 0.12 to 0.3

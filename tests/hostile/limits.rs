@@ -28,7 +28,7 @@ fn scene_limits_are_found_by_estimate_not_by_allocation_failure() {
     scene(
         d,
         "sweep",
-        "[chart]\nkind = \"sweep\"\naxis = { param = \"force_n\", min = 50.0, max = 1e4, \
+        "[chart]\nkind = \"sweep\"\nx_axis = { param = \"force_n\", min = 50.0, max = 1e4, \
          count = 16777216 }\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n",
     );
     scene(
@@ -39,7 +39,7 @@ fn scene_limits_are_found_by_estimate_not_by_allocation_failure() {
     for (name, key) in [
         ("map", "chart.x_axis.count * chart.y_axis.count"),
         ("contour", "chart.x_axis.count * chart.y_axis.count"),
-        ("sweep", "chart.axis.count"),
+        ("sweep", "chart.x_axis.count"),
         ("series", "series_dt_s"),
     ] {
         let out = render(d, name);
@@ -231,7 +231,7 @@ fn render_of_an_empty_scenes_dir_fails_saying_so() {
 #[test]
 fn a_chart_whose_model_failed_fails_the_render_naming_scene_and_reason() {
     let broken = format!("{STIFF}[chart]\nkind = \"time_series\"\n");
-    let fine = "[chart]\nkind = \"sweep\"\naxis = { param = \"force_n\", min = 50.0, max = 1e4, \
+    let fine = "[chart]\nkind = \"sweep\"\nx_axis = { param = \"force_n\", min = 50.0, max = 1e4, \
                 count = 5 }\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n";
     render_fails_saying(
         &[("broken", &broken), ("fine", fine)],
@@ -249,7 +249,7 @@ const STIFF: &str = "[dynamics.contact]\nstiffness_n_per_mm_e = 1e300\n";
 #[test]
 fn a_sweep_layer_whose_model_failed_at_every_point_fails_the_render() {
     let broken = format!(
-        "{STIFF}[chart]\nkind = \"sweep\"\naxis = {{ param = \"mu\", min = 0.15, max = 0.45, \
+        "{STIFF}[chart]\nkind = \"sweep\"\nx_axis = {{ param = \"mu\", min = 0.15, max = 0.45, \
          count = 31 }}\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\", \"simulation_motion\"]\n"
     );
     let said = [

@@ -102,3 +102,74 @@ fn a_missing_required_flag_is_named() {
     assert!(e.contains("--x-target"), "{e}");
     assert!(!e.contains(":;"), "{e}");
 }
+
+/// Three messages quoted a number with its 309 digits: a chart axis' end (`render
+/// jam-probability --set chart.x_min_mm=-1e308`), a whole number given as a float (`render
+/// fig7b --set size.width_px=1e308`, in the parser's words) and the warning that names a
+/// `--set` the chart does not show (`render fig7b --set force_n=1e308`).
+#[test]
+fn messages_about_a_set_print_its_numbers_short() {
+    let dir = tempfile::tempdir().unwrap();
+    for (args, says) in [
+        (
+            &[
+                "render",
+                "jam-probability",
+                "--set",
+                "chart.x_min_mm=-1e308",
+            ][..],
+            "-1e308",
+        ),
+        (
+            &["render", "fig7b", "--set", "size.width_px=1e308"][..],
+            "1e308",
+        ),
+        (
+            &[
+                "render",
+                "fig7b",
+                "--set",
+                "force_n=1e308",
+                "--format",
+                "svg",
+            ][..],
+            "--set force_n=1e308 does not show",
+        ),
+    ] {
+        let mut all = args.to_vec();
+        all.extend(["--out", "o"]);
+        let o = run(dir.path(), &all);
+        let text = format!("{}{}", stdout(&o), stderr(&o));
+        assert!(matches!(o.status.code(), Some(0 | 2)), "{args:?}: {text}");
+        assert!(stderr(&o).contains(says), "{args:?}: {text}");
+        assert!(longest_digit_run(&text) <= 17, "{args:?}:\n{text}");
+    }
+}
+
+/// A newline in an `--out` path split the list of files written over two lines of the answer
+/// (`fig6: a` and `b/fig6.svg`), as if it listed a file `b/fig6.svg`: a path is one line, its
+/// newline escaped, in the answer and in a message.
+#[test]
+fn a_newline_in_a_path_stays_on_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = run(
+        dir.path(),
+        &["render", "fig6", "--format", "svg", "--out", "a\nb"],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(
+        stdout(&o),
+        "fig6: a\\u{a}b/fig6.csv a\\u{a}b/fig6.svg\ngallery: a\\u{a}b/index.html\n"
+    );
+    assert!(dir.path().join("a\nb/fig6.svg").is_file());
+    let o = run(
+        dir.path(),
+        &["sweep", "mu=0.1:0.5:5", "--format", "svg", "--out", "c\nd"],
+    );
+    assert_eq!(stdout(&o).lines().count(), 2, "{}", stdout(&o));
+    let o = run(dir.path(), &["solve", "--config", "x\ny.toml"]);
+    assert_eq!(
+        stderr(&o),
+        "jamchart: cannot read x\\u{a}y.toml: No such file or directory (os error 2)\n"
+    );
+}

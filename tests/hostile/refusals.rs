@@ -108,7 +108,7 @@ fn a_failed_write_to_stdout_is_an_error() {
 }
 
 /// A small valid `[chart]` for hand-made scene files.
-const SWEEP_CHART: &str = "[chart]\nkind = \"sweep\"\naxis = { param = \"mu\", min = 0.1, \
+const SWEEP_CHART: &str = "[chart]\nkind = \"sweep\"\nx_axis = { param = \"mu\", min = 0.1, \
                            max = 0.5, count = 3 }\npanels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n";
 
 /// Asserts `o` was refused with exit 2 and a message naming `setting`, without a panic.
@@ -370,7 +370,7 @@ fn a_file_size_limit_fails_cleanly_without_leftovers() {
 }
 
 /// Regression ("aborts"): a 10 MB scene title took 3 GiB to lay out and
-/// aborted under a 4 GiB limit, and `--set chart.axis.x.x.x...` (10,000 levels) overflowed
+/// aborted under a 4 GiB limit, and `--set chart.x_axis.x.x.x...` (10,000 levels) overflowed
 /// the stack. A title has at most 200 characters and a `--set` key at most 8 parts; both are
 /// refused with exit 2 before anything is computed.
 #[test]
@@ -392,7 +392,7 @@ fn huge_titles_and_deep_keys_are_refused_not_aborted() {
     );
     refused(&o, "title");
     assert!(stderr(&o).len() < 400, "{}", stderr(&o).len());
-    let key = format!("chart.axis.{}x=1", "x.".repeat(10_000));
+    let key = format!("chart.x_axis.{}x=1", "x.".repeat(10_000));
     let o = jamchart_guarded(
         d,
         &["render", "long", "--scenes-dir", "scenes", "--set", &key],

@@ -114,3 +114,58 @@ fn settings_and_scene_files_that_are_not_regular_files_are_refused() {
         refused(&o, "not a regular file");
     }
 }
+
+/// A file given where a settings or scene file belongs that is not one (`--config .env`,
+/// `/proc/self/environ` as `--config` or as a scene's `base`) had its refused line quoted in
+/// the message: a database password, the whole environment. The message names the file, line
+/// and column, never what the file holds.
+#[test]
+fn a_file_that_is_not_a_settings_file_is_never_quoted() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let secret = "s3cr3t-Pa55w0rd";
+    std::fs::write(
+        d.join(".env"),
+        format!("DATABASE_URL=postgres://admin:{secret}@db:5432/app\nDEBUG=1\n"),
+    )
+    .unwrap();
+    for base in ["/proc/self/environ", ".env"] {
+        let name = base.rsplit('/').next().unwrap().trim_start_matches('.');
+        std::fs::write(
+            d.join(format!("{name}.toml")),
+            format!(
+                "title = \"t\"\nbase = \"{base}\"\n[chart]\nkind = \"sweep\"\n\
+                 axis = {{ param = \"mu\", min = 0.1, max = 0.5, count = 5 }}\n\
+                 panels = [\"x_jam_mm\"]\nlayers = [\"statics\"]\n"
+            ),
+        )
+        .unwrap();
+    }
+    let env = [("JAMCHART_TEST_SECRET", Path::new(secret))];
+    for (args, file) in [
+        (&["solve", "--config", ".env"][..], ".env"),
+        (
+            &["solve", "--config", "/proc/self/environ"][..],
+            "/proc/self/environ",
+        ),
+        (
+            &["render", "environ.toml", "--out", "o"][..],
+            "/proc/self/environ",
+        ),
+        (&["render", "env.toml", "--out", "o"][..], ".env"),
+        (
+            &["design", "--x-target", "40", "--config", ".env"][..],
+            ".env",
+        ),
+    ] {
+        let o = run_within(d, args, &env, Duration::from_secs(60));
+        let e = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {e}");
+        // Refused where the file is read, at its line and column.
+        assert!(e.starts_with("jamchart: "), "{args:?}: {e}");
+        assert!(e.contains(&format!("{file}:1:")), "{args:?}: {e}");
+        for content in [secret, "admin", "JAMCHART_TEST_SECRET", "postgres"] {
+            assert!(!e.contains(content), "{args:?} quotes {content}: {e}");
+        }
+    }
+}

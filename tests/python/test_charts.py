@@ -68,7 +68,7 @@ def test_the_data_has_numpy_arrays(universal):
 
 
 def test_a_csv_chart_gives_its_columns():
-    chart = jc.render("fig7b", set={"chart.axis.count": 9})
+    chart = jc.render("fig7b", set={"chart.x_axis.count": 9})
     assert chart.data_format == "csv"
     columns = chart.data
     numeric = [v for v in columns.values() if isinstance(v, np.ndarray)]
