@@ -228,6 +228,7 @@ thread_local! {
 
 /// Runs `f` with `budget` bounding what the checks of this module accept on this thread (the
 /// lower of the budget and the crate's limits), then restores the bound before.
+#[cfg(feature = "serve")]
 pub fn within<T>(budget: Budget, f: impl FnOnce() -> T) -> T {
     struct Restore(Option<Budget>);
     impl Drop for Restore {

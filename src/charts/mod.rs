@@ -90,6 +90,7 @@ pub(crate) use crate::figures::contours::{grid_lines, grid_polygons};
 use axes::DrawResult;
 pub(crate) use builtin::SCENE_KEYS;
 pub use builtin::scene_names as builtin_scene_names;
+#[cfg(feature = "serve")]
 pub(crate) use gallery::READ_OFF_JS as GALLERY_JS;
 
 pub use data::DataFile;
