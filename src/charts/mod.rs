@@ -352,6 +352,8 @@ pub(crate) fn render_with(scene: &Scene, formats: Formats, made: &Made) -> Resul
 #[cfg(test)]
 mod layout_tests;
 #[cfg(test)]
+mod map_colour_tests;
+#[cfg(test)]
 mod override_tests;
 #[cfg(test)]
 mod series_tests;
