@@ -128,7 +128,7 @@ fn bad_scene_file_names_file_line_and_key() {
     let err = stderr(&out);
     // The chart's own mistake comes before the missing base, named with its line and path.
     assert!(
-        err.contains("bad.toml:5:7: chart.axs = 1: unknown key; did you mean axis?"),
+        err.contains("bad.toml:5:7: chart.axs = 1: unknown key. The keys here: x_axis, "),
         "{err}"
     );
 }

@@ -494,9 +494,9 @@ impl Scene {
     /// `--read-off`).
     ///
     /// The chart takes the uncertain inputs a single value has not replaced since
-    /// ([`super::scene_uncertain::attach`]: a band at the scene's values, the universal
+    /// (`scene_uncertain::attach`: a band at the scene's values, the universal
     /// chart's box, the probability chart's distributions) and the title its values in place
-    /// of the keys it names ([`super::title`]). An axis `mu` sets both frictions, so it is refused when the scene's frictions differ
+    /// of the keys it names (`charts::title`). An axis `mu` sets both frictions, so it is refused when the scene's frictions differ
     /// (say `--set mu_palm=0.6` on fig3): the chart would draw mu_palm = mu while the read-off
     /// used 0.6.
     pub fn validate_chart(&mut self) -> Result<()> {

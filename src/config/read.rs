@@ -191,7 +191,7 @@ fn in_our_words(key: Option<&str>, message: &str) -> String {
         let mut known: Vec<String> = aliases.chain(words).collect();
         known.dedup();
         let nearest = crate::ask::nearest(&given, known.iter().map(String::as_str));
-        let mean = nearest.map_or(String::new(), |n| format!("; did you mean {n}?"));
+        let mean = nearest.map_or(".".to_string(), |n| format!("; did you mean {n}?"));
         return match known.is_empty() {
             true => format!("unknown key{mean}"),
             false => format!("unknown key{mean} The keys here: {}", known.join(", ")),
