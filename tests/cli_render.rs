@@ -120,7 +120,7 @@ fn bad_scene_file_names_file_line_and_key() {
     assert!(err.contains("none.toml"), "{err}");
     std::fs::write(
         charts.join("bad.toml"),
-        "title = \"t\"\nbase = \"none.toml\"\n[chart]\nkind = \"sweep\"\naxs = 1\n",
+        "title = \"t\"\nbase = \"none.toml\"\n[chart]\nkind = \"sweep\"\nx_axs = 1\n",
     )
     .unwrap();
     let out = jamchart(dir.path(), &["render", "--scenes-dir", "charts"]);
@@ -128,7 +128,7 @@ fn bad_scene_file_names_file_line_and_key() {
     let err = stderr(&out);
     // The chart's own mistake comes before the missing base, named with its line and path.
     assert!(
-        err.contains("bad.toml:5:7: chart.axs = 1: unknown key. The keys here: x_axis, "),
+        err.contains("bad.toml:5:9: chart.x_axs = 1: unknown key; did you mean x_axis?"),
         "{err}"
     );
 }

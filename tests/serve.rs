@@ -182,6 +182,13 @@ fn bad_requests_are_refused_by_key_and_reason_never_with_a_server_error() {
     assert_eq!(r.status, 405, "{}", r.text());
     let r = server.get("/etc/passwd");
     assert_eq!(r.status, 404, "{}", r.text());
+    // A page of another site renamed to 127.0.0.1 (DNS rebinding) reads nothing.
+    let mut s = TcpStream::connect(server.addr).unwrap();
+    s.write_all(
+        b"GET /api/v1/settings HTTP/1.1\r\nHost: evil.example:8750\r\nConnection: close\r\n\r\n",
+    )
+    .unwrap();
+    refused(&read_response(&mut s), 421, Some("host"), "loopback");
     // The title is text in the SVG, and the SVG runs no script when opened.
     let r = server.get("/api/v1/render/fig6.svg?title=%3Cscript%3Ealert(1)%3C%2Fscript%3E");
     assert_eq!(r.status, 200, "{}", r.text());
@@ -198,12 +205,16 @@ fn a_slow_client_holds_no_worker_and_is_let_go() {
     let server = Server::start();
     // Half a request line, then nothing.
     let mut slow = TcpStream::connect(server.addr).unwrap();
-    slow.write_all(b"POST /api/v1/solve HTTP/1.1\r\nHost: x\r\n")
+    let host = server.addr;
+    slow.write_all(format!("POST /api/v1/solve HTTP/1.1\r\nHost: {host}\r\n").as_bytes())
         .unwrap();
     // A body announced and never sent.
     let mut stalled = TcpStream::connect(server.addr).unwrap();
     stalled
-        .write_all(b"POST /api/v1/solve HTTP/1.1\r\nHost: x\r\nContent-Length: 100\r\n\r\n{")
+        .write_all(
+            format!("POST /api/v1/solve HTTP/1.1\r\nHost: {host}\r\nContent-Length: 100\r\n\r\n{{")
+                .as_bytes(),
+        )
         .unwrap();
     // Others are answered meanwhile.
     for _ in 0..20 {
@@ -264,7 +275,7 @@ fn ctrl_c_lets_the_answer_in_flight_finish_then_exits() {
         let mut s = TcpStream::connect(addr).unwrap();
         let body = r#"{"mu": "normal(0.3,0.01)", "model": "min-norm", "samples": 8000}"#;
         let head = format!(
-            "POST /api/v1/solve HTTP/1.1\r\nHost: x\r\nContent-Length: {}\r\n\
+            "POST /api/v1/solve HTTP/1.1\r\nHost: {addr}\r\nContent-Length: {}\r\n\
              Connection: close\r\n\r\n{body}",
             body.len()
         );

@@ -7,7 +7,6 @@ use contour::ContourBuilder;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
 use super::collide::PxBox;
@@ -15,7 +14,7 @@ use super::colorbar::{self, ColorBar};
 use super::labels;
 use super::legend::{self, LegendEntry, Swatch};
 use super::picture::Picture;
-use super::readoff;
+use super::readoff::{Axis, Grid, Panel, ReadOffData};
 use super::style::{self, LineKind};
 use super::typeset;
 use super::{axis_label, grid_polygons, param_symbol, param_unit, scene_subtitle};
@@ -81,30 +80,28 @@ impl Picture for ContourMap {
     }
 
     /// The plotting area, the axes and the cells' x_jam and, where computed, theta_jam.
-    fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<ReadOffData> {
         let s = &self.data.settings;
         let (xa, ya) = (&s.x_axis, &s.y_axis);
         let x = PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param));
         let y = PlotAxis::new(ya.min, ya.max, ya.scale, axis_label(ya.param));
         let c = &self.data.cells;
-        let column = |v: &[Option<f64>], i: usize| json!(v[i]);
-        let mut quantities: Vec<(&str, &dyn Fn(usize) -> serde_json::Value)> = Vec::new();
-        let (xj, tj) = (c.x_jam_mm.as_deref(), c.theta_jam_deg.as_deref());
-        let xj_at = |i| column(xj.unwrap_or_default(), i);
-        let tj_at = |i| column(tj.unwrap_or_default(), i);
-        if xj.is_some() {
-            quantities.push(("x_jam_mm", &xj_at));
+        let mut grid = Grid::over(&c.x, &c.y);
+        if let Some(xj) = &c.x_jam_mm {
+            grid = grid.numbers("x_jam_mm", |i| xj[i]);
         }
-        if tj.is_some() {
-            quantities.push(("theta_jam_deg", &tj_at));
+        if let Some(tj) = &c.theta_jam_deg {
+            grid = grid.numbers("theta_jam_deg", |i| tj[i]);
         }
-        Some(json!({
-            "kind": "grid",
-            "model": s.model,
-            "x": readoff::axis(xa.param.as_str(), &x),
-            "panels": [readoff::panel(frames.first()?, readoff::axis(ya.param.as_str(), &y), None)],
-            "grid": readoff::cells(&c.x, &c.y, &quantities),
-        }))
+        Some(ReadOffData::Grid {
+            model: s.model.as_str(),
+            x: Axis::of(xa.param.as_str(), &x),
+            panels: vec![Panel {
+                frame: *frames.first()?,
+                y: Axis::of(ya.param.as_str(), &y),
+            }],
+            grid,
+        })
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {

@@ -7,10 +7,11 @@ use plotters::prelude::*;
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
 use super::picture::Picture;
+use super::readoff::{Axis, PointsPanel, ReadOffData, Rows};
+use super::scene_subtitle_with;
 use super::style::{LineKind, Marker};
 use super::ticks::power_of_ten;
 use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
-use super::{readoff, scene_subtitle_with};
 use crate::csv_out::Dec;
 use crate::figures::convergence::{
     ConvergenceData, ConvergenceSettings, TraceAt, TraceRow, held_words,
@@ -132,13 +133,13 @@ impl Picture for Convergence {
         &self.data
     }
 
-    /// The gallery's read-off ([`readoff`], kind `points`): the iteration nearest the pointer
+    /// The gallery's read-off ([`ReadOffData::Points`]): the iteration nearest the pointer
     /// on either panel, with its row of the data file.
-    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<ReadOffData> {
         let [objective, residuals] = self.figure.panels.as_slice() else {
             return None;
         };
-        let [f0, f1] = frames else { return None };
+        let [f0, f1] = *frames else { return None };
         let trace = &self.data.rows;
         let at = |i: usize, p: &TraceRow, v: Dec| (p.iteration as f64, v.0, i);
         let objective_points: Vec<_> = (trace.iter().enumerate())
@@ -147,16 +148,21 @@ impl Picture for Convergence {
         let residual_points: Vec<_> = (trace.iter().enumerate())
             .flat_map(|(i, p)| [at(i, p, p.res_primal), at(i, p, p.res_dual)])
             .collect();
-        let x = readoff::axis("iteration", &objective.x);
-        Some(serde_json::json!({
-            "kind": "points",
-            "crosshair": true,
-            "panels": [
-                readoff::points_panel(f0, x.clone(), readoff::axis("objective_n2", &objective.y), &objective_points),
-                readoff::points_panel(f1, x, readoff::axis("residual", &residuals.y), &residual_points),
+        let x = Axis::of("iteration", &objective.x);
+        let panel = |f, y, points: &[_]| PointsPanel::new(f, x.clone(), y, points);
+        Some(ReadOffData::Points {
+            crosshair: true,
+            cell: None,
+            panels: vec![
+                panel(
+                    f0,
+                    Axis::of("objective_n2", &objective.y),
+                    &objective_points,
+                ),
+                panel(f1, Axis::of("residual", &residuals.y), &residual_points),
             ],
-            "rows": serde_json::to_value(trace).ok()?,
-        }))
+            rows: Rows::Trace(trace.clone()),
+        })
     }
 
     /// Draws the two panels.

@@ -15,9 +15,10 @@ use plotters::prelude::*;
 
 use super::axes::{PlotFrame, record_frames};
 use super::print::Ink;
+use super::readoff::{Axis, PointsPanel, ReadOffData, Rows};
 use super::style::{self, LineKind, Marker};
 use super::xy::{Curve, CurveStyle, Figure, Panel, decade_axis};
-use super::{output, readoff, scene_subtitle_with};
+use super::{output, scene_subtitle_with};
 use crate::error::{Error, Result};
 use crate::figures::error_time::{ErrorTimeData, ErrorTimeRow};
 use crate::models::ModelKind;
@@ -231,30 +232,30 @@ pub fn render(data: &ErrorTimeData) -> Result<Drawn> {
     Ok(Drawn {
         svg,
         png: png.map_err(err)?,
-        read_off: readoff::rounded(read_off(data, &fig, &frames)).to_string(),
+        read_off: read_off(data, &fig, &frames).to_json(),
     })
 }
 
-/// The gallery's read-off ([`readoff`], kind `points`): in each panel the drawn point nearest
+/// The gallery's read-off ([`ReadOffData::Points`]): in each panel the drawn point nearest
 /// the pointer, with its row of `accuracy.csv`. Without a frame per panel (nothing drawn) the
 /// panels are empty and the page reads nothing.
-pub fn read_off(data: &ErrorTimeData, fig: &Figure, frames: &[PlotFrame]) -> serde_json::Value {
+pub fn read_off(data: &ErrorTimeData, fig: &Figure, frames: &[PlotFrame]) -> ReadOffData {
     let params = ["x_rel_error", "integration_error_mm"];
-    let panels: Vec<_> = (fig.panels.iter().zip(frames).enumerate())
+    let panels = (fig.panels.iter().zip(frames).enumerate())
         .map(|(k, (p, f))| {
             let points: Vec<_> = (data.rows.iter().enumerate())
                 .filter_map(|(i, r)| drawn_y(k, r).map(|y| (r.median_time_s.0, y, i)))
                 .collect();
-            let x = readoff::axis("median_time_s", &p.x);
-            readoff::points_panel(f, x, readoff::axis(params[k], &p.y), &points)
+            let x = Axis::of("median_time_s", &p.x);
+            PointsPanel::new(*f, x, Axis::of(params[k], &p.y), &points)
         })
         .collect();
-    serde_json::json!({
-        "kind": "points",
-        "crosshair": true,
-        "panels": panels,
-        "rows": data.rows,
-    })
+    ReadOffData::Points {
+        crosshair: true,
+        cell: None,
+        panels,
+        rows: Rows::Accuracy(data.rows.clone()),
+    }
 }
 
 fn draw_on<DB: DrawingBackend>(
@@ -329,7 +330,8 @@ mod tests {
             right: 0.9,
             bottom: 0.4,
         };
-        let doc = read_off(&data, &fig, &[frame, frame]);
+        let doc: serde_json::Value =
+            serde_json::from_str(&read_off(&data, &fig, &[frame, frame]).to_json()).unwrap();
         let rows = doc["rows"].as_array().unwrap();
         assert_eq!(rows.len(), report.rows.len());
         for (k, panel) in fig.panels.iter().enumerate() {

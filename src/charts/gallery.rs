@@ -47,7 +47,8 @@ pub struct Entry<'a> {
     pub files: Vec<String>,
     /// The command that reproduces the chart, as a user would type it.
     pub command: String,
-    /// The read-off data ([`super::readoff`]) as compact JSON; None for kinds without one.
+    /// The read-off data as the page embeds it ([`super::readoff::ReadOffData::to_json`]); None
+    /// for a chart without one.
     pub read_off: Option<&'a str>,
 }
 

@@ -11,12 +11,11 @@ use contour::ContourBuilder;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use serde_json::json;
 
 use super::axes::{self, Chart, DrawResult, Margins, PlotAxis, PlotFrame};
 use super::legend::{self, LegendEntry, Swatch};
 use super::picture::Picture;
-use super::readoff;
+use super::readoff::{Axis, Disc, JamMapColumns, Named, Panel, ReadOffData};
 use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
 use super::{axis_label, grid_lines, grid_polygons, param_symbol, scene_subtitle};
 use crate::figures::At;
@@ -89,8 +88,8 @@ impl Picture for JamMap {
 
     /// The plotting area drawn in `frames`, the axes, and per column the boundary, its status
     /// and the palm's reach.
-    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
-        let frame = frames.first()?;
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<ReadOffData> {
+        let frame = *frames.first()?;
         let (x, y) = self.axes();
         let param = self.data.settings.x_axis.param;
         let b = &self.data.boundary;
@@ -101,24 +100,26 @@ impl Picture for JamMap {
                 .to_degrees()
         });
         let p = &self.data.params;
-        Some(json!({
-            "kind": "jam_map",
-            "model": self.data.settings.model,
-            "x": readoff::axis(param.as_str(), &x),
-            "panels": [readoff::panel(frame, readoff::axis(self.data.settings.y_axis.param.as_str(), &y), None)],
-            "columns": {
-                param.as_str(): readoff::column(b.iter().map(|a| a.at[0])),
-                "theta_jam_deg": readoff::column(b.iter().map(|a| a.point.theta_jam_deg)),
-                "x_jam_mm": readoff::column(b.iter().map(|a| a.point.x_jam_mm)),
-                "status": readoff::column(b.iter().map(|a| a.point.status)),
-                "reach_deg": readoff::column(reach_deg),
+        Some(ReadOffData::JamMap {
+            model: self.data.settings.model.as_str(),
+            x: Axis::of(param.as_str(), &x),
+            panels: vec![Panel {
+                frame,
+                y: Axis::of(self.data.settings.y_axis.param.as_str(), &y),
+            }],
+            columns: JamMapColumns {
+                at: Named(vec![(param.as_str(), b.iter().map(|a| a.at[0]).collect())]),
+                theta_jam_deg: b.iter().map(|a| a.point.theta_jam_deg).collect(),
+                x_jam_mm: b.iter().map(|a| a.point.x_jam_mm).collect(),
+                status: b.iter().map(|a| a.point.status).collect(),
+                reach_deg: reach_deg.collect(),
             },
-            "disc": {
-                "radius_mm": p.radius_mm,
-                "palm_offset_mm": p.palm_offset_mm,
-                "palm_length_mm": p.palm_length_mm,
+            disc: Disc {
+                radius_mm: p.radius_mm,
+                palm_offset_mm: p.palm_offset_mm,
+                palm_length_mm: p.palm_length_mm,
             },
-        }))
+        })
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {

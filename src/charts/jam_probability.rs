@@ -5,11 +5,10 @@
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use serde_json::json;
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
 use super::picture::Picture;
-use super::readoff;
+use super::readoff::{Axis, Fixed, Named, PanelSeries, ParamKey, ReadOffData, Sweep, SweepPanel};
 use super::style::{self, LineKind};
 use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, Tag};
 use crate::figures::jam_probability::{JamProbabilityData, JamProbabilitySettings};
@@ -40,31 +39,39 @@ impl Picture for JamProbability {
 
     /// What the gallery's read-off needs (kind `panels`): P and its 95 % interval at every
     /// drawn x, the distribution as a fixed input.
-    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<ReadOffData> {
         let fig = self.figure();
-        let (p, frame) = (fig.panels.first()?, frames.first()?);
-        let x = readoff::axis("x_mm", &p.x);
-        let y = readoff::axis("probability", &p.y);
-        let panel = readoff::sweep_panel(frame, x, y, "probability", 0);
+        let (p, frame) = (fig.panels.first()?, *frames.first()?);
+        let panel = SweepPanel {
+            frame,
+            y: Axis::of("probability", &p.y),
+            quantity: "probability",
+            x: Axis::of("x_mm", &p.x),
+            sweep: 0,
+        };
         let c = &self.data.curve;
-        let col = |f: fn(&Before) -> f64| readoff::column(c.iter().map(|b| Some(f(b))));
-        let series = json!({
-            "label": "P(jam before x)",
-            "probability": col(|b| b.probability.value),
-            "probability_lo": col(|b| b.probability.lo),
-            "probability_hi": col(|b| b.probability.hi),
-        });
-        Some(json!({
-            "kind": "panels",
-            "model": "statics",
-            "panels": [panel],
-            "sweeps": [{
-                "param": "x_mm",
-                "at": c.iter().map(|b| b.x_mm).collect::<Vec<_>>(),
-                "fixed": { "distribution": self.data.distribution.describe() },
-                "series": [series],
+        let col = |f: fn(&Before) -> f64| c.iter().map(|b| Some(f(b))).collect();
+        let series = PanelSeries {
+            label: "P(jam before x)".into(),
+            mu: None,
+            columns: Named(vec![
+                ("probability", col(|b| b.probability.value)),
+                ("probability_lo", col(|b| b.probability.lo)),
+                ("probability_hi", col(|b| b.probability.hi)),
+            ]),
+        };
+        let distribution = Fixed::Text(self.data.distribution.describe());
+        Some(ReadOffData::Panels {
+            model: "statics",
+            panels: vec![panel],
+            sweeps: vec![Sweep {
+                param: "x_mm",
+                at: c.iter().map(|b| b.x_mm).collect(),
+                fixed: Named(vec![("distribution", distribution)]),
+                series: vec![series],
+                param_key: ParamKey::First,
             }],
-        }))
+        })
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {

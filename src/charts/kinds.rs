@@ -16,6 +16,7 @@ use serde::Serialize;
 use super::DataFile;
 use super::axes::{DrawResult, PlotFrame};
 use super::picture::Picture;
+use super::readoff::ReadOffData;
 use super::{
     contour_map, convergence, jam_map, jam_probability, stability, sweep, time_series, universal,
     vlocator_capacity, vlocator_optimum, vlocator_robust, work_precision,
@@ -173,10 +174,10 @@ macro_rules! chart_kinds {
                 }
             }
 
-            /// The gallery's read-off data (see [`super::readoff`]), given the plotting areas
+            /// The gallery's read-off data, given the plotting areas
             /// the drawing built ([`super::axes::record_frames`]); every kind has one (None only
             /// where the frames do not match the drawing).
-            pub fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+            pub fn read_off(&self, frames: &[PlotFrame]) -> Option<ReadOffData> {
                 match self {
                     $(Chart::$variant(c) => c.read_off(frames),)+
                 }

@@ -157,8 +157,9 @@ pub struct Rendered {
     /// A map's cells as long-format CSV (one row per cell), beside its JSON: written to its
     /// file as it is made ([`CellsCsv::write`]), never held whole in memory.
     pub cells: Option<CellsCsv>,
-    /// What the gallery's read-off needs, as compact JSON (see `charts/readoff.rs`); None for kinds
-    /// without a read-off.
+    /// What the gallery's read-off needs as the page embeds it: `readoff::ReadOffData`'s
+    /// compact JSON, numbers at 7 significant digits; None where the frames do not match the
+    /// drawing.
     pub read_off: Option<String>,
     /// The computed figure the pictures and files were made from.
     pub computed: Computed,
@@ -333,7 +334,7 @@ pub(crate) fn render_with(scene: &Scene, formats: Formats, made: &Made) -> Resul
     let frames = png.as_ref().or(svg.as_ref()).map(|(_, f)| f.as_slice());
     let read_off = chart
         .read_off(frames.unwrap_or_default())
-        .map(|v| readoff::rounded(v).to_string());
+        .map(|r| r.to_json());
     for m in [data_made, cells_made, svg_made, png_made] {
         m?;
     }
@@ -355,6 +356,8 @@ mod layout_tests;
 mod map_colour_tests;
 #[cfg(test)]
 mod override_tests;
+#[cfg(test)]
+mod readoff_tests;
 #[cfg(test)]
 mod series_tests;
 #[cfg(test)]

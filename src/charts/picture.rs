@@ -5,6 +5,7 @@ use plotters::prelude::*;
 
 use super::DataFile;
 use super::axes::{DrawResult, PlotFrame};
+use super::readoff::ReadOffData;
 use crate::figures::Figure;
 
 /// A chart kind's picture: its figure's data ([`crate::figures`]) ready to draw, on any
@@ -22,9 +23,9 @@ pub(crate) trait Picture: Sized {
     /// Draws on a white root.
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB>;
 
-    /// What the gallery's read-off needs (see [`super::readoff`]), given the plotting areas the
+    /// What the gallery's read-off needs ([`ReadOffData`]), given the plotting areas the
     /// drawing built; None where the frames do not match the drawing.
-    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value>;
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<ReadOffData>;
 
     /// The data file of scene `scene` titled `title`: the data's serde form (JSON) or rows
     /// (CSV).

@@ -9,7 +9,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axes::{self, DrawResult, PlotAxis, PlotFrame, draw_header};
 use super::picture::Picture;
-use super::{readoff, style};
+use super::readoff::{Axis, PointsPanel, ReadOffData, Rows};
+use super::style;
 use crate::figures::stability::{StabilityData, StabilitySettings};
 use crate::grid::AxisScale;
 use crate::scene::JamStatus;
@@ -49,25 +50,29 @@ impl Picture for Stability {
         &self.data
     }
 
-    /// The gallery's read-off ([`readoff`], kind `points`, no crosshair): the cell under the
+    /// The gallery's read-off ([`ReadOffData::Points`], no crosshair): the cell under the
     /// pointer, with its row of the data file (case, method, status, x_jam, the reference, the
     /// error and its allowance, the class). The cells are points at (method index, -case
     /// index) over the matrix's frame, so the nearest point is the cell under the pointer.
-    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
-        let [frame] = frames else { return None };
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<ReadOffData> {
+        let [frame] = *frames else { return None };
         let (n_m, n_c) = (self.data.methods.len(), self.data.cases.len());
         let x = PlotAxis::new(-0.5, n_m as f64 - 0.5, AxisScale::Linear, "method");
         let y = PlotAxis::new(0.5 - n_c as f64, 0.5, AxisScale::Linear, "case");
         let cells: Vec<_> = (0..self.data.rows.len().min(n_m * n_c))
             .map(|k| ((k % n_m) as f64, -((k / n_m) as f64), k))
             .collect();
-        Some(serde_json::json!({
-            "kind": "points",
-            "crosshair": false,
-            "cell": [1.0, 1.0],
-            "panels": [readoff::points_panel(frame, readoff::axis("", &x), readoff::axis("", &y), &cells)],
-            "rows": serde_json::to_value(&self.data.rows).ok()?,
-        }))
+        Some(ReadOffData::Points {
+            crosshair: false,
+            cell: Some([1.0, 1.0]),
+            panels: vec![PointsPanel::new(
+                frame,
+                Axis::of("", &x),
+                Axis::of("", &y),
+                &cells,
+            )],
+            rows: Rows::Stability(self.data.rows.clone()),
+        })
     }
 
     /// Draws the matrix.

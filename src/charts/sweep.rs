@@ -12,7 +12,7 @@ use super::collide::{self, PxBox};
 use super::labels::scene_subtitle_given;
 use super::legend::{self, LegendEntry, LegendGroup, Swatch};
 use super::picture::Picture;
-use super::readoff;
+use super::readoff::{Axis, QuantityPanel, ReadOffData, SweepSeries};
 use super::style::{self, LineKind, Marker};
 use super::sweep_band;
 use super::{axis_label, param_symbol, param_unit};
@@ -84,7 +84,7 @@ impl Picture for Sweep {
 
     /// One plotting area of `frames` per panel with its quantity, the x axis, and every
     /// series' points.
-    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<ReadOffData> {
         if frames.len() != self.data.settings.panels.len() {
             return None;
         }
@@ -96,32 +96,27 @@ impl Picture for Sweep {
             .panels
             .iter()
             .zip(frames)
-            .map(|(panel, frame)| {
-                let y = readoff::axis(panel.key(), &self.panel_axis(*panel));
-                readoff::panel(frame, y, Some(panel.key()))
+            .map(|(panel, frame)| QuantityPanel {
+                frame: *frame,
+                y: Axis::of(panel.key(), &self.panel_axis(*panel)),
+                quantity: panel.key(),
             })
             .collect();
-        let series: Vec<_> = self
-            .data
-            .series
-            .iter()
-            .map(|s| {
-                serde_json::json!({
-                    "label": s.label,
-                    "layer": s.curve.name(),
-                    "line": s.curve.is_line(),
-                    "at": readoff::column(s.points.iter().map(|p| p.at)),
-                    "x_jam_mm": readoff::column(s.points.iter().map(|p| p.x_jam_mm)),
-                    "theta_jam_deg": readoff::column(s.points.iter().map(|p| p.theta_jam_deg)),
-                })
+        let series = (self.data.series.iter())
+            .map(|s| SweepSeries {
+                label: s.label.clone(),
+                layer: s.curve.name(),
+                line: s.curve.is_line(),
+                at: s.points.iter().map(|p| p.at).collect(),
+                x_jam_mm: s.points.iter().map(|p| p.x_jam_mm).collect(),
+                theta_jam_deg: s.points.iter().map(|p| p.theta_jam_deg).collect(),
             })
             .collect();
-        Some(serde_json::json!({
-            "kind": "sweep",
-            "x": readoff::axis(a.param.as_str(), &x),
-            "panels": panels,
-            "series": series,
-        }))
+        Some(ReadOffData::Sweep {
+            x: Axis::of(a.param.as_str(), &x),
+            panels,
+            series,
+        })
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {

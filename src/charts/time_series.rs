@@ -7,9 +7,10 @@ use plotters::prelude::*;
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
 use super::picture::Picture;
+use super::readoff::{Axis, Fixed, Named, PanelSeries, ParamKey, ReadOffData, Sweep, SweepPanel};
+use super::scene_subtitle_with;
 use super::style::LineKind;
 use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, padded_axis};
-use super::{readoff, scene_subtitle_with};
 use crate::figures::time_series::{Sample, TimeSeriesData, TimeSeriesSettings};
 use crate::grid::AxisScale;
 
@@ -147,49 +148,65 @@ impl Picture for TimeSeries {
         &self.data
     }
 
-    /// The gallery's read-off ([`readoff`], kind `panels`): at the pointer's time, the
+    /// The gallery's read-off ([`ReadOffData::Panels`]): at the pointer's time, the
     /// simulated disc's speed, position and palm angle and the rigid disc's speed and
     /// position (straight between samples, as drawn), beside the jam (status, t_jam, x_jam,
     /// theta_jam); names as in the data file.
-    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<ReadOffData> {
         let [speed, position] = self.figure.panels.as_slice() else {
             return None;
         };
-        let [f0, f1] = frames else { return None };
-        let col = |f: fn(&Sample) -> f64| readoff::column(self.data.samples.iter().map(f));
-        let x = readoff::axis("t_s", &speed.x);
+        let [f0, f1] = *frames else { return None };
+        let col = |f: fn(&Sample) -> f64| self.data.samples.iter().map(f);
+        let column = |f: fn(&Sample) -> f64| col(f).map(Some).collect();
+        let panel = |frame, y: &PlotAxis, quantity| SweepPanel {
+            frame,
+            y: Axis::of(quantity, y),
+            quantity,
+            x: Axis::of("t_s", &speed.x),
+            sweep: 0,
+        };
         let (t_jam, x_jam) = self.data.jam.unzip();
-        Some(serde_json::json!({
-            "kind": "panels",
-            "model": "simulation",
-            "panels": [
-                readoff::sweep_panel(f0, x.clone(), readoff::axis("x_dot_mm_s", &speed.y), "x_dot_mm_s", 0),
-                readoff::sweep_panel(f1, x, readoff::axis("x_mm", &position.y), "x_mm", 0),
+        let series = |label: &str, columns| PanelSeries {
+            label: label.into(),
+            mu: None,
+            columns: Named(columns),
+        };
+        Some(ReadOffData::Panels {
+            model: "simulation",
+            panels: vec![
+                panel(f0, &speed.y, "x_dot_mm_s"),
+                panel(f1, &position.y, "x_mm"),
             ],
-            "sweeps": [{
-                "param": "t_s",
-                "at": col(|s| s.t_s.0),
-                "fixed": {
-                    "status": self.data.status,
-                    "t_jam_s": t_jam,
-                    "x_jam_mm": x_jam,
-                    "theta_jam_deg": self.data.theta_jam_deg,
-                },
-                "series": [
-                    {
-                        "label": "simulated disc",
-                        "x_dot_mm_s": col(|s| s.x_dot_mm_s.0),
-                        "x_mm": col(|s| s.x_mm.0),
-                        "theta_deg": col(|s| s.theta_deg.0),
-                    },
-                    {
-                        "label": "rigid disc",
-                        "geometric_speed_mm_s": col(|s| s.geometric_speed_mm_s.0),
-                        "touching_x_mm": col(|s| s.touching_x_mm.0),
-                    },
+            sweeps: vec![Sweep {
+                param: "t_s",
+                at: col(|s| s.t_s.0).collect(),
+                fixed: Named(vec![
+                    ("status", Fixed::Status(self.data.status)),
+                    ("t_jam_s", Fixed::Number(t_jam)),
+                    ("x_jam_mm", Fixed::Number(x_jam)),
+                    ("theta_jam_deg", Fixed::Number(self.data.theta_jam_deg)),
+                ]),
+                series: vec![
+                    series(
+                        "simulated disc",
+                        vec![
+                            ("x_dot_mm_s", column(|s| s.x_dot_mm_s.0)),
+                            ("x_mm", column(|s| s.x_mm.0)),
+                            ("theta_deg", column(|s| s.theta_deg.0)),
+                        ],
+                    ),
+                    series(
+                        "rigid disc",
+                        vec![
+                            ("geometric_speed_mm_s", column(|s| s.geometric_speed_mm_s.0)),
+                            ("touching_x_mm", column(|s| s.touching_x_mm.0)),
+                        ],
+                    ),
                 ],
+                param_key: ParamKey::First,
             }],
-        }))
+        })
     }
 
     /// Draws the two panels.

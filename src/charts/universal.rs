@@ -18,7 +18,7 @@ use super::contour_map::{at_height, level_text};
 use super::legend::{self, LegendEntry, Swatch};
 use super::picture::Picture;
 use super::point_read_off;
-use super::readoff;
+use super::readoff::{Axis, Grid, Panel, ReadOffData};
 use super::style::{self, GRID_MAJOR, INK, LineKind};
 use super::typeset;
 use super::{axis_label, grid_polygons, param_symbol};
@@ -78,30 +78,25 @@ impl Picture for Universal {
     }
 
     /// The plotting area, the axes and the cells' theta_jam, x_jam / r and status.
-    fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<ReadOffData> {
         let (xa, ya) = (&self.data.settings.x_axis, &self.data.settings.y_axis);
         let x = PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param));
         let y = PlotAxis::new(ya.min, ya.max, ya.scale, axis_label(ya.param));
         let c = &self.data.cells;
-        let cells = readoff::cells(
-            &c.x,
-            &c.push_ratio,
-            &[
-                ("theta_jam_deg", &|i| serde_json::json!(c.theta_jam_deg[i])),
-                ("x_over_r", &|i| serde_json::json!(c.x_over_r[i])),
-                ("x_jam_mm", &|i| serde_json::json!(c.x_jam_mm[i])),
-                ("status", &|i| {
-                    serde_json::json!(JamStatus::NAMES[usize::from(c.status[i])])
-                }),
-            ],
-        );
-        Some(serde_json::json!({
-            "kind": "grid",
-            "model": ModelKind::Statics,
-            "x": readoff::axis(xa.param.as_str(), &x),
-            "panels": [readoff::panel(frames.first()?, readoff::axis(ya.param.as_str(), &y), None)],
-            "grid": cells,
-        }))
+        let grid = Grid::over(&c.x, &c.push_ratio)
+            .numbers("theta_jam_deg", |i| c.theta_jam_deg[i])
+            .numbers("x_over_r", |i| c.x_over_r[i])
+            .numbers("x_jam_mm", |i| c.x_jam_mm[i])
+            .statuses("status", |i| JamStatus::NAMES[usize::from(c.status[i])]);
+        Some(ReadOffData::Grid {
+            model: ModelKind::Statics.as_str(),
+            x: Axis::of(xa.param.as_str(), &x),
+            panels: vec![Panel {
+                frame: *frames.first()?,
+                y: Axis::of(ya.param.as_str(), &y),
+            }],
+            grid,
+        })
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {

@@ -7,14 +7,14 @@ use contour::ContourBuilder;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use serde_json::json;
 
 use super::axes::{self, DrawResult, PlotAxis};
 use super::colorbar::{self, ColorBar};
 use super::legend::{self, LegendEntry, Swatch};
 use super::picture::Picture;
+use super::readoff::{Axis, Grid, Panel, ReadOffData};
 use super::style::{self, INK, LineKind, PAPER};
-use super::{grid_lines, grid_polygons, readoff};
+use super::{grid_lines, grid_polygons};
 use crate::figures::contours::lines_at;
 use crate::figures::vlocator_capacity::{
     STANDARD_V_DEG, UNBOUNDED_OVER_W, VlocatorCapacityData, VlocatorCapacitySettings,
@@ -88,32 +88,29 @@ impl Picture for VlocatorCapacity {
         &self.data
     }
 
-    /// What the gallery's read-off needs (see [`super::readoff`]): the plotting area, the axes
+    /// What the gallery's read-off needs ([`ReadOffData::Grid`]): the plotting area, the axes
     /// and per cell P_max / W, P_max in N (null where every load is held) and whether the
     /// capacity is unbounded, as `jamchart vlocator` names them (model `vlocator`: the exact
     /// path of [`crate::locator::capacity`]).
-    fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[axes::PlotFrame]) -> Option<ReadOffData> {
         let (x, y) = self.plot_axes();
         let (xa, ya) = (&self.data.settings.x_axis, &self.data.settings.y_axis);
         let w = self.data.weight_n;
         let c = &self.data.cells;
         let over_w = &c.p_max_over_w;
-        let cells = readoff::cells(
-            &c.included_angle_deg,
-            &c.load_angle_deg,
-            &[
-                ("p_max_over_w", &|i| json!(over_w[i])),
-                ("p_max_n", &|i| json!(over_w[i].map(|v| v * w))),
-                ("unbounded", &|i| json!(over_w[i].is_none())),
-            ],
-        );
-        Some(json!({
-            "kind": "grid",
-            "model": "vlocator",
-            "x": readoff::axis(xa.param.as_str(), &x),
-            "panels": [readoff::panel(frames.first()?, readoff::axis(ya.param.as_str(), &y), None)],
-            "grid": cells,
-        }))
+        let grid = Grid::over(&c.included_angle_deg, &c.load_angle_deg)
+            .numbers("p_max_over_w", |i| over_w[i])
+            .numbers("p_max_n", |i| over_w[i].map(|v| v * w))
+            .flags("unbounded", |i| over_w[i].is_none());
+        Some(ReadOffData::Grid {
+            model: "vlocator",
+            x: Axis::of(xa.param.as_str(), &x),
+            panels: vec![Panel {
+                frame: *frames.first()?,
+                y: Axis::of(ya.param.as_str(), &y),
+            }],
+            grid,
+        })
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {

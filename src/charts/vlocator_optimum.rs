@@ -5,11 +5,10 @@
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use serde_json::json;
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
 use super::picture::Picture;
-use super::readoff;
+use super::readoff::{Axis, Fixed, Named, PanelSeries, ParamKey, ReadOffData, Sweep, SweepPanel};
 use super::style::{LineKind, Marker};
 use super::vlocator_capacity::locator_subtitle;
 use super::xy::{Curve, CurveStyle, Figure, Panel, Tag, decade_axis};
@@ -50,62 +49,65 @@ impl Picture for VlocatorOptimum {
         &self.data
     }
 
-    /// What the gallery's read-off needs (see [`super::readoff`], kind `panels`): the four
+    /// What the gallery's read-off needs ([`ReadOffData::Panels`]): the four
     /// frames, each with its x axis (direction above, P / W below), and per friction gamma*
     /// and rho* at every sample as `jamchart vlocator` names them (`null` where the optimum
     /// lies at the search bound, a gap in the chart).
-    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<ReadOffData> {
         let fig = self.figure();
         if frames.len() != fig.panels.len() {
             return None;
         }
         let (gamma, rho) = ("included_angle_deg", "safety_factor");
         let params = [LocatorParam::LoadAngleDeg, LocatorParam::LoadOverW];
-        let panels: Vec<_> = fig
-            .panels
-            .iter()
-            .zip(frames)
-            .zip([gamma, rho, gamma, rho])
+        let panels = (fig.panels.iter().zip(frames).zip([gamma, rho, gamma, rho]))
             .enumerate()
-            .map(|(i, ((p, frame), q))| {
-                let x = readoff::axis(params[i / 2].as_str(), &p.x);
-                readoff::sweep_panel(frame, x, readoff::axis(q, &p.y), q, i / 2)
+            .map(|(i, ((p, frame), q))| SweepPanel {
+                frame: *frame,
+                y: Axis::of(q, &p.y),
+                quantity: q,
+                x: Axis::of(params[i / 2].as_str(), &p.x),
+                sweep: i / 2,
             })
             .collect();
-        let sweep = |at: &[f64], pick: fn(&MuCurves) -> &Vec<Optimum>| {
-            let series: Vec<_> = self
-                .data
-                .curves
-                .iter()
+        let s = &self.data.settings;
+        let sweep = |i: usize, at: &[f64], fixed, pick: fn(&MuCurves) -> &Vec<Optimum>| {
+            let series = (self.data.curves.iter())
                 .map(|c| {
                     let drawn = |v: fn(&Optimum) -> f64| {
-                        readoff::column(pick(c).iter().map(|o| (!o.at_bound).then(|| v(o))))
+                        (pick(c).iter().map(|o| (!o.at_bound).then(|| v(o)))).collect()
                     };
-                    json!({
-                        "label": format!("μ = {}", c.mu),
-                        "mu": c.mu,
-                        gamma: drawn(|o| o.included_angle_deg),
-                        rho: drawn(|o| o.safety_factor),
-                    })
+                    PanelSeries {
+                        label: format!("μ = {}", c.mu),
+                        mu: Some(c.mu),
+                        columns: Named(vec![
+                            (gamma, drawn(|o| o.included_angle_deg)),
+                            (rho, drawn(|o| o.safety_factor)),
+                        ]),
+                    }
                 })
                 .collect();
-            json!({ "at": at, "series": series })
+            Sweep {
+                param: params[i].as_str(),
+                at: at.to_vec(),
+                fixed: Named(vec![fixed]),
+                series,
+                param_key: ParamKey::Last,
+            }
         };
-        let mut sweeps = [
-            sweep(&self.data.load_angle_deg, |c| &c.by_direction),
-            sweep(&self.data.load_over_w, |c| &c.by_load),
-        ];
-        sweeps[0]["fixed"] = json!({ "load_over_w": self.data.settings.p_over_w });
-        sweeps[1]["fixed"] = json!({ "load_angle_deg": self.data.settings.locator.load_angle_deg });
-        for (s, p) in sweeps.iter_mut().zip(params) {
-            s["param"] = p.as_str().into();
-        }
-        Some(json!({
-            "kind": "panels",
-            "model": "vlocator",
-            "panels": panels,
-            "sweeps": sweeps,
-        }))
+        let by_load = ("load_over_w", Fixed::Number(Some(s.p_over_w)));
+        let by_direction = (
+            "load_angle_deg",
+            Fixed::Number(Some(s.locator.load_angle_deg)),
+        );
+        Some(ReadOffData::Panels {
+            model: "vlocator",
+            panels,
+            sweeps: vec![
+                sweep(0, &self.data.load_angle_deg, by_load, |c| &c.by_direction),
+                sweep(1, &self.data.load_over_w, by_direction, |c| &c.by_load),
+            ],
+        })
     }
 
     /// Draws the four panels.

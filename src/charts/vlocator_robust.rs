@@ -5,11 +5,10 @@
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use serde_json::json;
 
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
 use super::picture::Picture;
-use super::readoff;
+use super::readoff::{Axis, Fixed, Named, PanelSeries, ParamKey, ReadOffData, Sweep, SweepPanel};
 use super::style::{self, LineKind};
 use super::vlocator_capacity::{level_text, locator_subtitle};
 use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, Tag};
@@ -42,51 +41,65 @@ impl Picture for VlocatorRobust {
         &self.data
     }
 
-    /// What the gallery's read-off needs (see [`super::readoff`], kind `panels`): the frame,
+    /// What the gallery's read-off needs ([`ReadOffData::Panels`]): the frame,
     /// and per width the friction range and the design as the CSV names them (the first
     /// window; `null` where no V works), the box's loads as fixed inputs.
-    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<ReadOffData> {
         let fig = self.figure();
-        let (p, frame) = (fig.panels.first()?, frames.first()?);
-        // The pointer's y is read against the most robust angle (the crosshair lands on it).
-        let y = readoff::axis("included_angle_deg", &p.y);
-        let x = readoff::axis("mu_width", &p.x);
-        let panel = readoff::sweep_panel(frame, x, y, "robust_deg", 0);
+        let (p, frame) = (fig.panels.first()?, *frames.first()?);
+        let panel = SweepPanel {
+            frame,
+            // The pointer's y is read against the most robust angle (the crosshair lands on it).
+            y: Axis::of("included_angle_deg", &p.y),
+            quantity: "robust_deg",
+            x: Axis::of("mu_width", &p.x),
+            sweep: 0,
+        };
         let d = &self.data.designs;
-        let col = |v: &dyn Fn(&RobustDesign) -> Option<f64>| readoff::column(d.iter().map(v));
+        let col = |v: &dyn Fn(&RobustDesign) -> Option<f64>| d.iter().map(v).collect();
         let boxes: Vec<RobustBox> = self
             .data
             .widths
             .iter()
             .map(|&w| self.data.settings.box_of(w))
             .collect();
-        let series = json!({
-            "label": "robust design",
-            "mu_lo": readoff::column(boxes.iter().map(|b| b.mu_left.0)),
-            "mu_hi": readoff::column(boxes.iter().map(|b| b.mu_left.1)),
-            "lock_bound_deg": col(&|d| Some(d.lock_bound_deg)),
-            "window_lo_deg": col(&|d| d.windows.first().map(|w| w.0)),
-            "window_hi_deg": col(&|d| d.windows.first().map(|w| w.1)),
-            "robust_deg": col(&|d| d.robust.map(|r| r.included_angle_deg)),
-            "safety_factor": col(&|d| d.robust.map(|r| r.safety_factor).filter(|r| r.is_finite())),
-        });
+        let mu = |side: fn(&RobustBox) -> f64| boxes.iter().map(|b| Some(side(b))).collect();
+        let series = PanelSeries {
+            label: "robust design".into(),
+            mu: None,
+            columns: Named(vec![
+                ("mu_lo", mu(|b| b.mu_left.0)),
+                ("mu_hi", mu(|b| b.mu_left.1)),
+                ("lock_bound_deg", col(&|d| Some(d.lock_bound_deg))),
+                ("window_lo_deg", col(&|d| d.windows.first().map(|w| w.0))),
+                ("window_hi_deg", col(&|d| d.windows.first().map(|w| w.1))),
+                (
+                    "robust_deg",
+                    col(&|d| d.robust.map(|r| r.included_angle_deg)),
+                ),
+                (
+                    "safety_factor",
+                    col(&|d| d.robust.map(|r| r.safety_factor).filter(|r| r.is_finite())),
+                ),
+            ]),
+        };
         let s = &self.data.settings;
         let (load, angle) = (s.load_n, s.load_angle_deg);
-        Some(json!({
-            "kind": "panels",
-            "model": "vlocator",
-            "panels": [panel],
-            "sweeps": [{
-                "param": "mu_width",
-                "at": self.data.widths,
-                "fixed": {
-                    "mu_center": s.center(),
-                    "load_n": [load.lo, load.hi],
-                    "load_angle_deg": [angle.lo, angle.hi],
-                },
-                "series": [series],
+        Some(ReadOffData::Panels {
+            model: "vlocator",
+            panels: vec![panel],
+            sweeps: vec![Sweep {
+                param: "mu_width",
+                at: self.data.widths.clone(),
+                fixed: Named(vec![
+                    ("mu_center", Fixed::Number(Some(s.center()))),
+                    ("load_n", Fixed::Range([load.lo, load.hi])),
+                    ("load_angle_deg", Fixed::Range([angle.lo, angle.hi])),
+                ]),
+                series: vec![series],
+                param_key: ParamKey::First,
             }],
-        }))
+        })
     }
 
     /// Draws the panel.

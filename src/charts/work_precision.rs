@@ -9,9 +9,10 @@ use plotters::prelude::*;
 use super::axes::{DrawResult, PlotFrame};
 use super::convergence::sci;
 use super::picture::Picture;
+use super::readoff::{Axis, PointsPanel, ReadOffData, Rows};
+use super::scene_subtitle_with;
 use super::style::{LineKind, Marker};
 use super::xy::{Curve, CurveStyle, Figure, Panel, Tag, decade_axis};
-use super::{readoff, scene_subtitle_with};
 use crate::dynamics::Method;
 use crate::figures::work_precision::{
     Cost, PrecisionRow, Study, WorkPrecisionData, WorkPrecisionSettings,
@@ -186,10 +187,10 @@ impl Picture for WorkPrecision {
         &self.data
     }
 
-    /// The gallery's read-off ([`readoff`], kind `points`): the run nearest the pointer, an
+    /// The gallery's read-off ([`ReadOffData::Points`]): the run nearest the pointer, an
     /// integrator's (cost, error) or the min-norm program's (tolerance, error), with its row of
     /// the data file. Runs that are not drawn (no error) are not read.
-    fn read_off(&self, frames: &[PlotFrame]) -> Option<serde_json::Value> {
+    fn read_off(&self, frames: &[PlotFrame]) -> Option<ReadOffData> {
         let panels = &self.figure.panels;
         if frames.len() != panels.len() || panels.is_empty() {
             return None;
@@ -206,17 +207,17 @@ impl Picture for WorkPrecision {
             (cost.key(), "rel_error", runs),
             ("tol", "error_deg", tolerances),
         ];
-        let json_panels: Vec<_> = (panels.iter().zip(frames).zip(keys))
+        let read_off_panels = (panels.iter().zip(frames).zip(keys))
             .map(|((p, f), (x, y, points))| {
-                readoff::points_panel(f, readoff::axis(x, &p.x), readoff::axis(y, &p.y), &points)
+                PointsPanel::new(*f, Axis::of(x, &p.x), Axis::of(y, &p.y), &points)
             })
             .collect();
-        Some(serde_json::json!({
-            "kind": "points",
-            "crosshair": true,
-            "panels": json_panels,
-            "rows": serde_json::to_value(&self.data.rows).ok()?,
-        }))
+        Some(ReadOffData::Points {
+            crosshair: true,
+            cell: None,
+            panels: read_off_panels,
+            rows: Rows::Precision(self.data.rows.clone()),
+        })
     }
 
     /// Draws the panels.

@@ -193,7 +193,7 @@ fn in_our_words(key: Option<&str>, message: &str) -> String {
         let nearest = crate::ask::nearest(&given, known.iter().map(String::as_str));
         let mean = nearest.map_or(".".to_string(), |n| format!("; did you mean {n}?"));
         return match known.is_empty() {
-            true => format!("unknown key{mean}"),
+            true => format!("unknown key{}", mean.trim_end_matches('.')),
             false => format!("unknown key{mean} The keys here: {}", known.join(", ")),
         };
     }
@@ -204,7 +204,7 @@ fn in_our_words(key: Option<&str>, message: &str) -> String {
         }
         let given = words.remove(0);
         let nearest = crate::ask::nearest(&given, words.iter().map(String::as_str));
-        let mean = nearest.map_or(String::new(), |n| format!("; did you mean {n}?"));
+        let mean = nearest.map_or(".".to_string(), |n| format!("; did you mean {n}?"));
         return format!("{given} is not one of {}{mean}", words.join(", "));
     }
     if let Some(rest) = message.strip_prefix("missing field ") {

@@ -223,6 +223,9 @@ fn value<'py>(
     }
 }
 
+/// Most dimensions of an input array: what the numpy crate reads.
+const MAX_NDIM: usize = 32;
+
 /// `v` as a float64 numpy array, aligned; refused unless its elements are real numbers (a bool,
 /// complex or date array is not a list of numbers, whatever numpy makes of it).
 fn real_array<'py>(
@@ -242,6 +245,13 @@ fn real_array<'py>(
         let dtype = raw.getattr("dtype")?.str()?.to_string();
         return Err(PyValueError::new_err(format!(
             "{key} takes a number or an array of numbers, not an array of {dtype}"
+        )));
+    }
+    // rust-numpy reads at most 32 dimensions (numpy 2 makes up to 64) and panics beyond.
+    let ndim: usize = raw.getattr("ndim")?.extract()?;
+    if ndim > MAX_NDIM {
+        return Err(PyValueError::new_err(format!(
+            "{key}: an array of {ndim} dimensions; give at most {MAX_NDIM}"
         )));
     }
     let a = numpy.call_method1("asarray", (raw, numpy.getattr("float64")?))?;

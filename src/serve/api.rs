@@ -50,7 +50,38 @@ pub(super) fn router(shared: Arc<Shared>) -> Router {
         .route("/api/v1/scenes", get(scenes))
         .fallback(not_found)
         .method_not_allowed_fallback(wrong_method)
+        .layer(axum::middleware::from_fn_with_state(
+            shared.clone(),
+            own_host,
+        ))
         .with_state(shared)
+}
+
+/// Refuses a request addressed to another host than the server's (see [`super::Shared`]).
+async fn own_host(
+    State(shared): State<Arc<Shared>>,
+    request: Request,
+    next: axum::middleware::Next,
+) -> Response {
+    let Some(hosts) = &shared.hosts else {
+        return next.run(request).await;
+    };
+    let host = request
+        .headers()
+        .get(header::HOST)
+        .and_then(|h| h.to_str().ok())
+        .unwrap_or_default();
+    match hosts.iter().any(|h| h.eq_ignore_ascii_case(host)) {
+        true => next.run(request).await,
+        false => http_refusal(
+            StatusCode::MISDIRECTED_REQUEST,
+            Some("host"),
+            format!(
+                "this server answers requests to {} only (it listens on the loopback)",
+                hosts.join(" or ")
+            ),
+        ),
+    }
 }
 
 /// A refusal as its response: `{"error": {...}}` with `status`.
@@ -583,4 +614,80 @@ async fn wrong_method() -> Response {
         None,
         "solve, design and vlocator take POST with a JSON body; the rest GET",
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::serve::Limits;
+
+    fn on_runtime(f: impl std::future::Future<Output = ()>) {
+        tokio::runtime::Builder::new_current_thread()
+            .enable_all()
+            .build()
+            .unwrap()
+            .block_on(f);
+    }
+
+    /// Every slot taken and no room to wait: 503 at once, with when to come back.
+    #[test]
+    fn a_full_server_says_come_back_instead_of_queueing() {
+        on_runtime(async {
+            let limits = Limits {
+                slots: 1,
+                queue: 0,
+                ..Limits::default()
+            };
+            let shared = Arc::new(Shared::new(limits, None, None));
+            let held = shared.slots.clone().try_acquire_owned().unwrap();
+            let r = work(&shared, || Ok(1)).await.unwrap_err();
+            assert_eq!(r.status(), StatusCode::SERVICE_UNAVAILABLE);
+            assert_eq!(r.headers()[header::RETRY_AFTER], "1");
+            drop(held);
+            assert_eq!(work(&shared, || Ok(1)).await.ok(), Some(1));
+        });
+    }
+
+    /// An answer past the time limit is a 503 naming the limit; its slot stays taken until
+    /// the work ends, so the slots still bound what runs.
+    #[test]
+    fn an_answer_past_its_time_limit_is_refused_and_keeps_its_slot() {
+        on_runtime(async {
+            let limits = Limits {
+                slots: 1,
+                time_limit: std::time::Duration::from_millis(50),
+                ..Limits::default()
+            };
+            let shared = Arc::new(Shared::new(limits, None, None));
+            let (tx, rx) = std::sync::mpsc::channel::<()>();
+            let r = work(&shared, move || {
+                let _ = rx.recv();
+                Ok(())
+            })
+            .await
+            .unwrap_err();
+            assert_eq!(r.status(), StatusCode::SERVICE_UNAVAILABLE);
+            assert_eq!(shared.slots.available_permits(), 0, "the work still runs");
+            tx.send(()).unwrap();
+            let _slot = shared.slots.acquire().await.unwrap();
+        });
+    }
+
+    /// The budget bounds what a question may ask: a sampled answer over its CPU estimate is
+    /// refused before any sample, as a cost (413), naming the key that sets it.
+    #[test]
+    fn work_over_the_budget_is_refused_with_its_estimate() {
+        on_runtime(async {
+            let shared = Arc::new(Shared::new(Limits::default(), None, None));
+            let r = work(&shared, || {
+                let kw = Keywords::from_json(serde_json::json!({
+                    "mu": "normal(0.3,0.01)", "model": "min-norm", "samples": 1_000_000
+                }))?;
+                SolveQuestion::from_keywords(kw)?.answer()
+            })
+            .await
+            .unwrap_err();
+            assert_eq!(r.status(), StatusCode::PAYLOAD_TOO_LARGE);
+        });
+    }
 }

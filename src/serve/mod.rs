@@ -18,6 +18,9 @@
 //!   request that finds the queue full, or waits longer than [`SLOT_WAIT`], gets 503 with
 //!   `Retry-After`. An answer not ready within [`Limits::time_limit`] gets 503 (the work
 //!   finishes on its slot, so the slots still bound what runs).
+//! - **Its own name only.** On the loopback, a request whose `Host` is not the server's
+//!   address or `localhost` is refused (421): a web page cannot rename its own site to
+//!   127.0.0.1 (DNS rebinding) and read the answers.
 //! - **Stateless.** No session, no cache, no file: any HTTP load balancer may spread clients
 //!   over several servers.
 
@@ -86,6 +89,26 @@ pub(crate) struct Shared {
     waiting: std::sync::atomic::AtomicUsize,
     /// The worker threads answers run their parallel work on (rayon's global pool if None).
     pool: Option<Arc<rayon::ThreadPool>>,
+    /// The `Host` headers a request may carry when the server listens on the loopback (None:
+    /// any): a page of another site that renames itself to 127.0.0.1 (DNS rebinding) is
+    /// refused.
+    hosts: Option<Vec<String>>,
+}
+
+impl Shared {
+    fn new(
+        limits: Limits,
+        pool: Option<Arc<rayon::ThreadPool>>,
+        hosts: Option<Vec<String>>,
+    ) -> Self {
+        Shared {
+            limits,
+            slots: Arc::new(Semaphore::new(limits.slots)),
+            waiting: Default::default(),
+            pool,
+            hosts,
+        }
+    }
 }
 
 /// The page, with everything it needs inline: it fetches nothing but the API.
@@ -125,12 +148,7 @@ async fn serve(
     let bound = listener
         .local_addr()
         .map_err(|e| Error::io("listen on", addr.to_string(), e))?;
-    let shared = Arc::new(Shared {
-        limits,
-        slots: Arc::new(Semaphore::new(limits.slots)),
-        waiting: Default::default(),
-        pool,
-    });
+    let shared = Arc::new(Shared::new(limits, pool, loopback_hosts(bound)));
     let router = api::router(shared);
     let graceful = GracefulShutdown::new();
     let connections = Arc::new(Semaphore::new(MAX_CONNECTIONS));
@@ -171,6 +189,21 @@ async fn serve(
     // Requests in flight finish (each connection closes after its current response).
     let _ = tokio::time::timeout(SHUTDOWN_GRACE, graceful.shutdown()).await;
     Ok(())
+}
+
+/// The names a browser on this machine gives a server bound to loopback address `bound`
+/// (`127.0.0.1:8750`, `localhost:8750`); None when it listens beyond the loopback.
+fn loopback_hosts(bound: SocketAddr) -> Option<Vec<String>> {
+    if !bound.ip().is_loopback() {
+        return None;
+    }
+    let port = bound.port();
+    Some(vec![
+        bound.to_string(),
+        format!("localhost:{port}"),
+        format!("127.0.0.1:{port}"),
+        format!("[::1]:{port}"),
+    ])
 }
 
 /// Resolves at Ctrl-C (SIGINT) or SIGTERM.

@@ -333,6 +333,14 @@ def test_an_empty_array_gives_empty_answers():
     assert r.shape == (0, 3) and r.x_jam_mm.shape == (0, 3) and r.status.shape == (0, 3)
 
 
+def test_an_array_of_more_dimensions_than_numpy_reads_is_a_value_error():
+    # 33 dimensions of one element: numpy 2 makes it; the reader stops at 32.
+    many = np.zeros((1,) * 33) + 0.3
+    with pytest.raises(ValueError, match="33 dimensions"):
+        jc.solve(mu=many)
+    assert jc.solve(mu=np.zeros((1,) * 32) + 0.3).x_jam_mm.shape == (1,) * 32
+
+
 def test_an_array_calls_inputs_are_the_values_passed():
     """`.inputs` of an array call once reported the default part (r 10, m 1, F 200) beside the
     arrays: anyone logging it recorded the wrong part."""
