@@ -312,3 +312,20 @@ fn a_robust_chart_takes_the_friction_range_as_written() {
         "{html}"
     );
 }
+
+/// `vlocator --radius 12.5` (the palm commands' flag) got a bare "unexpected argument": it is
+/// refused with the reason, that a V-block's verdict does not depend on the radius.
+#[test]
+fn a_radius_is_refused_because_the_verdict_does_not_depend_on_it() {
+    let dir = tempfile::tempdir().unwrap();
+    for flag in ["--radius", "--radius-mm"] {
+        let o = jamchart(dir.path(), &["vlocator", flag, "12.5", "--load", "20"]);
+        assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+        let err = stderr(&o);
+        assert!(
+            err.contains("a V-block's verdict does not depend on the part's radius"),
+            "{err}"
+        );
+        assert!(stdout(&o).is_empty());
+    }
+}

@@ -19,10 +19,8 @@ use super::style::{self, LineKind};
 use super::typeset;
 use super::{axis_label, grid_polygons, param_symbol, param_unit, scene_subtitle};
 use crate::figures::At;
-use crate::figures::contour_map::{
-    ContourMapData, ContourMapSettings, LOWEST_BAND_EDGE, dense_x_jam,
-};
-use crate::figures::contours::{Paths, axis_value};
+use crate::figures::contour_map::{ContourMapData, ContourMapSettings, LOWEST_BAND_EDGE, NO_JAM};
+use crate::figures::contours::{Paths, axis_value, filled_from_neighbours, mask_rings};
 use crate::scene::JamStatus;
 use crate::scene::Param;
 
@@ -39,7 +37,8 @@ const LABEL_PLACES: usize = 20;
 pub struct ContourMap {
     data: ContourMapData,
     title: String,
-    /// The shaded x_jam bands, lowest first: the rings of each band.
+    /// The shaded x_jam bands, lowest first: the rings of each band; then the blank, the
+    /// cells without a jam, painted over them.
     bands: Vec<Paths>,
 }
 
@@ -50,19 +49,25 @@ impl Picture for ContourMap {
         let (xa, ya) = (&data.settings.x_axis, &data.settings.y_axis);
         let c = &data.cells;
         let b = ContourBuilder::new(c.x.len(), c.y.len(), true);
-        let xj = dense_x_jam(c.x_jam_mm.as_deref().unwrap_or_default());
-        // Bands: below the first level (from just below 0, so that a cell without a jam is in
+        let x_jam = c.x_jam_mm.as_deref().unwrap_or_default();
+        // Each cell without a jam takes a neighbour's x_jam, so that no band is interpolated
+        // across the blank's edge (every band from the stand-in to the neighbour's value was
+        // a fringe along it); the blank is then painted over them.
+        let xj = filled_from_neighbours(x_jam, c.x.len(), NO_JAM);
+        // Bands: below the first level (from just below 0, so that a map without any jam is in
         // none), between levels, above the last.
         let mut edges = vec![LOWEST_BAND_EDGE];
         edges.extend(&data.settings.x_jam_levels_mm);
         edges.push(f64::MAX);
         // Finite values and levels cannot fail; nothing is drawn if they ever did.
-        let bands = b
+        let mut bands: Vec<Paths> = b
             .isobands(&xj, &edges)
             .unwrap_or_default()
             .iter()
             .map(|band| grid_polygons(band.geometry(), xa, ya))
             .collect();
+        let blank: Vec<bool> = x_jam.iter().map(Option::is_none).collect();
+        bands.push(mask_rings(&blank, xa, ya));
         ContourMap {
             bands,
             title: title.to_string(),
@@ -104,8 +109,10 @@ impl Picture for ContourMap {
         let x = PlotAxis::new(xa.min, xa.max, xa.scale, axis_label(xa.param));
         let y = PlotAxis::new(ya.min, ya.max, ya.scale, axis_label(ya.param));
         let entries = self.legend();
-        // One band below the first level, one between each pair, one above the last.
+        // One band below the first level, one between each pair, one above the last; the
+        // blank over them.
         let colors = style::band_colors(self.data.settings.x_jam_levels_mm.len() + 1);
+        let fills: Vec<RGBColor> = colors.iter().copied().chain([style::PAPER]).collect();
         let bar = ColorBar {
             colors: colors.clone(),
             levels: self
@@ -117,7 +124,7 @@ impl Picture for ContourMap {
                 .collect(),
             title: "jam position x_jam (mm)".into(),
         };
-        let chart = colorbar::band_map(root, &x, &y, &entries, &self.bands, &colors, &bar)?;
+        let chart = colorbar::band_map(root, &x, &y, &entries, &self.bands, &fills, &bar)?;
         let area = chart.plotting_area();
         let (px, py) = area.get_pixel_range();
         let xr = x.plot_range();
@@ -345,16 +352,43 @@ impl ContourMap {
         }
     }
 
+    /// Why the cells without x_jam have none, from their statuses in [`JamStatus::ALL`]'s
+    /// order, or None when every cell jams.
+    fn blank_reasons(&self) -> Option<String> {
+        let c = &self.data.cells;
+        let x_jam = c.x_jam_mm.as_deref().unwrap_or_default();
+        let mut seen = vec![false; JamStatus::ALL.len()];
+        for (x, s) in x_jam.iter().zip(&c.status) {
+            if x.is_none() {
+                seen[usize::from(*s)] = true;
+            }
+        }
+        let l = self.data.params.palm_length_mm;
+        let why: Vec<String> = (JamStatus::ALL.iter().zip(seen))
+            .filter(|(_, seen)| *seen)
+            .map(|(s, _)| match s {
+                JamStatus::BeyondReach => format!(
+                    "the disc is pushed past the palm's end (L = {} mm) before it jams",
+                    style::fmt_num(l, 1)
+                ),
+                JamStatus::TooWeak => "the push is too weak to move the disc".into(),
+                JamStatus::NeverJams => "no friction: it never jams".into(),
+                JamStatus::OutsideModel => "outside the model".into(),
+                other => other.as_str().replace('_', " "),
+            })
+            .collect();
+        (!why.is_empty()).then(|| why.join("; "))
+    }
+
     fn legend(&self) -> Vec<LegendEntry> {
         let mut e = vec![LegendEntry::new(
             Swatch::Line(LineKind::Solid),
             "x_jam iso-lines (mm), bands as in the colour bar",
         )];
-        let cells = self.data.cells.x_jam_mm.as_deref().unwrap_or_default();
-        if cells.iter().any(Option::is_none) {
+        if let Some(why) = self.blank_reasons() {
             e.push(LegendEntry::new(
                 Swatch::Patch(style::PAPER),
-                "blank: the model gives no jam there (x_jam empty in the CSV)",
+                format!("blank, no jam on the palm: {why} (status in the CSV)"),
             ));
         }
         // Only where a line is drawn: at mu = 0.27 fig7c's 44-47 deg levels lie off the map.

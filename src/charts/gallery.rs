@@ -449,4 +449,19 @@ mod tests {
             assert!(html.contains(row), "{row} missing:\n{html}");
         }
     }
+
+    /// The gallery's `#readoff=NAME:X:Y` link was documented only in a comment of the script:
+    /// the guide says how to write one, in the script's own form.
+    #[test]
+    fn the_read_off_link_is_documented_in_the_guide() {
+        let guide = include_str!("../guide.md");
+        assert!(READ_OFF_JS.contains("readoff=NAME:X[:Y][;NAME:X...]"));
+        for form in [
+            "index.html#readoff=NAME:X:Y",
+            "`NAME@P:X:Y`",
+            "#readoff=fig3:0.3;fig7a:20",
+        ] {
+            assert!(guide.contains(form), "the guide does not show {form}");
+        }
+    }
 }

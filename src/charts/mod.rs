@@ -111,7 +111,7 @@ pub use spec::{Scene, SceneSource, load_scene, scene_names};
 /// chart do (a drawing, font, encoder or scene change), so a user whose own charts' hashes
 /// changed can tell whether jamchart's drawing did. `tests/chart_hashes.rs` fails until it is
 /// set to the manifest's hash after a re-bless (`sha256sum charts/SHA256SUMS | cut -c1-12`).
-pub const CHART_FORMAT: &str = "0e1c4e919770";
+pub const CHART_FORMAT: &str = "7960031b6235";
 
 /// Which pictures to produce.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -353,6 +353,8 @@ pub(crate) fn render_with(scene: &Scene, formats: Formats, made: &Made) -> Resul
 
 #[cfg(test)]
 mod layout_tests;
+#[cfg(test)]
+mod map_colour_tests;
 #[cfg(test)]
 mod override_tests;
 #[cfg(test)]

@@ -51,9 +51,9 @@ pub const GRID_MINOR: RGBColor = RGBColor(228, 228, 228);
 /// stay apart from white in greyscale (luma about 200).
 pub const JAM_FILL: RGBColor = RGBColor(240, 190, 160);
 
-/// The shaded band of an uncertain input on a sweep: Okabe-Ito sky blue (#56B4E9) at 30 % on
-/// white, light enough that the band's dashed edges and the black curve read over it, and a
-/// light grey (luma 225) in print.
+/// The shaded band of an uncertain input on a sweep, and the robust V-block's window of
+/// included angles: Okabe-Ito sky blue (#56B4E9) at 30 % on white, light enough that the
+/// band's dashed edges and the black curve read over it, and a light grey (luma 225) in print.
 pub const BAND_FILL: RGBColor = RGBColor(204, 232, 248);
 
 /// The Okabe-Ito palette (Okabe and Ito, "Color Universal Design", 2008): black, orange, sky

@@ -583,7 +583,7 @@ fn contour_lines_end_where_the_cells_stop_jamming() {
     let doc: serde_json::Value =
         serde_json::from_slice(&chart.data_file(&scene.name, &scene.title).bytes).unwrap();
     let csv = String::from_utf8(chart.cells().unwrap().to_bytes()).unwrap();
-    // force_n, start_angle_deg, x_jam_mm, theta_jam_deg per cell, x fastest.
+    // force_n, start_angle_deg, status, x_jam_mm, theta_jam_deg, gap per cell, x fastest.
     let rows: Vec<Vec<&str>> = csv
         .lines()
         .skip(1)
@@ -591,7 +591,7 @@ fn contour_lines_end_where_the_cells_stop_jamming() {
         .collect();
     let (nx, ny) = (40, 30);
     assert_eq!(rows.len(), nx * ny);
-    let theta: Vec<Option<f64>> = rows.iter().map(|r| r[3].parse().ok()).collect();
+    let theta: Vec<Option<f64>> = rows.iter().map(|r| r[4].parse().ok()).collect();
     let xs: Vec<f64> = rows[..nx].iter().map(|r| r[0].parse().unwrap()).collect();
     let ys: Vec<f64> = rows
         .iter()
@@ -601,7 +601,7 @@ fn contour_lines_end_where_the_cells_stop_jamming() {
     assert!(theta.iter().any(Option::is_none) && theta.iter().any(Option::is_some));
     // No gap to the rigid limit is claimed where there is no jam.
     for r in &rows {
-        assert_eq!(r[2].is_empty(), r[4].is_empty(), "{r:?}");
+        assert_eq!(r[3].is_empty(), r[5].is_empty(), "{r:?}");
     }
     // The samples on either side of `v` along an axis (one where `v` is a sample).
     let around = |axis: &[f64], v: f64| -> Vec<usize> {
@@ -637,8 +637,11 @@ fn contour_lines_end_where_the_cells_stop_jamming() {
     assert!(points > 20, "{points} points");
     let svg = String::from_utf8(render(&scene, Formats::Svg).unwrap().svg.unwrap()).unwrap();
     assert!(
-        svg.contains("blank: the model gives no jam"),
-        "the legend names the blank cells"
+        svg.contains(
+            "blank, no jam on the palm: the push is too weak to move the disc; \
+                      outside the model"
+        ),
+        "the legend names the blank cells and why"
     );
     // The labels' boxes (white, 22 px high, in the plot) are clear of one another: the
     // theta_jam lines stop at 90 deg, short of their labels' staggered heights, and their
@@ -689,7 +692,7 @@ fn settings(pairs: &[&str]) -> Vec<overrides::Setting> {
 
 /// The RGB bytes of a rendered PNG (an indexed PNG, `output::encode_png`'s smaller form, is
 /// expanded).
-fn rgb_pixels(png: &[u8]) -> Vec<u8> {
+pub(super) fn rgb_pixels(png: &[u8]) -> Vec<u8> {
     let mut decoder = png::Decoder::new(std::io::Cursor::new(png));
     decoder.set_transformations(png::Transformations::EXPAND);
     let mut reader = decoder.read_info().unwrap();

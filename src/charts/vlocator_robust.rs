@@ -9,7 +9,7 @@ use plotters::prelude::*;
 use super::axes::{DrawResult, PlotAxis, PlotFrame};
 use super::picture::Picture;
 use super::readoff::{Axis, Fixed, Named, PanelSeries, ParamKey, ReadOffData, Sweep, SweepPanel};
-use super::style::LineKind;
+use super::style::{self, LineKind};
 use super::vlocator_capacity::{level_text, locator_subtitle};
 use super::xy::{Curve, CurveStyle, Figure, LabelSide, Mark, Panel, Tag};
 use crate::figures::vlocator_capacity::STANDARD_V_DEG;
@@ -127,23 +127,17 @@ impl VlocatorRobust {
             let name = format!("μ {}", range_text((g.mu_lo, g.mu_hi)));
             (g, self.data.widths[i], &self.data.designs[i], name)
         });
-        // The range given under the bars: its own window's bar is drawn over it.
+        // The window as a band over the widths, under every line: each stretch of widths
+        // with a window (a second window of a width, where there is one, a band of its own).
+        // Drawn as one black bar per width it read as a comb.
+        curves.extend(window_bands(&self.data.widths, &self.data.designs));
+        // The range given over the band.
         if let Some((_, w, _, name)) = &given {
             curves.push(Curve {
                 label: format!("your range, {name} (w = {})", Num(*w)),
                 style: CurveStyle::Line(RANGE_LINE),
                 points: vec![(*w, y.min), (*w, y.max)],
             });
-        }
-        // The window as vertical bars, one per width: a band without a fill style.
-        for (&w, d) in self.data.widths.iter().zip(&self.data.designs) {
-            for &(lo, hi) in &d.windows {
-                curves.push(Curve {
-                    label: "window: holds every load, never locks".into(),
-                    style: CurveStyle::Line(LineKind::Solid),
-                    points: vec![(w, lo), (w, hi)],
-                });
-            }
         }
         let lock: Vec<(f64, f64)> = self
             .data
@@ -167,7 +161,7 @@ impl VlocatorRobust {
         if !robust.is_empty() {
             curves.push(Curve {
                 label: "most robust γ (largest common factor ρ* on loads and friction)".into(),
-                // Purple dots: apart from the black bars it runs through.
+                // Purple dots: apart from the band it runs through.
                 style: CurveStyle::Line(LineKind::Level),
                 points: robust,
             });
@@ -209,7 +203,7 @@ impl VlocatorRobust {
         let given_closed = given.as_ref().is_some_and(|g| g.2.windows.is_empty());
         if let Some(w) = self.closes().filter(|_| !given_closed) {
             notes.push(format!(
-                "No V works from a range width of {} on (no bar).",
+                "No V works from a range width of {} on (no band).",
                 super::style::fmt_num(w, 3)
             ));
         }
@@ -336,7 +330,7 @@ impl VlocatorRobust {
 /// The range given, read off: its verdict beside the top of its line, and its most robust
 /// angle with lines to the axes or, where no V works, the narrowest V that does not lock (the
 /// lock bound), which drops a load. The window's ends and rho* are in the verdict, the reason
-/// in the notes: a long label in the plot hid the bars it lay on.
+/// in the notes: a long label in the plot hid the band it lay on.
 fn given_marks(name: &str, w: f64, d: &RobustDesign, x: &PlotAxis, y: &PlotAxis) -> [Mark; 2] {
     let verdict = match d.windows.first() {
         Some(&(lo, hi)) => format!("{name}: γ from {lo:.2}° to {hi:.2}° works"),
@@ -364,7 +358,7 @@ fn given_marks(name: &str, w: f64, d: &RobustDesign, x: &PlotAxis, y: &PlotAxis)
             ),
         ),
     };
-    // Near the top of the line, where no bar reaches (the axis has room above and below
+    // Near the top of the line, where the band does not reach (the axis has room above and below
     // them), or near its foot where a standard V-block's tag sits in the top fifth.
     let span = y.max - y.min;
     let tag_at_top = STANDARD_V_DEG
@@ -392,13 +386,53 @@ fn given_marks(name: &str, w: f64, d: &RobustDesign, x: &PlotAxis, y: &PlotAxis)
     ]
 }
 
+/// The window of included angles as bands over the widths: the outline of each stretch of
+/// widths that have a k-th window (k = 0, 1, ...), along its low ends and back along its high
+/// ends. A stretch of one width is drawn a quarter of the widths' step either side of it.
+fn window_bands(widths: &[f64], designs: &[RobustDesign]) -> Vec<Curve> {
+    let step = match widths {
+        [a, b, ..] => (b - a).abs(),
+        _ => 0.0,
+    };
+    let most = designs.iter().map(|d| d.windows.len()).max().unwrap_or(0);
+    let mut bands = Vec::new();
+    for k in 0..most {
+        let mut i = 0;
+        while i < designs.len() {
+            if designs[i].windows.len() <= k {
+                i += 1;
+                continue;
+            }
+            let start = i;
+            while i < designs.len() && designs[i].windows.len() > k {
+                i += 1;
+            }
+            let run: Vec<(f64, (f64, f64))> = (start..i)
+                .map(|j| (widths[j], designs[j].windows[k]))
+                .collect();
+            let run = match run[..] {
+                [(w, win)] => vec![(w - step / 4.0, win), (w + step / 4.0, win)],
+                _ => run,
+            };
+            let low = run.iter().map(|&(w, (lo, _))| (w, lo));
+            let high = run.iter().rev().map(|&(w, (_, hi))| (w, hi));
+            bands.push(Curve {
+                label: "window: holds every load, never locks".into(),
+                style: CurveStyle::Band(style::BAND_FILL),
+                points: low.chain(high).collect(),
+            });
+        }
+    }
+    bands
+}
+
 /// How far above its line a standard V-block's tag sits, as a fraction of the angle axis.
 const TAG_RISE: f64 = 0.025;
 
 /// Room below and above the angles drawn, deg, at least (then rounded out to 10 deg).
 const ANGLE_PAD_DEG: f64 = 3.0;
 
-/// The range given: Okabe-Ito bluish green in medium dashes, apart from the black bars, the
+/// The range given: Okabe-Ito bluish green in medium dashes, apart from the window's band, the
 /// vermillion lock bound and the purple robust angle.
 const RANGE_LINE: LineKind = LineKind::Family(3);
 
@@ -466,6 +500,31 @@ mod tests {
         s.validate(&input).unwrap();
         let data = s.compute(&input, &crate::figures::models::Live).unwrap();
         VlocatorRobust::new(data, "test")
+    }
+
+    /// The window of included angles was drawn as one black bar per width of the friction
+    /// range, a comb of 51 bars; it is one band, outlined along every width with a window (its
+    /// low ends, then its high ends back), over which the lines are drawn.
+    #[test]
+    fn the_window_is_one_band_not_a_comb_of_bars() {
+        let s = settings(scene_text("vlocator-robust").unwrap());
+        let c = chart(&s);
+        let fig = c.figure();
+        let curves = &fig.panels[0].curves;
+        let window: Vec<&Curve> = (curves.iter())
+            .filter(|c| c.label.starts_with("window:"))
+            .collect();
+        assert_eq!(window.len(), 1, "{window:?}");
+        assert!(matches!(window[0].style, CurveStyle::Band(_)), "{window:?}");
+        let with: Vec<(f64, (f64, f64))> = (c.data.widths.iter().zip(&c.data.designs))
+            .filter_map(|(&w, d)| d.windows.first().map(|&win| (w, win)))
+            .collect();
+        assert!(with.len() > 10, "{} widths with a window", with.len());
+        let low: Vec<(f64, f64)> = with.iter().map(|&(w, (lo, _))| (w, lo)).collect();
+        let high: Vec<(f64, f64)> = with.iter().rev().map(|&(w, (_, hi))| (w, hi)).collect();
+        assert_eq!(window[0].points, [low, high].concat());
+        // Under every line: the first curve drawn.
+        assert!(std::ptr::eq(window[0], &curves[0]));
     }
 
     /// The robust chart wanted a centre and a width (0.175 +- 0.075) where the engineer has a

@@ -20,6 +20,9 @@ pub enum CurveStyle {
     Points(Marker),
     /// A line with a marker at each point.
     LinePoints(LineKind, Marker),
+    /// A region filled with a colour, under the curves drawn after it: the points are its
+    /// outline, closed from the last to the first.
+    Band(RGBColor),
 }
 
 /// One curve or point set of a panel, in value space (the panel's axes map it).
@@ -125,6 +128,7 @@ impl Figure {
                 CurveStyle::Line(k) => Swatch::Line(k),
                 CurveStyle::LinePoints(k, m) => Swatch::LineMarker(k, m),
                 CurveStyle::Points(m) => Swatch::Marker(m),
+                CurveStyle::Band(c) => Swatch::Patch(c),
             };
             out.push(LegendEntry::new(sw, c.label.clone()));
         }
@@ -145,6 +149,22 @@ impl Figure {
             axes::draw_grid(&chart, &panel.x, &panel.y)?;
             let area = chart.plotting_area();
             for c in &panel.curves {
+                if let CurveStyle::Band(color) = c.style {
+                    // Held inside the panel's ranges: an outline point beyond them would fill
+                    // over the frame.
+                    let (xr, yr) = (panel.x.plot_range(), panel.y.plot_range());
+                    let within = |v: f64, r: &std::ops::Range<f64>| {
+                        v.max(r.start.min(r.end)).min(r.start.max(r.end))
+                    };
+                    let ring: Vec<(f64, f64)> = (c.points.iter())
+                        .map(|&(x, y)| {
+                            let (px, py) = (panel.x.to_plot(x), panel.y.to_plot(y));
+                            (within(px, &xr), within(py, &yr))
+                        })
+                        .collect();
+                    area.draw(&Polygon::new(ring, color.filled()))?;
+                    continue;
+                }
                 let pts: Vec<(f64, f64)> = c
                     .points
                     .iter()
@@ -155,6 +175,7 @@ impl Figure {
                     CurveStyle::Line(k) => (Some(k), None),
                     CurveStyle::Points(m) => (None, Some(m)),
                     CurveStyle::LinePoints(k, m) => (Some(k), Some(m)),
+                    CurveStyle::Band(_) => (None, None),
                 };
                 if let Some(k) = line {
                     let color = marker.map_or(k.color(), style::marked_line_color);

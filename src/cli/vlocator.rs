@@ -5,7 +5,7 @@ use clap::Args;
 
 use super::args::{VlocatorFormat, parse_f64};
 use crate::ask::{VlocatorQuestion, Words};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::settings::flags::{Flags, LocatorSet};
 
 /// Flags of `vlocator`: the V's geometry, then the declared locator settings
@@ -43,10 +43,30 @@ pub struct VlocatorArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = VlocatorFormat::Text)]
     pub format: VlocatorFormat,
+    /// Not a V-block setting, taken only to be refused with the reason ([`NO_RADIUS`]): the
+    /// palm commands' `--radius` typed here got a bare "unexpected argument".
+    #[arg(
+        long,
+        alias = "radius-mm",
+        hide = true,
+        value_name = "MM",
+        allow_hyphen_values = true
+    )]
+    pub radius: Option<String>,
 }
+
+/// Why `vlocator` takes no radius: each flank's reaction (its normal force and its friction)
+/// acts at the contact, whose direction from the centre is the flank's normal whatever the
+/// radius, so every balance of forces and of moments about the centre scales the radius out.
+const NO_RADIUS: &str = "vlocator takes no radius: a V-block's verdict does not depend on the \
+     part's radius (the flanks touch it along their normals through its centre, at any size); \
+     give its weight with --mass and the loads with --load and --load-angle";
 
 /// Runs `vlocator`: the text or JSON answer.
 pub fn run(args: &VlocatorArgs) -> Result<String> {
+    if let Some(r) = &args.radius {
+        return Err(Error::invalid("--radius", r, NO_RADIUS));
+    }
     let question = VlocatorQuestion::new(
         args.included_angle,
         args.flank_angles.as_deref(),

@@ -16,8 +16,7 @@ use crate::csv_out::Column;
 use crate::error::{Error, Result};
 use crate::grid::{GridAxis, GridRequest, Quantity};
 use crate::models::ModelKind;
-use crate::scene::Param;
-use crate::scene::SceneParams;
+use crate::scene::{JamStatus, Param, SceneParams};
 
 /// `[chart]` keys of `kind = "contour_map"`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -205,6 +204,9 @@ impl Figure for ContourMapSettings {
                 params: [xa.param, ya.param],
                 x: grid.x_values,
                 y: grid.y_values,
+                status: (grid.status.unwrap_or_default().iter())
+                    .map(|s| s.index())
+                    .collect(),
                 x_jam_mm: grid.x_jam_mm,
                 theta_jam_deg: grid.theta_jam_deg,
                 gap_to_x_rigid_pct: gap_pct,
@@ -215,7 +217,8 @@ impl Figure for ContourMapSettings {
 
 impl ContourMapSettings {
     fn request(&self, base: &SceneParams) -> GridRequest {
-        let mut quantities = vec![Quantity::XJamMm];
+        // The status says why a cell has no x_jam (the blank's legend, the cells CSV).
+        let mut quantities = vec![Quantity::Status, Quantity::XJamMm];
         if !self.theta_jam_levels_deg.is_empty() {
             quantities.push(Quantity::ThetaJamDeg);
         }
@@ -254,7 +257,7 @@ fn round_levels(values: &[f64]) -> Vec<f64> {
 }
 
 /// A value for cells where a model gives no jam: below every level, so they stay unshaded.
-const NO_JAM: f64 = -1.0;
+pub(crate) const NO_JAM: f64 = -1.0;
 
 /// The lower edge of the lowest band: below every jam's x_jam and theta_jam (both > 0) and
 /// above [`NO_JAM`], so that a cell without a jam lies in no band and stays blank.
@@ -323,6 +326,9 @@ pub struct ContourMapCells {
     pub x: Vec<f64>,
     /// The y samples.
     pub y: Vec<f64>,
+    /// The model's verdict per cell, as its index in [`JamStatus::ALL`]: why a cell without
+    /// x_jam has none (past the palm's end, too weak, ...).
+    pub status: Vec<u8>,
     /// x_jam in mm where the model gives one.
     pub x_jam_mm: Option<Vec<Option<f64>>>,
     /// theta_jam in deg, when its iso-lines are asked for.
@@ -334,7 +340,13 @@ pub struct ContourMapCells {
 
 impl HasCells for ContourMapCells {
     fn table(&self) -> CellsTable<'_> {
-        let mut columns = Vec::new();
+        let mut columns = vec![(
+            "status",
+            Column::Words {
+                words: JamStatus::NAMES,
+                of: &self.status,
+            },
+        )];
         columns.extend(
             self.x_jam_mm
                 .as_deref()

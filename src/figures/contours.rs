@@ -105,6 +105,38 @@ pub fn mask_rings<P>(mask: &[bool], xa: &GridAxis<P>, ya: &GridAxis<P>) -> Vec<V
         .collect()
 }
 
+/// A field over an `nx` x `ny` grid (x fastest) with every cell that holds no value given the
+/// value of the nearest cell that does (by steps between neighbours, the first found in index
+/// order on a tie); `fallback` everywhere when none does.
+///
+/// For shading bands over a field with holes: the contour crate interpolates between
+/// neighbouring cells, so a stand-in value below every level in the holes drew every band
+/// between it and the field's value as a thin fringe along each hole's edge (a yellow
+/// "< 30 mm" along a blank where x_jam was 80 mm). Filled from its neighbours, a hole's edge
+/// only interpolates between values the field has there; the holes are then covered by their
+/// own shape ([`mask_rings`]).
+pub fn filled_from_neighbours(values: &[Option<f64>], nx: usize, fallback: f64) -> Vec<f64> {
+    let mut out: Vec<Option<f64>> = values.to_vec();
+    let mut queue: std::collections::VecDeque<usize> =
+        (0..out.len()).filter(|&i| out[i].is_some()).collect();
+    while let Some(i) = queue.pop_front() {
+        let (ix, iy) = (i % nx, i / nx);
+        let near = [
+            (ix > 0).then(|| i - 1),
+            (ix + 1 < nx).then_some(i + 1),
+            (iy > 0).then(|| i - nx),
+            (i + nx < out.len()).then_some(i + nx),
+        ];
+        for j in near.into_iter().flatten() {
+            if out[j].is_none() {
+                out[j] = out[i];
+                queue.push_back(j);
+            }
+        }
+    }
+    out.into_iter().map(|v| v.unwrap_or(fallback)).collect()
+}
+
 /// The axis coordinate (ln for a log axis) of contour-crate grid coordinate `g` on axis `a`.
 pub fn grid_to_axis<P>(g: f64, a: &GridAxis<P>) -> f64 {
     let (lo, hi) = match a.scale {
