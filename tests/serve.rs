@@ -270,10 +270,10 @@ fn concurrent_clients_get_the_same_answers() {
 fn ctrl_c_lets_the_answer_in_flight_finish_then_exits() {
     let mut server = Server::start();
     let addr = server.addr;
-    // 8,000 min-norm samples: a second or more of work, in flight when Ctrl-C comes.
+    // 4,000 simulations: a second or more of work, in flight when Ctrl-C comes.
     let in_flight = std::thread::spawn(move || {
         let mut s = TcpStream::connect(addr).unwrap();
-        let body = r#"{"mu": "normal(0.3,0.01)", "model": "min-norm", "samples": 8000}"#;
+        let body = r#"{"mu": "normal(0.3,0.01)", "model": "dynamics", "samples": 4000}"#;
         let head = format!(
             "POST /api/v1/solve HTTP/1.1\r\nHost: {addr}\r\nContent-Length: {}\r\n\
              Connection: close\r\n\r\n{body}",
