@@ -270,20 +270,24 @@ fn concurrent_clients_get_the_same_answers() {
 fn ctrl_c_lets_the_answer_in_flight_finish_then_exits() {
     let mut server = Server::start();
     let addr = server.addr;
-    // 4,000 simulations: a second or more of work, in flight when Ctrl-C comes.
+    // A request whose body is half sent when Ctrl-C comes, the rest after it: in flight
+    // whatever the machine's load, and answered within the server's grace.
     let in_flight = std::thread::spawn(move || {
         let mut s = TcpStream::connect(addr).unwrap();
-        let body = r#"{"mu": "normal(0.3,0.01)", "model": "dynamics", "samples": 4000}"#;
+        let body = r#"{"mu": 0.3}"#;
         let head = format!(
             "POST /api/v1/solve HTTP/1.1\r\nHost: {addr}\r\nContent-Length: {}\r\n\
-             Connection: close\r\n\r\n{body}",
+             Connection: close\r\n\r\n",
             body.len()
         );
         s.write_all(head.as_bytes()).unwrap();
+        s.write_all(&body.as_bytes()[..4]).unwrap();
+        std::thread::sleep(Duration::from_millis(400));
+        s.write_all(&body.as_bytes()[4..]).unwrap();
         let r = read_response(&mut s);
         (r, Instant::now())
     });
-    std::thread::sleep(Duration::from_millis(200));
+    std::thread::sleep(Duration::from_millis(100));
     let interrupted = Instant::now();
     let (status, took) = server.interrupt();
     let (r, answered) = in_flight.join().unwrap();
@@ -293,8 +297,8 @@ fn ctrl_c_lets_the_answer_in_flight_finish_then_exits() {
         "the answer came after Ctrl-C: it was in flight"
     );
     assert!(status.success(), "{status:?}");
-    // Generous for a loaded machine: the work itself, then the server's 1.5 s of grace.
-    assert!(took < Duration::from_secs(30), "{took:?}");
+    // The grace is 1.5 s; generous for a loaded machine.
+    assert!(took < Duration::from_secs(10), "{took:?}");
     assert!(
         TcpStream::connect(addr).is_err(),
         "nothing listens after the exit"

@@ -205,62 +205,46 @@ trait Question: Sized + Send + 'static {
     fn headline(answer: &Self::Answer) -> String;
 }
 
-impl Question for SolveQuestion {
-    type Answer = crate::ask::SolveAnswer;
-    fn from_keywords(keywords: Keywords) -> crate::Result<Self> {
-        SolveQuestion::from_keywords(keywords)
-    }
-    fn warnings(&self) -> Vec<String> {
-        SolveQuestion::warnings(self, Words::Keys)
-    }
-    fn answer(&self) -> crate::Result<Self::Answer> {
-        SolveQuestion::answer(self)
-    }
-    fn text(answer: &Self::Answer) -> String {
-        answer.text(Words::Keys)
-    }
-    fn headline(answer: &Self::Answer) -> String {
-        answer.headline()
-    }
+/// [`Question`] for a library question whose answer has `text` and `headline`; `warnings`
+/// gives its warnings in the keys' words.
+macro_rules! question {
+    ($q:ty, $a:ty, $warnings:expr) => {
+        impl Question for $q {
+            type Answer = $a;
+            fn from_keywords(keywords: Keywords) -> crate::Result<Self> {
+                <$q>::from_keywords(keywords)
+            }
+            fn warnings(&self) -> Vec<String> {
+                $warnings(self)
+            }
+            fn answer(&self) -> crate::Result<$a> {
+                <$q>::answer(self)
+            }
+            fn text(answer: &$a) -> String {
+                answer.text(Words::Keys)
+            }
+            fn headline(answer: &$a) -> String {
+                answer.headline()
+            }
+        }
+    };
 }
 
-impl Question for DesignQuestion {
-    type Answer = crate::ask::DesignAnswer;
-    fn from_keywords(keywords: Keywords) -> crate::Result<Self> {
-        DesignQuestion::from_keywords(keywords)
-    }
-    fn warnings(&self) -> Vec<String> {
-        DesignQuestion::warnings(self)
-    }
-    fn answer(&self) -> crate::Result<Self::Answer> {
-        DesignQuestion::answer(self)
-    }
-    fn text(answer: &Self::Answer) -> String {
-        answer.text(Words::Keys)
-    }
-    fn headline(answer: &Self::Answer) -> String {
-        answer.headline()
-    }
-}
-
-impl Question for VlocatorQuestion {
-    type Answer = crate::ask::VlocatorAnswer;
-    fn from_keywords(keywords: Keywords) -> crate::Result<Self> {
-        VlocatorQuestion::from_keywords(keywords)
-    }
-    fn warnings(&self) -> Vec<String> {
-        VlocatorQuestion::warnings(self)
-    }
-    fn answer(&self) -> crate::Result<Self::Answer> {
-        VlocatorQuestion::answer(self)
-    }
-    fn text(answer: &Self::Answer) -> String {
-        answer.text(Words::Keys)
-    }
-    fn headline(answer: &Self::Answer) -> String {
-        answer.headline()
-    }
-}
+question!(
+    SolveQuestion,
+    crate::ask::SolveAnswer,
+    |q: &SolveQuestion| q.warnings(Words::Keys)
+);
+question!(
+    DesignQuestion,
+    crate::ask::DesignAnswer,
+    DesignQuestion::warnings
+);
+question!(
+    VlocatorQuestion,
+    crate::ask::VlocatorAnswer,
+    VlocatorQuestion::warnings
+);
 
 /// `?format=json` (the default) or `?format=text`.
 #[derive(serde::Deserialize)]
@@ -549,7 +533,8 @@ async fn settings() -> Response {
     json_response(&crate::settings::documented())
 }
 
-/// `GET /api/v1/scenes`: the built-in scenes, as `jamchart scenes` lists them.
+/// `GET /api/v1/scenes`: the built-in scenes, as `jamchart scenes` lists them (read once:
+/// they are built into the binary).
 async fn scenes() -> Response {
     #[derive(Serialize)]
     struct SceneDoc {
@@ -557,20 +542,23 @@ async fn scenes() -> Response {
         kind: String,
         title: String,
     }
-    let docs: Vec<SceneDoc> = crate::charts::builtin_scene_names()
-        .into_iter()
-        .filter_map(|name| {
-            let scene = crate::charts::SceneSource::BuiltIn(name.clone())
-                .load(&[])
-                .ok()?;
-            Some(SceneDoc {
-                kind: scene.chart.kind().to_string(),
-                title: scene.title,
-                name,
+    static DOCS: std::sync::OnceLock<Vec<SceneDoc>> = std::sync::OnceLock::new();
+    let docs = DOCS.get_or_init(|| {
+        crate::charts::builtin_scene_names()
+            .into_iter()
+            .filter_map(|name| {
+                let scene = crate::charts::SceneSource::BuiltIn(name.clone())
+                    .load(&[])
+                    .ok()?;
+                Some(SceneDoc {
+                    kind: scene.chart.kind().to_string(),
+                    title: scene.title,
+                    name,
+                })
             })
-        })
-        .collect();
-    json_response(&docs)
+            .collect()
+    });
+    json_response(docs)
 }
 
 /// `GET /`: the page.
