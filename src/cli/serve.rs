@@ -34,29 +34,6 @@ fn address(s: &str) -> std::result::Result<SocketAddr, String> {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    /// A user types `localhost:8750` as often as `127.0.0.1:8750`.
-    #[test]
-    fn an_address_is_an_ip_and_port_or_localhost() {
-        assert_eq!(
-            super::address("localhost:8751").unwrap().to_string(),
-            "127.0.0.1:8751"
-        );
-        assert_eq!(
-            super::address("0.0.0.0:80").unwrap().to_string(),
-            "0.0.0.0:80"
-        );
-        assert_eq!(
-            super::address("[::1]:8750").unwrap().to_string(),
-            "[::1]:8750"
-        );
-        let e = super::address("example.com:80").unwrap_err();
-        assert!(e.contains("give IP:PORT"), "{e}");
-        assert!(super::address("localhost:99999").is_err());
-    }
-}
-
 /// Serves until Ctrl-C: the URL on stdout, a warning on stderr when the address is not the
 /// loopback.
 pub fn run(a: &ServeArgs, pool: Pool) -> Result<()> {
@@ -81,4 +58,27 @@ pub fn run(a: &ServeArgs, pool: Pool) -> Result<()> {
         );
         let _ = out.flush();
     })
+}
+
+#[cfg(test)]
+mod tests {
+    /// A user types `localhost:8750` as often as `127.0.0.1:8750`.
+    #[test]
+    fn an_address_is_an_ip_and_port_or_localhost() {
+        assert_eq!(
+            super::address("localhost:8751").unwrap().to_string(),
+            "127.0.0.1:8751"
+        );
+        assert_eq!(
+            super::address("0.0.0.0:80").unwrap().to_string(),
+            "0.0.0.0:80"
+        );
+        assert_eq!(
+            super::address("[::1]:8750").unwrap().to_string(),
+            "[::1]:8750"
+        );
+        let e = super::address("example.com:80").unwrap_err();
+        assert!(e.contains("give IP:PORT"), "{e}");
+        assert!(super::address("localhost:99999").is_err());
+    }
 }
