@@ -200,6 +200,11 @@ pub enum Error {
         detail: String,
     },
 
+    /// Long work stopped because its caller asked (an observer answered
+    /// [`Flow::Break`](crate::uncertain::Flow)): no answer, nothing written.
+    #[error("stopped before the answer was complete, as asked")]
+    Stopped,
+
     /// A state the code should never reach: a defect, reported with what was seen.
     #[error("{0} (a defect: please report it)")]
     Defect(String),
@@ -275,6 +280,8 @@ pub enum Fault {
     Io,
     /// The tool's own fault: a drawing, encoding or solver failure, a defect.
     Internal,
+    /// No fault: the caller stopped the work before its answer.
+    Stopped,
 }
 
 /// An [`Error`] as a face hands it to its user: the key at fault, the value given, and the
@@ -310,6 +317,7 @@ impl Error {
             | Error::Draw { .. }
             | Error::Encode { .. }
             | Error::Defect(_) => Fault::Internal,
+            Error::Stopped => Fault::Stopped,
             // A file's mistakes are input (a base file that does not load comes alone).
             Error::InFile { errors, .. } => errors.first().map_or(Fault::Input, Error::fault),
         }

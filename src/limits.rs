@@ -23,6 +23,11 @@ pub const MAX_TOLERANCES: usize = 64;
 /// chart.load_axis.count=2000` (20,000 angles) times one fifth of the limit on your machine.
 pub const MAX_OPTIMUM_POINTS: usize = 100_000;
 
+/// Probabilities or positions one distribution answer reads (`--quantiles`, `--before`): each
+/// is a line of the answer, and each is checked against the others (10^6 of them never
+/// answered); the jam-probability chart draws the whole curve.
+pub const MAX_PROBES: usize = 1000;
+
 /// Estimated peak memory of one computation in bytes (1 GiB).
 pub const MAX_MEMORY_BYTES: u64 = 1 << 30;
 
@@ -238,6 +243,40 @@ pub fn within<T>(budget: Budget, f: impl FnOnce() -> T) -> T {
     }
     let _restore = Restore(BUDGET.replace(Some(budget)));
     f()
+}
+
+/// Refuses `count` pushes of `spec` answered at once (a binding's arrays, `key` naming them)
+/// whose estimated CPU time exceeds [`MAX_SAMPLED_CPU_S`] as a Monte Carlo's would, or whose
+/// answers and copies, `bytes_per_push` each, exceed the memory limit: a broadcast of 2^40
+/// pushes once ran on for hours.
+#[cfg(feature = "python")]
+pub fn check_pushes(
+    key: &str,
+    count: f64,
+    bytes_per_push: u64,
+    spec: &crate::models::ModelSpec,
+) -> Result<()> {
+    check_items(key, count, PerItem::new("pushes", bytes_per_push, 0))?;
+    let per = per_sample(spec);
+    let estimate_s = count * per.cpu_s;
+    if estimate_s <= MAX_SAMPLED_CPU_S {
+        return Ok(());
+    }
+    let shown = match count < 1e15 {
+        true => format!("{count:.0}"),
+        false => format!("{count:.3e}"),
+    };
+    Err(Error::TooLong {
+        key: key.to_string(),
+        what: format!(
+            "{shown} pushes of {}, about {} each,",
+            per.what,
+            human_seconds(per.cpu_s)
+        ),
+        estimate_s,
+        limit_s: MAX_SAMPLED_CPU_S,
+        limit_source: "",
+    })
 }
 
 /// The estimated CPU time of `samples` samples of `per`, in s.

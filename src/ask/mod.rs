@@ -44,6 +44,7 @@ mod vlocator;
 mod vlocator_robust;
 mod vlocator_text;
 
+pub use crate::uncertain::Flow;
 pub use crate::uncertain::dist::Progress;
 pub(crate) use design::DESIGN_KEYS;
 pub use design::{DesignAnswer, DesignQuestion, DesignReport, SimCheck};
@@ -96,6 +97,34 @@ impl Words {
             Words::Keys if key == "model" || choice() => format!("{key} = \"{value}\""),
             Words::Keys => format!("{key} = {value}"),
         }
+    }
+
+    /// `text` (a setting's documentation, a message) in this face's words: each `--flag` of
+    /// a setting named by its key where keys are spoken (`--mu-ground` -> `mu_ground`); a
+    /// flag no setting declares is left as written.
+    pub fn speak(self, text: &str) -> String {
+        if self == Words::Flags {
+            return text.to_string();
+        }
+        let mut out = String::with_capacity(text.len());
+        let mut rest = text;
+        while let Some(at) = rest.find("--") {
+            out.push_str(&rest[..at]);
+            let tail = &rest[at + 2..];
+            let len = tail
+                .find(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+                .unwrap_or(tail.len());
+            let name = tail[..len].trim_end_matches('-');
+            let own = DIST_KEYS.iter().chain(DESIGN_KEYS).chain(GEOMETRY_KEYS);
+            let mut decl = own.chain(crate::settings::all());
+            match decl.find(|d| d.flag == Some(name)) {
+                Some(d) if !name.is_empty() => out.push_str(d.key),
+                _ => out.push_str(&rest[at..at + 2 + name.len()]),
+            }
+            rest = &tail[name.len()..];
+        }
+        out.push_str(rest);
+        out
     }
 
     /// Where a setting without a flag of its own is set: `in the [dynamics] section of

@@ -12,6 +12,7 @@ use crate::error::{Error, Result};
 use crate::minnorm::qp::{HoldStatus, TracePoint};
 use crate::models::{self, Detail, ModelKind, ModelSpec, Solution};
 use crate::scene::SceneParams;
+use crate::uncertain::Flow;
 use crate::uncertain::UncertainSet;
 use crate::uncertain::dist::{self, DistAnswer, DistQuestion, Progress};
 use crate::uncertain::range::{self, RangeAnswer};
@@ -258,12 +259,17 @@ impl SolveQuestion {
 
     /// Answers the question.
     pub fn answer(&self) -> Result<SolveAnswer> {
-        self.answer_observed(&|_| {})
+        self.answer_observed(&|_| Flow::Continue(()))
     }
 
     /// [`SolveQuestion::answer`], telling `progress` how a Monte Carlo goes (its estimate,
-    /// then each chunk of samples as it is drawn, from any thread).
-    pub fn answer_observed(&self, progress: &(dyn Fn(Progress) + Sync)) -> Result<SolveAnswer> {
+    /// then each chunk of samples as it is drawn, from any thread); `progress` answering
+    /// [`Flow::Break`] stops the draws (a face's Ctrl-C), and the answer is
+    /// [`Error::Stopped`](crate::error::Error::Stopped).
+    pub fn answer_observed(
+        &self,
+        progress: &(dyn Fn(Progress) -> Flow + Sync),
+    ) -> Result<SolveAnswer> {
         self.check()?;
         if !self.uncertain.is_empty() {
             let results = self
@@ -348,7 +354,7 @@ impl SolveQuestion {
     fn box_record(
         &self,
         kind: ModelKind,
-        progress: &(dyn Fn(Progress) + Sync),
+        progress: &(dyn Fn(Progress) -> Flow + Sync),
     ) -> Result<BoxRecord> {
         let scene = &self.config.scene;
         let has_distribution = self

@@ -57,13 +57,21 @@ impl PushAnswer {
         for x in &self.results {
             self.record_text(&mut s, x, words);
         }
-        if self.results.len() > 1 {
-            s.push_str(&guidance(
-                &self.config,
-                self.results.iter().map(|x| &x.solution),
-            ));
+        if let Some(g) = self.guidance() {
+            s.push('\n');
+            s.push_str(&g);
         }
         s
+    }
+
+    /// Where several models answered: which answer to design to and why, and where they
+    /// disagree (the paragraph that ends the report).
+    pub fn guidance(&self) -> Option<String> {
+        (self.results.len() > 1).then(|| {
+            guidance(&self.config, self.results.iter().map(|x| &x.solution))
+                .trim_start_matches('\n')
+                .to_string()
+        })
     }
 
     /// One model's lines: its status, the jam, its own details and the time it took.

@@ -164,6 +164,8 @@ pub struct Rendered {
     pub read_off: Option<String>,
     /// The computed figure the pictures and files were made from.
     pub computed: Computed,
+    /// The pictures' size in px (width, height): what a PDF on paper is fitted from.
+    pub size_px: (u32, u32),
 }
 
 /// A computed chart: the figure's typed data, as its kind computed it.
@@ -348,6 +350,7 @@ pub(crate) fn render_with(scene: &Scene, formats: Formats, made: &Made) -> Resul
         cells,
         read_off,
         computed: Computed(chart),
+        size_px: (w, h),
     })
 }
 

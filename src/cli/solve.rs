@@ -81,12 +81,16 @@ pub fn run(a: &SolveArgs) -> Result<String> {
             .collect::<Vec<_>>(),
     );
     let bar = std::sync::OnceLock::new();
-    let answer = question.answer_observed(&|p| match p {
-        crate::ask::Progress::Started {
-            samples,
-            estimated_cpu_s,
-        } => drop(bar.set(super::progress::long_work(samples, estimated_cpu_s))),
-        crate::ask::Progress::Drawn(k) => bar.get().iter().for_each(|b| b.inc(k)),
+    // Ctrl-C ends the process: the bar never stops the work itself.
+    let answer = question.answer_observed(&|p| {
+        match p {
+            crate::ask::Progress::Started {
+                samples,
+                estimated_cpu_s,
+            } => drop(bar.set(super::progress::long_work(samples, estimated_cpu_s))),
+            crate::ask::Progress::Drawn(k) => bar.get().iter().for_each(|b| b.inc(k)),
+        }
+        crate::ask::Flow::Continue(())
     });
     bar.get().iter().for_each(|b| b.finish_and_clear());
     let answer: SolveAnswer = answer?;

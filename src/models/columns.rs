@@ -50,6 +50,61 @@ impl Pushes<'_> {
         self.columns.iter().any(|(_, v)| v.is_empty())
     }
 
+    /// The unit warnings of these pushes ([`SceneParams::unit_warnings`]), each kind once,
+    /// with the first push (its index) that shows it. Each warning is a threshold on one
+    /// parameter or a monotone pair of them, so the corners of the columns' box show every
+    /// warning any push shows: a box whose corners are all plausible (the usual case) costs
+    /// one pass over each column for its ends and no push is built.
+    pub fn unit_warnings(&self) -> Vec<(usize, String)> {
+        let n = self.len();
+        if self.is_empty() || self.validate(n).is_err() {
+            return Vec::new();
+        }
+        let resolved = self.resolved();
+        let ends: Vec<(f64, f64)> = self
+            .columns
+            .iter()
+            .map(|(_, v)| {
+                v.iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
+                        (lo.min(x), hi.max(x))
+                    })
+            })
+            .collect();
+        // More than 16 columns (no scene has as many parameters) are checked push by push.
+        let corner_warns = ends.len() > 16
+            || (0..1u32 << ends.len()).any(|corner| {
+                let mut p = self.base;
+                for (k, ((param, _), (lo, hi))) in self.columns.iter().zip(&ends).enumerate() {
+                    let v = if corner >> k & 1 == 0 { *lo } else { *hi };
+                    p = param.apply(p, v);
+                }
+                !p.unit_warnings().is_empty()
+            });
+        if !corner_warns {
+            return Vec::new();
+        }
+        let warnings = |i: usize| resolved.scene(self.base, i).unit_warnings();
+        // Each kind of warning by the key it opens with, at its first push.
+        let mut out: Vec<(usize, String)> = Vec::new();
+        let mut start = 0;
+        while start < n {
+            let seen: Vec<&str> = out.iter().map(|(_, w)| opening(w)).collect();
+            let next = (start..n)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .find_first(|&i| warnings(i).iter().any(|w| !seen.contains(&opening(w))));
+            let Some(i) = next else { break };
+            let new: Vec<String> = warnings(i)
+                .into_iter()
+                .filter(|w| !seen.contains(&opening(w)))
+                .collect();
+            out.extend(new.into_iter().map(|w| (i, w)));
+            start = i + 1;
+        }
+        out
+    }
+
     /// The columns with the fields each one sets looked up once: a map of 10^6 pushes looked
     /// each column's declaration up by name 10^6 times.
     fn resolved(&self) -> Resolved<'_> {
@@ -90,6 +145,12 @@ impl Pushes<'_> {
         }
         Ok(())
     }
+}
+
+/// A warning's key, the word it opens with: warnings of one kind at different pushes differ
+/// in their numbers only.
+fn opening(warning: &str) -> &str {
+    warning.split_whitespace().next().unwrap_or_default()
 }
 
 /// What a column sets in a push's scene.
@@ -469,6 +530,38 @@ impl<'a> ClosedForm<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The columns' box screens the pushes: a box whose corners are plausible says nothing; a
+    /// push that is a likely unit mistake is named at its index, each kind of warning once,
+    /// and a corner no push takes (a short palm only with a small disc) warns of nothing.
+    #[test]
+    fn unit_warnings_name_the_first_push_of_each_kind() {
+        let mu = [0.2, 3.0, 0.3, 4.0];
+        let radius = [10.0, 0.4, 0.3, 10.0];
+        let pushes = |columns| Pushes {
+            base: SceneParams::default(),
+            columns,
+        };
+        let (mu_p, r_p) = (
+            Param::named("mu").unwrap(),
+            Param::named("radius_mm").unwrap(),
+        );
+        let got = pushes(vec![(mu_p, &mu[..]), (r_p, &radius[..])]).unit_warnings();
+        let at: Vec<(usize, &str)> = got.iter().map(|(i, w)| (*i, opening(w))).collect();
+        assert_eq!(at, [(1, "mu_ground"), (1, "radius_mm")], "{got:?}");
+        let plain = [0.2, 0.3];
+        assert!(pushes(vec![(mu_p, &plain[..])]).unit_warnings().is_empty());
+        // Small discs on short palms: the corner (large disc, short palm) is no push's.
+        let (short, small) = ([5.0, 150.0], [4.0, 10.0]);
+        let l_p = Param::named("palm_length_mm").unwrap();
+        let paired = pushes(vec![(r_p, &small[..]), (l_p, &short[..])]).unit_warnings();
+        assert!(paired.is_empty(), "{paired:?}");
+        let crossed = [150.0, 5.0];
+        let shorter = pushes(vec![(r_p, &small[..]), (l_p, &crossed[..])]).unit_warnings();
+        assert_eq!(shorter.len(), 1);
+        assert_eq!(shorter[0].0, 1);
+        assert!(shorter[0].1.starts_with("palm_length_mm"), "{shorter:?}");
+    }
 
     /// A stop set before the work begins leaves every answer as it was; an unset one answers
     /// every push, the same answers as [`solve_into`].

@@ -3,7 +3,7 @@
 //! over the library's answer ([`crate::ask`]).
 
 use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
-use pyo3::exceptions::PyImportError;
+use pyo3::exceptions::{PyImportError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
@@ -28,6 +28,11 @@ impl Solution {
 
 #[pymethods]
 impl Solution {
+    /// Does not pickle: see [`super::unpicklable`].
+    fn __reduce__(&self) -> PyResult<()> {
+        Err(super::unpicklable("Solution"))
+    }
+
     /// The model that answered: `statics`, `min-norm` or `dynamics`.
     #[getter]
     fn model(&self) -> &'static str {
@@ -106,6 +111,23 @@ pub(super) struct Solutions {
     pub(super) inputs: Vec<(&'static str, Py<PyArrayDyn<f64>>)>,
     /// The scene every push starts from (the single values given).
     pub(super) base: SceneParams,
+    /// The scene's fields that differ from push to push (set by an array, or the push set by
+    /// a push ratio): `base` holds no answer's value of them.
+    pub(super) varying: Vec<&'static str>,
+}
+
+impl Solutions {
+    /// The scene's settings every push shares, as {key: value}: `base` without the fields the
+    /// arrays vary.
+    fn shared<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let dict = serde_to_python(py, &self.base, Lists::Plain)?.cast_into::<PyDict>()?;
+        for key in &self.varying {
+            if dict.contains(*key)? {
+                dict.del_item(*key)?;
+            }
+        }
+        Ok(dict)
+    }
 }
 
 #[pymethods]
@@ -151,15 +173,35 @@ impl Solutions {
         PyTuple::new(py, self.theta_jam_deg.bind(py).shape())
     }
 
-    /// The scene's settings: the single values given (and the defaults), then each keyword
-    /// given as an array, as float64 arrays.
+    /// The scene's settings: the single values given (and the defaults) that every push
+    /// shares, then each keyword given as an array, as float64 arrays.
     #[getter]
     fn inputs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let dict = serde_to_python(py, &self.base, Lists::Plain)?.cast_into::<PyDict>()?;
+        let dict = self.shared(py)?;
         for (key, a) in &self.inputs {
             dict.set_item(*key, a.bind(py))?;
         }
         Ok(dict)
+    }
+
+    /// Pickles as its arrays and the scene they start from (multiprocessing, joblib, Dask with
+    /// processes).
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let make = py.import("jamchart._jamchart")?.getattr("_solutions")?;
+        let inputs = PyDict::new(py);
+        for (key, a) in &self.inputs {
+            inputs.set_item(*key, a.bind(py))?;
+        }
+        let base = serde_json::to_string(&self.base).expect("a scene serialises");
+        let state = (
+            self.model.as_str(),
+            self.status_code.bind(py),
+            self.theta_jam_deg.bind(py),
+            self.x_jam_mm.bind(py),
+            inputs,
+            base,
+        );
+        Ok((make, state).into_pyobject(py)?.into_any())
     }
 
     fn __len__(&self, py: Python<'_>) -> usize {
@@ -171,8 +213,9 @@ impl Solutions {
             .unwrap_or(1)
     }
 
-    /// A pandas DataFrame, one row per push: the array inputs (broadcast), `status`,
-    /// `theta_jam_deg` and `x_jam_mm`. Needs pandas.
+    /// A pandas DataFrame, one row per push: the array inputs (broadcast), the settings every
+    /// push shares (`radius_mm`, `mass_kg`, ...), `status`, `theta_jam_deg` and `x_jam_mm`.
+    /// Needs pandas.
     fn to_pandas<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let pandas = py.import("pandas").map_err(|_| {
             PyImportError::new_err(
@@ -185,6 +228,14 @@ impl Solutions {
         for (key, a) in &self.inputs {
             let b = numpy.call_method1("broadcast_to", (a.bind(py), &shape))?;
             columns.set_item(*key, b.call_method0("ravel")?)?;
+        }
+        // The settings every push shares, one value down each column.
+        let n: usize = self.theta_jam_deg.bind(py).len();
+        for (key, value) in self.shared(py)?.iter() {
+            if !columns.contains(&key)? {
+                let full = numpy.call_method1("full", (n, value))?;
+                columns.set_item(key, full)?;
+            }
         }
         columns.set_item("status", self.status(py)?.call_method0("ravel")?)?;
         columns.set_item(
@@ -233,6 +284,11 @@ impl BoxAnswer {
 
 #[pymethods]
 impl BoxAnswer {
+    /// Does not pickle: see [`super::unpicklable`].
+    fn __reduce__(&self) -> PyResult<()> {
+        Err(super::unpicklable("BoxAnswer"))
+    }
+
     /// The model that answered.
     #[getter]
     fn model(&self) -> &'static str {
@@ -326,5 +382,135 @@ pub(super) fn shape_text(shape: &[usize]) -> String {
             let all: Vec<String> = dims.iter().map(usize::to_string).collect();
             format!("({})", all.join(", "))
         }
+    }
+}
+
+/// [`Solutions`] again from what its `__reduce__` gave: how a pickle is read.
+#[pyfunction]
+pub(super) fn _solutions(
+    model: &str,
+    status_code: Py<PyArrayDyn<u8>>,
+    theta_jam_deg: Py<PyArrayDyn<f64>>,
+    x_jam_mm: Py<PyArrayDyn<f64>>,
+    inputs: &Bound<'_, PyDict>,
+    base: &str,
+) -> PyResult<Solutions> {
+    let bad = |what: String| PyValueError::new_err(format!("not a pickled Solutions: {what}"));
+    let model = serde_json::from_value(serde_json::Value::String(model.into()))
+        .map_err(|e| bad(e.to_string()))?;
+    let base = serde_json::from_str(base).map_err(|e| bad(e.to_string()))?;
+    let mut arrays = Vec::new();
+    for (k, a) in inputs.iter() {
+        let key: String = k.extract()?;
+        let param = super::keywords::scene_param(&key).ok_or_else(|| bad(key.clone()))?;
+        arrays.push((param.as_str(), a.extract()?));
+    }
+    Ok(Solutions {
+        model,
+        status_code,
+        theta_jam_deg,
+        x_jam_mm,
+        varying: super::solve::varying(arrays.iter().map(|(k, _)| *k), false),
+        inputs: arrays,
+        base,
+    })
+}
+
+/// Several models' answers to one push (`solve(model="all")`): each model's [`Solution`], which
+/// to design to and why, and the answers side by side as a table.
+#[pyclass(frozen, module = "jamchart")]
+pub(super) struct Comparison {
+    /// The library's answer, of every model asked.
+    pub(super) answer: ask::PushAnswer,
+}
+
+impl Comparison {
+    /// Model `k`'s answer alone, as `solve(model=...)` gives it.
+    fn one(&self, k: usize) -> Solution {
+        let mut answer = self.answer.clone();
+        answer.results = vec![self.answer.results[k].clone()];
+        Solution { answer }
+    }
+}
+
+#[pymethods]
+impl Comparison {
+    /// Does not pickle: see [`super::unpicklable`].
+    fn __reduce__(&self) -> PyResult<()> {
+        Err(super::unpicklable("Comparison"))
+    }
+
+    /// The models that answered, in order: `statics`, `min-norm`, `dynamics`.
+    #[getter]
+    fn models(&self) -> Vec<&'static str> {
+        let results = &self.answer.results;
+        results.iter().map(|r| r.solution.model.as_str()).collect()
+    }
+
+    /// Each model's answer by its name, as `solve(model=NAME)` gives it.
+    #[getter]
+    fn solutions<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let dict = PyDict::new(py);
+        for (k, r) in self.answer.results.iter().enumerate() {
+            dict.set_item(r.solution.model.as_str(), Bound::new(py, self.one(k))?)?;
+        }
+        Ok(dict)
+    }
+
+    /// Which answer to design to and why (a slow push, a driven palm, a fast push), and where
+    /// the models disagree: the paragraph that ends the report.
+    #[getter]
+    fn guidance(&self) -> String {
+        self.answer.guidance().unwrap_or_default()
+    }
+
+    /// The scene answered, as a dict of its settings (TOML keys, their units).
+    #[getter]
+    fn inputs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        serde_to_python(py, &self.answer.inputs, Lists::Plain)
+    }
+
+    /// The whole answer as `jamchart solve --model all --format json` prints it.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        serde_to_python(py, &self.answer, Lists::Plain)
+    }
+
+    /// A pandas DataFrame, one row per model: `model`, `status`, `theta_jam_deg`, `x_jam_mm`
+    /// (NaN where a model gives none) and `elapsed_s`. Needs pandas.
+    fn to_pandas<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let pandas = py.import("pandas").map_err(|_| {
+            PyImportError::new_err(
+                "Comparison.to_pandas() needs pandas, which is not installed: pip install pandas",
+            )
+        })?;
+        let solutions = self.answer.results.iter().map(|r| &r.solution);
+        let columns = PyDict::new(py);
+        columns.set_item("model", self.models())?;
+        let status: Vec<&str> = solutions.clone().map(|s| s.status.as_str()).collect();
+        columns.set_item("status", status)?;
+        let nan = |v: Option<f64>| v.unwrap_or(f64::NAN);
+        let theta: Vec<f64> = solutions.clone().map(|s| nan(s.theta_jam_deg)).collect();
+        columns.set_item("theta_jam_deg", theta)?;
+        let x: Vec<f64> = solutions.clone().map(|s| nan(s.x_jam_mm)).collect();
+        columns.set_item("x_jam_mm", x)?;
+        let elapsed: Vec<f64> = solutions.map(|s| s.elapsed_s).collect();
+        columns.set_item("elapsed_s", elapsed)?;
+        pandas.call_method1("DataFrame", (columns,))
+    }
+
+    /// The command line's report, the settings named by their keywords, ending with which
+    /// answer to design to.
+    fn __str__(&self) -> String {
+        self.answer.text(Words::Keys)
+    }
+
+    fn __repr__(&self) -> String {
+        format!("jamchart.Comparison({})", self.answer.headline())
+    }
+
+    /// IPython shows the report, not the one-line repr.
+    fn _repr_pretty_(&self, p: &Bound<'_, PyAny>, _cycle: bool) -> PyResult<()> {
+        p.call_method1("text", (self.answer.text(Words::Keys),))?;
+        Ok(())
     }
 }

@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyBytes, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
 
 use super::convert::{Lists, to_python};
-use super::keywords::{error, scene_param};
+use super::keywords::{Distribution, Range, error, scene_param, tuple_refused};
 use crate::ask::{Keywords, RenderAnswer, RenderQuestion, Words};
 use crate::charts::{self, Formats, Rendered, SceneSource};
 use crate::settings;
@@ -23,6 +23,11 @@ pub(super) struct Chart {
 
 #[pymethods]
 impl Chart {
+    /// Does not pickle: see [`super::unpicklable`].
+    fn __reduce__(&self) -> PyResult<()> {
+        Err(super::unpicklable("Chart"))
+    }
+
     /// The scene's name (`universal`, or a scene file's stem).
     #[getter]
     fn name(&self) -> &str {
@@ -66,19 +71,34 @@ impl Chart {
 
     /// Writes the chart to `path`, by its extension: `.svg`, `.png`, `.pdf` (made from the
     /// SVG, text as outlines), or the data's `.json` / `.csv`. The file is replaced atomically.
-    fn save(&self, py: Python<'_>, path: PathBuf) -> PyResult<()> {
+    /// A PDF's page is the chart's size (1 px = 1 pt), or with `paper="a4"` or `"letter"` the
+    /// sheet, the chart fitted within a 12.7 mm margin (the CLI's `render --paper`).
+    #[pyo3(signature = (path, *, paper=None))]
+    fn save(&self, py: Python<'_>, path: PathBuf, paper: Option<&str>) -> PyResult<()> {
         let ext = path
             .extension()
             .and_then(|e| e.to_str())
             .unwrap_or_default()
             .to_ascii_lowercase();
+        let paper = match paper {
+            None => None,
+            Some(name) => Some(
+                name.parse::<charts::output::Paper>()
+                    .map_err(|e| PyValueError::new_err(format!("invalid paper = {name}: {e}")))?,
+            ),
+        };
+        if paper.is_some() && ext != "pdf" {
+            return Err(PyValueError::new_err(format!(
+                "paper is for a PDF, and {} is not one: give a path ending in .pdf",
+                path.display()
+            )));
+        }
         let svg = || self.rendered.svg.clone().unwrap_or_default();
         let bytes = match ext.as_str() {
             "svg" => svg(),
             "png" => self.rendered.png.clone().unwrap_or_default(),
             "pdf" => py
-                // The page is the chart's own size: no paper, so no size to fit.
-                .detach(|| charts::output::pdf(&svg(), (0, 0), None))
+                .detach(|| charts::output::pdf(&svg(), self.rendered.size_px, paper))
                 .map_err(PyValueError::new_err)?,
             e if e == self.rendered.data.extension => self.rendered.data.bytes.clone(),
             _ => {
@@ -146,7 +166,11 @@ pub(super) fn render(
     for (k, v) in keywords.into_iter().flat_map(|d| d.iter()) {
         let key: String = k.extract()?;
         match key.as_str() {
-            "read_off" | "set" if v.is_none() => continue,
+            "read_off" | "set" | "style" if v.is_none() => continue,
+            // The ink, a key of the scene file's top level: "colour" or "print" (greys).
+            "style" => {
+                given.0.insert(key, toml_of(&v)?);
+            }
             "read_off" => {
                 let mut table = toml::Table::new();
                 for (rk, rv) in v.cast::<PyDict>()?.iter() {
@@ -165,6 +189,9 @@ pub(super) fn render(
                 given.0.insert(key, toml::Value::Table(table));
             }
             k if scene_param(k).is_some() || settings::find(k).is_some() => {
+                if v.is_instance_of::<PyTuple>() {
+                    return Err(tuple_refused(k));
+                }
                 given.0.insert(key, toml_of(&v)?);
             }
             _ => {
@@ -197,6 +224,10 @@ fn toml_of(v: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
         toml::Value::Float(v.extract()?)
     } else if let Ok(s) = v.cast::<PyString>() {
         toml::Value::String(s.to_cow()?.into_owned())
+    } else if let Ok(d) = v.cast::<Distribution>() {
+        toml::Value::String(d.get().0.to_string())
+    } else if let Ok(r) = v.cast::<Range>() {
+        toml::Value::String(r.get().0.to_string())
     } else if v.is_instance_of::<PyList>() || v.is_instance_of::<PyTuple>() {
         let items: Vec<Bound<'_, PyAny>> = v.extract()?;
         toml::Value::Array(items.iter().map(toml_of).collect::<PyResult<_>>()?)
@@ -204,7 +235,7 @@ fn toml_of(v: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
         toml::Value::Float(x)
     } else {
         return Err(PyTypeError::new_err(format!(
-            "a scene's setting is a bool, number, str or list, not {}",
+            "a scene's setting is a bool, number, str, list, Range or distribution, not {}",
             v.get_type().name()?
         )));
     })

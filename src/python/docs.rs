@@ -6,6 +6,7 @@
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
+use crate::ask::Words;
 use crate::scene::Param;
 use crate::settings::{self, Decl, Kind};
 
@@ -82,7 +83,8 @@ fn declared(d: &'static Decl, values: &str) -> Keyword {
         [] => String::new(),
         keys => format!(" Sets {}.", keys.join(" and ")),
     };
-    let details = match d.details() {
+    // A setting's docs name the command line's flags; a Python user gives keywords.
+    let details = match Words::Keys.speak(&d.details()) {
         t if t.is_empty() => String::new(),
         t => format!("\n    {}", t.replace('\n', "\n    ")),
     };
@@ -97,7 +99,7 @@ fn declared(d: &'static Decl, values: &str) -> Keyword {
         entry: format!(
             "{} : {ty}, default {shown_default}\n    {}{unit}{valid}{sets}{details}",
             d.key,
-            d.summary()
+            Words::Keys.speak(&d.summary())
         ),
     }
 }
@@ -105,7 +107,7 @@ fn declared(d: &'static Decl, values: &str) -> Keyword {
 /// What a scene parameter of `solve` takes.
 const SCENE_VALUES: &str = "float or array_like";
 /// ... and one that takes a range or a distribution too.
-const UNCERTAIN_VALUES: &str = "float, array_like, (low, high) or Distribution";
+const UNCERTAIN_VALUES: &str = "float, array_like, Range or Distribution";
 
 /// The scene's parameters as keywords (`mu` ... `palm_offset_mm`, `push_ratio`).
 fn scene_keywords(arrays: bool) -> Vec<Keyword> {
@@ -116,7 +118,7 @@ fn scene_keywords(arrays: bool) -> Vec<Keyword> {
             let values = match (arrays, d.uncertain) {
                 (true, true) => UNCERTAIN_VALUES,
                 (true, false) => SCENE_VALUES,
-                (false, true) => "float, (low, high) or Distribution",
+                (false, true) => "float, Range or Distribution",
                 (false, false) => "float",
             };
             let mut k = declared(d, values);
@@ -232,6 +234,16 @@ fn render_keywords() -> Vec<Keyword> {
             ),
             "Optional[Mapping[str, Any]]",
         ),
+        typed(
+            own(
+                "style",
+                "{\"colour\", \"print\"} or None",
+                Some("None"),
+                "The ink: \"colour\", or \"print\" in greys and line styles for a black-and-white \
+                 printer; None keeps the scene's (render --set style=print).",
+            ),
+            "Optional[Literal[\"colour\", \"print\"]]",
+        ),
     ];
     all.extend(
         scene_keywords(false)
@@ -289,9 +301,25 @@ fn vlocator_keywords() -> Vec<Keyword> {
     all.extend(
         settings::locator_family()
             .filter(|d| d.flag.is_some())
-            .map(|d| declared(d, "float, (low, high) or Distribution")),
+            .map(|d| declared(d, "float, Range or Distribution")),
     );
     all
+}
+
+/// The guide's notebook session (between its `<!-- session -->` marks), the code alone: what
+/// `help(jamchart)` ends with.
+#[pyfunction]
+pub(super) fn _session() -> String {
+    let guide = include_str!("../guide.md");
+    let block = guide
+        .split_once("<!-- session -->")
+        .and_then(|(_, rest)| rest.split_once("<!-- /session -->"))
+        .map_or("", |(block, _)| block);
+    let code = block
+        .trim()
+        .trim_start_matches("```python")
+        .trim_end_matches("```");
+    code.trim().to_string()
 }
 
 /// How a function of the package is typed in its stub.
@@ -356,7 +384,19 @@ pub(super) const FUNCTIONS: &[Function] = &[
                     "Solutions",
                     "  # type: ignore[overload-overlap]",
                 ),
-                (&[], "BoxAnswer", ""),
+                (&[], "BoxAnswer", "  # type: ignore[overload-overlap]"),
+                (
+                    &[
+                        ("_Values", "float"),
+                        ("_UncertainValues", "float"),
+                        (
+                            "Literal[\"statics\", \"min-norm\", \"dynamics\"]",
+                            "Literal[\"all\"]",
+                        ),
+                    ],
+                    "Comparison",
+                    "",
+                ),
             ],
         },
     },
@@ -432,8 +472,8 @@ const SOLVE: &str = "Where a push jams: theta_jam (deg) and x_jam (mm) of one sc
     Every keyword is a setting of `jamchart settings`, under its TOML key; one left out keeps \
     its default (the paper's scene). A scene parameter takes a number, an array (all arrays \
     broadcast together by numpy's rules; the answers have their shape and are computed in \
-    parallel with the GIL released), a range (low, high) (the answer's interval over it, as \
-    `solve --mu 0.12:0.3`) or a distribution (jamchart.normal, uniform, lognormal: \
+    parallel with the GIL released), a Range(low, high) or its text \"low:high\" (the answer's interval over \
+    it, as `solve --mu 0.12:0.3`) or a distribution (jamchart.normal, uniform, lognormal: \
     probabilities and quantiles as well). The models' settings take one value each.\n\n\
     Returns\n-------\n\
     Solution\n    For single values: status (str, one of jamchart.STATUSES), theta_jam_deg and \
@@ -444,7 +484,10 @@ const SOLVE: &str = "Where a push jams: theta_jam (deg) and x_jam (mm) of one sc
     the broadcast inputs, status_code (uint8 indices into STATUSES), to_pandas().\n\
     BoxAnswer\n    For a range or distribution: theta_jam_deg and x_jam_mm as (min, max), \
     statuses, probability and quantiles, record, to_dict(); repr() is the one-line verdict, \
-    str() the report.\n\n\
+    str() the report.\n\
+    Comparison\n    For model=\"all\" on one scene: solutions (each model's Solution by name), \
+    guidance (which answer to design to, and why), to_pandas() (one row per model), str() the \
+    report.\n\n\
     Raises\n------\n\
     ValueError\n    A value outside its valid range (the message names the keyword, the value \
     and the valid values), arrays that do not broadcast.\n\

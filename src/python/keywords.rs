@@ -1,5 +1,5 @@
 //! A call's keywords as the library's [`Keywords`]: numbers, names, switches and lists as
-//! TOML values, a range `(low, high)` or a distribution as the command line's text, and the
+//! TOML values, a `Range` or a distribution as the command line's text, and the
 //! scene's parameters given as numpy arrays set apart for the array entry.
 
 use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
@@ -43,8 +43,8 @@ fn unknown(function: &str, key: &str, nearest: Option<&str>) -> PyErr {
     ))
 }
 
-/// A range or a distribution of one input, e.g. `jamchart.normal(0.2, 0.03)`: what `solve`
-/// answers with an interval, probabilities and quantiles.
+/// A distribution of one input, e.g. `jamchart.normal(0.2, 0.03)`: what `solve` answers with
+/// an interval, probabilities and quantiles.
 #[pyclass(frozen, module = "jamchart", name = "Distribution")]
 pub(super) struct Distribution(pub(super) Uncertain);
 
@@ -70,36 +70,137 @@ impl Distribution {
     }
 
     /// The value below which a fraction `p` in [0, 1] of the input lies (the inverse CDF).
-    fn quantile(&self, p: f64) -> f64 {
-        self.0.quantile(p)
+    fn quantile(&self, p: f64) -> PyResult<f64> {
+        if !(0.0..=1.0).contains(&p) {
+            return Err(PyValueError::new_err(format!(
+                "quantile: p = {} is not a probability; give a number in [0, 1]",
+                settings::number_text(p)
+            )));
+        }
+        Ok(self.0.quantile(p))
     }
 
     /// The fraction of the input at or below `x` (the CDF).
-    fn cdf(&self, x: f64) -> f64 {
-        self.0.cdf(x)
+    fn cdf(&self, x: f64) -> PyResult<f64> {
+        if x.is_nan() {
+            return Err(PyValueError::new_err("cdf: x is NaN; give a number"));
+        }
+        Ok(self.0.cdf(x))
+    }
+
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let (name, a, b) = match self.0 {
+            Uncertain::Uniform { lo, hi } => ("uniform", lo, hi),
+            Uncertain::Normal { mean, sd } => ("normal", mean, sd),
+            Uncertain::LogNormal { median, sigma } => ("lognormal", median, sigma),
+            u => unreachable!("a Distribution holds a distribution, not {u}"),
+        };
+        let make = py.import("jamchart._jamchart")?.getattr(name)?;
+        Ok((make, (a, b)).into_pyobject(py)?.into_any())
+    }
+}
+
+/// `u`, refused (`ValueError` naming `made`, e.g. `jamchart.normal(0.2, -1)`) where its numbers
+/// cannot describe any input.
+fn checked(u: Uncertain, made: &str) -> PyResult<Uncertain> {
+    match u.shape_error() {
+        None => Ok(u),
+        Some(why) => Err(PyValueError::new_err(format!("{made}: {why}"))),
     }
 }
 
 /// Normal with mean `mean` and standard deviation `sd`, truncated at 0 (a friction, a push or
 /// a mass is never negative): `solve(mu=normal(0.2, 0.03))`, the CLI's `--mu normal(0.2,0.03)`.
 #[pyfunction]
-pub(super) fn normal(mean: f64, sd: f64) -> Distribution {
-    Distribution(Uncertain::Normal { mean, sd })
+pub(super) fn normal(mean: f64, sd: f64) -> PyResult<Distribution> {
+    let t = settings::number_text;
+    let u = Uncertain::Normal { mean, sd };
+    Ok(Distribution(checked(
+        u,
+        &format!("jamchart.normal({}, {})", t(mean), t(sd)),
+    )?))
 }
 
 /// Uniform on [`low`, `high`]: `solve(mu=uniform(0.12, 0.3))`, the CLI's
-/// `--mu uniform(0.12,0.3)`. A tuple `(low, high)` is a range: its worst case, no
-/// probabilities.
+/// `--mu uniform(0.12,0.3)`. For the worst case over the values, without probabilities, give
+/// a `Range`.
 #[pyfunction]
-pub(super) fn uniform(low: f64, high: f64) -> Distribution {
-    Distribution(Uncertain::Uniform { lo: low, hi: high })
+pub(super) fn uniform(low: f64, high: f64) -> PyResult<Distribution> {
+    let t = settings::number_text;
+    let u = Uncertain::Uniform { lo: low, hi: high };
+    Ok(Distribution(checked(
+        u,
+        &format!("jamchart.uniform({}, {})", t(low), t(high)),
+    )?))
 }
 
 /// Lognormal: ln X is normal with mean ln(`median`) and standard deviation `sigma`:
 /// `solve(force_n=lognormal(40, 0.1))`, the CLI's `--force lognormal(40,0.1)`.
 #[pyfunction]
-pub(super) fn lognormal(median: f64, sigma: f64) -> Distribution {
-    Distribution(Uncertain::LogNormal { median, sigma })
+pub(super) fn lognormal(median: f64, sigma: f64) -> PyResult<Distribution> {
+    let t = settings::number_text;
+    let u = Uncertain::LogNormal { median, sigma };
+    Ok(Distribution(checked(
+        u,
+        &format!("jamchart.lognormal({}, {})", t(median), t(sigma)),
+    )?))
+}
+
+/// Every value from `low` to `high`, none more likely: `solve(mu=Range(0.12, 0.3))` answers the
+/// worst case over them (an interval, no probabilities), as the CLI's `--mu 0.12:0.3` (the text
+/// `"0.12:0.3"` is the same range).
+#[pyclass(frozen, module = "jamchart", name = "Range")]
+pub(super) struct Range(pub(super) Uncertain);
+
+#[pymethods]
+impl Range {
+    #[new]
+    fn new(low: f64, high: f64) -> PyResult<Self> {
+        let t = settings::number_text;
+        let u = Uncertain::Range { lo: low, hi: high };
+        Ok(Range(checked(
+            u,
+            &format!("jamchart.Range({}, {})", t(low), t(high)),
+        )?))
+    }
+
+    /// The low end.
+    #[getter]
+    fn low(&self) -> f64 {
+        self.0.ends().0
+    }
+
+    /// The high end.
+    #[getter]
+    fn high(&self) -> f64 {
+        self.0.ends().1
+    }
+
+    /// The value a point answer keeps: the midpoint.
+    #[getter]
+    fn nominal(&self) -> f64 {
+        self.0.nominal()
+    }
+
+    fn __repr__(&self) -> String {
+        let t = settings::number_text;
+        let (lo, hi) = self.0.ends();
+        format!("jamchart.Range({}, {})", t(lo), t(hi))
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other.cast::<Range>().is_ok_and(|o| o.get().0 == self.0)
+    }
+
+    fn __hash__(&self) -> u64 {
+        let (lo, hi) = self.0.ends();
+        lo.to_bits().rotate_left(17) ^ hi.to_bits()
+    }
+
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let make = py.get_type::<Range>();
+        Ok((make, self.0.ends()).into_pyobject(py)?.into_any())
+    }
 }
 
 /// What the keywords of one call give: the library's keywords, and the scene's parameters
@@ -167,7 +268,7 @@ enum Value<'py> {
 }
 
 /// The value of keyword `key`: a number (a numpy scalar too), a name, True or False, a range
-/// `(low, high)`, a distribution, the CLI's text (`"0.12:0.3"`, `"normal(0.2,0.03)"`), or
+/// `Range(low, high)`, a distribution, the CLI's text (`"0.12:0.3"`, `"normal(0.2,0.03)"`), or
 /// where `array` (a scene parameter of the array entry) a numpy array of real numbers.
 fn value<'py>(
     py: Python<'py>,
@@ -196,15 +297,11 @@ fn value<'py>(
     if let Ok(d) = v.cast::<Distribution>() {
         return one(toml::Value::String(d.get().0.to_string()));
     }
-    if let Ok(t) = v.cast::<PyTuple>() {
-        let pair: Option<(f64, f64)> = t.extract().ok();
-        let Some((lo, hi)) = pair else {
-            return Err(PyValueError::new_err(format!(
-                "{key}: a tuple is a range (low, high) of two numbers; give an array (a list or \
-                 numpy array) for many values"
-            )));
-        };
-        return one(toml::Value::String(Uncertain::Range { lo, hi }.to_string()));
+    if let Ok(r) = v.cast::<Range>() {
+        return one(toml::Value::String(r.get().0.to_string()));
+    }
+    if v.is_instance_of::<PyTuple>() {
+        return Err(tuple_refused(key));
     }
     if let Ok(s) = v.cast::<PyString>() {
         return one(toml::Value::String(s.to_cow()?.into_owned()));
@@ -221,6 +318,16 @@ fn value<'py>(
             "{key} takes a single value, not an array"
         ))),
     }
+}
+
+/// The `ValueError` of a tuple given for `key`: numpy reads `(0.12, 0.3)` as two values, a
+/// range needs saying so.
+pub(super) fn tuple_refused(key: &str) -> PyErr {
+    PyValueError::new_err(format!(
+        "{key}: a tuple could mean two values or a range; give jamchart.Range(LOW, HIGH) (or the \
+         text \"LOW:HIGH\") for every value between, a list or numpy array for those values \
+         alone"
+    ))
 }
 
 /// Most dimensions of an input array: what the numpy crate reads.

@@ -33,9 +33,11 @@ fn jamchart_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CHART_FORMAT", crate::charts::CHART_FORMAT)?;
     let classes = [
         class::<answers::BoxAnswer>(m)?,
+        class::<answers::Comparison>(m)?,
         class::<charts::Chart>(m)?,
         class::<reports::DesignAnswer>(m)?,
         class::<keywords::Distribution>(m)?,
+        class::<keywords::Range>(m)?,
         class::<answers::Solution>(m)?,
         class::<answers::Solutions>(m)?,
         class::<reports::VlocatorAnswer>(m)?,
@@ -45,8 +47,25 @@ fn jamchart_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(docs::_signature, m)?)?;
     m.add_function(wrap_pyfunction!(docs::_doc, m)?)?;
     m.add_function(wrap_pyfunction!(docs::_stub, m)?)?;
+    m.add_function(wrap_pyfunction!(answers::_solutions, m)?)?;
+    m.add_function(wrap_pyfunction!(docs::_session, m)?)?;
     m.add("__all__", docs::all(&classes))?;
     Ok(())
+}
+
+/// The `TypeError` of pickling answer class `name`: it holds the library's whole answer
+/// (models' details, a chart's computed figure), which has no form to be read back from; what
+/// crosses between processes is its dict, its numbers, or an array answer (`Solutions`,
+/// `Distribution` and `Range` pickle).
+fn unpicklable(name: &str) -> PyErr {
+    let instead = match name {
+        "Chart" => "its .svg or .png bytes or its .data",
+        _ => "its .to_dict() (dicts, lists and numbers, the command line's JSON)",
+    };
+    pyo3::exceptions::PyTypeError::new_err(format!(
+        "a jamchart.{name} does not pickle: return {instead} or the numbers you need from a \
+         worker process; array answers (jamchart.Solutions) pickle"
+    ))
 }
 
 /// Adds class `T` to the module; its Python name.
@@ -73,6 +92,16 @@ __version__: str
 STATUSES: List[str]
 CHART_FORMAT: str
 
+class Range:
+    """Every value from low to high, none more likely: the worst case over them."""
+    def __init__(self, low: float, high: float) -> None: ...
+    @property
+    def low(self) -> float: ...
+    @property
+    def high(self) -> float: ...
+    @property
+    def nominal(self) -> float: ...
+
 class Distribution:
     """A distribution of one input: normal, uniform or lognormal."""
     @property
@@ -82,8 +111,8 @@ class Distribution:
 
 _Array = Union[npt.NDArray[Any], List[float], List[List[float]]]
 _Values = Union[float, _Array]
-_Uncertain = Union[float, Tuple[float, float], Distribution, str]
-_UncertainValues = Union[float, _Array, Tuple[float, float], Distribution, str]
+_Uncertain = Union[float, Range, Distribution, str]
+_UncertainValues = Union[float, _Array, Range, Distribution, str]
 
 class Solution:
     """One push's answer."""
@@ -140,6 +169,19 @@ class BoxAnswer:
     def record(self) -> Dict[str, Any]: ...
     def to_dict(self) -> Dict[str, Any]: ...
 
+class Comparison:
+    """Every model's answer to one push (solve(model="all")), and which to design to."""
+    @property
+    def models(self) -> List[str]: ...
+    @property
+    def solutions(self) -> Dict[str, Solution]: ...
+    @property
+    def guidance(self) -> str: ...
+    @property
+    def inputs(self) -> Dict[str, Any]: ...
+    def to_dict(self) -> Dict[str, Any]: ...
+    def to_pandas(self) -> Any: ...
+
 class _Report:
     """An answer whose JSON document's keys are its attributes."""
     @property
@@ -169,5 +211,7 @@ class Chart:
     def data(self) -> Any: ...
     @property
     def data_format(self) -> str: ...
-    def save(self, path: Union[str, "os.PathLike[str]"]) -> None: ...
+    def save(
+        self, path: Union[str, "os.PathLike[str]"], *, paper: Optional[Literal["a4", "letter"]] = None
+    ) -> None: ...
 "#;

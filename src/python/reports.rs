@@ -7,7 +7,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::convert::{Lists, to_python};
-use super::keywords::{self, error, refused};
+use super::keywords::{self, refused};
 use crate::ask::{self, DesignQuestion, VlocatorQuestion, Words};
 
 /// A Python class over a library answer: each top-level field of its serde form an attribute
@@ -35,6 +35,11 @@ macro_rules! answer_class {
 
         #[pymethods]
         impl $name {
+            /// Does not pickle: see [`super::unpicklable`].
+            fn __reduce__(&self) -> PyResult<()> {
+                Err(super::unpicklable(stringify!($name)))
+            }
+
             fn __getattr__<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
                 match self.document.get(name) {
                     Some(v) => to_python(py, v, Lists::Plain),
@@ -109,7 +114,8 @@ pub(super) fn design(
     let question =
         DesignQuestion::from_keywords(given.keywords).map_err(|e| refused("design", e))?;
     super::solve::warn(py, question.warnings())?;
-    let answer = py.detach(|| question.answer()).map_err(error)?;
+    // Other threads run meanwhile; Ctrl-C is raised once the answer (seconds) is in.
+    let answer = super::solve::watched(py, |_| question.answer())?;
     Ok(DesignAnswer::new(answer))
 }
 
@@ -124,6 +130,7 @@ pub(super) fn vlocator(
     let question =
         VlocatorQuestion::from_keywords(given.keywords).map_err(|e| refused("vlocator", e))?;
     super::solve::warn(py, question.warnings())?;
-    let answer = py.detach(|| question.answer()).map_err(error)?;
+    // Other threads run meanwhile; Ctrl-C is raised once the answer (seconds) is in.
+    let answer = super::solve::watched(py, |_| question.answer())?;
     Ok(VlocatorAnswer::new(answer))
 }

@@ -13,9 +13,9 @@ use pyo3::exceptions::{PyUserWarning, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use super::answers::{BoxAnswer, Solution, Solutions, shape_text};
+use super::answers::{BoxAnswer, Comparison, Solution, Solutions, shape_text};
 use super::keywords::{self, error, refused};
-use crate::ask::{SolveAnswer, SolveQuestion, Words};
+use crate::ask::{Flow, SolveAnswer, SolveQuestion, Words};
 use crate::models::ModelSpec;
 use crate::models::columns::{self, Answers, Finished, Pushes};
 use crate::scene::Param;
@@ -47,12 +47,29 @@ pub(super) fn solve<'py>(
     SolveQuestion::refuse_two_pushes(&keys).map_err(error)?;
     let question = SolveQuestion::from_keywords(given.keywords).map_err(|e| refused("solve", e))?;
     let [model] = question.models[..] else {
-        return Err(PyValueError::new_err(
-            "jamchart.solve answers one model a call: give model=\"statics\", \"min-norm\" or \
-             \"dynamics\"",
-        ));
+        // Every model: one scene's answers side by side, and which to design to.
+        if !question.uncertain.is_empty() || !given.arrays.is_empty() {
+            return Err(PyValueError::new_err(
+                "model=\"all\" compares the models on one scene: give single values, or call \
+                 solve once per model (\"statics\", \"min-norm\", \"dynamics\") for arrays, \
+                 ranges and distributions",
+            ));
+        }
+        warn(py, question.warnings(Words::Keys))?;
+        let SolveAnswer::Push(answer) = watched(py, |_| question.answer())? else {
+            unreachable!("a question without ranges is one push")
+        };
+        return Ok(Bound::new(py, Comparison { answer: *answer })?.into_any());
     };
-    warn(py, question.warnings(Words::Keys))?;
+    // An array call's scene warnings are its pushes' (`solve_arrays`): the scene the arrays
+    // start from holds defaults where they give values.
+    match given.arrays.is_empty() {
+        true => warn(py, question.warnings(Words::Keys))?,
+        false => warn(
+            py,
+            question.unused_warning(Words::Keys).into_iter().collect(),
+        )?,
+    }
     if !question.uncertain.is_empty() {
         if let Some((p, _)) = given.arrays.first() {
             return Err(PyValueError::new_err(format!(
@@ -61,8 +78,8 @@ pub(super) fn solve<'py>(
                 p.as_str()
             )));
         }
-        // Sampled answers take a while: other threads run meanwhile.
-        let SolveAnswer::Box(answer) = py.detach(|| question.answer()).map_err(error)? else {
+        // Sampled answers take a while: other threads run meanwhile, Ctrl-C stops them.
+        let SolveAnswer::Box(answer) = answer_box(py, &question)? else {
             unreachable!("a question with ranges is answered over its box")
         };
         return Ok(Bound::new(py, BoxAnswer { answer })?.into_any());
@@ -101,6 +118,12 @@ fn solve_arrays<'py>(
     spec: &ModelSpec,
 ) -> PyResult<Solutions> {
     let shape = broadcast_shape(arrays)?;
+    // Before anything is copied or allocated: the answers (a status byte and two float64)
+    // and a broadcast copy of each array, per push.
+    let count: f64 = shape.iter().map(|&d| d as f64).product();
+    let names: Vec<&str> = arrays.iter().map(|(p, _)| p.as_str()).collect();
+    let per_push = 17 + 8 * arrays.len() as u64;
+    crate::limits::check_pushes(&names.join(", "), count, per_push, spec).map_err(error)?;
     let numpy = py.import("numpy")?;
     // Each array as it is where it has the answers' shape (no copy), broadcast where not.
     let mut held: Vec<(Param, PyReadonlyArrayDyn<'py, f64>)> = Vec::new();
@@ -127,6 +150,11 @@ fn solve_arrays<'py>(
         base: question.config.scene,
         columns,
     };
+    let warnings = pushes
+        .unit_warnings()
+        .into_iter()
+        .map(|(i, w)| format!("{w} (the first such push: index {})", index_text(i, &shape)));
+    warn(py, warnings.collect())?;
     // SAFETY: the arrays are left unset (calloc's pass to zero them cost as much as a tenth of
     // a closed-form map): `answer_watched` writes every element, and on any error or
     // interrupt the `?` below drops them before Python sees them.
@@ -160,6 +188,10 @@ fn solve_arrays<'py>(
             .iter()
             .map(|(p, a)| (p.as_str(), a.clone().unbind()))
             .collect(),
+        varying: varying(
+            arrays.iter().map(|(p, _)| p.as_str()),
+            late.iter().any(|(p, _)| *p == Param::PushRatio),
+        ),
         base: question.config.scene,
     })
 }
@@ -172,13 +204,31 @@ fn answer_watched(py: Python<'_>, spec: &ModelSpec, pushes: &Pushes, out: Answer
             .detach(|| columns::solve_into(spec, pushes, out))
             .map_err(error);
     }
+    match watched(py, |stop| {
+        columns::solve_into_until(spec, pushes, out, stop)
+    })? {
+        Finished::All => Ok(()),
+        Finished::Stopped { answered } => Err(PyValueError::new_err(format!(
+            "the map stopped after {answered} of {} pushes",
+            pushes.len()
+        ))),
+    }
+}
+
+/// Runs `work` with the GIL released on a thread of its own while this one looks for Ctrl-C
+/// every [`POLL`]: on Ctrl-C, `stop` is set (work that looks at it ends within a chunk) and the
+/// `KeyboardInterrupt` is raised once the work has returned. Other Python threads run meanwhile.
+pub(super) fn watched<T: Send>(
+    py: Python<'_>,
+    work: impl FnOnce(&AtomicBool) -> crate::Result<T> + Send,
+) -> PyResult<T> {
     let stop = AtomicBool::new(false);
     let (done, interrupt) = py.detach(|| {
         std::thread::scope(|s| {
             let (tx, rx) = mpsc::channel();
             let stop = &stop;
             s.spawn(move || {
-                let _ = tx.send(columns::solve_into_until(spec, pushes, out, stop));
+                let _ = tx.send(work(stop));
             });
             let mut interrupt: Option<PyErr> = None;
             loop {
@@ -194,7 +244,7 @@ fn answer_watched(py: Python<'_>, spec: &ModelSpec, pushes: &Pushes, out: Answer
                     Err(mpsc::RecvTimeoutError::Disconnected) => {
                         return (
                             Err(crate::error::Error::Defect(
-                                "the map's thread ended without an answer".into(),
+                                "the work's thread ended without an answer".into(),
                             )),
                             interrupt,
                         );
@@ -206,12 +256,53 @@ fn answer_watched(py: Python<'_>, spec: &ModelSpec, pushes: &Pushes, out: Answer
     if let Some(e) = interrupt {
         return Err(e);
     }
-    match done.map_err(error)? {
-        Finished::All => Ok(()),
-        Finished::Stopped { answered } => Err(PyValueError::new_err(format!(
-            "the map stopped after {answered} of {} pushes",
-            pushes.len()
-        ))),
+    done.map_err(error)
+}
+
+/// `question`'s answer over its box, watched for Ctrl-C ([`watched`]): a Monte Carlo stops
+/// within a chunk of samples per thread.
+fn answer_box(py: Python<'_>, question: &SolveQuestion) -> PyResult<SolveAnswer> {
+    watched(py, |stop| {
+        question.answer_observed(&|_| match stop.load(Ordering::Relaxed) {
+            true => Flow::Break(()),
+            false => Flow::Continue(()),
+        })
+    })
+}
+
+/// The scene's fields that the arrays `keys` vary from push to push: the fields each sets,
+/// and the push where a push ratio sets it (an array of them, or one applied after a mass
+/// array: `late`).
+pub(super) fn varying<'a>(keys: impl Iterator<Item = &'a str>, late: bool) -> Vec<&'static str> {
+    let mut out: Vec<&'static str> = Vec::new();
+    for param in keys.filter_map(keywords::scene_param) {
+        match param {
+            Param::PushRatio => out.push("force_n"),
+            p => out.extend(p.fields().0),
+        }
+    }
+    if late {
+        out.push("force_n");
+    }
+    out
+}
+
+/// Flat index `i` of an array of `shape` as numpy writes its multi-index: `(0, 3)`, `3`.
+fn index_text(i: usize, shape: &[usize]) -> String {
+    let mut rest = i;
+    let mut index: Vec<String> = shape
+        .iter()
+        .rev()
+        .map(|&d| {
+            let k = rest % d.max(1);
+            rest /= d.max(1);
+            k.to_string()
+        })
+        .collect();
+    index.reverse();
+    match index.len() {
+        1 => index.remove(0),
+        _ => format!("({})", index.join(", ")),
     }
 }
 

@@ -119,6 +119,7 @@ fn library_refusal(e: &Error) -> Response {
         Fault::Input => StatusCode::UNPROCESSABLE_ENTITY,
         Fault::Cost => StatusCode::PAYLOAD_TOO_LARGE,
         Fault::Io | Fault::Internal => StatusCode::INTERNAL_SERVER_ERROR,
+        Fault::Stopped => StatusCode::REQUEST_TIMEOUT,
     };
     refused(status, e.refusal())
 }

@@ -23,7 +23,7 @@
 
 use serde::Serialize;
 
-use super::UncertainSet;
+use super::{Flow, UncertainSet};
 use crate::error::{Error, Result};
 use crate::models::{self, ModelSpec};
 use crate::scene::SceneParams;
@@ -126,6 +126,21 @@ impl DistQuestion {
                 self.samples,
                 format!("the Monte Carlo sample count must be in [1, {MAX_SAMPLES}]"),
             ));
+        }
+        for (key, n) in [
+            ("quantiles", self.quantiles.len()),
+            ("before_mm", self.before_mm.len()),
+        ] {
+            if n > crate::limits::MAX_PROBES {
+                return Err(Error::invalid(
+                    key,
+                    format!("{n} values"),
+                    format!(
+                        "give at most {} (a chart of the distribution reads more)",
+                        crate::limits::MAX_PROBES
+                    ),
+                ));
+            }
         }
         if let Some(q) = self.quantiles.iter().find(|q| !(**q > 0.0 && **q < 1.0)) {
             return Err(Error::invalid("quantiles", q, "each must lie in (0, 1)"));
@@ -320,7 +335,7 @@ pub fn monte_carlo(
     set: &UncertainSet,
     ask: &DistQuestion,
 ) -> Result<DistAnswer> {
-    monte_carlo_observed(spec, p, set, ask, &|_| {})
+    monte_carlo_observed(spec, p, set, ask, &|_| Flow::Continue(()))
 }
 
 /// What a Monte Carlo reports as it goes, for a progress bar.
@@ -337,21 +352,26 @@ pub enum Progress {
     Drawn(u64),
 }
 
-/// [`monte_carlo`], telling `progress` its estimate once accepted and each chunk as it is done.
+/// [`monte_carlo`], telling `progress` its estimate once accepted and each chunk as it is done;
+/// where `progress` answers [`Flow::Break`], the draws stop within a chunk per thread and the
+/// answer is [`Error::Stopped`](crate::error::Error::Stopped).
 pub(crate) fn monte_carlo_observed(
     spec: &ModelSpec,
     p: &SceneParams,
     set: &UncertainSet,
     ask: &DistQuestion,
-    progress: &(dyn Fn(Progress) + Sync),
+    progress: &(dyn Fn(Progress) -> Flow + Sync),
 ) -> Result<DistAnswer> {
     ask.validate()?;
     let per = cost_per_sample(spec, p, set)?;
     crate::limits::check_samples("samples", ask.samples, per)?;
-    progress(Progress::Started {
+    let started = progress(Progress::Started {
         samples: ask.samples,
         estimated_cpu_s: crate::limits::sampled_cpu_s(ask.samples, per),
     });
+    if started.is_break() {
+        return Err(crate::error::Error::Stopped);
+    }
     let n = ask.samples;
     let xs = super::sorted_samples(
         set,

@@ -273,3 +273,32 @@ fn a_quantile_beyond_every_position_is_said_so_not_infinite() {
         .flat_map(|b| [b.probability.value, b.probability.lo]);
     assert!(numbers.chain(probabilities).all(f64::is_finite), "{d:?}");
 }
+
+/// An observer that answers Break stops the draws: no answer, the error says it was asked,
+/// and the chunks after the stop are not drawn.
+#[test]
+fn monte_carlo_stops_when_its_observer_says_so() {
+    use std::sync::atomic::{AtomicU64, Ordering};
+    let (p, set) = shaft();
+    let drawn = AtomicU64::new(0);
+    let stop_after = 4 * 1024;
+    let got = dist::monte_carlo_observed(
+        &jamchart::models::ModelSpec::Statics,
+        &p,
+        &set,
+        &ask(1_000_000),
+        &|progress| {
+            if let dist::Progress::Drawn(k) = progress {
+                drawn.fetch_add(k, Ordering::Relaxed);
+            }
+            match drawn.load(Ordering::Relaxed) >= stop_after {
+                true => jamchart::uncertain::Flow::Break(()),
+                false => jamchart::uncertain::Flow::Continue(()),
+            }
+        },
+    );
+    assert!(matches!(got, Err(jamchart::Error::Stopped)), "{got:?}");
+    // Each thread finishes the chunk it had begun.
+    let threads = rayon::current_num_threads() as u64;
+    assert!(drawn.load(Ordering::Relaxed) <= stop_after + 2 * threads * 1024);
+}

@@ -49,6 +49,10 @@ pub(crate) use table::take;
 #[cfg(test)]
 pub(crate) mod shaft;
 
+/// What an observer of long work ([`dist::Progress`]) answers: go on, or stop (the work then
+/// ends with [`Error::Stopped`] within one chunk per thread).
+pub type Flow = std::ops::ControlFlow<()>;
+
 /// One input's uncertainty: a point, a range (worst case) or a distribution.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
@@ -216,6 +220,64 @@ impl Uncertain {
         }
     }
 
+    /// What is wrong with it whatever input it describes, in words: a number that is not
+    /// finite, a reversed or empty range, a spread or centre that is not above 0. `check`
+    /// refuses these first; a face that builds one (Python's `jamchart.normal`) refuses them
+    /// when it is made.
+    pub fn shape_error(&self) -> Option<String> {
+        let t = crate::settings::number_text;
+        let (a, b) = match *self {
+            Uncertain::Point { value } => (value, value),
+            Uncertain::Range { lo, hi } | Uncertain::Uniform { lo, hi } => (lo, hi),
+            Uncertain::Normal { mean, sd } => (mean, sd),
+            Uncertain::LogNormal { median, sigma } => (median, sigma),
+        };
+        if let Some(v) = [a, b].into_iter().find(|v| !v.is_finite()) {
+            return Some(format!("{} is not a finite number", t(v)));
+        }
+        match *self {
+            Uncertain::Point { .. } => None,
+            Uncertain::Range { lo, hi } | Uncertain::Uniform { lo, hi } if lo > hi => {
+                let (l, h) = (t(lo), t(hi));
+                Some(format!(
+                    "the range is reversed ({l} > {h}); write LOW:HIGH, e.g. {h}:{l}"
+                ))
+            }
+            Uncertain::Range { lo, hi } | Uncertain::Uniform { lo, hi } if lo == hi => Some(
+                format!("the range is empty; for a single value write {}", t(lo)),
+            ),
+            Uncertain::Range { .. } | Uncertain::Uniform { .. } => None,
+            Uncertain::Normal {
+                mean: centre_value,
+                sd: spread_value,
+            }
+            | Uncertain::LogNormal {
+                median: centre_value,
+                sigma: spread_value,
+            } => {
+                let (centre, spread) = self.parameter_names();
+                if spread_value <= 0.0 {
+                    return Some(format!("{spread} must be > 0 (it is {})", t(spread_value)));
+                }
+                (centre_value <= 0.0).then(|| {
+                    format!(
+                        "{centre} must be > 0 (it is {}): the distribution lives on positive \
+                         values",
+                        t(centre_value)
+                    )
+                })
+            }
+        }
+    }
+
+    /// A normal's or lognormal's two parameters in words (centre, spread).
+    fn parameter_names(&self) -> (&'static str, &'static str) {
+        match self {
+            Uncertain::LogNormal { .. } => ("its median", "its log standard deviation sigma"),
+            _ => ("its mean", "its standard deviation"),
+        }
+    }
+
     /// Checks it against `decl`'s valid values; the error names the setting (`decl.key`, the
     /// CLI adds its flag) and quotes the value as written.
     pub(crate) fn check(&self, decl: &Decl) -> Result<()> {
@@ -231,14 +293,8 @@ impl Uncertain {
         match *self {
             Uncertain::Point { value } => decl.check_real(value),
             Uncertain::Range { lo, hi } | Uncertain::Uniform { lo, hi } => {
-                let (l, h) = (t(lo), t(hi));
-                if lo > hi {
-                    return refuse(format!(
-                        "the range is reversed ({l} > {h}); write LOW:HIGH, e.g. {h}:{l}"
-                    ));
-                }
-                if lo == hi {
-                    return refuse(format!("the range is empty; for a single value write {l}"));
+                if let Some(why) = self.shape_error() {
+                    return refuse(why);
                 }
                 must("its low end", lo)?;
                 must("its high end", hi)
@@ -252,24 +308,10 @@ impl Uncertain {
                     decl.key
                 ))
             }
-            Uncertain::Normal { mean, sd }
-            | Uncertain::LogNormal {
-                median: mean,
-                sigma: sd,
-            } => {
-                let (centre, spread) = match self {
-                    Uncertain::Normal { .. } => ("its mean", "its standard deviation"),
-                    _ => ("its median", "its log standard deviation sigma"),
-                };
-                if sd <= 0.0 {
-                    return refuse(format!("{spread} must be > 0 (it is {})", t(sd)));
-                }
-                if mean <= 0.0 {
-                    return refuse(format!(
-                        "{centre} must be > 0 (it is {}): the distribution lives on positive \
-                         values",
-                        t(mean)
-                    ));
+            Uncertain::Normal { mean, .. } | Uncertain::LogNormal { median: mean, .. } => {
+                let (centre, spread) = self.parameter_names();
+                if let Some(why) = self.shape_error() {
+                    return refuse(why);
                 }
                 must(centre, mean)?;
                 // Every value a draw or the box can take must be a valid value too:
@@ -437,7 +479,7 @@ pub(crate) fn sorted_samples(
     set: &UncertainSet,
     seed: u64,
     n: u64,
-    drawn: &(dyn Fn(u64) + Sync),
+    drawn: &(dyn Fn(u64) -> Flow + Sync),
     each: impl Fn(&[f64]) -> Result<Option<f64>> + Sync,
 ) -> Result<Vec<f64>> {
     use rand_chacha::ChaCha8Rng;
@@ -449,6 +491,10 @@ pub(crate) fn sorted_samples(
         .par_chunks_mut(dist::CHUNK)
         .enumerate()
         .map(|(c, slot)| {
+            // Asked to stop: the chunks not yet begun are not drawn.
+            if drawn(0).is_break() {
+                return Err(Error::Stopped);
+            }
             let mut rng = ChaCha8Rng::seed_from_u64(seed);
             rng.set_stream(c as u64);
             let mut values = Vec::with_capacity(set.inputs.len());
@@ -465,8 +511,10 @@ pub(crate) fn sorted_samples(
                     k += 1;
                 }
             }
-            drawn(slot.len() as u64);
-            Ok(k)
+            match drawn(slot.len() as u64) {
+                Flow::Continue(()) => Ok(k),
+                Flow::Break(()) => Err(Error::Stopped),
+            }
         })
         .collect::<Result<_>>()?;
     // Close up: chunk c's k values move down to follow the values of the chunks before it.

@@ -216,7 +216,7 @@ fn sorted_samples_are_each_draw_sorted() {
                 .build()
                 .unwrap();
             let got = pool
-                .install(|| sorted_samples(&set, 7, n, &|_| {}, each))
+                .install(|| sorted_samples(&set, 7, n, &|_| Flow::Continue(()), each))
                 .unwrap();
             let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
             assert_eq!(bits(&got), bits(&want), "{n} samples on {threads} threads");

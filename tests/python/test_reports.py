@@ -10,7 +10,7 @@ from conftest import SHAFT, SHAFT_FLAGS
 
 def test_design_is_the_clis_json(cli_json, cli):
     want = cli_json("design", "--x-target", "60", "--mu", "0.12:0.3", *SHAFT_FLAGS)
-    got = jc.design(x_target_mm=60, mu=(0.12, 0.3), **SHAFT)
+    got = jc.design(x_target_mm=60, mu=jc.Range(0.12, 0.3), **SHAFT)
     assert isinstance(got, jc.DesignAnswer)
     assert got.to_dict() == want
     assert got.design == want["design"] and got.design["least_push"]
@@ -39,13 +39,13 @@ def test_vlocator_is_the_clis_json(cli_json):
 
 def test_vlocator_over_a_range_is_the_clis(cli_json):
     want = cli_json("vlocator", "--mu", "0.1:0.3")
-    got = jc.vlocator(mu=(0.1, 0.3))
+    got = jc.vlocator(mu=jc.Range(0.1, 0.3))
     assert got.to_dict() == want
     assert got.headline.startswith("V-blocks of ") and "(m = 1 kg)" in got.headline
 
 
 def test_a_v_block_that_does_not_work_says_so_in_one_line():
-    got = jc.vlocator(mu=(0.1, 0.25), load_n=20, mass_kg=0.4)
+    got = jc.vlocator(mu=jc.Range(0.1, 0.25), load_n=20, mass_kg=0.4)
     assert repr(got).startswith("jamchart.VlocatorAnswer(no single V works over mu 0.1 to 0.25 "
                                 "under 20 N (m = 0.4 kg)")
 

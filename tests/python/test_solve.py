@@ -251,7 +251,7 @@ def test_arrays_of_non_numbers_and_bools_are_refused():
     with pytest.raises(TypeError, match="not a bool"):
         jc.solve(mu=True)
     with pytest.raises(ValueError, match="radius_mm takes a single number; a range or a distribution is taken by mu"):
-        jc.solve(radius_mm=(10, 12))
+        jc.solve(radius_mm=jc.Range(10, 12))
 
 
 def test_a_likely_unit_mistake_warns_at_the_callers_line():

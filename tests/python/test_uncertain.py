@@ -13,7 +13,7 @@ from conftest import SHAFT, SHAFT_FLAGS
 
 def test_a_range_is_the_clis_interval(cli_json):
     want = cli_json("solve", "--mu", "0.12:0.3", *SHAFT_FLAGS)["results"][0]
-    got = jc.solve(mu=(0.12, 0.3), **SHAFT)
+    got = jc.solve(mu=jc.Range(0.12, 0.3), **SHAFT)
     assert isinstance(got, jc.BoxAnswer)
     assert got.record == want
     assert got.theta_jam_deg == tuple(want["theta_jam_deg"])
@@ -45,9 +45,9 @@ def test_a_sampled_model_is_seeded_as_the_cli(cli_json):
 
 def test_bad_ranges_are_refused_as_the_cli_refuses_them(cli_error):
     for flags, keywords in [
-        (["--mu", "0.3:0.12"], dict(mu=(0.3, 0.12))),
-        (["--mu", "normal(0.2,-1)"], dict(mu=jc.normal(0.2, -1))),
-        (["--force", "0:40"], dict(force_n=(0, 40))),
+        (["--mu", "0.3:0.12"], dict(mu="0.3:0.12")),
+        (["--mu", "normal(0.2,-1)"], dict(mu="normal(0.2,-1)")),
+        (["--force", "0:40"], dict(force_n=jc.Range(0, 40))),
     ]:
         cli = cli_error("solve", *flags)
         with pytest.raises(ValueError) as e:
@@ -59,7 +59,7 @@ def test_bad_ranges_are_refused_as_the_cli_refuses_them(cli_error):
 def test_a_range_with_an_array_is_refused():
     with pytest.raises(ValueError, match="mu is an array, and a range or a distribution is "
                                          "answered for one scene"):
-        jc.solve(mu=np.array([0.2, 0.3]), force_n=(30, 50))
+        jc.solve(mu=np.array([0.2, 0.3]), force_n=jc.Range(30, 50))
 
 
 def test_question_keywords_without_a_distribution_warn():
@@ -81,7 +81,7 @@ def test_a_distribution_object_reads_back():
 def test_the_range_answer_contains_the_point_answers(lo, width, force, t):
     """The closed form's box answer is exact (monotone): every point inside it jams within it."""
     hi = lo + width
-    box = jc.solve(mu=(lo, hi), force_n=force, palm_length_mm=1e6)
+    box = jc.solve(mu=jc.Range(lo, hi), force_n=force, palm_length_mm=1e6)
     points = jc.solve(mu=lo + width * np.array(t), force_n=force, palm_length_mm=1e6)
     jams = points.status == "jams"
     if box.theta_jam_deg is None:
@@ -99,11 +99,15 @@ def test_a_range_or_distribution_with_a_non_finite_end_is_refused():
     """A range with a NaN or infinite end was dropped on its way to the scene, which then
     answered the default friction (mu 0.4) without a word."""
     nan, inf = float("nan"), float("inf")
-    for keywords in [dict(mu=(0.1, nan)), dict(mu=(0.1, inf)), dict(force_n=(10, nan)),
-                     dict(mass_kg=(1, inf)), dict(mu=jc.normal(nan, 1))]:
+    for keywords in [dict(mu="0.1:nan"), dict(mu="0.1:inf"), dict(force_n="10:nan"),
+                     dict(mass_kg="1:inf")]:
         key = next(iter(keywords))
         with pytest.raises(ValueError, match=f"invalid {key} = "):
             jc.solve(**keywords)
+    for make in [lambda: jc.Range(0.1, nan), lambda: jc.Range(0.1, inf), lambda: jc.normal(nan, 1),
+                 lambda: jc.lognormal(1, inf), lambda: jc.uniform(-inf, 1)]:
+        with pytest.raises(ValueError, match="is not a finite number"):
+            make()
 
 
 def test_the_box_answer_is_the_clis_document(cli_json, cli):

@@ -19,7 +19,7 @@ def one() -> float:
 
 
 def worst_case() -> tuple[float, float] | None:
-    box = jc.solve(mu=(0.12, 0.3), force_n=jc.normal(40.0, 2.0), before_mm=[60.0])
+    box = jc.solve(mu=jc.Range(0.12, 0.3), force_n=jc.normal(40.0, 2.0), before_mm=[60.0])
     return box.x_jam_mm
 
 

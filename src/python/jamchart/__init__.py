@@ -29,6 +29,11 @@ from ._jamchart import *  # noqa: F401,F403 (the names of _jamchart.__all__)
 
 __all__ = list(_jamchart.__all__)
 
+__doc__ = (__doc__ or "") + """
+A notebook session, end to end (the guide's; each ``# %%`` starts a cell)::
+
+""" + "\n".join("    " + line for line in _jamchart._session().splitlines()) + "\n"
+
 
 class _Shown:
     """A default shown in a signature as it is written (``1e-9``, ``None``)."""

@@ -14,6 +14,16 @@ __version__: str
 STATUSES: List[str]
 CHART_FORMAT: str
 
+class Range:
+    """Every value from low to high, none more likely: the worst case over them."""
+    def __init__(self, low: float, high: float) -> None: ...
+    @property
+    def low(self) -> float: ...
+    @property
+    def high(self) -> float: ...
+    @property
+    def nominal(self) -> float: ...
+
 class Distribution:
     """A distribution of one input: normal, uniform or lognormal."""
     @property
@@ -23,8 +33,8 @@ class Distribution:
 
 _Array = Union[npt.NDArray[Any], List[float], List[List[float]]]
 _Values = Union[float, _Array]
-_Uncertain = Union[float, Tuple[float, float], Distribution, str]
-_UncertainValues = Union[float, _Array, Tuple[float, float], Distribution, str]
+_Uncertain = Union[float, Range, Distribution, str]
+_UncertainValues = Union[float, _Array, Range, Distribution, str]
 
 class Solution:
     """One push's answer."""
@@ -81,6 +91,19 @@ class BoxAnswer:
     def record(self) -> Dict[str, Any]: ...
     def to_dict(self) -> Dict[str, Any]: ...
 
+class Comparison:
+    """Every model's answer to one push (solve(model="all")), and which to design to."""
+    @property
+    def models(self) -> List[str]: ...
+    @property
+    def solutions(self) -> Dict[str, Solution]: ...
+    @property
+    def guidance(self) -> str: ...
+    @property
+    def inputs(self) -> Dict[str, Any]: ...
+    def to_dict(self) -> Dict[str, Any]: ...
+    def to_pandas(self) -> Any: ...
+
 class _Report:
     """An answer whose JSON document's keys are its attributes."""
     @property
@@ -110,7 +133,9 @@ class Chart:
     def data(self) -> Any: ...
     @property
     def data_format(self) -> str: ...
-    def save(self, path: Union[str, "os.PathLike[str]"]) -> None: ...
+    def save(
+        self, path: Union[str, "os.PathLike[str]"], *, paper: Optional[Literal["a4", "letter"]] = None
+    ) -> None: ...
 
 @overload
 def solve(  # type: ignore[overload-overlap]
@@ -215,7 +240,7 @@ def solve(  # type: ignore[overload-overlap]
 ) -> Solutions: ...
 
 @overload
-def solve(
+def solve(  # type: ignore[overload-overlap]
     *,
     model: Literal["statics", "min-norm", "dynamics"] = ...,
     mu: _UncertainValues = ...,
@@ -265,11 +290,63 @@ def solve(
     seed: int = ...,
 ) -> BoxAnswer: ...
 
+@overload
+def solve(
+    *,
+    model: Literal["all"] = ...,
+    mu: float = ...,
+    mu_ground: float = ...,
+    mu_palm: float = ...,
+    radius_mm: float = ...,
+    mass_kg: float = ...,
+    force_n: float = ...,
+    gravity_m_s2: float = ...,
+    start_angle_deg: float = ...,
+    palm_length_mm: float = ...,
+    palm_offset_mm: float = ...,
+    push_ratio: float = ...,
+    formulation: Literal["translational", "rolling"] = ...,
+    bisection_tol_rad: float = ...,
+    fast_path: bool = ...,
+    max_iter: int = ...,
+    tol_feas: float = ...,
+    tol_gap: float = ...,
+    tol_infeas: float = ...,
+    mode: Literal["motion", "force"] = ...,
+    omega_deg_s: float = ...,
+    force_band: float = ...,
+    stiffness_n_per_mm_e: float = ...,
+    exponent: float = ...,
+    damping_n_s_per_mm: float = ...,
+    damping_depth_mm: float = ...,
+    mu_static: float = ...,
+    mu_static_ground: Optional[float] = ...,
+    mu_static_palm: Optional[float] = ...,
+    stiction_velocity_mm_s: float = ...,
+    friction_velocity_mm_s: float = ...,
+    method: Literal["radau5", "dopri5", "nonsmooth"] = ...,
+    rtol: float = ...,
+    atol: Optional[float] = ...,
+    max_steps: int = ...,
+    nonsmooth_step_deg: Optional[float] = ...,
+    disc: Literal["slides", "rolls"] = ...,
+    verify: bool = ...,
+    max_jam_error: float = ...,
+    jam_speed_ratio: float = ...,
+    arm_speed_ratio: float = ...,
+    after_jam_s: float = ...,
+    before_mm: Union[float, Sequence[float]] = ...,
+    quantiles: Sequence[float] = ...,
+    samples: Optional[int] = ...,
+    seed: int = ...,
+) -> Comparison: ...
+
 def render(
     scene: Union[str, "os.PathLike[str]"],
     *,
     read_off: Optional[Mapping[str, float]] = ...,
     set: Optional[Mapping[str, Any]] = ...,
+    style: Optional[Literal["colour", "print"]] = ...,
     mu: _Uncertain = ...,
     mu_ground: _Uncertain = ...,
     mu_palm: _Uncertain = ...,
