@@ -30,7 +30,7 @@ def test_the_stub_declares_every_keyword_with_its_type():
     assert STUB.read_text() == want, "the installed stub is older: pip install . again"
     tree = ast.parse(want)
     solves = [n for n in tree.body if isinstance(n, ast.FunctionDef) and n.name == "solve"]
-    assert len(solves) == 3
+    assert len(solves) == 4
     assert [a.arg for a in solves[0].args.kwonlyargs] == jc.keywords("solve")
 
 
