@@ -126,6 +126,22 @@ mod tests {
             .to_string()
     }
 
+    /// `mu = "normal(0.2"` in a file was refused as `scene.mu_ground = "normal(0.2": expected
+    /// a number`: the alias' other key, and not what is wrong. It names the key as written
+    /// and the missing parenthesis.
+    #[test]
+    fn a_broken_distribution_says_what_is_wrong_with_it() {
+        let e = take_scene_uncertain("[scene]\nmu = \"normal(0.2\"\n", Path::new("c.toml"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with("c.toml:2:6: "), "{e}");
+        assert!(
+            e.contains("mu = normal(0.2") && !e.contains("mu_ground"),
+            "{e}"
+        );
+        assert!(e.contains("a ')' is missing"), "{e}");
+    }
+
     /// Regression: `scene = [1, 2]` ran with mu_ground = 1, mu_palm = 2, serde
     /// filling the struct's fields in order from the array. Any settings table given as an
     /// array is refused, however its elements happen to fit.
