@@ -106,7 +106,8 @@ fn sweep_rows_carry_the_status_and_the_curve_says_where_it_ends() {
         .find(|f| (f[1].parse::<f64>().unwrap() - 0.12).abs() < 1e-12)
         .unwrap();
     let past: f64 = at_0_12[5].parse().unwrap();
-    assert!((past - 99.2613605241956).abs() < 1e-9, "{at_0_12:?}");
+    // The data files round to 7 significant digits.
+    assert!((past - 99.2613605241956).abs() < 1e-4, "{at_0_12:?}");
 }
 
 /// Read-off at the user's point on a sweep. `sweep ... --mu 0.27 --read-off` draws the
@@ -171,17 +172,18 @@ fn a_sweep_with_a_range_reads_off_the_bands_ends_and_joins_the_gallery() {
         serde_json::from_str(&stdout(&jamchart(dir.path(), &solve))).unwrap();
     let r = &v["results"][0];
     let f: Vec<&str> = row.split(',').collect();
-    // layer, force_n, (status, x, theta empty), earliest_*, latest_*, the shaded interval.
-    assert_eq!(&f[..5], ["read_off", "40", "", "", ""], "{row}");
-    assert_eq!((f[5], f[8]), ("jams", "beyond_reach"), "{row}");
+    // layer, force_n, (status, x, theta, past_palm_x empty), earliest_*, latest_*, the shaded
+    // interval.
+    assert_eq!(&f[..6], ["read_off", "40", "", "", "", ""], "{row}");
+    assert_eq!((f[6], f[9]), ("jams", "beyond_reach"), "{row}");
     let num = |i: usize| f[i].parse::<f64>().unwrap();
     let want = |k: &str, i: usize| r[k][i].as_f64().unwrap();
     for (got, want) in [
-        (num(6), r["earliest"]["x_jam_mm"].as_f64().unwrap()),
-        (num(11), want("x_jam_mm", 0)),
-        (num(12), want("x_jam_mm", 1)),
-        (num(13), want("theta_jam_deg", 0)),
-        (num(14), want("theta_jam_deg", 1)),
+        (num(7), r["earliest"]["x_jam_mm"].as_f64().unwrap()),
+        (num(12), want("x_jam_mm", 0)),
+        (num(13), want("x_jam_mm", 1)),
+        (num(14), want("theta_jam_deg", 0)),
+        (num(15), want("theta_jam_deg", 1)),
     ] {
         assert!((got - want).abs() <= 1e-6 * want, "{got} vs {want}: {row}");
     }

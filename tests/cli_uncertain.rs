@@ -242,7 +242,7 @@ fn a_range_given_to_a_scene_was_refused_as_an_invalid_type() {
         assert_eq!(band.len(), 301, "{csv}");
         // At F = 50 N: earliest at mu = 0.3, latest at mu = 0.12 (the paper's other values).
         let row: Vec<&str> = band[0].split(',').collect();
-        for (mu, x) in [("0.3", row[6]), ("0.12", row[9])] {
+        for (mu, x) in [("0.3", row[7]), ("0.12", row[10])] {
             let solve = ["solve", "--force", "50", "--mu", mu, "--format", "json"];
             let v = cli_util::json(&jamchart(dir.path(), &solve));
             let want = v["results"][0]["x_jam_mm"].as_f64().unwrap();
