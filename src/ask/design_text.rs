@@ -30,9 +30,9 @@ fn push_line(e: &SceneParams, least_push: LeastPush) -> String {
         ),
         LeastPush::BelowNormal { least_normal_n } => format!(
             "least push: below {least_normal_n:.3e} N, too small for a double to hold to its \
-             digits (the frictions are subnormal); every push of at least that carries it there \
-             without jamming at any friction (not simulated: no simulation moves a disc by such \
-             a push)"
+             digits (at a subnormal ground friction); every push of at least that carries it \
+             there without jamming at any friction (not simulated: no simulation moves a disc \
+             by such a push)"
         ),
         LeastPush::WedgeLocksFirst {
             theta_rigid_deg,
