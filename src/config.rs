@@ -52,7 +52,7 @@ impl Config {
     /// Reads and parses a TOML file (it is not validated here: flags may still override it).
     pub fn load(path: &Path) -> Result<Config> {
         let text = read_text(path)?;
-        parse_toml(&text, path)
+        parse_toml(&text, path).map_err(|first| every_mistake(&text, path).unwrap_or(first))
     }
 
     /// Reads a TOML file whose `[scene]` may give ranges or distributions as strings (`mu =
@@ -60,8 +60,50 @@ impl Config {
     pub(crate) fn load_uncertain(path: &Path) -> Result<(Config, UncertainSet)> {
         let text = read_text(path)?;
         let (nominal, set) = take_scene_uncertain(&text, path)?;
-        parse_toml(nominal.as_deref().unwrap_or(&text), path).map(|c| (c, set))
+        let read = nominal.as_deref().unwrap_or(&text);
+        parse_toml(read, path)
+            .map(|c| (c, set))
+            .map_err(|first| every_mistake(read, path).unwrap_or(first))
     }
+}
+
+/// Every mistake of a parameter file that serde refused, each key read alone over the
+/// defaults and placed at its line (serde stopped at the first: of a typo and a wrong value in
+/// `[scene]` only one was told); None when the text is not TOML or has one mistake only, whose
+/// first report stands.
+fn every_mistake(text: &str, path: &Path) -> Option<Error> {
+    let table: toml::Table = toml::from_str(text).ok()?;
+    let alone = |key: String, value: toml::Value| -> Option<Error> {
+        let mut one = toml::Table::new();
+        let dotted = key.clone();
+        match key.split_once('.') {
+            Some((section, k)) => {
+                let inner = toml::Table::from_iter([(k.to_string(), value)]);
+                one.insert(section.to_string(), toml::Value::Table(inner));
+            }
+            None => {
+                one.insert(key, value);
+            }
+        }
+        let e = Config::default().overlay(&one).err()?;
+        let (line, column) = key_line_column(text, &dotted).unwrap_or((1, 1));
+        Some(Error::Config {
+            path: path.to_path_buf(),
+            line,
+            column,
+            message: e.to_string(),
+        })
+    };
+    let mut errors = Vec::new();
+    for (k, v) in &table {
+        match v.as_table() {
+            Some(section) => errors.extend(
+                (section.iter()).filter_map(|(kk, vv)| alone(format!("{k}.{kk}"), vv.clone())),
+            ),
+            None => errors.extend(alone(k.clone(), v.clone())),
+        }
+    }
+    (errors.len() > 1).then(|| Error::in_file_order(path, errors))
 }
 
 /// The settings of `[scene]` and its aliases: where uncertain inputs of the palm scene are.
@@ -124,6 +166,49 @@ mod tests {
         parse_toml::<Config>(text, Path::new("c.toml"))
             .unwrap_err()
             .to_string()
+    }
+
+    /// A parameter file's typo and wrong value in one section came one at a time (serde stops
+    /// at the first): both are reported, in file order, each at its line.
+    #[test]
+    fn every_mistake_of_a_parameter_file_is_reported() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("c.toml");
+        std::fs::write(&path, "[scene]\nraduis_mm = 12\nmass_kg = true\n").unwrap();
+        let e = Config::load(&path).unwrap_err().to_string();
+        let lines: Vec<&str> = e.lines().collect();
+        assert!(lines[0].starts_with("2 mistakes in "), "{e}");
+        assert!(
+            lines[1].contains(":2:13: ") && lines[1].contains("did you mean radius_mm?"),
+            "{e}"
+        );
+        assert!(
+            lines[2].contains(":3:11: ") && lines[2].contains("expected a number"),
+            "{e}"
+        );
+        // One mistake keeps its own report.
+        std::fs::write(&path, "[scene]\nraduis_mm = 12\n").unwrap();
+        let e = Config::load(&path).unwrap_err().to_string();
+        assert!(
+            !e.contains("mistakes in") && e.contains("did you mean radius_mm?"),
+            "{e}"
+        );
+    }
+
+    /// `mu = "normal(0.2"` in a file was refused as `scene.mu_ground = "normal(0.2": expected
+    /// a number`: the alias' other key, and not what is wrong. It names the key as written
+    /// and the missing parenthesis.
+    #[test]
+    fn a_broken_distribution_says_what_is_wrong_with_it() {
+        let e = take_scene_uncertain("[scene]\nmu = \"normal(0.2\"\n", Path::new("c.toml"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with("c.toml:2:6: "), "{e}");
+        assert!(
+            e.contains("mu = normal(0.2") && !e.contains("mu_ground"),
+            "{e}"
+        );
+        assert!(e.contains("a ')' is missing"), "{e}");
     }
 
     /// Regression: `scene = [1, 2]` ran with mu_ground = 1, mu_palm = 2, serde

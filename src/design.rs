@@ -76,6 +76,15 @@ pub enum LeastPush {
         /// m g sin(alpha_g) in N.
         least_moving_n: f64,
     },
+    /// The least push lies below `least_normal_n` = 2.2e-308 N, the smallest double that keeps
+    /// all 53 bits (at subnormal frictions m g sin(alpha_g) is subnormal, and so is F_min): it
+    /// has a few bits only, the least double that reaches the target jams up to 1.3 % past it
+    /// (40.533 mm for a 40 mm target), and no simulation moves a disc by it. Every push of at
+    /// least `least_normal_n` carries the disc to the target at every point of the box.
+    BelowNormal {
+        /// The smallest normal double, N: `f64::MIN_POSITIVE`.
+        least_normal_n: f64,
+    },
     /// The friction wedge locks before the target whatever the push: theta_t <= alpha_g +
     /// alpha_p.
     WedgeLocksFirst {
@@ -200,8 +209,12 @@ pub(crate) fn least_push(p: &SceneParams, theta: f64) -> LeastPush {
     } else if a >= std::f64::consts::FRAC_PI_2 || least_moving_n == 0.0 {
         LeastPush::AnyPushThatMoves { least_moving_n }
     } else {
-        LeastPush::Push {
-            force_n: least_reaching(p, theta, least_moving_n / a.sin()),
+        match least_reaching(p, theta, least_moving_n / a.sin()) {
+            // The push is a subnormal double: said as a bound, not as a number it cannot hold.
+            force_n if force_n < f64::MIN_POSITIVE => LeastPush::BelowNormal {
+                least_normal_n: f64::MIN_POSITIVE,
+            },
+            force_n => LeastPush::Push { force_n },
         }
     }
 }
@@ -436,14 +449,17 @@ mod tests {
         );
     }
 
-    /// Regression: at subnormal frictions the formula's least push missed the target. With mu
-    /// 5e-324 on both contacts it jammed at 28.44 deg, short of the 40 mm target at 28.07 deg
-    /// (sin(alpha_g) and the push keep a few digits there). The least push now reaches the
-    /// target by the closed form's own answer, and one double less does not: the least there
-    /// is. (It may jam past the target, 27.72 deg at mu 1e-323: no double lands on it.)
+    /// At subnormal frictions the least push is a subnormal double with a few bits: the least
+    /// double that reaches a 40 mm target jammed at 40.533 mm (27.72 deg against 28.07) at mu
+    /// 1e-323, and the simulation could not move a disc by it. Below the smallest normal double
+    /// the least push is answered as that bound, which every push above carries to the target;
+    /// above it the least push reaches the target by the closed form's own answer, and one
+    /// double less does not.
     #[test]
     fn the_least_push_reaches_the_target_at_subnormal_frictions() {
-        for mu_ground in [5e-324, 1e-323, 3e-323, 1e-322, 1e-320, 1e-310, 0.1] {
+        for mu_ground in [
+            5e-324, 1e-323, 3e-323, 1e-322, 1e-320, 1e-310, 1e-300, 1e-12, 0.1,
+        ] {
             for mu_palm in [mu_ground, 0.3] {
                 let p = SceneParams {
                     mu_ground,
@@ -451,13 +467,23 @@ mod tests {
                     ..SceneParams::default()
                 };
                 let theta_t = theta_at_position(&p, 40.0).unwrap();
-                let LeastPush::Push { force_n } = least_push(&p, theta_t) else {
-                    panic!("{p:?}");
-                };
                 let at = |force_n: f64| statics::theta_jam_rad(&SceneParams { force_n, ..p });
-                let less = f64::from_bits(force_n.to_bits() - 1);
-                assert!(at(force_n) <= theta_t, "{p:?}: {force_n}");
-                assert!(at(less) > theta_t, "{p:?}: {less}");
+                match least_push(&p, theta_t) {
+                    LeastPush::Push { force_n } => {
+                        assert!(force_n >= f64::MIN_POSITIVE, "{p:?}: {force_n}");
+                        let less = f64::from_bits(force_n.to_bits() - 1);
+                        assert!(at(force_n) <= theta_t, "{p:?}: {force_n}");
+                        assert!(at(less) > theta_t, "{p:?}: {less}");
+                        // Full digits: the jam lands on the target to 1e-9 of its angle.
+                        assert!((at(force_n) - theta_t).abs() <= 1e-9 * theta_t, "{p:?}");
+                    }
+                    LeastPush::BelowNormal { least_normal_n } => {
+                        assert!(mu_ground < 1e-300, "{p:?}");
+                        assert_eq!(least_normal_n, f64::MIN_POSITIVE);
+                        assert!(at(least_normal_n) <= theta_t, "{p:?}");
+                    }
+                    other => panic!("{p:?}: {other:?}"),
+                }
             }
         }
     }

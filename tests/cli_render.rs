@@ -35,7 +35,7 @@ fn render_one_scene_writes_picture_and_data_and_nothing_else() {
     assert_eq!(files, ["fig7b.csv", "fig7b.png", "fig7b.svg", "index.html"]);
     let csv = std::fs::read_to_string(dir.path().join("o/fig7b.csv")).unwrap();
     assert!(
-        csv.starts_with("layer,force_n,status,x_jam_mm,theta_jam_deg\n"),
+        csv.starts_with("layer,force_n,status,x_jam_mm,theta_jam_deg,past_palm_x_jam_mm\n"),
         "{csv:.80}"
     );
     let png = std::fs::read(dir.path().join("o/fig7b.png")).unwrap();

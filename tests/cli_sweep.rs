@@ -64,7 +64,9 @@ fn bad_axis_exits_2_and_names_the_parameters() {
 
 /// Regression: a sweep's curve stopped at mu = 0.150 with no explanation and its CSV
 /// had no status column (empty cells): the 25 mm shaft on an 80 mm palm. Every row now
-/// says the model's verdict, and the cells with no jam say why.
+/// says the model's verdict, and the cells with no jam say why. A `beyond_reach` row's
+/// `x_jam_mm` stays empty (no jam on this palm) and `past_palm_x_jam_mm` says where it would
+/// jam on a long enough palm (99.261 mm at mu = 0.12, as `solve --mu 0.12` says).
 #[test]
 fn sweep_rows_carry_the_status_and_the_curve_says_where_it_ends() {
     let dir = tempfile::tempdir().unwrap();
@@ -78,7 +80,10 @@ fn sweep_rows_carry_the_status_and_the_curve_says_where_it_ends() {
     assert_eq!(o.status.code(), Some(0));
     let csv = std::fs::read_to_string(dir.path().join("out/sweep_mu.csv")).unwrap();
     let mut rows = csv.lines();
-    assert_eq!(rows.next(), Some("layer,mu,status,x_jam_mm,theta_jam_deg"));
+    assert_eq!(
+        rows.next(),
+        Some("layer,mu,status,x_jam_mm,theta_jam_deg,past_palm_x_jam_mm")
+    );
     let statics: Vec<Vec<&str>> = rows
         .map(|r| r.split(',').collect::<Vec<_>>())
         .filter(|f| f[0] == "statics")
@@ -90,7 +95,19 @@ fn sweep_rows_carry_the_status_and_the_curve_says_where_it_ends() {
         let want = if mu < 0.1489 { "beyond_reach" } else { "jams" };
         assert_eq!(f[2], want, "{f:?}");
         assert_eq!(f[3].is_empty(), want != "jams", "{f:?}");
+        assert_eq!(f[5].is_empty(), want == "jams", "{f:?}");
+        if want != "jams" {
+            // Past this palm's end, and further out the less friction there is.
+            let past: f64 = f[5].parse().unwrap();
+            assert!(past > 80.0, "{f:?}");
+        }
     }
+    let at_0_12 = (statics.iter())
+        .find(|f| (f[1].parse::<f64>().unwrap() - 0.12).abs() < 1e-12)
+        .unwrap();
+    let past: f64 = at_0_12[5].parse().unwrap();
+    // The data files round to 7 significant digits.
+    assert!((past - 99.2613605241956).abs() < 1e-4, "{at_0_12:?}");
 }
 
 /// Read-off at the user's point on a sweep. `sweep ... --mu 0.27 --read-off` draws the
@@ -155,17 +172,18 @@ fn a_sweep_with_a_range_reads_off_the_bands_ends_and_joins_the_gallery() {
         serde_json::from_str(&stdout(&jamchart(dir.path(), &solve))).unwrap();
     let r = &v["results"][0];
     let f: Vec<&str> = row.split(',').collect();
-    // layer, force_n, (status, x, theta empty), earliest_*, latest_*, the shaded interval.
-    assert_eq!(&f[..5], ["read_off", "40", "", "", ""], "{row}");
-    assert_eq!((f[5], f[8]), ("jams", "beyond_reach"), "{row}");
+    // layer, force_n, (status, x, theta, past_palm_x empty), earliest_*, latest_*, the shaded
+    // interval.
+    assert_eq!(&f[..6], ["read_off", "40", "", "", "", ""], "{row}");
+    assert_eq!((f[6], f[9]), ("jams", "beyond_reach"), "{row}");
     let num = |i: usize| f[i].parse::<f64>().unwrap();
     let want = |k: &str, i: usize| r[k][i].as_f64().unwrap();
     for (got, want) in [
-        (num(6), r["earliest"]["x_jam_mm"].as_f64().unwrap()),
-        (num(11), want("x_jam_mm", 0)),
-        (num(12), want("x_jam_mm", 1)),
-        (num(13), want("theta_jam_deg", 0)),
-        (num(14), want("theta_jam_deg", 1)),
+        (num(7), r["earliest"]["x_jam_mm"].as_f64().unwrap()),
+        (num(12), want("x_jam_mm", 0)),
+        (num(13), want("x_jam_mm", 1)),
+        (num(14), want("theta_jam_deg", 0)),
+        (num(15), want("theta_jam_deg", 1)),
     ] {
         assert!((got - want).abs() <= 1e-6 * want, "{got} vs {want}: {row}");
     }

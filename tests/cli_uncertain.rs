@@ -100,8 +100,9 @@ fn the_shaft_job_is_one_command() {
     for line in [
         "theta_jam from 17.761 to 35.013 deg, x_jam from 39.629 to 80.000 mm, over the points \
          that jam on the palm or are held at the start",
-        "latest jam (furthest out): theta_jam = 17.761 deg, x_jam = 80.000 mm, at the palm's \
-         end; the corner mu = 0.12 is beyond_reach",
+        "furthest out: pushed past the palm's end (x = 80.000 mm, theta = 17.761 deg) at the \
+         corner mu = 0.12, beyond_reach; on a long enough palm it would jam at theta_jam = \
+         14.355 deg, x_jam = 99.261 mm (a palm of at least 99.261 mm)",
         "beyond_reach for mu < 0.1489, jams from 0.1489 to 0.3",
         "the jam comes earliest at the high end",
     ] {
@@ -113,6 +114,9 @@ fn the_shaft_job_is_one_command() {
     assert_eq!(r["method"], "corners");
     assert_eq!(r["inputs"][0]["segments"][1]["status"], "jams");
     assert_eq!(v["uncertain"][0]["kind"], "range");
+    // The latest corner's would-be jam on a long palm, as `solve --mu 0.12` gives it.
+    let past = r["latest"]["past_palm"]["x_jam_mm"].as_f64().unwrap();
+    assert!((past - 99.261).abs() < 5e-4, "{r}");
 }
 
 /// `sweep` with a range draws the band's two edges and shades the band between them, each
@@ -238,7 +242,7 @@ fn a_range_given_to_a_scene_was_refused_as_an_invalid_type() {
         assert_eq!(band.len(), 301, "{csv}");
         // At F = 50 N: earliest at mu = 0.3, latest at mu = 0.12 (the paper's other values).
         let row: Vec<&str> = band[0].split(',').collect();
-        for (mu, x) in [("0.3", row[6]), ("0.12", row[9])] {
+        for (mu, x) in [("0.3", row[7]), ("0.12", row[10])] {
             let solve = ["solve", "--force", "50", "--mu", mu, "--format", "json"];
             let v = cli_util::json(&jamchart(dir.path(), &solve));
             let want = v["results"][0]["x_jam_mm"].as_f64().unwrap();

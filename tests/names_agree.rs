@@ -67,8 +67,13 @@ fn chart_csv_columns_are_json_names() {
             .collect()
     };
     let sweep = header("fig7b.csv");
+    // The jam past the palm's end is the range record's `past_palm.x_jam_mm`.
     assert!(
-        sweep.ends_with(&["x_jam_mm".into(), "theta_jam_deg".into()]),
+        sweep.ends_with(&[
+            "x_jam_mm".into(),
+            "theta_jam_deg".into(),
+            "past_palm_x_jam_mm".into()
+        ]),
         "{sweep:?}"
     );
     let map = header("fig7c.csv");

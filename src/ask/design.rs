@@ -187,6 +187,9 @@ pub struct SimCheck {
     pub x_jam_closed_form_mm: Option<f64>,
     /// x_jam by the nonsmooth simulation (force drive), mm.
     pub x_jam_nonsmooth_mm: Option<f64>,
+    /// The simulation's status: `jammed_at_start` where the disc did not move (a push a
+    /// hair above the least that moves it moves the disc by less than the run resolves).
+    pub nonsmooth_status: JamStatus,
     /// The simulated jam when the disc coasts past the closed form's by more than 0.5 %, mm:
     /// a palm sized by the closed form would lose it at the drive's speed.
     pub coasts_to_mm: Option<f64>,
@@ -212,6 +215,7 @@ fn check(p: &SceneParams, dynamics: &DynamicsParams) -> Result<SimCheck> {
         mu: (p.mu_ground, p.mu_palm),
         x_jam_closed_form_mm,
         x_jam_nonsmooth_mm: sim.x_jam_mm,
+        nonsmooth_status: sim.status,
         coasts_to_mm,
     })
 }

@@ -7,7 +7,7 @@ use super::Words;
 use super::design::{COAST_TOLERANCE, DesignReport, SimCheck};
 use crate::design::{AvoidJams, Carry, LeastPush};
 use crate::numbers::{Num, fixed};
-use crate::scene::SceneParams;
+use crate::scene::{JamStatus, SceneParams};
 
 /// A corner's friction, mass or push as the other answers print an input's value: 4
 /// significant digits (a distribution's 0.1 % quantile printed as 0.302706969185).
@@ -27,6 +27,12 @@ fn push_line(e: &SceneParams, least_push: LeastPush) -> String {
             "least push: any push above {least_moving_n:.3} N (the least that moves the disc) \
              carries it there",
             least_moving_n = Num(least_moving_n)
+        ),
+        LeastPush::BelowNormal { least_normal_n } => format!(
+            "least push: below {least_normal_n:.3e} N, too small for a double to hold to its \
+             digits (at a subnormal ground friction); every push of at least that carries it \
+             there without jamming at any friction (not simulated: no simulation moves a disc \
+             by such a push)"
         ),
         LeastPush::WedgeLocksFirst {
             theta_rigid_deg,
@@ -119,7 +125,22 @@ impl DesignReport {
                 let _ = writeln!(out, "{}", push_line(e, least_push));
                 if let Some(c) = push {
                     let _ = writeln!(out, "{}", sim_line(c));
-                    if let (Some(x_cf), Some(x_sim)) =
+                    let held = c.nonsmooth_status == JamStatus::JammedAtStart;
+                    if held
+                        && c.x_jam_closed_form_mm
+                            .is_some_and(|x| x > e.disc_position_mm(e.start_angle_deg.to_radians()))
+                    {
+                        // Not "push harder than the least push": the closed form moves this
+                        // disc, the simulation resolves no motion from so small a margin.
+                        let _ = writeln!(
+                            out,
+                            "  the simulated disc does not move from its start: the push is {:.3e} N \
+                             above the least that moves it (m g sin(alpha_g) = {:.3e} N), less \
+                             than the simulation resolves; a real push needs a margin",
+                            c.force_n - crate::statics::least_push_n(e),
+                            crate::statics::least_push_n(e)
+                        );
+                    } else if let (Some(x_cf), Some(x_sim)) =
                         (c.x_jam_closed_form_mm, c.x_jam_nonsmooth_mm)
                         && x_sim < x_cf * (1.0 - COAST_TOLERANCE)
                     {
@@ -239,6 +260,11 @@ impl DesignReport {
                     "any push above {:.3} N carries the disc to {target}{over}",
                     Num(least_moving_n)
                 ),
+                LeastPush::BelowNormal { least_normal_n } => {
+                    format!(
+                        "any push of at least {least_normal_n:.3e} N carries the disc to {target}{over}"
+                    )
+                }
                 LeastPush::WedgeLocksFirst { x_rigid_mm, .. } => format!(
                     "no push carries the disc to {target}{over}: the friction wedge locks it at \
                      x = {:.3} mm first",
@@ -269,5 +295,47 @@ mod tests {
             "{text}"
         );
         assert!(!text.contains("0.302706969185"), "{text}");
+    }
+
+    /// The text of `design` for a JSON body of keywords.
+    fn report(body: serde_json::Value) -> String {
+        let q: DesignQuestion = serde_json::from_value(body).unwrap();
+        q.answer().unwrap().text(Words::Flags)
+    }
+
+    /// At subnormal frictions (`--mu 5e-324:1e-323`, `--mu-ground`, a lognormal at 5e-324) the
+    /// least push was printed as F = 2.124e-322 N, whose closed form jams at 40.533 mm against a
+    /// 40 mm target, and its simulation "stops short (10.000 mm): push harder". The push is said
+    /// as the bound a double holds, and nothing is simulated at it.
+    #[test]
+    fn a_subnormal_least_push_is_said_as_a_bound() {
+        for body in [
+            serde_json::json!({"x_target_mm": 40.0, "mu": "5e-324:1e-323"}),
+            serde_json::json!({"x_target_mm": 40.0, "mu_ground": "5e-324:1e-323"}),
+            serde_json::json!({"x_target_mm": 40.0, "mu": "lognormal(5e-324,1)"}),
+        ] {
+            let text = report(body.clone());
+            assert!(
+                text.contains("least push: below 2.225e-308 N, too small for a double"),
+                "{body}: {text}"
+            );
+            assert!(!text.contains("stops short"), "{body}: {text}");
+            assert!(!text.contains("40.533"), "{body}: {text}");
+        }
+    }
+
+    /// A tiny but normal least push (mu 1e-12) is right, but the simulation holds the disc at
+    /// its start: the text said "stops short of the target: push harder than the closed
+    /// form's least push", advice against a right answer. It says the margin is too small to
+    /// simulate.
+    #[test]
+    fn a_least_push_too_small_to_simulate_is_not_called_short() {
+        let text = report(serde_json::json!({"x_target_mm": 40.0, "mu": "1e-12:2e-12"}));
+        assert!(text.contains("closed form x_jam = 40.000 mm"), "{text}");
+        assert!(!text.contains("push harder"), "{text}");
+        assert!(
+            text.contains("the simulated disc does not move from its start"),
+            "{text}"
+        );
     }
 }

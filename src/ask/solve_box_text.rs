@@ -83,6 +83,13 @@ impl BoxAnswer {
                         ),
                         ("latest jam (furthest out)", &a.latest, low, t0, x1),
                     ] {
+                        // The far end reached at the palm's end by a corner pushed past it is
+                        // not that corner's jam ("latest jam: x_jam = 80.000 mm" for a part the
+                        // palm loses): said as what it is, with the jam a long palm would give.
+                        if let (Reached::PalmEnd, false) = (how, c.status == JamStatus::Jams) {
+                            let _ = writeln!(s, "  {}", pushed_past_text(c, &at(c), point, t, x));
+                            continue;
+                        }
                         let reached = match how {
                             Reached::Corner => format!("at the {point} {}, {}", at(c), c.status),
                             Reached::HeldAtStart => format!(
@@ -109,13 +116,19 @@ impl BoxAnswer {
                     }
                 }
                 _ => {
+                    let instead: Vec<String> = a
+                        .statuses
+                        .iter()
+                        .map(|&st| format!("{st} ({})", without_jam(st)))
+                        .collect();
                     let _ = writeln!(
                         s,
-                        "  no point of the box jams on the palm or is held at the start"
+                        "  no point of the box jams on the palm or is held at the start: {}",
+                        instead.join("; ")
                     );
                     let _ = writeln!(
                         s,
-                        "  the {point}s where it would jam earliest and latest: {}, {}; {}, {}",
+                        "  its two extreme {point}s: {}, {}; {}, {}",
                         at(&a.earliest),
                         a.earliest.status,
                         at(&a.latest),
@@ -217,12 +230,58 @@ fn segments_text(i: &InputEnds) -> String {
         End::Low => "low",
         End::High => "high",
     };
+    // Which end brings the jam nearest the hinge is said only where the range has a jam: over
+    // a range that is too weak throughout, "the jam comes earliest at the high end" told of a
+    // jam that does not exist.
+    let jams =
+        (i.segments.iter()).any(|g| matches!(g.status, JamStatus::Jams | JamStatus::JammedAtStart));
+    let then = match (jams, &i.segments[..]) {
+        (true, _) => format!("the jam comes earliest at the {end} end"),
+        (false, [one]) => format!("{}: no jam on this range", without_jam(one.status)),
+        (false, _) => "no jam on this range".to_string(),
+    };
     format!(
-        "{n} in [{}, {}]: {}; the jam comes earliest at the {end} end",
+        "{n} in [{}, {}]: {}; {then}",
         round(i.lo),
         round(i.hi),
         parts.join(", ")
     )
+}
+
+/// The interval's far end where it is the palm's end, reached because corner `c` pushes the
+/// part past it: `furthest out: pushed past the palm's end (x = 80.000 mm, theta = 17.761
+/// deg) at the corner mu = 0.12, beyond_reach; on a long enough palm it would jam at theta_jam
+/// = 14.355 deg, x_jam = 99.261 mm`.
+fn pushed_past_text(c: &Corner, at: &str, point: &str, theta_deg: f64, x_mm: f64) -> String {
+    let head = format!(
+        "furthest out: pushed past the palm's end (x = {:.3} mm, theta = {:.3} deg) at the \
+         {point} {at}, {}",
+        Num(x_mm),
+        Num(theta_deg),
+        c.status
+    );
+    match &c.past_palm {
+        Some(past) => format!(
+            "{head}; on a long enough palm it would jam at theta_jam = {:.3} deg, x_jam = {:.3} \
+             mm (a palm of at least {:.3} mm)",
+            Num(past.theta_jam_deg),
+            Num(past.x_jam_mm),
+            Num(past.palm_length_needed_mm)
+        ),
+        None => format!("{head} ({})", without_jam(c.status)),
+    }
+}
+
+/// What happens at a point of `status`, which has no jam on the palm.
+fn without_jam(status: JamStatus) -> &'static str {
+    match status {
+        JamStatus::TooWeak => "the push cannot move the part",
+        JamStatus::NeverJams => "no friction: the part slides on without jamming",
+        JamStatus::BeyondReach => "the part is pushed past the palm's end",
+        JamStatus::OutsideModel => "outside what the model represents",
+        JamStatus::Inaccurate | JamStatus::IntegratorFailed => "no answer to trust",
+        JamStatus::Jams | JamStatus::JammedAtStart => "a jam",
+    }
 }
 
 /// Four significant digits: a breakpoint found to 1e-9 of the range reads as 0.1484.
@@ -268,5 +327,81 @@ impl BoxAnswer {
             })
             .collect();
         format!("over {}: {}", self.uncertain.describe(), each.join("; "))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::ask::{SolveQuestion, Words};
+
+    /// The report of `solve` for a JSON body of keywords.
+    fn report(body: &str) -> String {
+        let question: SolveQuestion = serde_json::from_str(body).unwrap();
+        question.answer().unwrap().text(Words::Flags)
+    }
+
+    /// A box where nothing jams (every corner too weak) said "the jam comes earliest at the
+    /// high end" and named "the corners where it would jam": words of a jam that does not
+    /// exist. It says what happens instead.
+    #[test]
+    fn a_box_without_a_jam_speaks_of_no_jam() {
+        let text = report(r#"{"mu": "0.2:0.4", "force_n": "1e-3:1e-2"}"#);
+        assert!(!text.contains("jam comes"), "{text}");
+        assert!(!text.contains("would jam"), "{text}");
+        assert!(
+            text.contains(
+                "no point of the box jams on the palm or is held at the start: too_weak (the \
+                 push cannot move the part)"
+            ),
+            "{text}"
+        );
+        assert!(
+            text.contains(
+                "mu in [0.2, 0.4]: too_weak over the whole range; the push cannot move the \
+                 part: no jam on this range"
+            ),
+            "{text}"
+        );
+        // A range with a jam still says which end brings it nearest the hinge.
+        let text = report(
+            r#"{"mu": "0.12:0.3", "radius_mm": 12.5, "mass_kg": 0.4, "force_n": 40, "palm_length_mm": 80}"#,
+        );
+        assert!(
+            text.contains("the jam comes earliest at the high end"),
+            "{text}"
+        );
+    }
+
+    /// `solve --mu 0.12:0.3` for the 25 mm shaft said "latest jam (furthest out): x_jam =
+    /// 80.000 mm, at the palm's end" for a corner whose part the palm pushes past its end, and
+    /// the range record gave no jam for it. It is named for what it is, with the jam a long
+    /// palm would give (99.261 mm, as `solve --mu 0.12` says), in the text and the record.
+    #[test]
+    fn a_corner_pushed_past_the_palm_is_not_called_a_jam() {
+        let shaft = r#""radius_mm": 12.5, "mass_kg": 0.4, "force_n": 40, "palm_length_mm": 80"#;
+        let question: SolveQuestion =
+            serde_json::from_str(&format!(r#"{{"mu": "0.12:0.3", {shaft}}}"#)).unwrap();
+        let answer = question.answer().unwrap();
+        let text = answer.text(Words::Flags);
+        assert!(!text.contains("latest jam"), "{text}");
+        assert!(
+            text.contains(
+                "furthest out: pushed past the palm's end (x = 80.000 mm, theta = 17.761 deg) at \
+                 the corner mu = 0.12, beyond_reach; on a long enough palm it would jam at \
+                 theta_jam = 14.355 deg, x_jam = 99.261 mm (a palm of at least 99.261 mm)"
+            ),
+            "{text}"
+        );
+        let record = serde_json::to_value(&answer).unwrap();
+        let latest = &record["results"][0]["latest"];
+        assert_eq!(latest["status"], "beyond_reach", "{latest}");
+        assert!(latest["x_jam_mm"].is_null(), "{latest}");
+        let would = latest["past_palm"]["x_jam_mm"].as_f64().unwrap();
+        assert!((would - 99.2613605241956).abs() < 1e-9, "{latest}");
+        // A corner that jams on the palm has none.
+        assert!(
+            record["results"][0]["earliest"]["past_palm"].is_null(),
+            "{record}"
+        );
     }
 }

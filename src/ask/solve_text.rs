@@ -236,7 +236,7 @@ fn too_weak_advice(p: &SceneParams, words: Words) -> String {
     }
     let force = words.name("force_n");
     match crate::design::least_push(p, p.start_angle_deg.to_radians()) {
-        LeastPush::AnyPushThatMoves { .. } => format!(
+        LeastPush::AnyPushThatMoves { .. } | LeastPush::BelowNormal { .. } => format!(
             "{head}: it takes more than m g sin(atan mu_ground) = {:.4} N ({force}), or less \
              ground friction",
             Num(moves)

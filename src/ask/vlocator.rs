@@ -35,6 +35,9 @@ pub struct VlocatorQuestion {
     pub uncertain: UncertainSet,
     /// Whether the V's geometry was given: over a box, its verdict is added (`given_v`).
     pub given_v: bool,
+    /// Whether the disc's mass is the default 1 kg, not given: the verdict depends on it, so
+    /// the answer leads with it.
+    pub mass_default: bool,
 }
 
 impl VlocatorQuestion {
@@ -74,6 +77,7 @@ impl VlocatorQuestion {
             .and_then(toml::Value::as_table)
             .cloned()
             .unwrap_or_default();
+        let mass_default = !over.contains_key("mass_kg");
         let uncertain = crate::uncertain::take(&mut over, crate::settings::locator_family())?;
         let params: LocatorParams = crate::config::overlay(&p, &over, "locator")?;
         params.validate()?;
@@ -81,6 +85,7 @@ impl VlocatorQuestion {
             params,
             uncertain,
             given_v: included_angle_deg.is_some() || flank_angles.is_some(),
+            mass_default,
         })
     }
 
@@ -118,12 +123,13 @@ impl VlocatorQuestion {
         let p = &self.params;
         if !self.uncertain.is_empty() {
             let given = self.given_v.then(|| p.included_angle_deg());
-            return super::vlocator_robust::answer(p, &self.uncertain, given)
+            return super::vlocator_robust::answer(p, &self.uncertain, given, self.mass_default)
                 .map(VlocatorAnswer::Robust);
         }
         Ok(VlocatorAnswer::Point(PointReport {
             solution: locator::solve(p)?,
             inputs: *p,
+            mass_default: self.mass_default,
         }))
     }
 }
@@ -165,4 +171,8 @@ pub struct PointReport {
     pub solution: LocatorSolution,
     /// The V, the disc and the load.
     pub inputs: LocatorParams,
+    /// The disc's mass is the default 1 kg, not given: the text says so (the document's
+    /// `inputs` hold the mass either way).
+    #[serde(skip)]
+    pub mass_default: bool,
 }

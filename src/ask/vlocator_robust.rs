@@ -72,6 +72,7 @@ pub(super) fn answer(
     p: &LocatorParams,
     uncertain: &UncertainSet,
     given: Option<f64>,
+    mass_default: bool,
 ) -> Result<RobustReport> {
     let b = robust_box(p, uncertain)?;
     let design = robust_design(p, &b);
@@ -85,6 +86,7 @@ pub(super) fn answer(
         r#box: b,
         design,
         inputs: *p,
+        mass_default,
     })
 }
 
@@ -102,6 +104,10 @@ pub struct RobustReport {
     pub standard_v_blocks: Vec<GivenV>,
     /// The nominal V, disc and load.
     pub inputs: LocatorParams,
+    /// The disc's mass is the default 1 kg, not given: the text says so (the document's
+    /// `inputs` hold the mass either way).
+    #[serde(skip)]
+    pub mass_default: bool,
 }
 
 /// One V's verdict over the box.

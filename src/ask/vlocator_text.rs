@@ -21,6 +21,11 @@ impl PointReport {
         let at = load_point(p);
         let _ = writeln!(
             out,
+            "{}",
+            part_line((p.mass_kg, p.mass_kg), p, self.mass_default, words)
+        );
+        let _ = writeln!(
+            out,
             "V of {:.3} deg (left flank {} deg, right flank {} deg), mu {} left / {} right, {} rotation",
             Num(p.included_angle_deg()),
             Num(p.flank_left_deg),
@@ -31,10 +36,9 @@ impl PointReport {
         );
         let _ = writeln!(
             out,
-            "weight W = {w:.3} N; load P = {} N at {} deg {at}",
+            "load P = {} N at {} deg {at}",
             Num(p.load_n),
             Num(p.load_angle_deg),
-            w = Num(w)
         );
         let verdict = match s.verdict {
             Verdict::Wedged => {
@@ -222,9 +226,9 @@ fn frictions(left: f64, right: f64) -> String {
 /// The answer for a person.
 impl RobustReport {
     /// The command line's report: the box, the window and the most robust V (or what would
-    /// open a window), then the verdicts of the user's V and the standard ones. It names no
-    /// setting, so it reads the same in every face's words.
-    pub fn text(&self, _words: Words) -> String {
+    /// open a window), then the verdicts of the user's V and the standard ones; a default
+    /// mass names its setting in `words`.
+    pub fn text(&self, words: Words) -> String {
         let (p, b, d) = (&self.inputs, &self.r#box, &self.design);
         let (given, standard) = (self.given_v.as_ref(), &self.standard_v_blocks);
         let mut out = String::new();
@@ -237,19 +241,10 @@ impl RobustReport {
                 range(b.mu_right, "")
             ),
         };
-        let weight = |m: f64| m * p.gravity_m_s2;
-        let disc = match b.mass_kg.0 == b.mass_kg.1 {
-            true => format!("W = {:.3} N", Num(weight(b.mass_kg.0))),
-            false => format!(
-                "m {} (W = {:.3} to {:.3} N)",
-                range(b.mass_kg, " kg"),
-                Num(weight(b.mass_kg.0)),
-                Num(weight(b.mass_kg.1))
-            ),
-        };
+        let _ = writeln!(out, "{}", part_line(b.mass_kg, p, self.mass_default, words));
         let _ = writeln!(
             out,
-            "robust V-block over {flanks}, load {} at {} {at}; {disc}, {} rotation",
+            "robust V-block over {flanks}, load {} at {} {at}, {} rotation",
             range(b.load_n, " N"),
             range(b.load_angle_deg, " deg"),
             p.rotation.as_str()
@@ -458,5 +453,34 @@ impl RobustReport {
                 format!("V-blocks of {} work over {over}{best}", spans.join(", "))
             }
         }
+    }
+}
+
+/// The first line of a V-block answer: the disc's mass and weight, on which the verdict
+/// depends (the README's V-block example quietly held a 1 kg part, and the README's own 0.4
+/// kg shaft got the opposite verdict); the default said as such, with the setting that gives
+/// it.
+fn part_line(mass_kg: (f64, f64), p: &LocatorParams, mass_default: bool, words: Words) -> String {
+    let weight = |m: f64| m * p.gravity_m_s2;
+    let default = match mass_default {
+        true => format!(
+            " (not given: the default; give yours with {})",
+            words.name("mass_kg")
+        ),
+        false => String::new(),
+    };
+    match mass_kg.0 == mass_kg.1 {
+        true => format!(
+            "part: m = {} kg{default}, weight W = m g = {:.3} N",
+            Num(mass_kg.0),
+            Num(weight(mass_kg.0))
+        ),
+        false => format!(
+            "part: m = {} to {} kg{default}, weight W = m g = {:.3} to {:.3} N",
+            Num(mass_kg.0),
+            Num(mass_kg.1),
+            Num(weight(mass_kg.0)),
+            Num(weight(mass_kg.1))
+        ),
     }
 }

@@ -179,7 +179,9 @@ impl Size {
 #[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct SceneFile {
-    title: String,
+    /// Required; read as optional so that its absence is one mistake of the file's report,
+    /// not the only one.
+    title: Option<String>,
     base: Option<PathBuf>,
     #[serde(default)]
     scene: toml::Table,
@@ -330,7 +332,14 @@ fn parse_scene(
             )
         })?;
     }
-    let title_as_written = super::title::fill_chart_keys(&file.title, &file.chart)?;
+    let title = file.title.clone().unwrap_or_default();
+    let title_missing = file.title.is_none().then(|| Error::Config {
+        path: path.to_path_buf(),
+        line: 1,
+        column: 1,
+        message: "title is missing: a required key (title = \"...\", the chart's title)".into(),
+    });
+    let title_as_written = super::title::fill_chart_keys(&title, &file.chart)?;
     let chart = read_chart(&file.chart).map_err(|r| {
         let set: Vec<String> = settings
             .iter()
@@ -400,25 +409,35 @@ fn parse_scene(
             None => e,
         }
     };
-    let params: Result<SceneParams> = config::overlay(&base.scene, &file.scene, "scene")
-        .and_then(|p: SceneParams| p.validate().map(|_| p))
-        .map_err(|e| locate("scene", e));
-    let min_norm: Result<MinNormSettings> =
-        config::overlay(&base.min_norm, &file.min_norm, "min_norm")
-            .and_then(|m: MinNormSettings| m.validate().map(|_| m))
-            .map_err(|e| locate("min_norm", e));
-    let dynamics: Result<DynamicsParams> =
-        config::overlay(&base.dynamics, &file.dynamics, "dynamics")
-            .and_then(|d: DynamicsParams| d.validate().map(|_| d))
-            .map_err(|e| locate("dynamics", e));
+    let mut errors: Vec<Error> = title_missing.into_iter().collect();
+    let params = section(
+        &base.scene,
+        &file.scene,
+        "scene",
+        SceneParams::validate,
+        &locate,
+    );
+    let min_norm = section(
+        &base.min_norm,
+        &file.min_norm,
+        "min_norm",
+        MinNormSettings::validate,
+        &locate,
+    );
+    let dynamics = section(
+        &base.dynamics,
+        &file.dynamics,
+        "dynamics",
+        DynamicsParams::validate,
+        &locate,
+    );
     let size = file.size.validate().map_err(|e| locate("size", e));
     // Every section's mistake in one report, in file order (a later missing x_axis was
     // reported before an earlier typo in [scene]).
-    let mut errors = Vec::new();
     let chart = ok_or_keep(chart, &mut errors);
-    let params = ok_or_keep(params, &mut errors);
-    let min_norm = ok_or_keep(min_norm, &mut errors);
-    let dynamics = ok_or_keep(dynamics, &mut errors);
+    let params = params.map_err(|e| errors.extend(e)).ok();
+    let min_norm = min_norm.map_err(|e| errors.extend(e)).ok();
+    let dynamics = dynamics.map_err(|e| errors.extend(e)).ok();
     ok_or_keep(size, &mut errors);
     let (Some(chart), Some(params), Some(min_norm), Some(dynamics), true) =
         (chart, params, min_norm, dynamics, errors.is_empty())
@@ -427,7 +446,7 @@ fn parse_scene(
     };
     let mut scene = Scene {
         name,
-        title: file.title,
+        title,
         params,
         min_norm,
         dynamics,
@@ -439,6 +458,33 @@ fn parse_scene(
     };
     scene.validate_chart()?;
     Ok(scene)
+}
+
+/// The settings of `[section]`: `base` with the file's `table` merged in and validated; on a
+/// mistake, each key's own (a key read alone over the base), so that a typo and a wrong value
+/// in one section are both reported (serde stops at the first), each placed by `locate`.
+fn section<T: serde::Serialize + serde::de::DeserializeOwned>(
+    base: &T,
+    table: &toml::Table,
+    name: &str,
+    validate: impl Fn(&T) -> Result<()>,
+    locate: &dyn Fn(&str, Error) -> Error,
+) -> std::result::Result<T, Vec<Error>> {
+    let read =
+        |t: &toml::Table| config::overlay(base, t, name).and_then(|v| validate(&v).map(|_| v));
+    let whole = match read(table) {
+        Ok(v) => return Ok(v),
+        Err(e) => e,
+    };
+    let each: Vec<Error> = (table.iter())
+        .filter_map(|(k, v)| read(&toml::Table::from_iter([(k.clone(), v.clone())])).err())
+        .map(|e| locate(name, e))
+        .collect();
+    // A mistake only the keys together make (none alone is refused) is the whole's.
+    Err(match each.is_empty() {
+        true => vec![locate(name, whole)],
+        false => each,
+    })
 }
 
 /// `r`'s value, or None with its error kept in `errors`.
@@ -669,6 +715,39 @@ mod tests {
             "{msg}"
         );
         assert!(lines[2].starts_with("  s.toml:6:9: chart.model"), "{msg}");
+    }
+
+    /// One mistake hid the others: a missing title was the whole report, and of a typo and a
+    /// wrong value in one section only the first in key order was told (serde stops there). A
+    /// misspelt axis parameter read "muu is not one of ." with an empty list.
+    #[test]
+    fn a_missing_title_and_two_mistakes_of_one_section_are_all_reported() {
+        let msg = scene_error(
+            "[scene]\nraduis_mm = 12\nmass_kg = true\n[chart]\nkind = \"jam_map\"\n\
+             x_axis = { param = \"muu\", min = 0.1, max = 0.5, count = 5 }\n\
+             y_axis = { param = \"theta_deg\", min = 10.0, max = 70.0, count = 5 }\n",
+        );
+        let lines: Vec<&str> = msg.lines().collect();
+        assert_eq!(lines[0], "4 mistakes in s.toml:", "{msg}");
+        assert!(
+            lines[1].starts_with("  s.toml:1:1: title is missing"),
+            "{msg}"
+        );
+        assert!(
+            lines[2].starts_with(
+                "  s.toml:2:13: scene.raduis_mm = 12: unknown key; did you mean radius_mm?"
+            ),
+            "{msg}"
+        );
+        assert!(
+            lines[3].starts_with("  s.toml:3:11: scene.mass_kg = true: expected a number"),
+            "{msg}"
+        );
+        assert!(
+            lines[4].contains("muu is not one of mu, mu_ground")
+                && lines[4].contains("did you mean mu?"),
+            "{msg}"
+        );
     }
 
     /// Scene-file errors spoke serde: "unknown field `raduis_mm`, expected one of ..." (without

@@ -20,7 +20,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::Input;
-use super::sweep_layers::{Curve, Series, SeriesPoint, SweepPanel, closed_form, point};
+use super::sweep_layers::{Curve, Series, SeriesPoint, SweepPanel, closed_form, closed_form_point};
 use crate::error::{Error, Result};
 use crate::grid::GridAxis;
 use crate::numbers::Num;
@@ -142,10 +142,7 @@ pub(super) fn edges(axis: &GridAxis, scene: &Input, band: &Band) -> Result<[Seri
             curve,
             // The band's own label is the shade's legend entry; an edge says which it is.
             label: format!("band edge: {which}"),
-            points: closed_form(axis, &at, |v, s| SeriesPoint {
-                status: Some(s.status),
-                ..point(v, s.x_jam_mm, s.theta_jam_deg)
-            })?,
+            points: closed_form(axis, &at, |v, s| closed_form_point(v, &s))?,
             flat_names: None,
             callout: None,
         })
@@ -189,10 +186,7 @@ impl BandRow {
 pub fn at(param: Param, v: f64, band: &Band) -> Result<BandRow> {
     let corner = |p: &SceneParams| -> Result<SeriesPoint> {
         let s = crate::models::solve(&crate::models::ModelSpec::Statics, &param.apply(*p, v))?;
-        Ok(SeriesPoint {
-            status: Some(s.status),
-            ..point(v, s.x_jam_mm, s.theta_jam_deg)
-        })
+        Ok(closed_form_point(v, &s))
     };
     let (e, l) = (corner(&band.earliest)?, corner(&band.latest)?);
     Ok(rows(param, &band.latest, &[e], &[l]).remove(0))
@@ -237,6 +231,7 @@ mod tests {
             x_jam_mm: x,
             theta_jam_deg: t,
             status: Some(status),
+            past_palm_x_jam_mm: None,
         }
     }
 

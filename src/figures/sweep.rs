@@ -141,6 +141,7 @@ impl Figure for SweepSettings {
                     x_jam_mm: s.x_jam_mm.filter(|_| jams),
                     theta_jam_deg: s.theta_jam_deg.filter(|_| jams),
                     status: Some(s.status),
+                    past_palm_x_jam_mm: s.past_palm().map(|p| p.x_jam_mm),
                 })
             }
             _ => None,
@@ -207,6 +208,7 @@ impl FigureData for SweepData {
                 status,
                 dec(p.x_jam_mm),
                 dec(p.theta_jam_deg),
+                dec(p.past_palm_x_jam_mm),
             )
         });
         to_csv_with_header(&self.header(), rows)
@@ -214,14 +216,17 @@ impl FigureData for SweepData {
 }
 
 impl SweepData {
-    /// The columns of every sweep's CSV.
-    fn header(&self) -> [&'static str; 5] {
+    /// The columns of every sweep's CSV: `x_jam_mm` is empty where there is no jam on the
+    /// palm; `past_palm_x_jam_mm` gives, on a `beyond_reach` row, where the jam would be on a
+    /// long enough palm.
+    fn header(&self) -> [&'static str; 6] {
         [
             "layer",
             self.settings.x_axis.param.as_str(),
             "status",
             "x_jam_mm",
             "theta_jam_deg",
+            "past_palm_x_jam_mm",
         ]
     }
 
@@ -253,6 +258,7 @@ impl SweepData {
                 status(p),
                 x,
                 t,
+                dec(p.past_palm_x_jam_mm),
                 "",
                 n,
                 n,
@@ -280,6 +286,7 @@ impl SweepData {
                     layer,
                     Dec(r.at),
                     "",
+                    n,
                     n,
                     n,
                     es,

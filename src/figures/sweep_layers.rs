@@ -157,6 +157,9 @@ pub struct SeriesPoint {
     pub theta_jam_deg: Option<f64>,
     /// The model's verdict at the point (None for a limit or a printed number).
     pub status: Option<JamStatus>,
+    /// x_jam in mm on a long enough palm where the closed form's jam lies past this palm's end
+    /// (`beyond_reach`, where `x_jam_mm` is empty: no jam on this palm); None otherwise.
+    pub past_palm_x_jam_mm: Option<f64>,
 }
 
 /// A curve or point set of one layer.
@@ -200,10 +203,7 @@ pub fn series(
         SweepLayer::Statics => vec![Series {
             curve: Curve::Statics,
             label: "closed-form statics (corrected Eq. 1)".into(),
-            points: closed_form(axis, scene, |v, s| SeriesPoint {
-                status: Some(s.status),
-                ..point(v, s.x_jam_mm, s.theta_jam_deg)
-            })?,
+            points: closed_form(axis, scene, |v, s| closed_form_point(v, &s))?,
             flat_names: Some(["x_jam", "θ_jam"]),
             callout: None,
         }],
@@ -423,6 +423,17 @@ pub(super) fn point(at: f64, x_jam_mm: Option<f64>, theta_jam_deg: Option<f64>) 
         x_jam_mm,
         theta_jam_deg,
         status: None,
+        past_palm_x_jam_mm: None,
+    }
+}
+
+/// The closed form's answer `s` at the swept value `at`: its status, its jam, and where a
+/// jam past the palm's end would be on a long enough palm.
+pub(super) fn closed_form_point(at: f64, s: &Solution) -> SeriesPoint {
+    SeriesPoint {
+        status: Some(s.status),
+        past_palm_x_jam_mm: s.past_palm().map(|p| p.x_jam_mm),
+        ..point(at, s.x_jam_mm, s.theta_jam_deg)
     }
 }
 

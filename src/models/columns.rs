@@ -365,6 +365,43 @@ pub fn solve_into_until(
     })
 }
 
+/// Where each push that [`solve_into`] answered `beyond_reach` (its `status`) would jam on a
+/// long enough palm: the closed form's x_jam in mm ([`crate::statics::PastPalm`]), written
+/// into `out`; NaN for every other push, so that NaN in `x_jam_mm` keeps meaning "no jam on
+/// this palm" and this column says where the palm lost the part. The simulations and the
+/// min-norm search give no such answer: NaN throughout for those models.
+pub fn past_palm_into(
+    spec: &ModelSpec,
+    pushes: &Pushes,
+    status: &[u8],
+    out: &mut [f64],
+) -> Result<()> {
+    let n = pushes.len();
+    if status.len() != n || out.len() != n {
+        return Err(Error::invalid(
+            "answers",
+            format!("[{}, {}] elements", status.len(), out.len()),
+            format!("each answer buffer holds one element per push ({n})"),
+        ));
+    }
+    let resolved = pushes.resolved();
+    let beyond = JamStatus::BeyondReach.index();
+    let statics = matches!(spec, ModelSpec::Statics);
+    out.par_iter_mut()
+        .with_min_len(CHUNK)
+        .zip(status.par_iter())
+        .enumerate()
+        .for_each(|(i, (x, &s))| {
+            *x = match statics && s == beyond {
+                true => statics::solve(&resolved.scene(pushes.base, i))
+                    .past_palm
+                    .map_or(f64::NAN, |p| p.x_jam_mm),
+                false => f64::NAN,
+            };
+        });
+    Ok(())
+}
+
 /// How many min-norm pushes to search as one column: a run of neighbours (a map's column of
 /// N / 2 threads' worth, at most 64, so that a search starts near its answer and both threads
 /// share the work).
@@ -730,5 +767,40 @@ mod tests {
             (Param::PushRatio, &[10.0][..]),
         ]);
         assert!(msg.contains("force_n") && msg.contains("= 0"), "{msg}");
+    }
+
+    /// The array answers had NaN in x_jam_mm for a push the palm loses past its end, and no
+    /// word of where it would jam: the 25 mm shaft at mu 0.12 on an 80 mm palm would jam at
+    /// 99.261 mm on a long palm (`solve --mu 0.12`'s past_palm). A column of its own gives
+    /// it, NaN on every other push, so that x_jam_mm keeps its meaning.
+    #[test]
+    fn a_push_past_the_palm_gives_where_it_would_jam() {
+        let mu = [0.12, 0.2, 0.0];
+        let base = SceneParams {
+            radius_mm: 12.5,
+            mass_kg: 0.4,
+            force_n: 40.0,
+            palm_length_mm: 80.0,
+            ..SceneParams::default()
+        };
+        let pushes = Pushes {
+            base,
+            columns: vec![(Param::named("mu").unwrap(), &mu[..])],
+        };
+        let (mut st, mut th, mut x) = (vec![0; 3], vec![0.0; 3], vec![0.0; 3]);
+        let out = Answers {
+            status: &mut st,
+            theta_jam_deg: &mut th,
+            x_jam_mm: &mut x,
+        };
+        solve_into(&ModelSpec::Statics, &pushes, out).unwrap();
+        let mut past = vec![0.0; 3];
+        past_palm_into(&ModelSpec::Statics, &pushes, &st, &mut past).unwrap();
+        assert_eq!(st[0], JamStatus::BeyondReach.index());
+        assert!(x[0].is_nan(), "{x:?}");
+        assert!((past[0] - 99.2613605241956).abs() < 1e-9, "{past:?}");
+        // Jams on the palm, never jams: no jam past the palm.
+        assert!(x[1].is_finite() && past[1].is_nan(), "{x:?} {past:?}");
+        assert!(past[2].is_nan(), "{past:?}");
     }
 }

@@ -242,6 +242,16 @@ pub struct Solution {
 }
 
 impl Solution {
+    /// Where a jam past the palm's end would be on a long enough palm: the closed form's
+    /// [`crate::statics::PastPalm`] of a `beyond_reach` push; None for every other status and
+    /// model.
+    pub fn past_palm(&self) -> Option<crate::statics::PastPalm> {
+        match &self.detail {
+            Detail::Statics(d) if self.status == JamStatus::BeyondReach => d.past_palm,
+            _ => None,
+        }
+    }
+
     /// The work a solution counted: (steps, evaluations). Steps are the integrator's accepted
     /// steps or the min-norm programs solved; evaluations are right-hand-side evaluations or
     /// clarabel iterations (0 on the exact path).

@@ -107,6 +107,9 @@ pub(super) struct Solutions {
     pub(super) status_code: Py<PyArrayDyn<u8>>,
     pub(super) theta_jam_deg: Py<PyArrayDyn<f64>>,
     pub(super) x_jam_mm: Py<PyArrayDyn<f64>>,
+    /// x_jam on a long enough palm where the palm loses the part (`beyond_reach`), NaN
+    /// elsewhere ([`crate::models::columns::past_palm_into`]).
+    pub(super) past_palm_x_jam_mm: Py<PyArrayDyn<f64>>,
     /// The keywords that were arrays, each as float64 (not broadcast).
     pub(super) inputs: Vec<(&'static str, Py<PyArrayDyn<f64>>)>,
     /// The scene every push starts from (the single values given).
@@ -167,6 +170,13 @@ impl Solutions {
         self.x_jam_mm.bind(py).clone()
     }
 
+    /// Where each push the palm loses past its end (`beyond_reach`) would jam on a long enough
+    /// palm, x in mm (float64, the closed form's; NaN for every other push and model).
+    #[getter]
+    fn past_palm_x_jam_mm<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
+        self.past_palm_x_jam_mm.bind(py).clone()
+    }
+
     /// The shape of the answers: the inputs' broadcast shape.
     #[getter]
     fn shape<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
@@ -198,6 +208,7 @@ impl Solutions {
             self.status_code.bind(py),
             self.theta_jam_deg.bind(py),
             self.x_jam_mm.bind(py),
+            self.past_palm_x_jam_mm.bind(py),
             inputs,
             base,
         );
@@ -214,8 +225,8 @@ impl Solutions {
     }
 
     /// A pandas DataFrame, one row per push: the array inputs (broadcast), the settings every
-    /// push shares (`radius_mm`, `mass_kg`, ...), `status`, `theta_jam_deg` and `x_jam_mm`.
-    /// Needs pandas.
+    /// push shares (`radius_mm`, `mass_kg`, ...), `status`, `theta_jam_deg`, `x_jam_mm` and
+    /// `past_palm_x_jam_mm`. Needs pandas.
     fn to_pandas<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let pandas = py.import("pandas").map_err(|_| {
             PyImportError::new_err(
@@ -243,6 +254,10 @@ impl Solutions {
             self.theta_jam_deg.bind(py).call_method0("ravel")?,
         )?;
         columns.set_item("x_jam_mm", self.x_jam_mm.bind(py).call_method0("ravel")?)?;
+        columns.set_item(
+            "past_palm_x_jam_mm",
+            self.past_palm_x_jam_mm.bind(py).call_method0("ravel")?,
+        )?;
         pandas.call_method1("DataFrame", (columns,))
     }
 
@@ -392,6 +407,7 @@ pub(super) fn _solutions(
     status_code: Py<PyArrayDyn<u8>>,
     theta_jam_deg: Py<PyArrayDyn<f64>>,
     x_jam_mm: Py<PyArrayDyn<f64>>,
+    past_palm_x_jam_mm: Py<PyArrayDyn<f64>>,
     inputs: &Bound<'_, PyDict>,
     base: &str,
 ) -> PyResult<Solutions> {
@@ -410,6 +426,7 @@ pub(super) fn _solutions(
         status_code,
         theta_jam_deg,
         x_jam_mm,
+        past_palm_x_jam_mm,
         varying: super::solve::varying(arrays.iter().map(|(k, _)| *k), false),
         inputs: arrays,
         base,

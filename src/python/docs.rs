@@ -481,7 +481,9 @@ const SOLVE: &str = "Where a push jams: theta_jam (deg) and x_jam (mm) of one sc
     --format json` prints it), to_dict() (the whole document); str() is the command line's \
     report.\n\
     Solutions\n    For arrays: status, theta_jam_deg and x_jam_mm as numpy arrays shaped like \
-    the broadcast inputs, status_code (uint8 indices into STATUSES), to_pandas().\n\
+    the broadcast inputs (NaN where there is no jam on the palm), past_palm_x_jam_mm (where a \
+    beyond_reach push would jam on a long enough palm, NaN elsewhere), status_code (uint8 \
+    indices into STATUSES), to_pandas().\n\
     BoxAnswer\n    For a range or distribution: theta_jam_deg and x_jam_mm as (min, max), \
     statuses, probability and quantiles, record, to_dict(); repr() is the one-line verdict, \
     str() the report.\n\

@@ -158,9 +158,10 @@ fn solve_arrays<'py>(
     // SAFETY: the arrays are left unset (calloc's pass to zero them cost as much as a tenth of
     // a closed-form map): `answer_watched` writes every element, and on any error or
     // interrupt the `?` below drops them before Python sees them.
-    let (status, theta, x) = unsafe {
+    let (status, theta, x, past) = unsafe {
         (
             PyArrayDyn::<u8>::new(py, shape.clone(), false),
+            PyArrayDyn::<f64>::new(py, shape.clone(), false),
             PyArrayDyn::<f64>::new(py, shape.clone(), false),
             PyArrayDyn::<f64>::new(py, shape.clone(), false),
         )
@@ -178,12 +179,18 @@ fn solve_arrays<'py>(
             x_jam_mm: xw.as_slice_mut().expect("a new array is contiguous"),
         };
         answer_watched(py, spec, &pushes, out)?;
+        let mut pw: PyReadwriteArrayDyn<f64> = past.readwrite();
+        let status = s.as_slice().expect("a new array is contiguous");
+        let out = pw.as_slice_mut().expect("a new array is contiguous");
+        py.detach(|| columns::past_palm_into(spec, &pushes, status, out))
+            .map_err(error)?;
     }
     Ok(Solutions {
         model: spec.kind(),
         status_code: status.unbind(),
         theta_jam_deg: theta.unbind(),
         x_jam_mm: x.unbind(),
+        past_palm_x_jam_mm: past.unbind(),
         inputs: arrays
             .iter()
             .map(|(p, a)| (p.as_str(), a.clone().unbind()))

@@ -161,15 +161,24 @@ impl SceneParams {
         // A radius in metres makes any mass look heavy: its own warning says what is wrong.
         let bar_m = steel_bar_length_m(self.mass_kg, self.radius_mm);
         if bar_m > STEEL_BAR_LIMIT_M && self.radius_mm >= 0.5 {
+            // A mass near the float range overflowed the rounding to 0.1 m ("inf m long"), or
+            // the length itself on a thin part; from 1e15 m on a tenth of a metre is no digit.
+            let shown = match bar_m < 1e15 {
+                true => crate::numbers::Num((bar_m * 10.0).round() / 10.0).to_string(),
+                false => crate::numbers::sig(bar_m, 4),
+            };
+            let bar = match bar_m.is_finite() {
+                true => format!("as much as a steel bar of this radius {shown} m long"),
+                false => format!(
+                    "more than a steel bar of this radius {:.1e} m long",
+                    f64::MAX
+                ),
+            };
             out.push(likely_mistake(
                 family.clone(),
                 "mass_kg",
                 self.mass_kg,
-                &format!(
-                    "kg weighs as much as a steel bar of this radius {} m long; the mass is in kg, \
-                     not grams",
-                    crate::numbers::Num((bar_m * 10.0).round() / 10.0)
-                ),
+                &format!("kg weighs {bar}; the mass is in kg, not grams"),
             ));
         }
         if self.start_angle_deg < 3.0 {
@@ -373,6 +382,46 @@ choice! {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `solve --mass 1e308` warned of "a steel bar of this radius inf m long": rounding the
+    /// bar's length to 0.1 m overflowed (and on a thin part the length itself does). It gives
+    /// the length, or says the bar is longer than any double counts.
+    #[test]
+    fn a_mass_near_the_float_range_warns_without_inf() {
+        for (mass_kg, radius_mm, says) in [
+            (
+                1e308,
+                10.0,
+                "as much as a steel bar of this radius 4.055e307 m long",
+            ),
+            (
+                5e307,
+                10.0,
+                "as much as a steel bar of this radius 2.027e307 m long",
+            ),
+            (
+                f64::MAX,
+                0.5,
+                "more than a steel bar of this radius 1.8e308 m long",
+            ),
+        ] {
+            let w = SceneParams {
+                mass_kg,
+                radius_mm,
+                ..SceneParams::default()
+            }
+            .unit_warnings()
+            .join("\n");
+            assert!(w.contains(says), "{w}");
+            assert!(!w.contains("inf"), "{w}");
+        }
+        let grams = SceneParams {
+            mass_kg: 400.0,
+            radius_mm: 12.5,
+            ..SceneParams::default()
+        };
+        assert!(grams.unit_warnings().join("\n").contains("103.8 m long"));
+    }
 
     #[test]
     fn equal_tangents_eq2_simplifies() {

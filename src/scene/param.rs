@@ -176,7 +176,9 @@ impl<'de> Deserialize<'de> for Param {
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
         let name = String::deserialize(d)?;
         Param::named(&name).ok_or_else(|| {
-            let names: Vec<&str> = Param::all().map(Param::as_str).collect();
+            // Each name in backticks, as serde's own "unknown variant" writes them: the file's
+            // message reads the list from there ("muu is not one of ." had none).
+            let names: Vec<String> = Param::all().map(|p| format!("`{}`", p.as_str())).collect();
             serde::de::Error::custom(format!(
                 "unknown variant `{}`, expected one of {}",
                 crate::error::cut(&name),

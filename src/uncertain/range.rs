@@ -170,6 +170,10 @@ pub struct Corner {
     pub theta_jam_deg: Option<f64>,
     /// x_jam in mm, as for `theta_jam_deg`.
     pub x_jam_mm: Option<f64>,
+    /// Where a corner whose jam lies past the palm's end (`beyond_reach`) would jam on a long
+    /// enough palm, the palm length that reaches it and the friction factor that brings it
+    /// onto this palm (the closed form's, as `solve` gives it for the point); None otherwise.
+    pub past_palm: Option<statics::PastPalm>,
 }
 
 /// The answer over the box.
@@ -366,6 +370,7 @@ pub(crate) fn ends(p: &SceneParams, set: &UncertainSet) -> Result<BoxEnds> {
             status: s.status,
             theta_jam_deg: s.theta_jam_deg,
             x_jam_mm: s.x_jam_mm,
+            past_palm: s.past_palm(),
         })
     };
     let earliest = corner(pick(true))?;
@@ -518,6 +523,7 @@ pub fn sampled(spec: &ModelSpec, p: &SceneParams, set: &UncertainSet) -> Result<
         status: s.status,
         theta_jam_deg: s.theta_jam_deg,
         x_jam_mm: s.x_jam_mm,
+        past_palm: s.past_palm(),
     };
     let theta = |x: &&(Vec<f64>, models::Solution)| x.1.theta_jam_deg.unwrap_or(f64::NAN);
     // The interval's one meaning (module docs): over the samples that jam on the palm or are

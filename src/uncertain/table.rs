@@ -19,9 +19,16 @@ pub(crate) fn take(
         let Some(toml::Value::String(text)) = table.get(decl.key) else {
             continue;
         };
-        let Ok(value) = Uncertain::parse(text) else {
+        let value = match Uncertain::parse(text) {
+            Ok(value) => value,
+            // A range or a distribution written wrong (`normal(0.2`) is refused with what is
+            // wrong, under the key as written: the settings struct said only "expected a
+            // number" of `mu_ground`.
+            Err(why) if decl.uncertain && text.contains(['(', ':']) => {
+                return Err(Error::invalid(decl.key, text, why));
+            }
             // Not our syntax: the settings struct refuses the string with its own message.
-            continue;
+            Err(_) => continue,
         };
         if !decl.uncertain {
             return Err(Error::invalid(

@@ -64,8 +64,8 @@ fn sweeps_go_through_the_model_ports_outside_rule() {
         let rows = layer_rows(d, "sweep_start_angle_deg", layer);
         assert_eq!(rows.len(), 4, "{rows:?}");
         assert!(!rows[1].ends_with(",,"), "80 deg is answered: {rows:?}");
-        assert_eq!(rows[2], format!("{layer},100,outside_model,,"), "{rows:?}");
-        assert_eq!(rows[3], format!("{layer},120,outside_model,,"), "{rows:?}");
+        assert_eq!(rows[2], format!("{layer},100,outside_model,,,"), "{rows:?}");
+        assert_eq!(rows[3], format!("{layer},120,outside_model,,,"), "{rows:?}");
     }
 }
 

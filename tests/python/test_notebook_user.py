@@ -102,7 +102,7 @@ def test_arrays_warn_of_a_likely_unit_mistake_as_single_values_do():
 def test_array_answers_pickle_and_the_rest_say_what_to_send():
     got = jc.solve(mu=np.linspace(0.1, 0.5, 7), radius_mm=12.5)
     back = pickle.loads(pickle.dumps(got))
-    for name in ["status_code", "theta_jam_deg", "x_jam_mm"]:
+    for name in ["status_code", "theta_jam_deg", "x_jam_mm", "past_palm_x_jam_mm"]:
         np.testing.assert_array_equal(getattr(back, name), getattr(got, name))
     assert back.model == got.model
     assert back.inputs.keys() == got.inputs.keys()

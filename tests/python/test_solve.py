@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 import jamchart as jc
 
-from conftest import SHAFT
+from conftest import SHAFT, SHAFT_FLAGS
 
 MODELS = ["statics", "min-norm", "dynamics"]
 
@@ -107,6 +107,20 @@ def test_arrays_broadcast_and_keep_their_shape():
             assert same(float(r.x_jam_mm[i, j]), one.x_jam_mm)
 
 
+def test_a_push_past_the_palm_says_where_it_would_jam(cli_json):
+    """x_jam_mm is NaN where the palm loses the part past its end; past_palm_x_jam_mm says
+    where it would jam on a long enough palm (99.261 mm for the shaft at mu 0.12, as the
+    CLI's past_palm), NaN on every other push."""
+    r = jc.solve(mu=np.array([0.12, 0.2]), **SHAFT)
+    assert list(r.status) == ["beyond_reach", "jams"]
+    assert math.isnan(r.x_jam_mm[0])
+    record = cli_json("solve", "--mu", "0.12", *SHAFT_FLAGS)["results"][0]
+    assert r.past_palm_x_jam_mm[0] == pytest.approx(record["past_palm"]["x_jam_mm"], rel=1e-12)
+    assert r.past_palm_x_jam_mm[0] == pytest.approx(99.261, abs=5e-4)
+    assert math.isnan(r.past_palm_x_jam_mm[1])
+    assert r.past_palm_x_jam_mm.shape == r.x_jam_mm.shape
+
+
 def test_arrays_that_do_not_broadcast_are_refused_naming_both():
     with pytest.raises(ValueError, match=r"mu has shape \(3,\) and force_n has shape \(4,\)"):
         jc.solve(mu=np.ones(3) * 0.3, force_n=np.ones(4) * 40)
@@ -181,7 +195,8 @@ def test_to_pandas_has_a_row_per_push():
     r = jc.solve(mu=np.array([[0.2, 0.3]]), force_n=np.array([[40.0], [200.0]]))
     df = r.to_pandas()
     assert isinstance(df, pd.DataFrame)
-    assert list(df.columns) == ["mu", "force_n", "status", "theta_jam_deg", "x_jam_mm"]
+    assert list(df.columns) == ["mu", "force_n", "status", "theta_jam_deg", "x_jam_mm",
+                                "past_palm_x_jam_mm"]
     assert len(df) == 4
     np.testing.assert_array_equal(df["x_jam_mm"].to_numpy(), r.x_jam_mm.ravel())
 
