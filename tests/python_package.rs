@@ -5,11 +5,16 @@
 //!
 //! Without a `python3` the test is skipped, saying so on stderr ("skipped: no python3"); under
 //! `CI=true` it fails instead, so a machine without Python never passes CI silently.
+//!
+//! The package is built into the target folder of `cargo test`, so that its build compiles
+//! jamchart and pyo3 and reuses every other crate; a second test checks that the two builds
+//! resolve those crates alike.
 
 #[path = "../benches/baseline/mod.rs"]
 #[allow(dead_code)] // the benches' scripts folder is not used here
 mod baseline;
 
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 use std::process::Command;
 
@@ -63,4 +68,73 @@ fn the_python_package_passes_its_tests() {
         status.success(),
         "pytest failed ({status}): its report is above"
     );
+}
+
+/// The Python package's build (maturin runs cargo with `--no-default-features --features
+/// python`) reuses a crate that `cargo test` compiled only when both builds resolve it with the
+/// same features; one that differs is compiled again with every crate above it (syn's features
+/// took serde's, clap's and thiserror's derives along, and clap and the charts' crates after
+/// them). Cargo.toml names what either build turns on for the other; this fails when a
+/// dependency change turns on something it does not name, and says in which crate.
+#[test]
+fn the_python_build_shares_every_crate_with_the_test_build() {
+    let test_build = features(&["--edges", "normal,build,dev"]);
+    let python_build = features(&[
+        "--edges",
+        "normal,build",
+        "--no-default-features",
+        "--features",
+        "python",
+    ]);
+    let differ: Vec<String> = python_build
+        .iter()
+        .filter(|(package, _)| !package.starts_with("jamchart "))
+        .filter_map(|(package, python)| {
+            let test = test_build.get(package)?;
+            (test != python).then(|| format!("{package}: tests {test:?}, Python {python:?}"))
+        })
+        .collect();
+    assert!(
+        python_build.keys().any(|p| p.starts_with("pyo3 ")) && test_build.len() > 100,
+        "cargo tree listed too little to compare: {} and {} packages",
+        test_build.len(),
+        python_build.len()
+    );
+    assert!(
+        differ.is_empty(),
+        "the Python package's build would compile these again: name the features in \
+         Cargo.toml (beside `smallvec`)\n{}",
+        differ.join("\n")
+    );
+}
+
+/// Each package of the build that `args` selects (`cargo tree`), with the feature lists it is
+/// compiled with (two when it is both a build-time and a run-time dependency).
+fn features(args: &[&str]) -> BTreeMap<String, BTreeSet<String>> {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let out = Command::new(cargo)
+        .args(["tree", "--offline", "--prefix", "none", "--no-dedupe"])
+        .args(["--format", "{p}|{f}", "--manifest-path"])
+        .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("Cargo.toml"))
+        .args(args)
+        .output()
+        .expect("cargo starts");
+    assert!(
+        out.status.success(),
+        "cargo tree {args:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let mut packages: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    for line in String::from_utf8_lossy(&out.stdout).lines() {
+        // "name vX.Y.Z (path)|feature,feature": the path only for a local package.
+        let Some((package, features)) = line.split_once('|') else {
+            continue;
+        };
+        let id = package.split(" (").next().unwrap_or(package).trim();
+        packages
+            .entry(id.to_string())
+            .or_default()
+            .insert(features.trim().to_string());
+    }
+    packages
 }
