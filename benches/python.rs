@@ -1,9 +1,10 @@
 //! The Python package's speed (`cargo bench --bench python`), in the environment the package's
 //! test builds (`cargo test --release --test integration python_package` first):
 //!
-//! - 10^6 closed-form answers from a numpy array against numpy's vectorised closed form, and
-//!   one scalar call's time (`benches/baseline/python_package.py`, in one process,
-//!   interleaved);
+//! - 10^6 closed-form answers from a numpy array against numpy's vectorised closed form (the
+//!   best form we could write among them), the memory bandwidth that reaches, and one scalar
+//!   call's time against the closed form in pure Python (`benches/baseline/python_package.py`,
+//!   in one process, interleaved), with jamchart's default threads and then on one thread;
 //! - a 100 x 100 nonsmooth-simulation map from Python against the CLI's (`jamchart render` of
 //!   a contour map of the same cells, SVG only, its whole process): the `solve` call timed in
 //!   Python (what a user who has imported numpy waits for), and Python's whole process;
@@ -39,13 +40,19 @@ fn main() {
     let script = root.join("benches/baseline/python_package.py");
     // glibc would map and unmap numpy's 8 MB temporaries at each operation: page faults, not
     // numpy's arithmetic (the V-locator bench keeps numpy's heap the same way).
-    let status = Command::new(&python)
-        .arg(&script)
-        .env("MALLOC_TOP_PAD_", "67108864")
-        .env("MALLOC_MMAP_THRESHOLD_", "33554432")
-        .status()
-        .expect("the bench script starts");
-    assert!(status.success(), "{} failed", script.display());
+    // Twice: jamchart with its default threads, then on one (numpy runs on one either way).
+    for threads in [None, Some("1")] {
+        let mut cmd = Command::new(&python);
+        cmd.arg(&script)
+            .env("MALLOC_TOP_PAD_", "67108864")
+            .env("MALLOC_MMAP_THRESHOLD_", "33554432")
+            .env_remove("RAYON_NUM_THREADS");
+        if let Some(n) = threads {
+            cmd.env("RAYON_NUM_THREADS", n);
+        }
+        let status = cmd.status().expect("the bench script starts");
+        assert!(status.success(), "{} failed", script.display());
+    }
 
     let dir = tempfile::tempdir().expect("a temporary folder");
     let scene = dir.path().join("map.toml");

@@ -333,3 +333,52 @@ fn stale_temporaries_of_ours_are_swept() {
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     assert!(!stale.exists() && live.exists());
 }
+
+/// `JAMCHART_SYNC` chooses what a set syncs against a power loss: `none` writes the same files
+/// as the default `data`, and any other value is refused, naming the variable, its value and
+/// what to give, before any file or folder is made.
+#[test]
+fn the_sync_policy_is_data_or_none_and_anything_else_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let render = |out: &str, sync: Option<&str>| {
+        let mut cmd = Command::new(env!("CARGO_BIN_EXE_jamchart"));
+        cmd.args(["render", "fig7b", "--quiet", "--out", out])
+            .args(["--scenes-dir", &scenes_dir()])
+            .current_dir(dir.path())
+            .env_remove("JAMCHART_SYNC");
+        if let Some(v) = sync {
+            cmd.env("JAMCHART_SYNC", v);
+        }
+        cmd.output().unwrap()
+    };
+    for (out, sync) in [
+        ("default", None),
+        ("data", Some("data")),
+        ("none", Some("none")),
+    ] {
+        let o = render(out, sync);
+        assert_eq!(o.status.code(), Some(0), "{sync:?}: {}", stderr(&o));
+    }
+    for out in ["data", "none"] {
+        assert_eq!(
+            names(&dir.path().join(out)),
+            names(&dir.path().join("default"))
+        );
+        // The gallery page names its folder in the command it shows: the charts and data only.
+        for name in names(&dir.path().join("default")) {
+            if name == "index.html" {
+                continue;
+            }
+            let read = |d: &str| std::fs::read(dir.path().join(d).join(&name)).unwrap();
+            assert!(read(out) == read("default"), "{out}/{name} differs");
+        }
+    }
+    let o = render("refused", Some("sometimes"));
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(
+        err.contains("JAMCHART_SYNC") && err.contains("sometimes") && err.contains("none"),
+        "{err}"
+    );
+    assert!(!dir.path().join("refused").exists(), "{err}");
+}

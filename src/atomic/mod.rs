@@ -4,11 +4,13 @@
 //! files staged one at a time as they are made):
 //! 1. each path is checked ([`destination::check`]): a new name or a regular file is replaced,
 //!    a FIFO, terminal or /dev/null is written through, anything else is refused;
-//! 2. every regular file is written to a temporary file beside it, and synced (on a thread of
-//!    its own, so the next file is made while the disk catches up; step 4 waits for every sync);
+//! 2. every regular file is written to a temporary file beside it, and its write-back to the
+//!    disk started (the set's [`SyncPolicy`]; step 4 waits for it);
 //! 3. the streams are written (by a [`Set`], each as it is staged);
-//! 4. the temporary files are renamed over their final names, each old file kept aside (a hard
-//!    link) until all renames succeeded, and put back if one fails.
+//! 4. the temporary files' data is synced to the disk, one file after another (the write-back
+//!    started in step 2 has done most of it; the first sync commits the file system's journal
+//!    for all), then the temporary files are renamed over their final names, each old file kept
+//!    aside (a hard link) until all renames succeeded, and put back if one fails.
 //!
 //! So a command that fails leaves the regular files as it found them (a stream may have been
 //! written: it cannot be taken back), and a directory this set created is removed again.
@@ -169,45 +171,65 @@ pub struct Set {
     swept: Mutex<HashSet<PathBuf>>,
     /// Staged regular files: their place in `order`, temporary file and final path.
     staged: Mutex<Vec<(usize, Temp, PathBuf)>>,
-    /// The syncs of staged files still under way, with each file's final path.
-    syncing: Mutex<Vec<(PathBuf, Syncing)>>,
+    /// What the commit syncs before the renames.
+    sync: SyncPolicy,
     /// The paths of every output staged so far, streams too.
     given: Mutex<HashSet<PathBuf>>,
 }
 
-/// A staged file's sync: on a thread of its own, or done already where no thread could be
-/// made. (The sync of `render fig3`'s 4.6 MB cells CSV took about 4 ms of the render's 20, a
-/// worker waiting on the disk.)
-enum Syncing {
-    Thread(std::thread::JoinHandle<std::io::Result<()>>),
-    Done(std::io::Result<()>),
+/// The environment variable that chooses the [`SyncPolicy`]: `data` (the default) or `none`.
+pub const SYNC_VAR: &str = "JAMCHART_SYNC";
+
+/// What a set makes sure of against a power loss, beyond the renames that make it whole under a
+/// kill: from [`SYNC_VAR`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SyncPolicy {
+    /// Each temporary file's data is on the disk before any file of the set is renamed into
+    /// place: after a power loss every file is its old or its new version, whole (the default).
+    /// A staged file's write-back starts at once, without waiting; the commit then syncs the
+    /// files one after another, which costs the wait for the last bytes and one journal commit.
+    Data,
+    /// No sync: the renames still make the set whole under a kill, but a power loss soon after
+    /// can leave a file just written empty or short, as most tools that draw charts leave it.
+    /// For scratch output that is rendered again anyway (benchmarks, a CI check).
+    None,
 }
 
-impl Syncing {
-    /// Syncs `file`'s data, on a new thread where one can be made.
-    fn start(file: std::fs::File) -> Self {
-        let file = std::sync::Arc::new(file);
-        let theirs = file.clone();
-        // fdatasync needs no stack to speak of.
-        let thread = std::thread::Builder::new()
-            .name("sync".into())
-            .stack_size(64 << 10)
-            .spawn(move || theirs.sync_data());
-        match thread {
-            Ok(t) => Syncing::Thread(t),
-            Err(_) => Syncing::Done(file.sync_data()),
+impl SyncPolicy {
+    /// The policy [`SYNC_VAR`] names; unset or empty is [`SyncPolicy::Data`].
+    pub fn from_env() -> Result<Self> {
+        match std::env::var(SYNC_VAR) {
+            Err(std::env::VarError::NotPresent) => Ok(SyncPolicy::Data),
+            Ok(v) if v.is_empty() || v == "data" => Ok(SyncPolicy::Data),
+            Ok(v) if v == "none" => Ok(SyncPolicy::None),
+            Ok(v) => Err(Error::invalid(
+                SYNC_VAR,
+                v,
+                "give data (sync each file before the renames, the default) or none (renames only)",
+            )),
+            Err(std::env::VarError::NotUnicode(v)) => Err(Error::invalid(
+                SYNC_VAR,
+                v.to_string_lossy(),
+                "give data or none",
+            )),
         }
     }
+}
 
-    /// Waits for the sync.
-    fn finish(self) -> std::io::Result<()> {
-        match self {
-            Syncing::Thread(t) => t
-                .join()
-                .unwrap_or_else(|_| Err(std::io::Error::other("the sync's thread panicked"))),
-            Syncing::Done(r) => r,
+/// Starts the write-back of `file`'s dirty pages to the disk and returns at once (Linux's
+/// `sync_file_range` with `SYNC_FILE_RANGE_WRITE`; elsewhere nothing): the sync at the commit
+/// then finds most of the data written. A failure here is not reported: the sync reports it.
+fn start_write_back(file: &std::fs::File) {
+    #[cfg(target_os = "linux")]
+    {
+        use std::os::fd::AsRawFd;
+        // SAFETY: a plain system call on an open descriptor; no memory is passed.
+        unsafe {
+            libc::sync_file_range(file.as_raw_fd(), 0, 0, libc::SYNC_FILE_RANGE_WRITE);
         }
     }
+    #[cfg(not(target_os = "linux"))]
+    let _ = file;
 }
 
 impl Set {
@@ -215,20 +237,21 @@ impl Set {
     /// created.
     pub fn begin<'p>(paths: impl IntoIterator<Item = &'p Path>) -> Result<Set> {
         let order: Vec<PathBuf> = paths.into_iter().map(Path::to_path_buf).collect();
+        let sync = SyncPolicy::from_env()?;
         check_all(order.iter().map(PathBuf::as_path))?;
         let created = create_parents(&order)?;
         Ok(Set {
             order,
             created,
+            sync,
             swept: Mutex::new(HashSet::new()),
             staged: Mutex::new(Vec::new()),
-            syncing: Mutex::new(Vec::new()),
             given: Mutex::new(HashSet::new()),
         })
     }
 
     /// Steps 2 and 3 for one output: a regular file is written to its temporary file and its
-    /// sync started, a stream is written now.
+    /// write-back started, a stream is written now.
     pub fn stage(&self, output: Output) -> Result<()> {
         lock_ignoring_poison(&self.given).insert(output.path.to_path_buf());
         match destination::check(output.path)? {
@@ -243,8 +266,8 @@ impl Set {
         lock_ignoring_poison(&self.given).contains(path)
     }
 
-    /// Steps 2 and 3 for `outputs`: the regular files written in parallel, each sync started
-    /// as its file is written, then the streams. The first
+    /// Steps 2 and 3 for `outputs`: the regular files written in parallel, each write-back
+    /// started as its file is written, then the streams. The first
     /// failure in output order is reported, so the message does not depend on the thread
     /// count.
     pub fn stage_all(&self, outputs: &[Output]) -> Result<()> {
@@ -266,7 +289,7 @@ impl Set {
         Ok(())
     }
 
-    /// Writes a regular file's temporary and starts its sync ([`Set::commit`] waits for it).
+    /// Writes a regular file's temporary and starts its write-back ([`Set::commit`] syncs it).
     fn stage_file(&self, o: Output) -> Result<()> {
         let dir = o.path.parent().filter(|d| !d.as_os_str().is_empty());
         let dir = dir.unwrap_or(Path::new("."));
@@ -277,7 +300,9 @@ impl Set {
         o.content
             .write_to(&mut f)
             .map_err(|e| Error::io("write", o.path, e))?;
-        lock_ignoring_poison(&self.syncing).push((o.path.to_path_buf(), Syncing::start(f)));
+        if self.sync == SyncPolicy::Data {
+            start_write_back(&f);
+        }
         let place = self.order.iter().position(|p| p == o.path);
         lock_ignoring_poison(&self.staged).push((
             place.unwrap_or(usize::MAX),
@@ -290,22 +315,20 @@ impl Set {
     /// Step 4 of the module doc, under the registry's lock so that a signal waits for it: the
     /// staged files renamed into place in the declared order.
     pub fn commit(mut self) -> Result<()> {
-        // Every sync is waited for before the first rename; the first failure in the declared
-        // order is reported (the temporaries go with the set).
-        let mut syncs = std::mem::take(lock_ignoring_poison(&self.syncing).deref_mut());
-        syncs.sort_by_cached_key(|(path, _)| {
-            let place = self.order.iter().position(|p| p == path);
-            (place.unwrap_or(usize::MAX), path.clone())
-        });
-        let mut synced = Ok(());
-        for (path, sync) in syncs {
-            let r = sync.finish().map_err(|e| Error::io("write", &path, e));
-            synced = synced.and(r);
-        }
-        synced?;
         pause_for_tests();
         let mut files = std::mem::take(lock_ignoring_poison(&self.staged).deref_mut());
         files.sort_by(|a, b| (a.0, &a.2).cmp(&(b.0, &b.2)));
+        if self.sync == SyncPolicy::Data {
+            // Every file is synced before the first rename, in the declared order, and the
+            // first failure is reported (the temporaries go with the set). One after another:
+            // the write-back is under way since each file was staged, and the first sync's
+            // journal commit holds the other files' metadata too. Each temporary is opened
+            // again for it, so a set of many files holds no descriptors open until its commit.
+            for (_, temp, dest) in &files {
+                let synced = std::fs::File::open(&temp.path).and_then(|f| f.sync_data());
+                synced.map_err(|e| Error::io("write", dest.as_path(), e))?;
+            }
+        }
         let live = cleanup::lock();
         // Per renamed file: its final path and where its old version is kept (None: it was new).
         let mut done: Vec<(&Path, Option<PathBuf>)> = Vec::new();
