@@ -115,6 +115,10 @@ pub const UNIVERSAL_CELL: PerItem = PerItem::new("cells of the universal chart",
 /// A cell of a V-locator capacity map.
 pub const VLOCATOR_CAPACITY_CELL: PerItem = PerItem::new("cells of the capacity map", 130, 32);
 
+/// A push of a binding's arrays: its answers (a status byte, theta_jam and x_jam as f64).
+#[cfg(feature = "python")]
+pub const PUSH: PerItem = PerItem::new("pushes", 17, 0);
+
 /// A point of a sweep.
 pub const SWEEP_POINT: PerItem = PerItem::new("points of the sweep", 1500, 120);
 
@@ -256,7 +260,7 @@ pub fn check_pushes(
     bytes_per_push: u64,
     spec: &crate::models::ModelSpec,
 ) -> Result<()> {
-    check_items(key, count, PerItem::new("pushes", bytes_per_push, 0))?;
+    check_items(key, count, PerItem::new(PUSH.what, bytes_per_push, 0))?;
     let per = per_sample(spec);
     let estimate_s = count * per.cpu_s;
     if estimate_s <= MAX_SAMPLED_CPU_S {

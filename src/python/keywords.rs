@@ -252,6 +252,10 @@ pub(super) fn given<'py>(
                 Value::One(x) => x,
                 Value::Array(a) => {
                     let param = param.expect("only a scene parameter takes an array");
+                    // Before its elements are read: a broadcast view of 2^40 pushes is one
+                    // number in memory, and reading it took hours.
+                    crate::limits::check_items(&key, a.len() as f64, crate::limits::PUSH)
+                        .map_err(error)?;
                     check_array(param.decl(), &a)?;
                     out.arrays.push((param, a));
                     continue;
