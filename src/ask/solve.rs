@@ -265,7 +265,7 @@ impl SolveQuestion {
     /// [`SolveQuestion::answer`], telling `progress` how a Monte Carlo goes (its estimate,
     /// then each chunk of samples as it is drawn, from any thread); `progress` answering
     /// [`Flow::Break`] stops the draws (a face's Ctrl-C), and the answer is
-    /// [`Error::Stopped`](crate::error::Error::Stopped).
+    /// [`Error::Stopped`].
     pub fn answer_observed(
         &self,
         progress: &(dyn Fn(Progress) -> Flow + Sync),

@@ -354,7 +354,7 @@ pub enum Progress {
 
 /// [`monte_carlo`], telling `progress` its estimate once accepted and each chunk as it is done;
 /// where `progress` answers [`Flow::Break`], the draws stop within a chunk per thread and the
-/// answer is [`Error::Stopped`](crate::error::Error::Stopped).
+/// answer is [`Error::Stopped`].
 pub(crate) fn monte_carlo_observed(
     spec: &ModelSpec,
     p: &SceneParams,
