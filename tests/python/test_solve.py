@@ -195,8 +195,12 @@ def test_to_pandas_has_a_row_per_push():
     r = jc.solve(mu=np.array([[0.2, 0.3]]), force_n=np.array([[40.0], [200.0]]))
     df = r.to_pandas()
     assert isinstance(df, pd.DataFrame)
-    assert list(df.columns) == ["mu", "force_n", "status", "theta_jam_deg", "x_jam_mm",
-                                "past_palm_x_jam_mm"]
+    columns = list(df.columns)
+    # The arrays, the settings every push shares, then the answers.
+    assert columns[:2] == ["mu", "force_n"]
+    assert columns[-4:] == ["status", "theta_jam_deg", "x_jam_mm", "past_palm_x_jam_mm"]
+    assert {"radius_mm", "mass_kg", "palm_length_mm"} <= set(columns[2:-4])
+    assert not {"mu_ground", "mu_palm"} & set(columns)
     assert len(df) == 4
     np.testing.assert_array_equal(df["x_jam_mm"].to_numpy(), r.x_jam_mm.ravel())
 
@@ -282,7 +286,7 @@ def test_help_answers_with_units_defaults_and_ranges():
     doc = jc.solve.__doc__
     assert "radius_mm : float or array_like, default 10\n" in doc
     assert "In mm; a finite number > 0." in doc
-    assert "mu : float, array_like, (low, high) or Distribution, default 0.4" in doc
+    assert "mu : float, array_like, Range or Distribution, default 0.4" in doc
     assert 'method : {"radau5", "dopri5", "nonsmooth"}, default "radau5"' in doc
     import inspect
 
