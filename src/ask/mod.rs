@@ -115,9 +115,7 @@ impl Words {
                 .find(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
                 .unwrap_or(tail.len());
             let name = tail[..len].trim_end_matches('-');
-            let own = DIST_KEYS.iter().chain(DESIGN_KEYS).chain(GEOMETRY_KEYS);
-            let mut decl = own.chain(crate::settings::all());
-            match decl.find(|d| d.flag == Some(name)) {
+            match decls().find(|d| d.flag == Some(name)) {
                 Some(d) if !name.is_empty() => out.push_str(d.key),
                 _ => out.push_str(&rest[at..at + 2 + name.len()]),
             }
@@ -137,13 +135,16 @@ impl Words {
     }
 }
 
+/// Every declared setting a face may name: the questions' own keys, then the settings'.
+fn decls() -> impl Iterator<Item = &'static crate::settings::Decl> {
+    let own = DIST_KEYS.iter().chain(DESIGN_KEYS).chain(GEOMETRY_KEYS);
+    own.chain(crate::settings::all())
+}
+
 /// `--flag` of setting `key`: its own declared flag, the flag of a question's own key, or the
 /// key spelt as a flag.
 fn flag(key: &str) -> String {
-    let own = DIST_KEYS.iter().chain(DESIGN_KEYS).chain(GEOMETRY_KEYS);
-    let decl = own
-        .chain(crate::settings::all())
-        .find(|d| d.key == key || d.path_is(key));
+    let decl = decls().find(|d| d.key == key || d.path_is(key));
     match decl.and_then(|d| d.flag) {
         Some(f) => format!("--{f}"),
         None => format!("--{}", key.replace('_', "-")),

@@ -51,15 +51,7 @@ pub(super) struct Distribution(pub(super) Uncertain);
 #[pymethods]
 impl Distribution {
     fn __repr__(&self) -> String {
-        let t = settings::number_text;
-        match self.0 {
-            Uncertain::Uniform { lo, hi } => format!("jamchart.uniform({}, {})", t(lo), t(hi)),
-            Uncertain::Normal { mean, sd } => format!("jamchart.normal({}, {})", t(mean), t(sd)),
-            Uncertain::LogNormal { median, sigma } => {
-                format!("jamchart.lognormal({}, {})", t(median), t(sigma))
-            }
-            u => format!("jamchart.Distribution({u})"),
-        }
+        made(&self.0)
     }
 
     /// The value a point answer keeps: a uniform's midpoint, a normal's mean, a lognormal's
@@ -100,12 +92,26 @@ impl Distribution {
     }
 }
 
-/// `u`, refused (`ValueError` naming `made`, e.g. `jamchart.normal(0.2, -1)`) where its numbers
-/// cannot describe any input.
-fn checked(u: Uncertain, made: &str) -> PyResult<Uncertain> {
+/// How a face's call that makes `u` is written: `jamchart.normal(0.2, 0.03)`,
+/// `jamchart.Range(0.12, 0.3)`.
+fn made(u: &Uncertain) -> String {
+    let t = settings::number_text;
+    let (name, a, b) = match *u {
+        Uncertain::Point { value } => return format!("jamchart.Distribution({})", t(value)),
+        Uncertain::Range { lo, hi } => ("Range", lo, hi),
+        Uncertain::Uniform { lo, hi } => ("uniform", lo, hi),
+        Uncertain::Normal { mean, sd } => ("normal", mean, sd),
+        Uncertain::LogNormal { median, sigma } => ("lognormal", median, sigma),
+    };
+    format!("jamchart.{name}({}, {})", t(a), t(b))
+}
+
+/// `u`, refused (`ValueError` naming the call that made it, e.g. `jamchart.normal(0.2, -1)`)
+/// where its numbers cannot describe any input.
+fn checked(u: Uncertain) -> PyResult<Uncertain> {
     match u.shape_error() {
         None => Ok(u),
-        Some(why) => Err(PyValueError::new_err(format!("{made}: {why}"))),
+        Some(why) => Err(PyValueError::new_err(format!("{}: {why}", made(&u)))),
     }
 }
 
@@ -113,12 +119,7 @@ fn checked(u: Uncertain, made: &str) -> PyResult<Uncertain> {
 /// a mass is never negative): `solve(mu=normal(0.2, 0.03))`, the CLI's `--mu normal(0.2,0.03)`.
 #[pyfunction]
 pub(super) fn normal(mean: f64, sd: f64) -> PyResult<Distribution> {
-    let t = settings::number_text;
-    let u = Uncertain::Normal { mean, sd };
-    Ok(Distribution(checked(
-        u,
-        &format!("jamchart.normal({}, {})", t(mean), t(sd)),
-    )?))
+    Ok(Distribution(checked(Uncertain::Normal { mean, sd })?))
 }
 
 /// Uniform on [`low`, `high`]: `solve(mu=uniform(0.12, 0.3))`, the CLI's
@@ -126,24 +127,20 @@ pub(super) fn normal(mean: f64, sd: f64) -> PyResult<Distribution> {
 /// a `Range`.
 #[pyfunction]
 pub(super) fn uniform(low: f64, high: f64) -> PyResult<Distribution> {
-    let t = settings::number_text;
-    let u = Uncertain::Uniform { lo: low, hi: high };
-    Ok(Distribution(checked(
-        u,
-        &format!("jamchart.uniform({}, {})", t(low), t(high)),
-    )?))
+    Ok(Distribution(checked(Uncertain::Uniform {
+        lo: low,
+        hi: high,
+    })?))
 }
 
 /// Lognormal: ln X is normal with mean ln(`median`) and standard deviation `sigma`:
 /// `solve(force_n=lognormal(40, 0.1))`, the CLI's `--force lognormal(40,0.1)`.
 #[pyfunction]
 pub(super) fn lognormal(median: f64, sigma: f64) -> PyResult<Distribution> {
-    let t = settings::number_text;
-    let u = Uncertain::LogNormal { median, sigma };
-    Ok(Distribution(checked(
-        u,
-        &format!("jamchart.lognormal({}, {})", t(median), t(sigma)),
-    )?))
+    Ok(Distribution(checked(Uncertain::LogNormal {
+        median,
+        sigma,
+    })?))
 }
 
 /// Every value from `low` to `high`, none more likely: `solve(mu=Range(0.12, 0.3))` answers the
@@ -156,12 +153,7 @@ pub(super) struct Range(pub(super) Uncertain);
 impl Range {
     #[new]
     fn new(low: f64, high: f64) -> PyResult<Self> {
-        let t = settings::number_text;
-        let u = Uncertain::Range { lo: low, hi: high };
-        Ok(Range(checked(
-            u,
-            &format!("jamchart.Range({}, {})", t(low), t(high)),
-        )?))
+        Ok(Range(checked(Uncertain::Range { lo: low, hi: high })?))
     }
 
     /// The low end.
@@ -183,9 +175,7 @@ impl Range {
     }
 
     fn __repr__(&self) -> String {
-        let t = settings::number_text;
-        let (lo, hi) = self.0.ends();
-        format!("jamchart.Range({}, {})", t(lo), t(hi))
+        made(&self.0)
     }
 
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
@@ -389,6 +379,22 @@ fn list(key: &str, v: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
     ))
 }
 
+/// Row-major position `pos` of an array of `shape` as its index along each axis.
+pub(super) fn multi_index(pos: usize, shape: &[usize]) -> Vec<usize> {
+    let mut rest = pos;
+    let mut index: Vec<usize> = shape
+        .iter()
+        .rev()
+        .map(|&d| {
+            let i = rest % d.max(1);
+            rest /= d.max(1);
+            i
+        })
+        .collect();
+    index.reverse();
+    index
+}
+
 /// Checks every element of `a` against `decl`; the error names the first bad element by its
 /// index: `invalid mu[3] = -0.2: friction coefficient must be a finite number >= 0`.
 fn check_array(decl: &Decl, a: &Bound<'_, PyArrayDyn<f64>>) -> PyResult<()> {
@@ -400,18 +406,7 @@ fn check_array(decl: &Decl, a: &Bound<'_, PyArrayDyn<f64>>) -> PyResult<()> {
         None => view.iter().position(|v| !decl.check.accepts(*v)),
     };
     let bad = first.map(|pos| {
-        let mut rest = pos;
-        let mut index: Vec<usize> = view
-            .shape()
-            .iter()
-            .rev()
-            .map(|&d| {
-                let i = rest % d.max(1);
-                rest /= d.max(1);
-                i
-            })
-            .collect();
-        index.reverse();
+        let index = multi_index(pos, view.shape());
         (index, view.iter().nth(pos).copied().unwrap_or(f64::NAN))
     });
     match bad {

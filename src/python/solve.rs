@@ -296,17 +296,10 @@ pub(super) fn varying<'a>(keys: impl Iterator<Item = &'a str>, late: bool) -> Ve
 
 /// Flat index `i` of an array of `shape` as numpy writes its multi-index: `(0, 3)`, `3`.
 fn index_text(i: usize, shape: &[usize]) -> String {
-    let mut rest = i;
-    let mut index: Vec<String> = shape
+    let mut index: Vec<String> = keywords::multi_index(i, shape)
         .iter()
-        .rev()
-        .map(|&d| {
-            let k = rest % d.max(1);
-            rest /= d.max(1);
-            k.to_string()
-        })
+        .map(usize::to_string)
         .collect();
-    index.reverse();
     match index.len() {
         1 => index.remove(0),
         _ => format!("({})", index.join(", ")),
