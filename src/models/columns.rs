@@ -384,20 +384,23 @@ pub fn past_palm_into(
             format!("each answer buffer holds one element per push ({n})"),
         ));
     }
+    if !matches!(spec, ModelSpec::Statics) {
+        out.fill(f64::NAN);
+        return Ok(());
+    }
+    // A few pushes in a hundred at most lie past the palm: a chunk's pass finds them, and
+    // only they build their scene.
     let resolved = pushes.resolved();
     let beyond = JamStatus::BeyondReach.index();
-    let statics = matches!(spec, ModelSpec::Statics);
-    out.par_iter_mut()
-        .with_min_len(CHUNK)
-        .zip(status.par_iter())
+    out.par_chunks_mut(CHUNK)
+        .zip(status.par_chunks(CHUNK))
         .enumerate()
-        .for_each(|(i, (x, &s))| {
-            *x = match statics && s == beyond {
-                true => statics::solve(&resolved.scene(pushes.base, i))
-                    .past_palm
-                    .map_or(f64::NAN, |p| p.x_jam_mm),
-                false => f64::NAN,
-            };
+        .for_each(|(c, (xs, ss))| {
+            xs.fill(f64::NAN);
+            for (j, x) in xs.iter_mut().enumerate().filter(|&(j, _)| ss[j] == beyond) {
+                let scene = resolved.scene(pushes.base, c * CHUNK + j);
+                *x = statics::past_palm_x_jam_mm(&scene).unwrap_or(f64::NAN);
+            }
         });
     Ok(())
 }
@@ -802,5 +805,50 @@ mod tests {
         // Jams on the palm, never jams: no jam past the palm.
         assert!(x[1].is_finite() && past[1].is_nan(), "{x:?} {past:?}");
         assert!(past[2].is_nan(), "{past:?}");
+    }
+
+    /// Over several chunks of pushes, each push's past-palm jam is its own scene's, the chunk
+    /// that holds it found by its index.
+    #[test]
+    fn past_palm_jams_follow_their_pushes_across_chunks() {
+        let n = 3 * CHUNK + 7;
+        let mu: Vec<f64> = (0..n).map(|i| 0.4 * i as f64 / n as f64).collect();
+        let base = SceneParams {
+            palm_length_mm: 40.0,
+            ..SceneParams::default()
+        };
+        let pushes = Pushes {
+            base,
+            columns: vec![(Param::named("mu").unwrap(), &mu[..])],
+        };
+        let (mut st, mut th, mut x) = (vec![0; n], vec![0.0; n], vec![0.0; n]);
+        let out = Answers {
+            status: &mut st,
+            theta_jam_deg: &mut th,
+            x_jam_mm: &mut x,
+        };
+        solve_into(&ModelSpec::Statics, &pushes, out).unwrap();
+        let mut past = vec![0.0; n];
+        past_palm_into(&ModelSpec::Statics, &pushes, &st, &mut past).unwrap();
+        let mut found = 0;
+        for (i, &m) in mu.iter().enumerate() {
+            let own = crate::statics::solve(&base.with_mu(m)).past_palm;
+            let want = own.map_or(f64::NAN, |p| p.x_jam_mm);
+            assert_eq!(past[i].to_bits(), want.to_bits(), "push {i}, mu = {m}");
+            found += usize::from(own.is_some());
+        }
+        assert!(
+            found > CHUNK && found < n - CHUNK,
+            "{found} of {n} past the palm"
+        );
+        // The other models give none.
+        past_palm_into(
+            &ModelSpec::MinNorm(Default::default()),
+            &pushes,
+            &st,
+            &mut past,
+        )
+        .unwrap();
+        assert!(past.iter().all(|x| x.is_nan()));
     }
 }

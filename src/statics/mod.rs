@@ -582,8 +582,6 @@ pub(crate) fn solve(p: &SceneParams) -> StaticsSolution {
     let (theta_rigid_deg, x_rigid_mm) = rigid_limit(p);
     let (theta, x) = v.answer(push.start.deg);
     let status = JamStatus::ALL[v.status.one() as usize];
-    let past = status == JamStatus::BeyondReach && !v.beyond_at_start.0[0];
-    let (theta_jam, x_jam, s_b) = (v.theta_jam.one(), v.x_jam.one(), v.s_b.one());
     StaticsSolution {
         status,
         theta_jam_deg: finite_or_none(theta.one()),
@@ -592,13 +590,29 @@ pub(crate) fn solve(p: &SceneParams) -> StaticsSolution {
         x_rigid_mm,
         lift_off_above_deg: lift_off_above.map(f64::to_degrees),
         lifts_off: lift_off_above.is_some_and(|t| t < push.start.rad.one()),
-        past_palm: (past && x_jam.is_finite() && s_b.is_finite()).then(|| PastPalm {
+        past_palm: past_palm(&v).map(|(theta_jam, x_jam, s_b)| PastPalm {
             theta_jam_deg: theta_jam.to_degrees(),
             x_jam_mm: x_jam,
             palm_length_needed_mm: s_b,
             friction_factor_needed: friction_factor_to_reach(p),
         }),
     }
+}
+
+/// A `beyond_reach` verdict's jam past the palm's end, where it has one: theta_jam in rad,
+/// x_jam and the contact's distance s_B in mm.
+fn past_palm(v: &Verdict<1>) -> Option<(f64, f64, f64)> {
+    let past = v.status.one() == f64::from(JamStatus::BeyondReach.index());
+    let (theta_jam, x_jam, s_b) = (v.theta_jam.one(), v.x_jam.one(), v.s_b.one());
+    (past && !v.beyond_at_start.0[0] && x_jam.is_finite() && s_b.is_finite())
+        .then_some((theta_jam, x_jam, s_b))
+}
+
+/// [`solve`]'s `past_palm.x_jam_mm` alone, without the bisection for the friction factor that
+/// would bring the jam onto the palm (a hundred closed forms): what a column of pushes keeps.
+/// `p` must have passed validation.
+pub(crate) fn past_palm_x_jam_mm(p: &SceneParams) -> Option<f64> {
+    past_palm(&verdict(&Push::of(p))).map(|(_, x_jam, _)| x_jam)
 }
 
 /// The closed form's status alone: [`solve`]'s `status` without the extras (no lift-off
@@ -790,6 +804,30 @@ mod tests {
         assert_eq!((sin, cos), 60_f64.to_radians().sin_cos());
         let s_b = p.start_contact_distance_mm();
         assert!((s_b - p.contact_distance_mm(60_f64.to_radians())).abs() < 1e-12 * s_b);
+    }
+
+    /// A column's past-palm x_jam (no friction factor searched) is the full answer's, bit for
+    /// bit, wherever the full answer has one, and absent wherever it has none.
+    #[test]
+    fn the_past_palm_jam_alone_is_the_full_answers() {
+        let mut past = 0;
+        for mu in [0.0, 1e-9, 0.05, 0.12, 0.3, 0.9, 1.5] {
+            for palm_length_mm in [5.0, 30.0, 80.0, 150.0] {
+                for (palm_offset_mm, start_angle_deg) in [(0.0, 90.0), (3.0, 60.0), (0.0, 1.0)] {
+                    let p = SceneParams {
+                        palm_length_mm,
+                        palm_offset_mm,
+                        start_angle_deg,
+                        force_n: 40.0,
+                        ..SceneParams::default().with_mu(mu)
+                    };
+                    let full = solve(&p).past_palm.map(|q| q.x_jam_mm.to_bits());
+                    assert_eq!(past_palm_x_jam_mm(&p).map(f64::to_bits), full, "{p:?}");
+                    past += usize::from(full.is_some());
+                }
+            }
+        }
+        assert!(past >= 5, "{past} scenes with a jam past the palm");
     }
 
     /// Regression: a jam past the palm's end said `beyond_reach` with no number; the

@@ -414,6 +414,10 @@ impl UncertainSet {
     /// This set (from a file) with `later` (from flags) over it: a key that `given` (the later
     /// overrides, aliases not yet expanded) sets, as a point or not, leaves this set's inputs.
     pub(crate) fn override_by(&mut self, given: &toml::Table, later: UncertainSet) {
+        if self.inputs.is_empty() {
+            self.inputs = later.inputs;
+            return;
+        }
         let mut keys: Vec<&str> = given.keys().map(String::as_str).collect();
         for d in crate::settings::all().filter(|d| given.contains_key(d.key)) {
             keys.extend(d.sets.iter().copied());

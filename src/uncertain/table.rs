@@ -15,6 +15,10 @@ pub(crate) fn take(
     decls: impl Iterator<Item = &'static Decl> + Clone,
 ) -> Result<UncertainSet> {
     let mut set = UncertainSet::default();
+    // Numbers only (the common question): nothing to take.
+    if !table.values().any(toml::Value::is_str) {
+        return Ok(set);
+    }
     for decl in decls.clone() {
         let Some(toml::Value::String(text)) = table.get(decl.key) else {
             continue;
