@@ -5,8 +5,8 @@
 //! `vlocator.py`: the V-locator's closed-form capacity map in numpy; `radau.py`: one simulation
 //! to the jam by scipy's Radau) run in a virtual environment under the target folder, made on
 //! first use by `python3 -m venv` and `pip install -r requirements.txt` (pinned versions from
-//! PyPI) and remade when the requirements change. Where that cannot be done, [`python`] says why and the bench prints
-//! `no baseline: <why>` and no ratio.
+//! PyPI) and remade when the requirements change. Where that cannot be done, [`python`] says
+//! why and the bench prints `no baseline: <why>` and no ratio.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
