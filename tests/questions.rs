@@ -124,7 +124,6 @@ fn bad_keywords_are_typed_errors_naming_the_key() {
         (r#"{"model": "adams"}"#, "model"),
         (r#"{"samples": -3}"#, "samples"),
         (r#"{"quantiles": [1.5]}"#, "quantiles"),
-        (r#"{"force_n": 10, "push_ratio": 3}"#, "push_ratio"),
         (r#"{"method": "euler"}"#, "dynamics.integrator.method"),
     ] {
         match refused(body) {
@@ -132,6 +131,24 @@ fn bad_keywords_are_typed_errors_naming_the_key() {
             other => panic!("{body}: {other:?}"),
         }
     }
+    // Two ways to set the push: a conflict of the two keys, not a value of either.
+    match refused(r#"{"force_n": 10, "push_ratio": 3}"#) {
+        Err(
+            e @ Error::Conflict {
+                flag: "push_ratio", ..
+            },
+        ) => assert_eq!(
+            e.to_string(),
+            "force_n and push_ratio both set the push: give one of them"
+        ),
+        other => panic!("{other:?}"),
+    }
+    // A sample count says the least it takes: one sample, where a seed may be 0.
+    for body in [r#"{"samples": true}"#, r#"{"samples": 0}"#] {
+        let e = refused(body).unwrap_err().to_string();
+        assert!(e.ends_with("samples is a whole number >= 1"), "{body}: {e}");
+    }
+    assert!(refused(r#"{"seed": 0}"#).is_ok());
     // Deserialising says the same, as text.
     let e = serde_json::from_str::<SolveQuestion>(r#"{"mu": -1}"#).unwrap_err();
     assert!(e.to_string().starts_with("invalid mu = -1: "), "{e}");

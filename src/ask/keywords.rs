@@ -66,15 +66,15 @@ impl Keywords {
             .ok_or_else(|| Error::invalid(key, shown(&v), "give a number or a list of numbers"))
     }
 
-    /// Takes out `key`, a whole number >= 0.
-    pub(crate) fn take_count(&mut self, key: &str) -> Result<Option<u64>> {
+    /// Takes out `key`, a whole number >= `least`.
+    pub(crate) fn take_count(&mut self, key: &str, least: u64) -> Result<Option<u64>> {
         match self.take(key) {
             None => Ok(None),
-            Some(toml::Value::Integer(i)) if i >= 0 => Ok(Some(i as u64)),
+            Some(toml::Value::Integer(i)) if i >= 0 && i as u64 >= least => Ok(Some(i as u64)),
             Some(v) => Err(Error::invalid(
                 key,
                 shown(&v),
-                format!("{key} is a whole number >= 0"),
+                format!("{key} is a whole number >= {least}"),
             )),
         }
     }

@@ -162,8 +162,8 @@ impl SolveQuestion {
         if let Some(v) = kw.take_numbers("quantiles")? {
             distribution.quantiles = v;
         }
-        distribution.samples = kw.take_count("samples")?;
-        if let Some(seed) = kw.take_count("seed")? {
+        distribution.samples = kw.take_count("samples", 1)?;
+        if let Some(seed) = kw.take_count("seed", 0)? {
             distribution.seed = seed;
         }
         let trace = kw.take_switch("trace")?.unwrap_or(false);
@@ -189,11 +189,10 @@ impl SolveQuestion {
     /// and `push_ratio` together.
     pub fn refuse_two_pushes(keys: &[&str]) -> Result<()> {
         match keys.contains(&"force_n") && keys.contains(&"push_ratio") {
-            true => Err(Error::invalid(
-                "push_ratio",
-                "given",
-                "force_n is given as well: set the push one way, by force_n or by push_ratio",
-            )),
+            true => Err(Error::Conflict {
+                flag: "push_ratio",
+                message: "force_n and push_ratio both set the push: give one of them".into(),
+            }),
             false => Ok(()),
         }
     }

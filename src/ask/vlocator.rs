@@ -95,12 +95,12 @@ impl VlocatorQuestion {
         let included = kw.take_number("included_angle_deg")?;
         let flanks = kw.take_numbers("flank_angles")?;
         if included.is_some() && flanks.is_some() {
-            return Err(Error::invalid(
-                "flank_angles",
-                "given",
-                "included_angle_deg is given as well: give the V one way, a symmetric V by \
-                 included_angle_deg or both flanks by flank_angles",
-            ));
+            return Err(Error::Conflict {
+                flag: "flank_angles",
+                message: "included_angle_deg and flank_angles both set the V: give a symmetric \
+                          V by included_angle_deg or both flanks by flank_angles"
+                    .into(),
+            });
         }
         let over = kw.into_overrides(
             crate::settings::locator_family(),

@@ -375,7 +375,7 @@ def test_two_ways_to_set_the_push_are_refused():
     for keywords in [dict(force_n=np.array([100.0, 200.0]), push_ratio=5),
                      dict(force_n=100.0, push_ratio=np.array([5.0, 6.0])),
                      dict(force_n=100.0, push_ratio=5)]:
-        with pytest.raises(ValueError, match="set the push one way"):
+        with pytest.raises(ValueError, match="both set the push: give one of them"):
             jc.solve(**keywords)
 
 
