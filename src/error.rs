@@ -222,6 +222,35 @@ impl Error {
         }
     }
 
+    /// This error as a file's mistake says it: a file's text is quoted only where it reads as
+    /// numbers (a number, a range, a distribution of numbers). A scene file that does not
+    /// validate is not a scene, and its words may be anything (`mu =
+    /// "postgres://user:PASSWORD@host"` printed the password); the key, the reason and the
+    /// numbers in it are kept, each other word of the value becomes "the text".
+    pub fn file_message(&self) -> String {
+        let Error::InvalidValue { key, value, reason } = self else {
+            return self.to_string();
+        };
+        let mut words: Vec<&str> = value
+            .split(|c: char| c.is_whitespace() || "():,;=\"'".contains(c))
+            .filter(|w| !w.is_empty() && w.trim().parse::<f64>().is_err())
+            .filter(|w| {
+                let named = |n: &&str| n.eq_ignore_ascii_case(w);
+                !crate::uncertain::DISTRIBUTION_NAMES.iter().any(named)
+            })
+            .collect();
+        if words.is_empty() {
+            return self.to_string();
+        }
+        let mut reason = reason.clone();
+        // Longest first: a word inside another is replaced after it.
+        words.sort_by_key(|w| std::cmp::Reverse(w.len()));
+        for w in words {
+            reason = reason.replace(w, "the text");
+        }
+        format!("invalid {key}: {reason}")
+    }
+
     /// The mistakes of file `path` as one error in file order (by line and column; those
     /// without a place last, as found): the one alone where there is one.
     pub fn in_file_order(path: &std::path::Path, mut errors: Vec<Error>) -> Self {

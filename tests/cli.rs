@@ -320,7 +320,7 @@ fn bad_min_norm_settings_are_refused_naming_the_key() {
         (
             "form.toml",
             "[min_norm]\nformulation = \"sideways\"\n",
-            "sideways",
+            "min_norm.formulation: not one of translational, rolling",
         ),
     ];
     for (name, text, needle) in files {

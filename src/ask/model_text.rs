@@ -237,7 +237,7 @@ pub(super) fn dynamics_lines(
             s,
             "  series: {} rows in {}; it {}",
             d.series.len(),
-            path.display(),
+            crate::error::path_text(path),
             series_end(config, d, words)
         );
     }
@@ -255,10 +255,14 @@ pub(super) fn dynamics_lines(
     if let Some(l) = d.lock_up {
         let _ = writeln!(
             s,
-            "  lock-up: the palm cannot turn past {:.3} deg; it pushed with {:.0} N in the last \
+            "  lock-up: the palm cannot turn past {:.3} deg; it pushed with {} N in the last \
              step (a rigid disc needs an unbounded push there)",
             Num(l.theta_deg),
-            Num(l.push_n)
+            // A fast palm's last step can ask more than a double holds.
+            match l.push_n.is_finite() {
+                true => crate::numbers::fixed(l.push_n, 0),
+                false => format!("more than {:e}", f64::MAX),
+            }
         );
     }
     if let Some(c) = &d.cross_check {

@@ -122,10 +122,14 @@ impl PushAnswer {
                 let _ = match touch_mm > p.palm_length_mm {
                     true => writeln!(
                         s,
-                        "  the disc starts past the palm's end: the palm would touch it {:.3} mm \
+                        "  the disc starts past the palm's end: the palm would touch it {} mm \
                          from the hinge at the start angle {} deg, and the palm is {} mm long \
                          ({})",
-                        Num(touch_mm),
+                        // A start angle near 0 puts the touch beyond the float range.
+                        match touch_mm.is_finite() {
+                            true => fixed(touch_mm, 3),
+                            false => format!("more than {:e}", f64::MAX),
+                        },
                         Num(p.start_angle_deg),
                         Num(p.palm_length_mm),
                         words.name("palm_length_mm")
@@ -284,7 +288,7 @@ fn guidance<'a>(config: &Config, results: impl Iterator<Item = &'a Solution> + C
         let _ = writeln!(
             s,
             "  a slow push limited to F = {} N: statics, x_jam = {x:.3} mm",
-            config.scene.force_n,
+            Num(config.scene.force_n),
             x = Num(x)
         );
     }

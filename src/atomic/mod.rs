@@ -387,15 +387,45 @@ fn lock_ignoring_poison<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
     m.lock().unwrap_or_else(|e| e.into_inner())
 }
 
+/// How long a FIFO's reader has to open it: a reader started beside jamchart (`--series
+/// >(gzip > s.gz)`, a script's `cat fifo &`) opens it within milliseconds.
+pub const FIFO_READER_WAIT: std::time::Duration = std::time::Duration::from_secs(5);
+
 /// Writes through a FIFO, terminal or /dev/null (never creating or truncating anything).
+///
+/// Opened without blocking: a FIFO that no process reads held the open, and the run, until a
+/// reader came, which may be never. The open is retried for [`FIFO_READER_WAIT`]; then the
+/// error says to start the reader first. Once open, the writes block as usual.
 fn write_stream(path: &Path, content: Content) -> Result<()> {
     use std::os::unix::fs::OpenOptionsExt;
-    std::fs::File::options()
-        .write(true)
-        // Never become the controlling terminal of this process.
-        .custom_flags(libc::O_NOCTTY)
-        .open(path)
-        .and_then(|mut f| content.write_to(&mut f))
+    let open = || {
+        std::fs::File::options()
+            .write(true)
+            // Never become the controlling terminal of this process.
+            .custom_flags(libc::O_NOCTTY | libc::O_NONBLOCK)
+            .open(path)
+    };
+    let t0 = std::time::Instant::now();
+    let mut file = loop {
+        match open() {
+            Err(e) if e.raw_os_error() == Some(libc::ENXIO) => {
+                if t0.elapsed() >= FIFO_READER_WAIT {
+                    let why = format!(
+                        "no process opened this FIFO to read it within {} s; start its reader \
+                         first, or give a file",
+                        FIFO_READER_WAIT.as_secs()
+                    );
+                    return Err(Error::io("write", path, std::io::Error::other(why)));
+                }
+                std::thread::sleep(std::time::Duration::from_millis(10));
+            }
+            r => break r.map_err(|e| Error::io("write", path, e))?,
+        }
+    };
+    rustix::fs::fcntl_setfl(&file, rustix::fs::OFlags::empty())
+        .map_err(|e| Error::io("write", path, e.into()))?;
+    content
+        .write_to(&mut file)
         .map_err(|e| Error::io("write", path, e))
 }
 

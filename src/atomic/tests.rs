@@ -62,18 +62,19 @@ fn a_failed_command_leaves_the_output_folder_as_it_found_it() {
     );
 }
 
+/// A FIFO named `p` in `dir`.
+fn mkfifo(dir: &Path) -> PathBuf {
+    let fifo = dir.join("p");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    assert!(made.unwrap().success());
+    fifo
+}
+
 #[test]
 fn a_fifo_is_written_through_and_stays_a_fifo() {
     use std::os::unix::fs::FileTypeExt;
     let dir = tempfile::tempdir().unwrap();
-    let fifo = dir.path().join("p");
-    assert!(
-        std::process::Command::new("mkfifo")
-            .arg(&fifo)
-            .status()
-            .unwrap()
-            .success()
-    );
+    let fifo = mkfifo(dir.path());
     let reader = {
         let fifo = fifo.clone();
         std::thread::spawn(move || std::fs::read(fifo).unwrap())
@@ -94,6 +95,29 @@ fn a_fifo_is_written_through_and_stays_a_fifo() {
     assert_eq!(reader.join().unwrap(), b"through the pipe");
     assert_eq!(std::fs::read(&file).unwrap(), b"file");
     assert_eq!(names(dir.path()), ["f.csv", "p"]);
+}
+
+/// A FIFO that no process reads: the open waited for a reader without end (`solve --series
+/// fifo` with nobody reading hung). It now fails after `FIFO_READER_WAIT`, naming the FIFO
+/// and saying to start its reader, and leaves the FIFO in place.
+#[test]
+fn a_fifo_without_a_reader_is_an_error_not_a_wait_without_end() {
+    use std::os::unix::fs::FileTypeExt;
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = mkfifo(dir.path());
+    let e = write_all(&[Output::bytes(&fifo, b"nobody reads")])
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("start its reader first") && e.contains('p'),
+        "{e}"
+    );
+    assert!(
+        std::fs::symlink_metadata(&fifo)
+            .unwrap()
+            .file_type()
+            .is_fifo()
+    );
 }
 
 #[test]

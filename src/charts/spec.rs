@@ -404,7 +404,7 @@ fn parse_scene(
                 path: path.to_path_buf(),
                 line,
                 column,
-                message: e.to_string(),
+                message: e.file_message(),
             },
             None => e,
         }
@@ -693,7 +693,7 @@ mod tests {
     fn unknown_chart_key_is_refused_with_its_line() {
         let msg = scene_error("title = \"t\"\n[chart]\nkind = \"sweep\"\npanls = []\n");
         assert!(
-            msg.starts_with("s.toml:4:9: chart.panls = []: unknown key; did you mean panels?"),
+            msg.starts_with("s.toml:4:9: chart.panls: unknown key; did you mean panels?"),
             "{msg}"
         );
     }
@@ -744,7 +744,8 @@ mod tests {
             "{msg}"
         );
         assert!(
-            lines[4].contains("muu is not one of mu, mu_ground")
+            lines[4].contains("not one of mu, mu_ground")
+                && !lines[4].contains("muu")
                 && lines[4].contains("did you mean mu?"),
             "{msg}"
         );
@@ -772,14 +773,14 @@ mod tests {
             "title = \"t\"\n[scene]\nmass_kg = \"heavy\"\n{map}"
         ));
         assert!(
-            heavy.ends_with(
-                "scene.mass_kg = \"heavy\": expected a number, found the text \"heavy\""
-            ),
+            heavy.ends_with("scene.mass_kg: expected a number, found text")
+                && !heavy.contains("heavy"),
             "{heavy}"
         );
         let model = scene_error(&format!("title = \"t\"\n{map}model = \"statix\"\n"));
         assert!(
-            model.contains("chart.model = \"statix\": statix is not one of statics, ")
+            model.contains("chart.model: not one of statics, ")
+                && !model.contains("statix")
                 && model.ends_with("; did you mean statics?"),
             "{model}"
         );
@@ -796,17 +797,16 @@ mod tests {
         let cases = [
             (
                 map,
-                "s.toml:4:56: chart.x_axis.count = \"ten\": expected a whole number, found the \
-                 text \"ten\"",
+                "s.toml:4:56: chart.x_axis.count: expected a whole number, found text",
             ),
             (
                 "kind = \"sweep\"\nx_axis = [1, 2]\n",
-                "s.toml:4:10: chart.x_axis = [1, 2]: expected a table",
+                "s.toml:4:10: chart.x_axis: expected a table",
             ),
             // The old spelling of a sweep's x axis is read as x_axis, at its own line.
             (
                 "kind = \"sweep\"\naxis = [1, 2]\n",
-                "s.toml:4:8: chart.x_axis = [1, 2]: expected a table",
+                "s.toml:4:8: chart.x_axis: expected a table",
             ),
         ];
         for (chart, says) in cases {
@@ -821,7 +821,7 @@ mod tests {
             ("", "chart.kind: missing; the kinds are jam_map, sweep"),
             (
                 "kind = \"jam_mop\"\n",
-                "chart.kind = \"jam_mop\": not a chart kind; the kinds are",
+                "chart.kind: not a chart kind; the kinds are",
             ),
             ("kind = 3\n", "chart.kind = 3: expected a kind: jam_map"),
         ] {

@@ -282,10 +282,17 @@ fn print(text: &str) -> i32 {
 fn clap_exit(e: clap::Error) -> i32 {
     use clap::error::ErrorKind;
     match e.kind() {
-        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
-            let _ = e.print();
-            0
-        }
+        // Help lost to a full disk (`--help > /dev/full`) exited 0, as `print` says.
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match e.print() {
+            Ok(()) => 0,
+            Err(err) if err.kind() == std::io::ErrorKind::BrokenPipe => 0,
+            Err(err) => {
+                terminal::diagnostic(&format!(
+                    "jamchart: writing the help to standard output: {err}"
+                ));
+                2
+            }
+        },
         // `jamchart` alone: the help is the answer, but it is still a usage error.
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
             let help = e.render().to_string();

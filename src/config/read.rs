@@ -89,9 +89,7 @@ pub fn parse_toml<T: DeserializeOwned + Serialize>(text: &str, path: &Path) -> R
                 _ => Some(key),
             };
             if let Some(k) = key.as_deref().and_then(|k| seq_for_struct::<T>(&input, k)) {
-                let span = span_of(doc.get_ref(), &k);
-                let written = span.clone().map_or(String::new(), |s| text[s].to_string());
-                return at(span, not_a_table(&k, &written));
+                return at(span_of(doc.get_ref(), &k), not_a_table(&k));
             }
             let message = cut_quotes(inner.message());
             // A table's span is its header: quote values only. (Inside `[chart]`, an internally
@@ -109,9 +107,7 @@ pub fn parse_toml<T: DeserializeOwned + Serialize>(text: &str, path: &Path) -> R
             at(span, keyed(key.as_deref(), written.as_deref(), &message))
         })?;
     if let Some(key) = array_for_table(&input, &value, "") {
-        let span = span_of(doc.get_ref(), &key);
-        let written = span.clone().map_or(String::new(), |s| text[s].to_string());
-        return Err(at(span, not_a_table(&key, &written)));
+        return Err(at(span_of(doc.get_ref(), &key), not_a_table(&key)));
     }
     Ok(value)
 }
@@ -158,6 +154,16 @@ pub fn keyed(key: Option<&str>, written: Option<&str>, message: &str) -> String 
         }),
         None => in_our_words(key, message),
     };
+    // A file's text is quoted only where it is a number or true/false (see
+    // `Error::file_message`): a string, a list or a table may hold anything.
+    let written = written.filter(|w| {
+        toml::from_str::<toml::Table>(&format!("v = {w}")).is_ok_and(|t| {
+            matches!(
+                t.get("v"),
+                Some(toml::Value::Integer(_) | toml::Value::Float(_) | toml::Value::Boolean(_))
+            )
+        })
+    });
     match (key, written) {
         (Some(k), Some(w)) => format!("{} = {}: {message}", cut(k), cut(w)),
         (Some(k), None) => format!("{}: {message}", cut(k)),
@@ -205,7 +211,8 @@ fn in_our_words(key: Option<&str>, message: &str) -> String {
         let given = words.remove(0);
         let nearest = crate::ask::nearest(&given, words.iter().map(String::as_str));
         let mean = nearest.map_or(".".to_string(), |n| format!("; did you mean {n}?"));
-        return format!("{given} is not one of {}{mean}", words.join(", "));
+        // The word itself is not quoted: a file's text may be anything (see `keyed`).
+        return format!("not one of {}{mean}", words.join(", "));
     }
     if let Some(rest) = message.strip_prefix("missing field ") {
         let field = rest.trim_matches('`');
@@ -252,8 +259,9 @@ fn wanted(expected: &str) -> String {
 fn found_words(found: &str) -> String {
     let found = found.trim();
     let value = |prefix: &str| found.strip_prefix(prefix).map(|v| v.trim_matches('`'));
-    if let Some(v) = value("string ") {
-        return format!("the text {v}");
+    // The text itself is not quoted: it may be anything (see `keyed`).
+    if value("string ").is_some() {
+        return "text".into();
     }
     if let Some(v) = value("integer ").or_else(|| value("floating point ")) {
         return format!("the number {v}");
@@ -268,12 +276,12 @@ fn found_words(found: &str) -> String {
     }
 }
 
-/// The refusal of an array where settings have a table.
-pub fn not_a_table(key: &str, written: &str) -> String {
+/// The refusal of an array where settings have a table; the array is not quoted, it may hold
+/// anything (see `keyed`).
+pub fn not_a_table(key: &str) -> String {
     format!(
-        "{key} = {}: expected a table ([{key}] with one key per line, or {key} = {{ ... }}), \
-         found an array",
-        cut(written)
+        "{key}: expected a table ([{key}] with one key per line, or {key} = {{ ... }}), found \
+         an array"
     )
 }
 

@@ -492,6 +492,10 @@ fn least_squares(
     let rhs = &mut rhs[..k];
     rhs.fill(0.0);
     rhs[n..n + m_e].copy_from_slice(low.eq_rhs.as_slice());
+    // nalgebra's SVD iterates without end on a NaN or an infinity: no solution then.
+    if !kkt[..k * k].iter().chain(rhs.iter()).all(|v| v.is_finite()) {
+        return false;
+    }
     let solution = DMatrix::from_column_slice(k, k, &kkt[..k * k])
         .svd(true, true)
         .solve(&DVector::from_column_slice(rhs), 1e-13);

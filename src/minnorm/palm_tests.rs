@@ -498,3 +498,21 @@ fn clarabel_overusing_a_friction_cone_is_flagged() {
         );
     }
 }
+
+/// A radius near the float range: 2 r overflowed in the reach, which came out NaN, and the
+/// search went on into a disc beyond the palm, where the least-squares step iterated without
+/// end on an infinite moment (a weak push) or refused an internal load (the default push).
+/// Both pushes answer beyond_reach, as the statics does.
+#[test]
+fn a_radius_near_the_float_range_is_beyond_reach() {
+    for force_n in [3.7, 200.0] {
+        let p = SceneParams {
+            radius_mm: 1e308,
+            force_n,
+            ..SceneParams::default()
+        };
+        let s = palm::solve(&p, &MinNormSettings::default()).unwrap();
+        assert_eq!(s.status, JamStatus::BeyondReach, "F = {force_n}");
+        assert_eq!(statics::solve(&p).status, JamStatus::BeyondReach);
+    }
+}

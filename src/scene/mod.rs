@@ -124,9 +124,15 @@ impl SceneParams {
     /// s_B = r cot(theta/2) + h cot(theta) = L. With t = tan(theta/2) that is
     /// h t^2 + 2 L t - (2 r + h) = 0, so t = (2 r + h) / (L + sqrt(L^2 + h (2 r + h))), which
     /// is r / L for h = 0.
+    ///
+    /// t is a ratio of lengths, so it is computed on the lengths over the largest of them: at
+    /// r = 1e308, 2 r overflowed and h (2 r + h) was 0 x inf = NaN for h = 0, and a NaN reach
+    /// sent the min-norm search into a scene beyond the palm (a search that never ended).
     pub fn reach_angle(&self) -> f64 {
         let (r, h, l) = (self.radius_mm, self.palm_offset_mm, self.palm_length_mm);
-        2.0 * ((2.0 * r + h) / (l + (l * l + h * (2.0 * r + h)).sqrt())).atan()
+        let scale = r.max(h).max(l);
+        let (r, h, l) = (r / scale, h / scale, l / scale);
+        2.0 * ((2.0 * r + h) / (l + l.hypot((h * (2.0 * r + h)).sqrt()))).atan()
     }
 
     /// Values that are valid but likely a unit mistake, one sentence each naming the key (and
@@ -421,6 +427,40 @@ mod tests {
             ..SceneParams::default()
         };
         assert!(grams.unit_warnings().join("\n").contains("103.8 m long"));
+    }
+
+    /// The reach at the ends of the float range: a radius of 1e308 gave a NaN reach (2 r
+    /// overflowed, then 0 x inf), so a disc far beyond the palm was searched for a jam. Every
+    /// reach is an angle in [0, 180] deg, 180 where the disc is out of any palm's reach, and
+    /// the paper's scene keeps its 2 atan(r / L).
+    #[test]
+    fn the_reach_is_an_angle_at_any_length() {
+        let lengths = [5e-324, 1e-300, 1e-3, 10.0, 150.0, 1e300, 1e308, f64::MAX];
+        for (&r, &l, &h) in lengths.iter().flat_map(|r| {
+            lengths
+                .iter()
+                .flat_map(move |l| [(r, l, &0.0), (r, l, &0.5)])
+        }) {
+            let p = SceneParams {
+                radius_mm: r,
+                palm_length_mm: l,
+                palm_offset_mm: h,
+                ..SceneParams::default()
+            };
+            let reach = p.reach_angle();
+            assert!(
+                (0.0..=std::f64::consts::PI).contains(&reach),
+                "r {r}, L {l}, h {h}: {reach}"
+            );
+        }
+        let far = SceneParams {
+            radius_mm: 1e308,
+            ..SceneParams::default()
+        };
+        assert!((far.reach_angle() - std::f64::consts::PI).abs() < 1e-12);
+        let paper = SceneParams::default();
+        let want = 2.0 * (paper.radius_mm / paper.palm_length_mm).atan();
+        assert!((paper.reach_angle() - want).abs() < 1e-15);
     }
 
     #[test]

@@ -97,6 +97,9 @@ pub enum Uncertain {
 const FORMS: &str = "a number, LOW:HIGH, uniform(LOW,HIGH), normal(MEAN,SD) or \
                      lognormal(MEDIAN,SIGMA)";
 
+/// The distributions' names as written (in any case): `normal(0.2,0.03)`.
+pub(crate) const DISTRIBUTION_NAMES: [&str; 3] = ["uniform", "normal", "lognormal"];
+
 impl Uncertain {
     /// Parses the syntax of the module docs; numbers must be finite. The range check against
     /// the setting is `Uncertain::check`.

@@ -1,12 +1,13 @@
 //! The binary under hostile but fair input, one module per subject: special files where a
 //! file is read, the folder `render --check` writes, the manifest as `sha256sum -c` reads it,
-//! numbers and names printed to a terminal, scripted callers' descriptors, usage errors, and
-//! the V-block at the edges of the float range.
+//! numbers and names printed to a terminal, scripted callers' descriptors, usage errors, the
+//! V-block at the edges of the float range, and values in files that are not valid scenes.
 
 use crate::common::cli as cli_util;
 
 mod battery;
 mod check_folder;
+mod file_values;
 mod limits;
 mod manifest_forms;
 mod printed_text;

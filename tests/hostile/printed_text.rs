@@ -173,3 +173,79 @@ fn a_newline_in_a_path_stays_on_its_line() {
         "jamchart: cannot read x\\u{a}y.toml: No such file or directory (os error 2)\n"
     );
 }
+
+/// Answers at the ends of the float range printed `inf` or every digit: a start angle of
+/// 5e-324 deg said the palm "would touch it inf mm from the hinge", `--model all --force
+/// 1e300` wrote the push with 301 digits in its design line, and a nonsmooth palm at
+/// `--omega 1e308` "pushed with inf N". Each now answers with a short number or says the
+/// value is beyond the float range.
+#[test]
+fn answers_at_the_float_range_print_no_inf_and_no_long_number() {
+    let dir = tempfile::tempdir().unwrap();
+    for args in [
+        &["solve", "--start-angle", "5e-324"][..],
+        &[
+            "solve", "--model", "all", "--force", "1e300", "--mass", "1e-300",
+        ],
+        &[
+            "solve",
+            "--model",
+            "dynamics",
+            "--method",
+            "nonsmooth",
+            "--omega",
+            "1e308",
+        ],
+    ] {
+        let o = run(dir.path(), args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
+        let out = stdout(&o).replace("-> inf", "");
+        assert!(longest_digit_run(&out) <= 17, "{args:?}: {out}");
+        let shows_inf = out
+            .split(|c: char| !c.is_ascii_alphanumeric())
+            .any(|w| w == "inf" || w == "NaN");
+        assert!(!shows_inf, "{args:?}: {out}");
+    }
+}
+
+/// The series file's name was printed as given: `--series "$(printf 'a\nb')"` split the
+/// answer's series line in two. It is escaped, on one line.
+#[test]
+fn a_series_path_with_a_newline_is_printed_on_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = [
+        "solve",
+        "--model",
+        "dynamics",
+        "--method",
+        "nonsmooth",
+        "--series",
+        "a\nb.csv",
+    ];
+    let o = run(dir.path(), &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    let line = out.lines().find(|l| l.contains("series:")).unwrap();
+    assert!(line.contains(r#"a\u{a}b.csv"#), "{out}");
+    assert!(dir.path().join("a\nb.csv").is_file());
+}
+
+/// `--help > /dev/full` exited 0 with the help lost, as the answers once did.
+#[test]
+fn help_lost_to_a_full_disk_is_an_error() {
+    let full = std::fs::File::options()
+        .write(true)
+        .open("/dev/full")
+        .unwrap();
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_jamchart"))
+        .arg("--help")
+        .stdout(full)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).starts_with("jamchart: writing"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -1,0 +1,63 @@
+//! A file that is not a valid scene, named but never quoted: a wrong value in a parameter or
+//! scene file is refused with its file, line, column and key; its text is shown only where it
+//! reads as a number.
+
+use super::cli_util::{stderr, stdout};
+use super::run;
+
+/// The text a refusal must not show: it stands for a password in a connection string.
+const PASSWORD: &str = "PASSWORD42";
+
+/// A wrong-typed value holding a connection string (`mu = "postgres://user:PASSWORD@host"`)
+/// printed the password in the refusal, as did a list, a table, a range or a distribution
+/// around it. Each is refused naming the file, its line and the key, and the password
+/// appears nowhere, from `--config` and from a scene file alike.
+#[test]
+fn a_wrong_value_in_a_file_is_named_and_never_quoted() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let url = format!("postgres://user:{PASSWORD}@host");
+    let values = [
+        format!("\"{url}\""),
+        format!("[\"{url}\", 1]"),
+        format!("{{ a = \"{url}\" }}"),
+        format!("\"0.1:{PASSWORD}\""),
+        format!("\"normal({PASSWORD},1)\""),
+        format!("\"\u{202e}{url}\""),
+    ];
+    for (i, value) in values.iter().enumerate() {
+        let name = format!("p{i}.toml");
+        std::fs::write(d.join(&name), format!("[scene]\nmu = {value}\n")).unwrap();
+        let scene = format!("s{i}.toml");
+        let chart = "[chart]\nkind = \"sweep\"\n";
+        let body = format!("title = \"t\"\n[scene]\nmu = {value}\n{chart}");
+        std::fs::write(d.join(&scene), body).unwrap();
+        for args in [
+            vec!["solve", "--config", &name],
+            vec!["render", &scene, "--format", "svg", "--out", "o"],
+        ] {
+            let o = run(d, &args);
+            let err = stderr(&o);
+            assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stdout(&o));
+            let file = args.iter().find(|a| a.ends_with(".toml")).unwrap();
+            assert!(
+                err.contains(&format!("{file}:")) && err.contains("mu"),
+                "{err}"
+            );
+            assert!(!err.contains(PASSWORD), "{args:?}: {err}");
+        }
+    }
+}
+
+/// A number in a file is still quoted as written: it cannot hold a word.
+#[test]
+fn a_wrong_number_in_a_file_is_quoted() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("p.toml"), "[scene]\nradius_mm = true\n").unwrap();
+    let o = run(dir.path(), &["solve", "--config", "p.toml"]);
+    let err = stderr(&o);
+    assert!(
+        err.contains("p.toml:2:13: scene.radius_mm = true: expected a number"),
+        "{err}"
+    );
+}
