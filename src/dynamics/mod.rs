@@ -218,6 +218,13 @@ pub(crate) fn simulate(
     if scene.start_angle_deg > crate::scene::MAX_START_ANGLE_DEG {
         return Ok(lifted_at_start(scene, params));
     }
+    // A start angle that rounds to 0 rad (5e-324 deg) puts the contact at no finite distance
+    // along the palm (r cot(theta/2) overflows): the disc is never touched, beyond reach before
+    // any step, as the closed form says. The run integrated a disc at infinity and called its
+    // x_jam = inf inaccurate.
+    if !scene.start_contact_distance_mm().is_finite() {
+        return Ok(before_any_step(params, JamStatus::BeyondReach, None));
+    }
     let mut out = simulate_checked(scene, params, series_dt_s);
     // A force-limited palm whose push is below the least push that can slide the disc at any
     // angle, m g sin(atan mu_g) (the corrected Eq. 1 at 90 deg + alpha_g + alpha_p), cannot
@@ -245,8 +252,17 @@ fn lifted_at_start(scene: &SceneParams, params: &DynamicsParams) -> DynamicsSolu
     let c = CrossCheck::LiftsOff {
         theta_deg: scene.start_angle_deg,
     };
+    before_any_step(params, c.status(), Some(c))
+}
+
+/// The answer `status` said before any step is taken, with the cross-check that says why.
+fn before_any_step(
+    params: &DynamicsParams,
+    status: JamStatus,
+    cross_check: Option<CrossCheck>,
+) -> DynamicsSolution {
     DynamicsSolution {
-        status: c.status(),
+        status,
         theta_jam_deg: None,
         x_jam_mm: None,
         t_jam_s: None,
@@ -263,7 +279,7 @@ fn lifted_at_start(scene: &SceneParams, params: &DynamicsParams) -> DynamicsSolu
         jacobian_evals: 0,
         x_jam_error_mm: None,
         discarded_candidates: 0,
-        cross_check: Some(c),
+        cross_check,
         failure: None,
         simulated_s: 0.0,
         lock_up: None,
