@@ -5,6 +5,17 @@ use jamchart::JamStatus;
 use jamchart::SceneParams;
 use jamchart::dynamics::{CrossCheck, DynamicsParams, DynamicsSolution, Method, simulate};
 
+/// The default settings with the integrator `method`.
+fn by(method: Method) -> DynamicsParams {
+    DynamicsParams {
+        integrator: jamchart::dynamics::IntegratorSettings {
+            method,
+            ..Default::default()
+        },
+        ..Default::default()
+    }
+}
+
 fn run(scene: &SceneParams, p: &DynamicsParams) -> DynamicsSolution {
     simulate(scene, p, None).expect("valid parameters")
 }
@@ -24,13 +35,7 @@ fn a_disc_at_no_finite_distance_is_beyond_reach_before_any_step() {
         JamStatus::BeyondReach
     );
     for method in [Method::Radau5, Method::Nonsmooth] {
-        let p = DynamicsParams {
-            integrator: jamchart::dynamics::IntegratorSettings {
-                method,
-                ..Default::default()
-            },
-            ..Default::default()
-        };
+        let p = by(method);
         let s = run(&far, &p);
         assert_eq!(s.status, JamStatus::BeyondReach, "{method:?}: {s:?}");
         assert!(
@@ -60,13 +65,7 @@ fn a_palm_that_lifts_the_disc_is_outside_the_model() {
     ];
     for scene in cases {
         for method in [Method::Radau5, Method::Nonsmooth] {
-            let p = DynamicsParams {
-                integrator: jamchart::dynamics::IntegratorSettings {
-                    method,
-                    ..Default::default()
-                },
-                ..Default::default()
-            };
+            let p = by(method);
             let s = run(&scene, &p);
             assert_eq!(
                 s.status,
@@ -81,13 +80,7 @@ fn a_palm_that_lifts_the_disc_is_outside_the_model() {
     }
     // At 90 deg and below the palm presses the disc down: no lift-off.
     for mu in [0.15, 0.6, 1.0] {
-        let p = DynamicsParams {
-            integrator: jamchart::dynamics::IntegratorSettings {
-                method: Method::Nonsmooth,
-                ..Default::default()
-            },
-            ..Default::default()
-        };
+        let p = by(Method::Nonsmooth);
         let s = run(&SceneParams::default().with_mu(mu), &p);
         assert_ne!(s.status, JamStatus::OutsideModel, "mu {mu}: {s:?}");
     }
