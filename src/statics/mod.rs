@@ -59,7 +59,7 @@
 //! corners (`jamchart solve --mu 0.12:0.3`). The status is decided by theta_jam against the
 //! start angle and the palm's reach angle (neither depends on these inputs), so it changes at
 //! most once per boundary along each input; each breakpoint is where theta_jam crosses that
-//! boundary's angle (`reach_angle_rad`, the start angle), found by regula falsi, or by
+//! boundary's angle (`SceneParams::reach_angle`, the start angle), found by regula falsi, or by
 //! bisection of `status` for the other changes. The tests check the interval against a
 //! dense grid of point answers over random boxes (`tests/range_promise.rs`).
 //!
@@ -545,18 +545,6 @@ fn verdict<const N: usize>(q: &Push<N>) -> Verdict<N> {
     }
 }
 
-/// The palm angle in rad at which the contact sits at the palm's end, s_B = L: the status
-/// changes between beyond_reach and jams where theta_jam crosses it.
-///
-/// s_B = x cos(theta) + r sin(theta) = r cot(theta/2) + h cot(theta) falls as theta grows
-/// (ds_B/dtheta = -r / (2 sin^2(theta/2)) - h / sin^2(theta) < 0), and with u = tan(theta/2)
-/// s_B = L reads h u^2 + 2 L u - (2 r + h) = 0, so u = (2 r + h) / (L + sqrt(L^2 + h (2 r + h)))
-/// (r / L without a palm offset). Depends on radius_mm, palm_offset_mm and palm_length_mm only.
-pub(crate) fn reach_angle_rad(p: &SceneParams) -> f64 {
-    let (r, h, l) = (p.radius_mm, p.palm_offset_mm, p.palm_length_mm);
-    2.0 * ((2.0 * r + h) / (l + (l * l + h * (2.0 * r + h)).sqrt())).atan()
-}
-
 /// The F -> infinity limit of the jam: `(theta_rigid_deg, x_rigid_mm)`.
 ///
 /// theta_rigid = alpha_g + alpha_p (the self-locking wedge), x_rigid = r cot(theta_rigid / 2) +
@@ -927,7 +915,7 @@ mod tests {
                 palm_length_mm: l,
                 ..SceneParams::default()
             };
-            let s_b = p.contact_distance_mm(reach_angle_rad(&p));
+            let s_b = p.contact_distance_mm(p.reach_angle());
             assert!((s_b - l).abs() < 1e-9 * l, "h = {h}, L = {l}: s_B = {s_b}");
         }
     }

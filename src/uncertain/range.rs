@@ -15,7 +15,7 @@
 //!
 //! Write theta* for the closed form's raw angle alpha_g + alpha_p + asin(m g sin(alpha_g) / F)
 //! (+inf where m g sin(alpha_g) >= F), S for the start angle and rho for the palm's reach angle
-//! (`statics::reach_angle_rad`, the contact at the palm's end). Neither S nor rho depends on
+//! ([`SceneParams::reach_angle`], the contact at the palm's end). Neither S nor rho depends on
 //! an input that takes a range, and S <= 90 deg wherever the closed form answers (above it the
 //! port answers `outside_model` at every point of the box). A point answers ([`statics`]):
 //!
@@ -239,7 +239,7 @@ pub(crate) fn hull(p: &SceneParams, earliest: PointAnswer, latest: PointAnswer) 
     let lo = match latest {
         (Jams | JammedAtStart, Some((t, x))) => (t, x, Reached::Corner),
         (BeyondReach | NeverJams, _) => {
-            let reach = statics::reach_angle_rad(p);
+            let reach = p.reach_angle();
             (
                 reach.to_degrees(),
                 p.disc_position_mm(reach),
@@ -665,7 +665,7 @@ fn walk(
 
 /// Where the status changes from `here` straight to `next` on `[a, b]`, to `tol`: the point
 /// where theta_jam crosses the angle of that change (the palm's reach angle
-/// [`statics::reach_angle_rad`] between beyond_reach and jams, the start angle between jams and
+/// [`SceneParams::reach_angle`] between beyond_reach and jams, the start angle between jams and
 /// jammed_at_start), by regula falsi with the Illinois step (a handful of closed-form angles
 /// where bisection of the status took 30 statuses). The upper end of the final bracket, where
 /// the status is `next`. None for any other change, or when the statuses either side of the
@@ -683,7 +683,7 @@ fn change_by_theta(
     use JamStatus::{BeyondReach, JammedAtStart, Jams};
     let q = at(a);
     let target = match (here, next) {
-        (BeyondReach, Jams) | (Jams, BeyondReach) => statics::reach_angle_rad(&q),
+        (BeyondReach, Jams) | (Jams, BeyondReach) => q.reach_angle(),
         (Jams, JammedAtStart) | (JammedAtStart, Jams) => q.start_angle_deg.to_radians(),
         _ => return None,
     };

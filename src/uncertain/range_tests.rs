@@ -37,7 +37,7 @@ fn the_shafts_ends_are_the_point_solve_and_the_palms_end() {
     };
     let a = range::closed_form(&p, &set).unwrap();
     let (t_hi, x_lo) = raw(&p.with_mu(0.3));
-    let reach = statics::reach_angle_rad(&p);
+    let reach = p.reach_angle();
     let (t_lo, x_hi) = (reach.to_degrees(), 80.0);
     let [a0, a1] = a.theta_jam_deg.unwrap();
     let [b0, b1] = a.x_jam_mm.unwrap();
@@ -181,7 +181,7 @@ fn a_status_on_a_stretch_narrower_than_the_old_scan_step_is_reported() {
     assert!(segs[1].to - segs[1].from < (3.0 - 0.01) / 63.0, "{segs:?}");
     // The jams stretch runs from the reach angle to the start angle.
     let theta_deg = |mu: f64| statics::theta_jam_rad(&p.with_mu(mu)).to_degrees();
-    let reach_deg = statics::reach_angle_rad(&p).to_degrees();
+    let reach_deg = p.reach_angle().to_degrees();
     assert!(
         (theta_deg(segs[1].from) - reach_deg).abs() < 1e-6,
         "{segs:?}"
@@ -332,7 +332,7 @@ fn a_friction_range_from_zero_keeps_its_interval() {
     let (p, set) = paper_box(90.0, "mu", 0.0, 0.3);
     let a = range::closed_form(&p, &set).unwrap();
     assert_eq!(a.latest.status, JamStatus::NeverJams);
-    let reach = statics::reach_angle_rad(&p).to_degrees();
+    let reach = p.reach_angle().to_degrees();
     let top = statics::solve(&p.with_mu(0.3));
     assert_interval(a.theta_jam_deg, [reach, top.theta_jam_deg.unwrap()], 1e-9);
     assert_interval(a.x_jam_mm, [top.x_jam_mm.unwrap(), 150.0], 1e-9);
@@ -413,7 +413,7 @@ fn every_model_leaves_the_jams_past_the_palm_out_of_its_interval() {
     };
     let exact = range::closed_form(&p, &set).unwrap();
     let [t0, t1] = exact.theta_jam_deg.unwrap();
-    let reach = statics::reach_angle_rad(&p).to_degrees();
+    let reach = p.reach_angle().to_degrees();
     assert!((t0 - reach).abs() < 1e-9, "{t0} vs the palm's end {reach}");
     for spec in [
         jamchart::ModelSpec::Statics,
