@@ -225,30 +225,29 @@ impl Error {
     /// This error as a file's mistake says it: a file's text is quoted only where it reads as
     /// numbers (a number, a range, a distribution of numbers). A scene file that does not
     /// validate is not a scene, and its words may be anything (`mu =
-    /// "postgres://user:PASSWORD@host"` printed the password); the key, the reason and the
-    /// numbers in it are kept, each other word of the value becomes "the text".
+    /// "postgres://user:PASSWORD@host"` printed the password): a value with a word in it that
+    /// is neither a number nor a distribution's name is refused for that, with the forms a
+    /// value takes, and no part of it is repeated. (Replacing its words inside the reason
+    /// also replaced the reason's own: `normal(a,1)` read "the text is not the text number".)
     pub fn file_message(&self) -> String {
-        let Error::InvalidValue { key, value, reason } = self else {
+        let Error::InvalidValue { key, value, .. } = self else {
             return self.to_string();
         };
-        let mut words: Vec<&str> = value
+        let worded = value
             .split(|c: char| c.is_whitespace() || "():,;=\"'".contains(c))
             .filter(|w| !w.is_empty() && w.trim().parse::<f64>().is_err())
-            .filter(|w| {
+            .any(|w| {
                 let named = |n: &&str| n.eq_ignore_ascii_case(w);
                 !crate::uncertain::DISTRIBUTION_NAMES.iter().any(named)
-            })
-            .collect();
-        if words.is_empty() {
-            return self.to_string();
+            });
+        match worded {
+            true => format!(
+                "invalid {key}: a word in it is neither a number nor a distribution's name; \
+                 write {}",
+                crate::uncertain::FORMS
+            ),
+            false => self.to_string(),
         }
-        let mut reason = reason.clone();
-        // Longest first: a word inside another is replaced after it.
-        words.sort_by_key(|w| std::cmp::Reverse(w.len()));
-        for w in words {
-            reason = reason.replace(w, "the text");
-        }
-        format!("invalid {key}: {reason}")
     }
 
     /// The mistakes of file `path` as one error in file order (by line and column; those
@@ -460,6 +459,35 @@ pub type Result<T> = std::result::Result<T, Error>;
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A file's value with a word in it is refused without a part of it, the reason's own
+    /// words intact (`normal(a,1)` read "the text is not the text number"); a value of
+    /// numbers and distribution names keeps its reason.
+    #[test]
+    fn a_files_worded_value_is_refused_without_repeating_it() {
+        for value in [
+            "normal(a,1)",
+            "uniform(0.1, number)",
+            "postgres://u:PASSWORD@h:1",
+        ] {
+            let reason = format!(
+                "{value}: 'a' is not a number; write {}",
+                crate::uncertain::FORMS
+            );
+            let said = Error::invalid("mu", value, reason).file_message();
+            assert_eq!(
+                said,
+                format!(
+                    "invalid mu: a word in it is neither a number nor a distribution's name; \
+                     write {}",
+                    crate::uncertain::FORMS
+                ),
+                "{value}"
+            );
+        }
+        let numbers = Error::invalid("mu", "normal(0.2", "a ')' is missing");
+        assert_eq!(numbers.file_message(), numbers.to_string());
+    }
 
     /// `render jam-probability --set chart.x_min_mm=-1e308` said `(x_min_mm is
     /// -1000...0)` with 309 digits, and a parser's message quoted `floating point

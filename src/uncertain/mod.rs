@@ -94,7 +94,7 @@ pub enum Uncertain {
 }
 
 /// The spelling of each distribution's name in the syntax, with its two parameters.
-const FORMS: &str = "a number, LOW:HIGH, uniform(LOW,HIGH), normal(MEAN,SD) or \
+pub(crate) const FORMS: &str = "a number, LOW:HIGH, uniform(LOW,HIGH), normal(MEAN,SD) or \
                      lognormal(MEDIAN,SIGMA)";
 
 /// The distributions' names as written (in any case): `normal(0.2,0.03)`.
