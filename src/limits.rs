@@ -28,6 +28,13 @@ pub const MAX_OPTIMUM_POINTS: usize = 100_000;
 /// answered); the jam-probability chart draws the whole curve.
 pub const MAX_PROBES: usize = 1000;
 
+/// The tightest tolerance an integrator, a converged reference or clarabel takes (rtol,
+/// atol, `accuracy --tolerances`): a tenth of it, the verification run's, is still 450 units
+/// of round-off (scipy's `solve_ivp` floors rtol at 100). Tighter cannot be met in double
+/// precision: RADAU5 at rtol 1e-320 cut its step to 0 s at t = 0, and was advised a softer
+/// contact.
+pub const MIN_TOLERANCE: f64 = 1e-13;
+
 /// Estimated peak memory of one computation in bytes (1 GiB).
 pub const MAX_MEMORY_BYTES: u64 = 1 << 30;
 
@@ -288,10 +295,10 @@ pub fn sampled_cpu_s(samples: u64, per: PerSample) -> f64 {
     samples as f64 * per.cpu_s
 }
 
-/// Refuses `samples` samples of `per` whose estimated CPU time exceeds [`MAX_SAMPLED_CPU_S`]
-/// (or the [`Budget`] of the calling thread, when lower); `key` names the setting to lower.
-pub fn check_samples(key: &str, samples: u64, per: PerSample) -> Result<()> {
-    let estimate_s = sampled_cpu_s(samples, per);
+/// Refuses work estimated at `estimate_s` of CPU above [`MAX_SAMPLED_CPU_S`] (or the
+/// [`Budget`] of the calling thread, when lower): `what` says what would take that long, and
+/// `key` names the setting to lower.
+fn check_cpu(key: &str, estimate_s: f64, what: impl FnOnce() -> String) -> Result<()> {
     let (limit_s, limit_source) = match BUDGET.get() {
         Some(b) if b.cpu_s < MAX_SAMPLED_CPU_S => (b.cpu_s, b.source),
         _ => (MAX_SAMPLED_CPU_S, ""),
@@ -301,14 +308,56 @@ pub fn check_samples(key: &str, samples: u64, per: PerSample) -> Result<()> {
     }
     Err(Error::TooLong {
         key: key.to_string(),
-        what: format!(
-            "{samples} samples of {}, about {} each,",
-            per.what,
-            human_seconds(per.cpu_s)
-        ),
+        what: what(),
         estimate_s,
         limit_s,
         limit_source,
+    })
+}
+
+/// Refuses `samples` samples of `per` whose estimated CPU time exceeds [`MAX_SAMPLED_CPU_S`]
+/// (or the [`Budget`] of the calling thread, when lower); `key` names the setting to lower.
+pub fn check_samples(key: &str, samples: u64, per: PerSample) -> Result<()> {
+    check_cpu(key, sampled_cpu_s(samples, per), || {
+        format!(
+            "{samples} samples of {}, about {} each,",
+            per.what,
+            human_seconds(per.cpu_s)
+        )
+    })
+}
+
+/// CPU time of one step of a simulation by `method`, rejected steps included, for the bound
+/// on a step limit: a run that cannot pass a stiff contact (DOPRI5 at 1 um) takes every step
+/// it is allowed.
+// Measured by `solve --model dynamics --method M --stiffness 1e7 --no-verify --format json`,
+// elapsed_s over steps and rejected steps: RADAU5 1.9 us (376 steps), DOPRI5 1.1 us (93,300),
+// the nonsmooth method 1.0-1.5 us (95, its set-up included).
+pub fn step_cpu_s(method: crate::dynamics::Method) -> f64 {
+    use crate::dynamics::Method;
+    match method {
+        Method::Radau5 => 2.0e-6,
+        Method::Dopri5 => 1.1e-6,
+        Method::Nonsmooth => 1.5e-6,
+    }
+}
+
+/// Refuses simulations whose step limit `max_steps` lets them run longer than
+/// [`MAX_SAMPLED_CPU_S`] (or the [`Budget`] of the calling thread, when lower) if each takes
+/// every step: one run by each method of `runs`. A run that uses its whole limit fails and is
+/// not repeated, so a timed study counts each of its runs once. `accuracy --max-steps 2^31`
+/// once ran for hours before a first row.
+pub fn check_steps(key: &str, max_steps: u64, runs: &[crate::dynamics::Method]) -> Result<()> {
+    let per_step_s: f64 = runs.iter().map(|&m| step_cpu_s(m)).sum();
+    check_cpu(key, max_steps as f64 * per_step_s, || {
+        format!(
+            "{} of up to {max_steps} steps, about {} a step, should a stiff contact take them all,",
+            match runs.len() {
+                1 => "a simulation".to_string(),
+                n => format!("{n} simulations"),
+            },
+            human_seconds(per_step_s / runs.len() as f64)
+        )
     })
 }
 

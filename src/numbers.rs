@@ -54,6 +54,16 @@ impl fmt::Display for Num {
     }
 }
 
+/// [`fixed`], or `more than 1.8e308` for a magnitude past the largest double (a disc that
+/// starts at a palm angle that rounds to 0 rad lies at no finite distance): `inf` is no answer,
+/// and `f64::MAX` in full has 17 digits.
+pub(crate) fn fixed_or_past(v: f64, decimals: usize) -> String {
+    match v.is_finite() {
+        true => fixed(v, decimals),
+        false => "more than 1.8e308".into(),
+    }
+}
+
 /// `v` with `decimals` decimals (`24.355`), or with as many in exponent form where that would run past 15 digits
 /// before the point or show a nonzero value as zero (`1e300`, `1e-300`).
 pub(crate) fn fixed(v: f64, decimals: usize) -> String {

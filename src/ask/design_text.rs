@@ -6,7 +6,7 @@ use std::fmt::Write;
 use super::Words;
 use super::design::{COAST_TOLERANCE, DesignReport, SimCheck};
 use crate::design::{AvoidJams, Carry, LeastPush};
-use crate::numbers::{Num, fixed};
+use crate::numbers::{Num, fixed, fixed_or_past};
 use crate::scene::{JamStatus, SceneParams};
 
 /// A corner's friction, mass or push as the other answers print an input's value: 4
@@ -111,10 +111,10 @@ impl DesignReport {
             Carry::StartsPast { x_start_mm } => {
                 let _ = writeln!(
                     out,
-                    "the disc starts at x = {:.3} mm, at or past the target: it is there before the \
+                    "the disc starts at x = {} mm, at or past the target: it is there before the \
                  palm moves, whatever the push and the friction (and held there if it jams at \
                  once); no least push or largest friction applies",
-                    Num(x_start_mm)
+                    fixed_or_past(x_start_mm, 3)
                 );
             }
             Carry::Ahead {
@@ -248,8 +248,8 @@ impl DesignReport {
         }
         match d.carry {
             Carry::StartsPast { x_start_mm } => format!(
-                "the disc starts at x = {:.3} mm, at or past the target {target}",
-                Num(x_start_mm)
+                "the disc starts at x = {} mm, at or past the target {target}",
+                fixed_or_past(x_start_mm, 3)
             ),
             Carry::Ahead { least_push, .. } => match least_push {
                 LeastPush::Push { force_n } => format!(

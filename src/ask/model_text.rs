@@ -259,10 +259,7 @@ pub(super) fn dynamics_lines(
              step (a rigid disc needs an unbounded push there)",
             Num(l.theta_deg),
             // A fast palm's last step can ask more than a double holds.
-            match l.push_n.is_finite() {
-                true => crate::numbers::fixed(l.push_n, 0),
-                false => format!("more than {:e}", f64::MAX),
-            }
+            crate::numbers::fixed_or_past(l.push_n, 0)
         );
     }
     if let Some(c) = &d.cross_check {

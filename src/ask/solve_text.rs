@@ -9,7 +9,7 @@ use crate::config::Config;
 use crate::design::LeastPush;
 use crate::dynamics::Drive;
 use crate::models::{Detail, ModelKind, OutsideModel, Solution};
-use crate::numbers::{Num, fixed};
+use crate::numbers::{Num, fixed, fixed_or_past};
 use crate::scene::{JamStatus, SceneParams};
 use crate::statics::{self, StaticsSolution};
 
@@ -126,10 +126,7 @@ impl PushAnswer {
                          from the hinge at the start angle {} deg, and the palm is {} mm long \
                          ({})",
                         // A start angle near 0 puts the touch beyond the float range.
-                        match touch_mm.is_finite() {
-                            true => fixed(touch_mm, 3),
-                            false => format!("more than {:e}", f64::MAX),
-                        },
+                        fixed_or_past(touch_mm, 3),
                         Num(p.start_angle_deg),
                         Num(p.palm_length_mm),
                         words.name("palm_length_mm")

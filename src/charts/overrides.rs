@@ -51,12 +51,22 @@ impl FromStr for Setting {
         let value = toml::from_str::<toml::Table>(&format!("v = {raw}"))
             .ok()
             .and_then(|mut t| t.remove("v"))
+            .or_else(|| whole_beyond_i64(raw).map(toml::Value::Float))
             .unwrap_or_else(|| toml::Value::String(raw.to_string()));
         Ok(Setting {
             key: key.to_string(),
             value,
         })
     }
+}
+
+/// A whole number too large for TOML's integers (`99999999999999999999999999`), as the float it
+/// reads as: kept as the string it was typed, it was echoed with all its digits.
+fn whole_beyond_i64(raw: &str) -> Option<f64> {
+    let digits = raw.strip_prefix(['+', '-']).unwrap_or(raw).replace('_', "");
+    (!digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()))
+        .then(|| raw.replace('_', "").parse::<f64>().ok())
+        .flatten()
 }
 
 impl std::fmt::Display for Setting {
@@ -167,6 +177,9 @@ mod tests {
             ("force_n=200.0", "force_n=200.0"),
             ("chart.x_axis.count=51", "chart.x_axis.count=51"),
             ("force_n=inf", "force_n=inf"),
+            // Beyond TOML's integers: the float it reads as, not its 26 digits.
+            ("force_n=99999999999999999999999999", "force_n=1e26"),
+            ("force_n=-1_000_000_000_000_000_000_000", "force_n=-1e21"),
         ] {
             let s = set(typed);
             assert_eq!(s.to_string(), shown);

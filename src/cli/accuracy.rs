@@ -314,7 +314,7 @@ pub(crate) fn model_name(m: ModelKind) -> &'static str {
 }
 
 pub(crate) fn fixed(v: Option<f64>, prec: usize) -> String {
-    v.map_or("-".into(), |v| format!("{v:.prec$}"))
+    v.map_or("-".into(), |v| crate::numbers::fixed(v, prec))
 }
 
 /// The report's opening line: what to design to, from the references and the rows' errors.

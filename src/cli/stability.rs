@@ -55,32 +55,7 @@ pub struct StabilityArgs {
 
 pub fn run(a: &StabilityArgs) -> Result<String> {
     let config = a.scene.resolve(&[a.dynamics.overrides()], "stability")?;
-    let all = stability::cases(&config);
-    let cases = match &a.cases {
-        None => all,
-        Some(names) => {
-            if names.len() > MAX_CASES {
-                return Err(Error::invalid(
-                    "cases",
-                    names.len(),
-                    format!("at most {MAX_CASES} names"),
-                ));
-            }
-            let mut out = Vec::new();
-            for n in names {
-                let Some(c) = all.iter().find(|c| c.name == n.trim()) else {
-                    let known: Vec<&str> = all.iter().map(|c| c.name.as_str()).collect();
-                    return Err(Error::invalid(
-                        "cases",
-                        n,
-                        format!("not a case; the cases are {}", known.join(", ")),
-                    ));
-                };
-                out.push(c.clone());
-            }
-            out
-        }
-    };
+    let cases = stability::select(&config, a.cases.as_deref(), MAX_CASES)?;
     // Checked before anything runs, written all or nothing at the end.
     let out_paths: Vec<PathBuf> = a
         .out_dir

@@ -257,12 +257,18 @@ fn key_as_written(e: Error, a: &SweepArgs) -> Error {
 
 pub fn run(a: &SweepArgs) -> Result<String> {
     let scene = scene(a).map_err(|e| key_as_written(e, a))?;
-    // The name is a file name: a folder in it would write outside --out.
-    if scene.name.contains('/') || scene.name.starts_with('.') || scene.name.is_empty() {
+    // The name is a file name: a folder in it would write outside --out, and a control
+    // character would reach the terminal and the gallery in every list of the files.
+    if scene.name.contains('/')
+        || scene.name.starts_with('.')
+        || scene.name.is_empty()
+        || scene.name.chars().any(char::is_control)
+    {
         return Err(crate::error::Error::invalid(
             "--name",
             &scene.name,
-            "a file name without folders or a leading dot; --out gives the folder",
+            "a file name without folders, control characters or a leading dot; --out gives \
+             the folder",
         ));
     }
     let formats = a.format.formats();

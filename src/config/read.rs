@@ -164,11 +164,33 @@ pub fn keyed(key: Option<&str>, written: Option<&str>, message: &str) -> String 
             )
         })
     });
+    let (section, last) = key.map_or(("", ""), |k| k.rsplit_once('.').unwrap_or(("", k)));
+    if key.is_some() && !key_shaped(last) {
+        // Not a mistyped setting but the file's own text: an environment file's `API_TOKEN`.
+        let at = match section {
+            "" => String::new(),
+            s => format!("{}.", cut(s)),
+        };
+        return format!(
+            "{at}<key>: {message} (the key is not repeated: a setting's key is lowercase \
+             letters, digits and _)"
+        );
+    }
     match (key, written) {
         (Some(k), Some(w)) => format!("{} = {}: {message}", cut(k), cut(w)),
         (Some(k), None) => format!("{}: {message}", cut(k)),
         _ => message.to_string(),
     }
+}
+
+/// Whether a file's key may be quoted in a message: every key of a scene is lowercase letters,
+/// digits and `_` (`stiffness_n_per_mm_e`), so a typo of one is too; anything else, such as
+/// `DATABASE_URL` from an environment file given as `--config`, is the file's text and may be
+/// a secret's name.
+fn key_shaped(k: &str) -> bool {
+    (1..=64).contains(&k.len())
+        && k.bytes()
+            .all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_')
 }
 
 /// serde's message said in the tool's words: "a number", not "f64"; "one of ...", with the

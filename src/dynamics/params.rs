@@ -10,6 +10,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
+use crate::limits::MIN_TOLERANCE;
 use crate::scene::{SceneParams, finite_positive};
 use crate::settings::decl::Check;
 
@@ -135,10 +136,10 @@ settings! {
         method: Method = Method::Radau5, flag: Some("method"), value_name: "METHOD";
         /// Relative tolerance per step. Looser than 1e-2 is always reported inaccurate.
         rtol: f64 = 1e-6, flag: Some("rtol"), quantity: "relative tolerance", unit: "-",
-            check: Check::Open(0.0, 1.0), value_name: "RTOL";
+            check: Check::CloseOpen(MIN_TOLERANCE, 1.0), value_name: "RTOL";
         /// Absolute tolerance per step in the state's units: rad, mm, mm/s (unset: rtol).
         atol: Option<f64> = None, flag: Some("atol"), quantity: "absolute tolerance",
-            unit: "-", check: Check::Open(0.0, 1.0), value_name: "ATOL";
+            unit: "-", check: Check::CloseOpen(MIN_TOLERANCE, 1.0), value_name: "ATOL";
         /// Step limit of the integrator.
         // DOPRI5 needs about 1e6 steps at the stiffest contacts; beyond that it is hopeless.
         max_steps: u64 = 2_000_000, quantity: "step limit", check: Check::CountAtLeast(1);
@@ -244,6 +245,14 @@ impl DynamicsParams {
         self.verification.check_declared()?;
         self.jam_reading.check_declared()?;
         self.series.check_declared()?;
+        let method = self.integrator.method;
+        let runs = [method, method];
+        crate::limits::check_steps(
+            "dynamics.integrator.max_steps",
+            self.integrator.max_steps,
+            // The verification run may take as many steps again.
+            &runs[..1 + usize::from(self.verification.verify)],
+        )?;
         let (vs, vd) = (
             self.friction.stiction_velocity_mm_s,
             self.friction.friction_velocity_mm_s,

@@ -102,11 +102,14 @@ impl Figure for WorkPrecisionSettings {
             ));
         }
         let r = self.reference_rtol;
-        if !(r.is_finite() && r > 0.0 && r < 1.0) {
+        if !(crate::limits::MIN_TOLERANCE..1.0).contains(&r) {
             return Err(Error::invalid(
                 "chart.reference_rtol",
                 r,
-                "a tolerance lies strictly in (0, 1)",
+                format!(
+                    "a tolerance lies in [{:e}, 1)",
+                    crate::limits::MIN_TOLERANCE
+                ),
             ));
         }
         Ok(())

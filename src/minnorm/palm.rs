@@ -180,10 +180,14 @@ impl std::fmt::Display for MinNormCheck {
                 backend,
             } => write!(
                 f,
-                "the held forces at the jam load contact {} to {utilisation:.6} of its friction \
-                 cone (more than 1 + {allowed_excess:e}): {} let them leave the cone within its \
-                 tolerance",
+                "the held forces at the jam load contact {} to {} of its friction cone (more \
+                 than 1 + {allowed_excess:e}): {} let them leave the cone within its tolerance",
                 contact + 1,
+                // A cone of mu near 0 makes any tangential force an unbounded multiple of it.
+                match utilisation.is_finite() {
+                    true => crate::numbers::fixed(utilisation, 6),
+                    false => "an unbounded multiple".into(),
+                },
                 match backend {
                     Backend::Exact => "the exact path",
                     Backend::Clarabel => "clarabel",

@@ -17,6 +17,7 @@ use serde::{Deserialize, Serialize};
 use super::contact::{ConeKind, ContactProblem, Lowered, Space};
 use super::exact;
 use crate::error::{Error, Result};
+use crate::limits::MIN_TOLERANCE;
 use crate::settings::Check;
 
 settings! {
@@ -31,13 +32,13 @@ settings! {
         /// clarabel's primal and dual feasibility tolerance, relative.
         // clarabel's own defaults: the problem is scaled to forces and lever arms of order one.
         tol_feas: f64 = 1e-8, quantity: "feasibility tolerance", unit: "-",
-            check: Check::Open(0.0, 1.0);
+            check: Check::CloseOpen(MIN_TOLERANCE, 1.0);
         /// clarabel's duality-gap tolerance, absolute and relative.
         tol_gap: f64 = 1e-8, quantity: "duality-gap tolerance", unit: "-",
-            check: Check::Open(0.0, 1.0);
+            check: Check::CloseOpen(MIN_TOLERANCE, 1.0);
         /// clarabel's infeasibility-certificate tolerance, absolute and relative.
         tol_infeas: f64 = 1e-8, quantity: "infeasibility tolerance", unit: "-",
-            check: Check::Open(0.0, 1.0);
+            check: Check::CloseOpen(MIN_TOLERANCE, 1.0);
     }
 }
 

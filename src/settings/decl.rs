@@ -252,7 +252,11 @@ impl Decl {
     pub(crate) fn check_real(&self, v: f64) -> Result<()> {
         match self.check.refuse(v) {
             None => Ok(()),
-            Some(why) => Err(Error::invalid(&self.path(), v, self.reason(&why))),
+            Some(why) => Err(Error::invalid(
+                &self.path(),
+                number_text(v),
+                self.reason(&why),
+            )),
         }
     }
 

@@ -21,7 +21,7 @@
 use serde::Serialize;
 
 use super::{
-    Reference, ReferenceKind, Source, Why, check_count, check_list, reference,
+    Reference, ReferenceKind, Source, Why, check_count, check_list, check_tolerances, reference,
     rigid_dynamics_reference, why,
 };
 use crate::config::Config;
@@ -85,14 +85,12 @@ impl Default for AccuracySettings {
 impl AccuracySettings {
     /// Checks every list and count; the error names the key.
     pub fn validate(&self) -> Result<()> {
-        check_list(
+        check_tolerances(
             "min_norm_tolerances",
             &self.min_norm_tolerances,
             MAX_TOLERANCES,
-            0.0,
-            1.0,
         )?;
-        check_list("tolerances", &self.tolerances, MAX_TOLERANCES, 0.0, 1.0)?;
+        check_tolerances("tolerances", &self.tolerances, MAX_TOLERANCES)?;
         check_list(
             "penetrations_um",
             &self.penetrations_um,
@@ -108,7 +106,7 @@ impl AccuracySettings {
             1.0,
         )?;
         check_count("runs", self.runs, 1, MAX_RUNS)?;
-        check_list("converged_rtol", &[self.converged_rtol], 1, 0.0, 1.0)?;
+        check_tolerances("converged_rtol", &[self.converged_rtol], 1)?;
         check_list(
             "converged_step_deg",
             &[self.converged_step_deg],
@@ -134,7 +132,21 @@ impl AccuracySettings {
         if self.max_steps == 0 {
             return Err(Error::invalid("max_steps", 0, "at least one step"));
         }
-        Ok(())
+        crate::limits::check_steps("max_steps", self.max_steps, &self.simulation_runs())
+    }
+
+    /// The method of every simulation the study runs, its rows' and their converged answers',
+    /// each once: a run that takes its whole step limit fails and is not timed again.
+    fn simulation_runs(&self) -> Vec<Method> {
+        let rows = self.sources().into_iter().filter_map(|s| match s {
+            Source::Simulation { method, .. } => Some(method),
+            Source::Nonsmooth { .. } => Some(Method::Nonsmooth),
+            _ => None,
+        });
+        let converged = (self.stiffnesses().into_iter())
+            .flat_map(|_| self.methods.iter().copied())
+            .chain((!self.nonsmooth_steps_deg.is_empty()).then_some(Method::Nonsmooth));
+        rows.chain(converged).collect()
     }
 
     /// Every source of the study, in the order of its rows.

@@ -481,6 +481,23 @@ pub(crate) fn check_count(key: &str, n: usize, min: usize, max: usize) -> Result
     }
 }
 
+/// Refuses a list of tolerances as [`check_list`] does, and any tolerance below
+/// [`crate::limits::MIN_TOLERANCE`], which double precision cannot meet.
+pub(crate) fn check_tolerances(key: &str, list: &[f64], max: usize) -> Result<()> {
+    use crate::limits::MIN_TOLERANCE;
+    check_list(key, list, max, 0.0, 1.0)?;
+    match list.iter().find(|&&v| v < MIN_TOLERANCE) {
+        Some(&v) => Err(Error::invalid(
+            key,
+            v,
+            format!(
+                "each tolerance must be at least {MIN_TOLERANCE:e}: double precision meets no tighter"
+            ),
+        )),
+        None => Ok(()),
+    }
+}
+
 /// Refuses a list longer than `max` or a value outside the open interval (lo, hi).
 pub(crate) fn check_list(key: &str, list: &[f64], max: usize, lo: f64, hi: f64) -> Result<()> {
     if list.len() > max {

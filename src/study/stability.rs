@@ -455,6 +455,44 @@ impl StabilityReport {
     }
 }
 
+/// The cases of `base` named in `names`, in their order (all of them when `None`): an unknown
+/// name is refused with the list of cases, a name given twice (it would be a second row of the
+/// same answers) for that, and more than `max` names.
+pub fn select(base: &Config, names: Option<&[String]>, max: usize) -> Result<Vec<Case>> {
+    let all = cases(base);
+    let Some(names) = names else {
+        return Ok(all);
+    };
+    if names.len() > max {
+        return Err(Error::invalid(
+            "cases",
+            names.len(),
+            format!("at most {max} names"),
+        ));
+    }
+    let mut out: Vec<Case> = Vec::with_capacity(names.len());
+    for n in names {
+        let n = n.trim();
+        let Some(c) = all.iter().find(|c| c.name == n) else {
+            let known: Vec<&str> = all.iter().map(|c| c.name.as_str()).collect();
+            return Err(Error::invalid(
+                "cases",
+                n,
+                format!("not a case; the cases are {}", known.join(", ")),
+            ));
+        };
+        if out.iter().any(|o| o.name == c.name) {
+            return Err(Error::invalid(
+                "cases",
+                n,
+                "named twice; name each case once",
+            ));
+        }
+        out.push(c.clone());
+    }
+    Ok(out)
+}
+
 /// Runs `methods` on `cases` through the port, the answers in parallel (each timed on its own
 /// thread).
 pub fn run(base: &Config, cases: &[Case], methods: &[Source]) -> Result<StabilityReport> {

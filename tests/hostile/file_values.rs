@@ -61,3 +61,33 @@ fn a_wrong_number_in_a_file_is_quoted() {
         "{err}"
     );
 }
+
+/// An environment file's key is its secret's name (`DATABASE_URL`, `API_TOKEN`): given as
+/// `--config`, or as a section of a scene file, it was repeated as an unknown key. A key
+/// that cannot be a setting's (lowercase letters, digits and `_`) is placed by line and
+/// column but not repeated; a mistyped setting is still named, with the nearest key.
+#[test]
+fn a_key_that_is_no_settings_form_is_never_quoted() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (name, body) in [
+        ("key.toml", format!("[scene]\n{PASSWORD} = 1\n")),
+        ("section.toml", format!("[{PASSWORD}]\nx = 1\n")),
+        ("env.toml", format!("{PASSWORD}_URL = \"x\"\n")),
+    ] {
+        std::fs::write(d.join(name), body).unwrap();
+        let o = run(d, &["solve", "--config", name]);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{name}: {}", stdout(&o));
+        assert!(err.contains(&format!("{name}:")), "{err}");
+        assert!(err.contains("the key is not repeated"), "{err}");
+        assert!(!err.contains(PASSWORD), "{name}: {err}");
+    }
+    std::fs::write(d.join("typo.toml"), "[scene]\nradious_mm = 3\n").unwrap();
+    let o = run(d, &["solve", "--config", "typo.toml"]);
+    let err = stderr(&o);
+    assert!(
+        err.contains("scene.radious_mm: unknown key; did you mean radius_mm?"),
+        "{err}"
+    );
+}

@@ -169,6 +169,73 @@ fn values_that_mean_nothing_are_refused() {
     }
 }
 
+/// Inputs that were accepted and then cost minutes or answered nothing:
+/// `accuracy --max-steps 2147483648` ran for hours (DOPRI5 takes every step at a stiff
+/// contact); a tolerance of 1e-320 (`accuracy --tolerances`, `solve --rtol`) cut the step to
+/// 0 s and advised a softer contact; `stability --cases barely_moves,barely_moves` gave the
+/// same answers twice; a `sweep --name` with a newline or an escape wrote it into every list
+/// of files. Each is refused at once, naming the setting.
+#[test]
+fn settings_that_cost_hours_or_mean_nothing_are_refused_at_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (args, names) in [
+        (
+            &["accuracy", "--max-steps", "2147483648", "-q"][..],
+            "--max-steps",
+        ),
+        (
+            &["accuracy", "--tolerances", "1e-320", "-q"][..],
+            "--tolerances",
+        ),
+        (
+            &["accuracy", "--converged-rtol", "1e-14", "-q"][..],
+            "--converged-rtol",
+        ),
+        (
+            &["accuracy", "--min-norm-tolerances", "1e-20", "-q"][..],
+            "--min-norm-tolerances",
+        ),
+        (
+            &["solve", "--model", "dynamics", "--rtol", "1e-320"][..],
+            "--rtol",
+        ),
+        (
+            &["stability", "--cases", "barely_moves,barely_moves", "-q"][..],
+            "named twice",
+        ),
+        (
+            &["sweep", "mu=0.1:0.5:5", "--name", "a\nb", "--out", "o"][..],
+            "--name",
+        ),
+        (
+            &["sweep", "mu=0.1:0.5:5", "--name", "a\u{1b}b", "--out", "o"][..],
+            "--name",
+        ),
+    ] {
+        let started = std::time::Instant::now();
+        refused(&jamchart(d, args), names);
+        assert!(
+            started.elapsed().as_secs() < 20,
+            "{args:?} was not refused at once"
+        );
+        assert!(!d.join("o").exists(), "{args:?} wrote output");
+    }
+    // The tightest tolerance taken still answers.
+    let o = jamchart(
+        d,
+        &[
+            "solve",
+            "--model",
+            "dynamics",
+            "--rtol",
+            "1e-13",
+            "--no-verify",
+        ],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}
+
 /// Regression ("axis samples that overflow"): only an axis's ends were
 /// checked, so `sweep mu=1e-320:1:5:log` wrote rows with a blank mu, `sweep
 /// force_n=1e-300:1e300:41:log` 39 rows with no force, and a capacity scene with
