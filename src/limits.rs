@@ -35,6 +35,11 @@ pub const MAX_PROBES: usize = 1000;
 /// contact.
 pub const MIN_TOLERANCE: f64 = 1e-13;
 
+/// The finest step of the nonsmooth method in deg of palm turn, [`MIN_TOLERANCE`] of a half
+/// turn: a step of 1e-320 deg turns the palm by no more than round-off, and its run took every
+/// step it was allowed to stay at the start angle.
+pub const MIN_NONSMOOTH_STEP_DEG: f64 = MIN_TOLERANCE * 180.0;
+
 /// Estimated peak memory of one computation in bytes (1 GiB).
 pub const MAX_MEMORY_BYTES: u64 = 1 << 30;
 

@@ -10,7 +10,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
-use crate::limits::MIN_TOLERANCE;
+use crate::limits::{MIN_NONSMOOTH_STEP_DEG, MIN_TOLERANCE};
 use crate::scene::{SceneParams, finite_positive};
 use crate::settings::decl::Check;
 
@@ -143,14 +143,15 @@ settings! {
         /// Step limit of the integrator.
         // DOPRI5 needs about 1e6 steps at the stiffest contacts; beyond that it is hopeless.
         max_steps: u64 = 2_000_000, quantity: "step limit", check: Check::CountAtLeast(1);
-        /// Palm turn per step of the nonsmooth method, in (0, 1] (unset: 0.1 deg with the motion
+        /// Palm turn per step of the nonsmooth method, 1.8e-11 to 1 (unset: 0.1 deg with the motion
         /// drive, 0.01 deg with the force drive).
         ///
         /// The motion drive's lock-up is located inside its step, so 0.1 deg puts x_jam within
         /// 3e-5 of r/mu for mu = 0.15-0.45. The force drive's disc comes to rest at a step end,
         /// and a slow push needs 0.01 deg for 0.1 %.
         nonsmooth_step_deg: Option<f64> = None, flag: Some("nonsmooth-step"),
-            quantity: "nonsmooth step", unit: "deg", check: Check::OpenClosed(0.0, 1.0);
+            quantity: "nonsmooth step", unit: "deg",
+            check: Check::Closed(MIN_NONSMOOTH_STEP_DEG, 1.0);
         /// How the disc moves in the nonsmooth method: slides or rolls.
         ///
         /// slides: the paper's translational joint (no rotation); rolls: free in the plane (x,

@@ -21,12 +21,13 @@
 use serde::Serialize;
 
 use super::{
-    Reference, ReferenceKind, Source, Why, check_count, check_list, check_tolerances, reference,
-    rigid_dynamics_reference, why,
+    Reference, ReferenceKind, Source, Why, check_count, check_list, check_list_from,
+    check_tolerances, reference, rigid_dynamics_reference, why,
 };
 use crate::config::Config;
 use crate::dynamics::{DiscMotion, Drive, Method};
 use crate::error::{Error, Result};
+use crate::limits::MIN_NONSMOOTH_STEP_DEG;
 use crate::models::ModelKind;
 use crate::scene::JamStatus;
 
@@ -98,21 +99,22 @@ impl AccuracySettings {
             0.0,
             1e4,
         )?;
-        check_list(
+        let turns_nothing = "a finer step turns the palm by no more than round-off";
+        check_list_from(
             "nonsmooth_steps_deg",
             &self.nonsmooth_steps_deg,
             MAX_TOLERANCES,
-            0.0,
-            1.0,
+            MIN_NONSMOOTH_STEP_DEG,
+            turns_nothing,
         )?;
         check_count("runs", self.runs, 1, MAX_RUNS)?;
         check_tolerances("converged_rtol", &[self.converged_rtol], 1)?;
-        check_list(
+        check_list_from(
             "converged_step_deg",
             &[self.converged_step_deg],
             1,
-            0.0,
-            1.0,
+            MIN_NONSMOOTH_STEP_DEG,
+            turns_nothing,
         )?;
         if self.methods.len() > 4 {
             return Err(Error::invalid(

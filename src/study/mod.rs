@@ -484,15 +484,29 @@ pub(crate) fn check_count(key: &str, n: usize, min: usize, max: usize) -> Result
 /// Refuses a list of tolerances as [`check_list`] does, and any tolerance below
 /// [`crate::limits::MIN_TOLERANCE`], which double precision cannot meet.
 pub(crate) fn check_tolerances(key: &str, list: &[f64], max: usize) -> Result<()> {
-    use crate::limits::MIN_TOLERANCE;
+    check_list_from(
+        key,
+        list,
+        max,
+        crate::limits::MIN_TOLERANCE,
+        "double precision meets no tighter tolerance",
+    )
+}
+
+/// Refuses a list as [`check_list`] does in (0, 1), and any value below `floor`, for `why`.
+pub(crate) fn check_list_from(
+    key: &str,
+    list: &[f64],
+    max: usize,
+    floor: f64,
+    why: &str,
+) -> Result<()> {
     check_list(key, list, max, 0.0, 1.0)?;
-    match list.iter().find(|&&v| v < MIN_TOLERANCE) {
+    match list.iter().find(|&&v| v < floor) {
         Some(&v) => Err(Error::invalid(
             key,
             v,
-            format!(
-                "each tolerance must be at least {MIN_TOLERANCE:e}: double precision meets no tighter"
-            ),
+            format!("each value must be at least {floor:e}: {why}"),
         )),
         None => Ok(()),
     }

@@ -172,7 +172,8 @@ fn values_that_mean_nothing_are_refused() {
 /// Inputs that were accepted and then cost minutes or answered nothing:
 /// `accuracy --max-steps 2147483648` ran for hours (DOPRI5 takes every step at a stiff
 /// contact); a tolerance of 1e-320 (`accuracy --tolerances`, `solve --rtol`) cut the step to
-/// 0 s and advised a softer contact; `stability --cases barely_moves,barely_moves` gave the
+/// 0 s and advised a softer contact, and a nonsmooth step of 1e-320 deg ran out its steps at
+/// the start angle; `stability --cases barely_moves,barely_moves` gave the
 /// same answers twice; a `sweep --name` with a newline or an escape wrote it into every list
 /// of files. Each is refused at once, naming the setting.
 #[test]
@@ -199,6 +200,18 @@ fn settings_that_cost_hours_or_mean_nothing_are_refused_at_once() {
         (
             &["solve", "--model", "dynamics", "--rtol", "1e-320"][..],
             "--rtol",
+        ),
+        (
+            &["accuracy", "--nonsmooth-steps", "1e-320", "-q"][..],
+            "--nonsmooth-steps",
+        ),
+        (
+            &["accuracy", "--converged-step", "1e-320", "-q"][..],
+            "--converged-step",
+        ),
+        (
+            &["solve", "--model", "dynamics", "--nonsmooth-step", "1e-12"][..],
+            "--nonsmooth-step",
         ),
         (
             &["stability", "--cases", "barely_moves,barely_moves", "-q"][..],
