@@ -178,8 +178,9 @@ impl DesignReport {
             _ => {
                 let _ = writeln!(
                     out,
-                    "palm length that keeps every jam on the palm: none: at the latest corner the \
-                 disc never jams"
+                    "palm length that keeps every jam on the palm: none: at the latest corner no \
+                 jam lies at a finite distance (without friction the disc never jams; a start \
+                 angle that rounds to 0 rad puts it past every length)"
                 );
             }
         }
