@@ -173,7 +173,8 @@ impl Rounded {
     /// [`Rounded::of`] for any `v`, None also for 0, NaN and the infinities: their exponent
     /// lies outside [`decimals_by_table`]'s table, which covers every number [`Rounded::of`]
     /// rounds (decimals above 22 do not scale exactly). So a map's numbers need no test of
-    /// their own before it (a tenth of a row's cost).
+    /// their own before it (its bit tests were 14 of the 268 instructions a row of
+    /// `render fig3`'s cells took).
     #[inline(always)]
     fn of_any(v: f64) -> Option<Rounded> {
         Self::with_decimals(v, decimals_by_table(v.abs())?)
@@ -378,7 +379,8 @@ pub enum Column<'a> {
 /// A [`Column`] as its rows write it: a word column's words quoted once, not once a cell.
 ///
 /// A tag byte of its own (`repr(u8)`): the kind found in the spare values of the words' `Vec`
-/// took a dozen instructions per field of every row to decode.
+/// took a dozen instructions per field of every row to decode (with `Rounded::of_any`, a row
+/// of `render fig3`'s cells: 268 -> 246 instructions, callgrind).
 #[repr(u8)]
 enum Prepared<'a> {
     /// A value in every cell.
