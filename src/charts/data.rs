@@ -39,14 +39,15 @@ impl DataFile {
                     data: &'a D,
                 }
                 let cells_file = data.cells().map(|_| format!("{scene}.csv"));
-                let doc = serde_json::to_value(Doc {
+                let mut doc = serde_json::to_value(Doc {
                     scene,
                     title,
                     cells_file,
                     data,
                 })
                 .expect("figure data serialises to JSON");
-                Self::json(&rounded(doc))
+                round_numbers(&mut doc);
+                Self::json(&doc)
             }
             DataFormat::Csv => Self::csv(data.csv()),
         }
@@ -61,18 +62,19 @@ impl DataFile {
     }
 }
 
-/// `doc` with every number that is not an integer rounded as [`crate::csv_out::Num`] rounds it.
-fn rounded(doc: serde_json::Value) -> serde_json::Value {
+/// Every number of `doc` that is not an integer rounded as [`crate::csv_out::Num`] rounds it,
+/// in place (the document rebuilt, each object's keys inserted again, cost as much as the
+/// rounding).
+fn round_numbers(doc: &mut serde_json::Value) {
     use serde_json::Value;
     match doc {
-        Value::Number(n) => match n.as_f64() {
-            Some(v) if n.is_f64() => {
-                serde_json::to_value(crate::csv_out::Num(v)).expect("a number serialises")
+        Value::Number(n) => {
+            if let Some(v) = n.as_f64().filter(|_| n.is_f64()) {
+                *doc = serde_json::to_value(crate::csv_out::Num(v)).expect("a number serialises");
             }
-            _ => Value::Number(n),
-        },
-        Value::Array(a) => Value::Array(a.into_iter().map(rounded).collect()),
-        Value::Object(o) => Value::Object(o.into_iter().map(|(k, v)| (k, rounded(v))).collect()),
-        other => other,
+        }
+        Value::Array(a) => a.iter_mut().for_each(round_numbers),
+        Value::Object(o) => o.values_mut().for_each(round_numbers),
+        _ => {}
     }
 }

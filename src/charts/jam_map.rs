@@ -17,7 +17,7 @@ use super::legend::{self, LegendEntry, Swatch};
 use super::picture::Picture;
 use super::readoff::{Axis, Disc, JamMapColumns, Named, Panel, ReadOffData};
 use super::style::{self, INK, JAM_FILL, LineKind, SLIDE_FILL};
-use super::{axis_label, grid_lines, grid_polygons, param_symbol, scene_subtitle};
+use super::{axis_label, grid_lines, param_symbol, scene_subtitle};
 use crate::figures::At;
 use crate::figures::jam_map::{
     BEYOND_REACH as BEYOND, JAM, JamMapCells, JamMapData, JamMapLayer, JamMapSettings, SLIDE,
@@ -63,14 +63,17 @@ impl Picture for JamMap {
                 Some([e, l]) => {
                     let lo: Vec<f64> = e.iter().zip(l).map(|(a, b)| a.min(*b)).collect();
                     let hi: Vec<f64> = e.iter().zip(l).map(|(a, b)| a.max(*b)).collect();
-                    jam_rings = jam_rings_of(c, &lo, s);
-                    uncertain_rings = jam_rings_of(c, &hi, s);
+                    jam_rings = jam_rings_of(&lo, s);
+                    uncertain_rings = jam_rings_of(&hi, s);
                     end_lines = [e, l].map(|m| boundary_lines(c, m, s));
                 }
-                None => jam_rings = jam_rings_of(c, &c.margin_n, s),
+                None => jam_rings = jam_rings_of(&c.margin_n, s),
             }
-            let beyond: Vec<bool> = c.region.iter().map(|&r| r == BEYOND).collect();
-            beyond_rings = crate::figures::contours::mask_rings(&beyond, &s.x_axis, &s.y_axis);
+            // Most maps have no cell beyond the palm's reach: nothing to trace then.
+            if c.region.contains(&BEYOND) {
+                let beyond: Vec<bool> = c.region.iter().map(|&r| r == BEYOND).collect();
+                beyond_rings = crate::figures::contours::mask_rings(&beyond, &s.x_axis, &s.y_axis);
+            }
         }
         JamMap {
             title: title.to_string(),
@@ -443,15 +446,10 @@ fn boundary_lines(c: &JamMapCells, margin: &[f64], s: &JamMapSettings) -> Vec<Ve
         .collect()
 }
 
-/// The rings of the region where `margin` (a grid of `c`'s shape) is >= 0, in plot space.
-fn jam_rings_of(c: &JamMapCells, margin: &[f64], s: &JamMapSettings) -> Vec<Vec<(f64, f64)>> {
+/// The rings of the region where `margin` (a grid over the axes of `s`) is >= 0, in plot space.
+fn jam_rings_of(margin: &[f64], s: &JamMapSettings) -> Vec<Vec<(f64, f64)>> {
     if margin.is_empty() {
         return Vec::new();
     }
-    let builder = ContourBuilder::new(c.nx(), c.ny(), true);
-    // A single threshold on a finite grid cannot fail; no polygon is drawn if it ever did.
-    let jam = builder.contours(margin, &[0.0]).unwrap_or_default();
-    jam.iter()
-        .flat_map(|g| grid_polygons(g.geometry(), &s.x_axis, &s.y_axis))
-        .collect()
+    crate::figures::contours::region_rings(margin, 0.0, &s.x_axis, &s.y_axis)
 }

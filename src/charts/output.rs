@@ -5,14 +5,14 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::print::{Grey, Ink};
-use super::typeset::{Quantise, SvgText, Typeset};
+use super::typeset::{Canvas, Quantise, SvgText, Typeset};
 
 /// The SVG backend as charts see it: text as outlines, everything `scale` times larger, in the
 /// scene's ink.
 pub type SvgArea<'a> = DrawingArea<Typeset<Grey<SVGBackend<'a>>>, Shift>;
 /// The PNG backend as charts see it: text rasterised, anti-aliasing quantised, scaled, in the
 /// scene's ink.
-pub type PngArea<'a> = DrawingArea<Typeset<Grey<Quantise<BitMapBackend<'a>>>>, Shift>;
+pub type PngArea<'a> = DrawingArea<Typeset<Grey<Quantise<Canvas<'a>>>>, Shift>;
 
 /// An SVG `width` x `height` px drawn by `draw` on a drawing `scale` times smaller.
 pub fn svg<F>(width: u32, height: u32, scale: f64, ink: Ink, draw: F) -> Result<Vec<u8>, String>
@@ -101,7 +101,7 @@ where
 {
     let mut rgb = vec![0u8; width as usize * height as usize * 3];
     {
-        let backend = Quantise(BitMapBackend::with_buffer(&mut rgb, (width, height)));
+        let backend = Quantise(Canvas::new(&mut rgb, (width, height)));
         let root = Typeset::raster(Grey(backend, ink), scale).into_drawing_area();
         draw(&root)?;
         root.present().map_err(|e| e.to_string())?;

@@ -96,12 +96,26 @@ pub fn mask_rings<P>(mask: &[bool], xa: &GridAxis<P>, ya: &GridAxis<P>) -> Vec<V
         return Vec::new();
     }
     let values: Vec<f64> = mask.iter().map(|b| f64::from(u8::from(*b))).collect();
-    let builder = contour::ContourBuilder::new(xa.count, ya.count, true);
-    // A single threshold on a finite grid cannot fail; no polygon is drawn if it ever did.
-    let rings = builder.contours(&values, &[0.5]).unwrap_or_default();
-    rings
-        .iter()
-        .flat_map(|c| grid_polygons(c.geometry(), xa, ya))
+    region_rings(&values, 0.5, xa, ya)
+}
+
+/// The outer rings, in the axes' own coordinates, of the region where `values` (an `xa` x
+/// `ya` grid, x fastest) are at least `threshold`: the exteriors of the `contour` crate's
+/// smoothed contour polygons at that threshold, traced without its pass over every cell
+/// (`iso_rings`). None when the grid's size is not the axes'.
+pub fn region_rings<P>(
+    values: &[f64],
+    threshold: f64,
+    xa: &GridAxis<P>,
+    ya: &GridAxis<P>,
+) -> Vec<Vec<(f64, f64)>> {
+    super::iso_rings::exteriors(values, threshold, xa.count, ya.count)
+        .into_iter()
+        .map(|ring| {
+            ring.into_iter()
+                .map(|(x, y)| (grid_to_axis(x, xa), grid_to_axis(y, ya)))
+                .collect()
+        })
         .collect()
 }
 

@@ -18,6 +18,7 @@ pub mod contour_map;
 pub mod contours;
 pub mod convergence;
 pub mod error_time;
+mod iso_rings;
 pub mod jam_map;
 pub mod jam_probability;
 pub(crate) mod models;

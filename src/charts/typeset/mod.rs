@@ -30,8 +30,11 @@
 //!
 //! [`Quantise`] sits under the PNG's [`Typeset`]: every anti-aliased pixel (text, lines,
 //! polygon edges, circles) is blended at one of [`quantise::COVERAGE_LEVELS`] coverages, so that line art
-//! keeps few colours and the PNG can be stored indexed ([`super::output::encode_png`]).
+//! keeps few colours and the PNG can be stored indexed ([`super::output::encode_png`]). Under
+//! it, [`Canvas`] is the RGB buffer: plotters' bitmap backend, byte for byte, with its long
+//! runs written in place.
 
+mod canvas;
 mod quantise;
 mod stroke;
 mod svg;
@@ -40,13 +43,14 @@ use std::cell::RefCell;
 use std::rc::Rc;
 use std::sync::OnceLock;
 
-use ab_glyph::{Font, FontRef, GlyphId, PxScale, point};
+use ab_glyph::{Font, FontRef, GlyphId, Outline, OutlinedGlyph, PxScale, ScaleFont, point};
 use plotters_backend::text_anchor::{HPos, VPos};
 use plotters_backend::{
     BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend, DrawingErrorKind,
     FontTransform,
 };
 
+pub use canvas::Canvas;
 pub use quantise::Quantise;
 
 /// A backend pixel.
@@ -67,6 +71,17 @@ fn font() -> &'static FontRef<'static> {
         // that every chart test catches at once.
         FontRef::try_from_slice(style::DEJAVU_SANS).expect("the embedded DejaVu Sans parses")
     })
+}
+
+/// The outline of glyph `id` in font units, read from the font once per thread: a chart's
+/// PNG sets a few dozen glyphs hundreds of times, and reading the outline from the font's
+/// tables each time was a fifth of its text.
+fn outline(id: GlyphId) -> Option<Outline> {
+    thread_local! {
+        static OUTLINES: RefCell<std::collections::HashMap<GlyphId, Option<Outline>>> =
+            RefCell::default();
+    }
+    OUTLINES.with_borrow_mut(|o| o.entry(id).or_insert_with(|| font().outline(id)).clone())
 }
 
 /// A run of text laid out in font units: each glyph and its pen position, and the advance.
@@ -424,9 +439,12 @@ impl<DB: DrawingBackend> DrawingBackend for Typeset<DB> {
                 let mut cells = Vec::new();
                 for (id, pen) in run.glyphs {
                     let origin = point((pen - ax) * k, bl * k);
-                    let Some(g) = f.outline_glyph(id.with_scale_and_position(scale, origin)) else {
+                    // `Font::outline_glyph`, the outline read once.
+                    let Some(outline) = outline(id) else {
                         continue;
                     };
+                    let glyph = id.with_scale_and_position(scale, origin);
+                    let g = OutlinedGlyph::new(glyph, outline, f.as_scaled(scale).scale_factor());
                     let min = g.px_bounds().min;
                     g.draw(|x, y, c| {
                         if c > 0.0 {

@@ -20,9 +20,22 @@ pub struct Quantise<DB>(pub DB);
 
 fn quantised(c: BackendColor) -> BackendColor {
     BackendColor {
-        alpha: (c.alpha.clamp(0.0, 1.0) * COVERAGE_LEVELS).round() / COVERAGE_LEVELS,
+        alpha: round(c.alpha.clamp(0.0, 1.0) * COVERAGE_LEVELS) / COVERAGE_LEVELS,
         rgb: c.rgb,
     }
+}
+
+/// `f64::round` of `x` in 0..=COVERAGE_LEVELS (or NaN), without a call to libm: a call per
+/// anti-aliased pixel. The whole part converts exactly, the fraction is exact, and a half
+/// rounds up, away from zero, as `round` does.
+fn round(x: f64) -> f64 {
+    if !(0.0..=COVERAGE_LEVELS).contains(&x) {
+        return x.round();
+    }
+    let whole = x as u64 as f64;
+    // -0 stays -0, as `round` keeps it.
+    let rounded = if x - whole >= 0.5 { whole + 1.0 } else { whole };
+    rounded.copysign(x)
 }
 
 impl<DB: DrawingBackend> Quantise<DB> {
@@ -114,6 +127,25 @@ mod tests {
     use plotters::prelude::{BLACK, BitMapBackend, Color};
 
     use super::*;
+
+    /// Every coverage a pixel may have rounds as `f64::round` rounds it: each multiple of
+    /// 1/1024 of the levels, the halves, and the floats next to them.
+    #[test]
+    fn coverage_rounds_as_std() {
+        let mut xs: Vec<f64> = (0..=8 * 1024).map(|i| f64::from(i) / 1024.0).collect();
+        let (down, up) = (
+            |v: f64| f64::from_bits(v.to_bits() - 1),
+            |v: f64| f64::from_bits(v.to_bits() + 1),
+        );
+        for k in 0..=8 {
+            let half = f64::from(k) + 0.5;
+            xs.extend([half, down(half), up(half), up(f64::from(k))]);
+        }
+        xs.extend([0.49999999999999994, 7.999999999999999, f64::NAN, -0.0]);
+        for x in xs {
+            assert_eq!(round(x).to_bits(), x.round().to_bits(), "{x}");
+        }
+    }
 
     /// Regression for "lines are not anti-aliased (visible steps)": a slanted 2 px
     /// curve drawn through the PNG's backend used to be plotters' polygon, filled at full
