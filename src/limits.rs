@@ -97,7 +97,7 @@ impl PerItem {
 //
 // | item                       | memory B | files B |
 // |----------------------------|----------|---------|
-// | jam map cell (fig3)        |       17 |      33 |
+// | jam map cell (fig3)        |        9 |      33 |
 // | contour map cell (fig7c)   |      168 |      46 |
 // | universal chart cell       |       82 |      44 |
 // | V-locator capacity cell    |      105 |      25 |
@@ -106,7 +106,9 @@ impl PerItem {
 // A jam map cell was 59 B while its CSV was built in memory; streamed to its file, 33 B; with
 // each cell's region a byte (it was a 16-byte reference to its word), 17 B (800 -> 1600 cells a
 // side: 26.4 -> 57.8 MB peak RSS; 500 -> 1000, as tests/hostile/limits.rs measures: 20-22 B;
-// 3200: see the guide's Limits). The universal chart's status went the same way: 97 -> 82 B (400 -> 800).
+// 3200: see the guide's Limits); with the regions classed row by row as the grid is computed,
+// 9 B (`/usr/bin/time -v`, fig3 at 500, 1000 and 1600 a side: 18.1, 24.8 and 38.6 MB, 9.1 and
+// 9.0 B a cell). The universal chart's status went the same way: 97 -> 82 B (400 -> 800).
 // The other maps' peaks come before their CSV is written (contour maps: 129.0 MB at 800^2
 // either way), so streaming left them as they were.
 //
@@ -116,7 +118,7 @@ impl PerItem {
 // row is 9 f64 (72 B) held as a row, a drawn sample and a CSV line of about 90 B.
 
 /// A cell of a jam map (statics; the other models cost time, not memory).
-pub const JAM_MAP_CELL: PerItem = PerItem::new("cells of the jam map", 27, 41);
+pub const JAM_MAP_CELL: PerItem = PerItem::new("cells of the jam map", 12, 41);
 
 /// A cell of a contour map.
 pub const CONTOUR_MAP_CELL: PerItem = PerItem::new("cells of the contour map", 210, 58);

@@ -65,7 +65,7 @@ fn scene_limits_are_found_by_estimate_not_by_allocation_failure() {
         "{}",
         stderr(&out)
     );
-    // Within the limits, under the same cap: 1500 x 1500 cells, about 61 MB at 27 B/cell.
+    // Within the limits, under the same cap: 1500 x 1500 cells, about 27 MB at 12 B/cell.
     scene(d, "within", &jam_map(1500));
     let out = render(d, "within");
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
