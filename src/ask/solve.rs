@@ -12,6 +12,7 @@ use crate::error::{Error, Result};
 use crate::minnorm::qp::{HoldStatus, TracePoint};
 use crate::models::{self, Detail, ModelKind, ModelSpec, Solution};
 use crate::scene::SceneParams;
+use crate::settings::Decl;
 use crate::uncertain::Flow;
 use crate::uncertain::UncertainSet;
 use crate::uncertain::dist::{self, DistAnswer, DistQuestion, Progress};
@@ -91,7 +92,8 @@ impl DistAsk {
     /// Checks the question, whether or not an input is distributed: a count in range,
     /// probabilities in (0, 1), finite positions, none given twice.
     pub fn validate(&self) -> Result<()> {
-        self.for_model(ModelKind::Statics).validate()
+        let samples = self.samples.unwrap_or(STATICS_SAMPLES);
+        DistQuestion::check(samples, &self.quantiles, &self.before_mm)
     }
 
     /// The keys given away from their defaults.
@@ -181,6 +183,59 @@ impl SolveQuestion {
             trace,
             series: None,
         };
+        question.check()?;
+        Ok(question)
+    }
+
+    /// [`SolveQuestion::from_keywords`] of keys that are each given a number (`mu = 0.3,
+    /// radius_mm = 12`): the same question, or the same refusal. A key given twice keeps its
+    /// last number, as in [`Keywords`].
+    ///
+    /// Numbers of `[scene]`, its aliases and `push_ratio` (the common question: one push of
+    /// the closed form) are checked and set in place on the default config, whose other
+    /// sections hold nothing to check; a Python loop of scalar calls spent most of its time
+    /// on the keyword map and on checking the defaults of every section. Any other key goes
+    /// through the keyword map.
+    pub fn from_numbers(numbers: &[(&str, f64)]) -> Result<Self> {
+        let general = || {
+            let pairs = numbers
+                .iter()
+                .map(|&(k, x)| (k.into(), toml::Value::Float(x)));
+            Self::from_keywords(Keywords::new(pairs))
+        };
+        let mut scene: Vec<(&'static Decl, f64)> = Vec::with_capacity(numbers.len());
+        let mut push_ratio = None;
+        for (i, &(key, x)) in numbers.iter().enumerate() {
+            if numbers[..i].iter().any(|&(k, _)| k == key) {
+                return general();
+            }
+            match crate::config::scene_decls().find(|d| d.key == key) {
+                Some(decl) => scene.push((decl, x)),
+                None if key == "push_ratio" => push_ratio = Some(x),
+                None => return general(),
+            }
+        }
+        if push_ratio.is_some() {
+            let keys: Vec<&str> = numbers.iter().map(|&(k, _)| k).collect();
+            Self::refuse_two_pushes(&keys)?;
+        }
+        // The keyword map's order, where its first refusal is found.
+        scene.sort_unstable_by_key(|&(decl, _)| decl.key);
+        for &(decl, x) in &scene {
+            decl.check_real(x)?;
+        }
+        let mut config = Config::default();
+        if crate::config::set_scene_numbers(&mut config.scene, &scene).is_none() {
+            return general();
+        }
+        // The scene alone: the default min-norm and dynamics settings are valid as they are
+        // (`the_default_config_is_valid`).
+        config.scene.validate()?;
+        let uncertain = UncertainSet::default();
+        if let Some(ratio) = push_ratio {
+            push_by_ratio(&mut config, &uncertain, ratio)?;
+        }
+        let question = SolveQuestion::new(config, uncertain);
         question.check()?;
         Ok(question)
     }

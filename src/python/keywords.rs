@@ -208,6 +208,35 @@ pub(super) fn scene_param(key: &str) -> Option<Param> {
     Param::all().find(|p| p.as_str() == key && *p != Param::ThetaDeg)
 }
 
+/// The keywords of a call where each is a scene parameter given one number (a float or an int,
+/// a numpy float64 too: what [`given`] reads as one number), as the library's
+/// [`crate::ask::SolveQuestion::from_numbers`] takes them; None where any is anything else (a
+/// None, a bool, a name, a range, an array...), which [`given`] reads.
+pub(super) fn scene_numbers(
+    kwargs: Option<&Bound<'_, PyDict>>,
+) -> PyResult<Option<Vec<(&'static str, f64)>>> {
+    let Some(kwargs) = kwargs else {
+        return Ok(Some(Vec::new()));
+    };
+    let mut out = Vec::with_capacity(kwargs.len());
+    for (k, v) in kwargs.iter() {
+        let number = v.is_instance_of::<PyFloat>()
+            || (v.is_instance_of::<PyInt>() && !v.is_instance_of::<PyBool>());
+        let Ok(key) = k.cast::<PyString>() else {
+            return Ok(None);
+        };
+        let (true, Some(param)) = (number, scene_param(&key.to_cow()?)) else {
+            return Ok(None);
+        };
+        // An int beyond a double's range: `given` raises its own error.
+        let Ok(x) = v.extract::<f64>() else {
+            return Ok(None);
+        };
+        out.push((param.as_str(), x));
+    }
+    Ok(Some(out))
+}
+
 /// Reads `kwargs` of `function`: a keyword left at None is left out (it is the signature's
 /// default; one the function does not list is refused); a scene parameter given an array is
 /// set apart when `arrays` (the array entry takes it), and each of `lists` takes a list of

@@ -60,8 +60,13 @@ def _wrap(name: str, positional: Sequence[str]) -> Callable[..., Any]:
     native = getattr(_jamchart, name)
     declared = _jamchart._signature(name)
     required = [k for k, d in declared if d is None]
+    # Keywords alone, to a function without positional or required ones (solve in a loop):
+    # nothing to move or check on the way.
+    bare = not positional and not required
 
     def function(*args: Any, **keywords: Any) -> Any:
+        if bare and not args:
+            return native(keywords)
         given = list(args) + [keywords.pop(p) for p in positional[len(args):] if p in keywords]
         if len(given) != len(positional):
             raise TypeError(f"{name}() takes {len(positional)} positional argument(s) "
