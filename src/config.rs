@@ -15,7 +15,6 @@ use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
 use crate::minnorm::MinNormSettings;
 use crate::scene::SceneParams;
-use crate::settings::Kind;
 use crate::uncertain::UncertainSet;
 pub use file::{MAX_INPUT_BYTES, MAX_PAGE_BYTES, read_regular, regular_or_missing};
 pub(crate) use merge::{Refusal, overlay, read_section};
@@ -142,7 +141,6 @@ pub(crate) fn set_scene_numbers(
     scene: &mut SceneParams,
     numbers: &[(&'static crate::settings::Decl, f64)],
 ) -> Option<()> {
-    let real = |k: &str| scene_decls().any(|d| d.key == k && d.kind == Kind::Real);
     for aliases in [true, false] {
         for &(decl, x) in numbers {
             let keys = match (decl.sets, aliases) {
@@ -151,7 +149,8 @@ pub(crate) fn set_scene_numbers(
                 _ => continue,
             };
             for k in keys {
-                (real(k) && scene.set_real(k, x)).then_some(())?;
+                // False for a key of no number field (every field of the scene is one).
+                scene.set_real(k, x).then_some(())?;
             }
         }
     }

@@ -16,8 +16,9 @@ use crate::scene::{JamStatus, SceneParams};
 /// none), and the model's whole record as `jamchart solve --format json` prints it.
 #[pyclass(frozen, module = "jamchart")]
 pub(super) struct Solution {
-    /// The library's answer, of one model.
-    pub(super) answer: ask::PushAnswer,
+    /// The library's answer, of one model, as the library boxed it (moved, not copied, into
+    /// the Python object).
+    pub(super) answer: Box<ask::PushAnswer>,
 }
 
 impl Solution {
@@ -446,7 +447,9 @@ impl Comparison {
     fn one(&self, k: usize) -> Solution {
         let mut answer = self.answer.clone();
         answer.results = vec![self.answer.results[k].clone()];
-        Solution { answer }
+        Solution {
+            answer: Box::new(answer),
+        }
     }
 }
 

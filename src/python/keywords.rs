@@ -5,6 +5,7 @@
 use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
+use pyo3::sync::PyOnceLock;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyString, PyTuple};
 
 use crate::ask::Keywords;
@@ -222,10 +223,13 @@ pub(super) fn scene_numbers(
     for (k, v) in kwargs.iter() {
         let number = v.is_instance_of::<PyFloat>()
             || (v.is_instance_of::<PyInt>() && !v.is_instance_of::<PyBool>());
-        let Ok(key) = k.cast::<PyString>() else {
-            return Ok(None);
+        let interned = scene_keys(kwargs.py()).iter().find(|(s, _)| s.as_ptr() == k.as_ptr());
+        let param = match (interned, k.cast::<PyString>()) {
+            (Some(&(_, p)), _) => Some(p),
+            (None, Ok(key)) => scene_param(&key.to_cow()?),
+            (None, Err(_)) => None,
         };
-        let (true, Some(param)) = (number, scene_param(&key.to_cow()?)) else {
+        let (true, Some(param)) = (number, param) else {
             return Ok(None);
         };
         // An int beyond a double's range: `given` raises its own error.
@@ -235,6 +239,19 @@ pub(super) fn scene_numbers(
         out.push((param.as_str(), x));
     }
     Ok(Some(out))
+}
+
+/// The scene parameters' keywords as interned Python strings: the keys of a call are these
+/// very objects (Python interns the names a call spells), found by identity without reading
+/// their text, which under the stable ABI makes a bytes object per key.
+fn scene_keys(py: Python<'_>) -> &[(Py<PyString>, Param)] {
+    static KEYS: PyOnceLock<Vec<(Py<PyString>, Param)>> = PyOnceLock::new();
+    KEYS.get_or_init(py, || {
+        let params = Param::all().filter(|p| scene_param(p.as_str()).is_some());
+        params
+            .map(|p| (PyString::intern(py, p.as_str()).unbind(), p))
+            .collect()
+    })
 }
 
 /// Reads `kwargs` of `function`: a keyword left at None is left out (it is the signature's

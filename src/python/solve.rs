@@ -121,7 +121,7 @@ fn one_push<'py>(
     let SolveAnswer::Push(answer) = answer else {
         unreachable!("a question without ranges is one push")
     };
-    Ok(Bound::new(py, Solution { answer: *answer })?.into_any())
+    Ok(Bound::new(py, Solution { answer })?.into_any())
 }
 
 /// Answers the pushes of `arrays`, broadcast together over `question`'s scene (with `late`
