@@ -204,13 +204,6 @@ pub fn read_text(path: &Path) -> Result<String> {
 mod tests {
     use super::*;
 
-    /// A question of scene numbers checks its scene alone (`SolveQuestion::from_numbers`):
-    /// every other section's defaults must be valid as they are.
-    #[test]
-    fn the_default_config_is_valid() {
-        Config::default().validate().unwrap();
-    }
-
     #[test]
     fn unknown_key_names_file_line_and_key() {
         let text = "[scene]\nmu_ground = 0.3\nradus_mm = 4\n";

@@ -4,6 +4,7 @@
 use std::path::PathBuf;
 
 use serde::Serialize;
+use smallvec::SmallVec;
 
 use super::{Keywords, Words};
 use crate::config::Config;
@@ -203,7 +204,7 @@ impl SolveQuestion {
                 .map(|&(k, x)| (k.into(), toml::Value::Float(x)));
             Self::from_keywords(Keywords::new(pairs))
         };
-        let mut scene: Vec<(&'static Decl, f64)> = Vec::with_capacity(numbers.len());
+        let mut scene: SmallVec<[(&'static Decl, f64); 12]> = SmallVec::new();
         let mut push_ratio = None;
         for (i, &(key, x)) in numbers.iter().enumerate() {
             if numbers[..i].iter().any(|&(k, _)| k == key) {
@@ -219,7 +220,10 @@ impl SolveQuestion {
             let keys: Vec<&str> = numbers.iter().map(|&(k, _)| k).collect();
             Self::refuse_two_pushes(&keys)?;
         }
-        // The keyword map's order, where its first refusal is found.
+        // The keyword map's order, where its first refusal is found. Each number checked
+        // against its setting is the whole scene checked: the other fields hold their
+        // defaults, and an alias checks its number as each field it sets does
+        // (`a_question_of_scene_numbers_has_nothing_else_to_check`).
         scene.sort_unstable_by_key(|&(decl, _)| decl.key);
         for &(decl, x) in &scene {
             decl.check_real(x)?;
@@ -228,16 +232,13 @@ impl SolveQuestion {
         if crate::config::set_scene_numbers(&mut config.scene, &scene).is_none() {
             return general();
         }
-        // The scene alone: the default min-norm and dynamics settings are valid as they are
-        // (`the_default_config_is_valid`).
-        config.scene.validate()?;
         let uncertain = UncertainSet::default();
         if let Some(ratio) = push_ratio {
             push_by_ratio(&mut config, &uncertain, ratio)?;
         }
-        let question = SolveQuestion::new(config, uncertain);
-        question.check()?;
-        Ok(question)
+        // Nothing beyond the scene to check: the default min-norm and dynamics settings and
+        // the default distribution's question are valid as they are.
+        Ok(SolveQuestion::new(config, uncertain))
     }
 
     /// Refuses `keys` (a question's keys, or a face's) that set the push two ways: `force_n`
@@ -348,7 +349,7 @@ impl SolveQuestion {
             );
             crate::limits::check_items("--omega (omega_deg_s)", rows, crate::limits::SERIES_ROW)?;
         }
-        let mut results = Vec::new();
+        let mut results = Vec::with_capacity(self.models.len());
         for &kind in &self.models {
             let mut spec = kind.with(&self.config.min_norm, &self.config.dynamics);
             if let ModelSpec::Dynamics { series_dt_s, .. } = &mut spec {
@@ -628,4 +629,29 @@ pub struct BoxRecord {
     /// P(x_jam < x) and the quantiles, with a distributed input.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub distribution: Option<DistAnswer>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// [`SolveQuestion::from_numbers`] checks each number given against its own setting and
+    /// nothing else: that is the whole question checked only while the defaults of every
+    /// section and of the distribution's question are valid, and an alias refuses what each
+    /// field it sets refuses.
+    #[test]
+    fn a_question_of_scene_numbers_has_nothing_else_to_check() {
+        Config::default().validate().unwrap();
+        SolveQuestion::new(Config::default(), UncertainSet::default())
+            .check()
+            .unwrap();
+        for alias in crate::config::scene_decls().filter(|d| !d.sets.is_empty()) {
+            for key in alias.sets {
+                let field = crate::config::scene_decls()
+                    .find(|d| d.key == *key)
+                    .unwrap();
+                assert_eq!(alias.check, field.check, "{} sets {key}", alias.key);
+            }
+        }
+    }
 }

@@ -7,6 +7,7 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyString, PyTuple};
+use smallvec::SmallVec;
 
 use crate::ask::Keywords;
 use crate::error::Error;
@@ -215,15 +216,17 @@ pub(super) fn scene_param(key: &str) -> Option<Param> {
 /// None, a bool, a name, a range, an array...), which [`given`] reads.
 pub(super) fn scene_numbers(
     kwargs: Option<&Bound<'_, PyDict>>,
-) -> PyResult<Option<Vec<(&'static str, f64)>>> {
+) -> PyResult<Option<SmallVec<[(&'static str, f64); 12]>>> {
+    let mut out = SmallVec::new();
     let Some(kwargs) = kwargs else {
-        return Ok(Some(Vec::new()));
+        return Ok(Some(out));
     };
-    let mut out = Vec::with_capacity(kwargs.len());
     for (k, v) in kwargs.iter() {
         let number = v.is_instance_of::<PyFloat>()
             || (v.is_instance_of::<PyInt>() && !v.is_instance_of::<PyBool>());
-        let interned = scene_keys(kwargs.py()).iter().find(|(s, _)| s.as_ptr() == k.as_ptr());
+        let interned = scene_keys(kwargs.py())
+            .iter()
+            .find(|(s, _)| s.as_ptr() == k.as_ptr());
         let param = match (interned, k.cast::<PyString>()) {
             (Some(&(_, p)), _) => Some(p),
             (None, Ok(key)) => scene_param(&key.to_cow()?),
