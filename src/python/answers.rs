@@ -14,7 +14,8 @@ use crate::scene::{JamStatus, SceneParams};
 
 /// One push's answer: the status, theta_jam in deg and x_jam in mm (NaN where the model gives
 /// none), and the model's whole record as `jamchart solve --format json` prints it.
-#[pyclass(frozen, module = "jamchart")]
+// A free list: a loop of scalar calls makes and frees one a call, and reuses its memory.
+#[pyclass(frozen, module = "jamchart", freelist = 16)]
 pub(super) struct Solution {
     /// The library's answer, of one model, as the library boxed it (moved, not copied, into
     /// the Python object).
