@@ -210,13 +210,16 @@ pub(super) fn scene_param(key: &str) -> Option<Param> {
     Param::all().find(|p| p.as_str() == key && *p != Param::ThetaDeg)
 }
 
+/// A call's numbers by keyword, as the library's
+/// [`crate::ask::SolveQuestion::from_numbers`] takes them: a dozen at most, held without an
+/// allocation.
+pub(super) type Numbers = SmallVec<[(&'static str, f64); 12]>;
+
 /// The keywords of a call where each is a scene parameter given one number (a float or an int,
 /// a numpy float64 too: what [`given`] reads as one number), as the library's
 /// [`crate::ask::SolveQuestion::from_numbers`] takes them; None where any is anything else (a
 /// None, a bool, a name, a range, an array...), which [`given`] reads.
-pub(super) fn scene_numbers(
-    kwargs: Option<&Bound<'_, PyDict>>,
-) -> PyResult<Option<SmallVec<[(&'static str, f64); 12]>>> {
+pub(super) fn scene_numbers(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Option<Numbers>> {
     let mut out = SmallVec::new();
     let Some(kwargs) = kwargs else {
         return Ok(Some(out));
