@@ -15,7 +15,6 @@ use crate::dynamics::DynamicsParams;
 use crate::error::{Error, Result};
 use crate::minnorm::MinNormSettings;
 use crate::scene::SceneParams;
-use crate::settings::Kind;
 use crate::uncertain::UncertainSet;
 pub use file::{MAX_INPUT_BYTES, MAX_PAGE_BYTES, read_regular, regular_or_missing};
 pub(crate) use merge::{Refusal, overlay, read_section};
@@ -65,24 +64,15 @@ impl Config {
             (1, Some(toml::Value::Table(scene))) => scene,
             _ => return None,
         };
-        let real = |k: &str| scene_decls().any(|d| d.key == k && d.kind == Kind::Real);
-        let mut out = self.clone();
-        for aliases in [true, false] {
-            for (key, value) in scene {
-                let toml::Value::Float(x) = *value else {
-                    return None;
-                };
-                let decl = scene_decls().find(|d| d.key == key)?;
-                let keys = match (decl.sets, aliases) {
-                    ([], false) => std::slice::from_ref(&decl.key),
-                    (keys, true) if !keys.is_empty() => keys,
-                    _ => continue,
-                };
-                for k in keys {
-                    (real(k) && out.scene.set_real(k, x)).then_some(())?;
-                }
-            }
+        let mut numbers = Vec::with_capacity(scene.len());
+        for (key, value) in scene {
+            let toml::Value::Float(x) = *value else {
+                return None;
+            };
+            numbers.push((scene_decls().find(|d| d.key == key)?, x));
         }
+        let mut out = self.clone();
+        set_scene_numbers(&mut out.scene, &numbers)?;
         Some(out)
     }
 
@@ -141,6 +131,30 @@ fn every_mistake(text: &str, path: &Path) -> Option<Error> {
         }
     }
     (errors.len() > 1).then(|| Error::in_file_order(path, errors))
+}
+
+/// Sets `numbers` (each a setting of `[scene]` or an alias of some, and its number) in `scene`
+/// as the merge of [`overlay`] does: an alias's keys first, then the keys given themselves,
+/// which win (`mu = 0.3, mu_ground = 0.5` gives mu_palm 0.3 and mu_ground 0.5). Unchecked.
+/// None where a setting is no number of the scene (`scene` is then partly set).
+pub(crate) fn set_scene_numbers(
+    scene: &mut SceneParams,
+    numbers: &[(&'static crate::settings::Decl, f64)],
+) -> Option<()> {
+    for aliases in [true, false] {
+        for &(decl, x) in numbers {
+            let keys = match (decl.sets, aliases) {
+                ([], false) => std::slice::from_ref(&decl.key),
+                (keys, true) if !keys.is_empty() => keys,
+                _ => continue,
+            };
+            for k in keys {
+                // False for a key of no number field (every field of the scene is one).
+                scene.set_real(k, x).then_some(())?;
+            }
+        }
+    }
+    Some(())
 }
 
 /// The settings of `[scene]` and its aliases: where uncertain inputs of the palm scene are.

@@ -3,7 +3,7 @@
 //! document for the same inputs, so every face answers alike.
 
 use jamchart::Error;
-use jamchart::ask::{DesignQuestion, SolveQuestion, VlocatorQuestion};
+use jamchart::ask::{DesignQuestion, SolveQuestion, VlocatorQuestion, Words};
 
 use crate::common::cli::{SHAFT, json_of, timeless};
 
@@ -158,7 +158,6 @@ fn bad_keywords_are_typed_errors_naming_the_key() {
 /// keys elsewhere.
 #[test]
 fn an_answers_text_names_settings_in_a_faces_words() {
-    use jamchart::ask::Words;
     let question: SolveQuestion =
         serde_json::from_str(r#"{"mu": 0.05, "palm_length_mm": 40}"#).unwrap();
     let answer = question.answer().unwrap();
@@ -172,4 +171,99 @@ fn an_answers_text_names_settings_in_a_faces_words() {
         "{keys}"
     );
     assert!(!keys.contains("--"), "{keys}");
+}
+
+/// `SolveQuestion::from_numbers` sets a scene's numbers in place on the default config, without
+/// the keyword map: it asks what `from_keywords` asks of the same keys given the same numbers,
+/// field for field, and refuses what it refuses in the same words. Every key a number may be
+/// given to (each of `[scene]`, the alias `mu` beside `mu_ground` and `mu_palm`, `push_ratio`
+/// beside `force_n`, `theta_deg` and a typo that no question takes) alone, in pairs and in
+/// longer draws, with edge values: NaN, both zeros, the least subnormal, 1e308, the infinities,
+/// numbers out of range and a key given twice.
+#[test]
+fn a_question_of_numbers_is_the_keyword_maps_question() {
+    let keys: Vec<&str> = jamchart::Param::all()
+        .map(|p| p.as_str())
+        .chain(["raduis_mm"])
+        .collect();
+    let values = [
+        0.3,
+        -0.0,
+        0.0,
+        f64::NAN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        5e-324,
+        1e308,
+        -1.0,
+        7.0,
+        90.0,
+        200.0,
+        1e-300,
+        179.9,
+    ];
+    let same = |numbers: &[(&str, f64)]| {
+        let fast = SolveQuestion::from_numbers(numbers);
+        let pairs = numbers
+            .iter()
+            .map(|&(k, x)| (k.to_string(), toml::Value::Float(x)));
+        let general = SolveQuestion::from_keywords(jamchart::ask::Keywords::new(pairs));
+        match (&fast, &general) {
+            (Ok(a), Ok(b)) => {
+                assert_eq!(format!("{a:?}"), format!("{b:?}"), "{numbers:?}");
+                let answer = |q: &SolveQuestion| match q
+                    .answer()
+                    .map(|a| timeless(serde_json::to_value(a).unwrap()))
+                {
+                    Ok(v) => v.to_string(),
+                    Err(e) => format!("refused: {e}"),
+                };
+                assert_eq!(answer(a), answer(b), "{numbers:?}");
+                assert_eq!(
+                    a.warnings(Words::Keys),
+                    b.warnings(Words::Keys),
+                    "{numbers:?}"
+                );
+            }
+            (Err(a), Err(b)) => {
+                assert_eq!(format!("{a:?}"), format!("{b:?}"), "{numbers:?}");
+                assert_eq!(a.to_string(), b.to_string(), "{numbers:?}");
+            }
+            _ => panic!("{numbers:?}: {fast:?} against {general:?}"),
+        }
+        fast.is_ok()
+    };
+    let mut answered = 0;
+    assert!(same(&[]));
+    for &k in &keys {
+        for &x in &values {
+            answered += usize::from(same(&[(k, x)]));
+        }
+    }
+    for (i, &a) in keys.iter().enumerate() {
+        for &b in &keys[i..] {
+            for (j, &x) in values.iter().enumerate() {
+                let y = values[(j * 5 + 3) % values.len()];
+                answered += usize::from(same(&[(a, x), (b, y)]));
+                answered += usize::from(same(&[(b, y), (a, x)]));
+            }
+        }
+    }
+    // Longer draws (a fixed xorshift): up to six keys, a key now and then given twice.
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut next = |n: usize| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % n as u64) as usize
+    };
+    for _ in 0..3000 {
+        let len = 1 + next(6);
+        let numbers: Vec<(&str, f64)> = (0..len)
+            .map(|_| (keys[next(keys.len())], values[next(values.len())]))
+            .collect();
+        answered += usize::from(same(&numbers));
+    }
+    // The comparisons answered questions, not only refusals.
+    assert!(answered > 1000, "{answered} questions answered");
 }

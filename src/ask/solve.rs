@@ -4,6 +4,7 @@
 use std::path::PathBuf;
 
 use serde::Serialize;
+use smallvec::SmallVec;
 
 use super::{Keywords, Words};
 use crate::config::Config;
@@ -12,6 +13,7 @@ use crate::error::{Error, Result};
 use crate::minnorm::qp::{HoldStatus, TracePoint};
 use crate::models::{self, Detail, ModelKind, ModelSpec, Solution};
 use crate::scene::SceneParams;
+use crate::settings::Decl;
 use crate::uncertain::Flow;
 use crate::uncertain::UncertainSet;
 use crate::uncertain::dist::{self, DistAnswer, DistQuestion, Progress};
@@ -91,7 +93,8 @@ impl DistAsk {
     /// Checks the question, whether or not an input is distributed: a count in range,
     /// probabilities in (0, 1), finite positions, none given twice.
     pub fn validate(&self) -> Result<()> {
-        self.for_model(ModelKind::Statics).validate()
+        let samples = self.samples.unwrap_or(STATICS_SAMPLES);
+        DistQuestion::check(samples, &self.quantiles, &self.before_mm)
     }
 
     /// The keys given away from their defaults.
@@ -183,6 +186,59 @@ impl SolveQuestion {
         };
         question.check()?;
         Ok(question)
+    }
+
+    /// [`SolveQuestion::from_keywords`] of keys that are each given a number (`mu = 0.3,
+    /// radius_mm = 12`): the same question, or the same refusal. A key given twice keeps its
+    /// last number, as in [`Keywords`].
+    ///
+    /// Numbers of `[scene]`, its aliases and `push_ratio` (the common question: one push of
+    /// the closed form) are checked and set in place on the default config, whose other
+    /// sections hold nothing to check; a Python loop of scalar calls spent most of its time
+    /// on the keyword map and on checking the defaults of every section. Any other key goes
+    /// through the keyword map.
+    pub fn from_numbers(numbers: &[(&str, f64)]) -> Result<Self> {
+        let general = || {
+            let pairs = numbers
+                .iter()
+                .map(|&(k, x)| (k.into(), toml::Value::Float(x)));
+            Self::from_keywords(Keywords::new(pairs))
+        };
+        let mut scene: SmallVec<[(&'static Decl, f64); 12]> = SmallVec::new();
+        let mut push_ratio = None;
+        for (i, &(key, x)) in numbers.iter().enumerate() {
+            if numbers[..i].iter().any(|&(k, _)| k == key) {
+                return general();
+            }
+            match crate::config::scene_decls().find(|d| d.key == key) {
+                Some(decl) => scene.push((decl, x)),
+                None if key == "push_ratio" => push_ratio = Some(x),
+                None => return general(),
+            }
+        }
+        if push_ratio.is_some() {
+            let keys: Vec<&str> = numbers.iter().map(|&(k, _)| k).collect();
+            Self::refuse_two_pushes(&keys)?;
+        }
+        // The keyword map's order, where its first refusal is found. Each number checked
+        // against its setting is the whole scene checked: the other fields hold their
+        // defaults, and an alias checks its number as each field it sets does
+        // (`a_question_of_scene_numbers_has_nothing_else_to_check`).
+        scene.sort_unstable_by_key(|&(decl, _)| decl.key);
+        for &(decl, x) in &scene {
+            decl.check_real(x)?;
+        }
+        let mut config = Config::default();
+        if crate::config::set_scene_numbers(&mut config.scene, &scene).is_none() {
+            return general();
+        }
+        let uncertain = UncertainSet::default();
+        if let Some(ratio) = push_ratio {
+            push_by_ratio(&mut config, &uncertain, ratio)?;
+        }
+        // Nothing beyond the scene to check: the default min-norm and dynamics settings and
+        // the default distribution's question are valid as they are.
+        Ok(SolveQuestion::new(config, uncertain))
     }
 
     /// Refuses `keys` (a question's keys, or a face's) that set the push two ways: `force_n`
@@ -293,7 +349,7 @@ impl SolveQuestion {
             );
             crate::limits::check_items("--omega (omega_deg_s)", rows, crate::limits::SERIES_ROW)?;
         }
-        let mut results = Vec::new();
+        let mut results = Vec::with_capacity(self.models.len());
         for &kind in &self.models {
             let mut spec = kind.with(&self.config.min_norm, &self.config.dynamics);
             if let ModelSpec::Dynamics { series_dt_s, .. } = &mut spec {
@@ -573,4 +629,29 @@ pub struct BoxRecord {
     /// P(x_jam < x) and the quantiles, with a distributed input.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub distribution: Option<DistAnswer>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// [`SolveQuestion::from_numbers`] checks each number given against its own setting and
+    /// nothing else: that is the whole question checked only while the defaults of every
+    /// section and of the distribution's question are valid, and an alias refuses what each
+    /// field it sets refuses.
+    #[test]
+    fn a_question_of_scene_numbers_has_nothing_else_to_check() {
+        Config::default().validate().unwrap();
+        SolveQuestion::new(Config::default(), UncertainSet::default())
+            .check()
+            .unwrap();
+        for alias in crate::config::scene_decls().filter(|d| !d.sets.is_empty()) {
+            for key in alias.sets {
+                let field = crate::config::scene_decls()
+                    .find(|d| d.key == *key)
+                    .unwrap();
+                assert_eq!(alias.check, field.check, "{} sets {key}", alias.key);
+            }
+        }
+    }
 }

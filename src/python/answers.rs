@@ -14,10 +14,12 @@ use crate::scene::{JamStatus, SceneParams};
 
 /// One push's answer: the status, theta_jam in deg and x_jam in mm (NaN where the model gives
 /// none), and the model's whole record as `jamchart solve --format json` prints it.
-#[pyclass(frozen, module = "jamchart")]
+// A free list: a loop of scalar calls makes and frees one a call, and reuses its memory.
+#[pyclass(frozen, module = "jamchart", freelist = 16)]
 pub(super) struct Solution {
-    /// The library's answer, of one model.
-    pub(super) answer: ask::PushAnswer,
+    /// The library's answer, of one model, as the library boxed it (moved, not copied, into
+    /// the Python object).
+    pub(super) answer: Box<ask::PushAnswer>,
 }
 
 impl Solution {
@@ -446,7 +448,9 @@ impl Comparison {
     fn one(&self, k: usize) -> Solution {
         let mut answer = self.answer.clone();
         answer.results = vec![self.answer.results[k].clone()];
-        Solution { answer }
+        Solution {
+            answer: Box::new(answer),
+        }
     }
 }
 

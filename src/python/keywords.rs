@@ -5,7 +5,9 @@
 use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
+use pyo3::sync::PyOnceLock;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyString, PyTuple};
+use smallvec::SmallVec;
 
 use crate::ask::Keywords;
 use crate::error::Error;
@@ -206,6 +208,56 @@ pub(super) struct Given<'py> {
 /// angle (the state of a push, not a parameter of its scene).
 pub(super) fn scene_param(key: &str) -> Option<Param> {
     Param::all().find(|p| p.as_str() == key && *p != Param::ThetaDeg)
+}
+
+/// A call's numbers by keyword, as the library's
+/// [`crate::ask::SolveQuestion::from_numbers`] takes them: a dozen at most, held without an
+/// allocation.
+pub(super) type Numbers = SmallVec<[(&'static str, f64); 12]>;
+
+/// The keywords of a call where each is a scene parameter given one number (a float or an int,
+/// a numpy float64 too: what [`given`] reads as one number), as the library's
+/// [`crate::ask::SolveQuestion::from_numbers`] takes them; None where any is anything else (a
+/// None, a bool, a name, a range, an array...), which [`given`] reads.
+pub(super) fn scene_numbers(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Option<Numbers>> {
+    let mut out = SmallVec::new();
+    let Some(kwargs) = kwargs else {
+        return Ok(Some(out));
+    };
+    for (k, v) in kwargs.iter() {
+        let number = v.is_instance_of::<PyFloat>()
+            || (v.is_instance_of::<PyInt>() && !v.is_instance_of::<PyBool>());
+        let interned = scene_keys(kwargs.py())
+            .iter()
+            .find(|(s, _)| s.as_ptr() == k.as_ptr());
+        let param = match (interned, k.cast::<PyString>()) {
+            (Some(&(_, p)), _) => Some(p),
+            (None, Ok(key)) => scene_param(&key.to_cow()?),
+            (None, Err(_)) => None,
+        };
+        let (true, Some(param)) = (number, param) else {
+            return Ok(None);
+        };
+        // An int beyond a double's range: `given` raises its own error.
+        let Ok(x) = v.extract::<f64>() else {
+            return Ok(None);
+        };
+        out.push((param.as_str(), x));
+    }
+    Ok(Some(out))
+}
+
+/// The scene parameters' keywords as interned Python strings: the keys of a call are these
+/// very objects (Python interns the names a call spells), found by identity without reading
+/// their text, which under the stable ABI makes a bytes object per key.
+fn scene_keys(py: Python<'_>) -> &[(Py<PyString>, Param)] {
+    static KEYS: PyOnceLock<Vec<(Py<PyString>, Param)>> = PyOnceLock::new();
+    KEYS.get_or_init(py, || {
+        let params = Param::all().filter(|p| scene_param(p.as_str()).is_some());
+        params
+            .map(|p| (PyString::intern(py, p.as_str()).unbind(), p))
+            .collect()
+    })
 }
 
 /// Reads `kwargs` of `function`: a keyword left at None is left out (it is the signature's

@@ -16,8 +16,8 @@ use pyo3::types::PyDict;
 use super::answers::{BoxAnswer, Comparison, Solution, Solutions, shape_text};
 use super::keywords::{self, error, refused};
 use crate::ask::{Flow, SolveAnswer, SolveQuestion, Words};
-use crate::models::ModelSpec;
 use crate::models::columns::{self, Answers, Finished, Pushes};
+use crate::models::{ModelKind, ModelSpec};
 use crate::scene::Param;
 
 /// How often a long map looks for Ctrl-C: an interrupt is seen within this and one chunk of
@@ -35,6 +35,13 @@ pub(super) fn solve<'py>(
     py: Python<'py>,
     keywords: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
+    // Numbers of the scene alone (the common call, often in a loop): the library reads them
+    // without a keyword map.
+    if let Some(numbers) = keywords::scene_numbers(keywords)? {
+        let question = SolveQuestion::from_numbers(&numbers).map_err(|e| refused("solve", e))?;
+        warn(py, question.warnings(Words::Keys))?;
+        return one_push(py, &question, ModelKind::Statics);
+    }
     let given = keywords::given(py, "solve", keywords, true, &["before_mm", "quantiles"])?;
     let scalars: Vec<(Param, f64)> = given
         .keywords
@@ -85,16 +92,7 @@ pub(super) fn solve<'py>(
         return Ok(Bound::new(py, BoxAnswer { answer })?.into_any());
     }
     if given.arrays.is_empty() {
-        let answer = match model {
-            crate::models::ModelKind::Statics => question.answer(),
-            // A simulation or a min-norm search takes a while: other threads run meanwhile.
-            _ => py.detach(|| question.answer()),
-        }
-        .map_err(error)?;
-        let SolveAnswer::Push(answer) = answer else {
-            unreachable!("a question without ranges is one push")
-        };
-        return Ok(Bound::new(py, Solution { answer: *answer })?.into_any());
+        return one_push(py, &question, model);
     }
     let spec = model.with(&question.config.min_norm, &question.config.dynamics);
     // A number whose parameter applies after an array's (a key an array's alias sets as well,
@@ -106,6 +104,24 @@ pub(super) fn solve<'py>(
         .collect();
     let solutions = solve_arrays(py, &question, &given.arrays, &late, &spec)?;
     Ok(Bound::new(py, solutions)?.into_any())
+}
+
+/// The answer of `question`, one push of `model`.
+fn one_push<'py>(
+    py: Python<'py>,
+    question: &SolveQuestion,
+    model: ModelKind,
+) -> PyResult<Bound<'py, PyAny>> {
+    let answer = match model {
+        ModelKind::Statics => question.answer(),
+        // A simulation or a min-norm search takes a while: other threads run meanwhile.
+        _ => py.detach(|| question.answer()),
+    }
+    .map_err(error)?;
+    let SolveAnswer::Push(answer) = answer else {
+        unreachable!("a question without ranges is one push")
+    };
+    Ok(Bound::new(py, Solution { answer })?.into_any())
 }
 
 /// Answers the pushes of `arrays`, broadcast together over `question`'s scene (with `late`

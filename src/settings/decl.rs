@@ -249,15 +249,21 @@ impl Decl {
     }
 
     /// Checks a number against the declared range; the error names the key and the value.
+    #[inline]
     pub(crate) fn check_real(&self, v: f64) -> Result<()> {
-        match self.check.refuse(v) {
-            None => Ok(()),
-            Some(why) => Err(Error::invalid(
-                &self.path(),
-                number_text(v),
-                self.reason(&why),
-            )),
+        // The comparisons alone where the value is fine: every question checks each of its
+        // numbers, and the words of a refusal are built only for one.
+        match self.check.accepts(v) {
+            true => Ok(()),
+            false => Err(self.refusal(v)),
         }
+    }
+
+    /// The error of a number [`Decl::check_real`] refuses.
+    #[cold]
+    fn refusal(&self, v: f64) -> Error {
+        let why = self.check.refuse(v).unwrap_or_default();
+        Error::invalid(&self.path(), number_text(v), self.reason(&why))
     }
 
     /// `the disc radius must be a finite number > 0 mm`.

@@ -120,16 +120,22 @@ pub struct DistAnswer {
 impl DistQuestion {
     /// Checks the question; the error names the flag's key.
     pub fn validate(&self) -> Result<()> {
-        if self.samples == 0 || self.samples > MAX_SAMPLES {
+        Self::check(self.samples, &self.quantiles, &self.before_mm)
+    }
+
+    /// [`DistQuestion::validate`] of a question's parts, borrowed: a question that holds
+    /// them checks them without a copy.
+    pub(crate) fn check(samples: u64, quantiles: &[f64], before_mm: &[f64]) -> Result<()> {
+        if samples == 0 || samples > MAX_SAMPLES {
             return Err(Error::invalid(
                 "samples",
-                self.samples,
+                samples,
                 format!("the Monte Carlo sample count must be in [1, {MAX_SAMPLES}]"),
             ));
         }
         for (key, n) in [
-            ("quantiles", self.quantiles.len()),
-            ("before_mm", self.before_mm.len()),
+            ("quantiles", quantiles.len()),
+            ("before_mm", before_mm.len()),
         ] {
             if n > crate::limits::MAX_PROBES {
                 return Err(Error::invalid(
@@ -142,26 +148,26 @@ impl DistQuestion {
                 ));
             }
         }
-        if let Some(q) = self.quantiles.iter().find(|q| !(**q > 0.0 && **q < 1.0)) {
+        if let Some(q) = quantiles.iter().find(|q| !(**q > 0.0 && **q < 1.0)) {
             return Err(Error::invalid("quantiles", q, "each must lie in (0, 1)"));
         }
         // A quantile or a position asked twice was printed twice; the list is the user's, so
         // say so.
-        if let Some(q) = given_twice(&self.quantiles) {
+        if let Some(q) = given_twice(quantiles) {
             return Err(Error::invalid(
                 "quantiles",
                 crate::numbers::Num(q),
                 "is given twice; give each probability once",
             ));
         }
-        if let Some(x) = given_twice(&self.before_mm) {
+        if let Some(x) = given_twice(before_mm) {
             return Err(Error::invalid(
                 "before_mm",
                 crate::numbers::Num(x),
                 "is given twice; give each position once",
             ));
         }
-        if let Some(x) = self.before_mm.iter().find(|x| !x.is_finite()) {
+        if let Some(x) = before_mm.iter().find(|x| !x.is_finite()) {
             return Err(Error::invalid(
                 "before_mm",
                 x,

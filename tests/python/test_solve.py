@@ -394,3 +394,46 @@ def test_one_push_prints_the_clis_report(cli):
     took = lambda text: [l for l in text.splitlines() if not l.strip().startswith("took")]
     assert took(str(got)) == took(want)
     assert got.to_dict()["results"][0] == got.record
+
+
+def _outcome(**keywords):
+    """What a call gives: its answer's every face (or its exception) and its warnings."""
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.simplefilter("always")
+        try:
+            s = jc.solve(**keywords)
+            doc = s.to_dict()
+            for r in doc["results"]:
+                r.pop("elapsed_s")
+            text = "\n".join(l for l in str(s).splitlines() if not l.strip().startswith("took "))
+            got = (type(s), repr(s), text, repr(doc), repr(s.inputs), s.status,
+                   repr(s.theta_jam_deg), repr(s.x_jam_mm))
+        except Exception as e:  # noqa: BLE001 (the exception is the outcome compared)
+            got = (type(e), str(e))
+    return got, [(w.category, str(w.message), w.lineno) for w in seen]
+
+
+def test_numbers_of_the_scene_are_answered_as_every_other_call():
+    """A call of scene numbers alone is read without the keyword map; a None beside them (the
+    keyword's default) takes the general path. Both give the same answer, warnings and
+    refusals for every scene keyword, the alias mu beside mu_ground and mu_palm, push_ratio
+    beside force_n, and edge values (NaN, both zeros, the least subnormal, 1e308, ints, an
+    int beyond a double, numpy scalars, a bool)."""
+    keys = [k for k in jc.keywords("solve") if k in (
+        "mu", "mu_ground", "mu_palm", "radius_mm", "mass_kg", "force_n", "gravity_m_s2",
+        "start_angle_deg", "palm_length_mm", "palm_offset_mm", "push_ratio")]
+    assert len(keys) == 11, keys
+    keys += ["theta_deg", "raduis_mm"]
+    values = [0.3, -0.0, 0.0, math.nan, math.inf, -math.inf, 5e-324, 1e308, -1.0, 7, 0, 90,
+              200, 10**400, np.float64(0.25), np.float32(0.5), np.int64(3), True, 179.9]
+    calls = [{}]
+    calls += [{k: v} for k in keys for v in values]
+    calls += [{a: values[i % len(values)], b: values[(i * 5 + 3) % len(values)]}
+              for i, (a, b) in enumerate((a, b) for a in keys for b in keys if a != b)]
+    answered = 0
+    for keywords in calls:
+        fast = _outcome(**keywords)
+        general = _outcome(**keywords, samples=None)
+        assert fast == general, keywords
+        answered += fast[0][0] is jc.Solution
+    assert answered > 100, answered

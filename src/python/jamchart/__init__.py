@@ -60,8 +60,13 @@ def _wrap(name: str, positional: Sequence[str]) -> Callable[..., Any]:
     native = getattr(_jamchart, name)
     declared = _jamchart._signature(name)
     required = [k for k, d in declared if d is None]
+    # Keywords alone, to a function without positional or required ones (solve in a loop):
+    # nothing to move or check on the way.
+    bare = not positional and not required
 
-    def function(*args: Any, **keywords: Any) -> Any:
+    def positionals(args: Any, keywords: Any) -> Any:
+        """The positional arguments of a call, those given by keyword taken out of `keywords`;
+        its mistakes refused."""
         given = list(args) + [keywords.pop(p) for p in positional[len(args):] if p in keywords]
         if len(given) != len(positional):
             raise TypeError(f"{name}() takes {len(positional)} positional argument(s) "
@@ -69,7 +74,15 @@ def _wrap(name: str, positional: Sequence[str]) -> Callable[..., Any]:
         missing = [k for k in required if k not in keywords]
         if missing:
             raise TypeError(f"{name}() missing required keyword argument: '{missing[0]}'")
-        return native(*given, keywords)
+        return given
+
+    # The comprehensions live in `positionals`: here they would make each call's keywords a
+    # cell. The native call stays here, one frame below the caller's line, where its warnings
+    # point.
+    def function(*args: Any, **keywords: Any) -> Any:
+        if bare and not args:
+            return native(keywords)
+        return native(*positionals(args, keywords), keywords)
 
     params = [inspect.Parameter(p, inspect.Parameter.POSITIONAL_OR_KEYWORD) for p in positional]
     params += [
