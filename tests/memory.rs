@@ -61,7 +61,7 @@ fn jam_map_memory_estimate_is_within_2x_of_the_measured_peak() {
     let (small, large) = (peak(500), peak(1000));
     let measured = (large as f64 - small as f64) / (1000.0 * 1000.0 - 500.0 * 500.0);
     // The estimate as the refusal states it: "the memory of 67108864 cells of the jam map
-    // would take about 0.75 GiB". The largest grid (2^26 cells) is within the memory limit of
+    // would take about 768 MiB". The largest grid (2^26 cells) is within the memory limit of
     // 1 GiB at 12 B a cell, so the limit is made half of a 1 GiB address-space cap, and the
     // memory is refused before the files are.
     scene(d, "huge", &jam_map(8192));
@@ -69,13 +69,21 @@ fn jam_map_memory_estimate_is_within_2x_of_the_measured_peak() {
     let out = common::cli::jamchart_under(d, 1 << 20, &args);
     assert!(stderr(&out).contains("the memory of"), "{}", stderr(&out));
     let err = stderr(&out);
-    let gib: f64 = err
+    let bytes: f64 = err
         .split("would take about ")
         .nth(1)
-        .and_then(|r| r.split(" GiB").next())
-        .and_then(|v| v.parse().ok())
-        .unwrap_or_else(|| panic!("no estimate in GiB: {err}"));
-    let estimate = gib * (1u64 << 30) as f64 / (8192.0 * 8192.0);
+        .and_then(|r| {
+            let mut words = r.split(' ');
+            let v: f64 = words.next()?.parse().ok()?;
+            let unit = match words.next()?.trim_end_matches(',') {
+                "MiB" => 1u64 << 20,
+                "GiB" => 1 << 30,
+                _ => return None,
+            };
+            Some(v * unit as f64)
+        })
+        .unwrap_or_else(|| panic!("no estimate in MiB or GiB: {err}"));
+    let estimate = bytes / (8192.0 * 8192.0);
     assert!(
         measured <= estimate * 1.05 && estimate <= 2.0 * measured,
         "estimate {estimate:.1} B/cell, measured {measured:.1} B/cell ({small} -> {large} B)"
