@@ -164,12 +164,14 @@ pub fn keyed(key: Option<&str>, written: Option<&str>, message: &str) -> String 
             )
         })
     });
-    let (section, last) = key.map_or(("", ""), |k| k.rsplit_once('.').unwrap_or(("", k)));
-    if key.is_some() && !key_shaped(last) {
-        // Not a mistyped setting but the file's own text: an environment file's `API_TOKEN`.
-        let at = match section {
-            "" => String::new(),
-            s => format!("{}.", cut(s)),
+    if let Some(k) = key.filter(|k| !k.split('.').all(key_shaped)) {
+        // Not a mistyped setting but the file's own text: an environment file's `API_TOKEN`
+        // (`[API_TOKEN] x = 1` too). The section is named where it is a setting's form.
+        let at = match k.rsplit_once('.') {
+            Some((section, _)) if section.split('.').all(key_shaped) => {
+                format!("{}.", cut(section))
+            }
+            _ => String::new(),
         };
         return format!(
             "{at}<key>: {message} (the key is not repeated: a setting's key is lowercase \

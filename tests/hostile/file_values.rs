@@ -73,6 +73,7 @@ fn a_key_that_is_no_settings_form_is_never_quoted() {
     for (name, body) in [
         ("key.toml", format!("[scene]\n{PASSWORD} = 1\n")),
         ("section.toml", format!("[{PASSWORD}]\nx = 1\n")),
+        ("nested.toml", format!("[{PASSWORD}.inner]\nx = 1\n")),
         ("env.toml", format!("{PASSWORD}_URL = \"x\"\n")),
     ] {
         std::fs::write(d.join(name), body).unwrap();
