@@ -276,24 +276,16 @@ pub fn check_pushes(
 ) -> Result<()> {
     check_items(key, count, PerItem::new(PUSH.what, bytes_per_push, 0))?;
     let per = per_sample(spec);
-    let estimate_s = count * per.cpu_s;
-    if estimate_s <= MAX_SAMPLED_CPU_S {
-        return Ok(());
-    }
-    let shown = match count < 1e15 {
-        true => format!("{count:.0}"),
-        false => format!("{count:.3e}"),
-    };
-    Err(Error::TooLong {
-        key: key.to_string(),
-        what: format!(
+    check_cpu(key, count * per.cpu_s, || {
+        let shown = match count < 1e15 {
+            true => format!("{count:.0}"),
+            false => format!("{count:.3e}"),
+        };
+        format!(
             "{shown} pushes of {}, about {} each,",
             per.what,
             human_seconds(per.cpu_s)
-        ),
-        estimate_s,
-        limit_s: MAX_SAMPLED_CPU_S,
-        limit_source: "",
+        )
     })
 }
 
