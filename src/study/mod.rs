@@ -505,7 +505,7 @@ pub(crate) fn check_list_from(
     match list.iter().find(|&&v| v < floor) {
         Some(&v) => Err(Error::invalid(
             key,
-            v,
+            crate::numbers::Num(v),
             format!("each value must be at least {floor:e}: {why}"),
         )),
         None => Ok(()),
@@ -525,7 +525,7 @@ pub(crate) fn check_list(key: &str, list: &[f64], max: usize, lo: f64, hi: f64) 
         if !(v.is_finite() && v > lo && v < hi) {
             return Err(Error::invalid(
                 key,
-                v,
+                crate::numbers::Num(v),
                 format!("each value must lie strictly between {lo} and {hi}"),
             ));
         }

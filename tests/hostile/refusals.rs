@@ -227,7 +227,10 @@ fn settings_that_cost_hours_or_mean_nothing_are_refused_at_once() {
         ),
     ] {
         let started = std::time::Instant::now();
-        refused(&jamchart(d, args), names);
+        let o = jamchart(d, args);
+        refused(&o, names);
+        // A tolerance of 1e-20 was quoted as 0.00000000000000000001.
+        assert!(!stderr(&o).contains("0.0000000"), "{}", stderr(&o));
         assert!(
             started.elapsed().as_secs() < 20,
             "{args:?} was not refused at once"
