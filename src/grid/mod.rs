@@ -430,6 +430,7 @@ fn closed_form_points(grid: &Grid<SceneParams>) -> Result<Cells<JamPoint>> {
         status: &mut status,
         theta_jam_deg: &mut theta,
         x_jam_mm: &mut x,
+        past_palm_x_jam_mm: None,
     };
     solve_into(&ModelSpec::Statics, &pushes, out)?;
     let some = |v: f64| (!v.is_nan()).then_some(v);

@@ -37,6 +37,12 @@ pub struct Answers<'a> {
     pub theta_jam_deg: &'a mut [f64],
     /// x_jam in mm, NaN where the model gives none.
     pub x_jam_mm: &'a mut [f64],
+    /// If asked, where each push answered `beyond_reach` would jam on a long enough palm:
+    /// the closed form's x_jam in mm ([`crate::statics::PastPalm`]), NaN for every other
+    /// push, so that NaN in `x_jam_mm` keeps meaning "no jam on this palm" and this column
+    /// says where the palm lost the part. The simulations and the min-norm search give no
+    /// such answer: NaN throughout for those models.
+    pub past_palm_x_jam_mm: Option<&'a mut [f64]>,
 }
 
 impl Pushes<'_> {
@@ -65,9 +71,11 @@ impl Pushes<'_> {
             .columns
             .iter()
             .map(|(_, v)| {
+                // A comparison a bound (NaN compares false and is passed over, as by
+                // f64::min) runs in vector lanes, where f64::min's NaN rule does not.
                 v.iter()
                     .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
-                        (lo.min(x), hi.max(x))
+                        (if x < lo { x } else { lo }, if x > hi { x } else { hi })
                     })
             })
             .collect();
@@ -287,6 +295,7 @@ pub fn solve_into_until(
         out.status.len(),
         out.theta_jam_deg.len(),
         out.x_jam_mm.len(),
+        out.past_palm_x_jam_mm.as_ref().map_or(n, |p| p.len()),
     ];
     if lens.iter().any(|&l| l != n) {
         return Err(Error::invalid(
@@ -313,96 +322,89 @@ pub fn solve_into_until(
         status,
         theta_jam_deg,
         x_jam_mm,
+        past_palm_x_jam_mm,
     } = out;
-    let write = |start: usize, s: &mut [u8], t: &mut [f64], x: &mut [f64]| -> Result<usize> {
+    let write = |start: usize, chunk: Chunk| -> Result<usize> {
         if stop.load(Ordering::Relaxed) {
             return Ok(0);
         }
-        let len = s.len();
+        let len = chunk.0.0.0.len();
+        // Closed-form answers LANES at a time, written in place.
+        if let ModelSpec::Statics = spec {
+            closed_form.answer_chunk(start, chunk);
+            return Ok(len);
+        }
+        let (((s, t), x), past) = chunk;
+        if let Some(past) = past {
+            past.fill(f64::NAN);
+        }
         let mut put = |k: usize, (st, th, xj): (JamStatus, Option<f64>, Option<f64>)| {
             s[k] = st.index();
             t[k] = th.unwrap_or(f64::NAN);
             x[k] = xj.unwrap_or(f64::NAN);
         };
-        match spec {
-            // A column of min-norm pushes searches each from its neighbours' answers.
-            ModelSpec::MinNorm(_) => {
-                let scenes: Vec<SceneParams> = (start..start + len).map(scene).collect();
-                let answers = solve_column(spec, &scenes)?;
-                // Every element is written: a binding hands over arrays it has not set.
-                if answers.len() != len {
-                    return Err(Error::Defect(format!(
-                        "a min-norm column of {len} pushes gave {} answers",
-                        answers.len()
-                    )));
-                }
-                for (k, a) in answers.into_iter().enumerate() {
-                    put(k, (a.status, a.theta_jam_deg, a.x_jam_mm));
-                }
+        // A column of min-norm pushes searches each from its neighbours' answers.
+        if let ModelSpec::MinNorm(_) = spec {
+            let scenes: Vec<SceneParams> = (start..start + len).map(scene).collect();
+            let answers = solve_column(spec, &scenes)?;
+            // Every element is written: a binding hands over arrays it has not set.
+            if answers.len() != len {
+                return Err(Error::Defect(format!(
+                    "a min-norm column of {len} pushes gave {} answers",
+                    answers.len()
+                )));
             }
-            // Closed-form answers LANES at a time, written in place.
-            ModelSpec::Statics => closed_form.answer_chunk(start, s, t, x),
-            // Written in place: an answer costs less than collecting it.
-            ModelSpec::Dynamics { .. } => {
-                for k in 0..len {
-                    let s = solve(spec, &scene(start + k))?;
-                    put(k, (s.status, s.theta_jam_deg, s.x_jam_mm));
-                }
+            for (k, a) in answers.into_iter().enumerate() {
+                put(k, (a.status, a.theta_jam_deg, a.x_jam_mm));
             }
+            return Ok(len);
+        }
+        // A simulation, written in place: an answer costs less than collecting it.
+        for k in 0..len {
+            let s = solve(spec, &scene(start + k))?;
+            put(k, (s.status, s.theta_jam_deg, s.x_jam_mm));
         }
         Ok(len)
     };
-    let answered = status
+    let answers = status
         .par_chunks_mut(chunk)
         .zip(theta_jam_deg.par_chunks_mut(chunk))
-        .zip(x_jam_mm.par_chunks_mut(chunk))
-        .enumerate()
-        .map(|(c, ((s, t), x))| write(c * chunk, s, t, x))
-        .try_reduce(|| 0, |a, b| Ok(a + b))?;
+        .zip(x_jam_mm.par_chunks_mut(chunk));
+    let answered = match past_palm_x_jam_mm {
+        Some(past) => answer_chunks(
+            answers.zip(past.par_chunks_mut(chunk).map(Some)),
+            chunk,
+            write,
+        ),
+        None => {
+            let none = (0..n.div_ceil(chunk)).into_par_iter().map(|_| None);
+            answer_chunks(answers.zip(none), chunk, write)
+        }
+    }?;
     Ok(match answered == n {
         true => Finished::All,
         false => Finished::Stopped { answered },
     })
 }
 
-/// Where each push that [`solve_into`] answered `beyond_reach` (its `status`) would jam on a
-/// long enough palm: the closed form's x_jam in mm ([`crate::statics::PastPalm`]), written
-/// into `out`; NaN for every other push, so that NaN in `x_jam_mm` keeps meaning "no jam on
-/// this palm" and this column says where the palm lost the part. The simulations and the
-/// min-norm search give no such answer: NaN throughout for those models.
-pub fn past_palm_into(
-    spec: &ModelSpec,
-    pushes: &Pushes,
-    status: &[u8],
-    out: &mut [f64],
-) -> Result<()> {
-    let n = pushes.len();
-    if status.len() != n || out.len() != n {
-        return Err(Error::invalid(
-            "answers",
-            format!("[{}, {}] elements", status.len(), out.len()),
-            format!("each answer buffer holds one element per push ({n})"),
-        ));
-    }
-    if !matches!(spec, ModelSpec::Statics) {
-        out.fill(f64::NAN);
-        return Ok(());
-    }
-    // A few pushes in a hundred at most lie past the palm: a chunk's pass finds them, and
-    // only they build their scene.
-    let resolved = pushes.resolved();
-    let beyond = JamStatus::BeyondReach.index();
-    out.par_chunks_mut(CHUNK)
-        .zip(status.par_chunks(CHUNK))
+/// One chunk of the answers' slices: status, theta_jam, x_jam, and the past-palm x_jam if
+/// asked.
+type Chunk<'a> = (
+    ((&'a mut [u8], &'a mut [f64]), &'a mut [f64]),
+    Option<&'a mut [f64]>,
+);
+
+/// Writes each chunk of `chunks` (the `chunk`-th pushes from its index on) and counts the
+/// pushes answered: one function for the answers with and without the past-palm column.
+fn answer_chunks<'a>(
+    chunks: impl IndexedParallelIterator<Item = Chunk<'a>>,
+    chunk: usize,
+    write: impl Fn(usize, Chunk<'a>) -> Result<usize> + Sync + Send,
+) -> Result<usize> {
+    chunks
         .enumerate()
-        .for_each(|(c, (xs, ss))| {
-            xs.fill(f64::NAN);
-            for (j, x) in xs.iter_mut().enumerate().filter(|&(j, _)| ss[j] == beyond) {
-                let scene = resolved.scene(pushes.base, c * CHUNK + j);
-                *x = statics::past_palm_x_jam_mm(&scene).unwrap_or(f64::NAN);
-            }
-        });
-    Ok(())
+        .map(|(c, answers)| write(c * chunk, answers))
+        .try_reduce(|| 0, |a, b| Ok(a + b))
 }
 
 /// How many min-norm pushes to search as one column: a run of neighbours (a map's column of
@@ -483,61 +485,71 @@ impl<'a> ClosedForm<'a> {
         }
     }
 
-    /// Answers the pushes from `first` on into `status`, `theta` and `x` (one chunk).
-    fn answer_chunk(&self, first: usize, status: &mut [u8], theta: &mut [f64], x: &mut [f64]) {
+    /// Sets `lanes` to the pushes `at` (in order; a run of LANES neighbours is copied as one
+    /// block): the varying inputs taken from their columns, or each push's scene built.
+    #[inline(always)]
+    fn load(&self, lanes: &mut statics::Push<LANES>, at: [usize; LANES]) {
+        let Some(list) = &self.varying else {
+            for (j, &i) in at.iter().enumerate() {
+                let scene = self.resolved.scene(self.pushes.base, i);
+                lanes.set(j, &statics::Push::of(&scene));
+            }
+            return;
+        };
+        let run = at[LANES - 1] - at[0] == LANES - 1;
+        for &(input, values) in list {
+            let lane = lanes.input_mut(input);
+            match run {
+                true => lane.copy_from_slice(&values[at[0]..at[0] + LANES]),
+                false => *lane = at.map(|i| values[i]),
+            }
+        }
+        if self.start_derived {
+            for j in 0..LANES {
+                lanes.derive(j, self.start_varies);
+            }
+        }
+    }
+
+    /// Answers the pushes from `first` on into `out` (one chunk).
+    fn answer_chunk(&self, first: usize, out: Chunk) {
         #[cfg(target_arch = "x86_64")]
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the processor has AVX2, checked just above.
-            return unsafe { self.answer_chunk_avx2(first, status, theta, x) };
+            return unsafe { self.answer_chunk_avx2(first, out) };
         }
-        self.answer_chunk_in(first, status, theta, x);
+        self.answer_chunk_in(first, out);
     }
 
     /// [`Self::answer_chunk`] compiled for AVX2: four lanes a vector instead of two, the
     /// same operations (no fused multiply-add), the same bits.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    fn answer_chunk_avx2(&self, first: usize, status: &mut [u8], theta: &mut [f64], x: &mut [f64]) {
-        self.answer_chunk_in(first, status, theta, x);
+    fn answer_chunk_avx2(&self, first: usize, out: Chunk) {
+        self.answer_chunk_in(first, out);
     }
 
     #[inline(always)]
-    fn answer_chunk_in(&self, first: usize, status: &mut [u8], theta: &mut [f64], x: &mut [f64]) {
+    fn answer_chunk_in(&self, first: usize, out: Chunk) {
+        let (((status, theta), x), mut past) = out;
         let len = status.len();
         if self.all_outside {
             status.fill(JamStatus::OutsideModel.index());
             theta.fill(f64::NAN);
             x.fill(f64::NAN);
+            if let Some(past) = past {
+                past.fill(f64::NAN);
+            }
             return;
         }
         let mut lanes = self.base;
         let (mut s, mut t, mut xs) = ([0u8; LANES], [0.0; LANES], [0.0; LANES]);
+        let mut ps = [f64::NAN; LANES];
         for k in (0..len).step_by(LANES) {
             // A last, partial batch repeats its last push.
             let at: [usize; LANES] = from_fn(|j| first + (k + j).min(len - 1));
-            match &self.varying {
-                Some(list) => {
-                    for &(input, values) in list {
-                        let lane = lanes.input_mut(input);
-                        match values.get(first + k..first + k + LANES) {
-                            Some(whole) => lane.copy_from_slice(whole),
-                            None => *lane = at.map(|i| values[i]),
-                        }
-                    }
-                    if self.start_derived {
-                        for j in 0..LANES {
-                            lanes.derive(j, self.start_varies);
-                        }
-                    }
-                }
-                None => {
-                    for (j, &i) in at.iter().enumerate() {
-                        let scene = self.resolved.scene(self.pushes.base, i);
-                        lanes.set(j, &statics::Push::of(&scene));
-                    }
-                }
-            }
-            lanes.answer(&mut s, &mut t, &mut xs);
+            self.load(&mut lanes, at);
+            lanes.answer(&mut s, &mut t, &mut xs, past.is_some().then_some(&mut ps));
             let n = LANES.min(len - k);
             if self.start_varies {
                 for j in 0..n {
@@ -547,6 +559,7 @@ impl<'a> ClosedForm<'a> {
                     };
                     if outside(super::ModelKind::Statics, &scene).is_some() {
                         (s[j], t[j], xs[j]) = (JamStatus::OutsideModel.index(), f64::NAN, f64::NAN);
+                        ps[j] = f64::NAN;
                     }
                 }
             }
@@ -556,11 +569,17 @@ impl<'a> ClosedForm<'a> {
                     status[k..k + LANES].copy_from_slice(&s);
                     theta[k..k + LANES].copy_from_slice(&t);
                     x[k..k + LANES].copy_from_slice(&xs);
+                    if let Some(past) = past.as_deref_mut() {
+                        past[k..k + LANES].copy_from_slice(&ps);
+                    }
                 }
                 false => {
                     status[k..k + n].copy_from_slice(&s[..n]);
                     theta[k..k + n].copy_from_slice(&t[..n]);
                     x[k..k + n].copy_from_slice(&xs[..n]);
+                    if let Some(past) = past.as_deref_mut() {
+                        past[k..k + n].copy_from_slice(&ps[..n]);
+                    }
                 }
             }
         }
@@ -619,6 +638,7 @@ mod tests {
                 status: &mut st,
                 theta_jam_deg: &mut th,
                 x_jam_mm: &mut x,
+                past_palm_x_jam_mm: None,
             };
             let flag = AtomicBool::new(stop);
             let done = solve_into_until(&ModelSpec::Statics, &pushes, out, &flag).unwrap();
@@ -629,13 +649,7 @@ mod tests {
         assert!(st.iter().all(|&s| s == 99) && th.iter().chain(&x).all(|&v| v == -1.0));
         let (done, st, th, _) = run(false);
         assert_eq!(done, Finished::All);
-        let (mut st1, mut th1, mut x1) = (vec![0u8; n], vec![0.0; n], vec![0.0; n]);
-        let out = Answers {
-            status: &mut st1,
-            theta_jam_deg: &mut th1,
-            x_jam_mm: &mut x1,
-        };
-        solve_into(&ModelSpec::Statics, &pushes, out).unwrap();
+        let (st1, th1, _) = answered(&ModelSpec::Statics, &pushes);
         assert_eq!(st, st1);
         assert!(th.iter().zip(&th1).all(|(a, b)| a.to_bits() == b.to_bits()));
     }
@@ -713,6 +727,7 @@ mod tests {
                 status: &mut st,
                 theta_jam_deg: &mut th,
                 x_jam_mm: &mut x,
+                past_palm_x_jam_mm: None,
             };
             solve_into(&ModelSpec::Statics, &pushes, out).unwrap();
             let resolved = pushes.resolved();
@@ -749,6 +764,7 @@ mod tests {
                 status: &mut st,
                 theta_jam_deg: &mut th,
                 x_jam_mm: &mut x,
+                past_palm_x_jam_mm: None,
             };
             let e = solve_into(&ModelSpec::Statics, &pushes, out).unwrap_err();
             (e.to_string(), pushes)
@@ -790,15 +806,7 @@ mod tests {
             base,
             columns: vec![(Param::named("mu").unwrap(), &mu[..])],
         };
-        let (mut st, mut th, mut x) = (vec![0; 3], vec![0.0; 3], vec![0.0; 3]);
-        let out = Answers {
-            status: &mut st,
-            theta_jam_deg: &mut th,
-            x_jam_mm: &mut x,
-        };
-        solve_into(&ModelSpec::Statics, &pushes, out).unwrap();
-        let mut past = vec![0.0; 3];
-        past_palm_into(&ModelSpec::Statics, &pushes, &st, &mut past).unwrap();
+        let (st, _, x, past) = answered_with_past(&ModelSpec::Statics, &pushes);
         assert_eq!(st[0], JamStatus::BeyondReach.index());
         assert!(x[0].is_nan(), "{x:?}");
         assert!((past[0] - 99.2613605241956).abs() < 1e-9, "{past:?}");
@@ -808,47 +816,134 @@ mod tests {
     }
 
     /// Over several chunks of pushes, each push's past-palm jam is its own scene's, the chunk
-    /// that holds it found by its index.
+    /// and the batch that hold it found by its index: pushes past the palm in runs and
+    /// scattered among others, with the start derived push by push (a column of radii) and
+    /// with each push's scene built (a column of push ratios).
     #[test]
     fn past_palm_jams_follow_their_pushes_across_chunks() {
         let n = 3 * CHUNK + 7;
         let mu: Vec<f64> = (0..n).map(|i| 0.4 * i as f64 / n as f64).collect();
+        // A scrambled order: neighbours' statuses differ.
+        let scrambled: Vec<f64> = (0..n).map(|i| mu[i * 389 % n]).collect();
+        let radius: Vec<f64> = (0..n).map(|i| 4.0 + (i * 7 % 13) as f64).collect();
+        let ratio: Vec<f64> = (0..n).map(|i| 2.0 + (i * 5 % 11) as f64).collect();
         let base = SceneParams {
             palm_length_mm: 40.0,
             ..SceneParams::default()
         };
+        let named = |k| Param::named(k).unwrap();
+        let sets: [Vec<(Param, &[f64])>; 4] = [
+            vec![(named("mu"), &mu[..])],
+            vec![(named("mu"), &scrambled[..])],
+            vec![
+                (named("mu"), &scrambled[..]),
+                (named("radius_mm"), &radius[..]),
+            ],
+            vec![
+                (named("mu"), &scrambled[..]),
+                (Param::PushRatio, &ratio[..]),
+            ],
+        ];
+        for columns in sets {
+            let pushes = Pushes { base, columns };
+            let (st, th, x, past) = answered_with_past(&ModelSpec::Statics, &pushes);
+            // Asking for the column changes no other answer.
+            let (st0, th0, x0) = answered(&ModelSpec::Statics, &pushes);
+            assert_eq!(st, st0);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert!(bits(&th) == bits(&th0) && bits(&x) == bits(&x0));
+            let resolved = pushes.resolved();
+            let mut found = 0;
+            for (i, x) in past.iter().enumerate() {
+                let own = crate::statics::solve(&resolved.scene(base, i)).past_palm;
+                let want = own.map_or(f64::NAN, |p| p.x_jam_mm);
+                assert_eq!(
+                    x.to_bits(),
+                    want.to_bits(),
+                    "push {i} of {:?}",
+                    pushes.columns
+                );
+                found += usize::from(own.is_some());
+            }
+            assert!(found > 20 && found < n - 20, "{found} of {n} past the palm");
+        }
         let pushes = Pushes {
             base,
-            columns: vec![(Param::named("mu").unwrap(), &mu[..])],
+            columns: vec![(named("mu"), &mu[..100])],
         };
+        let (st, _, _, past) = answered_with_past(&ModelSpec::MinNorm(Default::default()), &pushes);
+        assert!(st.contains(&JamStatus::BeyondReach.index()), "{st:?}");
+        assert!(past.iter().all(|x| x.is_nan()));
+    }
+
+    /// `pushes` answered: status, theta_jam and x_jam.
+    fn answered(spec: &ModelSpec, pushes: &Pushes) -> (Vec<u8>, Vec<f64>, Vec<f64>) {
+        let n = pushes.len();
         let (mut st, mut th, mut x) = (vec![0; n], vec![0.0; n], vec![0.0; n]);
         let out = Answers {
             status: &mut st,
             theta_jam_deg: &mut th,
             x_jam_mm: &mut x,
+            past_palm_x_jam_mm: None,
         };
-        solve_into(&ModelSpec::Statics, &pushes, out).unwrap();
-        let mut past = vec![0.0; n];
-        past_palm_into(&ModelSpec::Statics, &pushes, &st, &mut past).unwrap();
-        let mut found = 0;
-        for (i, &m) in mu.iter().enumerate() {
-            let own = crate::statics::solve(&base.with_mu(m)).past_palm;
-            let want = own.map_or(f64::NAN, |p| p.x_jam_mm);
-            assert_eq!(past[i].to_bits(), want.to_bits(), "push {i}, mu = {m}");
-            found += usize::from(own.is_some());
-        }
+        solve_into(spec, pushes, out).unwrap();
+        (st, th, x)
+    }
+
+    /// `pushes` answered with the past-palm column: status, theta_jam, x_jam and past-palm
+    /// x_jam, the last set to a sentinel first so that an element left unwritten shows.
+    fn answered_with_past(
+        spec: &ModelSpec,
+        pushes: &Pushes,
+    ) -> (Vec<u8>, Vec<f64>, Vec<f64>, Vec<f64>) {
+        let n = pushes.len();
+        let (mut st, mut th, mut x, mut past) =
+            (vec![0; n], vec![0.0; n], vec![0.0; n], vec![-7.0; n]);
+        let out = Answers {
+            status: &mut st,
+            theta_jam_deg: &mut th,
+            x_jam_mm: &mut x,
+            past_palm_x_jam_mm: Some(&mut past),
+        };
+        solve_into(spec, pushes, out).unwrap();
+        assert!(!past.contains(&-7.0), "every past-palm element written");
+        (st, th, x, past)
+    }
+
+    /// A past-palm column of another length than the pushes' is refused, as the other
+    /// answers' are; pushes outside the closed form's model (a start angle past the palm's
+    /// lifting the disc) have none, beside one inside it that has.
+    #[test]
+    fn the_past_palm_column_is_one_per_push() {
+        let mu = [0.05, 0.1, 0.2];
+        let pushes = Pushes {
+            base: SceneParams::default(),
+            columns: vec![(Param::named("mu").unwrap(), &mu[..])],
+        };
+        let (mut st, mut th, mut x, mut past) =
+            (vec![0; 3], vec![0.0; 3], vec![0.0; 3], vec![0.0; 2]);
+        let out = Answers {
+            status: &mut st,
+            theta_jam_deg: &mut th,
+            x_jam_mm: &mut x,
+            past_palm_x_jam_mm: Some(&mut past),
+        };
+        let e = solve_into(&ModelSpec::Statics, &pushes, out).unwrap_err();
+        assert!(e.to_string().contains("one element per push (3)"), "{e}");
+        let start = [179.0, 90.0, 179.0];
+        let pushes = Pushes {
+            base: SceneParams {
+                palm_length_mm: 40.0,
+                ..SceneParams::default().with_mu(0.02)
+            },
+            columns: vec![(Param::named("start_angle_deg").unwrap(), &start[..])],
+        };
+        let (st, _, _, past) = answered_with_past(&ModelSpec::Statics, &pushes);
+        let outside = JamStatus::OutsideModel.index();
+        assert_eq!(st, [outside, JamStatus::BeyondReach.index(), outside]);
         assert!(
-            found > CHUNK && found < n - CHUNK,
-            "{found} of {n} past the palm"
+            past[0].is_nan() && past[1].is_finite() && past[2].is_nan(),
+            "{past:?}"
         );
-        // The other models give none.
-        past_palm_into(
-            &ModelSpec::MinNorm(Default::default()),
-            &pushes,
-            &st,
-            &mut past,
-        )
-        .unwrap();
-        assert!(past.iter().all(|x| x.is_nan()));
     }
 }

@@ -421,6 +421,7 @@ mod tests {
                 status: &mut st,
                 theta_jam_deg: &mut th,
                 x_jam_mm: &mut x,
+                past_palm_x_jam_mm: None,
             };
             columns::solve_into(&spec, &pushes, out).unwrap();
             let mut seen = std::collections::HashSet::new();
@@ -463,6 +464,7 @@ mod tests {
                 status: &mut st,
                 theta_jam_deg: &mut th,
                 x_jam_mm: &mut x,
+                past_palm_x_jam_mm: None,
             };
             columns::solve_into(&ModelSpec::Statics, &pushes, out)
                 .unwrap_err()

@@ -110,7 +110,7 @@ pub(super) struct Solutions {
     pub(super) theta_jam_deg: Py<PyArrayDyn<f64>>,
     pub(super) x_jam_mm: Py<PyArrayDyn<f64>>,
     /// x_jam on a long enough palm where the palm loses the part (`beyond_reach`), NaN
-    /// elsewhere ([`crate::models::columns::past_palm_into`]).
+    /// elsewhere ([`crate::models::columns::Answers::past_palm_x_jam_mm`]).
     pub(super) past_palm_x_jam_mm: Py<PyArrayDyn<f64>>,
     /// The keywords that were arrays, each as float64 (not broadcast).
     pub(super) inputs: Vec<(&'static str, Py<PyArrayDyn<f64>>)>,

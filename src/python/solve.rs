@@ -184,22 +184,24 @@ fn solve_arrays<'py>(
     };
     // An empty array asks nothing: its answers are empty too.
     if shape.iter().product::<usize>() > 0 {
-        let (mut s, mut t, mut xw): (
+        let (mut s, mut t, mut xw, mut pw): (
             PyReadwriteArrayDyn<u8>,
             PyReadwriteArrayDyn<f64>,
             PyReadwriteArrayDyn<f64>,
-        ) = (status.readwrite(), theta.readwrite(), x.readwrite());
+            PyReadwriteArrayDyn<f64>,
+        ) = (
+            status.readwrite(),
+            theta.readwrite(),
+            x.readwrite(),
+            past.readwrite(),
+        );
         let out = Answers {
             status: s.as_slice_mut().expect("a new array is contiguous"),
             theta_jam_deg: t.as_slice_mut().expect("a new array is contiguous"),
             x_jam_mm: xw.as_slice_mut().expect("a new array is contiguous"),
+            past_palm_x_jam_mm: Some(pw.as_slice_mut().expect("a new array is contiguous")),
         };
         answer_watched(py, spec, &pushes, out)?;
-        let mut pw: PyReadwriteArrayDyn<f64> = past.readwrite();
-        let status = s.as_slice().expect("a new array is contiguous");
-        let out = pw.as_slice_mut().expect("a new array is contiguous");
-        py.detach(|| columns::past_palm_into(spec, &pushes, status, out))
-            .map_err(error)?;
     }
     Ok(Solutions {
         model: spec.kind(),

@@ -160,6 +160,14 @@ macro_rules! mask_ops {
 }
 mask_ops!(BitAnd bitand &=, BitOr bitor |=);
 
+impl<const N: usize> std::ops::Not for Mask<N> {
+    type Output = Self;
+    #[inline(always)]
+    fn not(self) -> Self {
+        Mask(self.0.map(|m| !m))
+    }
+}
+
 /// The arctangent in plain arithmetic: Cephes' `atan` (S. L. Moshier), |x| reduced to at most
 /// 0.66 through tan(pi/4) or the reciprocal, then a rational function of degree 4 over 5 in
 /// x^2; within 1 ulp of libm's on the tests' sample.

@@ -425,18 +425,23 @@ impl<const N: usize> Push<N> {
 
     /// Each lane's status (its index in [`JamStatus::NAMES`]), theta_jam in deg and x_jam in
     /// mm, NaN where none: [`solve`]'s answer, the same bits, for each push valid by
-    /// [`SceneParams::validate`].
+    /// [`SceneParams::validate`]; and if asked, where each would jam on a long enough palm
+    /// ([`solve`]'s `past_palm.x_jam_mm`, NaN for a push with no jam past the palm).
     #[inline(always)]
     pub(crate) fn answer(
         &self,
         status: &mut [u8; N],
         theta_deg: &mut [f64; N],
         x_mm: &mut [f64; N],
+        past_palm_x_mm: Option<&mut [f64; N]>,
     ) {
         let v = verdict(self);
         let (theta, x) = v.answer(self.start.deg);
         *status = v.status.0.map(|code| code as u8);
         (*theta_deg, *x_mm) = (theta.0, x.0);
+        if let Some(past) = past_palm_x_mm {
+            *past = past_palm_lanes(&v).select(v.x_jam, f64::NAN).0;
+        }
     }
 }
 
@@ -590,17 +595,16 @@ pub(crate) fn solve(p: &SceneParams) -> StaticsSolution {
 /// A `beyond_reach` verdict's jam past the palm's end, where it has one: theta_jam in rad,
 /// x_jam and the contact's distance s_B in mm.
 fn past_palm(v: &Verdict<1>) -> Option<(f64, f64, f64)> {
-    let past = v.status.one() == f64::from(JamStatus::BeyondReach.index());
     let (theta_jam, x_jam, s_b) = (v.theta_jam.one(), v.x_jam.one(), v.s_b.one());
-    (past && !v.beyond_at_start.0[0] && x_jam.is_finite() && s_b.is_finite())
-        .then_some((theta_jam, x_jam, s_b))
+    past_palm_lanes(v).0[0].then_some((theta_jam, x_jam, s_b))
 }
 
-/// [`solve`]'s `past_palm.x_jam_mm` alone, without the bisection for the friction factor that
-/// would bring the jam onto the palm (a hundred closed forms): what a column of pushes keeps.
-/// `p` must have passed validation.
-pub(crate) fn past_palm_x_jam_mm(p: &SceneParams) -> Option<f64> {
-    past_palm(&verdict(&Push::of(p))).map(|(_, x_jam, _)| x_jam)
+/// Which lanes of a verdict have a jam past the palm's end ([`past_palm`]): beyond_reach by
+/// their jam, not from the start, at a finite place.
+#[inline(always)]
+fn past_palm_lanes<const N: usize>(v: &Verdict<N>) -> Mask<N> {
+    let past = v.status.eq(f64::from(JamStatus::BeyondReach.index()));
+    past & !v.beyond_at_start & v.x_jam.is_finite() & v.s_b.is_finite()
 }
 
 /// The closed form's status alone: [`solve`]'s `status` without the extras (no lift-off
@@ -794,11 +798,12 @@ mod tests {
         assert!((s_b - p.contact_distance_mm(60_f64.to_radians())).abs() < 1e-12 * s_b);
     }
 
-    /// A column's past-palm x_jam (no friction factor searched) is the full answer's, bit for
-    /// bit, wherever the full answer has one, and absent wherever it has none.
+    /// A column's past-palm x_jam (no friction factor searched), four pushes in lanes, is
+    /// each push's full answer, bit for bit, wherever the full answer has one, and NaN
+    /// wherever it has none.
     #[test]
     fn the_past_palm_jam_alone_is_the_full_answers() {
-        let mut past = 0;
+        let mut scenes = Vec::new();
         for mu in [0.0, 1e-9, 0.05, 0.12, 0.3, 0.9, 1.5] {
             for palm_length_mm in [5.0, 30.0, 80.0, 150.0] {
                 for (palm_offset_mm, start_angle_deg) in [(0.0, 90.0), (3.0, 60.0), (0.0, 1.0)] {
@@ -809,12 +814,29 @@ mod tests {
                         force_n: 40.0,
                         ..SceneParams::default().with_mu(mu)
                     };
-                    let full = solve(&p).past_palm.map(|q| q.x_jam_mm.to_bits());
-                    assert_eq!(past_palm_x_jam_mm(&p).map(f64::to_bits), full, "{p:?}");
-                    past += usize::from(full.is_some());
+                    scenes.push(p);
                 }
             }
         }
+        let mut past = 0;
+        for four in scenes.chunks_exact(4) {
+            let mut lanes = Push::<4>::splat(Push::of(&four[0]));
+            for (j, p) in four.iter().enumerate() {
+                lanes.set(j, &Push::of(p));
+            }
+            let (mut s, mut t, mut x, mut lanes_past) = ([0; 4], [0.0; 4], [0.0; 4], [0.0; 4]);
+            lanes.answer(&mut s, &mut t, &mut x, Some(&mut lanes_past));
+            for (p, x) in four.iter().zip(lanes_past) {
+                let full = solve(p).past_palm.map(|q| q.x_jam_mm.to_bits());
+                assert_eq!(
+                    Some(x).filter(|x| !x.is_nan()).map(f64::to_bits),
+                    full,
+                    "{p:?}"
+                );
+                past += usize::from(full.is_some());
+            }
+        }
+        assert_eq!(scenes.len() % 4, 0, "every scene in a batch");
         assert!(past >= 5, "{past} scenes with a jam past the palm");
     }
 
