@@ -329,12 +329,15 @@ pub fn solve_into_until(
             return Ok(0);
         }
         let len = chunk.0.0.0.len();
-        // Closed-form answers LANES at a time, written in place.
-        if let ModelSpec::Statics = spec {
-            closed_form.answer_chunk(start, chunk);
-            return Ok(len);
-        }
-        let (((s, t), x), past) = chunk;
+        // Every model named: a new one is placed here before it compiles.
+        let (((s, t), x), past) = match spec {
+            // Closed-form answers LANES at a time, written in place.
+            ModelSpec::Statics => {
+                closed_form.answer_chunk(start, chunk);
+                return Ok(len);
+            }
+            ModelSpec::MinNorm(_) | ModelSpec::Dynamics { .. } => chunk,
+        };
         if let Some(past) = past {
             past.fill(f64::NAN);
         }
