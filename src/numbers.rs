@@ -12,6 +12,8 @@
 //! Three significant digits; a length picks the unit that keeps its digits before the point
 //! (mm from 0.1 mm, else um, nm, pm from 1 of each); an angle below a thousandth of a degree and a ratio below 1e-3 keep an
 //! exponent, which is the honest form there. Zero is `0` with its unit; a missing value is `-`.
+//!
+//! And one number beside another: [`floats_away`], the float a few steps from it.
 
 use std::fmt;
 
@@ -190,6 +192,18 @@ pub fn human_seconds(s: f64) -> String {
     }
 }
 
+/// The float `n` floats above `x` (below for n < 0), for x and the result of one sign
+/// (f64::next_up needs Rust 1.86, above the crate's 1.85); zero steps to the smallest
+/// subnormal of the sign of n, an infinity one step inward to the largest finite float.
+pub(crate) fn floats_away(x: f64, n: i64) -> f64 {
+    if x == 0.0 {
+        return f64::from_bits(1).copysign(n as f64);
+    }
+    // Up is one more in the bits of a positive x, one less in those of a negative one.
+    let n = if x > 0.0 { n } else { -n };
+    f64::from_bits(x.to_bits().wrapping_add_signed(n))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -291,5 +305,26 @@ mod tests {
         assert_eq!(ratio(Some(0.0)), "0");
         assert_eq!(ratio(Some(1.02e-2)), "0.0102");
         assert_eq!(ratio(Some(3.8125e-10)), "3.81e-10");
+    }
+
+    /// The float beside a number: both ways from either zero to the smallest subnormal,
+    /// across the ones and the largest finite float, and from an infinity inward.
+    #[test]
+    fn the_float_beside_a_number() {
+        let up = [
+            (0.0, 5e-324),
+            (-0.0, 5e-324),
+            (-5e-324, -0.0),
+            (1.0, 1.0 + f64::EPSILON),
+            (-f64::MAX, -1.797_693_134_862_315_5e308),
+            (f64::MAX, f64::INFINITY),
+            (f64::NEG_INFINITY, -f64::MAX),
+        ];
+        for (v, want) in up {
+            assert_eq!(floats_away(v, 1), want, "{v:e}");
+        }
+        assert_eq!(floats_away(f64::INFINITY, -1), f64::MAX);
+        assert_eq!(floats_away(0.0, -1), -5e-324);
+        assert_eq!(floats_away(1.0, -2), 1.0 - 2.0 * f64::EPSILON / 2.0);
     }
 }

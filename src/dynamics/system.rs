@@ -393,7 +393,7 @@ fn rate_root(residual: impl Fn(f64) -> (f64, f64), mut lo: f64, mut hi: f64) -> 
             // residual's sign over a few dozen floats), which closes the bracket where the
             // sign changes.
             steps_left -= 1;
-            let probe = floats_away(x, if r < 0.0 { gallop } else { -gallop });
+            let probe = crate::numbers::floats_away(x, if r < 0.0 { gallop } else { -gallop });
             gallop *= 2;
             probe
         } else {
@@ -408,18 +408,6 @@ fn rate_root(residual: impl Fn(f64) -> (f64, f64), mut lo: f64, mut hi: f64) -> 
 
 /// Newton steps and probes [`rate_root`] takes before it falls back to bisection.
 const NEWTON_BUDGET: u32 = 24;
-
-/// The float `n` floats above `x` (below for n < 0), for x and the result of one sign
-/// (f64::next_up needs Rust 1.86, above the crate's 1.85); zero steps to the smallest
-/// subnormal of the sign of n.
-fn floats_away(x: f64, n: i64) -> f64 {
-    if x == 0.0 {
-        return f64::from_bits(1).copysign(n as f64);
-    }
-    // Up is one more in the bits of a positive x, one less in those of a negative one.
-    let n = if x > 0.0 { n } else { -n };
-    f64::from_bits(x.to_bits().wrapping_add_signed(n))
-}
 
 impl OdeSystem<3> for System {
     fn rhs(&self, _t: f64, y: &[f64; 3], dy: &mut [f64; 3]) {

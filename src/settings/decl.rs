@@ -7,6 +7,7 @@
 use rayon::prelude::*;
 
 use crate::error::{Error, Result};
+use crate::numbers::floats_away;
 
 /// What values a setting takes, for its flag's parser, its help and its range check.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -102,8 +103,8 @@ impl Check {
     #[inline]
     fn bounds(&self) -> (f64, f64) {
         let (lo, with_lo, hi, with_hi) = self.limits();
-        let lo = if with_lo { lo } else { next_up(lo) };
-        let hi = if with_hi { hi } else { -next_up(-hi) };
+        let lo = if with_lo { lo } else { floats_away(lo, 1) };
+        let hi = if with_hi { hi } else { floats_away(hi, -1) };
         (lo.max(-f64::MAX), hi.min(f64::MAX))
     }
 
@@ -546,20 +547,6 @@ pub fn float_range_problem(raw: &str, v: f64) -> Option<&'static str> {
     None
 }
 
-/// The least number above `v` (`f64::next_up`, which is newer than the crate's minimum Rust):
-/// +infinity and NaN stay as they are.
-fn next_up(v: f64) -> f64 {
-    if v.is_nan() || v == f64::INFINITY {
-        v
-    } else if v == 0.0 {
-        f64::from_bits(1)
-    } else if v > 0.0 {
-        f64::from_bits(v.to_bits() + 1)
-    } else {
-        f64::from_bits(v.to_bits() - 1)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -692,16 +679,5 @@ mod tests {
             }
         }
         assert!(refused > 0, "some values are refused");
-        let up = [
-            (0.0, 5e-324),
-            (-5e-324, -0.0),
-            (1.0, 1.0 + f64::EPSILON),
-            (-f64::MAX, -1.797_693_134_862_315_5e308),
-        ];
-        for (v, want) in up {
-            assert_eq!(next_up(v), want, "{v:e}");
-        }
-        assert_eq!(next_up(f64::MAX), f64::INFINITY);
-        assert_eq!(next_up(f64::NEG_INFINITY), -f64::MAX);
     }
 }
