@@ -55,8 +55,9 @@ const SERIES_DT_S: f64 = 2e-4;
 pub struct DistAsk {
     /// Positions x in mm for P(x_jam < x) (default: none).
     pub before_mm: Vec<f64>,
-    /// Probabilities q in (0, 1) of the quantiles of x_jam (default: 0.05, 0.5, 0.95).
-    pub quantiles: Vec<f64>,
+    /// Probabilities q in (0, 1) of the quantiles of x_jam (default: 0.05, 0.5, 0.95, held
+    /// without an allocation).
+    pub quantiles: SmallVec<[f64; 3]>,
     /// Monte Carlo samples where the answer is not exact (default: 100,000 for the statics,
     /// 2,000 for min-norm and dynamics).
     pub samples: Option<u64>,
@@ -69,7 +70,7 @@ impl Default for DistAsk {
     fn default() -> Self {
         DistAsk {
             before_mm: Vec::new(),
-            quantiles: DEFAULT_QUANTILES.to_vec(),
+            quantiles: SmallVec::from(DEFAULT_QUANTILES),
             samples: None,
             seed: 1,
         }
@@ -81,7 +82,7 @@ impl DistAsk {
     fn for_model(&self, kind: ModelKind) -> DistQuestion {
         DistQuestion {
             before_mm: self.before_mm.clone(),
-            quantiles: self.quantiles.clone(),
+            quantiles: self.quantiles.to_vec(),
             samples: self.samples.unwrap_or(match kind {
                 ModelKind::Statics => STATICS_SAMPLES,
                 _ => MODEL_SAMPLES,
@@ -101,7 +102,7 @@ impl DistAsk {
     fn given(&self) -> Vec<&'static str> {
         [
             (!self.before_mm.is_empty(), "before_mm"),
-            (self.quantiles != DEFAULT_QUANTILES, "quantiles"),
+            (self.quantiles[..] != DEFAULT_QUANTILES, "quantiles"),
             (self.samples.is_some(), "samples"),
         ]
         .into_iter()
@@ -124,8 +125,9 @@ pub struct SolveQuestion {
     pub config: Config,
     /// The scene's ranges and distributions (empty: one push).
     pub uncertain: UncertainSet,
-    /// The models, in the order they answer (default: the statics).
-    pub models: Vec<ModelKind>,
+    /// The models, in the order they answer (default: the statics); each at most once, held
+    /// without an allocation.
+    pub models: SmallVec<[ModelKind; 3]>,
     /// What to ask of a distributed input (ignored without one).
     pub distribution: DistAsk,
     /// Record clarabel's convergence trace at the min-norm jam (the paper's Fig. 4).
@@ -141,7 +143,7 @@ impl SolveQuestion {
         SolveQuestion {
             config,
             uncertain,
-            models: vec![ModelKind::Statics],
+            models: smallvec::smallvec![ModelKind::Statics],
             distribution: DistAsk::default(),
             trace: false,
             series: None,
@@ -155,7 +157,7 @@ impl SolveQuestion {
     pub fn from_keywords(mut kw: Keywords) -> Result<Self> {
         Self::refuse_two_pushes(&kw.0.keys().map(String::as_str).collect::<Vec<_>>())?;
         let models = match kw.take_name("model")? {
-            None => vec![ModelKind::Statics],
+            None => smallvec::smallvec![ModelKind::Statics],
             Some(name) => models_named(&name)?,
         };
         let mut distribution = DistAsk::default();
@@ -163,7 +165,7 @@ impl SolveQuestion {
             distribution.before_mm = v;
         }
         if let Some(v) = kw.take_numbers("quantiles")? {
-            distribution.quantiles = v;
+            distribution.quantiles = v.into();
         }
         distribution.samples = kw.take_count("samples", 1)?;
         if let Some(seed) = kw.take_count("seed", 0)? {
@@ -394,7 +396,11 @@ impl SolveQuestion {
                     );
                     crate::atomic::write_atomic(path, &csv)?;
                 }
-                Some(DynamicsRecord::of(d, &self.config, self.series.as_deref()))
+                Some(Box::new(DynamicsRecord::of(
+                    d,
+                    &self.config,
+                    self.series.as_deref(),
+                )))
             }
             _ => None,
         };
@@ -462,14 +468,14 @@ impl TryFrom<Keywords> for SolveQuestion {
 }
 
 /// The models named `name`: one of the port's (`min_norm` spelt either way), or `all`.
-fn models_named(name: &str) -> Result<Vec<ModelKind>> {
+fn models_named(name: &str) -> Result<SmallVec<[ModelKind; 3]>> {
     if name == "all" {
-        return Ok(ModelKind::ALL.to_vec());
+        return Ok(ModelKind::ALL.into());
     }
     ModelKind::ALL
         .into_iter()
         .find(|k| k.as_str() == name || k.as_str().replace('-', "_") == name)
-        .map(|k| vec![k])
+        .map(|k| smallvec::smallvec![k])
         .ok_or_else(|| {
             let names: Vec<&str> = ModelKind::ALL.iter().map(|k| k.as_str()).collect();
             Error::invalid(
@@ -559,9 +565,10 @@ pub struct PushRecord {
     /// clarabel's trace at the jam, where asked.
     #[serde(flatten, skip_serializing_if = "Option::is_none")]
     pub trace: Option<Trace>,
-    /// A simulation's settings, series and advice.
+    /// A simulation's settings, series and advice (boxed: an answer of the other models does
+    /// not carry its room).
     #[serde(flatten, skip_serializing_if = "Option::is_none")]
-    pub dynamics: Option<DynamicsRecord>,
+    pub dynamics: Option<Box<DynamicsRecord>>,
 }
 
 /// clarabel's convergence trace at one palm angle (the paper's Fig. 4).

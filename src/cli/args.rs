@@ -72,10 +72,10 @@ pub enum ModelChoice {
 
 impl ModelChoice {
     /// The models to run, in the order they are printed.
-    pub fn models(self) -> Vec<ModelKind> {
+    pub fn models(self) -> smallvec::SmallVec<[ModelKind; 3]> {
         match self {
-            ModelChoice::One(k) => vec![k],
-            ModelChoice::All => ModelKind::ALL.to_vec(),
+            ModelChoice::One(k) => smallvec::smallvec![k],
+            ModelChoice::All => ModelKind::ALL.into(),
         }
     }
 }
@@ -192,6 +192,6 @@ mod tests {
             .split(',')
             .map(|q| q.parse().unwrap())
             .collect();
-        assert_eq!(flag, crate::ask::DistAsk::default().quantiles);
+        assert_eq!(flag, crate::ask::DistAsk::default().quantiles.to_vec());
     }
 }

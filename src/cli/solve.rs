@@ -49,7 +49,7 @@ pub fn run(a: &SolveArgs) -> Result<String> {
         models: a.model.models(),
         distribution: DistAsk {
             before_mm: d.before_mm.clone(),
-            quantiles: d.quantiles.clone(),
+            quantiles: d.quantiles.as_slice().into(),
             samples: d.samples,
             seed: d.seed,
         },

@@ -143,8 +143,6 @@ pub(super) fn scenes() -> Vec<String> {
 }
 
 /// `jamchart.render(scene, *, read_off=None, set=None, **settings)`: see the package's docs.
-#[pyfunction]
-#[pyo3(signature = (scene, keywords=None))]
 pub(super) fn render(
     py: Python<'_>,
     scene: PathBuf,

@@ -1,11 +1,13 @@
 //! The package's functions, registered from one list ([`FUNCTIONS`]): each one's native
 //! function, its keywords (made from the settings' one declaration), its docstring and its
-//! type stub. `jamchart/__init__.py` wraps every function of the list alike, and the stub
-//! `jamchart/__init__.pyi` is [`stub`]'s output (a test compares them).
+//! type stub. A keyword function is the module's own C function with its signature in its
+//! docstring ([`super::entry`]); `jamchart/__init__.py` re-exports them, and the stub
+//! `jamchart/__init__.pyi` is [`_stub`]'s output (a test compares them).
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
+use super::entry::keyword_native;
 use crate::ask::Words;
 use crate::scene::Param;
 use crate::settings::{self, Decl, Kind};
@@ -368,7 +370,7 @@ macro_rules! native {
 pub(super) const FUNCTIONS: &[Function] = &[
     Function {
         name: "solve",
-        add: native!(super::solve::solve),
+        add: keyword_native!("solve", |py, _, kw| super::solve::solve(py, kw)),
         keywords: Some(solve_keywords),
         intro: SOLVE,
         stub: Stub::Keywords {
@@ -402,7 +404,10 @@ pub(super) const FUNCTIONS: &[Function] = &[
     },
     Function {
         name: "render",
-        add: native!(super::charts::render),
+        add: keyword_native!("render", |py, given, kw| {
+            let chart = super::charts::render(py, given[0].extract()?, kw)?;
+            Ok(Bound::new(py, chart)?.into_any())
+        }),
         keywords: Some(render_keywords),
         intro: RENDER,
         stub: Stub::Keywords {
@@ -412,7 +417,9 @@ pub(super) const FUNCTIONS: &[Function] = &[
     },
     Function {
         name: "design",
-        add: native!(super::reports::design),
+        add: keyword_native!("design", |py, _, kw| {
+            Ok(Bound::new(py, super::reports::design(py, kw)?)?.into_any())
+        }),
         keywords: Some(design_keywords),
         intro: DESIGN,
         stub: Stub::Keywords {
@@ -422,7 +429,9 @@ pub(super) const FUNCTIONS: &[Function] = &[
     },
     Function {
         name: "vlocator",
-        add: native!(super::reports::vlocator),
+        add: keyword_native!("vlocator", |py, _, kw| {
+            Ok(Bound::new(py, super::reports::vlocator(py, kw)?)?.into_any())
+        }),
         keywords: Some(vlocator_keywords),
         intro: VLOCATOR,
         stub: Stub::Keywords {
@@ -557,7 +566,7 @@ pub(super) fn keywords(function: &str) -> PyResult<Vec<&'static str>> {
         .ok_or_else(|| unknown_function(function))
 }
 
-/// The keyword functions' names and positional parameters, for `__init__.py` to wrap.
+/// The keyword functions' names and positional parameters (what their signatures open with).
 #[pyfunction]
 pub(super) fn _functions() -> Vec<(&'static str, Vec<&'static str>)> {
     FUNCTIONS
@@ -571,25 +580,67 @@ pub(super) fn _functions() -> Vec<(&'static str, Vec<&'static str>)> {
         .collect()
 }
 
-/// The signature of `function`'s keywords: (name, default as Python text or None where it
-/// has none).
-#[pyfunction]
-pub(super) fn _signature(function: &str) -> PyResult<Vec<(&'static str, Option<String>)>> {
-    let (_, all) = keyword_function(function).ok_or_else(|| unknown_function(function))?;
-    Ok(all.into_iter().map(|k| (k.name, k.default)).collect())
+/// A keyword function's parameters: its positional ones, and its keywords in order with each
+/// one's default as Python text (None: required); made once, at import (the keywords' docs
+/// are made from the settings' declarations, 570,000 instructions a function).
+pub(super) struct Parameters {
+    pub(super) positional: Vec<&'static str>,
+    pub(super) keywords: Vec<(&'static str, Option<String>)>,
+    /// Neither positional nor required parameters: a call's keywords go to the function as
+    /// they are.
+    pub(super) bare: bool,
+}
+
+/// The parameters of keyword function `name` of [`FUNCTIONS`].
+pub(super) fn parameters(name: &str) -> &'static Parameters {
+    static ALL: std::sync::OnceLock<Vec<(&'static str, Parameters)>> = std::sync::OnceLock::new();
+    let all = ALL.get_or_init(|| {
+        FUNCTIONS
+            .iter()
+            .filter_map(|f| {
+                let Stub::Keywords { positional, .. } = f.stub else {
+                    return None;
+                };
+                let keywords: Vec<_> = (f.keywords?)()
+                    .into_iter()
+                    .map(|k| (k.name, k.default))
+                    .collect();
+                let bare = positional.is_empty() && keywords.iter().all(|(_, d)| d.is_some());
+                let positional = positional.iter().map(|(n, _)| *n).collect();
+                Some((
+                    f.name,
+                    Parameters {
+                        positional,
+                        keywords,
+                        bare,
+                    },
+                ))
+            })
+            .collect()
+    });
+    let found = all.iter().find(|(n, _)| *n == name);
+    &found.expect("a keyword function of FUNCTIONS").1
+}
+
+/// The docstring of keyword function `name` of [`FUNCTIONS`], after its signature.
+pub(super) fn doc_of(name: &str) -> String {
+    let Some((f, all)) = keyword_function(name) else {
+        return String::new();
+    };
+    let entries: Vec<String> = all.into_iter().map(|k| k.entry).collect();
+    format!(
+        "{}\nParameters\n----------\n{}\n",
+        f.intro,
+        entries.join("\n")
+    )
 }
 
 /// The docstring of `function`: what it does and returns, then each keyword with its unit,
 /// default and valid values.
 #[pyfunction]
 pub(super) fn _doc(function: &str) -> PyResult<String> {
-    let (f, all) = keyword_function(function).ok_or_else(|| unknown_function(function))?;
-    let entries: Vec<String> = all.into_iter().map(|k| k.entry).collect();
-    Ok(format!(
-        "{}\nParameters\n----------\n{}\n",
-        f.intro,
-        entries.join("\n")
-    ))
+    keyword_function(function).ok_or_else(|| unknown_function(function))?;
+    Ok(doc_of(function))
 }
 
 fn unknown_function(function: &str) -> PyErr {

@@ -16,6 +16,7 @@ mod answers;
 mod charts;
 mod convert;
 mod docs;
+mod entry;
 mod keywords;
 mod reports;
 mod solve;
@@ -44,7 +45,6 @@ fn jamchart_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     ];
     docs::add_all(m)?;
     m.add_function(wrap_pyfunction!(docs::_functions, m)?)?;
-    m.add_function(wrap_pyfunction!(docs::_signature, m)?)?;
     m.add_function(wrap_pyfunction!(docs::_doc, m)?)?;
     m.add_function(wrap_pyfunction!(docs::_stub, m)?)?;
     m.add_function(wrap_pyfunction!(answers::_solutions, m)?)?;

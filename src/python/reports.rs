@@ -104,8 +104,6 @@ answer_class! {
 }
 
 /// `jamchart.design(x_target_mm, **scene)`: see the package's docs.
-#[pyfunction]
-#[pyo3(signature = (keywords=None))]
 pub(super) fn design(
     py: Python<'_>,
     keywords: Option<&Bound<'_, PyDict>>,
@@ -120,8 +118,6 @@ pub(super) fn design(
 }
 
 /// `jamchart.vlocator(**locator)`: see the package's docs.
-#[pyfunction]
-#[pyo3(signature = (keywords=None))]
 pub(super) fn vlocator(
     py: Python<'_>,
     keywords: Option<&Bound<'_, PyDict>>,

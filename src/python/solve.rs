@@ -29,8 +29,6 @@ const POLL: Duration = Duration::from_millis(50);
 const WATCHED_STATICS: usize = 1 << 22;
 
 /// `jamchart.solve(**keywords)`: see the package's docs (`help(jamchart.solve)`).
-#[pyfunction]
-#[pyo3(signature = (keywords=None))]
 pub(super) fn solve<'py>(
     py: Python<'py>,
     keywords: Option<&Bound<'py, PyDict>>,
@@ -361,8 +359,8 @@ pub(super) fn warn(py: Python<'_>, lines: Vec<String>) -> PyResult<()> {
     for line in lines {
         let text = without_flags(&line).replace('\0', " ");
         let text = std::ffi::CString::new(text).expect("no NUL");
-        // 2: past `jamchart.solve` in __init__.py, to the user's call.
-        PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 2)?;
+        // 1: the frame that called the package's function, the user's line.
+        PyErr::warn(py, &py.get_type::<PyUserWarning>(), &text, 1)?;
     }
     Ok(())
 }

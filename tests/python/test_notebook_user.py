@@ -115,6 +115,33 @@ def test_array_answers_pickle_and_the_rest_say_what_to_send():
             pickle.dumps(obj)
 
 
+def test_the_functions_pickle_as_their_names():
+    """Dask and multiprocessing send a function to a worker by pickling it: each of the
+    package's functions pickles as its name and comes back as itself."""
+    for name, _ in jc._jamchart._functions():
+        f = getattr(jc, name)
+        assert pickle.loads(pickle.dumps(f)) is f, name
+
+
+def test_positional_arguments_are_taken_as_a_def_takes_them():
+    """The functions are the module's own, not Python defs: each takes its positional
+    arguments by position or by name, and refuses others in Python's words."""
+    with pytest.raises(TypeError, match=r"^solve\(\) takes no positional arguments \(give each "
+                                        r"value by its keyword\) but 1 was given$"):
+        jc.solve(0.3)
+    with pytest.raises(TypeError, match=r"^render\(\) takes 1 positional argument \(scene\) but "
+                                        r"0 were given$"):
+        jc.render(radius_mm=12)
+    with pytest.raises(TypeError, match=r"^render\(\) takes 1 positional argument \(scene\) but "
+                                        r"2 were given$"):
+        jc.render("fig3", "fig4")
+    with pytest.raises(TypeError, match=r"^design\(\) missing required keyword argument: "
+                                        r"'x_target_mm'$"):
+        jc.design(radius_mm=12)
+    by_name = jc.render(scene="fig3", radius_mm=12)
+    assert by_name.svg == jc.render("fig3", radius_mm=12).svg
+
+
 def test_an_array_answer_leaves_out_the_settings_its_arrays_vary():
     got = jc.solve(mu=np.array([0.2, 0.3]), radius_mm=12.5)
     assert "mu_ground" not in got.inputs and "mu_palm" not in got.inputs

@@ -20,10 +20,6 @@ valid values. Bad input raises ValueError with the command line's message.
 
 from __future__ import annotations
 
-import ast
-import inspect
-from typing import Any, Callable, Optional, Sequence
-
 from . import _jamchart
 from ._jamchart import *  # noqa: F401,F403 (the names of _jamchart.__all__)
 
@@ -33,67 +29,3 @@ __doc__ = (__doc__ or "") + """
 A notebook session, end to end (the guide's; each ``# %%`` starts a cell)::
 
 """ + "\n".join("    " + line for line in _jamchart._session().splitlines()) + "\n"
-
-
-class _Shown:
-    """A default shown in a signature as it is written (``1e-9``, ``None``)."""
-
-    def __init__(self, text: str) -> None:
-        self.text = text
-
-    def __repr__(self) -> str:
-        return self.text
-
-
-def _default(text: Optional[str]) -> Any:
-    if text is None:
-        return inspect.Parameter.empty
-    try:
-        return ast.literal_eval(text)
-    except (ValueError, SyntaxError):
-        return _Shown(text)
-
-
-def _wrap(name: str, positional: Sequence[str]) -> Callable[..., Any]:
-    """The function `name` of the extension, called with its keywords as one dict, under the
-    signature and docstring of its declared keywords."""
-    native = getattr(_jamchart, name)
-    declared = _jamchart._signature(name)
-    required = [k for k, d in declared if d is None]
-    # Keywords alone, to a function without positional or required ones (solve in a loop):
-    # nothing to move or check on the way.
-    bare = not positional and not required
-
-    def positionals(args: Any, keywords: Any) -> Any:
-        """The positional arguments of a call, those given by keyword taken out of `keywords`;
-        its mistakes refused."""
-        given = list(args) + [keywords.pop(p) for p in positional[len(args):] if p in keywords]
-        if len(given) != len(positional):
-            raise TypeError(f"{name}() takes {len(positional)} positional argument(s) "
-                            f"({', '.join(positional)}) but {len(given)} were given")
-        missing = [k for k in required if k not in keywords]
-        if missing:
-            raise TypeError(f"{name}() missing required keyword argument: '{missing[0]}'")
-        return given
-
-    # The comprehensions live in `positionals`: here they would make each call's keywords a
-    # cell. The native call stays here, one frame below the caller's line, where its warnings
-    # point.
-    def function(*args: Any, **keywords: Any) -> Any:
-        if bare and not args:
-            return native(keywords)
-        return native(*positionals(args, keywords), keywords)
-
-    params = [inspect.Parameter(p, inspect.Parameter.POSITIONAL_OR_KEYWORD) for p in positional]
-    params += [
-        inspect.Parameter(k, inspect.Parameter.KEYWORD_ONLY, default=_default(d))
-        for k, d in declared
-    ]
-    function.__signature__ = inspect.Signature(params)  # type: ignore[attr-defined]
-    function.__doc__ = _jamchart._doc(name)
-    function.__name__ = function.__qualname__ = name
-    return function
-
-
-for _name, _positional in _jamchart._functions():
-    globals()[_name] = _wrap(_name, _positional)
