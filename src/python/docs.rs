@@ -365,8 +365,9 @@ macro_rules! native {
     };
 }
 
-/// The package's functions, in the order of their stubs. A new function is its
-/// `#[pyfunction]`, one entry here, and the stub this writes (`__init__.pyi`).
+/// The package's functions, in the order of their stubs. A new function is its body (a
+/// keyword function's, behind [`keyword_native!`]; a plain one's `#[pyfunction]`), one entry
+/// here, and the stub this writes (`__init__.pyi`).
 pub(super) const FUNCTIONS: &[Function] = &[
     Function {
         name: "solve",

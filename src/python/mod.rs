@@ -1,8 +1,7 @@
 //! The Python package `jamchart`: the same crate, built with its `python` feature by maturin
 //! (`pip install .` in a checkout; `pyproject.toml`), as the extension module
-//! `jamchart._jamchart` beside the pure-Python layer in `src/python/jamchart/` (which wraps the
-//! functions with their signatures and docs, and holds the type stubs). This module has no
-//! public Rust API.
+//! `jamchart._jamchart` beside the pure-Python layer in `src/python/jamchart/` (which re-exports
+//! it and holds the type stubs). This module has no public Rust API.
 //!
 //! A face over the library's questions and answers ([`crate::ask`]): each function reads its
 //! keywords as the library's [`crate::ask::Keywords`] (arrays aside, which go to the model
@@ -25,7 +24,7 @@ use pyo3::prelude::*;
 
 use crate::scene::JamStatus;
 
-/// The extension module; `jamchart/__init__.py` re-exports it with signatures and docs.
+/// The extension module; `jamchart/__init__.py` re-exports it.
 #[pymodule]
 #[pyo3(name = "_jamchart")]
 fn jamchart_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
