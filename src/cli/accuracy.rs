@@ -50,7 +50,7 @@ pub struct AccuracyArgs {
     pub dynamics: Flags<DynamicsSet>,
     /// Integrator tolerances rtol = atol, comma-separated, at most 64.
     #[arg(long = flag!(ACCURACY_FLAGS, tolerances), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
-          value_parser = parse_f64, default_value = list(&defaults().tolerances))]
+          value_parser = parse_f64, default_value = list(&defaults().tolerances), allow_hyphen_values = true)]
     pub tolerances: Vec<f64>,
     /// Integrators, comma-separated.
     #[arg(long = flag!(ACCURACY_FLAGS, methods), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
@@ -60,39 +60,40 @@ pub struct AccuracyArgs {
     ///
     /// k = F / delta^e; "none" keeps only --stiffness.
     #[arg(long = flag!(ACCURACY_FLAGS, penetrations_um), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
-          default_value = list(&defaults().penetrations_um))]
+          default_value = list(&defaults().penetrations_um), allow_hyphen_values = true)]
     pub penetrations: Vec<String>,
     /// clarabel tolerances of the min-norm rows, comma-separated, at most 64; "none" skips them.
     ///
     /// The exact path is always a row.
     #[arg(long = flag!(ACCURACY_FLAGS, min_norm_tolerances), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
-          default_value = list(&defaults().min_norm_tolerances))]
+          default_value = list(&defaults().min_norm_tolerances), allow_hyphen_values = true)]
     pub min_norm_tolerances: Vec<String>,
     /// Steps of the nonsmooth rows in deg of palm turn, comma-separated, at most 64; "none"
     /// skips them.
     #[arg(long = flag!(ACCURACY_FLAGS, nonsmooth_steps_deg), value_name = "LIST", value_delimiter = ',', action = ArgAction::Set,
-          default_value = list(&defaults().nonsmooth_steps_deg))]
+          default_value = list(&defaults().nonsmooth_steps_deg), allow_hyphen_values = true)]
     pub nonsmooth_steps: Vec<String>,
     /// Step of the nonsmooth method's converged answer in deg.
     #[arg(long = flag!(ACCURACY_FLAGS, converged_step_deg), value_name = "DEG", value_parser = parse_f64,
-          default_value = number_text(defaults().converged_step_deg))]
+          default_value = number_text(defaults().converged_step_deg), allow_hyphen_values = true)]
     pub converged_step: f64,
     /// Timed runs per row, 1 to 1000; the median is reported.
-    #[arg(long = flag!(ACCURACY_FLAGS, runs), value_name = "N", default_value_t = defaults().runs)]
+    #[arg(long = flag!(ACCURACY_FLAGS, runs), value_name = "N", default_value_t = defaults().runs, allow_hyphen_values = true)]
     pub runs: usize,
     /// Tolerance of the converged answers the integration error is measured against.
     #[arg(long = flag!(ACCURACY_FLAGS, converged_rtol), value_name = "RTOL", alias = "reference-rtol", value_parser = parse_f64,
-          default_value = number_text(defaults().converged_rtol))]
+          default_value = number_text(defaults().converged_rtol), allow_hyphen_values = true)]
     pub converged_rtol: f64,
     /// Step limit of every simulation.
-    #[arg(long = flag!(ACCURACY_FLAGS, max_steps), value_name = "N", default_value_t = defaults().max_steps)]
+    #[arg(long = flag!(ACCURACY_FLAGS, max_steps), value_name = "N", default_value_t = defaults().max_steps, allow_hyphen_values = true)]
     pub max_steps: u64,
     /// Cells per axis of the map whose cost is reported, 2 to 2000; 0 skips it.
     ///
     /// The map is mu 0.1-0.8 by F 20-2000 N (log); the statics answer all of it, the min-norm
     /// program 40 of its columns (every F at 40 values of mu) by its exact path and 4 by
     /// clarabel, the simulation 20 x 20 cells, and their time is extrapolated.
-    #[arg(long = flag!(ACCURACY_FLAGS, cells_per_axis), value_name = "N", default_value_t = MapCostSettings::default().cells_per_axis)]
+    #[arg(long = flag!(ACCURACY_FLAGS, cells_per_axis), value_name = "N", default_value_t = MapCostSettings::default().cells_per_axis,
+          allow_hyphen_values = true)]
     pub map_cells: usize,
     /// Output format on stdout.
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]

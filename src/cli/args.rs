@@ -144,15 +144,15 @@ pub struct DistArgs {
     ///
     /// With a distributed input (e.g. --mu normal(0.2,0.03)); a comma-separated list.
     #[arg(long = flag!(crate::ask::DIST_KEYS, before_mm), value_name = "MM", value_delimiter = ',', value_parser = parse_f64,
-          allow_negative_numbers = true)]
+          allow_hyphen_values = true)]
     pub before_mm: Vec<f64>,
     /// Probabilities q in (0, 1) of the quantiles of x_jam printed with a distributed input.
     #[arg(long = flag!(crate::ask::DIST_KEYS, quantiles), value_name = "Q", value_delimiter = ',', value_parser = parse_f64,
-          default_value = DEFAULT_QUANTILES, allow_negative_numbers = true)]
+          default_value = DEFAULT_QUANTILES, allow_hyphen_values = true)]
     pub quantiles: Vec<f64>,
     /// Monte Carlo samples where the answer is not exact.
     #[arg(long = flag!(crate::ask::DIST_KEYS, samples), value_name = "N", long_help = samples_help(), value_parser = parse_count,
-          allow_negative_numbers = true)]
+          allow_hyphen_values = true)]
     pub samples: Option<u64>,
     /// Seed of the Monte Carlo samples: the same seed gives the same answer on any number of
     /// threads.
@@ -160,7 +160,8 @@ pub struct DistArgs {
         long,
         value_name = "N",
         default_value_t = 1,
-        allow_negative_numbers = true
+        allow_hyphen_values = true,
+        value_parser = parse_count
     )]
     pub seed: u64,
 }

@@ -16,7 +16,7 @@ pub struct DesignArgs {
     ///
     /// Above x(90 deg) = r + h, the position at a right-angled palm.
     #[arg(long = flag!(crate::ask::DESIGN_KEYS, x_target_mm), value_name = "MM",
-          allow_negative_numbers = true, value_parser = parse_f64)]
+          allow_hyphen_values = true, value_parser = parse_f64)]
     pub x_target: f64,
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]

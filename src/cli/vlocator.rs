@@ -19,7 +19,7 @@ pub struct VlocatorArgs {
     #[arg(
         long = flag!(crate::ask::GEOMETRY_KEYS, included_angle_deg),
         value_name = "DEG",
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         conflicts_with = "flank_angles",
         value_parser = parse_f64
     )]

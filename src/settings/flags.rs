@@ -172,7 +172,7 @@ fn arg(d: &'static Decl, heading: Option<&'static str>, takers: &str) -> Arg {
                                    taken by {takers}"
             );
             a.value_name(value_name(d))
-                .allow_negative_numbers(true)
+                .allow_hyphen_values(true)
                 .value_parser(move |s: &str| match parse_f64(s) {
                     Ok(v) => Ok(toml::Value::Float(v)),
                     Err(_) if Uncertain::parse(s).is_ok_and(|u| u.is_uncertain()) => {

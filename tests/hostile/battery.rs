@@ -185,17 +185,38 @@ fn a_huge_number_in_a_distribution_is_echoed_short() {
 
 /// The wrong flag named: `solve --samples -1`, `--seed -1` and
 /// `--quantiles -0.5` were refused as "unexpected argument '-1' found", naming no flag: clap
-/// read the negative value as a flag. Each is now refused naming its own flag.
+/// read the negative value as a flag. Each is now refused naming its own flag; so is a negative
+/// number written with an exponent (`--rtol -1e-3` was read as the flags -1 and -e), a list
+/// starting with one, and a number flag of every command that takes one.
 #[test]
 fn a_negative_count_or_probability_names_its_flag() {
     for (flag, value) in [
         ("--samples", "-1"),
         ("--seed", "-1"),
+        ("--seed", "-1e3"),
         ("--quantiles", "-0.5"),
+        ("--quantiles", "-1e-300"),
+        ("--quantiles", "-0.5,0.5"),
+        ("--rtol", "-1e-3"),
+        ("--palm-offset", "-1e-3"),
+        ("--gravity", "-1e-300"),
     ] {
         let args = ["solve", "--mu", "normal(0.2,0.03)", flag, value];
         assert_eq!(refusal_defect(&args, flag), None);
     }
+    for args in [
+        ["design", "--x-target", "-1e-3"],
+        ["vlocator", "--included-angle", "-1e-3"],
+        ["accuracy", "--tolerances", "-1e-3"],
+        ["accuracy", "--converged-rtol", "-1e-3"],
+        ["accuracy", "--penetrations", "-1e-3"],
+        ["accuracy", "--nonsmooth-steps", "-1e-3"],
+    ] {
+        assert_eq!(refusal_defect(&args, args[1]), None);
+    }
+    // A negative position is a question with an answer (no jam lies before it).
+    let o = run(&["solve", "--mu", "normal(0.2,0.03)", "--before", "-1e-3"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
 }
 
 /// The hostile battery over every class of bad input and every surface (ranges and
