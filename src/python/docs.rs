@@ -623,25 +623,23 @@ pub(super) fn parameters(name: &str) -> &'static Parameters {
     &found.expect("a keyword function of FUNCTIONS").1
 }
 
-/// The docstring of keyword function `name` of [`FUNCTIONS`], after its signature.
-pub(super) fn doc_of(name: &str) -> String {
-    let Some((f, all)) = keyword_function(name) else {
-        return String::new();
-    };
+/// The docstring of keyword function `name` of [`FUNCTIONS`] after its signature: what it does
+/// and returns, then each keyword with its unit, default and valid values. None for a name
+/// that is not a keyword function's.
+pub(super) fn doc_of(name: &str) -> Option<String> {
+    let (f, all) = keyword_function(name)?;
     let entries: Vec<String> = all.into_iter().map(|k| k.entry).collect();
-    format!(
+    Some(format!(
         "{}\nParameters\n----------\n{}\n",
         f.intro,
         entries.join("\n")
-    )
+    ))
 }
 
-/// The docstring of `function`: what it does and returns, then each keyword with its unit,
-/// default and valid values.
+/// The docstring of `function` ([`doc_of`]).
 #[pyfunction]
 pub(super) fn _doc(function: &str) -> PyResult<String> {
-    keyword_function(function).ok_or_else(|| unknown_function(function))?;
-    Ok(doc_of(function))
+    doc_of(function).ok_or_else(|| unknown_function(function))
 }
 
 fn unknown_function(function: &str) -> PyErr {

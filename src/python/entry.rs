@@ -1,6 +1,6 @@
 //! The keyword functions (`solve`, `render`, `design`, `vlocator`) as the module's own C
 //! functions, each with its signature in its docstring (`solve($module, /, *, mu=0.4, ...)`),
-//! which `inspect.signature` and `help` read. The keywords are the settings' declaration,
+//! which `inspect.signature` and `help` read. The keywords are the settings' declarations,
 //! known at import, so the function is made then; pyo3's `#[pyfunction]` fixes a signature
 //! when the crate compiles.
 //!
@@ -59,11 +59,8 @@ pub(super) fn add(
         Some(d) => format!("{k}={d}"),
         None => k.to_string(),
     }));
-    let doc = format!(
-        "{name}({})\n--\n\n{}",
-        params.join(", "),
-        super::docs::doc_of(name)
-    );
+    let doc = super::docs::doc_of(name).expect("a keyword function of FUNCTIONS");
+    let doc = format!("{name}({})\n--\n\n{doc}", params.join(", "));
     // The method's definition lives as long as the module's function: for the process.
     let leak = |text: String| -> &'static std::ffi::CStr {
         Box::leak(
