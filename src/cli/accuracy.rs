@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use clap::{ArgAction, Args};
 use serde::Serialize;
 
-use super::args::{SceneArgs, TableFormat, parse_f64};
+use super::args::{SceneArgs, TableFormat, parse_count, parse_count_usize, parse_f64};
 use super::gallery::{lock_folder, page, typed_command};
 use super::progress::{self, Quiet};
 use crate::atomic::{Output, Set, check_all, write_all};
@@ -78,14 +78,16 @@ pub struct AccuracyArgs {
           default_value = number_text(defaults().converged_step_deg), allow_hyphen_values = true)]
     pub converged_step: f64,
     /// Timed runs per row, 1 to 1000; the median is reported.
-    #[arg(long = flag!(ACCURACY_FLAGS, runs), value_name = "N", default_value_t = defaults().runs, allow_hyphen_values = true)]
+    #[arg(long = flag!(ACCURACY_FLAGS, runs), value_name = "N", default_value_t = defaults().runs, allow_hyphen_values = true,
+          value_parser = parse_count_usize)]
     pub runs: usize,
     /// Tolerance of the converged answers the integration error is measured against.
     #[arg(long = flag!(ACCURACY_FLAGS, converged_rtol), value_name = "RTOL", alias = "reference-rtol", value_parser = parse_f64,
           default_value = number_text(defaults().converged_rtol), allow_hyphen_values = true)]
     pub converged_rtol: f64,
     /// Step limit of every simulation.
-    #[arg(long = flag!(ACCURACY_FLAGS, max_steps), value_name = "N", default_value_t = defaults().max_steps, allow_hyphen_values = true)]
+    #[arg(long = flag!(ACCURACY_FLAGS, max_steps), value_name = "N", default_value_t = defaults().max_steps, allow_hyphen_values = true,
+          value_parser = parse_count)]
     pub max_steps: u64,
     /// Cells per axis of the map whose cost is reported, 2 to 2000; 0 skips it.
     ///
@@ -93,7 +95,7 @@ pub struct AccuracyArgs {
     /// program 40 of its columns (every F at 40 values of mu) by its exact path and 4 by
     /// clarabel, the simulation 20 x 20 cells, and their time is extrapolated.
     #[arg(long = flag!(ACCURACY_FLAGS, cells_per_axis), value_name = "N", default_value_t = MapCostSettings::default().cells_per_axis,
-          allow_hyphen_values = true)]
+          allow_hyphen_values = true, value_parser = parse_count_usize)]
     pub map_cells: usize,
     /// Output format on stdout.
     #[arg(long, value_enum, default_value_t = TableFormat::Text)]

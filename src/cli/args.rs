@@ -7,7 +7,7 @@ use clap::{Args, ValueEnum};
 use crate::config::Config;
 use crate::error::Result;
 use crate::models::ModelKind;
-pub use crate::settings::decl::{parse_count, parse_f64};
+pub use crate::settings::decl::{parse_count, parse_count_usize, parse_f64};
 use crate::settings::flags::{Flags, SceneSet};
 use crate::uncertain::UncertainSet;
 

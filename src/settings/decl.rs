@@ -479,10 +479,29 @@ pub(crate) const fn same(a: &str, b: &str) -> bool {
 /// Parses a count flag: a whole number >= 0, written out (`100000`, not `1e5`), with a message
 /// that says so instead of the standard library's "invalid digit found in string".
 pub fn parse_count(s: &str) -> std::result::Result<u64, String> {
-    s.trim().parse().map_err(|_| {
+    s.trim()
+        .parse()
+        .map_err(|e: std::num::ParseIntError| match e.kind() {
+            std::num::IntErrorKind::PosOverflow => format!(
+                "{} is more than a count can hold ({})",
+                crate::error::cut(s),
+                u64::MAX
+            ),
+            _ => format!(
+                "{} is not a whole number >= 0 (write it out, e.g. 100000 for 1e5)",
+                crate::error::cut(s)
+            ),
+        })
+}
+
+/// [`parse_count`] of a count held as a `usize`.
+pub fn parse_count_usize(s: &str) -> std::result::Result<usize, String> {
+    let n = parse_count(s)?;
+    usize::try_from(n).map_err(|_| {
         format!(
-            "{} is not a whole number >= 0 (write it out, e.g. 100000 for 1e5)",
-            crate::error::cut(s)
+            "{} is more than a count can hold ({})",
+            crate::error::cut(s),
+            usize::MAX
         )
     })
 }
@@ -550,6 +569,24 @@ pub fn float_range_problem(raw: &str, v: f64) -> Option<&'static str> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A count flag's value: a whole number written out; a negative, an exponent, a fraction
+    /// and a number past the count's range each refused with what is wrong with it.
+    #[test]
+    fn a_count_is_a_whole_number_written_out() {
+        assert_eq!(parse_count(" 100000 "), Ok(100_000));
+        assert_eq!(parse_count_usize("0"), Ok(0));
+        for bad in ["-1", "1e3", "2.5", "", "ten"] {
+            let e = parse_count(bad).unwrap_err();
+            assert!(e.contains("is not a whole number >= 0"), "{bad}: {e}");
+            assert!(parse_count_usize(bad).is_err(), "{bad}");
+        }
+        let e = parse_count("99999999999999999999999").unwrap_err();
+        assert!(
+            e.contains("is more than a count can hold (18446744073709551615)"),
+            "{e}"
+        );
+    }
 
     /// `path_is` answers as comparing with the built path does, for every declaration against
     /// every declaration's path and key, and against near misses: a section without its dot,
