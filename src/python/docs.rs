@@ -543,17 +543,58 @@ pub(super) fn add_all(m: &Bound<'_, PyModule>) -> PyResult<()> {
     FUNCTIONS.iter().try_for_each(|f| (f.add)(m))
 }
 
-/// The keyword function `function` of [`FUNCTIONS`].
-fn keyword_function(function: &str) -> Option<(&'static Function, Vec<Keyword>)> {
-    let f = FUNCTIONS.iter().find(|f| f.name == function)?;
-    Some((f, (f.keywords?)()))
+/// A keyword function of [`FUNCTIONS`] as its callers read it: its positional parameters,
+/// its keywords in order with each one's default as Python text (None: required), and its
+/// docstring. Made once for every function, at import: the keywords' docs are made from the
+/// settings' declarations, 570,000 instructions a function, and a keyword given as None
+/// looks its function's names up on every call.
+pub(super) struct Declared {
+    pub(super) positional: Vec<&'static str>,
+    pub(super) keywords: Vec<(&'static str, Option<String>)>,
+    /// Neither positional nor required parameters: a call's keywords go to the function as
+    /// they are.
+    pub(super) bare: bool,
+    /// What it does and returns, then each keyword with its unit, default and valid values.
+    pub(super) doc: String,
+}
+
+/// Keyword function `name` of [`FUNCTIONS`]; None for any other name.
+pub(super) fn keyword_function(name: &str) -> Option<&'static Declared> {
+    static ALL: std::sync::OnceLock<Vec<(&'static str, Declared)>> = std::sync::OnceLock::new();
+    let all = ALL.get_or_init(|| {
+        FUNCTIONS
+            .iter()
+            .filter_map(|f| {
+                let Stub::Keywords { positional, .. } = f.stub else {
+                    return None;
+                };
+                let all = (f.keywords?)();
+                let entries: Vec<&str> = all.iter().map(|k| k.entry.as_str()).collect();
+                let doc = format!(
+                    "{}\nParameters\n----------\n{}\n",
+                    f.intro,
+                    entries.join("\n")
+                );
+                let keywords: Vec<_> = all.into_iter().map(|k| (k.name, k.default)).collect();
+                let bare = positional.is_empty() && keywords.iter().all(|(_, d)| d.is_some());
+                let positional = positional.iter().map(|(n, _)| *n).collect();
+                let declared = Declared {
+                    positional,
+                    keywords,
+                    bare,
+                    doc,
+                };
+                Some((f.name, declared))
+            })
+            .collect()
+    });
+    all.iter().find(|(n, _)| *n == name).map(|(_, d)| d)
 }
 
 /// The names of `function`'s keywords (none for a function without declared keywords).
 pub(super) fn keyword_names(function: &str) -> Vec<&'static str> {
-    keyword_function(function).map_or_else(Vec::new, |(_, all)| {
-        all.into_iter().map(|k| k.name).collect()
-    })
+    keyword_function(function)
+        .map_or_else(Vec::new, |d| d.keywords.iter().map(|(k, _)| *k).collect())
 }
 
 /// The keywords `function` takes ("solve", "render", "design" or "vlocator"), in order: each
@@ -563,7 +604,7 @@ pub(super) fn keyword_names(function: &str) -> Vec<&'static str> {
 #[pyo3(signature = (function = "solve"))]
 pub(super) fn keywords(function: &str) -> PyResult<Vec<&'static str>> {
     keyword_function(function)
-        .map(|(_, all)| all.into_iter().map(|k| k.name).collect())
+        .map(|d| d.keywords.iter().map(|(k, _)| *k).collect())
         .ok_or_else(|| unknown_function(function))
 }
 
@@ -572,74 +613,16 @@ pub(super) fn keywords(function: &str) -> PyResult<Vec<&'static str>> {
 pub(super) fn _functions() -> Vec<(&'static str, Vec<&'static str>)> {
     FUNCTIONS
         .iter()
-        .filter_map(|f| match f.stub {
-            Stub::Keywords { positional, .. } => {
-                Some((f.name, positional.iter().map(|(n, _)| *n).collect()))
-            }
-            Stub::Plain(_) => None,
-        })
+        .filter_map(|f| Some((f.name, keyword_function(f.name)?.positional.clone())))
         .collect()
 }
 
-/// A keyword function's parameters: its positional ones, and its keywords in order with each
-/// one's default as Python text (None: required); made once, at import (the keywords' docs
-/// are made from the settings' declarations, 570,000 instructions a function).
-pub(super) struct Parameters {
-    pub(super) positional: Vec<&'static str>,
-    pub(super) keywords: Vec<(&'static str, Option<String>)>,
-    /// Neither positional nor required parameters: a call's keywords go to the function as
-    /// they are.
-    pub(super) bare: bool,
-}
-
-/// The parameters of keyword function `name` of [`FUNCTIONS`].
-pub(super) fn parameters(name: &str) -> &'static Parameters {
-    static ALL: std::sync::OnceLock<Vec<(&'static str, Parameters)>> = std::sync::OnceLock::new();
-    let all = ALL.get_or_init(|| {
-        FUNCTIONS
-            .iter()
-            .filter_map(|f| {
-                let Stub::Keywords { positional, .. } = f.stub else {
-                    return None;
-                };
-                let keywords: Vec<_> = (f.keywords?)()
-                    .into_iter()
-                    .map(|k| (k.name, k.default))
-                    .collect();
-                let bare = positional.is_empty() && keywords.iter().all(|(_, d)| d.is_some());
-                let positional = positional.iter().map(|(n, _)| *n).collect();
-                Some((
-                    f.name,
-                    Parameters {
-                        positional,
-                        keywords,
-                        bare,
-                    },
-                ))
-            })
-            .collect()
-    });
-    let found = all.iter().find(|(n, _)| *n == name);
-    &found.expect("a keyword function of FUNCTIONS").1
-}
-
-/// The docstring of keyword function `name` of [`FUNCTIONS`] after its signature: what it does
-/// and returns, then each keyword with its unit, default and valid values. None for a name
-/// that is not a keyword function's.
-pub(super) fn doc_of(name: &str) -> Option<String> {
-    let (f, all) = keyword_function(name)?;
-    let entries: Vec<String> = all.into_iter().map(|k| k.entry).collect();
-    Some(format!(
-        "{}\nParameters\n----------\n{}\n",
-        f.intro,
-        entries.join("\n")
-    ))
-}
-
-/// The docstring of `function` ([`doc_of`]).
+/// The docstring of `function` ([`Declared::doc`]).
 #[pyfunction]
 pub(super) fn _doc(function: &str) -> PyResult<String> {
-    doc_of(function).ok_or_else(|| unknown_function(function))
+    keyword_function(function)
+        .map(|d| d.doc.clone())
+        .ok_or_else(|| unknown_function(function))
 }
 
 fn unknown_function(function: &str) -> PyErr {

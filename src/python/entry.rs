@@ -51,7 +51,7 @@ pub(super) fn add(
     name: &'static str,
     entry: ffi::PyCFunctionWithKeywords,
 ) -> PyResult<()> {
-    let declared = super::docs::parameters(name);
+    let declared = super::docs::keyword_function(name).expect("a keyword function of FUNCTIONS");
     let mut params = vec!["$module".to_string(), "/".to_string()];
     params.extend(declared.positional.iter().map(|p| p.to_string()));
     params.push("*".into());
@@ -59,8 +59,7 @@ pub(super) fn add(
         Some(d) => format!("{k}={d}"),
         None => k.to_string(),
     }));
-    let doc = super::docs::doc_of(name).expect("a keyword function of FUNCTIONS");
-    let doc = format!("{name}({})\n--\n\n{doc}", params.join(", "));
+    let doc = format!("{name}({})\n--\n\n{}", params.join(", "), declared.doc);
     // The method's definition lives as long as the module's function: for the process.
     let leak = |text: String| -> &'static std::ffi::CStr {
         Box::leak(
@@ -122,7 +121,7 @@ fn arguments<'py>(
     args: Bound<'py, PyTuple>,
     kwargs: Option<Bound<'py, PyDict>>,
 ) -> PyResult<Arguments<'py>> {
-    let declared = super::docs::parameters(name);
+    let declared = super::docs::keyword_function(name).expect("a keyword function of FUNCTIONS");
     if declared.bare && args.is_empty() {
         // Keywords alone, to a function without positional or required ones (solve in a
         // loop): nothing to move or check.

@@ -279,7 +279,7 @@ pub(super) fn given<'py>(
         let key: String = k.extract()?;
         if v.is_none() {
             // Only a None needs the declared names (the rest are checked as the question is
-            // built): they are made from the settings' docs, 570,000 instructions a call.
+            // built).
             let listed = super::docs::keyword_names(function);
             if !listed.contains(&key.as_str()) {
                 let known = listed.iter().copied();
