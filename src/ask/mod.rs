@@ -53,7 +53,7 @@ pub(crate) use keywords::nearest;
 pub use read_off::ReadOff;
 pub use render::{RenderAnswer, RenderQuestion};
 pub use solve::{
-    BoxAnswer, BoxRecord, DistAsk, DynamicsRecord, PushAnswer, PushRecord, SolveAnswer,
+    BoxAnswer, BoxRecord, DistAsk, DynamicsRecord, Models, PushAnswer, PushRecord, SolveAnswer,
     SolveQuestion, Trace,
 };
 pub(crate) use solve::{DIST_KEYS, MODEL_SAMPLES, STATICS_SAMPLES};

@@ -49,6 +49,10 @@ const DEFAULT_QUANTILES: [f64; 3] = [0.05, 0.5, 0.95];
 /// jam (a few ms).
 const SERIES_DT_S: f64 = 2e-4;
 
+/// The models a question asks, in the order they answer: each at most once, so held without
+/// an allocation.
+pub type Models = SmallVec<[ModelKind; ModelKind::ALL.len()]>;
+
 /// What is asked of a distributed input: probabilities, quantiles, and the Monte Carlo's
 /// samples and seed where the answer is not exact.
 #[derive(Debug, Clone, PartialEq)]
@@ -125,9 +129,8 @@ pub struct SolveQuestion {
     pub config: Config,
     /// The scene's ranges and distributions (empty: one push).
     pub uncertain: UncertainSet,
-    /// The models, in the order they answer (default: the statics); each at most once, held
-    /// without an allocation.
-    pub models: SmallVec<[ModelKind; 3]>,
+    /// The models, in the order they answer (default: the statics).
+    pub models: Models,
     /// What to ask of a distributed input (ignored without one).
     pub distribution: DistAsk,
     /// Record clarabel's convergence trace at the min-norm jam (the paper's Fig. 4).
@@ -468,7 +471,7 @@ impl TryFrom<Keywords> for SolveQuestion {
 }
 
 /// The models named `name`: one of the port's (`min_norm` spelt either way), or `all`.
-fn models_named(name: &str) -> Result<SmallVec<[ModelKind; 3]>> {
+fn models_named(name: &str) -> Result<Models> {
     if name == "all" {
         return Ok(ModelKind::ALL.into());
     }

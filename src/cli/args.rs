@@ -72,7 +72,7 @@ pub enum ModelChoice {
 
 impl ModelChoice {
     /// The models to run, in the order they are printed.
-    pub fn models(self) -> smallvec::SmallVec<[ModelKind; 3]> {
+    pub fn models(self) -> crate::ask::Models {
         match self {
             ModelChoice::One(k) => smallvec::smallvec![k],
             ModelChoice::All => ModelKind::ALL.into(),
