@@ -218,7 +218,11 @@ fn a_negative_count_or_probability_names_its_flag() {
     }
     // A count says what a count is, not the standard library's "invalid digit".
     let o = run(&["accuracy", "--runs", "-1"]);
-    assert!(stderr(&o).contains("-1 is not a whole number >= 0"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("-1 is not a whole number >= 0"),
+        "{}",
+        stderr(&o)
+    );
     // A negative position is a question with an answer (no jam lies before it).
     let o = run(&["solve", "--mu", "normal(0.2,0.03)", "--before", "-1e-3"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
