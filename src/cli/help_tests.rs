@@ -123,6 +123,46 @@ fn check_vlocator_geometry(long: &str, value: &str) -> Result<(), String> {
     }
 }
 
+/// `--rtol -1e-3` was read as the short flags `-1` and `-e` ("unexpected argument '-1'"):
+/// clap's negative numbers have no exponent. Every flag that takes a number (or a declared
+/// setting's value) takes a value that starts with a hyphen, so that its own check refuses it
+/// naming the flag; a flag added without it fails here.
+#[test]
+fn every_number_flag_takes_a_negative_number_written_with_an_exponent() {
+    use std::any::TypeId;
+    let numbers = [
+        TypeId::of::<f64>(),
+        TypeId::of::<u64>(),
+        TypeId::of::<usize>(),
+        TypeId::of::<toml::Value>(),
+    ];
+    let cmd = Cli::command();
+    let mut checked = 0;
+    for sub in cmd.get_subcommands() {
+        for arg in sub.get_arguments() {
+            let Some(long) = arg.get_long() else { continue };
+            let number = numbers
+                .iter()
+                .any(|t| arg.get_value_parser().type_id() == *t);
+            if !arg.get_action().takes_values() || !arg.get_possible_values().is_empty() || !number
+            {
+                continue;
+            }
+            let mut words = call(sub.get_name());
+            words.extend([format!("--{long}"), "-1e-3".into()]);
+            if let Err(e) = Cli::try_parse_from(&words) {
+                assert_ne!(
+                    e.kind(),
+                    clap::error::ErrorKind::UnknownArgument,
+                    "{words:?}: {e}"
+                );
+            }
+            checked += 1;
+        }
+    }
+    assert!(checked > 50, "{checked} number flags checked");
+}
+
 /// Help texts said `[default: ..]` by hand beside the code's `Default`, and could drift from it
 /// (`solve -h` once dropped the `--mu` default; the accuracy report's flags were hand-written).
 /// Every default a help text documents is checked against the code: a declared setting's

@@ -147,15 +147,15 @@ fn arg(d: &'static Decl, heading: Option<&'static str>, takers: &str) -> Arg {
         Kind::Choice(names) => a.value_name(value_name(d)).value_parser(
             PossibleValuesParser::new(names.iter().copied()).map(toml::Value::String),
         ),
-        Kind::Count => {
-            a.value_name(value_name(d))
-                .value_parser(|s: &str| -> Result<toml::Value, String> {
-                    let n = parse_count(s)?;
-                    i64::try_from(n)
-                        .map(toml::Value::Integer)
-                        .map_err(|_| format!("{n} is too large"))
-                })
-        }
+        Kind::Count => a
+            .value_name(value_name(d))
+            .allow_hyphen_values(true)
+            .value_parser(|s: &str| -> Result<toml::Value, String> {
+                let n = parse_count(s)?;
+                i64::try_from(n)
+                    .map(toml::Value::Integer)
+                    .map_err(|_| format!("{n} is too large"))
+            }),
         // `-90:-45` is a value, not a flag: clap's negative numbers are single numbers only.
         _ if d.uncertain => a
             .value_name(value_name(d))
