@@ -109,11 +109,13 @@ fn the_python_build_shares_every_crate_with_the_test_build() {
 }
 
 /// Each package of the build that `args` selects (`cargo tree`), with the feature lists it is
-/// compiled with (two when it is both a build-time and a run-time dependency).
+/// compiled with (two when it is both a build-time and a run-time dependency). Not offline:
+/// on a fresh machine the test build has not downloaded the crates only the Python build uses
+/// (ndarray), and `cargo tree` reads their manifests.
 fn features(args: &[&str]) -> BTreeMap<String, BTreeSet<String>> {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let out = Command::new(cargo)
-        .args(["tree", "--offline", "--prefix", "none", "--no-dedupe"])
+        .args(["tree", "--locked", "--prefix", "none", "--no-dedupe"])
         .args(["--format", "{p}|{f}", "--manifest-path"])
         .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("Cargo.toml"))
         .args(args)
