@@ -406,7 +406,7 @@ pub(super) const FUNCTIONS: &[Function] = &[
     Function {
         name: "render",
         add: keyword_native!("render", |py, given, kw| {
-            let chart = super::charts::render(py, given[0].extract()?, kw)?;
+            let chart = super::charts::render(py, given[0].extract()?, kw.dict(py)?.as_ref())?;
             Ok(Bound::new(py, chart)?.into_any())
         }),
         keywords: Some(render_keywords),
@@ -419,7 +419,7 @@ pub(super) const FUNCTIONS: &[Function] = &[
     Function {
         name: "design",
         add: keyword_native!("design", |py, _, kw| {
-            Ok(Bound::new(py, super::reports::design(py, kw)?)?.into_any())
+            Ok(Bound::new(py, super::reports::design(py, kw.dict(py)?.as_ref())?)?.into_any())
         }),
         keywords: Some(design_keywords),
         intro: DESIGN,
@@ -431,7 +431,7 @@ pub(super) const FUNCTIONS: &[Function] = &[
     Function {
         name: "vlocator",
         add: keyword_native!("vlocator", |py, _, kw| {
-            Ok(Bound::new(py, super::reports::vlocator(py, kw)?)?.into_any())
+            Ok(Bound::new(py, super::reports::vlocator(py, kw.dict(py)?.as_ref())?)?.into_any())
         }),
         keywords: Some(vlocator_keywords),
         intro: VLOCATOR,

@@ -4,42 +4,82 @@
 //! known at import, so the function is made then; pyo3's `#[pyfunction]` fixes a signature
 //! when the crate compiles.
 //!
+//! Each takes the vectorcall convention (`METH_FASTCALL | METH_KEYWORDS`, in the stable ABI
+//! from CPython 3.10): the call's values arrive as an array beside a tuple of their names, and
+//! no dict is made for a scalar `solve` (the dict, made by the interpreter for the older
+//! convention, was a fifth of the call). pyo3's trampoline, the one its `#[pyfunction]`s go
+//! through, counts the thread as attached and raises a panic as `PanicException`.
+//!
 //! A Python wrapper carrying the signature cost a scalar `solve` a tenth of its time (a frame
 //! and a dict of the keywords). A function made with `PyCFunction::new_closure` pickles badly
 //! (its `__self__` is a capsule, and Dask ships functions by pickling); these have the module
 //! as `__self__` and pickle by name.
 
-use std::any::Any;
 use std::ffi::CString;
-use std::panic::{self, AssertUnwindSafe};
 
 use pyo3::exceptions::PyTypeError;
 use pyo3::ffi;
-use pyo3::panic::PanicException;
 use pyo3::prelude::*;
-use pyo3::types::{PyCFunction, PyDict, PyTuple};
+use pyo3::types::{PyCFunction, PyDict, PyString, PyTuple};
+use smallvec::SmallVec;
 
 /// What a keyword function does with its positional arguments (in its declared order) and its
 /// keywords (those positionals given by keyword taken out).
-pub(super) type Body = for<'py> fn(
-    Python<'py>,
-    Vec<Bound<'py, PyAny>>,
-    Option<&Bound<'py, PyDict>>,
-) -> PyResult<Bound<'py, PyAny>>;
+pub(super) type Body =
+    for<'py> fn(Python<'py>, Vec<Bound<'py, PyAny>>, &Kwargs<'py>) -> PyResult<Bound<'py, PyAny>>;
 
-/// The C function of keyword function `name`: `body` behind [`call`].
+/// A call's keywords, in the order given: each name (a `str`) and its value.
+pub(super) struct Kwargs<'py>(SmallVec<[(Bound<'py, PyString>, Bound<'py, PyAny>); 8]>);
+
+impl<'py> Kwargs<'py> {
+    /// The names and values, in the order given.
+    pub(super) fn pairs(&self) -> &[(Bound<'py, PyString>, Bound<'py, PyAny>)] {
+        &self.0
+    }
+
+    /// The keywords as a new dict, None when there are none: what a `def`'s `**kwargs` holds.
+    pub(super) fn dict(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        if self.0.is_empty() {
+            return Ok(None);
+        }
+        let dict = PyDict::new(py);
+        for (k, v) in &self.0 {
+            dict.set_item(k, v)?;
+        }
+        Ok(Some(dict))
+    }
+
+    /// Whether keyword `name` was given.
+    fn has(&self, name: &str) -> bool {
+        self.0.iter().any(|(k, _)| k == name)
+    }
+}
+
+/// The C function of keyword function `name`: `body` behind [`call`], through pyo3's
+/// trampoline.
 macro_rules! keyword_native {
     ($name:literal, $body:expr) => {{
-        unsafe extern "C" fn entry(
+        /// # Safety
+        /// CPython calls a `METH_FASTCALL | METH_KEYWORDS` function with its values' array
+        /// (`nargs` positional, then one per name of `kwnames`, a tuple or NULL), borrowed,
+        /// the thread attached.
+        unsafe fn run(
+            py: pyo3::Python<'_>,
             _module: *mut pyo3::ffi::PyObject,
-            args: *mut pyo3::ffi::PyObject,
-            kwargs: *mut pyo3::ffi::PyObject,
-        ) -> *mut pyo3::ffi::PyObject {
-            // SAFETY: CPython calls a METH_VARARGS | METH_KEYWORDS function with its
-            // arguments' tuple and their dict or NULL, borrowed, the thread attached.
-            unsafe { super::entry::call($name, $body, args, kwargs) }
+            args: *const *mut pyo3::ffi::PyObject,
+            nargs: pyo3::ffi::Py_ssize_t,
+            kwnames: *mut pyo3::ffi::PyObject,
+        ) -> pyo3::PyResult<*mut pyo3::ffi::PyObject> {
+            // SAFETY: the caller's promise, which `call` asks.
+            unsafe { super::entry::call(py, $name, $body, args, nargs, kwnames) }
         }
-        |m: &Bound<'_, PyModule>| super::entry::add(m, $name, entry)
+        |m: &Bound<'_, PyModule>| {
+            let entry = pyo3::impl_::trampoline::get_trampoline_function!(
+                fastcall_cfunction_with_keywords,
+                run
+            );
+            super::entry::add(m, $name, entry)
+        }
     }};
 }
 pub(super) use keyword_native;
@@ -49,7 +89,7 @@ pub(super) use keyword_native;
 pub(super) fn add(
     m: &Bound<'_, PyModule>,
     name: &'static str,
-    entry: ffi::PyCFunctionWithKeywords,
+    entry: ffi::PyCFunctionFastWithKeywords,
 ) -> PyResult<()> {
     let declared = super::docs::keyword_function(name).expect("a keyword function of FUNCTIONS");
     let mut params = vec!["$module".to_string(), "/".to_string()];
@@ -61,86 +101,92 @@ pub(super) fn add(
     }));
     let doc = format!("{name}({})\n--\n\n{}", params.join(", "), declared.doc);
     // The method's definition lives as long as the module's function: for the process.
-    let leak = |text: String| -> &'static std::ffi::CStr {
+    let leak = |text: String| -> *const std::ffi::c_char {
         Box::leak(
             CString::new(text)
                 .expect("no NUL in a name or a doc")
                 .into_boxed_c_str(),
         )
+        .as_ptr()
     };
-    let f = PyCFunction::new_with_keywords(m.py(), entry, leak(name.into()), leak(doc), Some(m))?;
+    let def = Box::leak(Box::new(ffi::PyMethodDef {
+        ml_name: leak(name.into()),
+        ml_meth: ffi::PyMethodDefPointer {
+            PyCFunctionFastWithKeywords: entry,
+        },
+        ml_flags: ffi::METH_FASTCALL | ffi::METH_KEYWORDS,
+        ml_doc: leak(doc),
+    }));
+    let module_name = m.name()?;
+    // SAFETY: `def` lives for the process; the module and its name are live objects.
+    let f = unsafe {
+        Bound::from_owned_ptr_or_err(
+            m.py(),
+            ffi::PyCFunction_NewEx(def, m.as_ptr(), module_name.as_ptr()),
+        )?
+    }
+    .cast_into::<PyCFunction>()?;
     m.add(name, f)
 }
 
-/// Keyword function `name` called with `args` and `kwargs` as CPython passes them: its
-/// positional arguments (given by position or by keyword, none more) and required keywords
-/// checked as Python checks a `def`'s, then `body`; its error raised, and a panic raised as
-/// pyo3's `PanicException`, never unwound into the interpreter.
+/// Keyword function `name` called as CPython passes a vectorcall: its positional arguments
+/// (given by position or by keyword, none more) and required keywords checked as Python
+/// checks a `def`'s, then `body`.
 ///
 /// # Safety
-/// `args` is a tuple and `kwargs` a dict or NULL, both borrowed for the call, and the calling
-/// thread is attached to the interpreter.
+/// `args` holds `nargs` positional values and then one value per name of `kwnames` (a tuple
+/// of `str`, or NULL for none), all borrowed for the call, and the calling thread is attached
+/// to the interpreter.
 pub(super) unsafe fn call(
+    py: Python<'_>,
     name: &'static str,
     body: Body,
-    args: *mut ffi::PyObject,
-    kwargs: *mut ffi::PyObject,
-) -> *mut ffi::PyObject {
-    Python::attach(|py| {
-        let run = || -> PyResult<Bound<'_, PyAny>> {
-            // SAFETY: the caller's promise.
-            let args = unsafe { Bound::from_borrowed_ptr(py, args) }.cast_into::<PyTuple>()?;
-            let kwargs = unsafe { Bound::from_borrowed_ptr_or_opt(py, kwargs) }
-                .map(|k| k.cast_into::<PyDict>())
-                .transpose()?;
-            let (given, kwargs) = arguments(name, args, kwargs)?;
-            body(py, given, kwargs.as_ref())
-        };
-        match panic::catch_unwind(AssertUnwindSafe(run)) {
-            Ok(Ok(answer)) => answer.into_ptr(),
-            Ok(Err(e)) => {
-                e.restore(py);
-                std::ptr::null_mut()
-            }
-            Err(payload) => {
-                PanicException::new_err(panic_text(payload.as_ref())).restore(py);
-                std::ptr::null_mut()
-            }
+    args: *const *mut ffi::PyObject,
+    nargs: ffi::Py_ssize_t,
+    kwnames: *mut ffi::PyObject,
+) -> PyResult<*mut ffi::PyObject> {
+    // SAFETY: the caller's promise.
+    let names = unsafe { Bound::from_borrowed_ptr_or_opt(py, kwnames) }
+        .map(|k| k.cast_into::<PyTuple>())
+        .transpose()?;
+    let nargs = usize::try_from(nargs).unwrap_or(0);
+    let count = nargs + names.as_ref().map_or(0, |n| n.len());
+    let values: &[*mut ffi::PyObject] = match count {
+        0 => &[],
+        // SAFETY: the caller's promise: `count` values from `args`.
+        _ => unsafe { std::slice::from_raw_parts(args, count) },
+    };
+    // SAFETY: each value is a live object borrowed for the call.
+    let value = |p: *mut ffi::PyObject| unsafe { Bound::from_borrowed_ptr(py, p) };
+    let mut kwargs = Kwargs(SmallVec::new());
+    if let Some(names) = &names {
+        for (k, v) in names.iter().zip(&values[nargs..]) {
+            kwargs.0.push((k.cast_into::<PyString>()?, value(*v)));
         }
-    })
+    }
+    let positional: Vec<Bound<'_, PyAny>> = values[..nargs].iter().map(|p| value(*p)).collect();
+    let (given, kwargs) = arguments(name, positional, kwargs)?;
+    Ok(body(py, given, &kwargs)?.into_ptr())
 }
 
-/// A call's positional arguments and its keywords, as a [`Body`] takes them.
-type Arguments<'py> = (Vec<Bound<'py, PyAny>>, Option<Bound<'py, PyDict>>);
-
 /// The positional arguments of a call of `name`, those given by keyword taken out of its
-/// keywords (a copy: the caller's dict is not the function's to change); its mistakes refused
-/// with Python's words.
+/// keywords; its mistakes refused with Python's words.
 fn arguments<'py>(
     name: &str,
-    args: Bound<'py, PyTuple>,
-    kwargs: Option<Bound<'py, PyDict>>,
-) -> PyResult<Arguments<'py>> {
+    mut given: Vec<Bound<'py, PyAny>>,
+    mut kwargs: Kwargs<'py>,
+) -> PyResult<(Vec<Bound<'py, PyAny>>, Kwargs<'py>)> {
     let declared = super::docs::keyword_function(name).expect("a keyword function of FUNCTIONS");
-    if declared.bare && args.is_empty() {
+    if declared.bare && given.is_empty() {
         // Keywords alone, to a function without positional or required ones (solve in a
         // loop): nothing to move or check.
-        return Ok((Vec::new(), kwargs));
+        return Ok((given, kwargs));
     }
     let (positional, keywords) = (&declared.positional, &declared.keywords);
-    let mut given: Vec<Bound<'py, PyAny>> = args.iter().collect();
-    let mut kwargs = kwargs;
-    if given.len() < positional.len()
-        && let Some(kw) = &kwargs
-    {
-        let kw = kw.copy()?;
-        for p in &positional[given.len()..] {
-            if let Some(v) = kw.get_item(p)? {
-                kw.del_item(p)?;
-                given.push(v);
-            }
+    for p in positional.iter().skip(given.len()) {
+        if let Some(i) = kwargs.0.iter().position(|(k, _)| k == p) {
+            given.push(kwargs.0.remove(i).1);
         }
-        kwargs = Some(kw);
     }
     if given.len() != positional.len() {
         let takes = match positional.len() {
@@ -157,26 +203,11 @@ fn arguments<'py>(
         )));
     }
     for (k, _) in keywords.iter().filter(|(_, d)| d.is_none()) {
-        if !kwargs
-            .as_ref()
-            .is_some_and(|kw| kw.contains(k).unwrap_or(false))
-        {
+        if !kwargs.has(k) {
             return Err(PyTypeError::new_err(format!(
                 "{name}() missing required keyword argument: '{k}'"
             )));
         }
     }
     Ok((given, kwargs))
-}
-
-/// A panic's message, as pyo3 words it.
-fn panic_text(payload: &(dyn Any + Send)) -> String {
-    match (
-        payload.downcast_ref::<String>(),
-        payload.downcast_ref::<&str>(),
-    ) {
-        (Some(s), _) => s.clone(),
-        (None, Some(s)) => s.to_string(),
-        (None, None) => "panic from Rust code".into(),
-    }
 }

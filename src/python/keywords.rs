@@ -219,21 +219,19 @@ pub(super) type Numbers = SmallVec<[(&'static str, f64); 12]>;
 /// a numpy float64 too: what [`given`] reads as one number), as the library's
 /// [`crate::ask::SolveQuestion::from_numbers`] takes them; None where any is anything else (a
 /// None, a bool, a name, a range, an array...), which [`given`] reads.
-pub(super) fn scene_numbers(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Option<Numbers>> {
+pub(super) fn scene_numbers(
+    kwargs: &[(Bound<'_, PyString>, Bound<'_, PyAny>)],
+) -> PyResult<Option<Numbers>> {
     let mut out = SmallVec::new();
-    let Some(kwargs) = kwargs else {
-        return Ok(Some(out));
-    };
-    for (k, v) in kwargs.iter() {
+    for (k, v) in kwargs {
         let number = v.is_instance_of::<PyFloat>()
             || (v.is_instance_of::<PyInt>() && !v.is_instance_of::<PyBool>());
-        let interned = scene_keys(kwargs.py())
+        let interned = scene_keys(k.py())
             .iter()
             .find(|(s, _)| s.as_ptr() == k.as_ptr());
-        let param = match (interned, k.cast::<PyString>()) {
-            (Some(&(_, p)), _) => Some(p),
-            (None, Ok(key)) => scene_param(&key.to_cow()?),
-            (None, Err(_)) => None,
+        let param = match interned {
+            Some(&(_, p)) => Some(p),
+            None => scene_param(&k.to_cow()?),
         };
         let (true, Some(param)) = (number, param) else {
             return Ok(None);

@@ -11,9 +11,9 @@ use numpy::{
 };
 use pyo3::exceptions::{PyUserWarning, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
 
 use super::answers::{BoxAnswer, Comparison, Solution, Solutions, shape_text};
+use super::entry::Kwargs;
 use super::keywords::{self, error, refused};
 use crate::ask::{Flow, SolveAnswer, SolveQuestion, Words};
 use crate::models::columns::{self, Answers, Finished, Pushes};
@@ -29,17 +29,16 @@ const POLL: Duration = Duration::from_millis(50);
 const WATCHED_STATICS: usize = 1 << 22;
 
 /// `jamchart.solve(**keywords)`: see the package's docs (`help(jamchart.solve)`).
-pub(super) fn solve<'py>(
-    py: Python<'py>,
-    keywords: Option<&Bound<'py, PyDict>>,
-) -> PyResult<Bound<'py, PyAny>> {
+pub(super) fn solve<'py>(py: Python<'py>, kwargs: &Kwargs<'py>) -> PyResult<Bound<'py, PyAny>> {
     // Numbers of the scene alone (the common call, often in a loop): the library reads them
     // without a keyword map.
-    if let Some(numbers) = keywords::scene_numbers(keywords)? {
+    if let Some(numbers) = keywords::scene_numbers(kwargs.pairs())? {
         let question = SolveQuestion::from_numbers(&numbers).map_err(|e| refused("solve", e))?;
         warn(py, question.warnings(Words::Keys))?;
         return one_push(py, &question, ModelKind::Statics);
     }
+    let keywords = kwargs.dict(py)?;
+    let keywords = keywords.as_ref();
     let given = keywords::given(py, "solve", keywords, true, &["before_mm", "quantiles"])?;
     let scalars: Vec<(Param, f64)> = given
         .keywords
