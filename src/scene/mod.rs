@@ -337,10 +337,17 @@ pub fn contact_distance_mm(radius_mm: f64, offset_mm: f64, theta: f64) -> f64 {
 /// angle 90 deg, where r cot(45 deg) + h cot(90 deg) = r = 10 mm. An angle that is not a
 /// right angle keeps the bits it had, so no chart moves.
 pub(crate) fn sin_cos_deg(deg: f64) -> (f64, f64) {
-    if deg % 90.0 != 0.0 {
+    // A whole number k of right angles: deg / 90 is then exact, and so is 90 k below 2^53 (a
+    // product, where fmod's remainder is a loop in libm); beyond, the remainder decides.
+    let k = (deg / 90.0).round();
+    let quarter = match k.abs() <= 1e14 {
+        true => (k * 90.0 == deg).then(|| (k as i64).rem_euclid(4)),
+        false => (deg % 90.0 == 0.0).then(|| k.rem_euclid(4.0) as i64),
+    };
+    let Some(quarter) = quarter else {
         return deg.to_radians().sin_cos();
-    }
-    match (deg / 90.0).rem_euclid(4.0) as u8 {
+    };
+    match quarter {
         0 => (0.0, 1.0),
         1 => (1.0, 0.0),
         2 => (0.0, -1.0),
@@ -388,6 +395,55 @@ choice! {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The right angles are told by a product, not a remainder: every angle is taken as a
+    /// whole number of right angles exactly where `deg % 90 == 0`, and gets the same sine and
+    /// cosine as the remainder's rule gave, near the limits of a double's integers too.
+    #[test]
+    fn a_right_angle_is_told_as_the_remainder_tells_it() {
+        let by_remainder = |deg: f64| -> (f64, f64) {
+            if deg % 90.0 != 0.0 {
+                return deg.to_radians().sin_cos();
+            }
+            match (deg / 90.0).rem_euclid(4.0) as u8 {
+                0 => (0.0, 1.0),
+                1 => (1.0, 0.0),
+                2 => (0.0, -1.0),
+                _ => (-1.0, 0.0),
+            }
+        };
+        let mut angles = vec![
+            0.0, -0.0, 90.0, -90.0, 180.0, 270.0, 360.0, 450.0, -630.0, 45.0,
+        ];
+        angles.extend([
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MAX,
+            f64::MIN,
+        ]);
+        angles.extend([
+            1e-300,
+            90.0 + 1e-13,
+            9e15,
+            9.0e15 + 2.0,
+            9.1e15,
+            1e16,
+            1e17 + 16.0,
+        ]);
+        for k in [1e13, 1e14, 1e14 + 1.0, 1e15 - 1.0, 2f64.powi(53) / 90.0] {
+            let k = k.round();
+            angles.extend([90.0 * k, 90.0 * k + 1.0, 90.0 * (k + 1.0), -90.0 * k]);
+        }
+        angles.extend((-2000..2000).map(|i| f64::from(i) * 0.5));
+        for deg in angles {
+            let (ours, theirs) = (sin_cos_deg(deg), by_remainder(deg));
+            assert!(
+                ours.0.to_bits() == theirs.0.to_bits() && ours.1.to_bits() == theirs.1.to_bits(),
+                "{deg:e}: {ours:?} against {theirs:?}"
+            );
+        }
+    }
 
     /// `solve --mass 1e308` warned of "a steel bar of this radius inf m long": rounding the
     /// bar's length to 0.1 m overflowed (and on a thin part the length itself does). It gives
