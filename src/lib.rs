@@ -185,7 +185,9 @@ pub mod guide {}
 pub use config::Config;
 pub use error::{Error, Fault, Refusal, Result};
 pub use limits::Budget;
-pub use models::{Detail, ModelKind, ModelSpec, OutsideModel, Solution, solve, solve_column};
+pub use models::{
+    Detail, ModelKind, ModelSpec, Outcome, OutsideModel, Solution, solve, solve_column,
+};
 pub use scene::{JamStatus, Param, SceneParams};
 pub use settings::{Numbers, SettingDoc, documented as settings_documented};
 

@@ -3,7 +3,7 @@
 //! document for the same inputs, so every face answers alike.
 
 use jamchart::Error;
-use jamchart::ask::{DesignQuestion, SolveQuestion, VlocatorQuestion, Words};
+use jamchart::ask::{DesignQuestion, SolveAnswer, SolveQuestion, VlocatorQuestion, Words};
 
 use crate::common::cli::{SHAFT, json_of, timeless};
 
@@ -202,7 +202,8 @@ fn a_question_of_numbers_is_the_keyword_maps_question() {
         1e-300,
         179.9,
     ];
-    let same = |numbers: &[(&str, f64)]| {
+    let mut outcomes = 0;
+    let mut same = |numbers: &[(&str, f64)]| {
         let fast = SolveQuestion::from_numbers(numbers);
         let pairs = numbers
             .iter()
@@ -219,6 +220,22 @@ fn a_question_of_numbers_is_the_keyword_maps_question() {
                     Err(e) => format!("refused: {e}"),
                 };
                 assert_eq!(answer(a), answer(b), "{numbers:?}");
+                // The outcome a face shows before the record is the record's, or the same
+                // refusal.
+                match (a.outcome(), a.answer()) {
+                    (Ok(Some(o)), Ok(SolveAnswer::Push(full))) => {
+                        let r = &full.results[0].solution;
+                        let bits = |x: Option<f64>| x.map(f64::to_bits);
+                        assert_eq!(
+                            (o.model, o.status, bits(o.theta_jam_deg), bits(o.x_jam_mm)),
+                            (r.model, r.status, bits(r.theta_jam_deg), bits(r.x_jam_mm)),
+                            "{numbers:?}"
+                        );
+                        outcomes += 1;
+                    }
+                    (Err(e), Err(f)) => assert_eq!(e.to_string(), f.to_string(), "{numbers:?}"),
+                    (o, full) => panic!("{numbers:?}: outcome {o:?}, answer {full:?}"),
+                }
                 assert_eq!(
                     a.warnings(Words::Keys),
                     b.warnings(Words::Keys),
@@ -266,4 +283,5 @@ fn a_question_of_numbers_is_the_keyword_maps_question() {
     }
     // The comparisons answered questions, not only refusals.
     assert!(answered > 1000, "{answered} questions answered");
+    assert!(outcomes > 1000, "{outcomes} outcomes compared");
 }

@@ -11,7 +11,7 @@ use crate::config::Config;
 use crate::dynamics::{DynamicsParams, DynamicsSolution};
 use crate::error::{Error, Result};
 use crate::minnorm::qp::{HoldStatus, TracePoint};
-use crate::models::{self, Detail, ModelKind, ModelSpec, Solution};
+use crate::models::{self, Detail, ModelKind, ModelSpec, Outcome, Solution};
 use crate::scene::SceneParams;
 use crate::settings::Decl;
 use crate::uncertain::Flow;
@@ -315,6 +315,26 @@ impl SolveQuestion {
             names.join(", "),
             if names.len() == 1 { "has" } else { "have" }
         ))
+    }
+
+    /// The outcome of the question's one answer, where it is known without the answer's
+    /// record: one push, asked of one model that gives its outcome alone
+    /// ([`crate::models::outcome`]: the closed form). Its model, status, theta_jam and x_jam
+    /// are those of [`SolveQuestion::answer`]'s record to the bit, and a question that
+    /// `answer` refuses is refused; a face that shows the record asks `answer` when it is
+    /// read. None for any other question.
+    pub fn outcome(&self) -> Result<Option<Outcome>> {
+        self.check()?;
+        let [kind] = self.models[..] else {
+            return Ok(None);
+        };
+        if !self.uncertain.is_empty() || self.series.is_some() {
+            return Ok(None);
+        }
+        models::outcome(
+            &kind.with(&self.config.min_norm, &self.config.dynamics),
+            &self.config.scene,
+        )
     }
 
     /// Answers the question.

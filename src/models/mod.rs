@@ -224,6 +224,20 @@ pub enum Detail {
     Outside(OutsideModel),
 }
 
+/// What one push comes to, in the fields every model shares: a [`Solution`] without its
+/// detail or its time.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outcome {
+    /// The model that answered.
+    pub model: ModelKind,
+    /// Outcome of the push.
+    pub status: JamStatus,
+    /// Palm angle at the jam in deg (None where the model gives none).
+    pub theta_jam_deg: Option<f64>,
+    /// Disc position at the jam in mm (None where the model gives none).
+    pub x_jam_mm: Option<f64>,
+}
+
 /// One model's answer to one push: the port's single solution type.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Solution {
@@ -242,6 +256,16 @@ pub struct Solution {
 }
 
 impl Solution {
+    /// The solution's outcome: the model, the status, theta_jam and x_jam.
+    pub fn outcome(&self) -> Outcome {
+        Outcome {
+            model: self.model,
+            status: self.status,
+            theta_jam_deg: self.theta_jam_deg,
+            x_jam_mm: self.x_jam_mm,
+        }
+    }
+
     /// Where a jam past the palm's end would be on a long enough palm: the closed form's
     /// [`crate::statics::PastPalm`] of a `beyond_reach` push; None for every other status and
     /// model.
@@ -318,6 +342,27 @@ pub fn solve(spec: &ModelSpec, scene: &SceneParams) -> Result<Solution> {
         elapsed_s: t0.elapsed().as_secs_f64(),
         detail,
     })
+}
+
+/// [`solve`]'s outcome, to the bit, where the model gives it without its whole answer: the
+/// closed form without its extras (the lift-off angle, the rigid limit, the jam past the
+/// palm's end) or the clock, and any model on a scene it does not represent. None for the
+/// min-norm search and the simulation, whose outcome is all their work. Validates as
+/// [`solve`] does.
+pub fn outcome(spec: &ModelSpec, scene: &SceneParams) -> Result<Option<Outcome>> {
+    scene.validate()?;
+    spec.validate()?;
+    let (status, theta_jam_deg, x_jam_mm) = match spec {
+        _ if outside(spec.kind(), scene).is_some() => (JamStatus::OutsideModel, None, None),
+        ModelSpec::Statics => statics::outcome(scene),
+        ModelSpec::MinNorm(_) | ModelSpec::Dynamics { .. } => return Ok(None),
+    };
+    Ok(Some(Outcome {
+        model: spec.kind(),
+        status,
+        theta_jam_deg,
+        x_jam_mm,
+    }))
 }
 
 /// Solves `scenes` in order with the model of `spec`: a line of a map (one parameter fixed).

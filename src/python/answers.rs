@@ -3,13 +3,15 @@
 //! over the library's answer ([`crate::ask`]).
 
 use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
+use std::sync::OnceLock;
+
 use pyo3::exceptions::{PyImportError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
 use super::convert::{Lists, serde_to_python};
-use crate::ask::{self, Words};
-use crate::models::{self, ModelKind};
+use crate::ask::{self, SolveAnswer, SolveQuestion, Words};
+use crate::models::{ModelKind, Outcome};
 use crate::scene::{JamStatus, SceneParams};
 
 /// One push's answer: the status, theta_jam in deg and x_jam in mm (NaN where the model gives
@@ -17,14 +19,61 @@ use crate::scene::{JamStatus, SceneParams};
 // A free list: a loop of scalar calls makes and frees one a call, and reuses its memory.
 #[pyclass(frozen, module = "jamchart", freelist = 16)]
 pub(super) struct Solution {
-    /// The library's answer, of one model, as the library boxed it (moved, not copied, into
-    /// the Python object).
-    pub(super) answer: Box<ask::PushAnswer>,
+    /// The model, status, theta_jam and x_jam.
+    outcome: Outcome,
+    /// The library's whole answer, or the question it answers when first read.
+    answer: Answer,
+}
+
+/// A [`Solution`]'s whole answer.
+// The question held in place: the object's room is the free list's to reuse, where a box would
+// be an allocation and a free a call.
+#[allow(clippy::large_enum_variant)]
+enum Answer {
+    /// The library's answer, of one model, as the library boxed it (moved, not copied).
+    Given(Box<ask::PushAnswer>),
+    /// A question whose outcome the library gave alone ([`SolveQuestion::outcome`], the
+    /// closed form in a loop of scalar calls: its record's extras and the clock are half the
+    /// call), answered when its record, time, scene or text is first read.
+    Later {
+        question: SolveQuestion,
+        answer: OnceLock<Box<ask::PushAnswer>>,
+    },
 }
 
 impl Solution {
-    fn solution(&self) -> &models::Solution {
-        &self.answer.results[0].solution
+    /// The answer `answer` of one model.
+    pub(super) fn given(answer: Box<ask::PushAnswer>) -> Self {
+        Solution {
+            outcome: answer.results[0].solution.outcome(),
+            answer: Answer::Given(answer),
+        }
+    }
+
+    /// The answer of `question`, whose outcome is `outcome`, asked when first read.
+    pub(super) fn later(question: SolveQuestion, outcome: Outcome) -> Self {
+        Solution {
+            outcome,
+            answer: Answer::Later {
+                question,
+                answer: OnceLock::new(),
+            },
+        }
+    }
+
+    /// The library's whole answer.
+    fn answer(&self) -> PyResult<&ask::PushAnswer> {
+        let (question, answer) = match &self.answer {
+            Answer::Given(a) => return Ok(a),
+            Answer::Later { question, answer } => (question, answer),
+        };
+        if let Some(a) = answer.get() {
+            return Ok(a);
+        }
+        let SolveAnswer::Push(a) = question.answer().map_err(super::keywords::error)? else {
+            unreachable!("a question without ranges is one push")
+        };
+        Ok(answer.get_or_init(|| a))
     }
 }
 
@@ -38,59 +87,60 @@ impl Solution {
     /// The model that answered: `statics`, `min-norm` or `dynamics`.
     #[getter]
     fn model(&self) -> &'static str {
-        self.solution().model.as_str()
+        self.outcome.model.as_str()
     }
 
     /// The outcome of the push: one of `jamchart.STATUSES` (`jams`, `beyond_reach`, ...).
     #[getter]
     fn status(&self) -> &'static str {
-        self.solution().status.as_str()
+        self.outcome.status.as_str()
     }
 
     /// The palm angle at the jam in deg; NaN where the model gives none.
     #[getter]
     fn theta_jam_deg(&self) -> f64 {
-        self.solution().theta_jam_deg.unwrap_or(f64::NAN)
+        self.outcome.theta_jam_deg.unwrap_or(f64::NAN)
     }
 
     /// The disc position at the jam in mm (hinge to ground contact); NaN where the model gives
     /// none.
     #[getter]
     fn x_jam_mm(&self) -> f64 {
-        self.solution().x_jam_mm.unwrap_or(f64::NAN)
+        self.outcome.x_jam_mm.unwrap_or(f64::NAN)
     }
 
-    /// Wall time of the answer in s.
+    /// Wall time of the answer in s (of the closed form with its record, the first time the
+    /// record, the time or the text is read).
     #[getter]
-    fn elapsed_s(&self) -> f64 {
-        self.solution().elapsed_s
+    fn elapsed_s(&self) -> PyResult<f64> {
+        Ok(self.answer()?.results[0].solution.elapsed_s)
     }
 
     /// The scene answered, as a dict of its settings (TOML keys, their units).
     #[getter]
     fn inputs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        serde_to_python(py, &self.answer.inputs, Lists::Plain)
+        serde_to_python(py, &self.answer()?.inputs, Lists::Plain)
     }
 
     /// The model's whole answer as a dict: the record of `jamchart solve --format json`
     /// (shared keys, then the model's own, `None` where JSON has null).
     #[getter]
     fn record<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        serde_to_python(py, &self.answer.results[0], Lists::Plain)
+        serde_to_python(py, &self.answer()?.results[0], Lists::Plain)
     }
 
     /// The whole answer as `jamchart solve --format json` prints it: `inputs` and `results`.
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        serde_to_python(py, &self.answer, Lists::Plain)
+        serde_to_python(py, self.answer()?, Lists::Plain)
     }
 
     /// The command line's report, the settings named by their keywords.
-    fn __str__(&self) -> String {
-        self.answer.text(Words::Keys)
+    fn __str__(&self) -> PyResult<String> {
+        Ok(self.answer()?.text(Words::Keys))
     }
 
     fn __repr__(&self) -> String {
-        let s = self.solution();
+        let s = &self.outcome;
         match (s.theta_jam_deg, s.x_jam_mm) {
             (Some(t), Some(x)) => format!(
                 "jamchart.Solution({}: {}, theta_jam_deg={t:.3}, x_jam_mm={x:.3})",
@@ -448,9 +498,7 @@ impl Comparison {
     fn one(&self, k: usize) -> Solution {
         let mut answer = self.answer.clone();
         answer.results = vec![self.answer.results[k].clone()];
-        Solution {
-            answer: Box::new(answer),
-        }
+        Solution::given(Box::new(answer))
     }
 }
 

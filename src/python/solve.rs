@@ -35,6 +35,9 @@ pub(super) fn solve<'py>(py: Python<'py>, kwargs: &Kwargs<'py>) -> PyResult<Boun
     if let Some(numbers) = keywords::scene_numbers(kwargs.pairs())? {
         let question = SolveQuestion::from_numbers(&numbers).map_err(|e| refused("solve", e))?;
         warn(py, question.warnings(Words::Keys))?;
+        if let Some(outcome) = question.outcome().map_err(error)? {
+            return Ok(Bound::new(py, Solution::later(question, outcome))?.into_any());
+        }
         return one_push(py, &question, ModelKind::Statics);
     }
     let keywords = kwargs.dict(py)?;
@@ -118,7 +121,7 @@ fn one_push<'py>(
     let SolveAnswer::Push(answer) = answer else {
         unreachable!("a question without ranges is one push")
     };
-    Ok(Bound::new(py, Solution { answer })?.into_any())
+    Ok(Bound::new(py, Solution::given(answer))?.into_any())
 }
 
 /// Answers the pushes of `arrays`, broadcast together over `question`'s scene (with `late`

@@ -218,6 +218,19 @@ proptest! {
         prop_assert!(m.is_finite());
     }
 
+    /// The outcome the port gives alone (no extras, no clock) is the full solution's, to the
+    /// bit, above the models' start angle too.
+    #[test]
+    fn the_outcome_alone_is_the_solutions_to_the_bit(p in any_scene()) {
+        let spec = crate::models::ModelSpec::Statics;
+        let alone = crate::models::outcome(&spec, &p).unwrap().unwrap();
+        let full = crate::models::solve(&spec, &p).unwrap().outcome();
+        let bits = |o: crate::models::Outcome| {
+            (o.model, o.status, o.theta_jam_deg.map(f64::to_bits), o.x_jam_mm.map(f64::to_bits))
+        };
+        prop_assert_eq!(bits(alone), bits(full), "{:?}", p);
+    }
+
     #[test]
     fn margin_changes_sign_exactly_at_theta_jam(p in any_scene(), u in 0.3..1.0f64) {
         // A long palm and a high start, so that most cases slide before they jam.

@@ -573,12 +573,11 @@ pub(crate) fn solve(p: &SceneParams) -> StaticsSolution {
     let v = verdict(&push);
     let lift_off_above = lift_off_angle(p, Turn::friction(p.mu_palm.into()).angle().one());
     let (theta_rigid_deg, x_rigid_mm) = rigid_limit(p);
-    let (theta, x) = v.answer(push.start.deg);
-    let status = JamStatus::ALL[v.status.one() as usize];
+    let (status, theta_jam_deg, x_jam_mm) = outcome_of(&push, &v);
     StaticsSolution {
         status,
-        theta_jam_deg: finite_or_none(theta.one()),
-        x_jam_mm: finite_or_none(x.one()),
+        theta_jam_deg,
+        x_jam_mm,
         theta_rigid_deg,
         x_rigid_mm,
         lift_off_above_deg: lift_off_above.map(f64::to_degrees),
@@ -590,6 +589,25 @@ pub(crate) fn solve(p: &SceneParams) -> StaticsSolution {
             friction_factor_needed: friction_factor_to_reach(p),
         }),
     }
+}
+
+/// [`solve`]'s status, theta_jam in deg and x_jam in mm alone, without its extras (the
+/// lift-off angle, the rigid limit, the jam past the palm's end). `p` must have passed
+/// validation.
+pub(crate) fn outcome(p: &SceneParams) -> (JamStatus, Option<f64>, Option<f64>) {
+    let push = Push::of(p);
+    outcome_of(&push, &verdict(&push))
+}
+
+/// The status, theta_jam and x_jam of verdict `v` of `push`: the one reading [`solve`] and
+/// [`outcome`] share.
+fn outcome_of(push: &Push<1>, v: &Verdict<1>) -> (JamStatus, Option<f64>, Option<f64>) {
+    let (theta, x) = v.answer(push.start.deg);
+    (
+        JamStatus::ALL[v.status.one() as usize],
+        finite_or_none(theta.one()),
+        finite_or_none(x.one()),
+    )
 }
 
 /// A `beyond_reach` verdict's jam past the palm's end, where it has one: theta_jam in rad,

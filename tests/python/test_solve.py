@@ -39,6 +39,20 @@ def test_one_push_gives_the_clis_record(cli_json):
     assert isinstance(s.theta_jam_deg, float) and isinstance(s.status, str)
 
 
+@settings(max_examples=300, deadline=None)
+@given(mu=st.floats(0.0, 5.0), start=st.floats(1.0, 179.0), force=st.floats(0.5, 500.0))
+def test_a_scalar_answers_record_agrees_with_its_outcome_and_is_read_once(mu, start, force):
+    # The closed form's record (its extras and time) is computed when first read: what it says
+    # is what the answer said at once, and reading it again reads the same record.
+    s = jc.solve(mu=mu, start_angle_deg=start, force_n=force)
+    took = s.elapsed_s
+    assert took > 0 and s.elapsed_s == took
+    r = s.record
+    assert r["model"] == s.model == "statics" and r["status"] == s.status
+    assert same(r["theta_jam_deg"], s.theta_jam_deg) and same(r["x_jam_mm"], s.x_jam_mm)
+    assert r == s.record and s.to_dict()["results"][0] == r
+
+
 @pytest.mark.parametrize("model", MODELS)
 def test_every_model_answers_as_the_cli(cli_json, model):
     extra = ["--method", "nonsmooth"] if model == "dynamics" else []
