@@ -2,9 +2,9 @@
 //! shaped like the broadcast inputs), a range's or distribution's [`BoxAnswer`]; each a face
 //! over the library's answer ([`crate::ask`]).
 
-use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use std::sync::OnceLock;
 
+use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyImportError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
