@@ -1,7 +1,7 @@
 //! Help texts against the code: every documented default is the code's `Default`,
 //! every scene a help text names exists, and `vlocator --help` describes the JSON it prints.
 
-use clap::{CommandFactory, Parser};
+use clap::Parser;
 
 use super::{Cli, Command};
 use crate::config::Config;
@@ -136,7 +136,7 @@ fn every_number_flag_takes_a_negative_number_written_with_an_exponent() {
         TypeId::of::<usize>(),
         TypeId::of::<toml::Value>(),
     ];
-    let cmd = Cli::command();
+    let cmd = super::command();
     let mut checked = 0;
     for sub in cmd.get_subcommands() {
         for arg in sub.get_arguments() {
@@ -170,7 +170,7 @@ fn every_number_flag_takes_a_negative_number_written_with_an_exponent() {
 /// geometry by the V it gives; any other hand-written default fails here.
 #[test]
 fn documented_defaults_are_the_code_defaults() {
-    let cmd = Cli::command();
+    let cmd = super::command();
     let mut checked = 0;
     let mut problems = Vec::new();
     for sub in cmd.get_subcommands() {
@@ -220,7 +220,7 @@ fn documented_defaults_are_the_code_defaults() {
 /// `solve -h` (the short help) shows the `--mu` default.
 #[test]
 fn solve_short_help_shows_the_mu_default() {
-    let mut cmd = Cli::command();
+    let mut cmd = super::command();
     let help = cmd
         .find_subcommand_mut("solve")
         .expect("solve")
@@ -240,7 +240,7 @@ fn solve_short_help_shows_the_mu_default() {
 #[test]
 fn every_scene_named_in_help_exists() {
     let scenes = crate::charts::builtin::scene_names();
-    let mut cmd = Cli::command();
+    let mut cmd = super::command();
     let mut named = 0;
     for sub in cmd.get_subcommands_mut() {
         let help = sub.render_long_help().to_string();
@@ -328,7 +328,7 @@ fn sweep_help_lists_every_parameter_a_sweep_takes() {
 
 /// The `--help` text of subcommand `sub`.
 fn long_help(sub: &str) -> String {
-    Cli::command()
+    super::command()
         .find_subcommand_mut(sub)
         .expect("a subcommand")
         .render_long_help()
@@ -439,7 +439,7 @@ fn every_documented_default_gives_the_answer_of_the_flag_left_out() {
             "-10:10",
         ],
     ];
-    let cmd = Cli::command();
+    let cmd = super::command();
     let (mut compared, mut problems) = (0, Vec::new());
     // The setting keys a flag sets (`--mu` sets both frictions).
     let keys_of = |sub: &str, long: &str| -> Vec<&'static str> {
@@ -508,4 +508,35 @@ fn every_documented_default_gives_the_answer_of_the_flag_left_out() {
         "only {compared} compared: is the parsing right?"
     );
     assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+/// Every subcommand that clap lists gets its flags once built (their adding is deferred to the
+/// subcommand that runs) and is read back as the command it names: the listing, the deferred
+/// flags and the reading each name every subcommand.
+#[test]
+fn every_listed_subcommand_gets_its_flags_and_reads_back_as_itself() {
+    let cmd = super::command();
+    let mut named = 0;
+    for sub in cmd.get_subcommands().filter(|s| s.get_name() != "help") {
+        let name = sub.get_name();
+        let flags = sub
+            .get_arguments()
+            .filter(|a| !matches!(a.get_long(), Some("help" | "version")))
+            .count();
+        assert_eq!(flags > 0, name != "settings", "{name}: {flags} flags");
+        match Cli::try_parse_from(["jamchart", name]) {
+            Ok(cli) => {
+                let read = format!("{:?}", cli.command).to_lowercase();
+                assert!(read.starts_with(name), "{name} read back as {read}");
+                named += 1;
+            }
+            // A subcommand with a required argument refuses the missing one, by name.
+            Err(e) => assert_eq!(
+                e.kind(),
+                clap::error::ErrorKind::MissingRequiredArgument,
+                "{name}: {e}"
+            ),
+        }
+    }
+    assert!(named >= 10, "{named} subcommands read back");
 }

@@ -50,15 +50,50 @@ fn version() -> String {
     )
 }
 
-/// The subcommands.
-#[derive(Debug, Subcommand)]
+/// The subcommands: what each one runs with.
+#[derive(Debug)]
 pub enum Command {
+    /// `jamchart solve`, with its flags.
+    Solve(solve::SolveArgs),
+    /// `jamchart design`, with its flags.
+    Design(design::DesignArgs),
+    /// `jamchart table`, with its flags.
+    Table(table::TableArgs),
+    /// `jamchart render`, with its flags.
+    Render(render::RenderArgs),
+    /// `jamchart sweep`, with its flags.
+    Sweep(sweep::SweepArgs),
+    /// `jamchart scenes`, with its flags.
+    Scenes(render::ScenesArgs),
+    /// `jamchart settings`, with its flags.
+    Settings,
+    /// `jamchart accuracy`, with its flags.
+    Accuracy(accuracy::AccuracyArgs),
+    /// `jamchart stability`, with its flags.
+    Stability(stability::StabilityArgs),
+    /// `jamchart vlocator`, with its flags.
+    Vlocator(vlocator::VlocatorArgs),
+    /// `jamchart serve`, with its flags.
+    #[cfg(feature = "serve")]
+    Serve(serve::ServeArgs),
+    /// `jamchart completions`, with its flags.
+    Completions(shell::CompletionsArgs),
+    /// `jamchart man`, with its flags.
+    Man(shell::ManArgs),
+}
+
+/// The subcommands as clap lists them: each one's name and help text. Each one's flags are
+/// added to it only when it runs or its help is shown ([`Command`]'s `augment_subcommands`,
+/// by clap's `defer`): the settings' flags of every subcommand, their help texts formatted,
+/// took 2.6 M instructions, most of a `jamchart --version`, in every run.
+#[derive(Subcommand)]
+enum Listed {
     /// Read off theta_jam and x_jam for one set of parameters.
     ///
     /// Prints the palm angle theta_jam (deg) at which the disc stops sliding and jams, and the
     /// disc position x_jam (mm, hinge to contact) where that happens, for each requested model.
     /// Parameters come from the defaults (the paper's), then --config FILE, then the flags.
-    Solve(solve::SolveArgs),
+    Solve,
     /// Inverse questions over friction, push and mass ranges: the least push, the largest
     /// friction, the palm length.
     ///
@@ -68,13 +103,13 @@ pub enum Command {
     /// and the palm length that keeps the latest jam (frictions and mass low, push high) on
     /// the palm. Each closed form is checked by the nonsmooth simulation (force drive). A
     /// target no push reaches is an answer, not an error.
-    Design(design::DesignArgs),
+    Design,
     /// Recompute the paper's Table 1 beside the printed numbers.
     ///
     /// The paper's parameters (m = 1 kg, r = 10 mm, F = 200 N, g = 9.806 m/s^2) for
     /// mu = 0.45 ... 0.15, with the relative difference to the printed values and the known
     /// erratum of the mu = 0.30 row marked.
-    Table(table::TableArgs),
+    Table,
     /// Draw the design charts (built-in scenes or your own) as SVG, PNG and data.
     ///
     /// Each scene names its chart kind, parameters, axes and layers (`jamchart scenes` lists the
@@ -84,16 +119,16 @@ pub enum Command {
     /// earlier ones') with the parameters it was drawn with and links. The pictures are byte-identical for any thread count: the font is embedded and
     /// the PNG carries no metadata. --bless writes DIR/SHA256SUMS of the pictures; --check
     /// re-renders and exits 1 naming each picture whose bytes differ from it.
-    Render(render::RenderArgs),
+    Render,
     /// Draw x_jam and theta_jam against one or two parameters, without a scene file.
     ///
     /// One axis: both against it, with the F -> infinity limit (CSV, SVG, PNG). Two axes: a map
     /// of x_jam over both (JSON, SVG, PNG); the chart joins DIR/index.html, the folder's
     /// gallery, as render's do. The other parameters come from the defaults (the paper's), then
     /// --config FILE, then the flags. Closed-form statics.
-    Sweep(sweep::SweepArgs),
+    Sweep,
     /// List the scenes render draws: name, chart kind and title, one line each.
-    Scenes(render::ScenesArgs),
+    Scenes,
     /// List every setting: flag, TOML key, unit, default, valid values and meaning.
     ///
     /// The keys of a parameter file (--config) and of a scene file's scene, min_norm and
@@ -108,7 +143,7 @@ pub enum Command {
     /// model at a tight tolerance, the median wall time of --runs answers, steps and
     /// evaluations; a failure is a row with its reason. Then what a 400 x 400 map costs by
     /// each model and its error against the closed form.
-    Accuracy(accuracy::AccuracyArgs),
+    Accuracy,
     /// Numerical stability: a matrix of stiff and extreme cases through every method.
     ///
     /// Contact stiffness from 1 mm to 0.01 um of penetration, stiction velocity 1e-3 mm/s,
@@ -116,7 +151,7 @@ pub enum Command {
     /// deg/s, start angles near the jam, 0 and 180 deg, a push barely able to move the disc;
     /// each answer classed correct / inaccurate_flagged / failed_named / wrong_unflagged
     /// against the case's physical reference. The chart is the scene `stability-matrix`.
-    Stability(stability::StabilityArgs),
+    Stability,
     /// Hold a disc in a V-block: verdict, flank forces, holding capacity, optimum angle.
     ///
     /// A disc of weight m g in a V of two flat flanks (a symmetric V by --included-angle, any
@@ -131,7 +166,7 @@ pub enum Command {
     /// the ranges, the most robust angle in it, or, when no single V works, what would open a
     /// window; and the verdict of your V (if given) and of the standard 60/90/120 deg V-blocks
     /// over the box. A distribution is refused: a robust V holds every value of a range.
-    Vlocator(vlocator::VlocatorArgs),
+    Vlocator,
     /// Serve the live design page and the HTTP API until Ctrl-C.
     ///
     /// The page (GET /) is a design calculator: the scene's settings with their units and
@@ -143,18 +178,115 @@ pub enum Command {
     /// built-in scene (.png, .json, .csv too). No request reads or writes a file. The guide
     /// (`jamchart guide`, the crate docs) lists every route.
     #[cfg(feature = "serve")]
-    Serve(serve::ServeArgs),
+    Serve,
     /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
     ///
     /// bash: `jamchart completions bash > ~/.local/share/bash-completion/completions/jamchart`;
     /// zsh: `jamchart completions zsh > ~/.zfunc/_jamchart` with ~/.zfunc in $fpath before
     /// compinit; fish: `jamchart completions fish > ~/.config/fish/completions/jamchart.fish`.
-    Completions(shell::CompletionsArgs),
+    Completions,
     /// Print the man page (roff), made from these help texts.
     ///
     /// `jamchart man > jamchart.1 && man ./jamchart.1`; `--out-dir DIR` writes jamchart.1 and a
     /// page per subcommand (jamchart-render.1, ...) for a man1 folder of $MANPATH.
-    Man(shell::ManArgs),
+    Man,
+}
+
+impl Subcommand for Command {
+    fn augment_subcommands(cmd: clap::Command) -> clap::Command {
+        // In the listed order (completions and man pages keep it).
+        let listed = Listed::augment_subcommands(clap::Command::new("jamchart"));
+        let subs = listed.get_subcommands().cloned();
+        subs.fold(cmd, |cmd, sub| cmd.subcommand(deferred(sub)))
+    }
+
+    fn augment_subcommands_for_update(cmd: clap::Command) -> clap::Command {
+        Self::augment_subcommands(cmd)
+    }
+
+    fn has_subcommand(name: &str) -> bool {
+        Listed::has_subcommand(name)
+    }
+}
+
+/// Listed subcommand `sub`, its flags added when it is built.
+fn deferred(sub: clap::Command) -> clap::Command {
+    match sub.get_name() {
+        "solve" => sub.defer(flags::<solve::SolveArgs>),
+        "design" => sub.defer(flags::<design::DesignArgs>),
+        "table" => sub.defer(flags::<table::TableArgs>),
+        "render" => sub.defer(flags::<render::RenderArgs>),
+        "sweep" => sub.defer(flags::<sweep::SweepArgs>),
+        "scenes" => sub.defer(flags::<render::ScenesArgs>),
+        "accuracy" => sub.defer(flags::<accuracy::AccuracyArgs>),
+        "stability" => sub.defer(flags::<stability::StabilityArgs>),
+        "vlocator" => sub.defer(flags::<vlocator::VlocatorArgs>),
+        #[cfg(feature = "serve")]
+        "serve" => sub.defer(flags::<serve::ServeArgs>),
+        "completions" => sub.defer(flags::<shell::CompletionsArgs>),
+        "man" => sub.defer(flags::<shell::ManArgs>),
+        _ => sub,
+    }
+}
+
+/// Subcommand `c` (as [`Listed`] made it) with the flags of `A`, its texts kept: `A`'s own
+/// (its doc comment, made for the contributor) would replace them, where the derive that
+/// built every subcommand at once set the listed ones after.
+fn flags<A: clap::Args>(c: clap::Command) -> clap::Command {
+    let (about, long_about) = (c.get_about().cloned(), c.get_long_about().cloned());
+    let c = A::augment_args(c);
+    let c = match about {
+        Some(text) => c.about(text),
+        None => c.about(None::<&str>),
+    };
+    match long_about {
+        Some(text) => c.long_about(text),
+        None => c.long_about(None::<&str>),
+    }
+}
+
+impl clap::FromArgMatches for Command {
+    fn from_arg_matches(matches: &clap::ArgMatches) -> Result<Self, clap::Error> {
+        Self::from_arg_matches_mut(&mut matches.clone())
+    }
+
+    fn from_arg_matches_mut(matches: &mut clap::ArgMatches) -> Result<Self, clap::Error> {
+        use clap::error::ErrorKind;
+        let Some((name, mut sub)) = matches.remove_subcommand() else {
+            return Err(clap::Error::raw(
+                ErrorKind::MissingSubcommand,
+                "a subcommand is required",
+            ));
+        };
+        let sub = &mut sub;
+        Ok(match name.as_str() {
+            "solve" => Command::Solve(clap::FromArgMatches::from_arg_matches_mut(sub)?),
+            "design" => Command::Design(clap::FromArgMatches::from_arg_matches_mut(sub)?),
+            "table" => Command::Table(clap::FromArgMatches::from_arg_matches_mut(sub)?),
+            "render" => Command::Render(clap::FromArgMatches::from_arg_matches_mut(sub)?),
+            "sweep" => Command::Sweep(clap::FromArgMatches::from_arg_matches_mut(sub)?),
+            "scenes" => Command::Scenes(clap::FromArgMatches::from_arg_matches_mut(sub)?),
+            "settings" => Command::Settings,
+            "accuracy" => Command::Accuracy(clap::FromArgMatches::from_arg_matches_mut(sub)?),
+            "stability" => Command::Stability(clap::FromArgMatches::from_arg_matches_mut(sub)?),
+            "vlocator" => Command::Vlocator(clap::FromArgMatches::from_arg_matches_mut(sub)?),
+            #[cfg(feature = "serve")]
+            "serve" => Command::Serve(clap::FromArgMatches::from_arg_matches_mut(sub)?),
+            "completions" => Command::Completions(clap::FromArgMatches::from_arg_matches_mut(sub)?),
+            "man" => Command::Man(clap::FromArgMatches::from_arg_matches_mut(sub)?),
+            _ => {
+                return Err(clap::Error::raw(
+                    ErrorKind::InvalidSubcommand,
+                    format!("no subcommand {name}"),
+                ));
+            }
+        })
+    }
+
+    fn update_from_arg_matches(&mut self, matches: &clap::ArgMatches) -> Result<(), clap::Error> {
+        *self = Self::from_arg_matches(matches)?;
+        Ok(())
+    }
 }
 
 /// What a command ends with: its text for stdout, and whether what it checks was found broken.
@@ -334,6 +466,16 @@ fn one_line(rendered: &str) -> String {
 }
 
 /// The command line parsed, and the name of its subcommand.
+/// The whole command line with every subcommand's flags added (for help, completions, man
+/// pages and the messages that name a flag); a run parses with `Cli::command()`, which adds
+/// the flags of the subcommand it runs only.
+pub(crate) fn command() -> clap::Command {
+    use clap::CommandFactory;
+    let mut cmd = Cli::command();
+    cmd.build();
+    cmd
+}
+
 fn parse(args: impl IntoIterator<Item = std::ffi::OsString>) -> Result<(Cli, String), clap::Error> {
     use clap::{CommandFactory, FromArgMatches};
     let mut matches = Cli::command().try_get_matches_from(args)?;
@@ -358,10 +500,9 @@ fn own_flags() -> impl Iterator<Item = &'static crate::settings::Decl> + Clone {
 /// The error message of subcommand `command`, with the flags of that command that set the key
 /// named beside the key.
 fn describe(e: &Error, command: &str) -> String {
-    use clap::CommandFactory;
     match e {
         Error::InvalidValue { key, value, reason } => {
-            let cli = Cli::command();
+            let cli = crate::cli::command();
             let sub = cli.find_subcommand(command);
             let takes = |flag: &str| {
                 sub.is_some_and(|c| c.get_arguments().any(|a| a.get_long() == Some(flag)))
@@ -373,7 +514,7 @@ fn describe(e: &Error, command: &str) -> String {
         }
         // A cost names the key that sets it; the command line names its flag.
         Error::TooLong { key, .. } | Error::TooLarge { key, .. } => {
-            let cli = Cli::command();
+            let cli = crate::cli::command();
             let sub = cli.find_subcommand(command);
             let takes = |flag: &str| {
                 sub.is_some_and(|c| c.get_arguments().any(|a| a.get_long() == Some(flag)))

@@ -121,8 +121,7 @@ fn the_charts_readme_holds_the_scene_keys() {
 /// Each flag's help shows its default and unit, in both registers.
 #[test]
 fn every_flag_help_gives_its_default_and_unit() {
-    use clap::CommandFactory;
-    let cmd = crate::cli::Cli::command();
+    let cmd = crate::cli::command();
     let solve = cmd.find_subcommand("solve").unwrap();
     for d in palm_family().filter(|d| d.flag.is_some()) {
         let arg = solve
