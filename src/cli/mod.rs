@@ -65,7 +65,7 @@ pub enum Command {
     Sweep(sweep::SweepArgs),
     /// `jamchart scenes`, with its flags.
     Scenes(render::ScenesArgs),
-    /// `jamchart settings`, with its flags.
+    /// `jamchart settings`, which takes no flags.
     Settings,
     /// `jamchart accuracy`, with its flags.
     Accuracy(accuracy::AccuracyArgs),
@@ -465,7 +465,6 @@ fn one_line(rendered: &str) -> String {
     format!("{text}; see 'jamchart --help'")
 }
 
-/// The command line parsed, and the name of its subcommand.
 /// The whole command line with every subcommand's flags added (for help, completions, man
 /// pages and the messages that name a flag); a run parses with `Cli::command()`, which adds
 /// the flags of the subcommand it runs only.
@@ -476,6 +475,7 @@ pub(crate) fn command() -> clap::Command {
     cmd
 }
 
+/// The command line parsed, and the name of its subcommand.
 fn parse(args: impl IntoIterator<Item = std::ffi::OsString>) -> Result<(Cli, String), clap::Error> {
     use clap::{CommandFactory, FromArgMatches};
     let mut matches = Cli::command().try_get_matches_from(args)?;
