@@ -325,12 +325,9 @@ impl SolveQuestion {
     /// read. None for any other question.
     pub fn outcome(&self) -> Result<Option<Outcome>> {
         self.check()?;
-        let [kind] = self.models[..] else {
+        let ([kind], true) = (&self.models[..], self.uncertain.is_empty()) else {
             return Ok(None);
         };
-        if !self.uncertain.is_empty() || self.series.is_some() {
-            return Ok(None);
-        }
         models::outcome(
             &kind.with(&self.config.min_norm, &self.config.dynamics),
             &self.config.scene,
