@@ -24,6 +24,7 @@ Usage: python python_package.py [RUNS]
 
 import math
 import os
+from math import asin, atan, cos, degrees, nan, sin, tan
 import statistics
 import sys
 import time
@@ -38,6 +39,7 @@ N = 1_000_000
 # numpy float64 here made the pure-Python form's arithmetic numpy's scalar arithmetic, a quarter
 # slower than with floats, which flattered jamchart's scalar call.
 M, G, F, R, L, START = 1.0, 9.806, 200.0, 10.0, 150.0, math.radians(90.0)
+MG = M * G
 
 
 def numpy_statics(mu):
@@ -186,19 +188,21 @@ def copy_bandwidth_gb_s(runs):
 
 def math_statics(mu):
     """One push in pure Python with `math`: numpy_statics's decision and answer, for the
-    scalar call's comparison (what a notebook user could type instead of calling jamchart)."""
-    alpha = math.atan(mu)
-    s = M * G * math.sin(alpha) / F
+    scalar call's comparison (what a notebook user could type instead of calling jamchart), as
+    tight as we could write it: the functions imported by name (no attribute lookup a call) and
+    m g taken once."""
+    alpha = atan(mu)
+    s = MG * sin(alpha) / F
     if s >= 1.0:
-        return "too_weak", math.nan, math.nan
-    theta = 2.0 * alpha + math.asin(s)
-    margin = mu * (M * G + F * math.cos(START - alpha)) - F * math.sin(START - alpha)
+        return "too_weak", nan, nan
+    theta = 2.0 * alpha + asin(s)
+    margin = mu * (MG + F * cos(START - alpha)) - F * sin(START - alpha)
     if theta >= START or margin >= 0.0:
-        return "jammed_at_start", math.degrees(START), R / math.tan(0.5 * START)
-    x = R / math.tan(0.5 * theta)
+        return "jammed_at_start", degrees(START), R / tan(0.5 * START)
+    x = R / tan(0.5 * theta)
     if x > L:
-        return "beyond_reach", math.nan, math.nan
-    return "jams", math.degrees(theta), x
+        return "beyond_reach", nan, nan
+    return "jams", degrees(theta), x
 
 
 def main():
