@@ -212,6 +212,9 @@ fn a_question_of_numbers_is_the_keyword_maps_question() {
         match (&fast, &general) {
             (Ok(a), Ok(b)) => {
                 assert_eq!(format!("{a:?}"), format!("{b:?}"), "{numbers:?}");
+                // A face that keeps the scene asks the same question again.
+                let again = SolveQuestion::of_scene(a.config.scene);
+                assert_eq!(format!("{a:?}"), format!("{again:?}"), "{numbers:?}");
                 let answer = |q: &SolveQuestion| match q
                     .answer()
                     .map(|a| timeless(serde_json::to_value(a).unwrap()))

@@ -153,6 +153,17 @@ impl SolveQuestion {
         }
     }
 
+    /// One push of `scene` by the closed form, every other setting at its default: the
+    /// question [`SolveQuestion::from_numbers`] makes of a scene's numbers, so that a face
+    /// that holds an answer's scene can ask it again.
+    pub fn of_scene(scene: SceneParams) -> Self {
+        let config = Config {
+            scene,
+            ..Config::default()
+        };
+        Self::new(config, UncertainSet::default())
+    }
+
     /// The question of `keywords`: every setting of the palm scene and its models (`mu`,
     /// `radius_mm`, `rtol`, ...; a range or distribution as text), `push_ratio` (sets
     /// force_n = push_ratio m g), `model` (`statics`, `min-norm`, `dynamics` or `all`),
@@ -201,7 +212,7 @@ impl SolveQuestion {
     /// the closed form) are checked and set in place on the default config, whose other
     /// sections hold nothing to check; a Python loop of scalar calls spent most of its time
     /// on the keyword map and on checking the defaults of every section. Any other key goes
-    /// through the keyword map.
+    /// through the keyword map. The question is [`SolveQuestion::of_scene`] of its scene.
     pub fn from_numbers(numbers: &[(&str, f64)]) -> Result<Self> {
         let general = || {
             let pairs = numbers

@@ -26,17 +26,16 @@ pub(super) struct Solution {
 }
 
 /// A [`Solution`]'s whole answer.
-// The question held in place: the object's room is the free list's to reuse, where a box would
-// be an allocation and a free a call.
-#[allow(clippy::large_enum_variant)]
 enum Answer {
     /// The library's answer, of one model, as the library boxed it (moved, not copied).
     Given(Box<ask::PushAnswer>),
-    /// A question whose outcome the library gave alone ([`SolveQuestion::outcome`], the
-    /// closed form in a loop of scalar calls: its record's extras and the clock are half the
-    /// call), answered when its record, time, scene or text is first read.
+    /// The question of a scene's numbers ([`SolveQuestion::of_scene`]), whose outcome the
+    /// library gave alone ([`SolveQuestion::outcome`], the closed form in a loop of scalar
+    /// calls: its record's extras and the clock are half the call), answered when its record,
+    /// time, scene or text is first read. The scene alone is kept, not the question: a fifth
+    /// of the room, moved into the object on every call.
     Later {
-        question: SolveQuestion,
+        scene: SceneParams,
         answer: OnceLock<Box<ask::PushAnswer>>,
     },
 }
@@ -50,12 +49,13 @@ impl Solution {
         }
     }
 
-    /// The answer of `question`, whose outcome is `outcome`, asked when first read.
-    pub(super) fn later(question: SolveQuestion, outcome: Outcome) -> Self {
+    /// The answer of [`SolveQuestion::of_scene`]`(scene)`, whose outcome is `outcome`, asked
+    /// when first read.
+    pub(super) fn later(scene: SceneParams, outcome: Outcome) -> Self {
         Solution {
             outcome,
             answer: Answer::Later {
-                question,
+                scene,
                 answer: OnceLock::new(),
             },
         }
@@ -63,13 +63,14 @@ impl Solution {
 
     /// The library's whole answer.
     fn answer(&self) -> PyResult<&ask::PushAnswer> {
-        let (question, answer) = match &self.answer {
+        let (scene, answer) = match &self.answer {
             Answer::Given(a) => return Ok(a),
-            Answer::Later { question, answer } => (question, answer),
+            Answer::Later { scene, answer } => (scene, answer),
         };
         if let Some(a) = answer.get() {
             return Ok(a);
         }
+        let question = SolveQuestion::of_scene(*scene);
         let SolveAnswer::Push(a) = question.answer().map_err(super::keywords::error)? else {
             unreachable!("a question without ranges is one push")
         };

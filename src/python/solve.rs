@@ -36,7 +36,9 @@ pub(super) fn solve<'py>(py: Python<'py>, kwargs: &Kwargs<'py>) -> PyResult<Boun
         let question = SolveQuestion::from_numbers(&numbers).map_err(|e| refused("solve", e))?;
         warn(py, question.warnings(Words::Keys))?;
         if let Some(outcome) = question.outcome().map_err(error)? {
-            return Ok(Bound::new(py, Solution::later(question, outcome))?.into_any());
+            // `from_numbers` asks `of_scene` of its scene: the scene asks it again.
+            let scene = question.config.scene;
+            return Ok(Bound::new(py, Solution::later(scene, outcome))?.into_any());
         }
         return one_push(py, &question, ModelKind::Statics);
     }
