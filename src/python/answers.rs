@@ -19,9 +19,7 @@ use crate::scene::{JamStatus, SceneParams};
 // A free list: a loop of scalar calls makes and frees one a call, and reuses its memory.
 #[pyclass(frozen, module = "jamchart", freelist = 16)]
 pub(super) struct Solution {
-    /// The model, status, theta_jam and x_jam.
-    outcome: Outcome,
-    /// The library's whole answer, or the question it answers when first read.
+    /// The library's whole answer, or its outcome and the scene it answers when first read.
     answer: Answer,
 }
 
@@ -35,6 +33,7 @@ enum Answer {
     /// time, scene or text is first read. The scene alone is kept (72 bytes), not the
     /// question (488), which every call moved into the object.
     Later {
+        outcome: Outcome,
         scene: SceneParams,
         answer: OnceLock<Box<ask::PushAnswer>>,
     },
@@ -44,7 +43,6 @@ impl Solution {
     /// The answer `answer` of one model.
     pub(super) fn given(answer: Box<ask::PushAnswer>) -> Self {
         Solution {
-            outcome: answer.results[0].solution.outcome(),
             answer: Answer::Given(answer),
         }
     }
@@ -53,11 +51,19 @@ impl Solution {
     /// when first read.
     pub(super) fn later(scene: SceneParams, outcome: Outcome) -> Self {
         Solution {
-            outcome,
             answer: Answer::Later {
+                outcome,
                 scene,
                 answer: OnceLock::new(),
             },
+        }
+    }
+
+    /// The model, status, theta_jam and x_jam.
+    fn outcome(&self) -> Outcome {
+        match &self.answer {
+            Answer::Given(a) => a.results[0].solution.outcome(),
+            Answer::Later { outcome, .. } => *outcome,
         }
     }
 
@@ -65,7 +71,7 @@ impl Solution {
     fn answer(&self) -> PyResult<&ask::PushAnswer> {
         let (scene, answer) = match &self.answer {
             Answer::Given(a) => return Ok(a),
-            Answer::Later { scene, answer } => (scene, answer),
+            Answer::Later { scene, answer, .. } => (scene, answer),
         };
         if let Some(a) = answer.get() {
             return Ok(a);
@@ -88,26 +94,26 @@ impl Solution {
     /// The model that answered: `statics`, `min-norm` or `dynamics`.
     #[getter]
     fn model(&self) -> &'static str {
-        self.outcome.model.as_str()
+        self.outcome().model.as_str()
     }
 
     /// The outcome of the push: one of `jamchart.STATUSES` (`jams`, `beyond_reach`, ...).
     #[getter]
     fn status(&self) -> &'static str {
-        self.outcome.status.as_str()
+        self.outcome().status.as_str()
     }
 
     /// The palm angle at the jam in deg; NaN where the model gives none.
     #[getter]
     fn theta_jam_deg(&self) -> f64 {
-        self.outcome.theta_jam_deg.unwrap_or(f64::NAN)
+        self.outcome().theta_jam_deg.unwrap_or(f64::NAN)
     }
 
     /// The disc position at the jam in mm (hinge to ground contact); NaN where the model gives
     /// none.
     #[getter]
     fn x_jam_mm(&self) -> f64 {
-        self.outcome.x_jam_mm.unwrap_or(f64::NAN)
+        self.outcome().x_jam_mm.unwrap_or(f64::NAN)
     }
 
     /// Wall time of the answer in s (of the closed form with its record, the first time the
@@ -141,7 +147,7 @@ impl Solution {
     }
 
     fn __repr__(&self) -> String {
-        let s = &self.outcome;
+        let s = self.outcome();
         match (s.theta_jam_deg, s.x_jam_mm) {
             (Some(t), Some(x)) => format!(
                 "jamchart.Solution({}: {}, theta_jam_deg={t:.3}, x_jam_mm={x:.3})",
