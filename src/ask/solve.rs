@@ -244,17 +244,17 @@ impl SolveQuestion {
         for &(decl, x) in &scene {
             decl.check_real(x)?;
         }
-        let mut config = Config::default();
-        if crate::config::set_scene_numbers(&mut config.scene, &scene).is_none() {
+        // The question of the default scene, its numbers set: `of_scene` of the scene they
+        // make. Nothing beyond the scene to check: the default min-norm and dynamics settings
+        // and the default distribution's question are valid as they are.
+        let mut question = SolveQuestion::of_scene(SceneParams::default());
+        if crate::config::set_scene_numbers(&mut question.config.scene, &scene).is_none() {
             return general();
         }
-        let uncertain = UncertainSet::default();
         if let Some(ratio) = push_ratio {
-            push_by_ratio(&mut config, &uncertain, ratio)?;
+            push_by_ratio(&mut question.config, &question.uncertain, ratio)?;
         }
-        // Nothing beyond the scene to check: the default min-norm and dynamics settings and
-        // the default distribution's question are valid as they are.
-        Ok(SolveQuestion::new(config, uncertain))
+        Ok(question)
     }
 
     /// Refuses `keys` (a question's keys, or a face's) that set the push two ways: `force_n`
