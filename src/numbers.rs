@@ -193,7 +193,7 @@ pub fn human_seconds(s: f64) -> String {
 }
 
 /// The float `n` floats above `x` (below for n < 0), for x and the result of one sign
-/// (f64::next_up needs Rust 1.86, above the crate's 1.85); zero steps to the smallest
+/// (n steps at once, where f64::next_up takes one); zero steps to the smallest
 /// subnormal of the sign of n, an infinity one step inward to the largest finite float.
 pub(crate) fn floats_away(x: f64, n: i64) -> f64 {
     if x == 0.0 {

@@ -252,14 +252,14 @@ fn in_our_words(key: Option<&str>, message: &str) -> String {
             found_words(found)
         );
     }
-    if let Some(rest) = message.strip_prefix("invalid value: ") {
-        if let Some((found, expected)) = rest.rsplit_once(", expected ") {
-            return format!(
-                "expected {}, found {}",
-                wanted(expected),
-                found_words(found)
-            );
-        }
+    if let Some(rest) = message.strip_prefix("invalid value: ")
+        && let Some((found, expected)) = rest.rsplit_once(", expected ")
+    {
+        return format!(
+            "expected {}, found {}",
+            wanted(expected),
+            found_words(found)
+        );
     }
     message.to_string()
 }

@@ -324,7 +324,7 @@ impl Push {
                 rad: 0.0.into(),
                 turn: Turn::of(0.0),
                 x_mm: 0.0.into(),
-                beyond: Mask([false]),
+                beyond: Mask::splat(false),
             },
         };
         push.derive(0, true);
@@ -366,7 +366,7 @@ impl<const N: usize> Push<N> {
                     sin: one(s.turn.sin),
                 },
                 x_mm: one(s.x_mm),
-                beyond: Mask([s.beyond.0[0]; N]),
+                beyond: Mask::splat(s.beyond.get(0)),
             },
         }
     }
@@ -404,7 +404,8 @@ impl<const N: usize> Push<N> {
         let [r, h, l] = [RADIUS, OFFSET, LENGTH].map(|i| Many::<1>::from(self.inputs[i].0[j]));
         let x = turn.disc_position_mm(r, h);
         s.x_mm.0[j] = x.one();
-        s.beyond.0[j] = turn.contact_distance_mm(r, h, x).gt(l).0[0];
+        s.beyond
+            .set(j, turn.contact_distance_mm(r, h, x).gt(l).get(0));
     }
 
     /// Lane `j` set to push `q`.
@@ -415,7 +416,8 @@ impl<const N: usize> Push<N> {
         let (s, t) = (&mut self.start, &q.start);
         (s.deg.0[j], s.rad.0[j]) = (t.deg.one(), t.rad.one());
         (s.turn.cos.0[j], s.turn.sin.0[j]) = (t.turn.cos.one(), t.turn.sin.one());
-        (s.x_mm.0[j], s.beyond.0[j]) = (t.x_mm.one(), t.beyond.0[0]);
+        s.x_mm.0[j] = t.x_mm.one();
+        s.beyond.set(j, t.beyond.get(0));
     }
 
     /// The start angle of lane `j` in deg.
@@ -437,7 +439,11 @@ impl<const N: usize> Push<N> {
     ) {
         let v = verdict(self);
         let (theta, x) = v.answer(self.start.deg);
-        *status = v.status.0.map(|code| code as u8);
+        // A whole number below 2^8 plus 2^52 holds itself in the low bits of its mantissa:
+        // the byte read off in vector lanes, where `as u8` (saturating) is a call per lane.
+        *status = (v.status + 4_503_599_627_370_496.0)
+            .0
+            .map(|code| code.to_bits() as u8);
         (*theta_deg, *x_mm) = (theta.0, x.0);
         if let Some(past) = past_palm_x_mm {
             *past = past_palm_lanes(&v).select(v.x_jam, f64::NAN).0;
@@ -614,7 +620,7 @@ fn outcome_of(push: &Push<1>, v: &Verdict<1>) -> (JamStatus, Option<f64>, Option
 /// x_jam and the contact's distance s_B in mm.
 fn past_palm(v: &Verdict<1>) -> Option<(f64, f64, f64)> {
     let (theta_jam, x_jam, s_b) = (v.theta_jam.one(), v.x_jam.one(), v.s_b.one());
-    past_palm_lanes(v).0[0].then_some((theta_jam, x_jam, s_b))
+    past_palm_lanes(v).get(0).then_some((theta_jam, x_jam, s_b))
 }
 
 /// Which lanes of a verdict have a jam past the palm's end ([`past_palm`]): beyond_reach by

@@ -429,10 +429,10 @@ pub fn why(s: &Solution) -> Option<Why> {
 
 fn dynamics_why(d: &DynamicsSolution) -> Option<Why> {
     // A failure during the run-on after a confirmed jam leaves the jam standing.
-    if d.status == JamStatus::IntegratorFailed {
-        if let Some(failure) = d.failure {
-            return Some(Why::IntegratorGaveUp { failure });
-        }
+    if d.status == JamStatus::IntegratorFailed
+        && let Some(failure) = d.failure
+    {
+        return Some(Why::IntegratorGaveUp { failure });
     }
     d.cross_check.map(|check| Why::CrossCheck { check })
 }

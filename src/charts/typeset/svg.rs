@@ -65,10 +65,10 @@ fn glyph_path(id: GlyphId) -> Option<String> {
     };
     for c in &outline.curves {
         // The outliner closes each contour with a line back to its start, often of length 0.
-        if let OutlineCurve::Line(a, b) = c {
-            if a == b {
-                continue;
-            }
+        if let OutlineCurve::Line(a, b) = c
+            && a == b
+        {
+            continue;
         }
         let start = match c {
             OutlineCurve::Line(a, _) | OutlineCurve::Quad(a, _, _) | OutlineCurve::Cubic(a, ..) => {

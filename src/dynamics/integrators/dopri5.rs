@@ -94,7 +94,7 @@ impl StiffnessTest {
         y1: &[f64],
         y_stage6: &[f64],
     ) -> bool {
-        if accepted % STIFFNESS_TEST_EVERY != 0 && self.stiff_in_a_row == 0 {
+        if !accepted.is_multiple_of(STIFFNESS_TEST_EVERY) && self.stiff_in_a_row == 0 {
             return false;
         }
         let sq = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| (x - y).powi(2)).sum::<f64>();
