@@ -440,7 +440,8 @@ impl<const N: usize> Push<N> {
         let v = verdict(self);
         let (theta, x) = v.answer(self.start.deg);
         // A whole number below 2^8 plus 2^52 holds itself in the low bits of its mantissa:
-        // the byte read off in vector lanes, where `as u8` (saturating) is a call per lane.
+        // the byte read off in vector lanes, where `as u8` (saturating) clamps and converts
+        // one lane at a time.
         *status = (v.status + 4_503_599_627_370_496.0)
             .0
             .map(|code| code.to_bits() as u8);
