@@ -270,7 +270,7 @@ impl Resolved<'_> {
 
 /// Closed-form pushes answered together ([`statics::Push`]): four vectors of AVX2's four or two
 /// of AVX-512's eight, whose chains of divisions and square roots overlap (with AVX2, 8 lanes
-/// took 28 % longer and 32 no less; with AVX-512, 8 took 55 % longer and 32 at least 20 %).
+/// and 32 each took a fifth longer; with AVX-512, 8 took 7 % longer and 32 half as long again).
 const LANES: usize = 16;
 
 /// Pushes answered per task of the thread pool: large enough that a closed-form answer
@@ -612,8 +612,8 @@ impl<'a> ClosedForm<'a> {
     }
 
     /// [`Self::answer_chunk`] compiled for AVX-512: eight lanes a vector and 32 vector
-    /// registers, so that a batch's sixteen lanes spill less (13.0 ms for 10^6 pushes on one
-    /// thread against AVX2's 16.7 on a Xeon that has both).
+    /// registers, so that a batch's sixteen lanes spill less (9.9 ms for 10^6 pushes on one
+    /// thread against AVX2's 15.5 on a Xeon that has both).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx512bw")]
     fn answer_chunk_avx512(&self, first: usize, out: Chunk) {
