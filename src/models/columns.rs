@@ -7,7 +7,6 @@
 //! detail); the other models go through [`super::solve`], min-norm pushes that differ in one
 //! parameter only a column at a time ([`super::solve_column`]).
 
-use std::array::from_fn;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use rayon::prelude::*;
@@ -581,7 +580,11 @@ impl<'a> ClosedForm<'a> {
             let lane = lanes.input_mut(input);
             match run {
                 true => lane.copy_from_slice(&values[at[0]..at[0] + LANES]),
-                false => *lane = at.map(|i| values[i]),
+                false => {
+                    for (v, &i) in lane.iter_mut().zip(&at) {
+                        *v = values[i];
+                    }
+                }
             }
         }
         if self.start_derived {
@@ -641,7 +644,10 @@ impl<'a> ClosedForm<'a> {
         let mut ps = [f64::NAN; LANES];
         for k in (0..len).step_by(LANES) {
             // A last, partial batch repeats its last push.
-            let at: [usize; LANES] = from_fn(|j| first + (k + j).min(len - 1));
+            let mut at = [0; LANES];
+            for (j, i) in at.iter_mut().enumerate() {
+                *i = first + (k + j).min(len - 1);
+            }
             self.load(&mut lanes, at);
             lanes.answer(&mut s, &mut t, &mut xs, past.is_some().then_some(&mut ps));
             let n = LANES.min(len - k);

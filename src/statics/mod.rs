@@ -442,9 +442,10 @@ impl<const N: usize> Push<N> {
         // A whole number below 2^8 plus 2^52 holds itself in the low bits of its mantissa:
         // the byte read off in vector lanes, where `as u8` (saturating) clamps and converts
         // one lane at a time.
-        *status = (v.status + 4_503_599_627_370_496.0)
-            .0
-            .map(|code| code.to_bits() as u8);
+        let codes = v.status + 4_503_599_627_370_496.0;
+        for (s, code) in status.iter_mut().zip(codes.0) {
+            *s = code.to_bits() as u8;
+        }
         (*theta_deg, *x_mm) = (theta.0, x.0);
         if let Some(past) = past_palm_x_mm {
             *past = past_palm_lanes(&v).select(v.x_jam, f64::NAN).0;
@@ -502,7 +503,12 @@ fn verdict<const N: usize>(q: &Push<N>) -> Verdict<N> {
     let (x_start, beyond_at_start) = (start.x_mm, start.beyond);
     let weight_n = mass * gravity;
     // Equal frictions (the paper's one mu) have one angle: the same bits, half the work.
-    let a = match mu_g.0.map(f64::to_bits) == mu_p.0.map(f64::to_bits) {
+    let equal = mu_g
+        .0
+        .iter()
+        .zip(&mu_p.0)
+        .all(|(g, p)| g.to_bits() == p.to_bits());
+    let a = match equal {
         true => {
             let ground = Turn::friction(mu_g);
             Frictions {
