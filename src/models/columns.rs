@@ -269,7 +269,7 @@ impl Resolved<'_> {
 
 /// Closed-form pushes answered together ([`statics::Push`]): four vectors of AVX2's four or two
 /// of AVX-512's eight, whose chains of divisions and square roots overlap (with AVX2, 8 lanes
-/// and 32 each took a fifth longer; with AVX-512, 8 took 7 % longer and 32 half as long again).
+/// and 32 each took a fifth longer; with AVX-512, 8 took 9 % longer and 32 three fifths longer).
 const LANES: usize = 16;
 
 /// Pushes answered per task of the thread pool: large enough that a closed-form answer
