@@ -153,19 +153,24 @@ fn ends(values: &[f64]) -> (f64, f64) {
         (if l < lo { l } else { lo }, if h > hi { h } else { hi })
     };
     let none = (f64::INFINITY, f64::NEG_INFINITY);
+    let block_ends = |block: &[f64]| {
+        let (mut lo, mut hi) = ([f64::INFINITY; ENDS_LANES], [f64::NEG_INFINITY; ENDS_LANES]);
+        let (runs, rest) = block.as_chunks::<ENDS_LANES>();
+        for run in runs {
+            for j in 0..ENDS_LANES {
+                (lo[j], hi[j]) = wider((lo[j], hi[j]), (run[j], run[j]));
+            }
+        }
+        let lanes = lo.into_iter().zip(hi);
+        lanes.chain(rest.iter().map(|&x| (x, x))).fold(none, wider)
+    };
+    // A column of one block is not worth handing to the thread pool.
+    if values.len() <= BLOCK {
+        return block_ends(values);
+    }
     values
         .par_chunks(BLOCK)
-        .map(|block| {
-            let (mut lo, mut hi) = ([f64::INFINITY; ENDS_LANES], [f64::NEG_INFINITY; ENDS_LANES]);
-            let (runs, rest) = block.as_chunks::<ENDS_LANES>();
-            for run in runs {
-                for j in 0..ENDS_LANES {
-                    (lo[j], hi[j]) = wider((lo[j], hi[j]), (run[j], run[j]));
-                }
-            }
-            let lanes = lo.into_iter().zip(hi);
-            lanes.chain(rest.iter().map(|&x| (x, x))).fold(none, wider)
-        })
+        .map(block_ends)
         .reduce(|| none, wider)
 }
 
@@ -275,6 +280,11 @@ const LANES: usize = 16;
 /// Pushes answered per task of the thread pool: large enough that a closed-form answer
 /// (about 0.1 us) outweighs the task, small enough that 2 threads share a map of 10^4.
 const CHUNK: usize = 512;
+
+/// Closed-form pushes answered on the calling thread, not the pool's (about 40 us of answers):
+/// a Python call of 1,000 pushes took 49 us through the pool and 19 here, one of 4,000 84 us
+/// and 53; from about 6,000 (130 us against 175) the pool's two threads win.
+const SERIAL_STATICS: usize = 8 * CHUNK;
 
 /// Answers every push of `pushes` with the model of `spec`, writing into `out`.
 ///
@@ -399,19 +409,26 @@ fn solve_in_width(
         }
         Ok(len)
     };
-    let answers = status
-        .par_chunks_mut(chunk)
-        .zip(theta_jam_deg.par_chunks_mut(chunk))
-        .zip(x_jam_mm.par_chunks_mut(chunk));
-    let answered = match past_palm_x_jam_mm {
-        Some(past) => answer_chunks(
-            answers.zip(past.par_chunks_mut(chunk).map(Some)),
-            chunk,
-            write,
-        ),
-        None => {
-            let none = (0..n.div_ceil(chunk)).into_par_iter().map(|_| None);
-            answer_chunks(answers.zip(none), chunk, write)
+    // A few closed-form chunks are answered on this thread: handing them to the pool costs
+    // more than the answers ([`SERIAL_STATICS`]).
+    let serial = matches!(spec, ModelSpec::Statics) && n <= SERIAL_STATICS;
+    let answered = if serial {
+        write(0, (((status, theta_jam_deg), x_jam_mm), past_palm_x_jam_mm))
+    } else {
+        let answers = status
+            .par_chunks_mut(chunk)
+            .zip(theta_jam_deg.par_chunks_mut(chunk))
+            .zip(x_jam_mm.par_chunks_mut(chunk));
+        match past_palm_x_jam_mm {
+            Some(past) => answer_chunks(
+                answers.zip(past.par_chunks_mut(chunk).map(Some)),
+                chunk,
+                write,
+            ),
+            None => {
+                let none = (0..n.div_ceil(chunk)).into_par_iter().map(|_| None);
+                answer_chunks(answers.zip(none), chunk, write)
+            }
         }
     }?;
     Ok(match answered == n {
@@ -785,12 +802,20 @@ mod tests {
     }
 
     /// Closed-form pushes answered together are the same bits as each answered alone by
-    /// [`super::solve`], in every vector width the processor has, with every status among
-    /// them, whichever fields vary (the start angle too, above 90 deg outside the model),
-    /// and a count that leaves a partial batch; the past-palm column too.
+    /// [`super::solve`], in every vector width the processor has, on the calling thread and
+    /// on the pool, with every status among them, whichever fields vary (the start angle too,
+    /// above 90 deg outside the model), and a count that leaves a partial batch; the
+    /// past-palm column too.
     #[test]
     fn closed_form_batches_answer_each_push_as_solve_does() {
-        let n = 4 * 250 + 3;
+        // Answered on the calling thread, and in chunks on the pool.
+        for n in [4 * 250 + 3, SERIAL_STATICS + 4 * 250 + 3] {
+            closed_form_batches_of(n);
+        }
+    }
+
+    /// [`closed_form_batches_answer_each_push_as_solve_does`] for `n` pushes.
+    fn closed_form_batches_of(n: usize) {
         // A fixed sequence spread over each field's range (a Weyl sequence per column).
         let spread = |k: usize, lo: f64, hi: f64| -> Vec<f64> {
             let a = [
@@ -970,7 +995,8 @@ mod tests {
     /// with each push's scene built (a column of push ratios).
     #[test]
     fn past_palm_jams_follow_their_pushes_across_chunks() {
-        let n = 3 * CHUNK + 7;
+        // More than one thread's worth: the chunks go to the pool.
+        let n = SERIAL_STATICS + 3 * CHUNK + 7;
         let mu: Vec<f64> = (0..n).map(|i| 0.4 * i as f64 / n as f64).collect();
         // A scrambled order: neighbours' statuses differ.
         let scrambled: Vec<f64> = (0..n).map(|i| mu[i * 389 % n]).collect();

@@ -60,6 +60,10 @@ impl Check {
         const BLOCK: usize = 4096;
         let bounds = self.bounds();
         let refused = |v: f64| !Self::within(bounds, v);
+        // One block is looked through on this thread: the pool's hand-over costs more.
+        if values.len() <= BLOCK {
+            return values.iter().position(|&v| refused(v));
+        }
         let (b, block) = values
             .par_chunks(BLOCK)
             .enumerate()
