@@ -209,24 +209,49 @@ impl Subcommand for Command {
     }
 }
 
-/// Listed subcommand `sub`, its flags added when it is built.
-fn deferred(sub: clap::Command) -> clap::Command {
-    match sub.get_name() {
-        "solve" => sub.defer(flags::<solve::SolveArgs>),
-        "design" => sub.defer(flags::<design::DesignArgs>),
-        "table" => sub.defer(flags::<table::TableArgs>),
-        "render" => sub.defer(flags::<render::RenderArgs>),
-        "sweep" => sub.defer(flags::<sweep::SweepArgs>),
-        "scenes" => sub.defer(flags::<render::ScenesArgs>),
-        "accuracy" => sub.defer(flags::<accuracy::AccuracyArgs>),
-        "stability" => sub.defer(flags::<stability::StabilityArgs>),
-        "vlocator" => sub.defer(flags::<vlocator::VlocatorArgs>),
-        #[cfg(feature = "serve")]
-        "serve" => sub.defer(flags::<serve::ServeArgs>),
-        "completions" => sub.defer(flags::<shell::CompletionsArgs>),
-        "man" => sub.defer(flags::<shell::ManArgs>),
-        _ => sub,
-    }
+/// Each subcommand that takes flags: its name, its [`Command`] and the type of its flags,
+/// listed once for both ways (the flags added when the subcommand is built, read back when
+/// it runs).
+macro_rules! with_flags {
+    ($($(#[$attr:meta])* $name:literal => $variant:ident($args:ty),)*) => {
+        /// Listed subcommand `sub`, its flags added when it is built.
+        fn deferred(sub: clap::Command) -> clap::Command {
+            match sub.get_name() {
+                $($(#[$attr])* $name => sub.defer(flags::<$args>),)*
+                _ => sub,
+            }
+        }
+
+        /// Subcommand `name` with its flags read from `sub`; None for a name that takes none.
+        fn read_flags(
+            name: &str,
+            sub: &mut clap::ArgMatches,
+        ) -> Option<Result<Command, clap::Error>> {
+            use clap::FromArgMatches;
+            match name {
+                $($(#[$attr])* $name => {
+                    Some(<$args>::from_arg_matches_mut(sub).map(Command::$variant))
+                })*
+                _ => None,
+            }
+        }
+    };
+}
+
+with_flags! {
+    "solve" => Solve(solve::SolveArgs),
+    "design" => Design(design::DesignArgs),
+    "table" => Table(table::TableArgs),
+    "render" => Render(render::RenderArgs),
+    "sweep" => Sweep(sweep::SweepArgs),
+    "scenes" => Scenes(render::ScenesArgs),
+    "accuracy" => Accuracy(accuracy::AccuracyArgs),
+    "stability" => Stability(stability::StabilityArgs),
+    "vlocator" => Vlocator(vlocator::VlocatorArgs),
+    #[cfg(feature = "serve")]
+    "serve" => Serve(serve::ServeArgs),
+    "completions" => Completions(shell::CompletionsArgs),
+    "man" => Man(shell::ManArgs),
 }
 
 /// Subcommand `c` (as [`Listed`] made it) with the flags of `A`, its texts kept: `A`'s own
@@ -258,29 +283,14 @@ impl clap::FromArgMatches for Command {
                 "a subcommand is required",
             ));
         };
-        let sub = &mut sub;
-        Ok(match name.as_str() {
-            "solve" => Command::Solve(clap::FromArgMatches::from_arg_matches_mut(sub)?),
-            "design" => Command::Design(clap::FromArgMatches::from_arg_matches_mut(sub)?),
-            "table" => Command::Table(clap::FromArgMatches::from_arg_matches_mut(sub)?),
-            "render" => Command::Render(clap::FromArgMatches::from_arg_matches_mut(sub)?),
-            "sweep" => Command::Sweep(clap::FromArgMatches::from_arg_matches_mut(sub)?),
-            "scenes" => Command::Scenes(clap::FromArgMatches::from_arg_matches_mut(sub)?),
-            "settings" => Command::Settings,
-            "accuracy" => Command::Accuracy(clap::FromArgMatches::from_arg_matches_mut(sub)?),
-            "stability" => Command::Stability(clap::FromArgMatches::from_arg_matches_mut(sub)?),
-            "vlocator" => Command::Vlocator(clap::FromArgMatches::from_arg_matches_mut(sub)?),
-            #[cfg(feature = "serve")]
-            "serve" => Command::Serve(clap::FromArgMatches::from_arg_matches_mut(sub)?),
-            "completions" => Command::Completions(clap::FromArgMatches::from_arg_matches_mut(sub)?),
-            "man" => Command::Man(clap::FromArgMatches::from_arg_matches_mut(sub)?),
-            _ => {
-                return Err(clap::Error::raw(
-                    ErrorKind::InvalidSubcommand,
-                    format!("no subcommand {name}"),
-                ));
-            }
-        })
+        match (read_flags(&name, &mut sub), name.as_str()) {
+            (Some(command), _) => command,
+            (None, "settings") => Ok(Command::Settings),
+            (None, _) => Err(clap::Error::raw(
+                ErrorKind::InvalidSubcommand,
+                format!("no subcommand {name}"),
+            )),
+        }
     }
 
     fn update_from_arg_matches(&mut self, matches: &clap::ArgMatches) -> Result<(), clap::Error> {
